@@ -1,0 +1,614 @@
+//! Cam-follower mechanisms analysed at one instant by the contact method.
+//!
+//! A [`Cam`] is a closed profile turning about an axis at constant speed (optionally with a
+//! constant angular acceleration); a [`Follower`] is one of the five types of `cam-follower.md`.
+//! [`Mechanism::analyze`] gives at one cam angle the follower's position (by **first touch**:
+//! the follower brought from far away towards the cam stops at the first contact), its velocity
+//! and acceleration by the contact method (paper eqs. 5, 6, 11 via [`crate::contact`]), and the
+//! contact data an engineer wants beside them. [`Sweep`] reuses the previous contact as a warm
+//! start over a range of angles.
+//!
+//! The cam angle `θ` is how far the cam has turned in its own direction; a counter-clockwise
+//! cam's frame is at `+θ`, a clockwise cam's at `−θ`; at `θ = 0` the cam frame is aligned with
+//! the world frame with its origin on the rotation axis. Other conventions: see the
+//! [crate docs](crate#sign-conventions).
+
+mod follower;
+mod sweep;
+
+pub use follower::{Follower, Sense};
+pub use sweep::{Found, Sweep};
+
+use crate::body::BodyState;
+use crate::contact::{pairing_at, ContactError, ContactKinematics, NormalAcceleration, Surface, CONFORMAL_TOLERANCE};
+use crate::curve::{unit_direction, Curve, CurveError, Domain};
+use crate::geometry::{cross, Point2, Vec2};
+use follower::{Geometry, Kind};
+use std::sync::Arc;
+
+/// A cam: a closed profile in the cam frame, whose origin is the rotation axis.
+#[derive(Debug, Clone)]
+pub struct Cam {
+    profile: Arc<dyn Curve>,
+    pivot: Point2,
+    direction: Sense,
+    speed: f64,
+    angular_acceleration: f64,
+}
+
+impl Cam {
+    /// A cam turning at `speed` rad/s (> 0) in `direction` about the world point `pivot`.
+    pub fn new(
+        profile: Arc<dyn Curve>,
+        pivot: Point2,
+        direction: Sense,
+        speed: f64,
+    ) -> Result<Self, CamError> {
+        if !matches!(profile.domain(), Domain::Periodic { .. }) {
+            return Err(CamError::OpenProfile);
+        }
+        if !(pivot.x.is_finite() && pivot.y.is_finite()) {
+            return Err(CamError::Invalid { field: "cam.pivot", value: if pivot.x.is_finite() { pivot.y } else { pivot.x }, reason: "must be finite" });
+        }
+        if !(speed.is_finite() && speed > 0.0) {
+            return Err(CamError::Invalid { field: "cam.speed", value: speed, reason: "must be positive and finite" });
+        }
+        Ok(Self { profile, pivot, direction, speed, angular_acceleration: 0.0 })
+    }
+
+    /// As [`Cam::new`] with the speed in revolutions per minute.
+    pub fn from_rpm(profile: Arc<dyn Curve>, pivot: Point2, direction: Sense, rpm: f64) -> Result<Self, CamError> {
+        if !(rpm.is_finite() && rpm > 0.0) {
+            return Err(CamError::Invalid { field: "cam.speed_rpm", value: rpm, reason: "must be positive and finite" });
+        }
+        Self::new(profile, pivot, direction, rpm * std::f64::consts::TAU / 60.0)
+    }
+
+    /// With a constant angular acceleration `θ̈` (rad/s², in the cam's direction of motion); the
+    /// speed given is then the speed at the instant analysed.
+    pub fn with_angular_acceleration(mut self, alpha: f64) -> Result<Self, CamError> {
+        if !alpha.is_finite() {
+            return Err(CamError::Invalid { field: "cam.angular_acceleration", value: alpha, reason: "must be finite" });
+        }
+        self.angular_acceleration = alpha;
+        Ok(self)
+    }
+
+    /// The profile.
+    pub fn profile(&self) -> &dyn Curve {
+        self.profile.as_ref()
+    }
+    /// The rotation axis (world).
+    pub fn pivot(&self) -> Point2 {
+        self.pivot
+    }
+    /// Direction of rotation.
+    pub fn direction(&self) -> Sense {
+        self.direction
+    }
+    /// Speed, rad/s (> 0).
+    pub fn speed(&self) -> f64 {
+        self.speed
+    }
+    /// Angular acceleration `θ̈`, rad/s².
+    pub fn angular_acceleration(&self) -> f64 {
+        self.angular_acceleration
+    }
+
+    /// The cam body's state at cam angle `theta` (rad): angle `±θ`, angular velocity `±ω`.
+    pub fn state(&self, theta: f64) -> BodyState {
+        let s = self.direction.sign();
+        BodyState::rotating(self.pivot, s * theta, s * self.speed, s * self.angular_acceleration)
+    }
+}
+
+/// Tolerances and effort of the analysis. Lengths are in the problem's unit;
+/// [`AnalysisOptions::for_size`] scales them to the cam.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AnalysisOptions {
+    /// Newton stops when a step moves the contact point and the follower less than this (length).
+    pub position_tolerance: f64,
+    /// Newton iterations before giving up.
+    pub max_iterations: u32,
+    /// Bracketing samples per smooth piece of the profile (a spline segment).
+    pub samples_per_piece: usize,
+    /// Bracketing samples for a profile without breakpoints (circle, ellipse).
+    pub samples_per_curve: usize,
+    /// Local maxima of the sampled first-touch function refined by Newton.
+    pub candidates: usize,
+    /// Relative tolerance on `D` below which contact is conformal.
+    pub conformal_tolerance: f64,
+    /// The follower is locked when `|cos|` of the pressure angle is below this.
+    pub lock_tolerance: f64,
+}
+
+impl AnalysisOptions {
+    /// Options for a cam whose points lie within `size` of its axis.
+    pub fn for_size(size: f64) -> Self {
+        Self {
+            position_tolerance: 1e-13 * size,
+            max_iterations: 50,
+            samples_per_piece: 16,
+            samples_per_curve: 256,
+            candidates: 4,
+            conformal_tolerance: CONFORMAL_TOLERANCE,
+            lock_tolerance: 1e-9,
+        }
+    }
+}
+
+/// What went wrong in building or analysing a mechanism.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CamError {
+    /// A curve could not be built.
+    #[error(transparent)]
+    Curve(#[from] CurveError),
+    /// A parameter is out of range.
+    #[error("{field} = {value}: {reason}")]
+    Invalid {
+        /// the field, as in mechanism files
+        field: &'static str,
+        /// the value given
+        value: f64,
+        /// what it must be
+        reason: &'static str,
+    },
+    /// The cam profile is not a closed curve.
+    #[error("the cam profile must be a closed curve")]
+    OpenProfile,
+    /// The follower never touches the cam at this angle.
+    #[error("at cam angle {angle_deg}°: the follower does not touch the cam ({reason})")]
+    NoTouch {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// why
+        reason: &'static str,
+    },
+    /// The contact normal is perpendicular to the follower's motion: no velocity solves the
+    /// contact condition.
+    #[error("at cam angle {angle_deg}°: the follower is locked (pressure angle {pressure_angle_deg}°)")]
+    Locked {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// pressure angle, degrees
+        pressure_angle_deg: f64,
+    },
+    /// The first-touch Newton iteration did not converge.
+    #[error("at cam angle {angle_deg}°: the first-touch search did not converge ({reason})")]
+    NoConvergence {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// the stopping reason
+        reason: &'static str,
+    },
+    /// The contact kinematics could not be computed.
+    #[error("at cam angle {angle_deg}°: {source}")]
+    Contact {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// the contact error
+        source: ContactError,
+    },
+}
+
+/// A cam and its follower, validated, with the precomputed data the analysis needs.
+#[derive(Debug, Clone)]
+pub struct Mechanism {
+    cam: Cam,
+    geometry: Geometry,
+    options: AnalysisOptions,
+    samples: Vec<f64>,
+    period: f64,
+    size: f64,
+    orientation: f64,
+    convex: bool,
+    breakpoints: Vec<f64>,
+}
+
+/// The follower's motion and the contact at one cam angle.
+///
+/// Position, velocity, acceleration and jerk are of the follower's coordinate: translating
+/// followers in length, length/s, length/s², length/s³ (measured from the cam axis along `d`);
+/// oscillating followers in rad, rad/s, rad/s², rad/s³ (absolute arm angle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FollowerState {
+    /// cam angle `θ`, rad
+    pub cam_angle: f64,
+    /// position `q`
+    pub position: f64,
+    /// velocity `q̇`
+    pub velocity: f64,
+    /// acceleration `q̈` by the contact method (eq. 11)
+    pub acceleration: f64,
+    /// contact point, world frame
+    pub contact_world: Point2,
+    /// contact point, cam frame
+    pub contact_cam: Point2,
+    /// the cam-profile parameter at the contact, in `[0, period)`
+    pub cam_param: f64,
+    /// the follower-curve parameter at the contact (line: arc length; roller: angle in the
+    /// follower frame; knife: 0)
+    pub follower_param: f64,
+    /// `ṡ_A`: sliding rate of the contact point along the cam profile, relative to the cam,
+    /// length/s (eq. 5)
+    pub sliding_rate_cam: f64,
+    /// `ṡ_B`: sliding rate along the follower's curve, relative to the follower, length/s (eq. 6)
+    pub sliding_rate_follower: f64,
+    /// normal acceleration of the contact point seen from the cam (eq. 1), along `normal`
+    pub normal_acceleration_cam: NormalAcceleration,
+    /// normal acceleration seen from the follower (eq. 2), along `normal`
+    pub normal_acceleration_follower: NormalAcceleration,
+    /// the common normal `ν_A` (cam profile's left normal), world frame
+    pub normal: Vec2,
+    /// `σ`
+    pub sigma: f64,
+    /// pressure angle: from the direction of motion of the follower's point at the contact to
+    /// the contact normal (oriented towards the follower), rad, counter-clockwise positive
+    pub pressure_angle: f64,
+    /// radius of curvature of the cam profile at the contact, positive where convex (∞ on a
+    /// straight stretch), length
+    pub radius_of_curvature: f64,
+    /// the contact sits on a node of the profile (its curvature has a corner there: the jerk
+    /// jumps)
+    pub at_breakpoint: bool,
+    /// how the contact was found
+    pub found: Found,
+}
+
+/// A converged first touch: cam parameter and follower position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Touch {
+    pub(crate) u: f64,
+    pub(crate) q: f64,
+}
+
+impl Mechanism {
+    /// Validates and prepares a mechanism.
+    pub fn new(cam: Cam, follower: Follower) -> Result<Self, CamError> {
+        let d = match follower {
+            Follower::TranslatingFlat { direction }
+            | Follower::TranslatingRoller { direction, .. }
+            | Follower::TranslatingKnife { direction, .. } => {
+                Some(unit_direction("follower.direction", direction)?)
+            }
+            _ => None,
+        };
+        let finite = |field: &'static str, v: f64| {
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(CamError::Invalid { field, value: v, reason: "must be finite" })
+            }
+        };
+        let positive = |field: &'static str, v: f64| {
+            if v.is_finite() && v > 0.0 {
+                Ok(v)
+            } else {
+                Err(CamError::Invalid { field, value: v, reason: "must be positive and finite" })
+            }
+        };
+        match follower {
+            Follower::TranslatingFlat { .. } => {}
+            Follower::TranslatingRoller { offset, roller_radius, .. } => {
+                finite("follower.offset", offset)?;
+                positive("follower.roller_radius", roller_radius)?;
+            }
+            Follower::TranslatingKnife { offset, .. } => {
+                finite("follower.offset", offset)?;
+            }
+            Follower::OscillatingFlat { pivot, face_offset, initial_angle, .. } => {
+                finite("follower.pivot", pivot.x)?;
+                finite("follower.pivot", pivot.y)?;
+                finite("follower.offset", face_offset)?;
+                finite("follower.initial_angle_deg", initial_angle)?;
+            }
+            Follower::OscillatingRoller { pivot, arm_length, roller_radius, initial_angle, .. } => {
+                finite("follower.pivot", pivot.x)?;
+                finite("follower.pivot", pivot.y)?;
+                positive("follower.arm_length", arm_length)?;
+                positive("follower.roller_radius", roller_radius)?;
+                finite("follower.initial_angle_deg", initial_angle)?;
+            }
+        }
+        let geometry = Geometry::new(follower, cam.pivot, d);
+        let profile = cam.profile.as_ref();
+        let period = match profile.domain() {
+            Domain::Periodic { period } => period,
+            _ => return Err(CamError::OpenProfile),
+        };
+        let breakpoints = profile.breakpoints();
+        let samples = bracket_samples(&breakpoints, period, 16, 256);
+        // size, orientation (shoelace) and convexity from a dense sampling
+        let dense = bracket_samples(&breakpoints, period, 64, 1024);
+        let pts: Vec<_> = dense.iter().map(|&u| profile.eval(u)).collect();
+        let size = pts.iter().map(|e| e.p.coords.norm()).fold(0.0, f64::max);
+        if !(size.is_finite() && size > 0.0) {
+            return Err(CamError::Invalid { field: "cam.profile", value: size, reason: "profile must have a finite, non-zero size" });
+        }
+        let area2: f64 = (0..pts.len())
+            .map(|i| cross(pts[i].p.coords, pts[(i + 1) % pts.len()].p.coords))
+            .sum();
+        let orientation = if area2 >= 0.0 { 1.0 } else { -1.0 };
+        let convex = pts.iter().all(|e| orientation * e.curvature() > 0.0);
+        let options = AnalysisOptions::for_size(size);
+        let mut m = Self { cam, geometry, options, samples, period, size, orientation, convex, breakpoints };
+        m.set_options(options);
+        Ok(m)
+    }
+
+    /// Replaces the analysis options.
+    pub fn set_options(&mut self, options: AnalysisOptions) {
+        self.samples = bracket_samples(&self.breakpoints, self.period, options.samples_per_piece.max(2), options.samples_per_curve.max(8));
+        self.options = options;
+    }
+
+    /// The analysis options in force.
+    pub fn options(&self) -> &AnalysisOptions {
+        &self.options
+    }
+    /// The cam.
+    pub fn cam(&self) -> &Cam {
+        &self.cam
+    }
+    /// The follower.
+    pub fn follower(&self) -> &Follower {
+        &self.geometry.follower
+    }
+    /// Largest distance of a profile point from the cam axis (the length scale of tolerances).
+    pub fn size(&self) -> f64 {
+        self.size
+    }
+    /// True when the profile's curvature has one sign all round (sampled densely).
+    pub fn is_convex(&self) -> bool {
+        self.convex
+    }
+    /// +1 when the profile runs counter-clockwise, −1 when clockwise.
+    pub fn orientation(&self) -> f64 {
+        self.orientation
+    }
+
+    /// The follower's motion at cam angle `theta` (rad) with the cam's own speed and
+    /// angular acceleration. The contact is found by a global search.
+    pub fn analyze(&self, theta: f64) -> Result<FollowerState, CamError> {
+        let cam = self.cam.state(theta);
+        let touch = self.global_touch(theta, &cam)?;
+        self.kinematics(theta, &cam, touch, Found::Global)
+    }
+
+    /// As [`Mechanism::analyze`] with the angle in degrees.
+    pub fn analyze_deg(&self, theta_deg: f64) -> Result<FollowerState, CamError> {
+        self.analyze(theta_deg.to_radians())
+    }
+
+    /// The follower's position only, at cam angle `theta` (rad), by first touch.
+    pub fn position(&self, theta: f64) -> Result<f64, CamError> {
+        let cam = self.cam.state(theta);
+        Ok(self.global_touch(theta, &cam)?.q)
+    }
+
+    /// A sweep that warm-starts each angle from the previous contact.
+    pub fn sweep(&self) -> Sweep<'_> {
+        Sweep::new(self)
+    }
+
+    /// Analyses every angle of `thetas` (rad) in order with a warm-started [`Sweep`].
+    pub fn analyze_all(&self, thetas: &[f64]) -> Vec<Result<FollowerState, CamError>> {
+        let mut s = self.sweep();
+        thetas.iter().map(|&t| s.step(t)).collect()
+    }
+
+    fn q_scale(&self) -> f64 {
+        self.geometry.q_length_scale(self.size)
+    }
+
+    /// Newton on the tangency residual from `(u, q)`.
+    pub(crate) fn newton(&self, theta: f64, cam: &BodyState, mut u: f64, mut q: f64) -> Result<Touch, CamError> {
+        let profile = self.cam.profile.as_ref();
+        let tol = self.options.position_tolerance;
+        let qs = self.q_scale();
+        for _ in 0..self.options.max_iterations {
+            let e = cam.eval_curve(profile, u);
+            let (f, j) = self.geometry.residual(&e, q);
+            let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+            let du = (-f[0] * j[1][1] + f[1] * j[0][1]) / det;
+            let dq = (-j[0][0] * f[1] + j[1][0] * f[0]) / det;
+            if !(du.is_finite() && dq.is_finite()) {
+                return Err(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "singular tangency Jacobian" });
+            }
+            // keep a step within a tenth of the period (safeguard against wild steps)
+            let lim = 0.1 * self.period;
+            let du = du.clamp(-lim, lim);
+            u += du;
+            q += dq;
+            let step = (du * e.d1.norm()).abs().max((dq * qs).abs());
+            if step <= tol {
+                return Ok(Touch { u: u.rem_euclid(self.period), q });
+            }
+        }
+        Err(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "iteration limit reached" })
+    }
+
+    /// True when `(u, q)` is the follower's first touch through that cam point (not another
+    /// tangency such as a roller touching from inside).
+    fn is_first_touch(&self, cam: &BodyState, t: &Touch) -> bool {
+        let x = cam.eval_curve(self.cam.profile.as_ref(), t.u).p;
+        if self.geometry.is_knife() {
+            return true;
+        }
+        match self.geometry.score(x) {
+            Some((_, q)) => ((q - t.q) * self.q_scale()).abs() <= 1e3 * self.options.position_tolerance.max(f64::EPSILON * self.size),
+            None => false,
+        }
+    }
+
+    /// Oriented score of a position (larger is an earlier touch).
+    fn oriented(&self, q: f64) -> f64 {
+        match self.geometry.kind {
+            Kind::Translating { .. } => q,
+            Kind::Oscillating { closing, .. } => -closing * q,
+        }
+    }
+
+    /// Start candidates `(oriented score, u, q)` for a knife edge: the crossings of its line of
+    /// travel with the sampled profile (linear interpolation between samples).
+    fn knife_starts(&self, cam: &BodyState) -> Vec<(f64, f64, f64)> {
+        let Kind::Translating { d, p, e, .. } = self.geometry.kind else {
+            return Vec::new();
+        };
+        let profile = self.cam.profile.as_ref();
+        let n = self.samples.len();
+        let pts: Vec<Vec2> = self.samples.iter().map(|&u| cam.eval_curve(profile, u).p - self.cam.pivot).collect();
+        let l: Vec<f64> = pts.iter().map(|y| y.dot(&p) - e).collect();
+        let mut starts = Vec::new();
+        for k in 0..n {
+            let k1 = (k + 1) % n;
+            if l[k] == 0.0 || (l[k] > 0.0) != (l[k1] > 0.0) {
+                let u1 = if k1 == 0 { self.period } else { self.samples[k1] };
+                let f = if l[k] == l[k1] { 0.0 } else { l[k] / (l[k] - l[k1]) };
+                let u0 = self.samples[k] + f * (u1 - self.samples[k]);
+                let q0 = pts[k].dot(&d) * (1.0 - f) + pts[k1].dot(&d) * f;
+                starts.push((q0, u0, q0));
+            }
+        }
+        starts
+    }
+
+    /// Start candidates `(oriented score, u, q)`: the local maxima of the sampled first-touch
+    /// function.
+    fn score_starts(&self, cam: &BodyState) -> Vec<(f64, f64, f64)> {
+        let profile = self.cam.profile.as_ref();
+        let n = self.samples.len();
+        let scores: Vec<Option<(f64, f64)>> =
+            self.samples.iter().map(|&u| self.geometry.score(cam.eval_curve(profile, u).p)).collect();
+        let s = |k: usize| scores[k].map_or(f64::NEG_INFINITY, |x| x.0);
+        let mut starts = Vec::new();
+        for k in 0..n {
+            if let Some((sc, q)) = scores[k] {
+                if sc >= s((k + n - 1) % n) && sc >= s((k + 1) % n) {
+                    starts.push((sc, self.samples[k], q));
+                }
+            }
+        }
+        starts
+    }
+
+    /// Global first touch: sample the profile, refine the best local maxima by Newton.
+    pub(crate) fn global_touch(&self, theta: f64, cam: &BodyState) -> Result<Touch, CamError> {
+        let knife = self.geometry.is_knife();
+        let mut starts = if knife { self.knife_starts(cam) } else { self.score_starts(cam) };
+        if starts.is_empty() {
+            let reason = if knife {
+                "the knife edge's line of travel misses the cam"
+            } else {
+                "the follower cannot reach the cam"
+            };
+            return Err(CamError::NoTouch { angle_deg: theta.to_degrees(), reason });
+        }
+        // sampled scores are exact first touches of those points, except a knife's interpolated ones
+        let best_sample = if knife {
+            f64::NEG_INFINITY
+        } else {
+            starts.iter().map(|s| s.0).fold(f64::NEG_INFINITY, f64::max)
+        };
+        starts.sort_by(|a, b| b.0.total_cmp(&a.0));
+        let mut best: Option<Touch> = None;
+        let mut last_err = None;
+        for &(_, u0, q0) in starts.iter().take(self.options.candidates.max(1)) {
+            match self.newton(theta, cam, u0, q0) {
+                Ok(t) if self.is_first_touch(cam, &t) => {
+                    if best.is_none_or(|b| self.oriented(t.q) > self.oriented(b.q)) {
+                        best = Some(t);
+                    }
+                }
+                Ok(_) => last_err = Some(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "Newton reached a tangency that is not the first touch" }),
+                Err(e) => last_err = Some(e),
+            }
+        }
+        let best = best.ok_or_else(|| last_err.unwrap_or(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "no candidate" }))?;
+        // the refined touch can only be later than (or equal to) a sampled one
+        let slack = 1e3 * self.options.position_tolerance / self.q_scale() + 1e-12;
+        if self.oriented(best.q) < best_sample - slack {
+            return Err(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "refined contact is behind a sampled one" });
+        }
+        Ok(best)
+    }
+
+    /// Velocity, acceleration and contact data at a converged touch (paper eqs. 5, 6, 1, 2, 11).
+    pub(crate) fn kinematics(&self, theta: f64, cam: &BodyState, touch: Touch, found: Found) -> Result<FollowerState, CamError> {
+        let g = &self.geometry;
+        let profile = self.cam.profile.as_ref();
+        let angle_deg = theta.to_degrees();
+        let ea = cam.eval_curve(profile, touch.u);
+        let c = ea.p;
+        let nu = ea.as_derivs().normal();
+        let jb = g.velocity_jacobian(c);
+        // velocity constraint Φ_q q̇ = 0: ν·v_A^P = q̇ ν·J_B
+        let den = nu.dot(&jb);
+        let pressure_angle = {
+            let jhat = jb / jb.norm();
+            let npush = if den >= 0.0 { nu } else { -nu };
+            cross(jhat, npush).atan2(jhat.dot(&npush))
+        };
+        if !(den.abs() > self.options.lock_tolerance * jb.norm()) {
+            return Err(CamError::Locked { angle_deg, pressure_angle_deg: pressure_angle.to_degrees() });
+        }
+        let qd = nu.dot(&cam.velocity_at(c)) / den;
+        let body_b = g.body(touch.q, qd, 0.0);
+        let fcurve = g.curve.as_curve();
+        let u_b = g.curve.param_of(body_b.pose.to_body(c));
+        let sa = Surface::new(profile, cam);
+        let sb = Surface::new(fcurve, &body_b);
+        let pairing = pairing_at(&sa, &sb, touch.u, u_b);
+        let k = ContactKinematics::new(&sa, &sb, &pairing, self.options.conformal_tolerance)
+            .map_err(|source| CamError::Contact { angle_deg, source })?;
+        // acceleration constraint Φ_q q̈ = γ (eq. 11), cam accelerations known
+        let phi = &k.phi_q;
+        let known = phi[2] * cam.alpha;
+        let coef = match g.kind {
+            Kind::Translating { d, .. } => phi[3] * d.x + phi[4] * d.y,
+            Kind::Oscillating { .. } => phi[5],
+        };
+        let qdd = (k.gamma - known) / coef;
+        let body_b = g.body(touch.q, qd, qdd);
+        let kappa_conv = self.orientation * k.kappa_a;
+        let tol_u = 1e-9 * self.period;
+        let at_breakpoint = self.breakpoints.iter().any(|&b| {
+            let d = (touch.u - b).rem_euclid(self.period);
+            d < tol_u || self.period - d < tol_u
+        });
+        Ok(FollowerState {
+            cam_angle: theta,
+            position: touch.q,
+            velocity: qd,
+            acceleration: qdd,
+            contact_world: c,
+            contact_cam: profile.position(touch.u),
+            cam_param: touch.u,
+            follower_param: u_b,
+            sliding_rate_cam: k.sliding_rate_a,
+            sliding_rate_follower: k.sliding_rate_b,
+            normal_acceleration_cam: k.normal_acceleration_a(cam),
+            normal_acceleration_follower: k.normal_acceleration_b(&body_b),
+            normal: nu,
+            sigma: k.sigma,
+            pressure_angle,
+            radius_of_curvature: 1.0 / kappa_conv,
+            at_breakpoint,
+            found,
+        })
+    }
+}
+
+/// Parameters for bracketing: `per_piece` per smooth piece, or `per_curve` over the period.
+pub(crate) fn bracket_samples(breakpoints: &[f64], period: f64, per_piece: usize, per_curve: usize) -> Vec<f64> {
+    if breakpoints.is_empty() {
+        (0..per_curve).map(|i| period * i as f64 / per_curve as f64).collect()
+    } else {
+        let mut v = Vec::with_capacity(breakpoints.len() * per_piece);
+        for (i, &s) in breakpoints.iter().enumerate() {
+            let e = breakpoints.get(i + 1).copied().unwrap_or(period);
+            v.extend((0..per_piece).map(|j| s + (e - s) * j as f64 / per_piece as f64));
+        }
+        v
+    }
+}

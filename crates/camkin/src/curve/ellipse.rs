@@ -1,0 +1,79 @@
+//! Ellipse: `r(u) = c + R(φ) (a cos u, b sin u)`, counter-clockwise, `u` the eccentric anomaly.
+
+use super::{check_finite, check_point, check_positive, Curve, CurveError, Derivs, Domain};
+use crate::geometry::{Point2, Rot, Vec2};
+
+/// An ellipse with semi-axis `a` along its own x axis and `b` along its own y axis, that frame
+/// rotated by `rotation` (rad, counter-clockwise) about `center`. Traversed counter-clockwise.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ellipse {
+    center: Point2,
+    a: f64,
+    b: f64,
+    rotation: f64,
+    rot: Rot,
+}
+
+impl Ellipse {
+    /// An ellipse; semi-axes positive and finite, rotation in radians.
+    pub fn new(center: Point2, a: f64, b: f64, rotation: f64) -> Result<Self, CurveError> {
+        Ok(Self {
+            center: check_point("center", center)?,
+            a: check_positive("semi_axes[0]", a)?,
+            b: check_positive("semi_axes[1]", b)?,
+            rotation: check_finite("rotation", rotation)?,
+            rot: Rot::new(rotation),
+        })
+    }
+    /// Centre.
+    pub fn center(&self) -> Point2 {
+        self.center
+    }
+    /// Semi-axes `(a, b)`.
+    pub fn semi_axes(&self) -> (f64, f64) {
+        (self.a, self.b)
+    }
+    /// Rotation, rad.
+    pub fn rotation(&self) -> f64 {
+        self.rotation
+    }
+}
+
+impl Curve for Ellipse {
+    fn eval(&self, u: f64) -> Derivs {
+        let (s, c) = u.sin_cos();
+        let (a, b) = (self.a, self.b);
+        let r = &self.rot;
+        Derivs {
+            p: self.center + r.apply(Vec2::new(a * c, b * s)),
+            d1: r.apply(Vec2::new(-a * s, b * c)),
+            d2: r.apply(Vec2::new(-a * c, -b * s)),
+            d3: r.apply(Vec2::new(a * s, -b * c)),
+        }
+    }
+    fn domain(&self) -> Domain {
+        Domain::Periodic {
+            period: std::f64::consts::TAU,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::test_support::check_derivatives;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn vertex_curvatures_are_closed_form() {
+        // At the end of the a axis κ = a/b², at the end of the b axis κ = b/a².
+        let e = Ellipse::new(Point2::new(0.5, 0.25), 3.0, 2.0, 0.7).unwrap();
+        assert_relative_eq!(e.curvature(0.0), 3.0 / 4.0, epsilon = 1e-14);
+        assert_relative_eq!(e.curvature(std::f64::consts::FRAC_PI_2), 2.0 / 9.0, epsilon = 1e-14);
+        let p = e.position(0.0) - e.center();
+        assert_relative_eq!(p, Vec2::new(3.0 * 0.7f64.cos(), 3.0 * 0.7f64.sin()), epsilon = 1e-14);
+        for k in 0..10 {
+            check_derivatives(&e, k as f64 * 0.63, 1e-8);
+        }
+    }
+}

@@ -1,0 +1,270 @@
+//! Planar curves fixed in a body frame.
+//!
+//! One small trait, [`Curve`]: position and derivatives at a parameter, plus the parameter domain;
+//! tangent, left normal and signed curvature are provided methods. Conventions (left normal,
+//! curvature sign, metric factor `g = |r'|`): see the [crate docs](crate#sign-conventions).
+//!
+//! | type | curve | parameter |
+//! |---|---|---|
+//! | [`ClosedSpline`] | periodic C² cubic spline through nodes (the paper's cam) | node i at `u = i` (or cumulative chord length) |
+//! | [`Circle`] | circle | angle from the +x axis, rad |
+//! | [`Ellipse`] | ellipse with semi-axes and rotation | eccentric anomaly, rad |
+//! | [`Line`] | infinite straight line | arc length from its anchor point |
+//! | [`PointCurve`] | a single point (knife edge) | none |
+
+mod circle;
+mod ellipse;
+mod line;
+mod point;
+mod points_file;
+mod spline;
+
+pub use circle::Circle;
+pub use ellipse::Ellipse;
+pub use line::Line;
+pub use point::PointCurve;
+pub use points_file::{parse_points, read_points_file};
+pub use spline::{ClosedSpline, Parameterization};
+
+use crate::geometry::{cross, perp, Point2, Vec2};
+
+/// Position and derivatives of a curve at one parameter value, in the curve's (body) frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Derivs {
+    /// `r(u)`, length
+    pub p: Point2,
+    /// `r'(u) = dr/du`
+    pub d1: Vec2,
+    /// `r''(u)`
+    pub d2: Vec2,
+    /// `r'''(u)`; for a cubic spline the value on the segment that starts at or before `u`
+    /// (it jumps at the nodes, see [`Curve::breakpoints`]).
+    pub d3: Vec2,
+}
+
+impl Derivs {
+    /// Metric factor `g = |r'|` (the paper's `dξ/dα`).
+    #[inline]
+    pub fn metric(&self) -> f64 {
+        self.d1.norm()
+    }
+    /// Unit tangent `r'/|r'|`.
+    #[inline]
+    pub fn tangent(&self) -> Vec2 {
+        self.d1 / self.d1.norm()
+    }
+    /// Left normal `k × t`.
+    #[inline]
+    pub fn normal(&self) -> Vec2 {
+        perp(self.tangent())
+    }
+    /// Signed curvature `κ = (r' × r'')/|r'|³`, 1/length; positive where the curve turns left.
+    #[inline]
+    pub fn curvature(&self) -> f64 {
+        let g = self.d1.norm();
+        cross(self.d1, self.d2) / (g * g * g)
+    }
+    /// Derivative of the signed curvature with respect to arc length, `dκ/ds`, 1/length².
+    pub fn curvature_slope(&self) -> f64 {
+        let g2 = self.d1.norm_squared();
+        let g = g2.sqrt();
+        let c = cross(self.d1, self.d2);
+        let dc = cross(self.d1, self.d3);
+        let dg = self.d1.dot(&self.d2) / g;
+        // κ = c / g³, dκ/du = (dc g³ − 3 c g² dg)/g⁶; ds = g du
+        (dc * g - 3.0 * c * dg) / (g2 * g2 * g)
+    }
+}
+
+/// The parameter domain of a curve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Domain {
+    /// A closed curve: `u ∈ [0, period)`, any `u` is taken modulo the period.
+    Periodic {
+        /// length of the parameter period
+        period: f64,
+    },
+    /// An open curve over `[min, max]`; the bounds may be infinite (a straight line).
+    Interval {
+        /// lower bound
+        min: f64,
+        /// upper bound
+        max: f64,
+    },
+    /// The curve is a single point (a knife edge): the parameter is ignored and tangent, normal
+    /// and curvature are undefined (NaN); contact code treats it as the limit `κ → ∞`.
+    Point,
+}
+
+/// A regular planar curve `r(u)` fixed in a body frame.
+///
+/// Implementors provide [`eval`](Curve::eval) and [`domain`](Curve::domain); everything else is
+/// derived. A curve must be regular (`r' ≠ 0`) except a [`Domain::Point`] curve.
+pub trait Curve: std::fmt::Debug + Send + Sync {
+    /// Position and first three derivatives at `u`.
+    fn eval(&self, u: f64) -> Derivs;
+
+    /// The parameter domain.
+    fn domain(&self) -> Domain;
+
+    /// Parameters where the curve is only C² (its curvature has a corner and the third
+    /// derivative jumps): a cubic spline's nodes. Empty for analytic curves.
+    fn breakpoints(&self) -> Vec<f64> {
+        Vec::new()
+    }
+
+    /// `r(u)`.
+    fn position(&self, u: f64) -> Point2 {
+        self.eval(u).p
+    }
+    /// Unit tangent at `u`.
+    fn tangent(&self, u: f64) -> Vec2 {
+        self.eval(u).tangent()
+    }
+    /// Left normal at `u` (see the [crate docs](crate#sign-conventions)).
+    fn normal(&self, u: f64) -> Vec2 {
+        self.eval(u).normal()
+    }
+    /// Signed curvature at `u`, 1/length.
+    fn curvature(&self, u: f64) -> f64 {
+        self.eval(u).curvature()
+    }
+}
+
+/// What is wrong with the data a curve was asked to be built from.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CurveError {
+    /// A closed spline needs at least three nodes.
+    #[error("a closed spline needs at least 3 points, got {count}")]
+    TooFewPoints {
+        /// number of points given
+        count: usize,
+    },
+    /// A coordinate is NaN or infinite.
+    #[error("point {index} is not finite: ({x}, {y})")]
+    NonFinitePoint {
+        /// index of the point (0-based)
+        index: usize,
+        /// its x
+        x: f64,
+        /// its y
+        y: f64,
+    },
+    /// Two consecutive nodes coincide (the last and the first count as consecutive).
+    #[error("points {index} and {next} coincide at ({x}, {y})")]
+    RepeatedPoint {
+        /// index of the first of the two
+        index: usize,
+        /// index of the second
+        next: usize,
+        /// x of the repeated point
+        x: f64,
+        /// y of the repeated point
+        y: f64,
+    },
+    /// A size (radius, semi-axis) is not positive and finite.
+    #[error("{field} must be positive and finite, got {value}")]
+    NonPositive {
+        /// the field
+        field: &'static str,
+        /// the value given
+        value: f64,
+    },
+    /// A number that must be finite is not.
+    #[error("{field} must be finite, got {value}")]
+    NonFinite {
+        /// the field
+        field: &'static str,
+        /// the value given
+        value: f64,
+    },
+    /// A direction vector has zero (or non-finite) length.
+    #[error("{field} must be a non-zero finite vector, got ({x}, {y})")]
+    ZeroDirection {
+        /// the field
+        field: &'static str,
+        /// x of the vector
+        x: f64,
+        /// y of the vector
+        y: f64,
+    },
+    /// A points file could not be read.
+    #[error("cannot read points file {path}: {message}")]
+    PointsFileIo {
+        /// the path as given
+        path: String,
+        /// the operating system's message
+        message: String,
+    },
+    /// A line of a points file is malformed.
+    #[error("points file line {line}: {message}: {content:?}")]
+    PointsFileSyntax {
+        /// 1-based line number
+        line: usize,
+        /// what is wrong
+        message: String,
+        /// the line's text
+        content: String,
+    },
+}
+
+pub(crate) fn check_positive(field: &'static str, value: f64) -> Result<f64, CurveError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(CurveError::NonPositive { field, value })
+    }
+}
+
+pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<f64, CurveError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(CurveError::NonFinite { field, value })
+    }
+}
+
+pub(crate) fn check_point(field: &'static str, p: Point2) -> Result<Point2, CurveError> {
+    check_finite(field, p.x)?;
+    check_finite(field, p.y)?;
+    Ok(p)
+}
+
+/// The unit vector along `v`, or an error naming `field` when `v` is zero or not finite.
+pub fn unit_direction(field: &'static str, v: Vec2) -> Result<Vec2, CurveError> {
+    let n = v.norm();
+    if n.is_finite() && n > 0.0 {
+        Ok(v / n)
+    } else {
+        Err(CurveError::ZeroDirection {
+            field,
+            x: v.x,
+            y: v.y,
+        })
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod test_support {
+    //! Derivative checks shared by the curve tests.
+    use super::*;
+    use crate::geometry::Vec2;
+
+    /// Fourth-order central difference of `f` at `u` with step `h`.
+    pub(crate) fn central(f: impl Fn(f64) -> Vec2, u: f64, h: f64) -> Vec2 {
+        (f(u - 2.0 * h) - 8.0 * f(u - h) + 8.0 * f(u + h) - f(u + 2.0 * h)) / (12.0 * h)
+    }
+
+    /// Asserts that d1, d2, d3 agree with finite differences of the lower derivative at `u`.
+    pub(crate) fn check_derivatives(c: &dyn Curve, u: f64, tol: f64) {
+        let h = 1e-4;
+        let e = c.eval(u);
+        let d1 = central(|v| c.eval(v).p.coords, u, h);
+        let d2 = central(|v| c.eval(v).d1, u, h);
+        let d3 = central(|v| c.eval(v).d2, u, h);
+        let scale = 1.0 + e.d1.norm() + e.d2.norm() + e.d3.norm();
+        assert!((d1 - e.d1).norm() < tol * scale, "d1 at {u}: {d1} vs {}", e.d1);
+        assert!((d2 - e.d2).norm() < tol * scale, "d2 at {u}: {d2} vs {}", e.d2);
+        assert!((d3 - e.d3).norm() < tol * scale, "d3 at {u}: {d3} vs {}", e.d3);
+    }
+}

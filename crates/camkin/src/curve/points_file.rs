@@ -1,0 +1,77 @@
+//! Reading nodal points from a text file: one point per line, `x,y` (commas, semicolons, tabs or
+//! spaces between the two numbers). Blank lines and lines starting with `#` are skipped; a first
+//! line that holds letters is taken as a header and skipped.
+
+use super::CurveError;
+use crate::geometry::Point2;
+use std::path::Path;
+
+/// Parses points from text (see the [module docs](self)); errors name the 1-based line.
+pub fn parse_points(text: &str) -> Result<Vec<Point2>, CurveError> {
+    let mut points = Vec::new();
+    let mut seen_data = false;
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let syntax = |message: &str| CurveError::PointsFileSyntax {
+            line: i + 1,
+            message: message.to_string(),
+            content: raw.chars().take(120).collect(),
+        };
+        let fields: Vec<&str> = line
+            .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
+            .filter(|f| !f.is_empty())
+            .collect();
+        if !seen_data && fields.iter().any(|f| f.parse::<f64>().is_err()) && line.chars().any(|c| c.is_alphabetic()) && !line.to_ascii_lowercase().contains("nan") && !line.to_ascii_lowercase().contains("inf") {
+            seen_data = true; // header
+            continue;
+        }
+        seen_data = true;
+        if fields.len() != 2 {
+            return Err(syntax(&format!("expected 2 numbers (x,y), found {} fields", fields.len())));
+        }
+        let x: f64 = fields[0]
+            .parse()
+            .map_err(|_| syntax(&format!("x is not a number: {:?}", fields[0])))?;
+        let y: f64 = fields[1]
+            .parse()
+            .map_err(|_| syntax(&format!("y is not a number: {:?}", fields[1])))?;
+        if !(x.is_finite() && y.is_finite()) {
+            return Err(syntax("coordinates must be finite"));
+        }
+        points.push(Point2::new(x, y));
+    }
+    Ok(points)
+}
+
+/// Reads and parses a points file.
+pub fn read_points_file(path: &Path) -> Result<Vec<Point2>, CurveError> {
+    let text = std::fs::read_to_string(path).map_err(|e| CurveError::PointsFileIo {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    })?;
+    parse_points(&text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_commas_spaces_comments_and_header() {
+        let p = parse_points("x,y\n# comment\n1,2\n\n3.5 -4\n5;6e-1\n").unwrap();
+        assert_eq!(p, vec![Point2::new(1.0, 2.0), Point2::new(3.5, -4.0), Point2::new(5.0, 0.6)]);
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let e = parse_points("1,2\n3,abc\n").unwrap_err();
+        assert!(matches!(e, CurveError::PointsFileSyntax { line: 2, .. }), "{e}");
+        let e = parse_points("1,2\n3,4,5\n").unwrap_err();
+        assert!(e.to_string().contains("line 2"), "{e}");
+        let e = parse_points("1,2\nnan,4\n").unwrap_err();
+        assert!(matches!(e, CurveError::PointsFileSyntax { line: 2, .. }), "{e}");
+    }
+}

@@ -1,0 +1,241 @@
+//! Closed (periodic, C²) cubic spline through nodal points: the paper's cam contour.
+
+use super::{Curve, CurveError, Derivs, Domain};
+use crate::geometry::{Point2, Vec2};
+use crate::periodic::{eval_local, fit, Knots};
+
+/// Where the nodes sit in the parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Parameterization {
+    /// Node i at `u = i`; `u ∈ [0, n)`. The paper's choice and the default.
+    #[default]
+    Uniform,
+    /// Node i at the cumulative chord length `Σ_{j<i} |P_{j+1} − P_j|`; `u ∈ [0, perimeter of the
+    /// node polygon)`. Smoother for unevenly spaced nodes.
+    ChordLength,
+}
+
+/// A closed cubic spline through `n ≥ 3` nodes: periodic, C² everywhere including the seam
+/// between the last node and the first, so no end conditions are needed. The third derivative is
+/// constant on each segment and jumps at the nodes ([`Curve::breakpoints`]).
+#[derive(Debug, Clone)]
+pub struct ClosedSpline {
+    nodes: Vec<Point2>,
+    knots: Knots,
+    cx: Vec<[f64; 4]>,
+    cy: Vec<[f64; 4]>,
+    parameterization: Parameterization,
+}
+
+impl ClosedSpline {
+    /// The closed spline through `nodes`, uniformly parameterised (node i at `u = i`).
+    pub fn new(nodes: &[Point2]) -> Result<Self, CurveError> {
+        Self::with_parameterization(nodes, Parameterization::Uniform)
+    }
+
+    /// The closed spline through `nodes` with the given parameterisation.
+    ///
+    /// Errors: fewer than three nodes, a non-finite coordinate, two consecutive nodes that
+    /// coincide (the last and the first count as consecutive).
+    pub fn with_parameterization(
+        nodes: &[Point2],
+        parameterization: Parameterization,
+    ) -> Result<Self, CurveError> {
+        let n = nodes.len();
+        if n < 3 {
+            return Err(CurveError::TooFewPoints { count: n });
+        }
+        for (index, p) in nodes.iter().enumerate() {
+            if !(p.x.is_finite() && p.y.is_finite()) {
+                return Err(CurveError::NonFinitePoint {
+                    index,
+                    x: p.x,
+                    y: p.y,
+                });
+            }
+        }
+        for index in 0..n {
+            let next = (index + 1) % n;
+            if nodes[index] == nodes[next] {
+                return Err(CurveError::RepeatedPoint {
+                    index,
+                    next,
+                    x: nodes[index].x,
+                    y: nodes[index].y,
+                });
+            }
+        }
+        let knots = match parameterization {
+            Parameterization::Uniform => Knots::uniform(n, 1.0),
+            Parameterization::ChordLength => {
+                let h: Vec<f64> = (0..n)
+                    .map(|i| (nodes[(i + 1) % n] - nodes[i]).norm())
+                    .collect();
+                Knots::from_lengths(&h)
+            }
+        };
+        let xs: Vec<f64> = nodes.iter().map(|p| p.x).collect();
+        let ys: Vec<f64> = nodes.iter().map(|p| p.y).collect();
+        let cx = fit(&knots, &xs);
+        let cy = fit(&knots, &ys);
+        Ok(Self {
+            nodes: nodes.to_vec(),
+            knots,
+            cx,
+            cy,
+            parameterization,
+        })
+    }
+
+    /// The nodes, as given.
+    pub fn nodes(&self) -> &[Point2] {
+        &self.nodes
+    }
+
+    /// The parameter of node `i` (i < n).
+    pub fn node_param(&self, i: usize) -> f64 {
+        self.knots.u[i]
+    }
+
+    /// The parameterisation.
+    pub fn parameterization(&self) -> Parameterization {
+        self.parameterization
+    }
+
+    /// Number of cubic segments (= number of nodes).
+    pub fn segments(&self) -> usize {
+        self.knots.segments()
+    }
+
+    /// Segment `i`: its start parameter, its length in `u`, and its local cubic coefficients
+    /// `[c0, c1, c2, c3]` for x and y (`x = c0 + c1 t + c2 t² + c3 t³`, `t = u − start`).
+    pub fn segment(&self, i: usize) -> (f64, f64, [f64; 4], [f64; 4]) {
+        (self.knots.u[i], self.knots.h(i), self.cx[i], self.cy[i])
+    }
+}
+
+impl Curve for ClosedSpline {
+    #[inline]
+    fn eval(&self, u: f64) -> Derivs {
+        let (i, t) = self.knots.locate(u);
+        let x = eval_local(&self.cx[i], t);
+        let y = eval_local(&self.cy[i], t);
+        Derivs {
+            p: Point2::new(x[0], y[0]),
+            d1: Vec2::new(x[1], y[1]),
+            d2: Vec2::new(x[2], y[2]),
+            d3: Vec2::new(x[3], y[3]),
+        }
+    }
+
+    fn domain(&self) -> Domain {
+        Domain::Periodic {
+            period: self.knots.period(),
+        }
+    }
+
+    fn breakpoints(&self) -> Vec<f64> {
+        self.knots.u[..self.segments()].to_vec()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::test_support::check_derivatives;
+    use approx::assert_relative_eq;
+
+    fn paper_nodes() -> Vec<Point2> {
+        [
+            (5.0, 0.0),
+            (3.4, 2.8),
+            (0.6, 3.4),
+            (-1.5, 2.6),
+            (-2.8, 1.0),
+            (-2.8, -1.0),
+            (-1.5, -2.6),
+            (0.6, -3.4),
+            (3.4, -2.8),
+        ]
+        .iter()
+        .map(|&(x, y)| Point2::new(x, y))
+        .collect()
+    }
+
+    #[test]
+    fn interpolates_nodes_both_parameterizations() {
+        for p in [Parameterization::Uniform, Parameterization::ChordLength] {
+            let s = ClosedSpline::with_parameterization(&paper_nodes(), p).unwrap();
+            for (i, n) in paper_nodes().iter().enumerate() {
+                assert_relative_eq!(s.position(s.node_param(i)), *n, epsilon = 1e-13);
+            }
+            // u beyond the period wraps
+            let period = match s.domain() {
+                Domain::Periodic { period } => period,
+                _ => unreachable!(),
+            };
+            assert_relative_eq!(s.position(period + s.node_param(2)), paper_nodes()[2], epsilon = 1e-12);
+            assert_relative_eq!(s.position(-period + s.node_param(3)), paper_nodes()[3], epsilon = 1e-12);
+        }
+    }
+
+    #[test]
+    fn c2_across_every_node_including_seam() {
+        for p in [Parameterization::Uniform, Parameterization::ChordLength] {
+            let s = ClosedSpline::with_parameterization(&paper_nodes(), p).unwrap();
+            let n = s.segments();
+            for i in 0..n {
+                let (start, h, cx, cy) = s.segment(i);
+                let right = s.eval(start + h); // start of the next segment (wraps at the seam)
+                let lx = eval_local(&cx, h);
+                let ly = eval_local(&cy, h);
+                for (k, (l, r)) in [(lx[0], right.p.x), (ly[0], right.p.y), (lx[1], right.d1.x), (ly[1], right.d1.y), (lx[2], right.d2.x), (ly[2], right.d2.y)]
+                    .into_iter()
+                    .enumerate()
+                {
+                    assert!((l - r).abs() < 1e-12 * (1.0 + r.abs()), "segment {i} quantity {k}: {l} vs {r}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn derivatives_agree_with_finite_differences() {
+        let s = ClosedSpline::new(&paper_nodes()).unwrap();
+        for k in 0..40 {
+            let u = 0.137 + k as f64 * 0.2234; // avoids the nodes (d3 jumps there)
+            if (u - u.round()).abs() > 1e-3 {
+                check_derivatives(&s, u, 1e-7);
+            }
+        }
+    }
+
+    #[test]
+    fn paper_cam_is_ccw_convex() {
+        let s = ClosedSpline::new(&paper_nodes()).unwrap();
+        for k in 0..900 {
+            assert!(s.curvature(k as f64 * 0.01) > 0.0);
+        }
+    }
+
+    #[test]
+    fn rejects_bad_nodes() {
+        let p = |x, y| Point2::new(x, y);
+        assert_eq!(
+            ClosedSpline::new(&[p(0.0, 0.0), p(1.0, 0.0)]).unwrap_err(),
+            CurveError::TooFewPoints { count: 2 }
+        );
+        assert!(matches!(
+            ClosedSpline::new(&[p(0.0, 0.0), p(1.0, 0.0), p(1.0, 0.0), p(0.0, 1.0)]),
+            Err(CurveError::RepeatedPoint { index: 1, next: 2, .. })
+        ));
+        assert!(matches!(
+            ClosedSpline::new(&[p(0.0, 0.0), p(1.0, 0.0), p(0.0, 1.0), p(0.0, 0.0)]),
+            Err(CurveError::RepeatedPoint { index: 3, next: 0, .. })
+        ));
+        assert!(matches!(
+            ClosedSpline::new(&[p(0.0, 0.0), p(f64::NAN, 0.0), p(0.0, 1.0)]),
+            Err(CurveError::NonFinitePoint { index: 1, .. })
+        ));
+    }
+}

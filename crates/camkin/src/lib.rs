@@ -1,0 +1,57 @@
+//! # camkin — exact contact kinematics of rotating planar curves
+//!
+//! Given two planar curves carried by moving rigid bodies, camkin computes at one instant where
+//! they touch, how fast the contact point slides along each curve, the normal accelerations of the
+//! contact point with their Coriolis and relative terms, and so the acceleration constraint between
+//! the bodies as one linear equation. The method is K. Lee, *Efficient computation of the
+//! acceleration of the contact point between rotating surfaces and application to cam-follower
+//! mechanism* (Int. J. Automotive Technology, 2005); equation numbers in the docs are the paper's.
+//!
+//! Data flows one way: [`geometry`] → [`curve`] → [`body`] → [`contact`] → [`cam`]
+//! (→ [`interp`], the paper's comparison method).
+//!
+//! # Sign conventions
+//!
+//! This section is the one place where the conventions are stated; every other doc refers here.
+//!
+//! - **Angles and angular velocities are counter-clockwise positive**, for every body (the paper
+//!   takes body B's angular velocity clockwise, hence its `ω^A + ω^B`; camkin writes `ω_A − ω_B`).
+//!   Angles are in radians inside the library; degrees appear only where a name says `_deg`.
+//! - **Body frames.** A body X has origin `p_X` and angle `θ_X`; a point `r` fixed in the body is at
+//!   `x = p_X + R(θ_X) r` in the world.
+//! - **Curves** `r(u)` are fixed in their body frame; `u` is any regular parameter (the paper's α, β).
+//!   With `r' = dr/du`, `r'' = d²r/du²`: metric factor `g = |r'|` (the paper's `dξ/dα`), unit tangent
+//!   `t = r'/g`, **left normal** `ν = k × t = (−t_y, t_x)` (the paper's η axis) and **signed
+//!   curvature** `κ = (r' × r'')/g³`, positive where the curve turns left. A closed curve traversed
+//!   counter-clockwise has `κ > 0` where it is convex, and `ν` pointing inward.
+//! - **Material on the left.** Curves built by camkin for followers (faces, rollers) are oriented
+//!   with the body's material on their left, like a counter-clockwise closed profile. With that
+//!   orientation the **gap** `ν_A·(x_A − x_B)` is positive when the curves are apart and negative
+//!   when they overlap. The formulas themselves do not depend on the orientation: reversing a curve
+//!   flips `t`, `ν`, `κ`, `σ` and that curve's sliding rate together.
+//! - **σ** `= t_A·t_B = ±1` at a contact records whether the two parameter directions agree (two
+//!   closed counter-clockwise curves touching externally give `σ = −1`).
+//! - **Sliding rates** `ṡ_X = g_X u̇_X` are the speeds of the contact point along curve X relative to
+//!   body X, positive in the direction of increasing `u_X`.
+//! - **Normal accelerations** `a_n^A`, `a_n^B` are components along `ν_A` (eqs. 1, 2, 11).
+//! - **Units.** Lengths in any one unit `L` chosen by the user; time in seconds. Velocities are
+//!   `L/s` and `rad/s`, accelerations `L/s²` and `rad/s²`, curvature `1/L`.
+//! - **Cam angle** `θ` (see [`cam`]) is how far the cam has turned in its own direction of motion,
+//!   always increasing with time: a counter-clockwise cam's frame is at `+θ`, a clockwise cam's at
+//!   `−θ`.
+//!
+//! # Tolerances
+//!
+//! Tolerances are explicit: lengths are scaled by the size of the problem (see
+//! [`contact::SearchOptions`] and [`cam::AnalysisOptions`]); no bare epsilon is hidden in the code.
+
+pub mod body;
+pub mod cam;
+pub mod contact;
+pub mod curve;
+pub mod geometry;
+pub mod interp;
+pub(crate) mod periodic;
+
+pub use body::{BodyState, Pose};
+pub use geometry::{Point2, Vec2};

@@ -1,0 +1,99 @@
+//! Shared helpers for the scenario tests: the finite-difference helper and the catalogue of
+//! reference problems with exact answers.
+#![allow(dead_code)]
+
+use camkin::cam::{Cam, Follower, Mechanism, Sense};
+use camkin::curve::{Circle, ClosedSpline, Curve, Ellipse};
+use camkin::Point2;
+use std::sync::Arc;
+
+/// Central finite-difference derivatives of `f` at `x` with step `h`, of 8th order for the first
+/// and second derivative (error O(h⁸)). Returns `(f', f'')`.
+pub fn fd8(f: impl Fn(f64) -> f64, x: f64, h: f64) -> (f64, f64) {
+    let c1 = [4.0 / 5.0, -1.0 / 5.0, 4.0 / 105.0, -1.0 / 280.0];
+    let c2 = [8.0 / 5.0, -1.0 / 5.0, 8.0 / 315.0, -1.0 / 560.0];
+    let f0 = f(x);
+    let (mut d1, mut d2) = (0.0, -205.0 / 72.0 * f0);
+    for k in 1..=4 {
+        let (fp, fm) = (f(x + k as f64 * h), f(x - k as f64 * h));
+        d1 += c1[k - 1] * (fp - fm);
+        d2 += c2[k - 1] * (fp + fm);
+    }
+    (d1 / h, d2 / (h * h))
+}
+
+/// `|a − b| ≤ tol · scale`, with a message.
+#[track_caller]
+pub fn assert_close(a: f64, b: f64, tol: f64, scale: f64, what: &str) {
+    assert!(
+        (a - b).abs() <= tol * scale,
+        "{what}: {a} vs {b} (|diff| = {:e}, allowed {:e})",
+        (a - b).abs(),
+        tol * scale
+    );
+}
+
+/// The paper's nine nodes (cm); `revised` replaces (5, 0) by (4.2, 0).
+pub fn paper_nodes(revised: bool) -> Vec<Point2> {
+    let x0 = if revised { 4.2 } else { 5.0 };
+    [
+        (x0, 0.0),
+        (3.4, 2.8),
+        (0.6, 3.4),
+        (-1.5, 2.6),
+        (-2.8, 1.0),
+        (-2.8, -1.0),
+        (-1.5, -2.6),
+        (0.6, -3.4),
+        (3.4, -2.8),
+    ]
+    .iter()
+    .map(|&(x, y)| Point2::new(x, y))
+    .collect()
+}
+
+pub fn paper_profile(revised: bool) -> Arc<dyn Curve> {
+    Arc::new(ClosedSpline::new(&paper_nodes(revised)).unwrap())
+}
+
+/// The paper's mechanism: flat-faced follower along +x, 1000 rpm ccw, axis at the origin.
+pub fn paper_mechanism(revised: bool) -> Mechanism {
+    let cam = Cam::from_rpm(paper_profile(revised), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
+    Mechanism::new(cam, Follower::TranslatingFlat { direction: camkin::Vec2::x() }).unwrap()
+}
+
+/// Eccentric circular cam: radius `r`, centre at `(e, 0)` in the cam frame.
+pub fn eccentric_circle(r: f64, e: f64) -> Arc<dyn Curve> {
+    Arc::new(Circle::new(Point2::new(e, 0.0), r).unwrap())
+}
+
+pub fn ellipse(a: f64, b: f64, center: Point2, rot: f64) -> Arc<dyn Curve> {
+    Arc::new(Ellipse::new(center, a, b, rot).unwrap())
+}
+
+pub fn mechanism(profile: Arc<dyn Curve>, pivot: Point2, dir: Sense, rpm: f64, f: Follower) -> Mechanism {
+    Mechanism::new(Cam::from_rpm(profile, pivot, dir, rpm).unwrap(), f).unwrap()
+}
+
+/// Every follower type, placed sensibly around a cam of size about 5 whose axis is `pivot`.
+pub fn all_followers(pivot: Point2) -> Vec<Follower> {
+    use camkin::Vec2;
+    vec![
+        Follower::TranslatingFlat { direction: Vec2::new(1.0, 0.3) },
+        Follower::TranslatingRoller { direction: Vec2::new(0.0, 1.0), offset: 0.7, roller_radius: 1.2 },
+        Follower::TranslatingKnife { direction: Vec2::new(-1.0, 0.2), offset: -0.4 },
+        Follower::OscillatingFlat {
+            pivot: pivot + Vec2::new(-3.0, 7.0),
+            face_offset: 0.5,
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+        },
+        Follower::OscillatingRoller {
+            pivot: pivot + Vec2::new(-3.0, 7.0),
+            arm_length: 9.0,
+            roller_radius: 1.0,
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+        },
+    ]
+}
