@@ -89,9 +89,9 @@ mod tests {
         let err = |n: usize| {
             let pos: Vec<f64> = (0..n).map(|k| (TAU * k as f64 / n as f64).cos()).collect();
             let it = Interpolated::from_positions(&pos, 2.0, 0.0);
-            (0..500)
+            (0..5000)
                 .map(|k| {
-                    let t = TAU * (k as f64 + 0.3) / 500.0;
+                    let t = TAU * (k as f64 + 0.3) / 5000.0;
                     (it.acceleration(t) + 4.0 * t.cos()).abs()
                 })
                 .fold(0.0, f64::max)
