@@ -186,7 +186,8 @@ pub fn pairing_at(a: &Surface<'_>, b: &Surface<'_>, u_a: f64, u_b: f64) -> Pairi
     }
 }
 
-/// Newton's method on `r_A'·(x_A − x_B) = 0`, `r_B'·(x_A − x_B) = 0` from `(u_a, u_b)`.
+/// Newton's method for a pairing from `(u_a, u_b)`: `r_A' × r_B' = 0` (parallel tangents) and
+/// `r_A'·(x_A − x_B) = 0`; with a point, `r'·(x_A − x_B) = 0` on the other curve alone.
 pub fn refine(
     a: &Surface<'_>,
     b: &Surface<'_>,
@@ -213,12 +214,15 @@ pub fn refine(
             let j = eb.d2.dot(&d) - eb.d1.norm_squared();
             (0.0, -f / j)
         } else {
-            let f1 = ea.d1.dot(&d);
-            let f2 = eb.d1.dot(&d);
-            let j11 = ea.d2.dot(&d) + ea.d1.norm_squared();
-            let j12 = -ea.d1.dot(&eb.d1);
-            let j21 = eb.d1.dot(&ea.d1);
-            let j22 = eb.d2.dot(&d) - eb.d1.norm_squared();
+            // Tangents parallel and x_A − x_B normal to A. (The symmetric form r_A'·d = r_B'·d = 0
+            // has a singular Jacobian at contact, d = 0, and is also solved by crossings; this one's
+            // Jacobian determinant there is g_A³ g_B² (κ_A − σ κ_B), zero only for conformal contact.)
+            let f1 = cross(ea.d1, eb.d1);
+            let f2 = ea.d1.dot(&d);
+            let j11 = cross(ea.d2, eb.d1);
+            let j12 = cross(ea.d1, eb.d2);
+            let j21 = ea.d2.dot(&d) + ea.d1.norm_squared();
+            let j22 = -ea.d1.dot(&eb.d1);
             let det = j11 * j22 - j12 * j21;
             ((-f1 * j22 + f2 * j12) / det, (-j11 * f2 + j21 * f1) / det)
         };
@@ -399,7 +403,8 @@ pub struct ContactKinematics {
     pub normal: Vec2,
     /// A's unit tangent at `c`
     pub tangent_a: Vec2,
-    /// `σ = t_A·t_B = ±1` (reported as −1 when either curve is a point; it then multiplies zeros)
+    /// `σ = t_A·t_B = ±1`. When a curve is a point it is −1: with B a point it multiplies zeros;
+    /// with A a point the normal is `−ν_B`, so B's terms enter eq. 2 with the sign −1.
     pub sigma: f64,
     /// `κ_A`, 1/length (`+∞` for a point)
     pub kappa_a: f64,
@@ -461,8 +466,7 @@ impl ContactKinematics {
         match (a.is_point(), b.is_point()) {
             (true, true) => Err(ContactError::Unsupported("two points")),
             (true, false) => {
-                // Solve with the roles swapped; the normal becomes ν_B, so flip it back to keep
-                // `normal = −ν_B` as documented (the equation Φ_q q̈ = γ is negated with it).
+                // Solve with the roles swapped (normal ν_B) and report with normal −ν_B.
                 let swapped = Pairing {
                     u_a: pairing.u_b,
                     u_b: pairing.u_a,
@@ -490,8 +494,10 @@ impl ContactKinematics {
                     param_rate_a: k.param_rate_b,
                     param_rate_b: k.param_rate_a,
                     normal_velocity: k.normal_velocity,
+                    // ν_B·(a_B − a_A) = (−ν_B)·(a_A − a_B): the swapped equation is this one,
+                    // with the blocks of q exchanged
                     phi_q: [p[3], p[4], p[5], p[0], p[1], p[2]],
-                    gamma: -k.gamma,
+                    gamma: k.gamma,
                     omega_a: k.omega_b,
                     omega_b: k.omega_a,
                 })

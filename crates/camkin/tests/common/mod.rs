@@ -97,3 +97,101 @@ pub fn all_followers(pivot: Point2) -> Vec<Follower> {
         },
     ]
 }
+
+/// Hyper-dual number `a + b ε₁ + c ε₂ + d ε₁ε₂` (ε₁² = ε₂² = 0): evaluating a closed form on
+/// `HD::var(x)` gives its value, first and second derivative exactly (to rounding), independently
+/// of the code under test.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HD {
+    pub v: f64,
+    pub d1: f64,
+    pub d2: f64, // the ε₁ε₂ part: the second derivative
+}
+
+impl HD {
+    pub fn var(x: f64) -> Self {
+        Self { v: x, d1: 1.0, d2: 0.0 }
+    }
+    pub fn c(x: f64) -> Self {
+        Self { v: x, d1: 0.0, d2: 0.0 }
+    }
+    /// Applies a scalar function with derivatives f, f', f'' (chain rule to second order).
+    fn chain(self, f: f64, fp: f64, fpp: f64) -> Self {
+        Self { v: f, d1: fp * self.d1, d2: fp * self.d2 + fpp * self.d1 * self.d1 }
+    }
+    pub fn sin(self) -> Self {
+        self.chain(self.v.sin(), self.v.cos(), -self.v.sin())
+    }
+    pub fn cos(self) -> Self {
+        self.chain(self.v.cos(), -self.v.sin(), -self.v.cos())
+    }
+    pub fn sqrt(self) -> Self {
+        let s = self.v.sqrt();
+        self.chain(s, 0.5 / s, -0.25 / (s * s * s))
+    }
+    pub fn asin(self) -> Self {
+        let q = 1.0 - self.v * self.v;
+        self.chain(self.v.asin(), 1.0 / q.sqrt(), self.v / (q * q.sqrt()))
+    }
+    pub fn acos(self) -> Self {
+        let q = 1.0 - self.v * self.v;
+        self.chain(self.v.acos(), -1.0 / q.sqrt(), -self.v / (q * q.sqrt()))
+    }
+    pub fn atan2(y: Self, x: Self) -> Self {
+        // d atan2 = (x dy − y dx)/(x² + y²)
+        let r2 = x * x + y * y;
+        let num = x * y.dd() - y * x.dd();
+        let d1 = num.v / r2.v;
+        // derivative of num/r2
+        let q = num / r2;
+        Self { v: y.v.atan2(x.v), d1, d2: q.d1 }
+    }
+    /// The derivative as a hyper-dual (value d1, derivative d2).
+    fn dd(self) -> Self {
+        Self { v: self.d1, d1: self.d2, d2: 0.0 }
+    }
+}
+
+impl std::ops::Add for HD {
+    type Output = HD;
+    fn add(self, o: HD) -> HD {
+        HD { v: self.v + o.v, d1: self.d1 + o.d1, d2: self.d2 + o.d2 }
+    }
+}
+impl std::ops::Sub for HD {
+    type Output = HD;
+    fn sub(self, o: HD) -> HD {
+        HD { v: self.v - o.v, d1: self.d1 - o.d1, d2: self.d2 - o.d2 }
+    }
+}
+impl std::ops::Mul for HD {
+    type Output = HD;
+    fn mul(self, o: HD) -> HD {
+        HD { v: self.v * o.v, d1: self.d1 * o.v + self.v * o.d1, d2: self.d2 * o.v + 2.0 * self.d1 * o.d1 + self.v * o.d2 }
+    }
+}
+impl std::ops::Div for HD {
+    type Output = HD;
+    fn div(self, o: HD) -> HD {
+        let inv = o.chain(1.0 / o.v, -1.0 / (o.v * o.v), 2.0 / (o.v * o.v * o.v));
+        self * inv
+    }
+}
+impl std::ops::Neg for HD {
+    type Output = HD;
+    fn neg(self) -> HD {
+        HD { v: -self.v, d1: -self.d1, d2: -self.d2 }
+    }
+}
+impl std::ops::Mul<HD> for f64 {
+    type Output = HD;
+    fn mul(self, o: HD) -> HD {
+        HD { v: self * o.v, d1: self * o.d1, d2: self * o.d2 }
+    }
+}
+impl std::ops::Add<f64> for HD {
+    type Output = HD;
+    fn add(self, o: f64) -> HD {
+        HD { v: self.v + o, ..self }
+    }
+}
