@@ -1,1 +1,66 @@
-fn main(){}
+//! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
+
+mod analyze;
+mod mechfile;
+mod output;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Exact cam-follower kinematics by the contact method of K. Lee (2005).
+#[derive(Debug, Parser)]
+#[command(name = "camkin", version, about, long_about = None, after_help = "Exit codes: 0 success, 1 internal failure, 2 bad input.")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Follower position, velocity, acceleration and contact data at cam angles, as CSV.
+    #[command(
+        after_help = "Examples:\n  camkin analyze                              # the paper's cam, one revolution in 1° steps\n  camkin analyze examples/paper.toml --at 0,45\n  camkin analyze cam.toml --angles 0:90:0.5 -o out.csv\n\nColumns: see the README. Exit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Analyze(analyze::Args),
+}
+
+/// A failure and its exit code.
+#[derive(Debug)]
+pub enum Failure {
+    /// bad input: exit code 2
+    Input(anyhow::Error),
+    /// internal failure: exit code 1
+    Internal(anyhow::Error),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Analyze(args) => analyze::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Input(e)) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Internal(e)) => {
+            eprintln!("internal error: {e:#}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+/// Loads the mechanism file, or the paper's built-in mechanism when none is given.
+pub fn load_mechanism(path: Option<&PathBuf>) -> Result<camkin::cam::Mechanism, Failure> {
+    match path {
+        Some(p) => mechfile::load(p).map_err(Failure::Input),
+        None => {
+            eprintln!(
+                "camkin: no mechanism file given; using the paper's cam (examples/paper.toml)"
+            );
+            Ok(mechfile::paper())
+        }
+    }
+}

@@ -129,7 +129,11 @@ mod tests {
     #[test]
     fn material_point_motion_matches_finite_differences() {
         // A body point followed in time under constant p̈ and ω̇.
-        let (p0, v0, a0) = (Vec2::new(1.0, 2.0), Vec2::new(0.3, -0.2), Vec2::new(0.05, 0.1));
+        let (p0, v0, a0) = (
+            Vec2::new(1.0, 2.0),
+            Vec2::new(0.3, -0.2),
+            Vec2::new(0.05, 0.1),
+        );
         let (th0, w0, al) = (0.4, 1.3, -0.7);
         let r = Vec2::new(0.8, -1.5);
         let x = |t: f64| {
@@ -150,6 +154,10 @@ mod tests {
         let a_fd = (x(h) - 2.0 * x(0.0) + x(-h)) / (h * h);
         assert_relative_eq!(b.velocity_at(xw), v_fd, epsilon = 1e-6);
         assert_relative_eq!(b.acceleration_at(xw), a_fd, epsilon = 1e-5);
-        assert_relative_eq!(b.pose.to_body(b.pose.to_world(Point2::from(r))), Point2::from(r), epsilon = 1e-14);
+        assert_relative_eq!(
+            b.pose.to_body(b.pose.to_world(Point2::from(r))),
+            Point2::from(r),
+            epsilon = 1e-14
+        );
     }
 }

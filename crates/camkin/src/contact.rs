@@ -507,11 +507,17 @@ impl ContactKinematics {
                 let eb = b.eval(pairing.u_b).as_derivs();
                 let g_a = ea.metric();
                 if !(g_a > 0.0) {
-                    return Err(ContactError::Singular { which: "A", u: pairing.u_a });
+                    return Err(ContactError::Singular {
+                        which: "A",
+                        u: pairing.u_a,
+                    });
                 }
                 let g_b = eb.metric();
                 if !b_point && !(g_b > 0.0) {
-                    return Err(ContactError::Singular { which: "B", u: pairing.u_b });
+                    return Err(ContactError::Singular {
+                        which: "B",
+                        u: pairing.u_b,
+                    });
                 }
                 let c = pairing.point_a;
                 let t_a = ea.tangent();
@@ -524,7 +530,11 @@ impl ContactKinematics {
                 let (sigma, kappa_b, d, sa, sb, ub_dot) = if b_point {
                     (-1.0, f64::INFINITY, f64::INFINITY, w, 0.0, 0.0)
                 } else {
-                    let sigma = if t_a.dot(&eb.tangent()) >= 0.0 { 1.0 } else { -1.0 };
+                    let sigma = if t_a.dot(&eb.tangent()) >= 0.0 {
+                        1.0
+                    } else {
+                        -1.0
+                    };
                     let kappa_b = eb.curvature();
                     let d = kappa_b - sigma * kappa_a;
                     if !(d.abs() > conformal_tolerance * (kappa_a.abs() + kappa_b.abs())) {
@@ -541,9 +551,14 @@ impl ContactKinematics {
                 };
                 let ra = c - a.body.pose.origin;
                 let rb = c - b.body.pose.origin;
-                let b_terms = if b_point { 0.0 } else { sigma * (2.0 * wb * sb + kappa_b * sb * sb) };
-                let gamma = nu.dot(&(wa * wa * ra - wb * wb * rb)) - 2.0 * wa * sa - kappa_a * sa * sa
-                    + b_terms;
+                let b_terms = if b_point {
+                    0.0
+                } else {
+                    sigma * (2.0 * wb * sb + kappa_b * sb * sb)
+                };
+                let gamma =
+                    nu.dot(&(wa * wa * ra - wb * wb * rb)) - 2.0 * wa * sa - kappa_a * sa * sa
+                        + b_terms;
                 Ok(Self {
                     point: c,
                     normal: nu,
@@ -560,7 +575,14 @@ impl ContactKinematics {
                     param_rate_a: sa / g_a,
                     param_rate_b: ub_dot,
                     normal_velocity: nu.dot(&(va - vb)),
-                    phi_q: [nu.x, nu.y, nu.dot(&perp(ra)), -nu.x, -nu.y, -nu.dot(&perp(rb))],
+                    phi_q: [
+                        nu.x,
+                        nu.y,
+                        nu.dot(&perp(ra)),
+                        -nu.x,
+                        -nu.y,
+                        -nu.dot(&perp(rb)),
+                    ],
                     gamma,
                     omega_a: wa,
                     omega_b: wb,
@@ -586,7 +608,11 @@ impl ContactKinematics {
         NormalAcceleration {
             material: self.normal.dot(&b.acceleration_at(self.point)),
             coriolis: self.sigma * 2.0 * self.omega_b * s,
-            relative: if s == 0.0 { 0.0 } else { self.sigma * self.kappa_b * s * s },
+            relative: if s == 0.0 {
+                0.0
+            } else {
+                self.sigma * self.kappa_b * s * s
+            },
         }
     }
 

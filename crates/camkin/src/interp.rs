@@ -21,12 +21,20 @@ impl Interpolated {
     /// interpolates it. `N ≥ 3`.
     pub fn new(mech: &Mechanism, nodes: usize) -> Result<Self, CamError> {
         if nodes < 3 {
-            return Err(CamError::Invalid { field: "nodes", value: nodes as f64, reason: "at least 3 nodal points" });
+            return Err(CamError::Invalid {
+                field: "nodes",
+                value: nodes as f64,
+                reason: "at least 3 nodal points",
+            });
         }
         let positions = (0..nodes)
             .map(|k| mech.position(TAU * k as f64 / nodes as f64))
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(Self::from_positions(&positions, mech.cam().speed(), mech.cam().angular_acceleration()))
+        Ok(Self::from_positions(
+            &positions,
+            mech.cam().speed(),
+            mech.cam().angular_acceleration(),
+        ))
     }
 
     /// Interpolates positions given at `θ_k = 2πk/N` (N = `positions.len()` ≥ 3), with cam speed
@@ -62,7 +70,11 @@ impl Interpolated {
 /// The paper's relative error: `|approx_i − exact_i| / max_j |exact_j|`.
 pub fn relative_errors(exact: &[f64], approx: &[f64]) -> Vec<f64> {
     let scale = exact.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    exact.iter().zip(approx).map(|(e, a)| (a - e).abs() / scale).collect()
+    exact
+        .iter()
+        .zip(approx)
+        .map(|(e, a)| (a - e).abs() / scale)
+        .collect()
 }
 
 /// Largest and mean value of a list of errors.

@@ -10,6 +10,26 @@
 //! Data flows one way: [`geometry`] → [`curve`] → [`body`] → [`contact`] → [`cam`]
 //! (→ [`interp`], the paper's comparison method).
 //!
+//! # Example: the paper's cam at one angle
+//!
+//! ```
+//! use camkin::cam::{Cam, Follower, Mechanism, Sense};
+//! use camkin::curve::ClosedSpline;
+//! use camkin::{Point2, Vec2};
+//! use std::sync::Arc;
+//!
+//! let nodes = [(5.0, 0.0), (3.4, 2.8), (0.6, 3.4), (-1.5, 2.6), (-2.8, 1.0),
+//!              (-2.8, -1.0), (-1.5, -2.6), (0.6, -3.4), (3.4, -2.8)]
+//!     .map(|(x, y)| Point2::new(x, y));
+//! let profile = Arc::new(ClosedSpline::new(&nodes)?);
+//! let cam = Cam::from_rpm(profile, Point2::origin(), Sense::Ccw, 1000.0)?;
+//! let mech = Mechanism::new(cam, Follower::TranslatingFlat { direction: Vec2::x() })?;
+//! let s = mech.analyze_deg(45.0)?;
+//! assert!((s.position - 4.448456).abs() < 1e-6);          // cm
+//! assert!((s.acceleration + 6291.918).abs() < 1e-3);      // cm/s²
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! # Sign conventions
 //!
 //! This section is the one place where the conventions are stated; every other doc refers here.

@@ -1,5 +1,6 @@
 //! A circular cam with every follower type against closed forms (differentiated exactly with
 //! hyper-dual numbers), for both cam directions and a cam axis away from the origin.
+#![allow(clippy::unwrap_used)]
 mod common;
 use camkin::cam::{Follower, Sense};
 use camkin::{Point2, Vec2};
@@ -11,7 +12,10 @@ const RC: f64 = 4.0;
 fn centre(theta: HD, pivot: Point2, c0: Vec2, s: f64) -> (HD, HD) {
     let a = s * theta;
     let (c, sn) = (a.cos(), a.sin());
-    (c0.x * c - c0.y * sn + pivot.x, c0.x * sn + c0.y * c + pivot.y)
+    (
+        c0.x * c - c0.y * sn + pivot.x,
+        c0.x * sn + c0.y * c + pivot.y,
+    )
 }
 
 /// The follower position as a closed form of the cam angle.
@@ -30,15 +34,30 @@ fn closed_form(f: &Follower, theta: HD, pivot: Point2, c0: Vec2, s: f64) -> HD {
             let d = direction.normalize();
             d.x * yx + d.y * yy + RC
         }
-        Follower::TranslatingRoller { direction, offset, roller_radius } => translating(direction, offset, roller_radius),
+        Follower::TranslatingRoller {
+            direction,
+            offset,
+            roller_radius,
+        } => translating(direction, offset, roller_radius),
         Follower::TranslatingKnife { direction, offset } => translating(direction, offset, 0.0),
-        Follower::OscillatingFlat { pivot: o, face_offset, closing, .. } => {
+        Follower::OscillatingFlat {
+            pivot: o,
+            face_offset,
+            closing,
+            ..
+        } => {
             let k = -closing.sign(); // +1 for cw closing: the cam lies on the −n side
             let (wx, wy) = (cx + (-o.x), cy + (-o.y));
             let rho = (wx * wx + wy * wy).sqrt();
             HD::atan2(wy, wx) - (HD::c(face_offset - k * RC) / rho).asin()
         }
-        Follower::OscillatingRoller { pivot: o, arm_length: l, roller_radius: r, closing, .. } => {
+        Follower::OscillatingRoller {
+            pivot: o,
+            arm_length: l,
+            roller_radius: r,
+            closing,
+            ..
+        } => {
             let k = -closing.sign();
             let (wx, wy) = (cx + (-o.x), cy + (-o.y));
             let rho2 = wx * wx + wy * wy;
@@ -51,18 +70,42 @@ fn closed_form(f: &Follower, theta: HD, pivot: Point2, c0: Vec2, s: f64) -> HD {
 
 fn check(pivot: Point2, dir: Sense, c0: Vec2) {
     for f in all_followers(pivot) {
-        let m = mechanism(std::sync::Arc::new(camkin::curve::Circle::new(Point2::from(c0), RC).unwrap()), pivot, dir, 1000.0, f);
+        let m = mechanism(
+            std::sync::Arc::new(camkin::curve::Circle::new(Point2::from(c0), RC).unwrap()),
+            pivot,
+            dir,
+            1000.0,
+            f,
+        );
         let w = m.cam().speed();
         let mut checked = 0;
         for k in 0..36 {
             let th = (k as f64 * 10.0 + 2.5).to_radians();
-            let s = m.analyze(th).unwrap_or_else(|e| panic!("{}: {e}", f.kind_name()));
+            let s = m
+                .analyze(th)
+                .unwrap_or_else(|e| panic!("{}: {e}", f.kind_name()));
             let cf = closed_form(&f, HD::var(th), pivot, c0, dir.sign());
-            let phi = if f.is_oscillating() { camkin::geometry::wrap_angle_near(cf.v, s.position) } else { cf.v };
+            let phi = if f.is_oscillating() {
+                camkin::geometry::wrap_angle_near(cf.v, s.position)
+            } else {
+                cf.v
+            };
             let name = f.kind_name();
             assert_close(s.position, phi, 1e-12, 10.0, &format!("{name} q at {k}"));
-            assert_close(s.velocity, w * cf.d1, 1e-11, w * 10.0, &format!("{name} v at {k}"));
-            assert_close(s.acceleration, w * w * cf.d2, 1e-11, w * w * 10.0, &format!("{name} a at {k}"));
+            assert_close(
+                s.velocity,
+                w * cf.d1,
+                1e-11,
+                w * 10.0,
+                &format!("{name} v at {k}"),
+            );
+            assert_close(
+                s.acceleration,
+                w * w * cf.d2,
+                1e-11,
+                w * w * 10.0,
+                &format!("{name} a at {k}"),
+            );
             checked += 1;
         }
         assert_eq!(checked, 36);

@@ -4,16 +4,23 @@
 //! pairing points (followed by Newton from the t = 0 pairing) has `d̈(0) = a_n^A − a_n^B =
 //! Φ_q q̈ − γ` (eq. 11), and the pairing parameters drift at the rates of eqs. 5–7, 9. Both are
 //! measured by finite differences of positions only.
+#![allow(clippy::unwrap_used)]
 mod common;
 use camkin::body::{BodyState, Pose};
-use camkin::contact::{closest_pair, find_contact, refine, ContactError, ContactKinematics, Pairing, SearchOptions, Surface};
+use camkin::contact::{
+    closest_pair, find_contact, refine, ContactError, ContactKinematics, Pairing, SearchOptions,
+    Surface,
+};
 use camkin::curve::{Circle, ClosedSpline, Curve, Ellipse, Line, PointCurve};
 use camkin::{Point2, Vec2};
 use common::*;
 
 fn at_time(b: &BodyState, t: f64) -> BodyState {
     BodyState {
-        pose: Pose::new(b.pose.origin + b.velocity * t + 0.5 * b.acceleration * t * t, b.pose.angle + b.omega * t + 0.5 * b.alpha * t * t),
+        pose: Pose::new(
+            b.pose.origin + b.velocity * t + 0.5 * b.acceleration * t * t,
+            b.pose.angle + b.omega * t + 0.5 * b.alpha * t * t,
+        ),
         velocity: b.velocity + b.acceleration * t,
         omega: b.omega + b.alpha * t,
         ..*b
@@ -21,14 +28,29 @@ fn at_time(b: &BodyState, t: f64) -> BodyState {
 }
 
 /// Places B touching A with zero normal velocity; returns (A, B, pairing).
-fn touching(ca: &dyn Curve, cb: &dyn Curve, mut a: BodyState, mut b: BodyState, opts: &SearchOptions) -> (BodyState, BodyState, Pairing) {
+fn touching(
+    ca: &dyn Curve,
+    cb: &dyn Curve,
+    mut a: BodyState,
+    mut b: BodyState,
+    opts: &SearchOptions,
+) -> (BodyState, BodyState, Pairing) {
     let p = closest_pair(&Surface::new(ca, &a), &Surface::new(cb, &b), opts).unwrap();
     // move B along the normal to close the gap
     b.pose.origin += p.gap * p.normal;
-    let p = refine(&Surface::new(ca, &a), &Surface::new(cb, &b), p.u_a, p.u_b, opts).unwrap();
+    let p = refine(
+        &Surface::new(ca, &a),
+        &Surface::new(cb, &b),
+        p.u_a,
+        p.u_b,
+        opts,
+    )
+    .unwrap();
     assert!(p.gap.abs() < 1e-12);
     // zero normal velocity: adjust B's velocity along the normal
-    let vn = p.normal.dot(&(a.velocity_at(p.point_a) - b.velocity_at(p.point_a)));
+    let vn = p
+        .normal
+        .dot(&(a.velocity_at(p.point_a) - b.velocity_at(p.point_a)));
     b.velocity += vn * p.normal;
     a.alpha += 0.0;
     (a, b, p)
@@ -37,19 +59,43 @@ fn touching(ca: &dyn Curve, cb: &dyn Curve, mut a: BodyState, mut b: BodyState, 
 fn check_pair(ca: &dyn Curve, cb: &dyn Curve, a: BodyState, b: BodyState) {
     let opts = SearchOptions::for_length_scale(5.0);
     let (a, b, p0) = touching(ca, cb, a, b, &opts);
-    let k = ContactKinematics::new(&Surface::new(ca, &a), &Surface::new(cb, &b), &p0, 1e-9).unwrap();
-    assert!(k.normal_velocity.abs() < 1e-12, "normal velocity {}", k.normal_velocity);
+    let k =
+        ContactKinematics::new(&Surface::new(ca, &a), &Surface::new(cb, &b), &p0, 1e-9).unwrap();
+    assert!(
+        k.normal_velocity.abs() < 1e-12,
+        "normal velocity {}",
+        k.normal_velocity
+    );
     let track = |t: f64| {
         let (at, bt) = (at_time(&a, t), at_time(&b, t));
-        refine(&Surface::new(ca, &at), &Surface::new(cb, &bt), p0.u_a, p0.u_b, &opts).unwrap()
+        refine(
+            &Surface::new(ca, &at),
+            &Surface::new(cb, &bt),
+            p0.u_a,
+            p0.u_b,
+            &opts,
+        )
+        .unwrap()
     };
     let h = 2e-3;
     let (dd1, dd2) = fd8(|t| track(t).gap, 0.0, h);
     let scale = 1.0 + k.gamma.abs();
     assert!(dd1.abs() < 1e-9 * scale, "ḋ(0) = {dd1}");
     let (na, nb) = (k.normal_acceleration_a(&a), k.normal_acceleration_b(&b));
-    assert_close(dd2, na.total() - nb.total(), 1e-7, scale, "d̈ = a_n^A − a_n^B");
-    assert_close(k.acceleration_residual(&a, &b), na.total() - nb.total(), 1e-12, scale, "Φ_q q̈ − γ = a_n^A − a_n^B");
+    assert_close(
+        dd2,
+        na.total() - nb.total(),
+        1e-7,
+        scale,
+        "d̈ = a_n^A − a_n^B",
+    );
+    assert_close(
+        k.acceleration_residual(&a, &b),
+        na.total() - nb.total(),
+        1e-12,
+        scale,
+        "Φ_q q̈ − γ = a_n^A − a_n^B",
+    );
     let (ua_rate, _) = fd8(|t| track(t).u_a, 0.0, h);
     assert_close(k.param_rate_a, ua_rate, 1e-8, 1.0 + ua_rate.abs(), "u̇_A");
     if k.metric_b > 0.0 {
@@ -62,7 +108,14 @@ fn spline() -> ClosedSpline {
     ClosedSpline::new(&paper_nodes(false)).unwrap()
 }
 
-fn moving(origin: (f64, f64), angle: f64, v: (f64, f64), w: f64, acc: (f64, f64), alpha: f64) -> BodyState {
+fn moving(
+    origin: (f64, f64),
+    angle: f64,
+    v: (f64, f64),
+    w: f64,
+    acc: (f64, f64),
+    alpha: f64,
+) -> BodyState {
     BodyState {
         pose: Pose::new(Point2::new(origin.0, origin.1), angle),
         velocity: Vec2::new(v.0, v.1),
@@ -75,7 +128,12 @@ fn moving(origin: (f64, f64), angle: f64, v: (f64, f64), w: f64, acc: (f64, f64)
 #[test]
 fn spline_against_ellipse_both_moving() {
     let e = Ellipse::new(Point2::new(0.3, 0.1), 2.0, 1.2, 0.4).unwrap();
-    check_pair(&spline(), &e, moving((0.0, 0.0), 0.3, (0.5, -0.2), 2.0, (1.0, 3.0), -4.0), moving((8.0, 1.0), -0.7, (-1.0, 0.4), -3.0, (-2.0, 0.5), 6.0));
+    check_pair(
+        &spline(),
+        &e,
+        moving((0.0, 0.0), 0.3, (0.5, -0.2), 2.0, (1.0, 3.0), -4.0),
+        moving((8.0, 1.0), -0.7, (-1.0, 0.4), -3.0, (-2.0, 0.5), 6.0),
+    );
 }
 
 #[test]
@@ -93,34 +151,90 @@ fn swapping_a_and_b_gives_same_contact_and_sliding_rates() {
     let sp = spline();
     let e = Ellipse::new(Point2::origin(), 1.5, 1.0, 0.0).unwrap();
     let opts = SearchOptions::for_length_scale(5.0);
-    let (a, b, p) = touching(&sp, &e, moving((0.0, 0.0), 1.0, (0.1, 0.2), 3.0, (0.0, 0.0), 0.0), moving((1.0, 7.0), 0.5, (0.0, -1.0), -1.0, (0.0, 0.0), 0.0), &opts);
+    let (a, b, p) = touching(
+        &sp,
+        &e,
+        moving((0.0, 0.0), 1.0, (0.1, 0.2), 3.0, (0.0, 0.0), 0.0),
+        moving((1.0, 7.0), 0.5, (0.0, -1.0), -1.0, (0.0, 0.0), 0.0),
+        &opts,
+    );
     let (sa, sb) = (Surface::new(&sp, &a), Surface::new(&e, &b));
     let kab = ContactKinematics::new(&sa, &sb, &p, 1e-9).unwrap();
     let q = closest_pair(&sb, &sa, &opts).unwrap();
     let kba = ContactKinematics::new(&sb, &sa, &q, 1e-9).unwrap();
     assert_close(q.u_a, p.u_b, 1e-10, 1.0, "u swapped");
     assert_close(q.u_b, p.u_a, 1e-10, 1.0, "u swapped");
-    assert_close((q.point_a - p.point_a).norm(), 0.0, 1e-10, 1.0, "same point");
-    assert_close(kba.sliding_rate_a, kab.sliding_rate_b, 1e-12, 10.0, "ṡ_A(BA) = ṡ_B(AB)");
-    assert_close(kba.sliding_rate_b, kab.sliding_rate_a, 1e-12, 10.0, "ṡ_B(BA) = ṡ_A(AB)");
+    assert_close(
+        (q.point_a - p.point_a).norm(),
+        0.0,
+        1e-10,
+        1.0,
+        "same point",
+    );
+    assert_close(
+        kba.sliding_rate_a,
+        kab.sliding_rate_b,
+        1e-12,
+        10.0,
+        "ṡ_A(BA) = ṡ_B(AB)",
+    );
+    assert_close(
+        kba.sliding_rate_b,
+        kab.sliding_rate_a,
+        1e-12,
+        10.0,
+        "ṡ_B(BA) = ṡ_A(AB)",
+    );
     assert_eq!(kab.sigma, kba.sigma);
     // the constraint is the same equation up to sign
-    let (a2, b2) = (BodyState { acceleration: Vec2::new(1.0, -2.0), alpha: 3.0, ..a }, BodyState { acceleration: Vec2::new(0.5, 0.5), alpha: -1.0, ..b });
-    assert_close(kab.acceleration_residual(&a2, &b2).abs(), kba.acceleration_residual(&b2, &a2).abs(), 1e-12, 100.0, "|residual|");
+    let (a2, b2) = (
+        BodyState {
+            acceleration: Vec2::new(1.0, -2.0),
+            alpha: 3.0,
+            ..a
+        },
+        BodyState {
+            acceleration: Vec2::new(0.5, 0.5),
+            alpha: -1.0,
+            ..b
+        },
+    );
+    assert_close(
+        kab.acceleration_residual(&a2, &b2).abs(),
+        kba.acceleration_residual(&b2, &a2).abs(),
+        1e-12,
+        100.0,
+        "|residual|",
+    );
 }
 
 #[test]
 fn knife_edge_point_on_a_curve() {
     let tip = PointCurve::new(Point2::new(0.0, 0.0)).unwrap();
     // point as B, then as A
-    check_pair(&spline(), &tip, moving((0.0, 0.0), 0.2, (0.0, 0.0), 4.0, (0.0, 0.0), 2.0), moving((7.0, 0.5), 0.0, (0.0, 1.0), 0.0, (3.0, -1.0), 0.0));
-    check_pair(&tip, &spline(), moving((7.0, 0.5), 0.0, (0.0, 1.0), 0.7, (3.0, -1.0), 0.0), moving((0.0, 0.0), 0.2, (0.0, 0.0), 4.0, (0.0, 0.0), 2.0));
+    check_pair(
+        &spline(),
+        &tip,
+        moving((0.0, 0.0), 0.2, (0.0, 0.0), 4.0, (0.0, 0.0), 2.0),
+        moving((7.0, 0.5), 0.0, (0.0, 1.0), 0.0, (3.0, -1.0), 0.0),
+    );
+    check_pair(
+        &tip,
+        &spline(),
+        moving((7.0, 0.5), 0.0, (0.0, 1.0), 0.7, (3.0, -1.0), 0.0),
+        moving((0.0, 0.0), 0.2, (0.0, 0.0), 4.0, (0.0, 0.0), 2.0),
+    );
 }
 
 #[test]
 fn flat_line_against_curve() {
     let face = Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap();
-    check_pair(&spline(), &face, moving((0.0, 0.0), 0.5, (0.0, 0.0), 6.0, (0.0, 0.0), 0.0), moving((9.0, 0.0), 0.1, (0.5, 0.0), 0.8, (1.0, 0.0), -1.0));
+    check_pair(
+        &spline(),
+        &face,
+        moving((0.0, 0.0), 0.5, (0.0, 0.0), 6.0, (0.0, 0.0), 0.0),
+        moving((9.0, 0.0), 0.1, (0.5, 0.0), 0.8, (1.0, 0.0), -1.0),
+    );
 }
 
 #[test]
@@ -130,15 +244,22 @@ fn apart_is_none_and_overlap_is_an_error() {
     let a = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
     let opts = SearchOptions::for_length_scale(2.0);
     let far = BodyState::at_rest(Pose::new(Point2::new(3.5, 0.0), 0.0));
-    assert_eq!(find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &far), &opts).unwrap(), None);
+    assert_eq!(
+        find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &far), &opts).unwrap(),
+        None
+    );
     let p = closest_pair(&Surface::new(&c1, &a), &Surface::new(&c2, &far), &opts).unwrap();
     assert_close(p.gap, 0.5, 1e-12, 1.0, "gap of separated circles");
     let touch = BodyState::at_rest(Pose::new(Point2::new(3.0, 0.0), 0.0));
-    let c = find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &touch), &opts).unwrap().unwrap();
+    let c = find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &touch), &opts)
+        .unwrap()
+        .unwrap();
     assert_close(c.point_a.x, 2.0, 1e-12, 1.0, "contact point");
     let overlap = BodyState::at_rest(Pose::new(Point2::new(2.5, 0.0), 0.0));
     match closest_pair(&Surface::new(&c1, &a), &Surface::new(&c2, &overlap), &opts) {
-        Err(ContactError::Penetrating { depth, .. }) => assert_close(depth, 0.5, 1e-9, 1.0, "depth"),
+        Err(ContactError::Penetrating { depth, .. }) => {
+            assert_close(depth, 0.5, 1e-9, 1.0, "depth")
+        }
         other => panic!("expected penetration, got {other:?}"),
     }
 }
@@ -153,7 +274,12 @@ fn conformal_contact_is_an_error_not_a_division() {
     let (sa, sb) = (Surface::new(&hole, &a), Surface::new(&pin, &b));
     let p = camkin::contact::pairing_at(&sa, &sb, 0.0, -0.3);
     match ContactKinematics::new(&sa, &sb, &p, 1e-9) {
-        Err(ContactError::Conformal { kappa_a, kappa_b, sigma, .. }) => {
+        Err(ContactError::Conformal {
+            kappa_a,
+            kappa_b,
+            sigma,
+            ..
+        }) => {
             assert_eq!((kappa_a, kappa_b, sigma), (1.0, 1.0, 1.0));
         }
         other => panic!("expected conformal error, got {other:?}"),
@@ -162,7 +288,10 @@ fn conformal_contact_is_an_error_not_a_division() {
     let l1 = Line::new(Point2::origin(), Vec2::x()).unwrap();
     let l2 = Line::new(Point2::origin(), -Vec2::x()).unwrap();
     let p = camkin::contact::pairing_at(&Surface::new(&l1, &a), &Surface::new(&l2, &a), 0.0, 0.0);
-    assert!(matches!(ContactKinematics::new(&Surface::new(&l1, &a), &Surface::new(&l2, &a), &p, 1e-9), Err(ContactError::Conformal { .. })));
+    assert!(matches!(
+        ContactKinematics::new(&Surface::new(&l1, &a), &Surface::new(&l2, &a), &p, 1e-9),
+        Err(ContactError::Conformal { .. })
+    ));
 }
 
 /// Regression: `refine` used `r_A'·d = r_B'·d = 0`, whose Jacobian is singular at contact (d = 0),
@@ -174,20 +303,43 @@ fn regression_refine_singular_at_contact() {
     let a = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
     let b = BodyState::at_rest(Pose::new(Point2::new(3.0, 0.0), 0.0));
     let opts = SearchOptions::for_length_scale(2.0);
-    let p = refine(&Surface::new(&c1, &a), &Surface::new(&c2, &b), 0.05, std::f64::consts::PI - 0.05, &opts).unwrap();
+    let p = refine(
+        &Surface::new(&c1, &a),
+        &Surface::new(&c2, &b),
+        0.05,
+        std::f64::consts::PI - 0.05,
+        &opts,
+    )
+    .unwrap();
     assert_close(p.u_a, 0.0, 1e-12, 1.0, "u_a");
     assert_close(p.gap, 0.0, 1e-12, 1.0, "gap");
     // from a crossing of two overlapping circles Newton must not stop at the crossing
     let b = BodyState::at_rest(Pose::new(Point2::new(2.5, 0.0), 0.0));
     let x = 1.85f64; // crossing at (1.85, ±0.76)
     let (ua, ub) = ((0.76f64).atan2(x), (0.76f64).atan2(x - 2.5));
-    if let Ok(p) = refine(&Surface::new(&c1, &a), &Surface::new(&c2, &b), ua, ub, &opts) {
-        assert!(tangent_misalignment_is_zero(&c1, &c2, &a, &b, &p), "stopped at a crossing: {p:?}");
+    if let Ok(p) = refine(
+        &Surface::new(&c1, &a),
+        &Surface::new(&c2, &b),
+        ua,
+        ub,
+        &opts,
+    ) {
+        assert!(
+            tangent_misalignment_is_zero(&c1, &c2, &a, &b, &p),
+            "stopped at a crossing: {p:?}"
+        );
     }
 }
 
-fn tangent_misalignment_is_zero(c1: &dyn Curve, c2: &dyn Curve, a: &BodyState, b: &BodyState, p: &Pairing) -> bool {
-    camkin::contact::tangent_misalignment(&Surface::new(c1, a), &Surface::new(c2, b), p).abs() < 1e-9
+fn tangent_misalignment_is_zero(
+    c1: &dyn Curve,
+    c2: &dyn Curve,
+    a: &BodyState,
+    b: &BodyState,
+    p: &Pairing,
+) -> bool {
+    camkin::contact::tangent_misalignment(&Surface::new(c1, a), &Surface::new(c2, b), p).abs()
+        < 1e-9
 }
 
 /// Regression: with a point as A the swapped constraint row had the sign of γ flipped against
@@ -202,6 +354,12 @@ fn regression_point_as_a_constraint_sign() {
     let p = camkin::contact::pairing_at(&sa, &sb, 0.0, 0.0);
     let k = ContactKinematics::new(&sa, &sb, &p, 1e-9).unwrap();
     let direct = k.normal_acceleration_a(&a).total() - k.normal_acceleration_b(&b).total();
-    assert_close(k.acceleration_residual(&a, &b), direct, 1e-12, 10.0, "Φ_q q̈ − γ");
+    assert_close(
+        k.acceleration_residual(&a, &b),
+        direct,
+        1e-12,
+        10.0,
+        "Φ_q q̈ − γ",
+    );
     assert_eq!(k.normal, Vec2::new(1.0, 0.0)); // −ν_B of a ccw circle at angle 0 (ν_B = (−1, 0))
 }

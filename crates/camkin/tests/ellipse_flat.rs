@@ -1,5 +1,6 @@
 //! Elliptical cam centred on its axis with a flat-faced follower: s(θ) = √(a² cos²θ + b² sin²θ)
 //! (the ellipse's support function), differentiated exactly.
+#![allow(clippy::unwrap_used)]
 mod common;
 use camkin::cam::{Follower, Sense};
 use camkin::{Point2, Vec2};
@@ -9,7 +10,15 @@ use common::*;
 fn ellipse_support_function_both_directions() {
     let (a, b) = (5.0, 3.0);
     for dir in [Sense::Ccw, Sense::Cw] {
-        let m = mechanism(ellipse(a, b, Point2::origin(), 0.0), Point2::origin(), dir, 1000.0, Follower::TranslatingFlat { direction: Vec2::x() });
+        let m = mechanism(
+            ellipse(a, b, Point2::origin(), 0.0),
+            Point2::origin(),
+            dir,
+            1000.0,
+            Follower::TranslatingFlat {
+                direction: Vec2::x(),
+            },
+        );
         let w = m.cam().speed();
         for k in 0..90 {
             let th = (k as f64 * 4.0 + 0.1).to_radians();
@@ -26,10 +35,24 @@ fn ellipse_support_function_both_directions() {
 
 #[test]
 fn rotated_offset_ellipse_satisfies_flat_identity() {
-    let m = mechanism(ellipse(4.0, 2.5, Point2::new(0.8, -0.3), 0.6), Point2::new(1.0, 1.0), Sense::Ccw, 1000.0, Follower::TranslatingFlat { direction: Vec2::new(0.0, -1.0) });
+    let m = mechanism(
+        ellipse(4.0, 2.5, Point2::new(0.8, -0.3), 0.6),
+        Point2::new(1.0, 1.0),
+        Sense::Ccw,
+        1000.0,
+        Follower::TranslatingFlat {
+            direction: Vec2::new(0.0, -1.0),
+        },
+    );
     let w = m.cam().speed();
     for k in 0..72 {
         let st = m.analyze_deg(k as f64 * 5.0).unwrap();
-        assert_close(st.acceleration, w * w * (st.radius_of_curvature - st.position), 1e-11, w * w * 5.0, "s̈ = ω²(ρ − s)");
+        assert_close(
+            st.acceleration,
+            w * w * (st.radius_of_curvature - st.position),
+            1e-11,
+            w * w * 5.0,
+            "s̈ = ω²(ρ − s)",
+        );
     }
 }

@@ -1,4 +1,5 @@
 //! The test oracle itself: hyper-dual derivatives against known derivatives.
+#![allow(clippy::unwrap_used)]
 mod common;
 use common::*;
 

@@ -1,4 +1,5 @@
 //! The paper's cam (section 3): reference values of `cam-follower.md`.
+#![allow(clippy::unwrap_used)]
 mod common;
 use common::*;
 

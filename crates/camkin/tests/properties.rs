@@ -1,4 +1,5 @@
 //! Property tests over random convex spline cams and poses.
+#![allow(clippy::unwrap_used)]
 mod common;
 use camkin::cam::{Follower, Mechanism, Sense};
 use camkin::curve::ClosedSpline;
@@ -27,11 +28,46 @@ fn cam_nodes() -> impl Strategy<Value = Vec<Point2>> {
 fn rotate_follower(f: &Follower, r: &Rot, beta: f64) -> Follower {
     let rp = |p: Point2| Point2::from(r.apply(p.coords));
     match *f {
-        Follower::TranslatingFlat { direction } => Follower::TranslatingFlat { direction: r.apply(direction) },
-        Follower::TranslatingRoller { direction, offset, roller_radius } => Follower::TranslatingRoller { direction: r.apply(direction), offset, roller_radius },
-        Follower::TranslatingKnife { direction, offset } => Follower::TranslatingKnife { direction: r.apply(direction), offset },
-        Follower::OscillatingFlat { pivot, face_offset, closing, initial_angle } => Follower::OscillatingFlat { pivot: rp(pivot), face_offset, closing, initial_angle: initial_angle + beta },
-        Follower::OscillatingRoller { pivot, arm_length, roller_radius, closing, initial_angle } => Follower::OscillatingRoller { pivot: rp(pivot), arm_length, roller_radius, closing, initial_angle: initial_angle + beta },
+        Follower::TranslatingFlat { direction } => Follower::TranslatingFlat {
+            direction: r.apply(direction),
+        },
+        Follower::TranslatingRoller {
+            direction,
+            offset,
+            roller_radius,
+        } => Follower::TranslatingRoller {
+            direction: r.apply(direction),
+            offset,
+            roller_radius,
+        },
+        Follower::TranslatingKnife { direction, offset } => Follower::TranslatingKnife {
+            direction: r.apply(direction),
+            offset,
+        },
+        Follower::OscillatingFlat {
+            pivot,
+            face_offset,
+            closing,
+            initial_angle,
+        } => Follower::OscillatingFlat {
+            pivot: rp(pivot),
+            face_offset,
+            closing,
+            initial_angle: initial_angle + beta,
+        },
+        Follower::OscillatingRoller {
+            pivot,
+            arm_length,
+            roller_radius,
+            closing,
+            initial_angle,
+        } => Follower::OscillatingRoller {
+            pivot: rp(pivot),
+            arm_length,
+            roller_radius,
+            closing,
+            initial_angle: initial_angle + beta,
+        },
     }
 }
 

@@ -1,5 +1,6 @@
 //! Every follower type on spline cams: velocity and acceleration by the contact method agree with
 //! 8th-order central differences of the follower's own position (computed by first touch only).
+#![allow(clippy::unwrap_used)]
 mod common;
 use camkin::cam::{Mechanism, Sense};
 use camkin::Point2;
@@ -17,14 +18,31 @@ fn check(m: &Mechanism, name: &str) -> usize {
         let s = m.analyze(th).unwrap_or_else(|e| panic!("{name}: {e}"));
         let lo = m.analyze(th - 4.0 * h).unwrap();
         let hi = m.analyze(th + 4.0 * h).unwrap();
-        if lo.cam_param.floor() != s.cam_param.floor() || hi.cam_param.floor() != s.cam_param.floor() {
+        if lo.cam_param.floor() != s.cam_param.floor()
+            || hi.cam_param.floor() != s.cam_param.floor()
+        {
             continue;
         }
         let (d1, d2) = fd8(|t| m.position(t).unwrap(), th, h);
-        assert_close(s.velocity, w * d1, 1e-8, w * m.size(), &format!("{name} v at {k}"));
-        assert_close(s.acceleration, w * w * d2, 1e-7, scale, &format!("{name} a at {k}"));
+        assert_close(
+            s.velocity,
+            w * d1,
+            1e-8,
+            w * m.size(),
+            &format!("{name} v at {k}"),
+        );
+        assert_close(
+            s.acceleration,
+            w * w * d2,
+            1e-7,
+            scale,
+            &format!("{name} a at {k}"),
+        );
         // eq. 11 holds between the two sides
-        let (na, nb) = (s.normal_acceleration_cam.total(), s.normal_acceleration_follower.total());
+        let (na, nb) = (
+            s.normal_acceleration_cam.total(),
+            s.normal_acceleration_follower.total(),
+        );
         assert_close(na, nb, 1e-11, scale, &format!("{name} eq. 11 at {k}"));
         checked += 1;
     }
@@ -34,7 +52,10 @@ fn check(m: &Mechanism, name: &str) -> usize {
 #[test]
 fn every_follower_on_paper_cams_both_directions() {
     for revised in [false, true] {
-        for (dir, pivot) in [(Sense::Ccw, Point2::origin()), (Sense::Cw, Point2::new(1.5, -2.0))] {
+        for (dir, pivot) in [
+            (Sense::Ccw, Point2::origin()),
+            (Sense::Cw, Point2::new(1.5, -2.0)),
+        ] {
             for f in all_followers(pivot) {
                 let m = mechanism(paper_profile(revised), pivot, dir, 1000.0, f);
                 let name = format!("{} revised={revised} {dir:?}", f.kind_name());

@@ -1,5 +1,6 @@
 //! Warm-started sweeps: same answers as the global search at every angle; jumps of the contact on
 //! non-convex cams are noticed and flagged.
+#![allow(clippy::unwrap_used)]
 mod common;
 use camkin::cam::{Follower, Found, Mechanism, Sense};
 use camkin::curve::ClosedSpline;
@@ -29,7 +30,13 @@ fn compare_with_global(m: &Mechanism, step_deg: f64) -> (usize, usize, usize) {
         assert_close(s.position, g.position, 1e-12, m.size() + 10.0, "position");
         // at a tie (two parts of the profile touch at once) either contact is a first touch
         if (s.contact_world - g.contact_world).norm() < 1e-6 {
-            assert_close(s.acceleration, g.acceleration, 1e-9, w * w * m.size(), "acceleration");
+            assert_close(
+                s.acceleration,
+                g.acceleration,
+                1e-9,
+                w * w * m.size(),
+                "acceleration",
+            );
         }
         match s.found {
             Found::WarmStart => warm += 1,
@@ -43,7 +50,13 @@ fn compare_with_global(m: &Mechanism, step_deg: f64) -> (usize, usize, usize) {
 #[test]
 fn sweep_matches_global_for_every_follower_on_paper_cam() {
     for f in all_followers(Point2::origin()) {
-        let m = mechanism(paper_profile(false), Point2::origin(), Sense::Ccw, 1000.0, f);
+        let m = mechanism(
+            paper_profile(false),
+            Point2::origin(),
+            Sense::Ccw,
+            1000.0,
+            f,
+        );
         let (warm, jumps, _) = compare_with_global(&m, 1.0);
         assert_eq!(jumps, 0, "{}", f.kind_name());
         assert!(warm >= 359, "{}: only {warm} warm starts", f.kind_name());
@@ -53,13 +66,37 @@ fn sweep_matches_global_for_every_follower_on_paper_cam() {
 /// A cam with two dents (non-convex): a flat face bridges each dent, so the contact jumps from one
 /// lobe to the next each time the face passes a dent.
 fn peanut() -> Arc<ClosedSpline> {
-    let pts = [(4.0, 0.0), (3.0, 2.4), (0.5, 1.1), (-2.0, 2.4), (-3.5, 0.1), (-2.2, -2.5), (0.6, -1.0), (3.1, -2.3)];
-    Arc::new(ClosedSpline::new(&pts.iter().map(|&(x, y)| Point2::new(x, y)).collect::<Vec<_>>()).unwrap())
+    let pts = [
+        (4.0, 0.0),
+        (3.0, 2.4),
+        (0.5, 1.1),
+        (-2.0, 2.4),
+        (-3.5, 0.1),
+        (-2.2, -2.5),
+        (0.6, -1.0),
+        (3.1, -2.3),
+    ];
+    Arc::new(
+        ClosedSpline::new(
+            &pts.iter()
+                .map(|&(x, y)| Point2::new(x, y))
+                .collect::<Vec<_>>(),
+        )
+        .unwrap(),
+    )
 }
 
 #[test]
 fn jumps_on_non_convex_cam_are_detected_and_match_global() {
-    let m = mechanism(peanut(), Point2::origin(), Sense::Ccw, 1000.0, Follower::TranslatingFlat { direction: Vec2::x() });
+    let m = mechanism(
+        peanut(),
+        Point2::origin(),
+        Sense::Ccw,
+        1000.0,
+        Follower::TranslatingFlat {
+            direction: Vec2::x(),
+        },
+    );
     assert!(!m.is_convex());
     let (warm, jumps, global_jumps) = compare_with_global(&m, 0.5);
     // the face bridges each dent once per revolution (when it is parallel to the hull edge over it)
@@ -70,7 +107,11 @@ fn jumps_on_non_convex_cam_are_detected_and_match_global() {
 
 #[test]
 fn roller_on_non_convex_cam_jumps_too() {
-    let f = Follower::TranslatingRoller { direction: Vec2::y(), offset: 0.0, roller_radius: 2.0 };
+    let f = Follower::TranslatingRoller {
+        direction: Vec2::y(),
+        offset: 0.0,
+        roller_radius: 2.0,
+    };
     let m = mechanism(peanut(), Point2::origin(), Sense::Cw, 500.0, f);
     let (_, jumps, global_jumps) = compare_with_global(&m, 0.5);
     assert!(global_jumps >= 2, "global jumps {global_jumps}");

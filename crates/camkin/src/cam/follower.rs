@@ -5,6 +5,7 @@
 //! axis along the unit direction `d`; oscillating followers give the absolute arm angle `φ`
 //! (rad, counter-clockwise from the world x axis).
 
+use super::jet::{Num, V2};
 use crate::body::{BodyState, Pose, WorldDerivs};
 use crate::curve::{Circle, Curve, Line, PointCurve};
 use crate::geometry::{perp, wrap_angle_near, Point2, Vec2};
@@ -173,26 +174,55 @@ impl Geometry {
                 let d = d.unwrap_or(Vec2::x());
                 let p = perp(d);
                 (
-                    Kind::Translating { d, p, e: 0.0, r: 0.0, flat: true },
+                    Kind::Translating {
+                        d,
+                        p,
+                        e: 0.0,
+                        r: 0.0,
+                        flat: true,
+                    },
                     // material on the left: the follower lies on the +d side of its face
                     FollowerCurve::Line(Line::new(Point2::origin(), -p).expect("unit vector")),
                 )
             }
-            Follower::TranslatingRoller { offset, roller_radius, .. } => {
+            Follower::TranslatingRoller {
+                offset,
+                roller_radius,
+                ..
+            } => {
                 let d = d.unwrap_or(Vec2::x());
                 (
-                    Kind::Translating { d, p: perp(d), e: offset, r: roller_radius, flat: false },
-                    FollowerCurve::Circle(Circle::new(Point2::origin(), roller_radius).expect("validated radius")),
+                    Kind::Translating {
+                        d,
+                        p: perp(d),
+                        e: offset,
+                        r: roller_radius,
+                        flat: false,
+                    },
+                    FollowerCurve::Circle(
+                        Circle::new(Point2::origin(), roller_radius).expect("validated radius"),
+                    ),
                 )
             }
             Follower::TranslatingKnife { offset, .. } => {
                 let d = d.unwrap_or(Vec2::x());
                 (
-                    Kind::Translating { d, p: perp(d), e: offset, r: 0.0, flat: false },
+                    Kind::Translating {
+                        d,
+                        p: perp(d),
+                        e: offset,
+                        r: 0.0,
+                        flat: false,
+                    },
                     FollowerCurve::Point(PointCurve::new(Point2::origin()).expect("finite")),
                 )
             }
-            Follower::OscillatingFlat { pivot, face_offset, closing, initial_angle } => (
+            Follower::OscillatingFlat {
+                pivot,
+                face_offset,
+                closing,
+                initial_angle,
+            } => (
                 Kind::Oscillating {
                     o: pivot,
                     closing: closing.sign(),
@@ -201,23 +231,41 @@ impl Geometry {
                 },
                 // cw closing: the cam lies on the −n side of the face, the arm on the +n side
                 FollowerCurve::Line(
-                    Line::new(Point2::new(0.0, face_offset), Vec2::new(-closing.sign(), 0.0))
-                        .expect("unit vector"),
+                    Line::new(
+                        Point2::new(0.0, face_offset),
+                        Vec2::new(-closing.sign(), 0.0),
+                    )
+                    .expect("unit vector"),
                 ),
             ),
-            Follower::OscillatingRoller { pivot, arm_length, roller_radius, closing, initial_angle } => (
+            Follower::OscillatingRoller {
+                pivot,
+                arm_length,
+                roller_radius,
+                closing,
+                initial_angle,
+            } => (
                 Kind::Oscillating {
                     o: pivot,
                     closing: closing.sign(),
                     phi0: initial_angle,
-                    arm: Arm::Roller { l: arm_length, r: roller_radius },
+                    arm: Arm::Roller {
+                        l: arm_length,
+                        r: roller_radius,
+                    },
                 },
                 FollowerCurve::Circle(
-                    Circle::new(Point2::new(arm_length, 0.0), roller_radius).expect("validated radius"),
+                    Circle::new(Point2::new(arm_length, 0.0), roller_radius)
+                        .expect("validated radius"),
                 ),
             ),
         };
-        Self { follower, cam_pivot, kind, curve }
+        Self {
+            follower,
+            cam_pivot,
+            kind,
+            curve,
+        }
     }
 
     /// The position at which the follower's boundary first passes through the world cam point
@@ -242,7 +290,12 @@ impl Geometry {
                     }
                 }
             }
-            Kind::Oscillating { o, closing, phi0, arm } => {
+            Kind::Oscillating {
+                o,
+                closing,
+                phi0,
+                arm,
+            } => {
                 let y = x - o;
                 let rho = y.norm();
                 let psi = y.y.atan2(y.x);
@@ -271,29 +324,77 @@ impl Geometry {
         }
     }
 
-    /// Residual of the tangency conditions at cam point `e` and position `q`, with its Jacobian
-    /// in `(u, q)`: two equations, zero at a touch.
+    /// Residual of the tangency conditions at world cam point `x` (with `x1 = ∂x/∂u`) and
+    /// position `q`: two equations, zero at a touch. Generic so that the jerk can be computed by
+    /// differentiating it with [`Jet`](super::jet::Jet)s.
+    #[inline]
+    pub(crate) fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        let half = T::c(0.5);
+        match self.kind {
+            Kind::Translating {
+                d,
+                p,
+                e: off,
+                r,
+                flat,
+            } => {
+                let y = x - V2::c(self.cam_pivot.coords);
+                let (d, p) = (V2::c(d), V2::c(p));
+                if flat {
+                    [y.dot(d) - q, x1.dot(d)] // y·d = q, y'·d = 0
+                } else if r == 0.0 {
+                    [y.dot(p) - T::c(off), y.dot(d) - q] // knife: y·p = e, y·d = q
+                } else {
+                    let m = y - (p.scale(T::c(off)) + d.scale(q));
+                    [half * (m.dot(m) - T::c(r * r)), x1.dot(m)]
+                }
+            }
+            Kind::Oscillating { o, arm, .. } => {
+                let (s, c) = q.sin_cos();
+                let y = x - V2::c(o.coords);
+                match arm {
+                    Arm::Flat { e: off } => {
+                        let n = V2::new(-s, c);
+                        [y.dot(n) - T::c(off), x1.dot(n)]
+                    }
+                    Arm::Roller { l, r } => {
+                        let m = y - V2::new(c, s).scale(T::c(l));
+                        [half * (m.dot(m) - T::c(r * r)), x1.dot(m)]
+                    }
+                }
+            }
+        }
+    }
+
+    /// The residual at cam point `e` and position `q` with its Jacobian in `(u, q)`.
     #[inline]
     pub(crate) fn residual(&self, e: &WorldDerivs, q: f64) -> ([f64; 2], [[f64; 2]; 2]) {
+        let f = self.residual_value(V2::c(e.p.coords), V2::c(e.d1), q);
+        (f, self.jacobian(e, q))
+    }
+
+    /// `∂(residual)/∂(u, q)`.
+    #[inline]
+    pub(crate) fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
         match self.kind {
-            Kind::Translating { d, p, e: off, r, flat } => {
+            Kind::Translating {
+                d,
+                p,
+                e: off,
+                r,
+                flat,
+            } => {
                 let y = e.p - self.cam_pivot;
                 if flat {
-                    // y·d = q, y'·d = 0
-                    ([y.dot(&d) - q, e.d1.dot(&d)], [[e.d1.dot(&d), -1.0], [e.d2.dot(&d), 0.0]])
+                    [[e.d1.dot(&d), -1.0], [e.d2.dot(&d), 0.0]]
                 } else if r == 0.0 {
-                    // knife: y·p = e, y·d = q
-                    ([y.dot(&p) - off, y.dot(&d) - q], [[e.d1.dot(&p), 0.0], [e.d1.dot(&d), -1.0]])
+                    [[e.d1.dot(&p), 0.0], [e.d1.dot(&d), -1.0]]
                 } else {
-                    let c = off * p + q * d;
-                    let m = y - c;
-                    (
-                        [0.5 * (m.norm_squared() - r * r), e.d1.dot(&m)],
-                        [
-                            [e.d1.dot(&m), -d.dot(&m)],
-                            [e.d2.dot(&m) + e.d1.norm_squared(), -e.d1.dot(&d)],
-                        ],
-                    )
+                    let m = y - (off * p + q * d);
+                    [
+                        [e.d1.dot(&m), -d.dot(&m)],
+                        [e.d2.dot(&m) + e.d1.norm_squared(), -e.d1.dot(&d)],
+                    ]
                 }
             }
             Kind::Oscillating { o, arm, .. } => {
@@ -302,20 +403,14 @@ impl Geometry {
                 let n = Vec2::new(-s, c);
                 let y = e.p - o;
                 match arm {
-                    Arm::Flat { e: off } => (
-                        [y.dot(&n) - off, e.d1.dot(&n)],
-                        [[e.d1.dot(&n), -y.dot(&u)], [e.d2.dot(&n), -e.d1.dot(&u)]],
-                    ),
-                    Arm::Roller { l, r } => {
+                    Arm::Flat { .. } => [[e.d1.dot(&n), -y.dot(&u)], [e.d2.dot(&n), -e.d1.dot(&u)]],
+                    Arm::Roller { l, .. } => {
                         let m = y - l * u;
                         let dm_dq = -l * n;
-                        (
-                            [0.5 * (m.norm_squared() - r * r), e.d1.dot(&m)],
-                            [
-                                [e.d1.dot(&m), m.dot(&dm_dq)],
-                                [e.d2.dot(&m) + e.d1.norm_squared(), e.d1.dot(&dm_dq)],
-                            ],
-                        )
+                        [
+                            [e.d1.dot(&m), m.dot(&dm_dq)],
+                            [e.d2.dot(&m) + e.d1.norm_squared(), e.d1.dot(&dm_dq)],
+                        ]
                     }
                 }
             }

@@ -14,16 +14,20 @@
 //! [crate docs](crate#sign-conventions).
 
 mod follower;
+mod jet;
 mod sweep;
 
 pub use follower::{Follower, Sense};
 pub use sweep::{Found, Sweep};
 
 use crate::body::BodyState;
-use crate::contact::{pairing_at, ContactError, ContactKinematics, NormalAcceleration, Surface, CONFORMAL_TOLERANCE};
+use crate::contact::{
+    pairing_at, ContactError, ContactKinematics, NormalAcceleration, Surface, CONFORMAL_TOLERANCE,
+};
 use crate::curve::{unit_direction, Curve, CurveError, Domain};
-use crate::geometry::{cross, Point2, Vec2};
+use crate::geometry::{cross, Point2, Rot, Vec2};
 use follower::{Geometry, Kind};
+use jet::{scale, Jet, Num, V2};
 use std::sync::Arc;
 
 /// A cam: a closed profile in the cam frame, whose origin is the rotation axis.
@@ -48,27 +52,63 @@ impl Cam {
             return Err(CamError::OpenProfile);
         }
         if !(pivot.x.is_finite() && pivot.y.is_finite()) {
-            return Err(CamError::Invalid { field: "cam.pivot", value: if pivot.x.is_finite() { pivot.y } else { pivot.x }, reason: "must be finite" });
+            return Err(CamError::Invalid {
+                field: "cam.pivot",
+                value: if pivot.x.is_finite() {
+                    pivot.y
+                } else {
+                    pivot.x
+                },
+                reason: "must be finite",
+            });
         }
         if !(speed.is_finite() && speed > 0.0) {
-            return Err(CamError::Invalid { field: "cam.speed", value: speed, reason: "must be positive and finite" });
+            return Err(CamError::Invalid {
+                field: "cam.speed",
+                value: speed,
+                reason: "must be positive and finite",
+            });
         }
-        Ok(Self { profile, pivot, direction, speed, angular_acceleration: 0.0 })
+        Ok(Self {
+            profile,
+            pivot,
+            direction,
+            speed,
+            angular_acceleration: 0.0,
+        })
     }
 
     /// As [`Cam::new`] with the speed in revolutions per minute.
-    pub fn from_rpm(profile: Arc<dyn Curve>, pivot: Point2, direction: Sense, rpm: f64) -> Result<Self, CamError> {
+    pub fn from_rpm(
+        profile: Arc<dyn Curve>,
+        pivot: Point2,
+        direction: Sense,
+        rpm: f64,
+    ) -> Result<Self, CamError> {
         if !(rpm.is_finite() && rpm > 0.0) {
-            return Err(CamError::Invalid { field: "cam.speed_rpm", value: rpm, reason: "must be positive and finite" });
+            return Err(CamError::Invalid {
+                field: "cam.speed_rpm",
+                value: rpm,
+                reason: "must be positive and finite",
+            });
         }
-        Self::new(profile, pivot, direction, rpm * std::f64::consts::TAU / 60.0)
+        Self::new(
+            profile,
+            pivot,
+            direction,
+            rpm * std::f64::consts::TAU / 60.0,
+        )
     }
 
     /// With a constant angular acceleration `θ̈` (rad/s², in the cam's direction of motion); the
     /// speed given is then the speed at the instant analysed.
     pub fn with_angular_acceleration(mut self, alpha: f64) -> Result<Self, CamError> {
         if !alpha.is_finite() {
-            return Err(CamError::Invalid { field: "cam.angular_acceleration", value: alpha, reason: "must be finite" });
+            return Err(CamError::Invalid {
+                field: "cam.angular_acceleration",
+                value: alpha,
+                reason: "must be finite",
+            });
         }
         self.angular_acceleration = alpha;
         Ok(self)
@@ -98,7 +138,12 @@ impl Cam {
     /// The cam body's state at cam angle `theta` (rad): angle `±θ`, angular velocity `±ω`.
     pub fn state(&self, theta: f64) -> BodyState {
         let s = self.direction.sign();
-        BodyState::rotating(self.pivot, s * theta, s * self.speed, s * self.angular_acceleration)
+        BodyState::rotating(
+            self.pivot,
+            s * theta,
+            s * self.speed,
+            s * self.angular_acceleration,
+        )
     }
 }
 
@@ -166,7 +211,9 @@ pub enum CamError {
     },
     /// The contact normal is perpendicular to the follower's motion: no velocity solves the
     /// contact condition.
-    #[error("at cam angle {angle_deg}°: the follower is locked (pressure angle {pressure_angle_deg}°)")]
+    #[error(
+        "at cam angle {angle_deg}°: the follower is locked (pressure angle {pressure_angle_deg}°)"
+    )]
     Locked {
         /// cam angle, degrees
         angle_deg: f64,
@@ -220,6 +267,10 @@ pub struct FollowerState {
     pub velocity: f64,
     /// acceleration `q̈` by the contact method (eq. 11)
     pub acceleration: f64,
+    /// jerk `d³q/dt³ = θ̇³ q‴ + 3 θ̇ θ̈ q″` (derivatives in θ by implicit differentiation, see
+    /// [`Mechanism::angle_derivatives`]); `None` when the contact sits on a node of a spline
+    /// profile, where the curvature has a corner and the jerk jumps
+    pub jerk: Option<f64>,
     /// contact point, world frame
     pub contact_world: Point2,
     /// contact point, cam frame
@@ -277,32 +328,55 @@ impl Mechanism {
             if v.is_finite() {
                 Ok(v)
             } else {
-                Err(CamError::Invalid { field, value: v, reason: "must be finite" })
+                Err(CamError::Invalid {
+                    field,
+                    value: v,
+                    reason: "must be finite",
+                })
             }
         };
         let positive = |field: &'static str, v: f64| {
             if v.is_finite() && v > 0.0 {
                 Ok(v)
             } else {
-                Err(CamError::Invalid { field, value: v, reason: "must be positive and finite" })
+                Err(CamError::Invalid {
+                    field,
+                    value: v,
+                    reason: "must be positive and finite",
+                })
             }
         };
         match follower {
             Follower::TranslatingFlat { .. } => {}
-            Follower::TranslatingRoller { offset, roller_radius, .. } => {
+            Follower::TranslatingRoller {
+                offset,
+                roller_radius,
+                ..
+            } => {
                 finite("follower.offset", offset)?;
                 positive("follower.roller_radius", roller_radius)?;
             }
             Follower::TranslatingKnife { offset, .. } => {
                 finite("follower.offset", offset)?;
             }
-            Follower::OscillatingFlat { pivot, face_offset, initial_angle, .. } => {
+            Follower::OscillatingFlat {
+                pivot,
+                face_offset,
+                initial_angle,
+                ..
+            } => {
                 finite("follower.pivot", pivot.x)?;
                 finite("follower.pivot", pivot.y)?;
                 finite("follower.offset", face_offset)?;
                 finite("follower.initial_angle_deg", initial_angle)?;
             }
-            Follower::OscillatingRoller { pivot, arm_length, roller_radius, initial_angle, .. } => {
+            Follower::OscillatingRoller {
+                pivot,
+                arm_length,
+                roller_radius,
+                initial_angle,
+                ..
+            } => {
                 finite("follower.pivot", pivot.x)?;
                 finite("follower.pivot", pivot.y)?;
                 positive("follower.arm_length", arm_length)?;
@@ -323,7 +397,11 @@ impl Mechanism {
         let pts: Vec<_> = dense.iter().map(|&u| profile.eval(u)).collect();
         let size = pts.iter().map(|e| e.p.coords.norm()).fold(0.0, f64::max);
         if !(size.is_finite() && size > 0.0) {
-            return Err(CamError::Invalid { field: "cam.profile", value: size, reason: "profile must have a finite, non-zero size" });
+            return Err(CamError::Invalid {
+                field: "cam.profile",
+                value: size,
+                reason: "profile must have a finite, non-zero size",
+            });
         }
         let area2: f64 = (0..pts.len())
             .map(|i| cross(pts[i].p.coords, pts[(i + 1) % pts.len()].p.coords))
@@ -331,14 +409,29 @@ impl Mechanism {
         let orientation = if area2 >= 0.0 { 1.0 } else { -1.0 };
         let convex = pts.iter().all(|e| orientation * e.curvature() > 0.0);
         let options = AnalysisOptions::for_size(size);
-        let mut m = Self { cam, geometry, options, samples, period, size, orientation, convex, breakpoints };
+        let mut m = Self {
+            cam,
+            geometry,
+            options,
+            samples,
+            period,
+            size,
+            orientation,
+            convex,
+            breakpoints,
+        };
         m.set_options(options);
         Ok(m)
     }
 
     /// Replaces the analysis options.
     pub fn set_options(&mut self, options: AnalysisOptions) {
-        self.samples = bracket_samples(&self.breakpoints, self.period, options.samples_per_piece.max(2), options.samples_per_curve.max(8));
+        self.samples = bracket_samples(
+            &self.breakpoints,
+            self.period,
+            options.samples_per_piece.max(2),
+            options.samples_per_curve.max(8),
+        );
         self.options = options;
     }
 
@@ -402,7 +495,13 @@ impl Mechanism {
     }
 
     /// Newton on the tangency residual from `(u, q)`.
-    pub(crate) fn newton(&self, theta: f64, cam: &BodyState, mut u: f64, mut q: f64) -> Result<Touch, CamError> {
+    pub(crate) fn newton(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        mut u: f64,
+        mut q: f64,
+    ) -> Result<Touch, CamError> {
         let profile = self.cam.profile.as_ref();
         let tol = self.options.position_tolerance;
         let qs = self.q_scale();
@@ -413,7 +512,10 @@ impl Mechanism {
             let du = (-f[0] * j[1][1] + f[1] * j[0][1]) / det;
             let dq = (-j[0][0] * f[1] + j[1][0] * f[0]) / det;
             if !(du.is_finite() && dq.is_finite()) {
-                return Err(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "singular tangency Jacobian" });
+                return Err(CamError::NoConvergence {
+                    angle_deg: theta.to_degrees(),
+                    reason: "singular tangency Jacobian",
+                });
             }
             // keep a step within a tenth of the period (safeguard against wild steps)
             let lim = 0.1 * self.period;
@@ -422,10 +524,16 @@ impl Mechanism {
             q += dq;
             let step = (du * e.d1.norm()).abs().max((dq * qs).abs());
             if step <= tol {
-                return Ok(Touch { u: u.rem_euclid(self.period), q });
+                return Ok(Touch {
+                    u: u.rem_euclid(self.period),
+                    q,
+                });
             }
         }
-        Err(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "iteration limit reached" })
+        Err(CamError::NoConvergence {
+            angle_deg: theta.to_degrees(),
+            reason: "iteration limit reached",
+        })
     }
 
     /// True when `(u, q)` is the follower's first touch through that cam point (not another
@@ -436,7 +544,14 @@ impl Mechanism {
             return true;
         }
         match self.geometry.score(x) {
-            Some((_, q)) => ((q - t.q) * self.q_scale()).abs() <= 1e3 * self.options.position_tolerance.max(f64::EPSILON * self.size),
+            Some((_, q)) => {
+                ((q - t.q) * self.q_scale()).abs()
+                    <= 1e3
+                        * self
+                            .options
+                            .position_tolerance
+                            .max(f64::EPSILON * self.size)
+            }
             None => false,
         }
     }
@@ -457,14 +572,26 @@ impl Mechanism {
         };
         let profile = self.cam.profile.as_ref();
         let n = self.samples.len();
-        let pts: Vec<Vec2> = self.samples.iter().map(|&u| cam.eval_curve(profile, u).p - self.cam.pivot).collect();
+        let pts: Vec<Vec2> = self
+            .samples
+            .iter()
+            .map(|&u| cam.eval_curve(profile, u).p - self.cam.pivot)
+            .collect();
         let l: Vec<f64> = pts.iter().map(|y| y.dot(&p) - e).collect();
         let mut starts = Vec::new();
         for k in 0..n {
             let k1 = (k + 1) % n;
             if l[k] == 0.0 || (l[k] > 0.0) != (l[k1] > 0.0) {
-                let u1 = if k1 == 0 { self.period } else { self.samples[k1] };
-                let f = if l[k] == l[k1] { 0.0 } else { l[k] / (l[k] - l[k1]) };
+                let u1 = if k1 == 0 {
+                    self.period
+                } else {
+                    self.samples[k1]
+                };
+                let f = if l[k] == l[k1] {
+                    0.0
+                } else {
+                    l[k] / (l[k] - l[k1])
+                };
                 let u0 = self.samples[k] + f * (u1 - self.samples[k]);
                 let q0 = pts[k].dot(&d) * (1.0 - f) + pts[k1].dot(&d) * f;
                 starts.push((q0, u0, q0));
@@ -478,12 +605,15 @@ impl Mechanism {
     fn score_starts(&self, cam: &BodyState) -> Vec<(f64, f64, f64)> {
         let profile = self.cam.profile.as_ref();
         let n = self.samples.len();
-        let scores: Vec<Option<(f64, f64)>> =
-            self.samples.iter().map(|&u| self.geometry.score(cam.eval_curve(profile, u).p)).collect();
+        let scores: Vec<Option<(f64, f64)>> = self
+            .samples
+            .iter()
+            .map(|&u| self.geometry.score(cam.eval_curve(profile, u).p))
+            .collect();
         let s = |k: usize| scores[k].map_or(f64::NEG_INFINITY, |x| x.0);
         let mut starts = Vec::new();
-        for k in 0..n {
-            if let Some((sc, q)) = scores[k] {
+        for (k, score) in scores.iter().enumerate() {
+            if let Some((sc, q)) = *score {
                 if sc >= s((k + n - 1) % n) && sc >= s((k + 1) % n) {
                     starts.push((sc, self.samples[k], q));
                 }
@@ -495,14 +625,21 @@ impl Mechanism {
     /// Global first touch: sample the profile, refine the best local maxima by Newton.
     pub(crate) fn global_touch(&self, theta: f64, cam: &BodyState) -> Result<Touch, CamError> {
         let knife = self.geometry.is_knife();
-        let mut starts = if knife { self.knife_starts(cam) } else { self.score_starts(cam) };
+        let mut starts = if knife {
+            self.knife_starts(cam)
+        } else {
+            self.score_starts(cam)
+        };
         if starts.is_empty() {
             let reason = if knife {
                 "the knife edge's line of travel misses the cam"
             } else {
                 "the follower cannot reach the cam"
             };
-            return Err(CamError::NoTouch { angle_deg: theta.to_degrees(), reason });
+            return Err(CamError::NoTouch {
+                angle_deg: theta.to_degrees(),
+                reason,
+            });
         }
         // sampled scores are exact first touches of those points, except a knife's interpolated ones
         let best_sample = if knife {
@@ -520,21 +657,106 @@ impl Mechanism {
                         best = Some(t);
                     }
                 }
-                Ok(_) => last_err = Some(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "Newton reached a tangency that is not the first touch" }),
+                Ok(_) => {
+                    last_err = Some(CamError::NoConvergence {
+                        angle_deg: theta.to_degrees(),
+                        reason: "Newton reached a tangency that is not the first touch",
+                    })
+                }
                 Err(e) => last_err = Some(e),
             }
         }
-        let best = best.ok_or_else(|| last_err.unwrap_or(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "no candidate" }))?;
+        let best = best.ok_or_else(|| {
+            last_err.unwrap_or(CamError::NoConvergence {
+                angle_deg: theta.to_degrees(),
+                reason: "no candidate",
+            })
+        })?;
         // the refined touch can only be later than (or equal to) a sampled one
         let slack = 1e3 * self.options.position_tolerance / self.q_scale() + 1e-12;
         if self.oriented(best.q) < best_sample - slack {
-            return Err(CamError::NoConvergence { angle_deg: theta.to_degrees(), reason: "refined contact is behind a sampled one" });
+            return Err(CamError::NoConvergence {
+                angle_deg: theta.to_degrees(),
+                reason: "refined contact is behind a sampled one",
+            });
         }
         Ok(best)
     }
 
+    /// `(dq/dθ, d²q/dθ², d³q/dθ³)` at cam angle `theta` (rad) by implicit differentiation of the
+    /// first-touch conditions (see the `jet` module). This is independent of the paper's method
+    /// and gives the jerk; `d³q/dθ³` takes the profile's third derivative on the segment that
+    /// holds the contact (at a spline node it jumps).
+    pub fn angle_derivatives(&self, theta: f64) -> Result<[f64; 3], CamError> {
+        let cam = self.cam.state(theta);
+        let touch = self.global_touch(theta, &cam)?;
+        self.jet_derivatives(theta, &cam, touch)
+    }
+
+    pub(crate) fn jet_derivatives(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        touch: Touch,
+    ) -> Result<[f64; 3], CamError> {
+        let profile = self.cam.profile.as_ref();
+        let r = profile.eval(touch.u);
+        let s = self.cam.direction.sign();
+        let rot0 = Rot::new(s * theta);
+        // R(s ε) as jets: cos(sε) = 1 − ε²/2, sin(sε) = s ε − s ε³/6 (s = ±1)
+        let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
+        let j = self
+            .geometry
+            .jacobian(&cam.eval_curve(profile, touch.u), touch.q);
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if !(det.abs() > 0.0 && det.is_finite()) {
+            return Err(CamError::NoConvergence {
+                angle_deg: theta.to_degrees(),
+                reason: "singular tangency Jacobian",
+            });
+        }
+        let mut u = [0.0; 4];
+        let mut q = [touch.q, 0.0, 0.0, 0.0];
+        let world = |x: Jet, y: Jet, origin: Vec2| {
+            let (ax, ay) = (ce * x - se * y, se * x + ce * y);
+            V2::new(
+                Jet::c(origin.x) + scale(ax, rot0.cos) - scale(ay, rot0.sin),
+                Jet::c(origin.y) + scale(ax, rot0.sin) + scale(ay, rot0.cos),
+            )
+        };
+        for k in 1..=3 {
+            let dl = Jet([0.0, u[1], u[2], u[3]]);
+            let (d2, d3) = (dl * dl, dl * dl * dl);
+            let taylor = |c0: f64, c1: f64, c2: f64, c3: f64| {
+                Jet::c(c0) + scale(dl, c1) + scale(d2, c2 / 2.0) + scale(d3, c3 / 6.0)
+            };
+            let x = world(
+                taylor(r.p.x, r.d1.x, r.d2.x, r.d3.x),
+                taylor(r.p.y, r.d1.y, r.d2.y, r.d3.y),
+                self.cam.pivot.coords,
+            );
+            // ∂x/∂u along the path; the fourth derivative is left out (it does not reach q, see jet.rs)
+            let x1 = world(
+                taylor(r.d1.x, r.d2.x, r.d3.x, 0.0),
+                taylor(r.d1.y, r.d2.y, r.d3.y, 0.0),
+                Vec2::zeros(),
+            );
+            let f = self.geometry.residual_value(x, x1, Jet(q));
+            let (f0, f1) = (f[0].0[k], f[1].0[k]);
+            u[k] = (-f0 * j[1][1] + f1 * j[0][1]) / det;
+            q[k] = (-j[0][0] * f1 + j[1][0] * f0) / det;
+        }
+        Ok([q[1], 2.0 * q[2], 6.0 * q[3]])
+    }
+
     /// Velocity, acceleration and contact data at a converged touch (paper eqs. 5, 6, 1, 2, 11).
-    pub(crate) fn kinematics(&self, theta: f64, cam: &BodyState, touch: Touch, found: Found) -> Result<FollowerState, CamError> {
+    pub(crate) fn kinematics(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        touch: Touch,
+        found: Found,
+    ) -> Result<FollowerState, CamError> {
         let g = &self.geometry;
         let profile = self.cam.profile.as_ref();
         let angle_deg = theta.to_degrees();
@@ -550,7 +772,10 @@ impl Mechanism {
             cross(jhat, npush).atan2(jhat.dot(&npush))
         };
         if !(den.abs() > self.options.lock_tolerance * jb.norm()) {
-            return Err(CamError::Locked { angle_deg, pressure_angle_deg: pressure_angle.to_degrees() });
+            return Err(CamError::Locked {
+                angle_deg,
+                pressure_angle_deg: pressure_angle.to_degrees(),
+            });
         }
         let qd = nu.dot(&cam.velocity_at(c)) / den;
         let body_b = g.body(touch.q, qd, 0.0);
@@ -576,11 +801,19 @@ impl Mechanism {
             let d = (touch.u - b).rem_euclid(self.period);
             d < tol_u || self.period - d < tol_u
         });
+        let jerk = if at_breakpoint {
+            None
+        } else {
+            let dq = self.jet_derivatives(theta, cam, touch)?;
+            let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
+            Some(w * w * w * dq[2] + 3.0 * w * al * dq[1])
+        };
         Ok(FollowerState {
             cam_angle: theta,
             position: touch.q,
             velocity: qd,
             acceleration: qdd,
+            jerk,
             contact_world: c,
             contact_cam: profile.position(touch.u),
             cam_param: touch.u,
@@ -600,9 +833,16 @@ impl Mechanism {
 }
 
 /// Parameters for bracketing: `per_piece` per smooth piece, or `per_curve` over the period.
-pub(crate) fn bracket_samples(breakpoints: &[f64], period: f64, per_piece: usize, per_curve: usize) -> Vec<f64> {
+pub(crate) fn bracket_samples(
+    breakpoints: &[f64],
+    period: f64,
+    per_piece: usize,
+    per_curve: usize,
+) -> Vec<f64> {
     if breakpoints.is_empty() {
-        (0..per_curve).map(|i| period * i as f64 / per_curve as f64).collect()
+        (0..per_curve)
+            .map(|i| period * i as f64 / per_curve as f64)
+            .collect()
     } else {
         let mut v = Vec::with_capacity(breakpoints.len() * per_piece);
         for (i, &s) in breakpoints.iter().enumerate() {

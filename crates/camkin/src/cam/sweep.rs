@@ -65,7 +65,9 @@ impl<'a> Sweep<'a> {
                     theta,
                     u: s.cam_param,
                     q: s.position,
-                    du_dtheta: s.sliding_rate_cam / cam.eval_curve(m.cam.profile(), s.cam_param).d1.norm() / rate,
+                    du_dtheta: s.sliding_rate_cam
+                        / cam.eval_curve(m.cam.profile(), s.cam_param).d1.norm()
+                        / rate,
                     dq_dtheta: s.velocity / rate,
                 })
             }
@@ -92,7 +94,12 @@ impl<'a> Sweep<'a> {
                 let g = m.global_touch(theta, cam)?;
                 let slack = 1e3 * m.options.position_tolerance / m.q_scale() + 1e-12;
                 if m.oriented(g.q) > m.oriented(t.q) + slack {
-                    Ok((g, Found::Jump { from_cam_param: t.u }))
+                    Ok((
+                        g,
+                        Found::Jump {
+                            from_cam_param: t.u,
+                        },
+                    ))
                 } else {
                     Ok((t, Found::WarmStart))
                 }

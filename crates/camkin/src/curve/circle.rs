@@ -68,7 +68,10 @@ mod tests {
     fn rejects_bad_radius() {
         assert!(matches!(
             Circle::new(Point2::origin(), -1.0),
-            Err(CurveError::NonPositive { field: "radius", .. })
+            Err(CurveError::NonPositive {
+                field: "radius",
+                ..
+            })
         ));
         assert!(Circle::new(Point2::origin(), f64::NAN).is_err());
         assert!(Circle::new(Point2::new(f64::INFINITY, 0.0), 1.0).is_err());

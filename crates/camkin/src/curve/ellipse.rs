@@ -69,9 +69,17 @@ mod tests {
         // At the end of the a axis κ = a/b², at the end of the b axis κ = b/a².
         let e = Ellipse::new(Point2::new(0.5, 0.25), 3.0, 2.0, 0.7).unwrap();
         assert_relative_eq!(e.curvature(0.0), 3.0 / 4.0, epsilon = 1e-14);
-        assert_relative_eq!(e.curvature(std::f64::consts::FRAC_PI_2), 2.0 / 9.0, epsilon = 1e-14);
+        assert_relative_eq!(
+            e.curvature(std::f64::consts::FRAC_PI_2),
+            2.0 / 9.0,
+            epsilon = 1e-14
+        );
         let p = e.position(0.0) - e.center();
-        assert_relative_eq!(p, Vec2::new(3.0 * 0.7f64.cos(), 3.0 * 0.7f64.sin()), epsilon = 1e-14);
+        assert_relative_eq!(
+            p,
+            Vec2::new(3.0 * 0.7f64.cos(), 3.0 * 0.7f64.sin()),
+            epsilon = 1e-14
+        );
         for k in 0..10 {
             check_derivatives(&e, k as f64 * 0.63, 1e-8);
         }

@@ -263,8 +263,20 @@ pub(crate) mod test_support {
         let d2 = central(|v| c.eval(v).d1, u, h);
         let d3 = central(|v| c.eval(v).d2, u, h);
         let scale = 1.0 + e.d1.norm() + e.d2.norm() + e.d3.norm();
-        assert!((d1 - e.d1).norm() < tol * scale, "d1 at {u}: {d1} vs {}", e.d1);
-        assert!((d2 - e.d2).norm() < tol * scale, "d2 at {u}: {d2} vs {}", e.d2);
-        assert!((d3 - e.d3).norm() < tol * scale, "d3 at {u}: {d3} vs {}", e.d3);
+        assert!(
+            (d1 - e.d1).norm() < tol * scale,
+            "d1 at {u}: {d1} vs {}",
+            e.d1
+        );
+        assert!(
+            (d2 - e.d2).norm() < tol * scale,
+            "d2 at {u}: {d2} vs {}",
+            e.d2
+        );
+        assert!(
+            (d3 - e.d3).norm() < tol * scale,
+            "d3 at {u}: {d3} vs {}",
+            e.d3
+        );
     }
 }

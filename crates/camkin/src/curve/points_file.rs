@@ -24,13 +24,21 @@ pub fn parse_points(text: &str) -> Result<Vec<Point2>, CurveError> {
             .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
             .filter(|f| !f.is_empty())
             .collect();
-        if !seen_data && fields.iter().any(|f| f.parse::<f64>().is_err()) && line.chars().any(|c| c.is_alphabetic()) && !line.to_ascii_lowercase().contains("nan") && !line.to_ascii_lowercase().contains("inf") {
+        if !seen_data
+            && fields.iter().any(|f| f.parse::<f64>().is_err())
+            && line.chars().any(|c| c.is_alphabetic())
+            && !line.to_ascii_lowercase().contains("nan")
+            && !line.to_ascii_lowercase().contains("inf")
+        {
             seen_data = true; // header
             continue;
         }
         seen_data = true;
         if fields.len() != 2 {
-            return Err(syntax(&format!("expected 2 numbers (x,y), found {} fields", fields.len())));
+            return Err(syntax(&format!(
+                "expected 2 numbers (x,y), found {} fields",
+                fields.len()
+            )));
         }
         let x: f64 = fields[0]
             .parse()
@@ -62,16 +70,29 @@ mod tests {
     #[test]
     fn parses_commas_spaces_comments_and_header() {
         let p = parse_points("x,y\n# comment\n1,2\n\n3.5 -4\n5;6e-1\n").unwrap();
-        assert_eq!(p, vec![Point2::new(1.0, 2.0), Point2::new(3.5, -4.0), Point2::new(5.0, 0.6)]);
+        assert_eq!(
+            p,
+            vec![
+                Point2::new(1.0, 2.0),
+                Point2::new(3.5, -4.0),
+                Point2::new(5.0, 0.6)
+            ]
+        );
     }
 
     #[test]
     fn errors_name_the_line() {
         let e = parse_points("1,2\n3,abc\n").unwrap_err();
-        assert!(matches!(e, CurveError::PointsFileSyntax { line: 2, .. }), "{e}");
+        assert!(
+            matches!(e, CurveError::PointsFileSyntax { line: 2, .. }),
+            "{e}"
+        );
         let e = parse_points("1,2\n3,4,5\n").unwrap_err();
         assert!(e.to_string().contains("line 2"), "{e}");
         let e = parse_points("1,2\nnan,4\n").unwrap_err();
-        assert!(matches!(e, CurveError::PointsFileSyntax { line: 2, .. }), "{e}");
+        assert!(
+            matches!(e, CurveError::PointsFileSyntax { line: 2, .. }),
+            "{e}"
+        );
     }
 }

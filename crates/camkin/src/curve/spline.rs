@@ -174,8 +174,16 @@ mod tests {
                 Domain::Periodic { period } => period,
                 _ => unreachable!(),
             };
-            assert_relative_eq!(s.position(period + s.node_param(2)), paper_nodes()[2], epsilon = 1e-12);
-            assert_relative_eq!(s.position(-period + s.node_param(3)), paper_nodes()[3], epsilon = 1e-12);
+            assert_relative_eq!(
+                s.position(period + s.node_param(2)),
+                paper_nodes()[2],
+                epsilon = 1e-12
+            );
+            assert_relative_eq!(
+                s.position(-period + s.node_param(3)),
+                paper_nodes()[3],
+                epsilon = 1e-12
+            );
         }
     }
 
@@ -189,11 +197,21 @@ mod tests {
                 let right = s.eval(start + h); // start of the next segment (wraps at the seam)
                 let lx = eval_local(&cx, h);
                 let ly = eval_local(&cy, h);
-                for (k, (l, r)) in [(lx[0], right.p.x), (ly[0], right.p.y), (lx[1], right.d1.x), (ly[1], right.d1.y), (lx[2], right.d2.x), (ly[2], right.d2.y)]
-                    .into_iter()
-                    .enumerate()
+                for (k, (l, r)) in [
+                    (lx[0], right.p.x),
+                    (ly[0], right.p.y),
+                    (lx[1], right.d1.x),
+                    (ly[1], right.d1.y),
+                    (lx[2], right.d2.x),
+                    (ly[2], right.d2.y),
+                ]
+                .into_iter()
+                .enumerate()
                 {
-                    assert!((l - r).abs() < 1e-12 * (1.0 + r.abs()), "segment {i} quantity {k}: {l} vs {r}");
+                    assert!(
+                        (l - r).abs() < 1e-12 * (1.0 + r.abs()),
+                        "segment {i} quantity {k}: {l} vs {r}"
+                    );
                 }
             }
         }
@@ -227,11 +245,19 @@ mod tests {
         );
         assert!(matches!(
             ClosedSpline::new(&[p(0.0, 0.0), p(1.0, 0.0), p(1.0, 0.0), p(0.0, 1.0)]),
-            Err(CurveError::RepeatedPoint { index: 1, next: 2, .. })
+            Err(CurveError::RepeatedPoint {
+                index: 1,
+                next: 2,
+                ..
+            })
         ));
         assert!(matches!(
             ClosedSpline::new(&[p(0.0, 0.0), p(1.0, 0.0), p(0.0, 1.0), p(0.0, 0.0)]),
-            Err(CurveError::RepeatedPoint { index: 3, next: 0, .. })
+            Err(CurveError::RepeatedPoint {
+                index: 3,
+                next: 0,
+                ..
+            })
         ));
         assert!(matches!(
             ClosedSpline::new(&[p(0.0, 0.0), p(f64::NAN, 0.0), p(0.0, 1.0)]),

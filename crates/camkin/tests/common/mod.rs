@@ -59,7 +59,13 @@ pub fn paper_profile(revised: bool) -> Arc<dyn Curve> {
 /// The paper's mechanism: flat-faced follower along +x, 1000 rpm ccw, axis at the origin.
 pub fn paper_mechanism(revised: bool) -> Mechanism {
     let cam = Cam::from_rpm(paper_profile(revised), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
-    Mechanism::new(cam, Follower::TranslatingFlat { direction: camkin::Vec2::x() }).unwrap()
+    Mechanism::new(
+        cam,
+        Follower::TranslatingFlat {
+            direction: camkin::Vec2::x(),
+        },
+    )
+    .unwrap()
 }
 
 /// Eccentric circular cam: radius `r`, centre at `(e, 0)` in the cam frame.
@@ -71,7 +77,13 @@ pub fn ellipse(a: f64, b: f64, center: Point2, rot: f64) -> Arc<dyn Curve> {
     Arc::new(Ellipse::new(center, a, b, rot).unwrap())
 }
 
-pub fn mechanism(profile: Arc<dyn Curve>, pivot: Point2, dir: Sense, rpm: f64, f: Follower) -> Mechanism {
+pub fn mechanism(
+    profile: Arc<dyn Curve>,
+    pivot: Point2,
+    dir: Sense,
+    rpm: f64,
+    f: Follower,
+) -> Mechanism {
     Mechanism::new(Cam::from_rpm(profile, pivot, dir, rpm).unwrap(), f).unwrap()
 }
 
@@ -79,9 +91,18 @@ pub fn mechanism(profile: Arc<dyn Curve>, pivot: Point2, dir: Sense, rpm: f64, f
 pub fn all_followers(pivot: Point2) -> Vec<Follower> {
     use camkin::Vec2;
     vec![
-        Follower::TranslatingFlat { direction: Vec2::new(1.0, 0.3) },
-        Follower::TranslatingRoller { direction: Vec2::new(0.0, 1.0), offset: 0.7, roller_radius: 1.2 },
-        Follower::TranslatingKnife { direction: Vec2::new(-1.0, 0.2), offset: -0.4 },
+        Follower::TranslatingFlat {
+            direction: Vec2::new(1.0, 0.3),
+        },
+        Follower::TranslatingRoller {
+            direction: Vec2::new(0.0, 1.0),
+            offset: 0.7,
+            roller_radius: 1.2,
+        },
+        Follower::TranslatingKnife {
+            direction: Vec2::new(-1.0, 0.2),
+            offset: -0.4,
+        },
         Follower::OscillatingFlat {
             pivot: pivot + Vec2::new(-3.0, 7.0),
             face_offset: 0.5,
@@ -110,14 +131,26 @@ pub struct HD {
 
 impl HD {
     pub fn var(x: f64) -> Self {
-        Self { v: x, d1: 1.0, d2: 0.0 }
+        Self {
+            v: x,
+            d1: 1.0,
+            d2: 0.0,
+        }
     }
     pub fn c(x: f64) -> Self {
-        Self { v: x, d1: 0.0, d2: 0.0 }
+        Self {
+            v: x,
+            d1: 0.0,
+            d2: 0.0,
+        }
     }
     /// Applies a scalar function with derivatives f, f', f'' (chain rule to second order).
     fn chain(self, f: f64, fp: f64, fpp: f64) -> Self {
-        Self { v: f, d1: fp * self.d1, d2: fp * self.d2 + fpp * self.d1 * self.d1 }
+        Self {
+            v: f,
+            d1: fp * self.d1,
+            d2: fp * self.d2 + fpp * self.d1 * self.d1,
+        }
     }
     pub fn sin(self) -> Self {
         self.chain(self.v.sin(), self.v.cos(), -self.v.sin())
@@ -144,30 +177,50 @@ impl HD {
         let d1 = num.v / r2.v;
         // derivative of num/r2
         let q = num / r2;
-        Self { v: y.v.atan2(x.v), d1, d2: q.d1 }
+        Self {
+            v: y.v.atan2(x.v),
+            d1,
+            d2: q.d1,
+        }
     }
     /// The derivative as a hyper-dual (value d1, derivative d2).
     fn dd(self) -> Self {
-        Self { v: self.d1, d1: self.d2, d2: 0.0 }
+        Self {
+            v: self.d1,
+            d1: self.d2,
+            d2: 0.0,
+        }
     }
 }
 
 impl std::ops::Add for HD {
     type Output = HD;
     fn add(self, o: HD) -> HD {
-        HD { v: self.v + o.v, d1: self.d1 + o.d1, d2: self.d2 + o.d2 }
+        HD {
+            v: self.v + o.v,
+            d1: self.d1 + o.d1,
+            d2: self.d2 + o.d2,
+        }
     }
 }
 impl std::ops::Sub for HD {
     type Output = HD;
     fn sub(self, o: HD) -> HD {
-        HD { v: self.v - o.v, d1: self.d1 - o.d1, d2: self.d2 - o.d2 }
+        HD {
+            v: self.v - o.v,
+            d1: self.d1 - o.d1,
+            d2: self.d2 - o.d2,
+        }
     }
 }
 impl std::ops::Mul for HD {
     type Output = HD;
     fn mul(self, o: HD) -> HD {
-        HD { v: self.v * o.v, d1: self.d1 * o.v + self.v * o.d1, d2: self.d2 * o.v + 2.0 * self.d1 * o.d1 + self.v * o.d2 }
+        HD {
+            v: self.v * o.v,
+            d1: self.d1 * o.v + self.v * o.d1,
+            d2: self.d2 * o.v + 2.0 * self.d1 * o.d1 + self.v * o.d2,
+        }
     }
 }
 impl std::ops::Div for HD {
@@ -180,18 +233,29 @@ impl std::ops::Div for HD {
 impl std::ops::Neg for HD {
     type Output = HD;
     fn neg(self) -> HD {
-        HD { v: -self.v, d1: -self.d1, d2: -self.d2 }
+        HD {
+            v: -self.v,
+            d1: -self.d1,
+            d2: -self.d2,
+        }
     }
 }
 impl std::ops::Mul<HD> for f64 {
     type Output = HD;
     fn mul(self, o: HD) -> HD {
-        HD { v: self * o.v, d1: self * o.d1, d2: self * o.d2 }
+        HD {
+            v: self * o.v,
+            d1: self * o.d1,
+            d2: self * o.d2,
+        }
     }
 }
 impl std::ops::Add<f64> for HD {
     type Output = HD;
     fn add(self, o: f64) -> HD {
-        HD { v: self.v + o, ..self }
+        HD {
+            v: self.v + o,
+            ..self
+        }
     }
 }

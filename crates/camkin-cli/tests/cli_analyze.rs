@@ -1,0 +1,176 @@
+//! `camkin analyze`: output format, examples, exit codes, atomic output, error messages.
+#![allow(clippy::unwrap_used)]
+use assert_cmd::Command;
+use predicates::prelude::*;
+use std::path::PathBuf;
+
+fn camkin() -> Command {
+    Command::cargo_bin("camkin").unwrap()
+}
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn parse_csv(out: &[u8]) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = String::from_utf8(out.to_vec()).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn default_runs_the_paper_cam_over_a_revolution() {
+    let out = camkin()
+        .arg("analyze")
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let (header, rows) = parse_csv(&out);
+    assert_eq!(
+        &header[..4],
+        ["angle_deg", "position", "velocity", "acceleration"]
+    );
+    assert_eq!(rows.len(), 360);
+    for r in &rows {
+        assert_eq!(r.len(), header.len());
+    }
+    // θ = 0: s = 5 cm, a = −26 961.97 cm/s² (cam-follower.md)
+    let s: f64 = rows[0][1].parse().unwrap();
+    let a: f64 = rows[0][3].parse().unwrap();
+    assert!(
+        (s - 5.0).abs() < 1e-12 && (a + 26_961.97).abs() < 0.01,
+        "{s} {a}"
+    );
+}
+
+#[test]
+fn at_list_and_numbers_round_trip() {
+    let out = camkin()
+        .args(["analyze", "--at", "45,-10"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let (_, rows) = parse_csv(&out);
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0][0], "45");
+    assert_eq!(rows[1][0], "-10");
+    let s: f64 = rows[0][1].parse().unwrap();
+    assert!((s - 4.448456).abs() < 5e-7);
+}
+
+#[test]
+fn every_example_file_analyses_without_errors() {
+    let mut n = 0;
+    for entry in std::fs::read_dir(examples()).unwrap() {
+        let p = entry.unwrap().path();
+        if p.extension().is_some_and(|e| e == "toml") {
+            let out = camkin()
+                .arg("analyze")
+                .arg(&p)
+                .args(["--angles", "0:360:10"])
+                .assert()
+                .success()
+                .get_output()
+                .stdout
+                .clone();
+            let (header, rows) = parse_csv(&out);
+            assert_eq!(rows.len(), 36, "{}", p.display());
+            let err = header.iter().position(|h| h == "error").unwrap();
+            for r in rows {
+                assert!(r[err].is_empty(), "{}: {:?}", p.display(), r[err]);
+            }
+            n += 1;
+        }
+    }
+    assert!(n >= 6);
+}
+
+#[test]
+fn output_file_is_written_and_failed_runs_leave_existing_file_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.csv");
+    camkin()
+        .args(["analyze", "--angles", "0:10:1", "-o"])
+        .arg(&out)
+        .assert()
+        .success()
+        .stdout("");
+    let good = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(good.lines().count(), 11);
+    // bad input: exit 2, the good file untouched, no temporary left behind
+    camkin()
+        .args(["analyze", "--angles", "0:10:0", "-o"])
+        .arg(&out)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("STEP"));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), good);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+}
+
+#[test]
+fn bad_input_exits_2_with_a_message_naming_the_problem() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let paper = std::fs::read_to_string(examples().join("paper.toml")).unwrap();
+    let cases: Vec<(PathBuf, &str)> = vec![
+        (dir.path().join("missing.toml"), "cannot read"),
+        (write("syntax.toml", "[cam\nspeed_rpm = 1"), "line 1"),
+        (write("unknown.toml", &paper.replace("direction = [1.0, 0.0]", "roller_radius = 2.0")), "roller_radius"),
+        (write("kind.toml", &paper.replace("kind = \"spline\"", "kind = \"blob\"")), "blob"),
+        (write("speed.toml", &paper.replace("speed_rpm = 1000.0", "speed_rpm = -5.0")), "speed_rpm"),
+        (write("few.toml", &paper.replace("points = [[5.0, 0.0], [3.4, 2.8], [0.6, 3.4], [-1.5, 2.6], [-2.8, 1.0],\n          [-2.8, -1.0], [-1.5, -2.6], [0.6, -3.4], [3.4, -2.8]]", "points = [[1.0, 0.0], [0.0, 1.0]]")), "at least 3"),
+        (write("radius.toml", "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = -1\n[follower]\nkind = \"translating-flat\"\n"), "radius"),
+        (write("pfile.toml", "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"points-file\"\npath = \"nope.csv\"\n[follower]\nkind = \"translating-flat\"\n"), "nope.csv"),
+    ];
+    for (path, needle) in cases {
+        camkin()
+            .arg("analyze")
+            .arg(&path)
+            .args(["--at", "0"])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(needle))
+            .stderr(predicate::str::contains("panicked").not());
+    }
+}
+
+#[test]
+fn unreachable_follower_rows_carry_the_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("far.toml");
+    std::fs::write(&p, "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 5.0\n").unwrap();
+    let out = camkin()
+        .arg("analyze")
+        .arg(&p)
+        .args(["--at", "0"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("could not be analysed"))
+        .get_output()
+        .stdout
+        .clone();
+    let (_, rows) = parse_csv(&out);
+    assert!(rows[0].last().unwrap().contains("misses the cam"));
+}
+
+#[test]
+fn help_shows_examples() {
+    camkin()
+        .args(["analyze", "--help"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("Examples:"));
+}
