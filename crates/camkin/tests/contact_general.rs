@@ -31,7 +31,7 @@ fn at_time(b: &BodyState, t: f64) -> BodyState {
 fn touching(
     ca: &dyn Curve,
     cb: &dyn Curve,
-    mut a: BodyState,
+    a: BodyState,
     mut b: BodyState,
     opts: &SearchOptions,
 ) -> (BodyState, BodyState, Pairing) {
@@ -52,7 +52,6 @@ fn touching(
         .normal
         .dot(&(a.velocity_at(p.point_a) - b.velocity_at(p.point_a)));
     b.velocity += vn * p.normal;
-    a.alpha += 0.0;
     (a, b, p)
 }
 

@@ -130,3 +130,42 @@ fn jerk_is_absent_exactly_at_a_spline_node() {
     assert!(s.at_breakpoint);
     assert_eq!(s.jerk, None);
 }
+
+/// With a cam angular acceleration θ̈: q̈ = θ̇² q'' + θ̈ q' (contact method against implicit
+/// differentiation), for every follower type and both directions.
+#[test]
+fn angular_acceleration_for_every_follower() {
+    for dir in [Sense::Ccw, Sense::Cw] {
+        for f in all_followers(Point2::origin()) {
+            let cam =
+                camkin::cam::Cam::from_rpm(paper_profile(false), Point2::origin(), dir, 400.0)
+                    .unwrap()
+                    .with_angular_acceleration(-900.0)
+                    .unwrap();
+            let m = Mechanism::new(cam, f).unwrap();
+            let (w, al): (f64, f64) = (m.cam().speed(), -900.0);
+            for k in 0..36 {
+                let th = (k as f64 * 10.0 + 0.4).to_radians();
+                let s = m.analyze(th).unwrap();
+                let d = m.angle_derivatives(th).unwrap();
+                let scale = (w * w + al.abs()) * m.size();
+                assert_close(
+                    s.acceleration,
+                    w * w * d[1] + al * d[0],
+                    1e-11,
+                    scale,
+                    f.kind_name(),
+                );
+                if let Some(j) = s.jerk {
+                    assert_close(
+                        j,
+                        w * w * w * d[2] + 3.0 * w * al * d[1],
+                        1e-12,
+                        scale * w,
+                        "jerk",
+                    );
+                }
+            }
+        }
+    }
+}

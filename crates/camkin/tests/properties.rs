@@ -130,3 +130,45 @@ proptest! {
         prop_assert!((a.cam_param - b.cam_param).abs() <= 1e-9);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    /// Swapping A and B (a random convex spline cam and an ellipse, both moving) gives the same
+    /// contact point and sliding rates, and the same constraint up to its sign.
+    #[test]
+    fn swapping_a_and_b_gives_same_contact_and_sliding_rates(
+        nodes in cam_nodes(),
+        ang_a in -3.0f64..3.0, ang_b in -3.0f64..3.0,
+        wa in -10.0f64..10.0, wb in -10.0f64..10.0,
+        va in (-3.0f64..3.0, -3.0f64..3.0),
+        bearing in 0.0f64..std::f64::consts::TAU,
+    ) {
+        use camkin::body::{BodyState, Pose};
+        use camkin::contact::{closest_pair, refine, ContactKinematics, SearchOptions, Surface};
+        use camkin::curve::{Curve, Ellipse};
+        let sp = ClosedSpline::new(&nodes).unwrap();
+        let el = Ellipse::new(Point2::new(0.2, -0.1), 1.5, 0.8, 0.3).unwrap();
+        let opts = SearchOptions::for_length_scale(4.0);
+        let a = BodyState { pose: Pose::new(Point2::origin(), ang_a), velocity: Vec2::new(va.0, va.1), omega: wa, acceleration: Vec2::zeros(), alpha: 0.0 };
+        let mut b = BodyState { pose: Pose::new(Point2::new(9.0 * bearing.cos(), 9.0 * bearing.sin()), ang_b), velocity: Vec2::zeros(), omega: wb, acceleration: Vec2::zeros(), alpha: 0.0 };
+        let p = closest_pair(&Surface::new(&sp, &a), &Surface::new(&el, &b), &opts);
+        prop_assume!(p.is_ok());
+        let p = p.unwrap();
+        prop_assume!(sp.curvature(p.u_a) > 0.0);
+        b.pose.origin += p.gap * p.normal; // bring B into contact
+        let p = refine(&Surface::new(&sp, &a), &Surface::new(&el, &b), p.u_a, p.u_b, &opts).unwrap();
+        let vn = p.normal.dot(&(a.velocity_at(p.point_a) - b.velocity_at(p.point_a)));
+        b.velocity += vn * p.normal; // sustained contact
+        let (sa, sb) = (Surface::new(&sp, &a), Surface::new(&el, &b));
+        let kab = ContactKinematics::new(&sa, &sb, &p, 1e-9).unwrap();
+        let q = refine(&sb, &sa, p.u_b, p.u_a, &opts).unwrap();
+        let kba = ContactKinematics::new(&sb, &sa, &q, 1e-9).unwrap();
+        prop_assert!((q.point_a - p.point_b).norm() < 1e-10);
+        let scale = 1.0 + kab.sliding_rate_a.abs() + kab.sliding_rate_b.abs();
+        prop_assert!((kba.sliding_rate_a - kab.sliding_rate_b).abs() < 1e-10 * scale);
+        prop_assert!((kba.sliding_rate_b - kab.sliding_rate_a).abs() < 1e-10 * scale);
+        prop_assert_eq!(kab.sigma, kba.sigma);
+        prop_assert!((kab.gamma.abs() - kba.gamma.abs()).abs() < 1e-9 * (1.0 + kab.gamma.abs()));
+    }
+}

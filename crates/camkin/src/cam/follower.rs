@@ -417,6 +417,31 @@ impl Geometry {
         }
     }
 
+    /// A direction from the contact point `c` into the follower at position `q`: along it the
+    /// cam's outward normal must point at a genuine touch (the cam's back side, or a roller
+    /// touching from inside, fail this).
+    pub(crate) fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
+        match self.kind {
+            Kind::Translating { d, p, e, r, .. } => {
+                if r > 0.0 {
+                    (self.cam_pivot + e * p + q * d) - c
+                } else {
+                    d
+                }
+            }
+            Kind::Oscillating {
+                o, closing, arm, ..
+            } => {
+                let (s, co) = q.sin_cos();
+                match arm {
+                    // cw closing (sign −1): the cam is on the −n side, the arm on the +n side
+                    Arm::Flat { .. } => -closing * Vec2::new(-s, co),
+                    Arm::Roller { l, .. } => (o + l * Vec2::new(co, s)) - c,
+                }
+            }
+        }
+    }
+
     /// The follower body's pose at position `q`.
     pub(crate) fn pose(&self, q: f64) -> Pose {
         match self.kind {

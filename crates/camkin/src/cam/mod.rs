@@ -539,7 +539,13 @@ impl Mechanism {
     /// True when `(u, q)` is the follower's first touch through that cam point (not another
     /// tangency such as a roller touching from inside).
     fn is_first_touch(&self, cam: &BodyState, t: &Touch) -> bool {
-        let x = cam.eval_curve(self.cam.profile.as_ref(), t.u).p;
+        let e = cam.eval_curve(self.cam.profile.as_ref(), t.u);
+        let x = e.p;
+        // the cam's outward normal must face the follower
+        let outward = -self.orientation * e.as_derivs().normal();
+        if !(outward.dot(&self.geometry.toward_follower(x, t.q)) > 0.0) {
+            return false;
+        }
         if self.geometry.is_knife() {
             return true;
         }
@@ -850,5 +856,33 @@ pub(crate) fn bracket_samples(
             v.extend((0..per_piece).map(|j| s + (e - s) * j as f64 / per_piece as f64));
         }
         v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    fn paper() -> Mechanism {
+        crate::reference::paper_mechanism(false)
+    }
+
+    #[test]
+    fn back_side_stationary_point_is_not_a_first_touch() {
+        let m = paper();
+        let cam = m.cam.state(0.0);
+        // Newton from the far side converges to the leftmost point, a stationary point of x·d
+        let back = m.newton(0.0, &cam, 4.5, -2.8).unwrap();
+        assert!(back.q < 0.0);
+        assert!(!m.is_first_touch(&cam, &back));
+        let front = m.newton(0.0, &cam, 0.1, 4.9).unwrap();
+        assert!(m.is_first_touch(&cam, &front));
+        assert!((front.q - 5.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn bracket_samples_cover_each_piece() {
+        let s = bracket_samples(&[0.0, 1.0, 3.0], 4.0, 2, 5);
+        assert_eq!(s, vec![0.0, 0.5, 1.0, 2.0, 3.0, 3.5]);
+        assert_eq!(bracket_samples(&[], 1.0, 2, 4), vec![0.0, 0.25, 0.5, 0.75]);
     }
 }

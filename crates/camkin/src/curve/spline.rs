@@ -146,20 +146,7 @@ mod tests {
     use approx::assert_relative_eq;
 
     fn paper_nodes() -> Vec<Point2> {
-        [
-            (5.0, 0.0),
-            (3.4, 2.8),
-            (0.6, 3.4),
-            (-1.5, 2.6),
-            (-2.8, 1.0),
-            (-2.8, -1.0),
-            (-1.5, -2.6),
-            (0.6, -3.4),
-            (3.4, -2.8),
-        ]
-        .iter()
-        .map(|&(x, y)| Point2::new(x, y))
-        .collect()
+        crate::reference::paper_nodes(false).to_vec()
     }
 
     #[test]

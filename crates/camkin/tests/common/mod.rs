@@ -3,7 +3,7 @@
 #![allow(dead_code)]
 
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
-use camkin::curve::{Circle, ClosedSpline, Curve, Ellipse};
+use camkin::curve::{Circle, Curve, Ellipse};
 use camkin::Point2;
 use std::sync::Arc;
 
@@ -33,39 +33,11 @@ pub fn assert_close(a: f64, b: f64, tol: f64, scale: f64, what: &str) {
     );
 }
 
-/// The paper's nine nodes (cm); `revised` replaces (5, 0) by (4.2, 0).
-pub fn paper_nodes(revised: bool) -> Vec<Point2> {
-    let x0 = if revised { 4.2 } else { 5.0 };
-    [
-        (x0, 0.0),
-        (3.4, 2.8),
-        (0.6, 3.4),
-        (-1.5, 2.6),
-        (-2.8, 1.0),
-        (-2.8, -1.0),
-        (-1.5, -2.6),
-        (0.6, -3.4),
-        (3.4, -2.8),
-    ]
-    .iter()
-    .map(|&(x, y)| Point2::new(x, y))
-    .collect()
-}
+#[allow(unused_imports)]
+pub use camkin::reference::{paper_mechanism, paper_nodes};
 
 pub fn paper_profile(revised: bool) -> Arc<dyn Curve> {
-    Arc::new(ClosedSpline::new(&paper_nodes(revised)).unwrap())
-}
-
-/// The paper's mechanism: flat-faced follower along +x, 1000 rpm ccw, axis at the origin.
-pub fn paper_mechanism(revised: bool) -> Mechanism {
-    let cam = Cam::from_rpm(paper_profile(revised), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
-    Mechanism::new(
-        cam,
-        Follower::TranslatingFlat {
-            direction: camkin::Vec2::x(),
-        },
-    )
-    .unwrap()
+    Arc::new(camkin::reference::paper_profile(revised))
 }
 
 /// Eccentric circular cam: radius `r`, centre at `(e, 0)` in the cam frame.
