@@ -313,7 +313,7 @@ pub fn closest_pair(
             .iter()
             .map(|&ua| {
                 let x = a.eval(ua).p;
-                let ub = project_onto(b, x, 0.0);
+                let ub = project_onto(b, x, 0.0, opts);
                 ((x - b.eval(ub).p).norm_squared(), ua, ub)
             })
             .collect(),
@@ -321,7 +321,7 @@ pub fn closest_pair(
             .iter()
             .map(|&ub| {
                 let x = b.eval(ub).p;
-                let ua = project_onto(a, x, 0.0);
+                let ua = project_onto(a, x, 0.0, opts);
                 ((a.eval(ua).p - x).norm_squared(), ua, ub)
             })
             .collect(),
@@ -359,9 +359,9 @@ pub fn closest_pair(
 
 /// The parameter of the foot of the perpendicular from `x` onto the surface's curve (Newton from
 /// `u0`; exact in one step for a line).
-fn project_onto(s: &Surface<'_>, x: Point2, u0: f64) -> f64 {
+fn project_onto(s: &Surface<'_>, x: Point2, u0: f64, opts: &SearchOptions) -> f64 {
     let mut u = u0;
-    for _ in 0..20 {
+    for _ in 0..opts.max_iterations {
         let e = s.eval(u);
         let d = e.p - x;
         let j = e.d2.dot(&d) + e.d1.norm_squared();
@@ -370,7 +370,7 @@ fn project_onto(s: &Surface<'_>, x: Point2, u0: f64) -> f64 {
             break;
         }
         u += du;
-        if du.abs() * e.d1.norm() < 1e-15 * (1.0 + x.coords.norm()) {
+        if du.abs() * e.d1.norm() <= opts.position_tolerance {
             break;
         }
     }

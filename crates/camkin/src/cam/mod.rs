@@ -165,6 +165,15 @@ pub struct AnalysisOptions {
     pub conformal_tolerance: f64,
     /// The follower is locked when `|cos|` of the pressure angle is below this.
     pub lock_tolerance: f64,
+    /// A refined touch counts as the first touch through its cam point when it agrees with that
+    /// point's first-touch position within this, and a warm-started touch stands unless a sampled
+    /// one is ahead of it by more than this (length).
+    pub touch_tolerance: f64,
+    /// Largest Newton step in the cam parameter, as a fraction of its period.
+    pub max_step_fraction: f64,
+    /// The contact is on a node of a spline profile when its parameter is within this fraction
+    /// of the period of one.
+    pub breakpoint_tolerance: f64,
 }
 
 impl AnalysisOptions {
@@ -178,6 +187,9 @@ impl AnalysisOptions {
             candidates: 4,
             conformal_tolerance: CONFORMAL_TOLERANCE,
             lock_tolerance: 1e-9,
+            touch_tolerance: 1e-10 * size,
+            max_step_fraction: 0.1,
+            breakpoint_tolerance: 1e-9,
         }
     }
 }
@@ -494,6 +506,11 @@ impl Mechanism {
         self.geometry.q_length_scale(self.size)
     }
 
+    /// [`AnalysisOptions::touch_tolerance`] in units of the follower coordinate.
+    pub(crate) fn touch_slack(&self) -> f64 {
+        self.options.touch_tolerance / self.q_scale()
+    }
+
     /// Newton on the tangency residual from `(u, q)`.
     pub(crate) fn newton(
         &self,
@@ -518,7 +535,7 @@ impl Mechanism {
                 });
             }
             // keep a step within a tenth of the period (safeguard against wild steps)
-            let lim = 0.1 * self.period;
+            let lim = self.options.max_step_fraction * self.period;
             let du = du.clamp(-lim, lim);
             u += du;
             q += dq;
@@ -550,14 +567,7 @@ impl Mechanism {
             return true;
         }
         match self.geometry.score(x) {
-            Some((_, q)) => {
-                ((q - t.q) * self.q_scale()).abs()
-                    <= 1e3
-                        * self
-                            .options
-                            .position_tolerance
-                            .max(f64::EPSILON * self.size)
-            }
+            Some((_, q)) => (q - t.q).abs() <= self.touch_slack(),
             None => false,
         }
     }
@@ -679,8 +689,7 @@ impl Mechanism {
             })
         })?;
         // the refined touch can only be later than (or equal to) a sampled one
-        let slack = 1e3 * self.options.position_tolerance / self.q_scale() + 1e-12;
-        if self.oriented(best.q) < best_sample - slack {
+        if self.oriented(best.q) < best_sample - self.touch_slack() {
             return Err(CamError::NoConvergence {
                 angle_deg: theta.to_degrees(),
                 reason: "refined contact is behind a sampled one",
@@ -802,7 +811,7 @@ impl Mechanism {
         let qdd = (k.gamma - known) / coef;
         let body_b = g.body(touch.q, qd, qdd);
         let kappa_conv = self.orientation * k.kappa_a;
-        let tol_u = 1e-9 * self.period;
+        let tol_u = self.options.breakpoint_tolerance * self.period;
         let at_breakpoint = self.breakpoints.iter().any(|&b| {
             let d = (touch.u - b).rem_euclid(self.period);
             d < tol_u || self.period - d < tol_u

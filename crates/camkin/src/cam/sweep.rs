@@ -92,8 +92,7 @@ impl<'a> Sweep<'a> {
                 }
                 // non-convex profile: does another part touch first?
                 let g = m.global_touch(theta, cam)?;
-                let slack = 1e3 * m.options.position_tolerance / m.q_scale() + 1e-12;
-                if m.oriented(g.q) > m.oriented(t.q) + slack {
+                if m.oriented(g.q) > m.oriented(t.q) + m.touch_slack() {
                     Ok((
                         g,
                         Found::Jump {
