@@ -1,8 +1,11 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
 mod analyze;
+mod compare;
 mod mechfile;
 mod output;
+mod plots;
+mod study;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -23,6 +26,16 @@ enum Command {
         after_help = "Examples:\n  camkin analyze                              # the paper's cam, one revolution in 1° steps\n  camkin analyze examples/paper.toml --at 0,45\n  camkin analyze cam.toml --angles 0:90:0.5 -o out.csv\n\nColumns: see the README. Exit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Analyze(analyze::Args),
+    /// The paper's study on its two built-in cams: CSV data, plots (SVG, PNG) and a summary.
+    #[command(
+        after_help = "Examples:\n  camkin paper                       # writes ./camkin-paper/{original,revised}/… and summary.md\n  camkin paper --out study --format json\n  camkin paper --step 0.1 --nodes 100,1000\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Paper(compare::PaperArgs),
+    /// The paper's study on any mechanism: interpolated against exact acceleration.
+    #[command(
+        after_help = "Examples:\n  camkin compare examples/paper-revised.toml\n  camkin compare cam.toml --nodes 360,3600 --step 0.1 --out study --zoom 5:10\n  camkin compare cam.toml --format json   # keys max_rel_error, mean_rel_error by N\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Compare(compare::CompareArgs),
 }
 
 /// A failure and its exit code.
@@ -38,6 +51,8 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Analyze(args) => analyze::run(&args),
+        Command::Paper(args) => compare::run_paper(&args),
+        Command::Compare(args) => compare::run_compare(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -32,6 +32,12 @@ pub fn write_atomic(
                 .map_err(|e| e.into_error())
                 .with_context(|| format!("writing {}", p.display()))?;
             tmp.as_file().sync_all().ok();
+            // a temporary file is private (0600); the result is an ordinary file
+            #[cfg(unix)]
+            {
+                use std::os::unix::fs::PermissionsExt;
+                std::fs::set_permissions(tmp.path(), std::fs::Permissions::from_mode(0o644)).ok();
+            }
             tmp.persist(p)
                 .map_err(|e| e.error)
                 .with_context(|| format!("cannot write {}", p.display()))?;

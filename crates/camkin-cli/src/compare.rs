@@ -1,0 +1,423 @@
+//! `camkin paper` and `camkin compare`: the paper's study, on its cams or on any mechanism.
+
+use crate::output::write_atomic;
+use crate::plots::{self, Chart, Series};
+use crate::study::{self, Study};
+use crate::{load_mechanism, Failure};
+use anyhow::{anyhow, bail, Context, Result};
+use camkin::cam::Mechanism;
+use serde_json::{json, Map, Value};
+use std::path::{Path, PathBuf};
+
+/// Format of the summary printed on stdout.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// a readable table (markdown)
+    Table,
+    /// comma-separated values
+    Csv,
+    /// one JSON object
+    Json,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct PaperArgs {
+    /// Directory for the CSV data, plots and summary.
+    #[arg(long, value_name = "DIR", default_value = "camkin-paper")]
+    pub out: PathBuf,
+    /// Grid on which the errors are evaluated, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 0.05)]
+    pub step: f64,
+    /// Nodal points of the interpolation method, comma-separated.
+    #[arg(long, value_name = "N1,N2,...", default_value = "100,1000,10000")]
+    pub nodes: String,
+    /// Format of the summary on stdout.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct CompareArgs {
+    /// Mechanism file (TOML).
+    pub mechanism: PathBuf,
+    /// Nodal points of the interpolation method, comma-separated.
+    #[arg(long, value_name = "N1,N2,...", default_value = "100,1000,10000")]
+    pub nodes: String,
+    /// Grid on which the errors are evaluated, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 0.05)]
+    pub step: f64,
+    /// Directory for CSV data and plots (none are written without it).
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Zoomed error plot over START:STOP degrees (with --out).
+    #[arg(long, value_name = "START:STOP")]
+    pub zoom: Option<String>,
+    /// Format of the summary on stdout.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
+
+/// Parses and checks `--nodes`.
+pub fn parse_nodes(s: &str) -> Result<Vec<usize>> {
+    let v = s
+        .split(',')
+        .map(|t| {
+            t.trim()
+                .parse::<usize>()
+                .map_err(|_| anyhow!("--nodes: {t:?} is not a whole number"))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    for &n in &v {
+        if !(3..=1_000_000).contains(&n) {
+            bail!("--nodes: {n} is out of range (3 to 1000000)");
+        }
+    }
+    Ok(v)
+}
+
+/// Checks `--step`: a positive divisor of the revolution small enough to be useful.
+pub fn check_step(step: f64) -> Result<f64> {
+    if !(step.is_finite() && step > 0.0 && step <= 90.0) {
+        bail!("--step: {step} must be a number of degrees in (0, 90]");
+    }
+    let n = 360.0 / step;
+    if n > 10_000_000.0 {
+        bail!("--step: {step} gives more than 10000000 angles");
+    }
+    if (n - n.round()).abs() > 1e-9 * n {
+        bail!("--step: {step} does not divide 360°");
+    }
+    Ok(step)
+}
+
+fn parse_zoom(s: &str) -> Result<(f64, f64)> {
+    let p: Vec<&str> = s.split(':').collect();
+    let num = |t: &str| t.trim().parse::<f64>().ok().filter(|v| v.is_finite());
+    match (
+        p.len(),
+        p.first().and_then(|t| num(t)),
+        p.get(1).and_then(|t| num(t)),
+    ) {
+        (2, Some(a), Some(b)) if a < b => Ok((a, b)),
+        _ => bail!("--zoom: {s:?} is not START:STOP with START < STOP (degrees)"),
+    }
+}
+
+/// Units of the follower coordinate, for labels.
+struct Units {
+    pos: String,
+    acc: String,
+}
+
+fn units(mech: &Mechanism, length: &str) -> Units {
+    if mech.follower().is_oscillating() {
+        Units {
+            pos: "rad".into(),
+            acc: "rad/s²".into(),
+        }
+    } else {
+        Units {
+            pos: length.into(),
+            acc: format!("{length}/s²"),
+        }
+    }
+}
+
+/// Writes the study's CSV files and plots into `dir`.
+fn write_files(
+    study: &Study,
+    mech: &Mechanism,
+    dir: &Path,
+    title: &str,
+    length: &str,
+    zoom: Option<(f64, f64)>,
+) -> Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let u = units(mech, length);
+    let mut written = Vec::new();
+    let p = dir.join("displacement.csv");
+    write_atomic(Some(&p), |w| {
+        writeln!(w, "angle_deg,position,velocity,acceleration,jerk")?;
+        for (a, s) in study.grid_deg.iter().zip(&study.exact) {
+            writeln!(
+                w,
+                "{a},{},{},{},{}",
+                s.position,
+                s.velocity,
+                s.acceleration,
+                s.jerk.map(|j| j.to_string()).unwrap_or_default()
+            )?;
+        }
+        Ok(())
+    })?;
+    written.push(p);
+    let p = dir.join("acceleration.csv");
+    write_atomic(Some(&p), |w| {
+        write!(w, "angle_deg,contact_method")?;
+        for r in &study.runs {
+            write!(w, ",interpolated_{}", r.nodes)?;
+        }
+        writeln!(w)?;
+        for (k, (a, s)) in study.grid_deg.iter().zip(&study.exact).enumerate() {
+            write!(w, "{a},{}", s.acceleration)?;
+            for r in &study.runs {
+                write!(w, ",{}", r.acceleration[k])?;
+            }
+            writeln!(w)?;
+        }
+        Ok(())
+    })?;
+    written.push(p);
+    let p = dir.join("relative_error.csv");
+    write_atomic(Some(&p), |w| {
+        write!(w, "angle_deg")?;
+        for r in &study.runs {
+            write!(w, ",n_{}", r.nodes)?;
+        }
+        writeln!(w)?;
+        for (k, a) in study.grid_deg.iter().enumerate() {
+            write!(w, "{a}")?;
+            for r in &study.runs {
+                write!(w, ",{}", r.rel_error[k])?;
+            }
+            writeln!(w)?;
+        }
+        Ok(())
+    })?;
+    written.push(p);
+
+    let xy = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+        study
+            .grid_deg
+            .iter()
+            .enumerate()
+            .map(|(k, &a)| (a, f(k)))
+            .collect()
+    };
+    let displacement = Chart {
+        title: format!("{title}: follower displacement"),
+        x_label: "cam angle (°)".into(),
+        y_label: format!("displacement ({})", u.pos),
+        series: vec![Series {
+            name: "displacement".into(),
+            points: xy(&|k| study.exact[k].position),
+            dashed: false,
+        }],
+        log_y: false,
+        x_range: Some((0.0, 360.0)),
+    };
+    written.extend(plots::save(&displacement, &dir.join("displacement"))?);
+    // the paper compares with 1000 nodal points; otherwise the N closest to it
+    if let Some(r) = study.runs.iter().min_by_key(|r| r.nodes.abs_diff(1000)) {
+        let acc = Chart {
+            title: format!(
+                "{title}: acceleration, contact method and interpolation (N = {})",
+                r.nodes
+            ),
+            x_label: "cam angle (°)".into(),
+            y_label: format!("acceleration ({})", u.acc),
+            series: vec![
+                Series {
+                    name: "contact method (exact)".into(),
+                    points: xy(&|k| study.exact[k].acceleration),
+                    dashed: false,
+                },
+                Series {
+                    name: format!("interpolated, N = {}", r.nodes),
+                    points: xy(&|k| r.acceleration[k]),
+                    dashed: true,
+                },
+            ],
+            log_y: false,
+            x_range: Some((0.0, 360.0)),
+        };
+        written.extend(plots::save(&acc, &dir.join("acceleration"))?);
+    }
+    let mut err = Chart {
+        title: format!("{title}: relative error of the interpolated acceleration"),
+        x_label: "cam angle (°)".into(),
+        y_label: "|a_N − a| / max|a|".into(),
+        series: study
+            .runs
+            .iter()
+            .map(|r| Series {
+                name: format!("N = {}", r.nodes),
+                points: xy(&|k| r.rel_error[k]),
+                dashed: false,
+            })
+            .collect(),
+        log_y: true,
+        x_range: Some((0.0, 360.0)),
+    };
+    written.extend(plots::save(&err, &dir.join("relative_error"))?);
+    if let Some((a, b)) = zoom {
+        err.title = format!("{title}: relative error, {a}°–{b}°");
+        err.x_range = Some((a, b));
+        written.extend(plots::save(&err, &dir.join("relative_error_zoom"))?);
+    }
+    Ok(written)
+}
+
+fn fmt_time(s: f64) -> String {
+    if s < 1e-6 {
+        format!("{:.0} ns", s * 1e9)
+    } else if s < 1e-3 {
+        format!("{:.1} µs", s * 1e6)
+    } else if s < 1.0 {
+        format!("{:.2} ms", s * 1e3)
+    } else {
+        format!("{s:.2} s")
+    }
+}
+
+/// The summary as a markdown section.
+fn table(study: &Study, title: &str, acc_unit: &str) -> String {
+    let mut t = format!("## {title}\n\n");
+    t += &format!(
+        "Contact method: max |a| = {:.6} {acc_unit} over the revolution; {} angles at {}° in {} ({} per angle); one cold query {}.\n\n",
+        study.max_abs_acceleration,
+        study.grid_deg.len(),
+        study.grid_deg.get(1).copied().unwrap_or(360.0),
+        fmt_time(study.contact_total_seconds),
+        fmt_time(study.contact_total_seconds / study.grid_deg.len() as f64),
+        fmt_time(study.contact_single_seconds),
+    );
+    for c in &study.checks {
+        t += &format!(
+            "Independent check, {}: max |difference| / max |a| = {:.1e}\n",
+            c.name, c.max_rel_diff
+        );
+    }
+    t += "\n| N | max relative error | mean relative error | whole study | one angle | one angle vs contact method |\n|---:|---:|---:|---:|---:|---:|\n";
+    for r in &study.runs {
+        t += &format!(
+            "| {} | {:.3e} | {:.3e} | {} | {} | {:.0}× |\n",
+            r.nodes,
+            r.max_rel_error,
+            r.mean_rel_error,
+            fmt_time(r.total_seconds),
+            fmt_time(r.single_seconds),
+            r.single_seconds / study.contact_single_seconds
+        );
+    }
+    t
+}
+
+fn csv_rows(study: &Study, cam: &str, w: &mut String) {
+    for r in &study.runs {
+        w.push_str(&format!(
+            "{cam},{},{},{},{},{},{},{}\n",
+            r.nodes,
+            r.max_rel_error,
+            r.mean_rel_error,
+            r.total_seconds,
+            r.single_seconds,
+            study.contact_total_seconds,
+            study.contact_single_seconds
+        ));
+    }
+}
+
+const CSV_HEADER: &str = "cam,nodes,max_rel_error,mean_rel_error,interp_total_s,interp_single_s,contact_total_s,contact_single_s\n";
+
+/// The summary as JSON: `max_rel_error` and `mean_rel_error` map every N (as a string) to its value.
+fn json_summary(study: &Study) -> Value {
+    let by_n = |f: &dyn Fn(&study::NodeRun) -> f64| -> Value {
+        let mut m = Map::new();
+        for r in &study.runs {
+            m.insert(r.nodes.to_string(), json!(f(r)));
+        }
+        Value::Object(m)
+    };
+    json!({
+        "nodes": study.runs.iter().map(|r| r.nodes).collect::<Vec<_>>(),
+        "step_deg": study.grid_deg.get(1).copied().unwrap_or(360.0),
+        "angles": study.grid_deg.len(),
+        "max_abs_acceleration": study.max_abs_acceleration,
+        "max_rel_error": by_n(&|r| r.max_rel_error),
+        "mean_rel_error": by_n(&|r| r.mean_rel_error),
+        "interp_total_seconds": by_n(&|r| r.total_seconds),
+        "interp_single_seconds": by_n(&|r| r.single_seconds),
+        "contact_total_seconds": study.contact_total_seconds,
+        "contact_single_seconds": study.contact_single_seconds,
+        "checks": study.checks.iter().map(|c| json!({"name": c.name, "max_rel_diff": c.max_rel_diff})).collect::<Vec<_>>(),
+    })
+}
+
+pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
+    let nodes = parse_nodes(&args.nodes).map_err(Failure::Input)?;
+    let step = check_step(args.step).map_err(Failure::Input)?;
+    let mut md =
+        String::from("# The paper's study: contact method against interpolated displacement\n\n");
+    let mut csv = String::from(CSV_HEADER);
+    let mut js = Map::new();
+    for (key, revised, title) in [
+        ("original", false, "Original cam"),
+        ("revised", true, "Revised cam"),
+    ] {
+        let mech = camkin::reference::paper_mechanism(revised);
+        let study = study::run(&mech, &nodes, step, title).map_err(Failure::Internal)?;
+        let zoom = if revised { Some((5.0, 10.0)) } else { None };
+        write_files(&study, &mech, &args.out.join(key), title, "cm", zoom)
+            .map_err(Failure::Input)?;
+        md += &table(&study, title, "cm/s²");
+        md.push('\n');
+        csv_rows(&study, key, &mut csv);
+        js.insert(key.to_string(), json_summary(&study));
+    }
+    write_atomic(Some(&args.out.join("summary.md")), |w| {
+        Ok(w.write_all(md.as_bytes())?)
+    })
+    .map_err(Failure::Input)?;
+    print_summary(args.format, &md, &csv, &Value::Object(js))?;
+    eprintln!("camkin: wrote {}", args.out.display());
+    Ok(())
+}
+
+pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
+    let nodes = parse_nodes(&args.nodes).map_err(Failure::Input)?;
+    let step = check_step(args.step).map_err(Failure::Input)?;
+    let zoom = args
+        .zoom
+        .as_deref()
+        .map(parse_zoom)
+        .transpose()
+        .map_err(Failure::Input)?;
+    let mech = load_mechanism(Some(&args.mechanism))?;
+    let title = args
+        .mechanism
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_string())
+        .unwrap_or_else(|| "mechanism".into());
+    let study = study::run(&mech, &nodes, step, &title).map_err(Failure::Input)?;
+    if let Some(dir) = &args.out {
+        write_files(&study, &mech, dir, &title, "length", zoom).map_err(Failure::Input)?;
+    }
+    let acc = units(&mech, "length").acc;
+    let md = table(&study, &title, &acc);
+    let mut csv = String::from(CSV_HEADER);
+    csv_rows(&study, &title, &mut csv);
+    let mut js = json_summary(&study);
+    if let Value::Object(m) = &mut js {
+        m.insert(
+            "mechanism".into(),
+            json!(args.mechanism.display().to_string()),
+        );
+    }
+    if let Some(dir) = &args.out {
+        write_atomic(Some(&dir.join("summary.md")), |w| {
+            Ok(w.write_all(md.as_bytes())?)
+        })
+        .map_err(Failure::Input)?;
+    }
+    print_summary(args.format, &md, &csv, &js)
+}
+
+fn print_summary(format: Format, md: &str, csv: &str, js: &Value) -> Result<(), Failure> {
+    let text = match format {
+        Format::Table => md.to_string(),
+        Format::Csv => csv.to_string(),
+        Format::Json => format!("{js}\n"),
+    };
+    write_atomic(None, |w| Ok(w.write_all(text.as_bytes())?)).map_err(Failure::Internal)
+}

@@ -1,0 +1,156 @@
+//! The paper's study (section 3): exact acceleration by the contact method against the
+//! acceleration of a periodic cubic spline through N sampled positions, over one revolution.
+
+use anyhow::{anyhow, Result};
+use camkin::cam::{Follower, FollowerState, Mechanism};
+use camkin::interp::{max_and_mean, relative_errors, Interpolated};
+use indicatif::{ProgressBar, ProgressStyle};
+use std::time::Instant;
+
+/// One interpolation run of the study.
+#[derive(Debug)]
+pub struct NodeRun {
+    /// nodal points per revolution
+    pub nodes: usize,
+    /// interpolated acceleration on the grid
+    pub acceleration: Vec<f64>,
+    /// relative error on the grid, |a_N − a| / max|a|
+    pub rel_error: Vec<f64>,
+    pub max_rel_error: f64,
+    pub mean_rel_error: f64,
+    /// wall time: N position solves, spline, evaluation on the whole grid (s)
+    pub total_seconds: f64,
+    /// wall time to answer one angle: N position solves, spline, one evaluation (s)
+    pub single_seconds: f64,
+}
+
+/// The independent check of the contact method.
+#[derive(Debug, Clone, Copy)]
+pub struct Check {
+    /// what was compared
+    pub name: &'static str,
+    /// max |a − a_check| / max |a| over the grid
+    pub max_rel_diff: f64,
+}
+
+#[derive(Debug)]
+pub struct Study {
+    pub grid_deg: Vec<f64>,
+    pub exact: Vec<FollowerState>,
+    pub max_abs_acceleration: f64,
+    pub runs: Vec<NodeRun>,
+    /// contact method on the whole grid (s)
+    pub contact_total_seconds: f64,
+    /// contact method, one cold query at an arbitrary angle (median, s)
+    pub contact_single_seconds: f64,
+    pub checks: Vec<Check>,
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn progress(len: u64, msg: &str) -> ProgressBar {
+    let pb = ProgressBar::new(len);
+    if let Ok(style) = ProgressStyle::with_template("{msg:>28} [{bar:30}] {pos}/{len} ({elapsed})")
+    {
+        pb.set_style(style.progress_chars("=> "));
+    }
+    pb.set_message(msg.to_string());
+    pb
+}
+
+/// Runs the study on a grid of `step_deg` over one revolution for each of `nodes`.
+pub fn run(mech: &Mechanism, nodes: &[usize], step_deg: f64, label: &str) -> Result<Study> {
+    let count = (360.0 / step_deg).round() as usize;
+    let grid_deg: Vec<f64> = (0..count).map(|k| k as f64 * step_deg).collect();
+    let thetas: Vec<f64> = grid_deg.iter().map(|d| d.to_radians()).collect();
+    let pb = progress(2 + nodes.len() as u64, label);
+
+    let t0 = Instant::now();
+    let exact = mech
+        .analyze_all(&thetas)
+        .into_iter()
+        .zip(&grid_deg)
+        .map(|(r, a)| r.map_err(|e| anyhow!("contact method at {a}°: {e}")))
+        .collect::<Result<Vec<_>>>()?;
+    let contact_total_seconds = t0.elapsed().as_secs_f64();
+    let contact_single_seconds = median(
+        (0..101)
+            .map(|k| {
+                let th = (k as f64 * 3.567 + 0.1).to_radians();
+                let t = Instant::now();
+                let _ = std::hint::black_box(mech.analyze(th));
+                t.elapsed().as_secs_f64()
+            })
+            .collect(),
+    );
+    pb.inc(1);
+    let a: Vec<f64> = exact.iter().map(|s| s.acceleration).collect();
+    let max_abs_acceleration = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+
+    let mut runs = Vec::with_capacity(nodes.len());
+    for &n in nodes {
+        pb.set_message(format!("{label}: N = {n}"));
+        let t = Instant::now();
+        let it = Interpolated::new(mech, n)?;
+        let acceleration: Vec<f64> = thetas.iter().map(|&th| it.acceleration(th)).collect();
+        let total_seconds = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let one = Interpolated::new(mech, n)?;
+        let _ = std::hint::black_box(one.acceleration(std::f64::consts::FRAC_PI_4));
+        let single_seconds = t.elapsed().as_secs_f64();
+        let rel_error = relative_errors(&a, &acceleration);
+        let (max_rel_error, mean_rel_error) = max_and_mean(&rel_error);
+        runs.push(NodeRun {
+            nodes: n,
+            acceleration,
+            rel_error,
+            max_rel_error,
+            mean_rel_error,
+            total_seconds,
+            single_seconds,
+        });
+        pb.inc(1);
+    }
+
+    // independent checks of the contact method
+    let mut checks = Vec::new();
+    let w = mech.cam().speed();
+    let al = mech.cam().angular_acceleration();
+    if matches!(mech.follower(), Follower::TranslatingFlat { .. }) && mech.is_convex() {
+        let d = exact
+            .iter()
+            .map(|s| {
+                (s.acceleration
+                    - (w * w * (s.radius_of_curvature - s.position) + al * s.velocity / w))
+                    .abs()
+            })
+            .fold(0.0f64, f64::max);
+        checks.push(Check {
+            name: "s̈ = ω²(ρ − s)",
+            max_rel_diff: d / max_abs_acceleration,
+        });
+    }
+    let mut d = 0.0f64;
+    for (s, &th) in exact.iter().zip(&thetas) {
+        let q = mech.angle_derivatives(th)?;
+        d = d.max((s.acceleration - (w * w * q[1] + al * q[0])).abs());
+    }
+    checks.push(Check {
+        name: "implicit differentiation of the first touch",
+        max_rel_diff: d / max_abs_acceleration,
+    });
+    pb.inc(1);
+    pb.finish_and_clear();
+    Ok(Study {
+        grid_deg,
+        exact,
+        max_abs_acceleration,
+        runs,
+        contact_total_seconds,
+        contact_single_seconds,
+        checks,
+    })
+}

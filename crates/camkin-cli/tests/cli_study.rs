@@ -1,0 +1,219 @@
+//! `camkin paper` and `camkin compare`: files produced and well formed, summary contents, JSON
+//! keys, bad input.
+#![allow(clippy::unwrap_used)]
+use assert_cmd::Command;
+use predicates::prelude::*;
+use std::path::{Path, PathBuf};
+
+fn camkin() -> Command {
+    Command::cargo_bin("camkin").unwrap()
+}
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+/// A PNG of the expected size (signature and IHDR).
+fn assert_png(p: &Path) {
+    let b = std::fs::read(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+    assert_eq!(&b[..8], b"\x89PNG\r\n\x1a\n", "{}", p.display());
+    let w = u32::from_be_bytes(b[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(b[20..24].try_into().unwrap());
+    assert_eq!((w, h), (1000, 600), "{}", p.display());
+}
+
+/// An SVG document with a title text and at least one drawn line.
+fn assert_svg(p: &Path, title: &str) {
+    let s = std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+    assert!(s.trim_start().starts_with("<svg"), "{}", p.display());
+    assert!(s.trim_end().ends_with("</svg>"), "{}", p.display());
+    assert!(s.contains(title), "{}: no {title:?}", p.display());
+    assert!(
+        s.contains("<polyline") || s.contains("<path"),
+        "{}",
+        p.display()
+    );
+    assert_eq!(s.matches("<text").count(), s.matches("</text>").count());
+}
+
+fn csv(p: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(p).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse().unwrap_or(f64::NAN))
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn paper_writes_data_plots_and_summary() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("study");
+    let assert = camkin()
+        .args(["paper", "--out"])
+        .arg(&out)
+        .assert()
+        .success();
+    let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
+    assert!(stdout.contains("| 10000 |"), "{stdout}");
+    assert!(stdout.contains("ω²(ρ − s)"));
+    for cam in ["original", "revised"] {
+        let d = out.join(cam);
+        for base in ["displacement", "acceleration", "relative_error"] {
+            assert_png(&d.join(format!("{base}.png")));
+            assert_svg(&d.join(format!("{base}.svg")), "cam angle");
+        }
+        let (h, rows) = csv(&d.join("displacement.csv"));
+        assert_eq!(
+            h[..4],
+            ["angle_deg", "position", "velocity", "acceleration"]
+        );
+        assert_eq!(rows.len(), 7200); // 0.05° grid
+        let (h, rows) = csv(&d.join("relative_error.csv"));
+        assert_eq!(h, ["angle_deg", "n_100", "n_1000", "n_10000"]);
+        // the error falls with N
+        let max = |c: usize| rows.iter().map(|r| r[c]).fold(0.0, f64::max);
+        assert!(
+            max(1) > 5.0 * max(2) && max(2) > 5.0 * max(3),
+            "{cam}: {} {} {}",
+            max(1),
+            max(2),
+            max(3)
+        );
+        let (h, _) = csv(&d.join("acceleration.csv"));
+        assert_eq!(
+            h,
+            [
+                "angle_deg",
+                "contact_method",
+                "interpolated_100",
+                "interpolated_1000",
+                "interpolated_10000"
+            ]
+        );
+    }
+    assert_png(&out.join("revised/relative_error_zoom.png"));
+    assert_svg(&out.join("revised/relative_error_zoom.svg"), "5°–10°");
+    let original = csv(&out.join("original/displacement.csv")).1;
+    assert_eq!(original[0][1], 5.0); // s(0) = 5 cm
+    assert!((original[900][1] - 4.448456).abs() < 5e-7); // 45°
+    assert!(std::fs::read_to_string(out.join("summary.md"))
+        .unwrap()
+        .contains("Revised cam"));
+}
+
+#[test]
+fn paper_json_summary() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = camkin()
+        .args(["paper", "--step", "1", "--format", "json", "--out"])
+        .arg(dir.path())
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    for cam in ["original", "revised"] {
+        for n in ["100", "1000", "10000"] {
+            assert!(v[cam]["max_rel_error"][n].as_f64().unwrap() > 0.0);
+            assert!(v[cam]["mean_rel_error"][n].as_f64().unwrap() > 0.0);
+        }
+    }
+}
+
+#[test]
+fn compare_json_has_errors_keyed_by_n() {
+    let out = camkin()
+        .args(["compare"])
+        .arg(examples().join("paper-revised.toml"))
+        .args(["--nodes", "100,1000", "--step", "0.5", "--format", "json"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let m100 = v["max_rel_error"]["100"].as_f64().unwrap();
+    let m1000 = v["max_rel_error"]["1000"].as_f64().unwrap();
+    assert!(m100 > m1000 && m1000 > 0.0);
+    assert!(v["mean_rel_error"]["1000"].as_f64().unwrap() < m1000);
+}
+
+#[test]
+fn compare_every_example_and_csv_format() {
+    for name in [
+        "eccentric-roller",
+        "ellipse-knife",
+        "oscillating-flat",
+        "oscillating-roller",
+    ] {
+        let out = camkin()
+            .arg("compare")
+            .arg(examples().join(format!("{name}.toml")))
+            .args(["--nodes", "50,500", "--step", "1", "--format", "csv"])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let text = String::from_utf8(out).unwrap();
+        assert!(text.starts_with("cam,nodes,max_rel_error"), "{text}");
+        assert_eq!(text.lines().count(), 3, "{name}");
+    }
+}
+
+#[test]
+fn compare_writes_plots_with_zoom() {
+    let dir = tempfile::tempdir().unwrap();
+    camkin()
+        .arg("compare")
+        .arg(examples().join("oscillating-roller.toml"))
+        .args(["--nodes", "100", "--step", "1", "--zoom", "5:10", "--out"])
+        .arg(dir.path())
+        .assert()
+        .success();
+    for base in [
+        "displacement",
+        "acceleration",
+        "relative_error",
+        "relative_error_zoom",
+    ] {
+        assert_png(&dir.path().join(format!("{base}.png")));
+        assert_svg(&dir.path().join(format!("{base}.svg")), "cam angle");
+    }
+    assert!(std::fs::read_to_string(dir.path().join("displacement.svg"))
+        .unwrap()
+        .contains("rad"));
+}
+
+#[test]
+fn study_bad_input_exits_2() {
+    let paper = examples().join("paper.toml");
+    for (args, needle) in [
+        (vec!["--nodes", "2"], "--nodes"),
+        (vec!["--nodes", "10,x"], "--nodes"),
+        (vec!["--step", "0"], "--step"),
+        (vec!["--step", "0.7"], "divide"),
+        (vec!["--zoom", "10:5"], "--zoom"),
+    ] {
+        camkin()
+            .arg("compare")
+            .arg(&paper)
+            .args(&args)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(needle));
+    }
+    camkin()
+        .args(["compare", "no-such.toml"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("cannot read"));
+    camkin().args(["paper", "--step", "-1"]).assert().code(2);
+}
