@@ -4,7 +4,9 @@ mod analyze;
 mod compare;
 mod mechfile;
 mod output;
+mod plot;
 mod plots;
+mod scene;
 mod study;
 
 use clap::{Parser, Subcommand};
@@ -36,6 +38,11 @@ enum Command {
         after_help = "Examples:\n  camkin compare examples/paper-revised.toml\n  camkin compare cam.toml --nodes 360,3600 --step 0.1 --out study --zoom 5:10\n  camkin compare cam.toml --format json   # keys max_rel_error, mean_rel_error by N\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Compare(compare::CompareArgs),
+    /// Kinematics over a revolution, drawings of the mechanism and an animation (SVG, PNG).
+    #[command(
+        after_help = "Examples:\n  camkin plot                                  # the paper's cam into ./camkin-plot/\n  camkin plot examples/oscillating-roller.toml --out fig --at 0,45,90\n  camkin plot cam.toml --step 0.1 --frames 180\n\nWrites kinematics.{svg,png}, drawing_<angle>.{svg,png} and animation.svg.\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Plot(plot::PlotArgs),
 }
 
 /// A failure and its exit code.
@@ -53,6 +60,7 @@ fn main() -> ExitCode {
         Command::Analyze(args) => analyze::run(&args),
         Command::Paper(args) => compare::run_paper(&args),
         Command::Compare(args) => compare::run_compare(&args),
+        Command::Plot(args) => plot::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -105,6 +105,24 @@ pub fn write_png(
     result
 }
 
+/// A tick label: a few significant digits, no rounding noise.
+pub fn tick(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if !(1e-3..1e6).contains(&a) {
+        return format!("{v:.2e}");
+    }
+    let t = format!("{v:.4}");
+    let t = t.trim_end_matches('0').trim_end_matches('.');
+    if t == "-0" {
+        "0".into()
+    } else {
+        t.to_string()
+    }
+}
+
 fn bounds(chart: &Chart) -> ((f64, f64), (f64, f64)) {
     let all = chart.series.iter().flat_map(|s| s.points.iter());
     let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
@@ -122,6 +140,13 @@ fn bounds(chart: &Chart) -> ((f64, f64), (f64, f64)) {
     }
     if !(y0 <= y1) {
         (y0, y1) = (0.0, 1.0);
+    }
+    // a constant (or rounding-noise) series gets a span, not a zoom into its noise
+    if !chart.log_y && y1 - y0 <= 1e-9 * (1.0 + y0.abs().max(y1.abs())) {
+        let m = 0.5 * (y0 + y1);
+        let m = if m.abs() < 1e-9 { 0.0 } else { m };
+        let h = (0.1 * m.abs()).max(1.0);
+        (y0, y1) = (m - h, m + h);
     }
     ((x0, x1), (y0, y1))
 }
@@ -159,7 +184,7 @@ where
             ch,
             chart,
             |y| if y.is_finite() { Some(y) } else { None },
-            |v| format!("{v}"),
+            |v| tick(*v),
         )
     }
 }
@@ -182,6 +207,7 @@ where
         .label_style(("sans-serif", 15))
         .axis_desc_style(("sans-serif", 17))
         .y_label_formatter(&y_fmt)
+        .x_label_formatter(&|v| tick(*v))
         .light_line_style(RGBColor(235, 235, 235))
         .draw()
         .map_err(|e| anyhow!("{e}"))?;
@@ -237,4 +263,18 @@ where
             .map_err(|e| anyhow!("{e}"))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tick;
+
+    #[test]
+    fn ticks_have_no_rounding_noise() {
+        assert_eq!(tick(4.2000000000001), "4.2");
+        assert_eq!(tick(-25000.0), "-25000");
+        assert_eq!(tick(0.0), "0");
+        assert_eq!(tick(1e7), "1.00e7");
+        assert_eq!(tick(0.5), "0.5");
+    }
 }

@@ -167,10 +167,18 @@ fn unreachable_follower_rows_carry_the_error() {
 }
 
 #[test]
-fn help_shows_examples() {
+fn help_shows_examples_for_every_subcommand() {
+    for cmd in ["analyze", "paper", "compare", "plot"] {
+        camkin()
+            .args([cmd, "--help"])
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("Examples:"))
+            .stdout(predicate::str::contains("Exit codes"));
+    }
     camkin()
-        .args(["analyze", "--help"])
+        .arg("--help")
         .assert()
         .success()
-        .stdout(predicate::str::contains("Examples:"));
+        .stdout(predicate::str::contains("Exit codes"));
 }

@@ -1,0 +1,297 @@
+//! `camkin plot`: kinematics over a revolution, drawings of the mechanism, an animation.
+
+use crate::plots::{self, Chart, Series};
+use crate::scene::{self, Shape};
+use crate::{load_mechanism, Failure};
+use anyhow::{anyhow, bail, Context, Result};
+use camkin::cam::{FollowerState, Mechanism};
+use camkin::Point2;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, clap::Args)]
+pub struct PlotArgs {
+    /// Mechanism file (TOML); without it, the paper's built-in cam.
+    pub mechanism: Option<PathBuf>,
+    /// Directory for the figures.
+    #[arg(long, value_name = "DIR", default_value = "camkin-plot")]
+    pub out: PathBuf,
+    /// Cam angles (degrees) at which to draw the mechanism, comma-separated.
+    #[arg(
+        long,
+        value_name = "A1,A2,...",
+        default_value = "0,90,180,270",
+        allow_hyphen_values = true
+    )]
+    pub at: String,
+    /// Angle step of the kinematic curves, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 0.25)]
+    pub step: f64,
+    /// Frames of the animation over one revolution.
+    #[arg(long, value_name = "N", default_value_t = 72)]
+    pub frames: usize,
+}
+
+fn rgb(c: scene::Rgb) -> RGBColor {
+    RGBColor(c.0, c.1, c.2)
+}
+
+/// Draws shapes with equal axis scales in the box `(lo, hi)`.
+fn draw_scene<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    shapes: &[Shape],
+    (lo, hi): (Point2, Point2),
+    title: &str,
+) -> Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
+    root.fill(&WHITE).map_err(e)?;
+    let area = root.titled(title, ("sans-serif", 20)).map_err(e)?;
+    // equal scales: grow the box to the drawing area's aspect
+    let (w, h) = area.dim_in_pixel();
+    let (bw, bh) = (hi.x - lo.x, hi.y - lo.y);
+    let k = (bw / f64::from(w.max(1))).max(bh / f64::from(h.max(1)));
+    let (cx, cy) = (0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
+    let (hw, hh) = (0.5 * k * f64::from(w), 0.5 * k * f64::from(h));
+    let mut ch = ChartBuilder::on(&area)
+        .build_cartesian_2d((cx - hw)..(cx + hw), (cy - hh)..(cy + hh))
+        .map_err(e)?;
+    for s in shapes {
+        match s {
+            Shape::Polyline {
+                pts,
+                color,
+                width,
+                closed,
+            } => {
+                let mut v: Vec<(f64, f64)> = pts.iter().map(|p| (p.x, p.y)).collect();
+                if *closed {
+                    if let Some(&f) = v.first() {
+                        v.push(f);
+                    }
+                }
+                ch.draw_series(std::iter::once(PathElement::new(
+                    v,
+                    rgb(*color).stroke_width(*width),
+                )))
+                .map_err(e)?;
+            }
+            Shape::Circle { c, r, color, width } => {
+                let v: Vec<(f64, f64)> = (0..=96)
+                    .map(|k| {
+                        let a = std::f64::consts::TAU * k as f64 / 96.0;
+                        (c.x + r * a.cos(), c.y + r * a.sin())
+                    })
+                    .collect();
+                ch.draw_series(std::iter::once(PathElement::new(
+                    v,
+                    rgb(*color).stroke_width(*width),
+                )))
+                .map_err(e)?;
+            }
+            Shape::Dot { p, color, px } => {
+                ch.draw_series(std::iter::once(Circle::new(
+                    (p.x, p.y),
+                    *px,
+                    rgb(*color).filled(),
+                )))
+                .map_err(e)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Charts in a grid of two columns.
+fn draw_panels<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, charts: &[Chart]) -> Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
+    for (area, c) in root
+        .split_evenly((charts.len().div_ceil(2), 2))
+        .into_iter()
+        .zip(charts)
+    {
+        plots::draw(area, c)?;
+    }
+    Ok(())
+}
+
+fn parse_angles(s: &str) -> Result<Vec<f64>> {
+    let v = s
+        .split(',')
+        .map(|t| {
+            t.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| anyhow!("--at: {t:?} is not a number of degrees"))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    if v.len() > 360 {
+        bail!("--at: at most 360 drawings");
+    }
+    Ok(v)
+}
+
+fn kinematics(
+    mech: &Mechanism,
+    grid: &[f64],
+    states: &[Option<FollowerState>],
+    dir: &Path,
+) -> Result<Vec<PathBuf>> {
+    let osc = mech.follower().is_oscillating();
+    let (pu, vu, au, ju) = if osc {
+        ("rad", "rad/s", "rad/s²", "rad/s³")
+    } else {
+        ("length", "length/s", "length/s²", "length/s³")
+    };
+    let series = |f: &dyn Fn(&FollowerState) -> Option<f64>| -> Vec<(f64, f64)> {
+        grid.iter()
+            .zip(states)
+            .map(|(&a, s)| (a, s.as_ref().and_then(f).unwrap_or(f64::NAN)))
+            .collect()
+    };
+    let chart = |title: &str, unit: &str, pts: Vec<(f64, f64)>| Chart {
+        title: title.into(),
+        x_label: "cam angle (°)".into(),
+        y_label: unit.into(),
+        series: vec![Series {
+            name: title.into(),
+            points: pts,
+            dashed: false,
+        }],
+        log_y: false,
+        x_range: Some((0.0, 360.0)),
+    };
+    // the jerk jumps where the contact passes a node of a spline profile: break the line there
+    let bps = mech.cam().profile().breakpoints();
+    let piece = |s: &FollowerState| bps.partition_point(|&b| b <= s.cam_param);
+    let mut jerk = Vec::with_capacity(grid.len());
+    for (k, (&a, s)) in grid.iter().zip(states).enumerate() {
+        let prev = if k > 0 { states[k - 1].as_ref() } else { None };
+        if let (Some(p), Some(c)) = (prev, s.as_ref()) {
+            if piece(p) != piece(c) {
+                jerk.push((a, f64::NAN));
+            }
+        }
+        jerk.push((a, s.as_ref().and_then(|s| s.jerk).unwrap_or(f64::NAN)));
+    }
+    let charts = vec![
+        chart("displacement", pu, series(&|s| Some(s.position))),
+        chart("velocity", vu, series(&|s| Some(s.velocity))),
+        chart("acceleration", au, series(&|s| Some(s.acceleration))),
+        chart(
+            "jerk (breaks where the contact passes a spline node)",
+            ju,
+            jerk,
+        ),
+        chart(
+            "pressure angle",
+            "degrees",
+            series(&|s| Some(s.pressure_angle.to_degrees())),
+        ),
+        chart(
+            "cam radius of curvature at contact",
+            "length",
+            series(&|s| Some(s.radius_of_curvature).filter(|r| r.abs() < 1e3 * mech.size())),
+        ),
+    ];
+    let size = (1400, 1300);
+    plots::register_font();
+    let svg = dir.join("kinematics.svg");
+    let png = dir.join("kinematics.png");
+    plots::write_svg(&svg, size, |root| draw_panels(root, &charts))?;
+    plots::write_png(&png, size, |root| draw_panels(root, &charts))?;
+    Ok(vec![svg, png])
+}
+
+pub fn run(args: &PlotArgs) -> Result<(), Failure> {
+    let angles = parse_angles(&args.at).map_err(Failure::Input)?;
+    let step = crate::compare::check_step(args.step).map_err(Failure::Input)?;
+    if !(1..=3600).contains(&args.frames) {
+        return Err(Failure::Input(anyhow!(
+            "--frames: {} must be from 1 to 3600",
+            args.frames
+        )));
+    }
+    let mech = load_mechanism(args.mechanism.as_ref())?;
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("cannot create {}", args.out.display()))
+        .map_err(Failure::Input)?;
+    let n = (360.0 / step).round() as usize;
+    let grid: Vec<f64> = (0..n).map(|k| k as f64 * step).collect();
+    let thetas: Vec<f64> = grid.iter().map(|a| a.to_radians()).collect();
+    let states: Vec<Option<FollowerState>> = mech
+        .analyze_all(&thetas)
+        .into_iter()
+        .map(Result::ok)
+        .collect();
+    let failed = states.iter().filter(|s| s.is_none()).count();
+    if failed == states.len() {
+        return Err(Failure::Input(anyhow!("the follower cannot be analysed at any cam angle (try `camkin analyze` for the reasons)")));
+    }
+    let mut written = kinematics(&mech, &grid, &states, &args.out).map_err(Failure::Internal)?;
+
+    // one box for every drawing and frame, so the scale does not jump
+    let frame_angles: Vec<f64> = (0..args.frames)
+        .map(|k| 360.0 * k as f64 / args.frames as f64)
+        .collect();
+    let mut scenes: Vec<(f64, Vec<Shape>)> = Vec::new();
+    for &a in angles.iter().chain(&frame_angles) {
+        let st = mech.analyze_deg(a).ok();
+        scenes.push((a, scene::scene(&mech, a.to_radians(), st.as_ref())));
+    }
+    let (lo, hi) = scene::bounds(scenes.iter().flat_map(|(_, s)| s.iter()));
+    let pad = 0.05 * (hi - lo).norm();
+    let bbox = (
+        lo - camkin::Vec2::new(pad, pad),
+        hi + camkin::Vec2::new(pad, pad),
+    );
+    let aspect = (bbox.1.y - bbox.0.y) / (bbox.1.x - bbox.0.x);
+    let size = (
+        800u32,
+        (800.0 * aspect + 40.0).round().clamp(200.0, 2400.0) as u32,
+    );
+    plots::register_font();
+    for (a, shapes) in scenes.iter().take(angles.len()) {
+        let title = format!("cam angle {a}°");
+        let base = args.out.join(format!("drawing_{a}"));
+        let svg = base.with_extension("svg");
+        let png = base.with_extension("png");
+        plots::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
+            .map_err(Failure::Internal)?;
+        plots::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
+            .map_err(Failure::Internal)?;
+        written.extend([svg, png]);
+    }
+    let frames: Vec<Vec<Shape>> = scenes
+        .iter()
+        .skip(angles.len())
+        .map(|(_, s)| s.clone())
+        .collect();
+    let titles: Vec<String> = frame_angles
+        .iter()
+        .map(|a| format!("cam angle {a:.1}° (one revolution in 6 s)"))
+        .collect();
+    let svg = scene::animated_svg(&frames, &titles, bbox, 6.0);
+    let anim = args.out.join("animation.svg");
+    crate::output::write_atomic(Some(&anim), |w| Ok(w.write_all(svg.as_bytes())?))
+        .map_err(Failure::Input)?;
+    written.push(anim);
+    if failed > 0 {
+        eprintln!(
+            "camkin: {failed} of {n} angles could not be analysed; their points are left out"
+        );
+    }
+    eprintln!(
+        "camkin: wrote {} files to {}",
+        written.len(),
+        args.out.display()
+    );
+    Ok(())
+}

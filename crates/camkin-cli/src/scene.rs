@@ -1,0 +1,303 @@
+//! The mechanism drawn at one cam angle, as shapes in world coordinates: cam profile with its
+//! nodes, cam axis, follower, contact point and common normal. Rendered by plotters (static SVG
+//! and PNG) and by a small SVG writer (the animation).
+
+use camkin::cam::{Follower, FollowerState, Mechanism};
+use camkin::curve::Domain;
+use camkin::geometry::{perp, Rot};
+use camkin::{Point2, Vec2};
+use std::fmt::Write as _;
+
+/// Colours as RGB.
+pub type Rgb = (u8, u8, u8);
+pub const CAM: Rgb = (31, 119, 180);
+pub const FOLLOWER: Rgb = (60, 60, 60);
+pub const CONTACT: Rgb = (214, 39, 40);
+pub const NORMAL: Rgb = (44, 160, 44);
+
+#[derive(Debug, Clone)]
+pub enum Shape {
+    Polyline {
+        pts: Vec<Point2>,
+        color: Rgb,
+        width: u32,
+        closed: bool,
+    },
+    Circle {
+        c: Point2,
+        r: f64,
+        color: Rgb,
+        width: u32,
+    },
+    Dot {
+        p: Point2,
+        color: Rgb,
+        px: u32,
+    },
+}
+
+fn segment(a: Point2, b: Point2, color: Rgb, width: u32) -> Shape {
+    Shape::Polyline {
+        pts: vec![a, b],
+        color,
+        width,
+        closed: false,
+    }
+}
+
+/// The shapes of the mechanism at cam angle `theta` (rad), with the analysed state there.
+pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec<Shape> {
+    let cam = mech.cam();
+    let profile = cam.profile();
+    let body = cam.state(theta);
+    let size = mech.size();
+    let mut shapes = Vec::new();
+    let period = match profile.domain() {
+        Domain::Periodic { period } => period,
+        _ => 1.0,
+    };
+    let n = 720;
+    let pts: Vec<Point2> = (0..n)
+        .map(|k| {
+            body.pose
+                .to_world(profile.position(period * k as f64 / n as f64))
+        })
+        .collect();
+    shapes.push(Shape::Polyline {
+        pts,
+        color: CAM,
+        width: 2,
+        closed: true,
+    });
+    for u in profile.breakpoints() {
+        shapes.push(Shape::Dot {
+            p: body.pose.to_world(profile.position(u)),
+            color: CAM,
+            px: 4,
+        });
+    }
+    // the cam axis and a mark for the cam frame's x axis
+    let axis = cam.pivot();
+    shapes.push(Shape::Circle {
+        c: axis,
+        r: 0.04 * size,
+        color: FOLLOWER,
+        width: 1,
+    });
+    shapes.push(segment(
+        axis,
+        axis + Rot::new(body.pose.angle).apply(Vec2::new(0.25 * size, 0.0)),
+        CAM,
+        1,
+    ));
+    let Some(s) = state else { return shapes };
+    let c = s.contact_world;
+    let q = s.position;
+    match *mech.follower() {
+        Follower::TranslatingFlat { direction } => {
+            let d = direction.normalize();
+            let face_c = axis + q * d;
+            let half = 0.6 * size;
+            let along = perp(d);
+            shapes.push(segment(
+                face_c - half * along,
+                face_c + half * along,
+                FOLLOWER,
+                3,
+            ));
+            shapes.push(segment(face_c, face_c + 0.8 * size * d, FOLLOWER, 3));
+        }
+        Follower::TranslatingRoller {
+            direction,
+            offset,
+            roller_radius,
+        } => {
+            let d = direction.normalize();
+            let centre = axis + offset * perp(d) + q * d;
+            shapes.push(Shape::Circle {
+                c: centre,
+                r: roller_radius,
+                color: FOLLOWER,
+                width: 2,
+            });
+            shapes.push(segment(
+                centre,
+                centre + (roller_radius + 0.8 * size) * d,
+                FOLLOWER,
+                3,
+            ));
+        }
+        Follower::TranslatingKnife { direction, offset } => {
+            let d = direction.normalize();
+            let tip = axis + offset * perp(d) + q * d;
+            let w = 0.06 * size;
+            let back = tip + 0.2 * size * d;
+            shapes.push(Shape::Polyline {
+                pts: vec![tip, back + w * perp(d), back - w * perp(d)],
+                color: FOLLOWER,
+                width: 2,
+                closed: true,
+            });
+            shapes.push(segment(back, tip + 0.8 * size * d, FOLLOWER, 3));
+        }
+        Follower::OscillatingFlat {
+            pivot, face_offset, ..
+        } => {
+            let u = Vec2::new(q.cos(), q.sin());
+            let n = perp(u);
+            let reach = (c - pivot).dot(&u).max(0.0) + 0.4 * size;
+            shapes.push(segment(pivot, pivot + face_offset * n, FOLLOWER, 3));
+            shapes.push(segment(
+                pivot + face_offset * n,
+                pivot + face_offset * n + reach * u,
+                FOLLOWER,
+                3,
+            ));
+            shapes.push(Shape::Circle {
+                c: pivot,
+                r: 0.04 * size,
+                color: FOLLOWER,
+                width: 2,
+            });
+        }
+        Follower::OscillatingRoller {
+            pivot,
+            arm_length,
+            roller_radius,
+            ..
+        } => {
+            let centre = pivot + arm_length * Vec2::new(q.cos(), q.sin());
+            shapes.push(segment(pivot, centre, FOLLOWER, 3));
+            shapes.push(Shape::Circle {
+                c: centre,
+                r: roller_radius,
+                color: FOLLOWER,
+                width: 2,
+            });
+            shapes.push(Shape::Circle {
+                c: pivot,
+                r: 0.04 * size,
+                color: FOLLOWER,
+                width: 2,
+            });
+        }
+    }
+    let nl = 0.35 * size;
+    shapes.push(segment(c - nl * s.normal, c + nl * s.normal, NORMAL, 1));
+    shapes.push(Shape::Dot {
+        p: c,
+        color: CONTACT,
+        px: 5,
+    });
+    shapes
+}
+
+/// Bounding box of shapes: (min, max).
+pub fn bounds<'a>(shapes: impl IntoIterator<Item = &'a Shape>) -> (Point2, Point2) {
+    let (mut lo, mut hi) = (
+        Point2::new(f64::INFINITY, f64::INFINITY),
+        Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
+    );
+    let mut add = |p: Point2, r: f64| {
+        lo = Point2::new(lo.x.min(p.x - r), lo.y.min(p.y - r));
+        hi = Point2::new(hi.x.max(p.x + r), hi.y.max(p.y + r));
+    };
+    for s in shapes {
+        match s {
+            Shape::Polyline { pts, .. } => pts.iter().for_each(|p| add(*p, 0.0)),
+            Shape::Circle { c, r, .. } => add(*c, *r),
+            Shape::Dot { p, .. } => add(*p, 0.0),
+        }
+    }
+    (lo, hi)
+}
+
+/// An animated SVG: one frame per scene, shown in turn over `seconds`, looping.
+pub fn animated_svg(
+    frames: &[Vec<Shape>],
+    titles: &[String],
+    (lo, hi): (Point2, Point2),
+    seconds: f64,
+) -> String {
+    let (w, h) = (hi.x - lo.x, hi.y - lo.y);
+    let width = 800.0;
+    let k = width / w;
+    let height = (h * k).ceil();
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{}" viewBox="0 0 {width} {}">"#,
+        height + 40.0,
+        height + 40.0
+    );
+    let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    let n = frames.len();
+    let tx = |p: &Point2| ((p.x - lo.x) * k, 40.0 + (hi.y - p.y) * k);
+    let rgb = |c: &Rgb| format!("rgb({},{},{})", c.0, c.1, c.2);
+    for (i, (frame, title)) in frames.iter().zip(titles).enumerate() {
+        let (a, b) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+        let (values, times) = if n == 1 {
+            ("inline".to_string(), "0".to_string())
+        } else if i == 0 {
+            ("inline;none".to_string(), format!("0;{b}"))
+        } else if i + 1 == n {
+            ("none;inline".to_string(), format!("0;{a}"))
+        } else {
+            ("none;inline;none".to_string(), format!("0;{a};{b}"))
+        };
+        let _ = writeln!(
+            s,
+            r#"<g display="{}"><animate attributeName="display" values="{values}" keyTimes="{times}" dur="{seconds}s" calcMode="discrete" repeatCount="indefinite"/>"#,
+            if i == 0 { "inline" } else { "none" }
+        );
+        let _ = writeln!(
+            s,
+            r#"<text x="10" y="26" font-family="DejaVu Sans, sans-serif" font-size="18">{title}</text>"#
+        );
+        for shape in frame {
+            match shape {
+                Shape::Polyline {
+                    pts,
+                    color,
+                    width,
+                    closed,
+                } => {
+                    let d: Vec<String> = pts
+                        .iter()
+                        .map(|p| {
+                            let (x, y) = tx(p);
+                            format!("{x:.2},{y:.2}")
+                        })
+                        .collect();
+                    let tag = if *closed { "polygon" } else { "polyline" };
+                    let _ = writeln!(
+                        s,
+                        r#"<{tag} points="{}" fill="none" stroke="{}" stroke-width="{width}"/>"#,
+                        d.join(" "),
+                        rgb(color)
+                    );
+                }
+                Shape::Circle { c, r, color, width } => {
+                    let (x, y) = tx(c);
+                    let _ = writeln!(
+                        s,
+                        r#"<circle cx="{x:.2}" cy="{y:.2}" r="{:.2}" fill="none" stroke="{}" stroke-width="{width}"/>"#,
+                        r * k,
+                        rgb(color)
+                    );
+                }
+                Shape::Dot { p, color, px } => {
+                    let (x, y) = tx(p);
+                    let _ = writeln!(
+                        s,
+                        r#"<circle cx="{x:.2}" cy="{y:.2}" r="{px}" fill="{}"/>"#,
+                        rgb(color)
+                    );
+                }
+            }
+        }
+        let _ = writeln!(s, "</g>");
+    }
+    s.push_str("</svg>\n");
+    s
+}

@@ -1,0 +1,120 @@
+//! `camkin plot`: figures, drawings and the animation are produced and well formed.
+#![allow(clippy::unwrap_used)]
+use assert_cmd::Command;
+use predicates::prelude::*;
+use std::path::{Path, PathBuf};
+
+fn camkin() -> Command {
+    Command::cargo_bin("camkin").unwrap()
+}
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn png_size(p: &Path) -> (u32, u32) {
+    let b = std::fs::read(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+    assert_eq!(&b[..8], b"\x89PNG\r\n\x1a\n", "{}", p.display());
+    (
+        u32::from_be_bytes(b[16..20].try_into().unwrap()),
+        u32::from_be_bytes(b[20..24].try_into().unwrap()),
+    )
+}
+
+/// Every element opened is closed, in order (a small well-formedness check).
+fn assert_well_formed_svg(p: &Path) -> String {
+    let s = std::fs::read_to_string(p).unwrap();
+    let mut stack: Vec<String> = Vec::new();
+    let mut rest = s.as_str();
+    while let Some(i) = rest.find('<') {
+        let j = rest[i..]
+            .find('>')
+            .unwrap_or_else(|| panic!("{}: unclosed tag", p.display()))
+            + i;
+        let tag = &rest[i + 1..j];
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(stack.pop().as_deref(), Some(name.trim()), "{}", p.display());
+        } else if !tag.ends_with('/') && !tag.starts_with('?') && !tag.starts_with('!') {
+            stack.push(tag.split_whitespace().next().unwrap().to_string());
+        }
+        rest = &rest[j + 1..];
+    }
+    assert!(stack.is_empty(), "{}: unclosed {stack:?}", p.display());
+    assert!(s.trim_start().starts_with("<svg"));
+    s
+}
+
+#[test]
+fn plot_every_follower_type() {
+    for name in [
+        "paper",
+        "eccentric-roller",
+        "ellipse-knife",
+        "oscillating-flat",
+        "oscillating-roller",
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        camkin()
+            .arg("plot")
+            .arg(examples().join(format!("{name}.toml")))
+            .args(["--step", "2", "--frames", "12", "--at", "0,45", "--out"])
+            .arg(dir.path())
+            .assert()
+            .success();
+        let d = dir.path();
+        assert_eq!(png_size(&d.join("kinematics.png")), (1400, 1300));
+        let k = assert_well_formed_svg(&d.join("kinematics.svg"));
+        for title in [
+            "displacement",
+            "velocity",
+            "acceleration",
+            "jerk",
+            "pressure angle",
+            "radius of curvature",
+        ] {
+            assert!(k.contains(title), "{name}: {title}");
+        }
+        for a in ["0", "45"] {
+            let (w, h) = png_size(&d.join(format!("drawing_{a}.png")));
+            assert_eq!(w, 800);
+            assert!(h > 200);
+            assert!(assert_well_formed_svg(&d.join(format!("drawing_{a}.svg")))
+                .contains(&format!("cam angle {a}°")));
+        }
+        let anim = assert_well_formed_svg(&d.join("animation.svg"));
+        assert_eq!(anim.matches("<animate ").count(), 12, "{name}");
+        assert!(anim.contains("repeatCount=\"indefinite\""));
+    }
+}
+
+#[test]
+fn plot_defaults_to_the_paper_cam() {
+    let dir = tempfile::tempdir().unwrap();
+    camkin()
+        .args(["plot", "--step", "5", "--frames", "4", "--out"])
+        .arg(dir.path())
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("paper"));
+    // four default drawings, kinematics (2), animation
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 11);
+}
+
+#[test]
+fn plot_bad_input_exits_2() {
+    for (args, needle) in [
+        (vec!["--at", "x"], "--at"),
+        (vec!["--frames", "0"], "--frames"),
+        (vec!["--step", "0"], "--step"),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        camkin()
+            .arg("plot")
+            .args(&args)
+            .arg("--out")
+            .arg(dir.path())
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(needle));
+    }
+}
