@@ -25,6 +25,9 @@ pub struct Args {
     /// Range of cam angles in degrees: START:STOP:STEP, STOP excluded [default: 0:360:1].
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub angles: Option<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    pub format: Format,
     /// Output file (written atomically); standard output without it.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
@@ -81,11 +84,17 @@ pub fn angle_list(at: Option<&str>, angles: Option<&str>) -> Result<Vec<f64>> {
         .collect())
 }
 
-fn row(
-    w: &mut dyn Write,
-    angle_deg: f64,
-    r: &Result<FollowerState, camkin::cam::CamError>,
-) -> std::io::Result<()> {
+/// One value of a row.
+#[derive(Debug, Clone, PartialEq)]
+enum Field {
+    Num(f64),
+    Text(String),
+    Empty,
+}
+
+/// The values of one row, in the order of [`HEADER`].
+fn fields(angle_deg: f64, r: &Result<FollowerState, camkin::cam::CamError>) -> Vec<Field> {
+    use Field::{Empty, Num, Text};
     match r {
         Ok(s) => {
             let found = match s.found {
@@ -93,55 +102,124 @@ fn row(
                 Found::WarmStart => "warm",
                 Found::Jump { .. } => "jump",
             };
-            writeln!(
-                w,
-                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},",
-                angle_deg,
-                s.position,
-                s.velocity,
-                s.acceleration,
-                s.jerk.map(|j| j.to_string()).unwrap_or_default(),
-                s.contact_world.x,
-                s.contact_world.y,
-                s.contact_cam.x,
-                s.contact_cam.y,
-                s.cam_param,
-                s.sliding_rate_cam,
-                s.sliding_rate_follower,
-                s.normal_acceleration_cam.total(),
-                s.normal_acceleration_cam.coriolis,
-                s.normal_acceleration_cam.relative,
-                s.normal_acceleration_follower.total(),
-                s.normal.x,
-                s.normal.y,
-                s.sigma,
-                s.pressure_angle.to_degrees(),
-                s.radius_of_curvature,
-                u8::from(s.at_breakpoint),
-                found
-            )
+            vec![
+                Num(angle_deg),
+                Num(s.position),
+                Num(s.velocity),
+                Num(s.acceleration),
+                s.jerk.map_or(Empty, Num),
+                Num(s.contact_world.x),
+                Num(s.contact_world.y),
+                Num(s.contact_cam.x),
+                Num(s.contact_cam.y),
+                Num(s.cam_param),
+                Num(s.sliding_rate_cam),
+                Num(s.sliding_rate_follower),
+                Num(s.normal_acceleration_cam.total()),
+                Num(s.normal_acceleration_cam.coriolis),
+                Num(s.normal_acceleration_cam.relative),
+                Num(s.normal_acceleration_follower.total()),
+                Num(s.normal.x),
+                Num(s.normal.y),
+                Num(s.sigma),
+                Num(s.pressure_angle.to_degrees()),
+                Num(s.radius_of_curvature),
+                Num(f64::from(u8::from(s.at_breakpoint))),
+                Text(found.into()),
+                Empty,
+            ]
         }
         Err(e) => {
-            let msg = e.to_string().replace('"', "'");
-            writeln!(
-                w,
-                "{angle_deg}{}\"{msg}\"",
-                ",".repeat(HEADER.split(',').count() - 1)
-            )
+            let mut v = vec![Num(angle_deg)];
+            v.resize(HEADER.split(',').count() - 1, Empty);
+            v.push(Text(e.to_string()));
+            v
         }
     }
+}
+
+fn csv_row(w: &mut dyn Write, f: &[Field]) -> std::io::Result<()> {
+    let cells: Vec<String> = f
+        .iter()
+        .map(|x| match x {
+            Field::Num(v) => v.to_string(),
+            Field::Empty => String::new(),
+            Field::Text(t) if t.contains([',', '"', '\n']) => {
+                format!("\"{}\"", t.replace('"', "\"\""))
+            }
+            Field::Text(t) => t.clone(),
+        })
+        .collect();
+    writeln!(w, "{}", cells.join(","))
+}
+
+fn json_row(f: &[Field]) -> serde_json::Value {
+    let mut m = serde_json::Map::new();
+    for (k, x) in HEADER.split(',').zip(f) {
+        let v = match x {
+            // non-finite numbers (∞ radius on a straight stretch) become null
+            Field::Num(v) => serde_json::Number::from_f64(*v)
+                .map_or(serde_json::Value::Null, serde_json::Value::Number),
+            Field::Text(t) => serde_json::Value::String(t.clone()),
+            Field::Empty => serde_json::Value::Null,
+        };
+        m.insert(k.to_string(), v);
+    }
+    serde_json::Value::Object(m)
+}
+
+/// Output format of `analyze`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// comma-separated values with a header
+    Csv,
+    /// an array of objects keyed by the CSV column names
+    Json,
+}
+
+/// A warm-started sweep, with a progress bar on a terminal when it is long.
+fn analyze_with_progress(
+    mech: &camkin::cam::Mechanism,
+    thetas: &[f64],
+) -> Vec<Result<FollowerState, camkin::cam::CamError>> {
+    const CHUNK: usize = 10_000;
+    if thetas.len() <= 5 * CHUNK {
+        return mech.analyze_all(thetas);
+    }
+    let pb = indicatif::ProgressBar::new(thetas.len() as u64);
+    let mut sweep = mech.sweep();
+    let mut out = Vec::with_capacity(thetas.len());
+    for chunk in thetas.chunks(CHUNK) {
+        out.extend(chunk.iter().map(|&t| sweep.step(t)));
+        pb.inc(chunk.len() as u64);
+    }
+    pb.finish_and_clear();
+    out
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let mech = load_mechanism(args.mechanism.as_ref())?;
     let angles = angle_list(args.at.as_deref(), args.angles.as_deref()).map_err(Failure::Input)?;
     let thetas: Vec<f64> = angles.iter().map(|a| a.to_radians()).collect();
-    let results = mech.analyze_all(&thetas);
+    let results = analyze_with_progress(&mech, &thetas);
     let failed = results.iter().filter(|r| r.is_err()).count();
     write_atomic(args.output.as_deref(), |w| {
-        writeln!(w, "{HEADER}")?;
-        for (a, r) in angles.iter().zip(&results) {
-            row(w, *a, r)?;
+        match args.format {
+            Format::Csv => {
+                writeln!(w, "{HEADER}")?;
+                for (a, r) in angles.iter().zip(&results) {
+                    csv_row(w, &fields(*a, r))?;
+                }
+            }
+            Format::Json => {
+                let rows: Vec<serde_json::Value> = angles
+                    .iter()
+                    .zip(&results)
+                    .map(|(a, r)| json_row(&fields(*a, r)))
+                    .collect();
+                serde_json::to_writer(&mut *w, &rows)?;
+                writeln!(w)?;
+            }
         }
         Ok(())
     })
@@ -188,24 +266,24 @@ mod tests {
     fn header_starts_with_the_fixed_columns_and_rows_match_it() {
         assert!(HEADER.starts_with("angle_deg,position,velocity,acceleration,"));
         let m = crate::mechfile::paper();
+        let n = HEADER.split(',').count();
+        assert_eq!(fields(0.0, &m.analyze(0.0)).len(), n);
+        let err: Result<FollowerState, _> = Err(camkin::cam::CamError::OpenProfile);
+        let f = fields(1.0, &err);
+        assert_eq!(f.len(), n);
         let mut out = Vec::new();
-        let r = m.analyze(0.0);
-        row(&mut out, 0.0, &r).unwrap();
-        let line = String::from_utf8(out).unwrap();
-        assert_eq!(
-            line.trim_end().split(',').count(),
-            HEADER.split(',').count()
-        );
-        let r: Result<FollowerState, _> = Err(camkin::cam::CamError::OpenProfile);
-        let mut out = Vec::new();
-        row(&mut out, 1.0, &r).unwrap();
+        csv_row(&mut out, &f).unwrap();
         assert_eq!(
             String::from_utf8(out)
                 .unwrap()
                 .trim_end()
                 .split(',')
                 .count(),
-            HEADER.split(',').count()
+            n
         );
+        let j = json_row(&f);
+        assert_eq!(j["angle_deg"], 1.0);
+        assert!(j["position"].is_null());
+        assert!(j["error"].as_str().unwrap().contains("closed"));
     }
 }

@@ -182,3 +182,21 @@ fn help_shows_examples_for_every_subcommand() {
         .success()
         .stdout(predicate::str::contains("Exit codes"));
 }
+
+#[test]
+fn json_format_has_the_csv_columns_as_keys() {
+    let out = camkin()
+        .args(["analyze", "--at", "0,45", "--format", "json"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0]["position"], 5.0);
+    assert!((rows[1]["acceleration"].as_f64().unwrap() + 6291.918).abs() < 1e-3);
+    assert!(rows[0]["jerk"].is_null()); // θ = 0 sits on a spline node
+    assert!(rows[1]["jerk"].is_number());
+}
