@@ -1,6 +1,7 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
 mod analyze;
+mod bench;
 mod compare;
 mod mechfile;
 mod output;
@@ -43,6 +44,11 @@ enum Command {
         after_help = "Examples:\n  camkin plot                                  # the paper's cam into ./camkin-plot/\n  camkin plot examples/oscillating-roller.toml --out fig --at 0,45,90\n  camkin plot cam.toml --step 0.1 --frames 180\n\nWrites kinematics.{svg,png}, drawing_<angle>.{svg,png} and animation.svg.\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Plot(plot::PlotArgs),
+    /// In-process timings: contact method against the interpolation baseline.
+    #[command(
+        after_help = "Examples:\n  camkin bench                      # the paper's cam\n  camkin bench examples/oscillating-roller.toml --json\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Bench(bench::BenchArgs),
 }
 
 /// A failure and its exit code.
@@ -61,6 +67,7 @@ fn main() -> ExitCode {
         Command::Paper(args) => compare::run_paper(&args),
         Command::Compare(args) => compare::run_compare(&args),
         Command::Plot(args) => plot::run(&args),
+        Command::Bench(args) => bench::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -174,6 +174,8 @@ pub struct AnalysisOptions {
     /// The contact is on a node of a spline profile when its parameter is within this fraction
     /// of the period of one.
     pub breakpoint_tolerance: f64,
+    /// Compute the jerk (three more orders of implicit differentiation per angle).
+    pub jerk: bool,
 }
 
 impl AnalysisOptions {
@@ -190,6 +192,7 @@ impl AnalysisOptions {
             touch_tolerance: 1e-10 * size,
             max_step_fraction: 0.1,
             breakpoint_tolerance: 1e-9,
+            jerk: true,
         }
     }
 }
@@ -281,7 +284,8 @@ pub struct FollowerState {
     pub acceleration: f64,
     /// jerk `d³q/dt³ = θ̇³ q‴ + 3 θ̇ θ̈ q″` (derivatives in θ by implicit differentiation, see
     /// [`Mechanism::angle_derivatives`]); `None` when the contact sits on a node of a spline
-    /// profile, where the curvature has a corner and the jerk jumps
+    /// profile, where the curvature has a corner and the jerk jumps, or when
+    /// [`AnalysisOptions::jerk`] is off
     pub jerk: Option<f64>,
     /// contact point, world frame
     pub contact_world: Point2,
@@ -816,7 +820,7 @@ impl Mechanism {
             let d = (touch.u - b).rem_euclid(self.period);
             d < tol_u || self.period - d < tol_u
         });
-        let jerk = if at_breakpoint {
+        let jerk = if at_breakpoint || !self.options.jerk {
             None
         } else {
             let dq = self.jet_derivatives(theta, cam, touch)?;

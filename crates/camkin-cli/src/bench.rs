@@ -1,0 +1,201 @@
+//! `camkin bench`: in-process timings of the contact method and of the interpolation baseline,
+//! measured in one run so that their ratios mean something on a noisy machine. Each figure is the
+//! median of repeated runs.
+
+use crate::{load_mechanism, Failure};
+use anyhow::anyhow;
+use camkin::cam::{Follower, Mechanism};
+use camkin::interp::{max_and_mean, relative_errors, Interpolated};
+use rayon::prelude::*;
+use serde_json::{json, Map, Value};
+use std::hint::black_box;
+use std::path::PathBuf;
+use std::time::Instant;
+
+#[derive(Debug, clap::Args)]
+pub struct BenchArgs {
+    /// Mechanism file (TOML); without it, the paper's built-in cam.
+    pub mechanism: Option<PathBuf>,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    pub json: bool,
+    /// Repetitions of each measurement (the median is reported).
+    #[arg(long, default_value_t = 15)]
+    pub repeats: usize,
+}
+
+/// Median wall time of `f` over `repeats` runs, seconds.
+fn median_time(repeats: usize, mut f: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..repeats.max(1))
+        .map(|_| {
+            let s = Instant::now();
+            f();
+            s.elapsed().as_secs_f64()
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
+
+/// Sweep angles: one revolution at 0.05°.
+const SWEEP_STEP_DEG: f64 = 0.05;
+const NODES: [usize; 3] = [100, 1000, 10_000];
+
+pub fn run(args: &BenchArgs) -> Result<(), Failure> {
+    if !(1..=1000).contains(&args.repeats) {
+        return Err(Failure::Input(anyhow!(
+            "--repeats: {} must be from 1 to 1000",
+            args.repeats
+        )));
+    }
+    let mut mech = load_mechanism(args.mechanism.as_ref())?;
+    // the query measured is position, velocity and acceleration (no jerk)
+    let mut opts = *mech.options();
+    opts.jerk = false;
+    mech.set_options(opts);
+    let r = args.repeats;
+
+    // cold queries at scattered angles
+    let cold: Vec<f64> = (0..1000)
+        .map(|k| (k as f64 * 137.50776405).rem_euclid(360.0).to_radians())
+        .collect();
+    if let Some(e) = cold.iter().find_map(|&t| mech.analyze(t).err()) {
+        return Err(Failure::Input(anyhow!(
+            "the mechanism cannot be analysed: {e}"
+        )));
+    }
+    let single = median_time(r, || {
+        for &t in &cold {
+            let _ = black_box(mech.analyze(black_box(t)));
+        }
+    }) / cold.len() as f64;
+
+    let n = (360.0 / SWEEP_STEP_DEG).round() as usize;
+    let thetas: Vec<f64> = (0..n)
+        .map(|k| (k as f64 * SWEEP_STEP_DEG).to_radians())
+        .collect();
+    let sweep = median_time(r, || {
+        let mut s = mech.sweep();
+        for &t in &thetas {
+            let _ = black_box(s.step(t));
+        }
+    }) / n as f64;
+    let threads = rayon::current_num_threads();
+    let chunk = n.div_ceil(threads);
+    let parallel = median_time(r, || {
+        thetas.par_chunks(chunk).for_each(|c| {
+            let mut s = mech.sweep();
+            for &t in c {
+                let _ = black_box(s.step(t));
+            }
+        });
+    }) / n as f64;
+
+    // the interpolation baseline: N position solves, a spline, one evaluation
+    let exact: Vec<f64> = mech
+        .analyze_all(&thetas)
+        .into_iter()
+        .map(|s| s.map(|s| s.acceleration).unwrap_or(f64::NAN))
+        .collect();
+    let mut base_ns = Map::new();
+    let mut base_err = Map::new();
+    let mut ratio = Map::new();
+    for nodes in NODES {
+        let reps = if nodes >= 10_000 { r.min(5) } else { r };
+        let t = median_time(reps, || {
+            let it = Interpolated::new(&mech, nodes).map(|it| it.acceleration(1.234));
+            let _ = black_box(it);
+        });
+        let it = Interpolated::new(&mech, nodes).map_err(|e| Failure::Input(anyhow!("{e}")))?;
+        let approx: Vec<f64> = thetas.iter().map(|&t| it.acceleration(t)).collect();
+        let (max, _) = max_and_mean(&relative_errors(&exact, &approx));
+        base_ns.insert(nodes.to_string(), json!(t * 1e9));
+        base_err.insert(nodes.to_string(), json!(max));
+        ratio.insert(nodes.to_string(), json!(t / single));
+    }
+    let check = contact_check(&mech, &thetas);
+    let out = json!({
+        "mechanism": args.mechanism.as_ref().map_or("paper (built in)".to_string(), |p| p.display().to_string()),
+        "follower": mech.follower().kind_name(),
+        "single_query_ns": single * 1e9,
+        "sweep_ns_per_angle": sweep * 1e9,
+        "parallel_sweep_ns_per_angle": parallel * 1e9,
+        "threads": threads,
+        "parallel_speedup": sweep / parallel,
+        "baseline_single_query_ns": Value::Object(base_ns.clone()),
+        "baseline_max_rel_error": Value::Object(base_err.clone()),
+        "baseline_over_single_query": Value::Object(ratio.clone()),
+        "contact_check": check,
+        "repeats": r,
+    });
+    if args.json {
+        println!("{out}");
+    } else {
+        println!(
+            "camkin bench — {} ({}), median of {r} runs",
+            out["mechanism"].as_str().unwrap_or(""),
+            mech.follower().kind_name()
+        );
+        println!(
+            "  single cold query (search + velocity + acceleration) {:>12.1} ns",
+            single * 1e9
+        );
+        println!(
+            "  warm sweep, one thread, per angle                   {:>12.1} ns",
+            sweep * 1e9
+        );
+        println!("  warm sweep, {threads} threads, per angle                  {:>12.1} ns  (speed-up {:.2}×)", parallel * 1e9, sweep / parallel);
+        for nodes in NODES {
+            let k = nodes.to_string();
+            println!(
+                "  interpolation baseline, N = {nodes:>5}: {:>12.0} ns per angle, {:>8.0}× the single query, max relative error {:.2e}",
+                base_ns[&k].as_f64().unwrap_or(f64::NAN),
+                ratio[&k].as_f64().unwrap_or(f64::NAN),
+                base_err[&k].as_f64().unwrap_or(f64::NAN)
+            );
+        }
+        println!(
+            "  contact method's own check: {}",
+            check["name"].as_str().unwrap_or("")
+        );
+        println!(
+            "    max |difference| / max |a| = {:.1e}",
+            check["max_rel_diff"].as_f64().unwrap_or(f64::NAN)
+        );
+    }
+    Ok(())
+}
+
+/// The contact method against an independent check over the sweep: `s̈ = ω²(ρ − s)` for a
+/// translating flat face on a convex cam, implicit differentiation otherwise.
+fn contact_check(mech: &Mechanism, thetas: &[f64]) -> Value {
+    let w = mech.cam().speed();
+    let al = mech.cam().angular_acceleration();
+    let states: Vec<_> = mech.analyze_all(thetas).into_iter().flatten().collect();
+    let amax = states
+        .iter()
+        .fold(0.0f64, |m, s| m.max(s.acceleration.abs()));
+    let (name, d) =
+        if matches!(mech.follower(), Follower::TranslatingFlat { .. }) && mech.is_convex() {
+            let d = states
+                .iter()
+                .map(|s| {
+                    (s.acceleration
+                        - (w * w * (s.radius_of_curvature - s.position) + al * s.velocity / w))
+                        .abs()
+                })
+                .fold(0.0, f64::max);
+            ("s̈ = ω²(ρ − s)", d)
+        } else {
+            let d = states
+                .iter()
+                .filter_map(|s| {
+                    mech.angle_derivatives(s.cam_angle)
+                        .ok()
+                        .map(|q| (s.acceleration - (w * w * q[1] + al * q[0])).abs())
+                })
+                .fold(0.0, f64::max);
+            ("implicit differentiation", d)
+        };
+    json!({"name": name, "max_rel_diff": d / amax})
+}
