@@ -110,14 +110,56 @@ impl BodyState {
     /// The curve at `u`, in the world frame.
     #[inline]
     pub fn eval_curve(&self, curve: &dyn Curve, u: f64) -> WorldDerivs {
-        let rot = Rot::new(self.pose.angle);
-        let d = curve.eval(u);
-        WorldDerivs {
-            p: self.pose.origin + rot.apply(d.p.coords),
-            d1: rot.apply(d.d1),
-            d2: rot.apply(d.d2),
-            d3: rot.apply(d.d3),
+        self.frame().eval(curve, u)
+    }
+
+    /// The body frame with its rotation computed once, for evaluating many curve points.
+    #[inline]
+    pub fn frame(&self) -> Frame {
+        Frame {
+            origin: self.pose.origin,
+            rot: Rot::new(self.pose.angle),
         }
+    }
+}
+
+/// A body frame at one instant: origin and rotation (cosine and sine computed once).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frame {
+    /// the frame's origin in the world
+    pub origin: Point2,
+    /// its rotation
+    pub rot: Rot,
+}
+
+impl Frame {
+    /// Body-frame derivatives expressed in the world frame.
+    #[inline]
+    pub fn to_world(&self, d: &Derivs) -> WorldDerivs {
+        WorldDerivs {
+            p: self.origin + self.rot.apply(d.p.coords),
+            d1: self.rot.apply(d.d1),
+            d2: self.rot.apply(d.d2),
+            d3: self.rot.apply(d.d3),
+        }
+    }
+
+    /// The curve at `u`, in the world frame.
+    #[inline]
+    pub fn eval(&self, curve: &dyn Curve, u: f64) -> WorldDerivs {
+        self.to_world(&curve.eval(u))
+    }
+
+    /// Only the world position of the curve at `u`.
+    #[inline]
+    pub fn position(&self, curve: &dyn Curve, u: f64) -> Point2 {
+        self.origin + self.rot.apply(curve.position(u).coords)
+    }
+
+    /// A world point in the body frame.
+    #[inline]
+    pub fn to_body(&self, x: Point2) -> Point2 {
+        Point2::from(self.rot.apply_inverse(x - self.origin))
     }
 }
 

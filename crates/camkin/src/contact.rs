@@ -31,7 +31,7 @@
 //! size, a flat on a flat): the contact point is not determined by the geometry and
 //! [`ContactError::Conformal`] is returned rather than a division.
 
-use crate::body::{BodyState, WorldDerivs};
+use crate::body::{BodyState, Frame, WorldDerivs};
 use crate::curve::{Curve, Domain};
 use crate::geometry::{cross, perp, Point2, Vec2};
 
@@ -42,18 +42,24 @@ pub struct Surface<'a> {
     pub curve: &'a dyn Curve,
     /// the body's state
     pub body: &'a BodyState,
+    frame: Frame,
 }
 
 impl<'a> Surface<'a> {
     /// A curve on a body.
     pub fn new(curve: &'a dyn Curve, body: &'a BodyState) -> Self {
-        Self { curve, body }
+        Self {
+            curve,
+            body,
+            frame: body.frame(),
+        }
     }
     fn is_point(&self) -> bool {
         matches!(self.curve.domain(), Domain::Point)
     }
+    #[inline]
     fn eval(&self, u: f64) -> WorldDerivs {
-        self.body.eval_curve(self.curve, u)
+        self.frame.eval(self.curve, u)
     }
 }
 
@@ -503,92 +509,115 @@ impl ContactKinematics {
                 })
             }
             (false, b_point) => {
-                let ea = a.eval(pairing.u_a).as_derivs();
-                let eb = b.eval(pairing.u_b).as_derivs();
-                let g_a = ea.metric();
-                if !(g_a > 0.0) {
-                    return Err(ContactError::Singular {
-                        which: "A",
-                        u: pairing.u_a,
-                    });
-                }
-                let g_b = eb.metric();
-                if !b_point && !(g_b > 0.0) {
-                    return Err(ContactError::Singular {
-                        which: "B",
-                        u: pairing.u_b,
-                    });
-                }
-                let c = pairing.point_a;
-                let t_a = ea.tangent();
-                let nu = perp(t_a);
-                let kappa_a = ea.curvature();
-                let (wa, wb) = (a.body.omega, b.body.omega);
-                let va = a.body.velocity_at(c);
-                let vb = b.body.velocity_at(c);
-                let w = t_a.dot(&(vb - va));
-                let (sigma, kappa_b, d, sa, sb, ub_dot) = if b_point {
-                    (-1.0, f64::INFINITY, f64::INFINITY, w, 0.0, 0.0)
-                } else {
-                    let sigma = if t_a.dot(&eb.tangent()) >= 0.0 {
-                        1.0
-                    } else {
-                        -1.0
-                    };
-                    let kappa_b = eb.curvature();
-                    let d = kappa_b - sigma * kappa_a;
-                    if !(d.abs() > conformal_tolerance * (kappa_a.abs() + kappa_b.abs())) {
-                        return Err(ContactError::Conformal {
-                            point: c,
-                            kappa_a,
-                            kappa_b,
-                            sigma,
-                        });
-                    }
-                    let sa = (sigma * (wa - wb) + kappa_b * w) / d; // eq. 5
-                    let sb = (kappa_a * w + wa - wb) / d; // eq. 6
-                    (sigma, kappa_b, d, sa, sb, sb / g_b)
-                };
-                let ra = c - a.body.pose.origin;
-                let rb = c - b.body.pose.origin;
-                let b_terms = if b_point {
-                    0.0
-                } else {
-                    sigma * (2.0 * wb * sb + kappa_b * sb * sb)
-                };
-                let gamma =
-                    nu.dot(&(wa * wa * ra - wb * wb * rb)) - 2.0 * wa * sa - kappa_a * sa * sa
-                        + b_terms;
-                Ok(Self {
-                    point: c,
-                    normal: nu,
-                    tangent_a: t_a,
-                    sigma,
-                    kappa_a,
-                    kappa_b,
-                    metric_a: g_a,
-                    metric_b: if b_point { 0.0 } else { g_b },
-                    w,
-                    d,
-                    sliding_rate_a: sa,
-                    sliding_rate_b: sb,
-                    param_rate_a: sa / g_a,
-                    param_rate_b: ub_dot,
-                    normal_velocity: nu.dot(&(va - vb)),
-                    phi_q: [
-                        nu.x,
-                        nu.y,
-                        nu.dot(&perp(ra)),
-                        -nu.x,
-                        -nu.y,
-                        -nu.dot(&perp(rb)),
-                    ],
-                    gamma,
-                    omega_a: wa,
-                    omega_b: wb,
-                })
+                let ea = a.eval(pairing.u_a);
+                let eb = b.eval(pairing.u_b);
+                Self::from_geometry(
+                    a.body,
+                    &ea,
+                    b.body,
+                    &eb,
+                    b_point,
+                    pairing,
+                    conformal_tolerance,
+                )
             }
         }
+    }
+
+    /// As [`ContactKinematics::new`] from curve points already evaluated in the world frame
+    /// (`ea` on A at `pairing.u_a`, `eb` on B at `pairing.u_b`); A must not be a point.
+    pub fn from_geometry(
+        body_a: &BodyState,
+        ea: &WorldDerivs,
+        body_b: &BodyState,
+        eb: &WorldDerivs,
+        b_point: bool,
+        pairing: &Pairing,
+        conformal_tolerance: f64,
+    ) -> Result<Self, ContactError> {
+        let ea = ea.as_derivs();
+        let eb = eb.as_derivs();
+        let g_a = ea.metric();
+        if !(g_a > 0.0) {
+            return Err(ContactError::Singular {
+                which: "A",
+                u: pairing.u_a,
+            });
+        }
+        let g_b = eb.metric();
+        if !b_point && !(g_b > 0.0) {
+            return Err(ContactError::Singular {
+                which: "B",
+                u: pairing.u_b,
+            });
+        }
+        let c = pairing.point_a;
+        let t_a = ea.tangent();
+        let nu = perp(t_a);
+        let kappa_a = ea.curvature();
+        let (wa, wb) = (body_a.omega, body_b.omega);
+        let va = body_a.velocity_at(c);
+        let vb = body_b.velocity_at(c);
+        let w = t_a.dot(&(vb - va));
+        let (sigma, kappa_b, d, sa, sb, ub_dot) = if b_point {
+            (-1.0, f64::INFINITY, f64::INFINITY, w, 0.0, 0.0)
+        } else {
+            let sigma = if t_a.dot(&eb.tangent()) >= 0.0 {
+                1.0
+            } else {
+                -1.0
+            };
+            let kappa_b = eb.curvature();
+            let d = kappa_b - sigma * kappa_a;
+            if !(d.abs() > conformal_tolerance * (kappa_a.abs() + kappa_b.abs())) {
+                return Err(ContactError::Conformal {
+                    point: c,
+                    kappa_a,
+                    kappa_b,
+                    sigma,
+                });
+            }
+            let sa = (sigma * (wa - wb) + kappa_b * w) / d; // eq. 5
+            let sb = (kappa_a * w + wa - wb) / d; // eq. 6
+            (sigma, kappa_b, d, sa, sb, sb / g_b)
+        };
+        let ra = c - body_a.pose.origin;
+        let rb = c - body_b.pose.origin;
+        let b_terms = if b_point {
+            0.0
+        } else {
+            sigma * (2.0 * wb * sb + kappa_b * sb * sb)
+        };
+        let gamma =
+            nu.dot(&(wa * wa * ra - wb * wb * rb)) - 2.0 * wa * sa - kappa_a * sa * sa + b_terms;
+        Ok(Self {
+            point: c,
+            normal: nu,
+            tangent_a: t_a,
+            sigma,
+            kappa_a,
+            kappa_b,
+            metric_a: g_a,
+            metric_b: if b_point { 0.0 } else { g_b },
+            w,
+            d,
+            sliding_rate_a: sa,
+            sliding_rate_b: sb,
+            param_rate_a: sa / g_a,
+            param_rate_b: ub_dot,
+            normal_velocity: nu.dot(&(va - vb)),
+            phi_q: [
+                nu.x,
+                nu.y,
+                nu.dot(&perp(ra)),
+                -nu.x,
+                -nu.y,
+                -nu.dot(&perp(rb)),
+            ],
+            gamma,
+            omega_a: wa,
+            omega_b: wb,
+        })
     }
 
     /// The normal acceleration of the contact point seen from body A (eq. 1), with A's

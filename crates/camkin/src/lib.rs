@@ -74,5 +74,5 @@ pub mod interp;
 pub(crate) mod periodic;
 pub mod reference;
 
-pub use body::{BodyState, Pose};
+pub use body::{BodyState, Frame, Pose};
 pub use geometry::{Point2, Vec2};

@@ -59,7 +59,11 @@ impl Knots {
     pub(crate) fn locate(&self, u: f64) -> (usize, f64) {
         let n = self.segments();
         let p = self.period();
-        let w = u.rem_euclid(p);
+        let w = if (0.0..p).contains(&u) {
+            u
+        } else {
+            u.rem_euclid(p)
+        };
         let i = match self.uniform {
             Some(h) => ((w / h) as usize).min(n - 1),
             None => {

@@ -20,9 +20,9 @@ mod sweep;
 pub use follower::{Follower, Sense};
 pub use sweep::{Found, Sweep};
 
-use crate::body::BodyState;
+use crate::body::{BodyState, Frame};
 use crate::contact::{
-    pairing_at, ContactError, ContactKinematics, NormalAcceleration, Surface, CONFORMAL_TOLERANCE,
+    ContactError, ContactKinematics, NormalAcceleration, Pairing, CONFORMAL_TOLERANCE,
 };
 use crate::curve::{unit_direction, Curve, CurveError, Domain};
 use crate::geometry::{cross, Point2, Rot, Vec2};
@@ -159,7 +159,13 @@ pub struct AnalysisOptions {
     pub samples_per_piece: usize,
     /// Bracketing samples for a profile without breakpoints (circle, ellipse).
     pub samples_per_curve: usize,
-    /// Local maxima of the sampled first-touch function refined by Newton.
+    /// Bracketing samples per smooth piece of a convex profile (its first-touch function has a
+    /// single maximum, so a coarse scan finds it).
+    pub convex_samples_per_piece: usize,
+    /// Bracketing samples of a convex profile without breakpoints.
+    pub convex_samples_per_curve: usize,
+    /// Local maxima of the sampled first-touch function refined by Newton (at most
+    /// [`MAX_CANDIDATES`]).
     pub candidates: usize,
     /// Relative tolerance on `D` below which contact is conformal.
     pub conformal_tolerance: f64,
@@ -186,6 +192,8 @@ impl AnalysisOptions {
             max_iterations: 50,
             samples_per_piece: 16,
             samples_per_curve: 256,
+            convex_samples_per_piece: 4,
+            convex_samples_per_curve: 32,
             candidates: 4,
             conformal_tolerance: CONFORMAL_TOLERANCE,
             lock_tolerance: 1e-9,
@@ -260,6 +268,7 @@ pub struct Mechanism {
     geometry: Geometry,
     options: AnalysisOptions,
     samples: Vec<f64>,
+    coarse: Vec<f64>,
     period: f64,
     size: f64,
     orientation: f64,
@@ -429,6 +438,7 @@ impl Mechanism {
             cam,
             geometry,
             options,
+            coarse: samples.clone(),
             samples,
             period,
             size,
@@ -447,6 +457,12 @@ impl Mechanism {
             self.period,
             options.samples_per_piece.max(2),
             options.samples_per_curve.max(8),
+        );
+        self.coarse = bracket_samples(
+            &self.breakpoints,
+            self.period,
+            options.convex_samples_per_piece.max(2),
+            options.convex_samples_per_curve.max(8),
         );
         self.options = options;
     }
@@ -480,8 +496,9 @@ impl Mechanism {
     /// angular acceleration. The contact is found by a global search.
     pub fn analyze(&self, theta: f64) -> Result<FollowerState, CamError> {
         let cam = self.cam.state(theta);
-        let touch = self.global_touch(theta, &cam)?;
-        self.kinematics(theta, &cam, touch, Found::Global)
+        let frame = cam.frame();
+        let touch = self.global_touch(theta, &frame)?;
+        self.kinematics(theta, &cam, &frame, touch, Found::Global)
     }
 
     /// As [`Mechanism::analyze`] with the angle in degrees.
@@ -491,8 +508,8 @@ impl Mechanism {
 
     /// The follower's position only, at cam angle `theta` (rad), by first touch.
     pub fn position(&self, theta: f64) -> Result<f64, CamError> {
-        let cam = self.cam.state(theta);
-        Ok(self.global_touch(theta, &cam)?.q)
+        let frame = self.cam.state(theta).frame();
+        Ok(self.global_touch(theta, &frame)?.q)
     }
 
     /// A sweep that warm-starts each angle from the previous contact.
@@ -519,15 +536,16 @@ impl Mechanism {
     pub(crate) fn newton(
         &self,
         theta: f64,
-        cam: &BodyState,
+        frame: &Frame,
         mut u: f64,
         mut q: f64,
     ) -> Result<Touch, CamError> {
         let profile = self.cam.profile.as_ref();
         let tol = self.options.position_tolerance;
         let qs = self.q_scale();
+        let lim = self.options.max_step_fraction * self.period;
         for _ in 0..self.options.max_iterations {
-            let e = cam.eval_curve(profile, u);
+            let e = frame.eval(profile, u);
             let (f, j) = self.geometry.residual(&e, q);
             let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
             let du = (-f[0] * j[1][1] + f[1] * j[0][1]) / det;
@@ -538,17 +556,18 @@ impl Mechanism {
                     reason: "singular tangency Jacobian",
                 });
             }
-            // keep a step within a tenth of the period (safeguard against wild steps)
-            let lim = self.options.max_step_fraction * self.period;
+            // a step stays within a fraction of the period (safeguard against wild steps)
             let du = du.clamp(-lim, lim);
             u += du;
             q += dq;
             let step = (du * e.d1.norm()).abs().max((dq * qs).abs());
             if step <= tol {
-                return Ok(Touch {
-                    u: u.rem_euclid(self.period),
-                    q,
-                });
+                let u = if (0.0..self.period).contains(&u) {
+                    u
+                } else {
+                    u.rem_euclid(self.period)
+                };
+                return Ok(Touch { u, q });
             }
         }
         Err(CamError::NoConvergence {
@@ -558,9 +577,9 @@ impl Mechanism {
     }
 
     /// True when `(u, q)` is the follower's first touch through that cam point (not another
-    /// tangency such as a roller touching from inside).
-    fn is_first_touch(&self, cam: &BodyState, t: &Touch) -> bool {
-        let e = cam.eval_curve(self.cam.profile.as_ref(), t.u);
+    /// tangency such as the cam's back side or a roller touching from inside).
+    pub(crate) fn is_first_touch(&self, frame: &Frame, t: &Touch) -> bool {
+        let e = frame.eval(self.cam.profile.as_ref(), t.u);
         let x = e.p;
         // the cam's outward normal must face the follower
         let outward = -self.orientation * e.as_derivs().normal();
@@ -577,78 +596,100 @@ impl Mechanism {
     }
 
     /// Oriented score of a position (larger is an earlier touch).
-    fn oriented(&self, q: f64) -> f64 {
+    pub(crate) fn oriented(&self, q: f64) -> f64 {
         match self.geometry.kind {
             Kind::Translating { .. } => q,
             Kind::Oscillating { closing, .. } => -closing * q,
         }
     }
 
-    /// Start candidates `(oriented score, u, q)` for a knife edge: the crossings of its line of
-    /// travel with the sampled profile (linear interpolation between samples).
-    fn knife_starts(&self, cam: &BodyState) -> Vec<(f64, f64, f64)> {
+    /// Start candidates for a knife edge: the crossings of its line of travel with the densely
+    /// sampled profile (linear interpolation between samples), best first.
+    fn knife_starts(&self, frame: &Frame, out: &mut Candidates) {
         let Kind::Translating { d, p, e, .. } = self.geometry.kind else {
-            return Vec::new();
+            return;
         };
         let profile = self.cam.profile.as_ref();
-        let n = self.samples.len();
-        let pts: Vec<Vec2> = self
-            .samples
-            .iter()
-            .map(|&u| cam.eval_curve(profile, u).p - self.cam.pivot)
-            .collect();
-        let l: Vec<f64> = pts.iter().map(|y| y.dot(&p) - e).collect();
-        let mut starts = Vec::new();
+        let s = &self.samples;
+        let n = s.len();
+        let y = |k: usize| frame.position(profile, s[k]) - self.cam.pivot;
+        let (y0, mut ya) = (y(0), y(0));
+        let mut la = ya.dot(&p) - e;
         for k in 0..n {
-            let k1 = (k + 1) % n;
-            if l[k] == 0.0 || (l[k] > 0.0) != (l[k1] > 0.0) {
-                let u1 = if k1 == 0 {
-                    self.period
-                } else {
-                    self.samples[k1]
-                };
-                let f = if l[k] == l[k1] {
-                    0.0
-                } else {
-                    l[k] / (l[k] - l[k1])
-                };
-                let u0 = self.samples[k] + f * (u1 - self.samples[k]);
-                let q0 = pts[k].dot(&d) * (1.0 - f) + pts[k1].dot(&d) * f;
-                starts.push((q0, u0, q0));
+            let (yb, ub) = if k + 1 < n {
+                (y(k + 1), s[k + 1])
+            } else {
+                (y0, self.period)
+            };
+            let lb = yb.dot(&p) - e;
+            if la == 0.0 || (la > 0.0) != (lb > 0.0) {
+                let f = if la == lb { 0.0 } else { la / (la - lb) };
+                let q0 = ya.dot(&d) * (1.0 - f) + yb.dot(&d) * f;
+                out.push((q0, s[k] + f * (ub - s[k]), q0));
             }
+            (ya, la) = (yb, lb);
         }
-        starts
     }
 
-    /// Start candidates `(oriented score, u, q)`: the local maxima of the sampled first-touch
-    /// function.
-    fn score_starts(&self, cam: &BodyState) -> Vec<(f64, f64, f64)> {
+    /// Start candidates: the local maxima of the first-touch function sampled at `s`, best
+    /// first; returns the best sampled score (a lower bound of the true first touch).
+    fn score_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) -> f64 {
         let profile = self.cam.profile.as_ref();
-        let n = self.samples.len();
-        let scores: Vec<Option<(f64, f64)>> = self
-            .samples
-            .iter()
-            .map(|&u| self.geometry.score(cam.eval_curve(profile, u).p))
-            .collect();
-        let s = |k: usize| scores[k].map_or(f64::NEG_INFINITY, |x| x.0);
-        let mut starts = Vec::new();
-        for (k, score) in scores.iter().enumerate() {
-            if let Some((sc, q)) = *score {
-                if sc >= s((k + n - 1) % n) && sc >= s((k + 1) % n) {
-                    starts.push((sc, self.samples[k], q));
+        let n = s.len();
+        let score = |k: usize| self.geometry.score(frame.position(profile, s[k]));
+        let val = |x: Option<(f64, f64)>| x.map_or(f64::NEG_INFINITY, |x| x.0);
+        let first = score(0);
+        let (mut prev, mut cur) = (score(n - 1), first);
+        let mut best = f64::NEG_INFINITY;
+        for k in 0..n {
+            let next = if k + 1 < n { score(k + 1) } else { first };
+            if let Some((sc, q)) = cur {
+                best = best.max(sc);
+                if sc >= val(prev) && sc >= val(next) {
+                    out.push((sc, s[k], q));
+                }
+            }
+            (prev, cur) = (cur, next);
+        }
+        best
+    }
+
+    /// The single best sample of the first-touch function at `s` (a convex profile has one
+    /// maximum).
+    fn best_sample(&self, frame: &Frame, s: &[f64]) -> Option<(f64, f64, f64)> {
+        let profile = self.cam.profile.as_ref();
+        let mut best: Option<(f64, f64, f64)> = None;
+        for &u in s {
+            if let Some((sc, q)) = self.geometry.score(frame.position(profile, u)) {
+                if best.is_none_or(|b| sc > b.0) {
+                    best = Some((sc, u, q));
                 }
             }
         }
-        starts
+        best
     }
 
-    /// Global first touch: sample the profile, refine the best local maxima by Newton.
-    pub(crate) fn global_touch(&self, theta: f64, cam: &BodyState) -> Result<Touch, CamError> {
+    /// Global first touch. A convex profile's first-touch function has one maximum: its best
+    /// coarse sample is refined by Newton. Otherwise (and for a knife edge, whose crossings need
+    /// the dense sampling) the best local maxima of the densely sampled function are refined and
+    /// the best first touch among them is kept.
+    pub(crate) fn global_touch(&self, theta: f64, frame: &Frame) -> Result<Touch, CamError> {
         let knife = self.geometry.is_knife();
-        let mut starts = if knife {
-            self.knife_starts(cam)
+        if self.convex && !knife {
+            if let Some((_, u0, q0)) = self.best_sample(frame, &self.coarse) {
+                if let Ok(t) = self.newton(theta, frame, u0, q0) {
+                    if self.is_first_touch(frame, &t) {
+                        return Ok(t);
+                    }
+                }
+            }
+        }
+        let mut starts = Candidates::new(self.options.candidates);
+        let best_sample = if knife {
+            self.knife_starts(frame, &mut starts);
+            f64::NEG_INFINITY // a knife's interpolated crossings are not exact touches
         } else {
-            self.score_starts(cam)
+            self.score_starts(frame, &self.samples, &mut starts)
         };
         if starts.is_empty() {
             let reason = if knife {
@@ -661,18 +702,11 @@ impl Mechanism {
                 reason,
             });
         }
-        // sampled scores are exact first touches of those points, except a knife's interpolated ones
-        let best_sample = if knife {
-            f64::NEG_INFINITY
-        } else {
-            starts.iter().map(|s| s.0).fold(f64::NEG_INFINITY, f64::max)
-        };
-        starts.sort_by(|a, b| b.0.total_cmp(&a.0));
         let mut best: Option<Touch> = None;
         let mut last_err = None;
-        for &(_, u0, q0) in starts.iter().take(self.options.candidates.max(1)) {
-            match self.newton(theta, cam, u0, q0) {
-                Ok(t) if self.is_first_touch(cam, &t) => {
+        for &(_, u0, q0) in starts.as_slice() {
+            match self.newton(theta, frame, u0, q0) {
+                Ok(t) if self.is_first_touch(frame, &t) => {
                     if best.is_none_or(|b| self.oriented(t.q) > self.oriented(b.q)) {
                         best = Some(t);
                     }
@@ -702,13 +736,19 @@ impl Mechanism {
         Ok(best)
     }
 
+    /// The best sampled first-touch score over the dense samples (the sweep's jump guard).
+    pub(crate) fn best_sampled_score(&self, frame: &Frame) -> f64 {
+        self.best_sample(frame, &self.samples)
+            .map_or(f64::NEG_INFINITY, |b| b.0)
+    }
+
     /// `(dq/dθ, d²q/dθ², d³q/dθ³)` at cam angle `theta` (rad) by implicit differentiation of the
     /// first-touch conditions (see the `jet` module). This is independent of the paper's method
     /// and gives the jerk; `d³q/dθ³` takes the profile's third derivative on the segment that
     /// holds the contact (at a spline node it jumps).
     pub fn angle_derivatives(&self, theta: f64) -> Result<[f64; 3], CamError> {
         let cam = self.cam.state(theta);
-        let touch = self.global_touch(theta, &cam)?;
+        let touch = self.global_touch(theta, &cam.frame())?;
         self.jet_derivatives(theta, &cam, touch)
     }
 
@@ -773,13 +813,15 @@ impl Mechanism {
         &self,
         theta: f64,
         cam: &BodyState,
+        frame: &Frame,
         touch: Touch,
         found: Found,
     ) -> Result<FollowerState, CamError> {
         let g = &self.geometry;
         let profile = self.cam.profile.as_ref();
         let angle_deg = theta.to_degrees();
-        let ea = cam.eval_curve(profile, touch.u);
+        let body_a = profile.eval(touch.u);
+        let ea = frame.to_world(&body_a);
         let c = ea.p;
         let nu = ea.as_derivs().normal();
         let jb = g.velocity_jacobian(c);
@@ -798,13 +840,29 @@ impl Mechanism {
         }
         let qd = nu.dot(&cam.velocity_at(c)) / den;
         let body_b = g.body(touch.q, qd, 0.0);
+        let frame_b = body_b.frame();
         let fcurve = g.curve.as_curve();
-        let u_b = g.curve.param_of(body_b.pose.to_body(c));
-        let sa = Surface::new(profile, cam);
-        let sb = Surface::new(fcurve, &body_b);
-        let pairing = pairing_at(&sa, &sb, touch.u, u_b);
-        let k = ContactKinematics::new(&sa, &sb, &pairing, self.options.conformal_tolerance)
-            .map_err(|source| CamError::Contact { angle_deg, source })?;
+        let u_b = g.curve.param_of(frame_b.to_body(c));
+        let eb = frame_b.eval(fcurve, u_b);
+        let pairing = Pairing {
+            u_a: touch.u,
+            u_b,
+            point_a: c,
+            point_b: eb.p,
+            normal: nu,
+            gap: nu.dot(&(c - eb.p)),
+            iterations: 0,
+        };
+        let k = ContactKinematics::from_geometry(
+            cam,
+            &ea,
+            &body_b,
+            &eb,
+            g.is_knife(),
+            &pairing,
+            self.options.conformal_tolerance,
+        )
+        .map_err(|source| CamError::Contact { angle_deg, source })?;
         // acceleration constraint Φ_q q̈ = γ (eq. 11), cam accelerations known
         let phi = &k.phi_q;
         let known = phi[2] * cam.alpha;
@@ -815,11 +873,7 @@ impl Mechanism {
         let qdd = (k.gamma - known) / coef;
         let body_b = g.body(touch.q, qd, qdd);
         let kappa_conv = self.orientation * k.kappa_a;
-        let tol_u = self.options.breakpoint_tolerance * self.period;
-        let at_breakpoint = self.breakpoints.iter().any(|&b| {
-            let d = (touch.u - b).rem_euclid(self.period);
-            d < tol_u || self.period - d < tol_u
-        });
+        let at_breakpoint = self.at_breakpoint(touch.u);
         let jerk = if at_breakpoint || !self.options.jerk {
             None
         } else {
@@ -834,7 +888,7 @@ impl Mechanism {
             acceleration: qdd,
             jerk,
             contact_world: c,
-            contact_cam: profile.position(touch.u),
+            contact_cam: body_a.p,
             cam_param: touch.u,
             follower_param: u_b,
             sliding_rate_cam: k.sliding_rate_a,
@@ -848,6 +902,69 @@ impl Mechanism {
             at_breakpoint,
             found,
         })
+    }
+
+    /// True when `u` is within the breakpoint tolerance of a node of the profile.
+    fn at_breakpoint(&self, u: f64) -> bool {
+        let bp = &self.breakpoints;
+        if bp.is_empty() {
+            return false;
+        }
+        let tol = self.options.breakpoint_tolerance * self.period;
+        let i = bp.partition_point(|&b| b <= u);
+        let below = if i == 0 {
+            bp[bp.len() - 1] - self.period
+        } else {
+            bp[i - 1]
+        };
+        let above = if i < bp.len() {
+            bp[i]
+        } else {
+            bp[0] + self.period
+        };
+        u - below < tol || above - u < tol
+    }
+}
+
+/// Most start candidates refined by the global search.
+pub const MAX_CANDIDATES: usize = 8;
+
+/// The best few start candidates `(oriented score, u, q)`, best first, kept without allocating.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Candidates {
+    items: [(f64, f64, f64); MAX_CANDIDATES],
+    len: usize,
+    cap: usize,
+}
+
+impl Candidates {
+    pub(crate) fn new(cap: usize) -> Self {
+        Self {
+            items: [(0.0, 0.0, 0.0); MAX_CANDIDATES],
+            len: 0,
+            cap: cap.clamp(1, MAX_CANDIDATES),
+        }
+    }
+    pub(crate) fn push(&mut self, c: (f64, f64, f64)) {
+        if self.len == self.cap {
+            if !(c.0 > self.items[self.len - 1].0) {
+                return;
+            }
+            self.len -= 1;
+        }
+        let mut i = self.len;
+        while i > 0 && self.items[i - 1].0 < c.0 {
+            self.items[i] = self.items[i - 1];
+            i -= 1;
+        }
+        self.items[i] = c;
+        self.len += 1;
+    }
+    pub(crate) fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+    pub(crate) fn as_slice(&self) -> &[(f64, f64, f64)] {
+        &self.items[..self.len]
     }
 }
 
@@ -882,13 +999,13 @@ mod tests {
     #[test]
     fn back_side_stationary_point_is_not_a_first_touch() {
         let m = paper();
-        let cam = m.cam.state(0.0);
+        let frame = m.cam.state(0.0).frame();
         // Newton from the far side converges to the leftmost point, a stationary point of x·d
-        let back = m.newton(0.0, &cam, 4.5, -2.8).unwrap();
+        let back = m.newton(0.0, &frame, 4.5, -2.8).unwrap();
         assert!(back.q < 0.0);
-        assert!(!m.is_first_touch(&cam, &back));
-        let front = m.newton(0.0, &cam, 0.1, 4.9).unwrap();
-        assert!(m.is_first_touch(&cam, &front));
+        assert!(!m.is_first_touch(&frame, &back));
+        let front = m.newton(0.0, &frame, 0.1, 4.9).unwrap();
+        assert!(m.is_first_touch(&frame, &front));
         assert!((front.q - 5.0).abs() < 1e-14);
     }
 

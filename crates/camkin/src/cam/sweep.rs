@@ -8,7 +8,7 @@
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
 use super::{CamError, FollowerState, Mechanism, Touch};
-use crate::body::BodyState;
+use crate::body::Frame;
 
 /// How the contact at an angle was found.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -53,11 +53,12 @@ impl<'a> Sweep<'a> {
     pub fn step(&mut self, theta: f64) -> Result<FollowerState, CamError> {
         let m = self.mech;
         let cam = m.cam.state(theta);
+        let frame = cam.frame();
         let found = match self.prev {
-            Some(p) if (theta - p.theta).abs() <= MAX_WARM_STEP => self.warm(theta, &cam, p),
-            _ => m.global_touch(theta, &cam).map(|t| (t, Found::Global)),
+            Some(p) if (theta - p.theta).abs() <= MAX_WARM_STEP => self.warm(theta, &frame, p),
+            _ => m.global_touch(theta, &frame).map(|t| (t, Found::Global)),
         };
-        let result = found.and_then(|(t, f)| m.kinematics(theta, &cam, t, f));
+        let result = found.and_then(|(t, f)| m.kinematics(theta, &cam, &frame, t, f));
         self.prev = match &result {
             Ok(s) => {
                 let rate = m.cam.speed;
@@ -66,7 +67,7 @@ impl<'a> Sweep<'a> {
                     u: s.cam_param,
                     q: s.position,
                     du_dtheta: s.sliding_rate_cam
-                        / cam.eval_curve(m.cam.profile(), s.cam_param).d1.norm()
+                        / m.cam.profile().eval(s.cam_param).d1.norm()
                         / rate,
                     dq_dtheta: s.velocity / rate,
                 })
@@ -76,22 +77,28 @@ impl<'a> Sweep<'a> {
         result
     }
 
-    fn warm(&self, theta: f64, cam: &BodyState, p: Prev) -> Result<(Touch, Found), CamError> {
+    fn warm(&self, theta: f64, frame: &Frame, p: Prev) -> Result<(Touch, Found), CamError> {
         let m = self.mech;
         let dt = theta - p.theta;
         let u0 = p.u + p.du_dtheta * dt;
         let q0 = p.q + p.dq_dtheta * dt;
-        match m.newton(theta, cam, u0, q0) {
-            Ok(t) if m.is_first_touch(cam, &t) => {
-                if m.convex && !m.geometry.is_knife() {
-                    return Ok((t, Found::WarmStart));
-                }
+        match m.newton(theta, frame, u0, q0) {
+            Ok(t) if m.is_first_touch(frame, &t) => {
+                // on a convex profile the first touch is unique: nothing can overtake it
                 if m.convex {
-                    // a knife edge on a convex cam: the outer crossing is the only one near
                     return Ok((t, Found::WarmStart));
                 }
-                // non-convex profile: does another part touch first?
-                let g = m.global_touch(theta, cam)?;
+                // non-convex: another part of the profile touches first if a sample does (a
+                // sampled score is an exact first touch of that point)
+                let ahead = if m.geometry.is_knife() {
+                    true
+                } else {
+                    m.best_sampled_score(frame) > m.oriented(t.q) + m.touch_slack()
+                };
+                if !ahead {
+                    return Ok((t, Found::WarmStart));
+                }
+                let g = m.global_touch(theta, frame)?;
                 if m.oriented(g.q) > m.oriented(t.q) + m.touch_slack() {
                     Ok((
                         g,
@@ -103,7 +110,7 @@ impl<'a> Sweep<'a> {
                     Ok((t, Found::WarmStart))
                 }
             }
-            _ => m.global_touch(theta, cam).map(|t| (t, Found::Global)),
+            _ => m.global_touch(theta, frame).map(|t| (t, Found::Global)),
         }
     }
 }
