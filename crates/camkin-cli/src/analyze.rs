@@ -122,7 +122,7 @@ fn fields(angle_deg: f64, r: &Result<FollowerState, camkin::cam::CamError>) -> V
                 Num(s.normal.x),
                 Num(s.normal.y),
                 Num(s.sigma),
-                Num(s.pressure_angle.to_degrees()),
+                Num(s.pressure_angle().to_degrees()),
                 Num(s.radius_of_curvature),
                 Num(f64::from(u8::from(s.at_breakpoint))),
                 Text(found.into()),

@@ -193,7 +193,7 @@ fn kinematics(
         chart(
             "pressure angle",
             "degrees",
-            series(&|s| Some(s.pressure_angle.to_degrees())),
+            series(&|s| Some(s.pressure_angle().to_degrees())),
         ),
         chart(
             "cam radius of curvature at contact",

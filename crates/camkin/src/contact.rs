@@ -552,9 +552,10 @@ impl ContactKinematics {
             });
         }
         let c = pairing.point_a;
-        let t_a = ea.tangent();
+        let inv_ga = 1.0 / g_a;
+        let t_a = ea.d1 * inv_ga;
         let nu = perp(t_a);
-        let kappa_a = ea.curvature();
+        let kappa_a = cross(ea.d1, ea.d2) * (inv_ga * inv_ga * inv_ga);
         let (wa, wb) = (body_a.omega, body_b.omega);
         let va = body_a.velocity_at(c);
         let vb = body_b.velocity_at(c);
@@ -562,12 +563,8 @@ impl ContactKinematics {
         let (sigma, kappa_b, d, sa, sb, ub_dot) = if b_point {
             (-1.0, f64::INFINITY, f64::INFINITY, w, 0.0, 0.0)
         } else {
-            let sigma = if t_a.dot(&eb.tangent()) >= 0.0 {
-                1.0
-            } else {
-                -1.0
-            };
-            let kappa_b = eb.curvature();
+            let sigma = if t_a.dot(&eb.d1) >= 0.0 { 1.0 } else { -1.0 };
+            let kappa_b = cross(eb.d1, eb.d2) / (g_b * g_b * g_b);
             let d = kappa_b - sigma * kappa_a;
             if !(d.abs() > conformal_tolerance * (kappa_a.abs() + kappa_b.abs())) {
                 return Err(ContactError::Conformal {
@@ -577,8 +574,9 @@ impl ContactKinematics {
                     sigma,
                 });
             }
-            let sa = (sigma * (wa - wb) + kappa_b * w) / d; // eq. 5
-            let sb = (kappa_a * w + wa - wb) / d; // eq. 6
+            let inv_d = 1.0 / d;
+            let sa = (sigma * (wa - wb) + kappa_b * w) * inv_d; // eq. 5
+            let sb = (kappa_a * w + wa - wb) * inv_d; // eq. 6
             (sigma, kappa_b, d, sa, sb, sb / g_b)
         };
         let ra = c - body_a.pose.origin;
@@ -603,7 +601,7 @@ impl ContactKinematics {
             d,
             sliding_rate_a: sa,
             sliding_rate_b: sb,
-            param_rate_a: sa / g_a,
+            param_rate_a: sa * inv_ga,
             param_rate_b: ub_dot,
             normal_velocity: nu.dot(&(va - vb)),
             phi_q: [

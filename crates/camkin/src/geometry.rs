@@ -34,6 +34,9 @@ impl Rot {
     /// The rotation by `angle` radians.
     #[inline]
     pub fn new(angle: f64) -> Self {
+        if angle == 0.0 {
+            return Self { cos: 1.0, sin: 0.0 };
+        }
         let (sin, cos) = angle.sin_cos();
         Self { cos, sin }
     }

@@ -18,7 +18,7 @@
 pub(crate) struct Knots {
     /// `n + 1` knots from 0 to the period.
     pub(crate) u: Vec<f64>,
-    /// `Some(h)` when the knots are `i h` (segment lookup by division).
+    /// `Some(1/h)` when the knots are `i h` (segment lookup by multiplication).
     pub(crate) uniform: Option<f64>,
 }
 
@@ -26,7 +26,7 @@ impl Knots {
     pub(crate) fn uniform(n: usize, h: f64) -> Self {
         Self {
             u: (0..=n).map(|i| i as f64 * h).collect(),
-            uniform: Some(h),
+            uniform: Some(1.0 / h),
         }
     }
 
@@ -65,7 +65,7 @@ impl Knots {
             u.rem_euclid(p)
         };
         let i = match self.uniform {
-            Some(h) => ((w / h) as usize).min(n - 1),
+            Some(inv_h) => ((w * inv_h) as usize).min(n - 1),
             None => {
                 // last knot index ≤ w
                 let k = self.u.partition_point(|&k| k <= w);

@@ -20,7 +20,7 @@ mod sweep;
 pub use follower::{Follower, Sense};
 pub use sweep::{Found, Sweep};
 
-use crate::body::{BodyState, Frame};
+use crate::body::{BodyState, Frame, WorldDerivs};
 use crate::contact::{
     ContactError, ContactKinematics, NormalAcceleration, Pairing, CONFORMAL_TOLERANCE,
 };
@@ -182,6 +182,10 @@ pub struct AnalysisOptions {
     pub breakpoint_tolerance: f64,
     /// Compute the jerk (three more orders of implicit differentiation per angle).
     pub jerk: bool,
+    /// A bound `C` (1/length) on Newton's quadratic convergence: a step `δ` leaves an error of
+    /// about `C δ²`, so a step whose `C δ²` is below [`AnalysisOptions::position_tolerance`] is
+    /// accepted without another evaluation. Conservative by default (`10³/size`).
+    pub newton_contraction: f64,
 }
 
 impl AnalysisOptions {
@@ -201,6 +205,7 @@ impl AnalysisOptions {
             max_step_fraction: 0.1,
             breakpoint_tolerance: 1e-9,
             jerk: true,
+            newton_contraction: 1e3 / size,
         }
     }
 }
@@ -302,6 +307,9 @@ pub struct FollowerState {
     pub contact_cam: Point2,
     /// the cam-profile parameter at the contact, in `[0, period)`
     pub cam_param: f64,
+    /// `u̇_A = ṡ_A/g_A`: rate of the cam parameter at the contact, relative to the cam, 1/s
+    /// (eq. 7)
+    pub cam_param_rate: f64,
     /// the follower-curve parameter at the contact (line: arc length; roller: angle in the
     /// follower frame; knife: 0)
     pub follower_param: f64,
@@ -318,9 +326,10 @@ pub struct FollowerState {
     pub normal: Vec2,
     /// `σ`
     pub sigma: f64,
-    /// pressure angle: from the direction of motion of the follower's point at the contact to
-    /// the contact normal (oriented towards the follower), rad, counter-clockwise positive
-    pub pressure_angle: f64,
+    /// direction of motion of the follower's material point under the contact per unit rate of
+    /// its coordinate (`∂v_B^P/∂q̇`: `d` for translating followers, `k × (c − O)` for
+    /// oscillating ones), world frame; see [`FollowerState::pressure_angle`]
+    pub follower_motion: Vec2,
     /// radius of curvature of the cam profile at the contact, positive where convex (∞ on a
     /// straight stretch), length
     pub radius_of_curvature: f64,
@@ -537,19 +546,34 @@ impl Mechanism {
         &self,
         theta: f64,
         frame: &Frame,
+        u: f64,
+        q: f64,
+    ) -> Result<Touch, CamError> {
+        self.newton_at(theta, frame, u, q).map(|(t, _)| t)
+    }
+
+    /// Newton on the tangency residual from `(u, q)`; also returns the cam point of the last
+    /// iterate (within the position tolerance of the converged one).
+    pub(crate) fn newton_at(
+        &self,
+        theta: f64,
+        frame: &Frame,
         mut u: f64,
         mut q: f64,
-    ) -> Result<Touch, CamError> {
+    ) -> Result<(Touch, WorldDerivs), CamError> {
         let profile = self.cam.profile.as_ref();
         let tol = self.options.position_tolerance;
+        let tol2 = tol * tol;
+        // C² δ⁴ ≤ tol²: the next step would be below the tolerance
+        let c2 = self.options.newton_contraction * self.options.newton_contraction;
         let qs = self.q_scale();
         let lim = self.options.max_step_fraction * self.period;
         for _ in 0..self.options.max_iterations {
             let e = frame.eval(profile, u);
             let (f, j) = self.geometry.residual(&e, q);
-            let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-            let du = (-f[0] * j[1][1] + f[1] * j[0][1]) / det;
-            let dq = (-j[0][0] * f[1] + j[1][0] * f[0]) / det;
+            let inv_det = 1.0 / (j[0][0] * j[1][1] - j[0][1] * j[1][0]);
+            let du = (-f[0] * j[1][1] + f[1] * j[0][1]) * inv_det;
+            let dq = (-j[0][0] * f[1] + j[1][0] * f[0]) * inv_det;
             if !(du.is_finite() && dq.is_finite()) {
                 return Err(CamError::NoConvergence {
                     angle_deg: theta.to_degrees(),
@@ -560,14 +584,14 @@ impl Mechanism {
             let du = du.clamp(-lim, lim);
             u += du;
             q += dq;
-            let step = (du * e.d1.norm()).abs().max((dq * qs).abs());
-            if step <= tol {
+            let step2 = (du * du * e.d1.norm_squared()).max(dq * dq * qs * qs);
+            if step2 <= tol2 || c2 * step2 * step2 <= tol2 {
                 let u = if (0.0..self.period).contains(&u) {
                     u
                 } else {
                     u.rem_euclid(self.period)
                 };
-                return Ok(Touch { u, q });
+                return Ok((Touch { u, q }, e));
             }
         }
         Err(CamError::NoConvergence {
@@ -579,7 +603,12 @@ impl Mechanism {
     /// True when `(u, q)` is the follower's first touch through that cam point (not another
     /// tangency such as the cam's back side or a roller touching from inside).
     pub(crate) fn is_first_touch(&self, frame: &Frame, t: &Touch) -> bool {
-        let e = frame.eval(self.cam.profile.as_ref(), t.u);
+        self.is_first_touch_at(&frame.eval(self.cam.profile.as_ref(), t.u), t.q)
+    }
+
+    /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
+    pub(crate) fn is_first_touch_at(&self, e: &WorldDerivs, q: f64) -> bool {
+        let t = Touch { u: 0.0, q };
         let x = e.p;
         // the cam's outward normal must face the follower
         let outward = -self.orientation * e.as_derivs().normal();
@@ -603,14 +632,13 @@ impl Mechanism {
         }
     }
 
-    /// Start candidates for a knife edge: the crossings of its line of travel with the densely
-    /// sampled profile (linear interpolation between samples), best first.
-    fn knife_starts(&self, frame: &Frame, out: &mut Candidates) {
+    /// Start candidates for a knife edge: the crossings of its line of travel with the profile
+    /// sampled at `s` (linear interpolation between samples), best first.
+    fn knife_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) {
         let Kind::Translating { d, p, e, .. } = self.geometry.kind else {
             return;
         };
         let profile = self.cam.profile.as_ref();
-        let s = &self.samples;
         let n = s.len();
         let y = |k: usize| frame.position(profile, s[k]) - self.cam.pivot;
         let (y0, mut ya) = (y(0), y(0));
@@ -670,13 +698,23 @@ impl Mechanism {
     }
 
     /// Global first touch. A convex profile's first-touch function has one maximum: its best
-    /// coarse sample is refined by Newton. Otherwise (and for a knife edge, whose crossings need
-    /// the dense sampling) the best local maxima of the densely sampled function are refined and
-    /// the best first touch among them is kept.
+    /// coarse sample (for a knife edge, the outer crossing found by the coarse scan) is refined by
+    /// Newton. Otherwise, or when that start fails, the best local maxima of the densely sampled
+    /// function (the crossings, for a knife edge) are refined and the best first touch among them
+    /// is kept.
     pub(crate) fn global_touch(&self, theta: f64, frame: &Frame) -> Result<Touch, CamError> {
         let knife = self.geometry.is_knife();
-        if self.convex && !knife {
-            if let Some((_, u0, q0)) = self.best_sample(frame, &self.coarse) {
+        if self.convex {
+            // a knife's line crosses a convex profile twice: the coarse scan finds the outer
+            // crossing unless the line only grazes the profile (then the dense scan below)
+            let start = if knife {
+                let mut c = Candidates::new(1);
+                self.knife_starts(frame, &self.coarse, &mut c);
+                c.as_slice().first().copied()
+            } else {
+                self.best_sample(frame, &self.coarse)
+            };
+            if let Some((_, u0, q0)) = start {
                 if let Ok(t) = self.newton(theta, frame, u0, q0) {
                     if self.is_first_touch(frame, &t) {
                         return Ok(t);
@@ -686,7 +724,7 @@ impl Mechanism {
         }
         let mut starts = Candidates::new(self.options.candidates);
         let best_sample = if knife {
-            self.knife_starts(frame, &mut starts);
+            self.knife_starts(frame, &self.samples, &mut starts);
             f64::NEG_INFINITY // a knife's interpolated crossings are not exact touches
         } else {
             self.score_starts(frame, &self.samples, &mut starts)
@@ -827,15 +865,10 @@ impl Mechanism {
         let jb = g.velocity_jacobian(c);
         // velocity constraint Φ_q q̇ = 0: ν·v_A^P = q̇ ν·J_B
         let den = nu.dot(&jb);
-        let pressure_angle = {
-            let jhat = jb / jb.norm();
-            let npush = if den >= 0.0 { nu } else { -nu };
-            cross(jhat, npush).atan2(jhat.dot(&npush))
-        };
         if !(den.abs() > self.options.lock_tolerance * jb.norm()) {
             return Err(CamError::Locked {
                 angle_deg,
-                pressure_angle_deg: pressure_angle.to_degrees(),
+                pressure_angle_deg: pressure_angle(jb, nu).to_degrees(),
             });
         }
         let qd = nu.dot(&cam.velocity_at(c)) / den;
@@ -890,6 +923,7 @@ impl Mechanism {
             contact_world: c,
             contact_cam: body_a.p,
             cam_param: touch.u,
+            cam_param_rate: k.param_rate_a,
             follower_param: u_b,
             sliding_rate_cam: k.sliding_rate_a,
             sliding_rate_follower: k.sliding_rate_b,
@@ -897,7 +931,7 @@ impl Mechanism {
             normal_acceleration_follower: k.normal_acceleration_b(&body_b),
             normal: nu,
             sigma: k.sigma,
-            pressure_angle,
+            follower_motion: jb,
             radius_of_curvature: 1.0 / kappa_conv,
             at_breakpoint,
             found,
@@ -923,6 +957,22 @@ impl Mechanism {
             bp[0] + self.period
         };
         u - below < tol || above - u < tol
+    }
+}
+
+/// The angle from the direction of motion `jb` of the follower's point to the contact normal
+/// `nu` oriented towards the follower, rad, counter-clockwise positive.
+fn pressure_angle(jb: Vec2, nu: Vec2) -> f64 {
+    let npush = if nu.dot(&jb) >= 0.0 { nu } else { -nu };
+    cross(jb, npush).atan2(jb.dot(&npush))
+}
+
+impl FollowerState {
+    /// Pressure angle: from the direction of motion of the follower's point at the contact
+    /// ([`FollowerState::follower_motion`]) to the contact normal oriented towards the follower,
+    /// rad, counter-clockwise positive.
+    pub fn pressure_angle(&self) -> f64 {
+        pressure_angle(self.follower_motion, self.normal)
     }
 }
 

@@ -1,8 +1,8 @@
 //! Sweeps over cam angles that warm-start each angle from the previous contact.
 //!
-//! The previous contact `(u, q)` is extrapolated to the new angle with its rates
-//! (`du/dθ = u̇_A/θ̇`, `dq/dθ = q̇/θ̇`) and polished by the same Newton iteration as the global
-//! search. A guard then checks that the contact has not jumped to another part of the profile:
+//! The previous contact `(u, q)` is extrapolated to the new angle to second order (`dq/dθ`,
+//! `d²q/dθ²` from the velocity and acceleration, `du/dθ = u̇_A/θ̇` and its difference quotient
+//! over the last step) and polished by the same Newton iteration as the global search. A guard then checks that the contact has not jumped to another part of the profile:
 //! on a convex profile the first touch is unique and no guard is needed; on a non-convex one the
 //! sampled first-touch function is compared with the warm contact, and if another part of the
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
@@ -39,6 +39,10 @@ struct Prev {
     q: f64,
     du_dtheta: f64,
     dq_dtheta: f64,
+    /// `d²q/dθ²`, exact from the acceleration
+    d2q_dtheta2: f64,
+    /// `d²u/dθ²` from the last two rates (0 after a global search)
+    d2u_dtheta2: f64,
 }
 
 /// Largest angle step (rad) over which the previous contact is used as a start.
@@ -62,14 +66,26 @@ impl<'a> Sweep<'a> {
         self.prev = match &result {
             Ok(s) => {
                 let rate = m.cam.speed;
+                let inv_rate = 1.0 / rate;
+                let du = s.cam_param_rate * inv_rate;
+                // the second derivative of u from the last two rates, when they are close
+                let d2u = match self.prev {
+                    Some(p) if matches!(s.found, Found::WarmStart) && theta != p.theta => {
+                        (du - p.du_dtheta) / (theta - p.theta)
+                    }
+                    _ => 0.0,
+                };
                 Some(Prev {
                     theta,
                     u: s.cam_param,
                     q: s.position,
-                    du_dtheta: s.sliding_rate_cam
-                        / m.cam.profile().eval(s.cam_param).d1.norm()
-                        / rate,
-                    dq_dtheta: s.velocity / rate,
+                    du_dtheta: du,
+                    dq_dtheta: s.velocity * inv_rate,
+                    d2q_dtheta2: (s.acceleration
+                        - m.cam.angular_acceleration * s.velocity * inv_rate)
+                        * inv_rate
+                        * inv_rate,
+                    d2u_dtheta2: d2u,
                 })
             }
             Err(_) => None,
@@ -80,10 +96,11 @@ impl<'a> Sweep<'a> {
     fn warm(&self, theta: f64, frame: &Frame, p: Prev) -> Result<(Touch, Found), CamError> {
         let m = self.mech;
         let dt = theta - p.theta;
-        let u0 = p.u + p.du_dtheta * dt;
-        let q0 = p.q + p.dq_dtheta * dt;
-        match m.newton(theta, frame, u0, q0) {
-            Ok(t) if m.is_first_touch(frame, &t) => {
+        // second-order extrapolation: the start is off by O(Δθ³)
+        let u0 = p.u + dt * (p.du_dtheta + 0.5 * dt * p.d2u_dtheta2);
+        let q0 = p.q + dt * (p.dq_dtheta + 0.5 * dt * p.d2q_dtheta2);
+        match m.newton_at(theta, frame, u0, q0) {
+            Ok((t, e)) if m.is_first_touch_at(&e, t.q) => {
                 // on a convex profile the first touch is unique: nothing can overtake it
                 if m.convex {
                     return Ok((t, Found::WarmStart));

@@ -51,7 +51,7 @@ impl Derivs {
     /// Unit tangent `r'/|r'|`.
     #[inline]
     pub fn tangent(&self) -> Vec2 {
-        self.d1 / self.d1.norm()
+        self.d1 * (1.0 / self.d1.norm())
     }
     /// Left normal `k × t`.
     #[inline]
