@@ -664,17 +664,17 @@ impl Mechanism {
     fn score_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) -> f64 {
         let profile = self.cam.profile.as_ref();
         let n = s.len();
-        let score = |k: usize| self.geometry.score(frame.position(profile, s[k]));
+        let score = |u: f64| self.geometry.score(frame.position(profile, u));
         let val = |x: Option<(f64, f64)>| x.map_or(f64::NEG_INFINITY, |x| x.0);
-        let first = score(0);
-        let (mut prev, mut cur) = (score(n - 1), first);
+        let first = score(s[0]);
+        let (mut prev, mut cur) = (score(s[n - 1]), first);
         let mut best = f64::NEG_INFINITY;
-        for k in 0..n {
-            let next = if k + 1 < n { score(k + 1) } else { first };
+        for (k, &u) in s.iter().enumerate() {
+            let next = s.get(k + 1).map_or(first, |&v| score(v));
             if let Some((sc, q)) = cur {
                 best = best.max(sc);
                 if sc >= val(prev) && sc >= val(next) {
-                    out.push((sc, s[k], q));
+                    out.push((sc, u, q));
                 }
             }
             (prev, cur) = (cur, next);
