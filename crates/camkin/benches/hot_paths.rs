@@ -1,0 +1,127 @@
+//! Criterion benchmarks of the hot paths: `cargo bench -p camkin`.
+//!
+//! - `spline/eval`: one evaluation of the paper's cam profile (position and three derivatives);
+//! - `contact/closest_pair`: the general pairing-point search between a spline and an ellipse;
+//! - `contact/kinematics`: sliding rates, constraint row and right-hand side at a given pairing;
+//! - `cold/<follower>`: one analysis at an arbitrary cam angle (global search, velocity,
+//!   acceleration) for each follower type on the paper's cam;
+//! - `sweep/<follower>`: one warm-started step of a 0.05° sweep for each follower type.
+use camkin::body::{BodyState, Pose};
+use camkin::cam::{Cam, Follower, Mechanism, Sense};
+use camkin::contact::{closest_pair, ContactKinematics, SearchOptions, Surface};
+use camkin::curve::{Curve, Ellipse};
+use camkin::reference::{paper_mechanism, paper_profile};
+use camkin::{Point2, Vec2};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use std::sync::Arc;
+
+fn followers() -> Vec<Follower> {
+    vec![
+        Follower::TranslatingFlat {
+            direction: Vec2::x(),
+        },
+        Follower::TranslatingRoller {
+            direction: Vec2::y(),
+            offset: 0.7,
+            roller_radius: 1.2,
+        },
+        Follower::TranslatingKnife {
+            direction: Vec2::new(-1.0, 0.2),
+            offset: -0.4,
+        },
+        Follower::OscillatingFlat {
+            pivot: Point2::new(-3.0, 7.0),
+            face_offset: 0.5,
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+        },
+        Follower::OscillatingRoller {
+            pivot: Point2::new(-3.0, 7.0),
+            arm_length: 9.0,
+            roller_radius: 1.0,
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+        },
+    ]
+}
+
+fn mechanism(f: Follower) -> Mechanism {
+    let cam = Cam::from_rpm(
+        Arc::new(paper_profile(false)),
+        Point2::origin(),
+        Sense::Ccw,
+        1000.0,
+    )
+    .expect("cam");
+    let mut m = Mechanism::new(cam, f).expect("mechanism");
+    let mut o = *m.options();
+    o.jerk = false;
+    m.set_options(o);
+    m
+}
+
+fn spline(c: &mut Criterion) {
+    let s = paper_profile(false);
+    let mut u = 0.0;
+    c.bench_function("spline/eval", |b| {
+        b.iter(|| {
+            u = (u + 0.37) % 9.0;
+            black_box(s.eval(black_box(u)))
+        })
+    });
+}
+
+fn contact(c: &mut Criterion) {
+    let sp = paper_profile(false);
+    let el = Ellipse::new(Point2::origin(), 1.5, 1.0, 0.3).expect("ellipse");
+    let a = BodyState {
+        pose: Pose::new(Point2::origin(), 0.4),
+        velocity: Vec2::new(0.1, 0.0),
+        omega: 3.0,
+        acceleration: Vec2::zeros(),
+        alpha: 0.0,
+    };
+    let b = BodyState {
+        pose: Pose::new(Point2::new(7.0, 1.0), -0.2),
+        velocity: Vec2::new(0.0, -1.0),
+        omega: -2.0,
+        acceleration: Vec2::zeros(),
+        alpha: 0.0,
+    };
+    let opts = SearchOptions::for_length_scale(5.0);
+    let (sa, sb) = (Surface::new(&sp, &a), Surface::new(&el, &b));
+    c.bench_function("contact/closest_pair", |bch| {
+        bch.iter(|| black_box(closest_pair(&sa, &sb, &opts)))
+    });
+    let p = closest_pair(&sa, &sb, &opts).expect("pair");
+    c.bench_function("contact/kinematics", |bch| {
+        bch.iter(|| black_box(ContactKinematics::new(&sa, &sb, black_box(&p), 1e-9)))
+    });
+}
+
+fn followers_bench(c: &mut Criterion) {
+    let _ = paper_mechanism(false);
+    for f in followers() {
+        let m = mechanism(f);
+        let name = f.kind_name();
+        let mut k = 0u64;
+        c.bench_function(&format!("cold/{name}"), |b| {
+            b.iter(|| {
+                k = k.wrapping_add(1);
+                let th = (k as f64 * 137.50776405).rem_euclid(360.0).to_radians();
+                black_box(m.analyze(th))
+            })
+        });
+        let mut sweep = m.sweep();
+        let mut th = 0.0f64;
+        c.bench_function(&format!("sweep/{name}"), |b| {
+            b.iter(|| {
+                th += 0.05f64.to_radians();
+                black_box(sweep.step(th))
+            })
+        });
+    }
+}
+
+criterion_group!(benches, spline, contact, followers_bench);
+criterion_main!(benches);
