@@ -3,9 +3,10 @@
 //! - `spline/eval`: one evaluation of the paper's cam profile (position and three derivatives);
 //! - `contact/closest_pair`: the general pairing-point search between a spline and an ellipse;
 //! - `contact/kinematics`: sliding rates, constraint row and right-hand side at a given pairing;
-//! - `cold/<follower>`: one analysis at an arbitrary cam angle (global search, velocity,
-//!   acceleration) for each follower type on the paper's cam;
-//! - `sweep/<follower>`: one warm-started step of a 0.05° sweep for each follower type.
+//! - `cold/<follower>`: one query at an arbitrary cam angle (global search, velocity,
+//!   acceleration: `Mechanism::motion`) for each follower type on the paper's cam;
+//! - `sweep/<follower>`: one warm-started step of a 0.05° sweep (`Sweep::step_motion`);
+//! - `sweep_full_state/translating-flat`: the same with every output (`Sweep::step`, no jerk).
 use camkin::body::{BodyState, Pose};
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
 use camkin::contact::{closest_pair, ContactKinematics, SearchOptions, Surface};
@@ -109,7 +110,7 @@ fn followers_bench(c: &mut Criterion) {
             b.iter(|| {
                 k = k.wrapping_add(1);
                 let th = (k as f64 * 137.50776405).rem_euclid(360.0).to_radians();
-                black_box(m.analyze(th))
+                black_box(m.motion(th))
             })
         });
         let mut sweep = m.sweep();
@@ -117,10 +118,20 @@ fn followers_bench(c: &mut Criterion) {
         c.bench_function(&format!("sweep/{name}"), |b| {
             b.iter(|| {
                 th += 0.05f64.to_radians();
-                black_box(sweep.step(th))
+                black_box(sweep.step_motion(th))
             })
         });
     }
+    // the full analysis (every output but the jerk), flat face
+    let m = mechanism(followers()[0]);
+    let mut sweep = m.sweep();
+    let mut th = 0.0f64;
+    c.bench_function("sweep_full_state/translating-flat", |b| {
+        b.iter(|| {
+            th += 0.05f64.to_radians();
+            black_box(sweep.step(th))
+        })
+    });
 }
 
 criterion_group!(benches, spline, contact, followers_bench);

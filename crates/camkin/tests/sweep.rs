@@ -117,3 +117,28 @@ fn roller_on_non_convex_cam_jumps_too() {
     assert!(global_jumps >= 2, "global jumps {global_jumps}");
     assert_eq!(jumps, global_jumps, "jumps flagged by the sweep");
 }
+
+#[test]
+fn motion_fast_path_equals_full_analysis() {
+    for f in all_followers(Point2::origin()) {
+        let m = mechanism(paper_profile(true), Point2::origin(), Sense::Cw, 800.0, f);
+        let mut full = m.sweep();
+        let mut fast = m.sweep();
+        for k in 0..720 {
+            let th = (k as f64 * 0.5).to_radians();
+            let (a, b) = (full.step(th).unwrap(), fast.step_motion(th).unwrap());
+            assert_eq!(
+                (a.position, a.velocity, a.acceleration, a.cam_param),
+                (b.position, b.velocity, b.acceleration, b.cam_param),
+                "{}",
+                f.kind_name()
+            );
+            let c = m.motion(th).unwrap();
+            let d = m.analyze(th).unwrap();
+            assert_eq!(
+                (c.position, c.velocity, c.acceleration),
+                (d.position, d.velocity, d.acceleration)
+            );
+        }
+    }
+}

@@ -340,6 +340,39 @@ pub struct FollowerState {
     pub found: Found,
 }
 
+/// The follower's motion at one cam angle: position, velocity and acceleration by the contact
+/// method with nothing else computed (the fast path for sweeps and dynamics). Units as in
+/// [`FollowerState`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Motion {
+    /// cam angle `θ`, rad
+    pub cam_angle: f64,
+    /// position `q`
+    pub position: f64,
+    /// velocity `q̇`
+    pub velocity: f64,
+    /// acceleration `q̈` (eq. 11)
+    pub acceleration: f64,
+    /// the cam-profile parameter at the contact
+    pub cam_param: f64,
+    /// its rate `u̇_A` relative to the cam, 1/s
+    pub cam_param_rate: f64,
+    /// how the contact was found
+    pub found: Found,
+}
+
+/// The shared part of an analysis at a converged touch.
+struct Core {
+    body_a: crate::curve::Derivs,
+    ea: WorldDerivs,
+    nu: Vec2,
+    jb: Vec2,
+    qd: f64,
+    qdd: f64,
+    u_b: f64,
+    k: ContactKinematics,
+}
+
 /// A converged first touch: cam parameter and follower position.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Touch {
@@ -510,6 +543,36 @@ impl Mechanism {
         self.kinematics(theta, &cam, &frame, touch, Found::Global)
     }
 
+    /// The follower's position, velocity and acceleration only at cam angle `theta` (rad): the
+    /// same contact method as [`Mechanism::analyze`] without the other outputs.
+    pub fn motion(&self, theta: f64) -> Result<Motion, CamError> {
+        let cam = self.cam.state(theta);
+        let frame = cam.frame();
+        let touch = self.global_touch(theta, &frame)?;
+        self.motion_at(theta, &cam, &frame, touch, Found::Global)
+    }
+
+    #[inline]
+    pub(crate) fn motion_at(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        frame: &Frame,
+        touch: Touch,
+        found: Found,
+    ) -> Result<Motion, CamError> {
+        let c = self.core(theta, cam, frame, touch)?;
+        Ok(Motion {
+            cam_angle: theta,
+            position: touch.q,
+            velocity: c.qd,
+            acceleration: c.qdd,
+            cam_param: touch.u,
+            cam_param_rate: c.k.param_rate_a,
+            found,
+        })
+    }
+
     /// As [`Mechanism::analyze`] with the angle in degrees.
     pub fn analyze_deg(&self, theta_deg: f64) -> Result<FollowerState, CamError> {
         self.analyze(theta_deg.to_radians())
@@ -554,6 +617,7 @@ impl Mechanism {
 
     /// Newton on the tangency residual from `(u, q)`; also returns the cam point of the last
     /// iterate (within the position tolerance of the converged one).
+    #[inline]
     pub(crate) fn newton_at(
         &self,
         theta: f64,
@@ -607,6 +671,7 @@ impl Mechanism {
     }
 
     /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
+    #[inline]
     pub(crate) fn is_first_touch_at(&self, e: &WorldDerivs, q: f64) -> bool {
         let t = Touch { u: 0.0, q };
         let x = e.p;
@@ -847,14 +912,16 @@ impl Mechanism {
     }
 
     /// Velocity, acceleration and contact data at a converged touch (paper eqs. 5, 6, 1, 2, 11).
-    pub(crate) fn kinematics(
+    /// The contact method at a converged touch: velocity from the velocity constraint, sliding
+    /// rates (eqs. 5, 6) and acceleration from the acceleration constraint (eq. 11).
+    #[inline]
+    fn core(
         &self,
         theta: f64,
         cam: &BodyState,
         frame: &Frame,
         touch: Touch,
-        found: Found,
-    ) -> Result<FollowerState, CamError> {
+    ) -> Result<Core, CamError> {
         let g = &self.geometry;
         let profile = self.cam.profile.as_ref();
         let angle_deg = theta.to_degrees();
@@ -904,6 +971,38 @@ impl Mechanism {
             Kind::Oscillating { .. } => phi[5],
         };
         let qdd = (k.gamma - known) / coef;
+        Ok(Core {
+            body_a,
+            ea,
+            nu,
+            jb,
+            qd,
+            qdd,
+            u_b,
+            k,
+        })
+    }
+
+    pub(crate) fn kinematics(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        frame: &Frame,
+        touch: Touch,
+        found: Found,
+    ) -> Result<FollowerState, CamError> {
+        let Core {
+            body_a,
+            ea,
+            nu,
+            jb,
+            qd,
+            qdd,
+            u_b,
+            k,
+        } = self.core(theta, cam, frame, touch)?;
+        let g = &self.geometry;
+        let c = ea.p;
         let body_b = g.body(touch.q, qd, qdd);
         let kappa_conv = self.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);

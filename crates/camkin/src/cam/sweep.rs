@@ -7,8 +7,8 @@
 //! sampled first-touch function is compared with the warm contact, and if another part of the
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
-use super::{CamError, FollowerState, Mechanism, Touch};
-use crate::body::Frame;
+use super::{CamError, FollowerState, Mechanism, Motion, Touch};
+use crate::body::{BodyState, Frame};
 
 /// How the contact at an angle was found.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -55,44 +55,87 @@ impl<'a> Sweep<'a> {
 
     /// Analyses the next cam angle `theta` (rad).
     pub fn step(&mut self, theta: f64) -> Result<FollowerState, CamError> {
+        let r = self
+            .locate(theta)
+            .and_then(|(cam, frame, t, f)| self.mech.kinematics(theta, &cam, &frame, t, f));
+        self.remember(
+            theta,
+            r.as_ref().ok().map(|s| {
+                (
+                    s.cam_param,
+                    s.cam_param_rate,
+                    s.position,
+                    s.velocity,
+                    s.acceleration,
+                    s.found,
+                )
+            }),
+        );
+        r
+    }
+
+    /// The follower's position, velocity and acceleration only at the next cam angle `theta`
+    /// (rad): the fast path ([`Mechanism::motion`]).
+    pub fn step_motion(&mut self, theta: f64) -> Result<Motion, CamError> {
+        let r = self
+            .locate(theta)
+            .and_then(|(cam, frame, t, f)| self.mech.motion_at(theta, &cam, &frame, t, f));
+        self.remember(
+            theta,
+            r.as_ref().ok().map(|s| {
+                (
+                    s.cam_param,
+                    s.cam_param_rate,
+                    s.position,
+                    s.velocity,
+                    s.acceleration,
+                    s.found,
+                )
+            }),
+        );
+        r
+    }
+
+    /// The contact at `theta`: warm-started from the previous angle when there is one.
+    #[inline]
+    fn locate(&self, theta: f64) -> Result<(BodyState, Frame, Touch, Found), CamError> {
         let m = self.mech;
         let cam = m.cam.state(theta);
         let frame = cam.frame();
-        let found = match self.prev {
-            Some(p) if (theta - p.theta).abs() <= MAX_WARM_STEP => self.warm(theta, &frame, p),
-            _ => m.global_touch(theta, &frame).map(|t| (t, Found::Global)),
+        let (t, f) = match self.prev {
+            Some(p) if (theta - p.theta).abs() <= MAX_WARM_STEP => self.warm(theta, &frame, p)?,
+            _ => (m.global_touch(theta, &frame)?, Found::Global),
         };
-        let result = found.and_then(|(t, f)| m.kinematics(theta, &cam, &frame, t, f));
-        self.prev = match &result {
-            Ok(s) => {
-                let rate = m.cam.speed;
-                let inv_rate = 1.0 / rate;
-                let du = s.cam_param_rate * inv_rate;
-                // the second derivative of u from the last two rates, when they are close
-                let d2u = match self.prev {
-                    Some(p) if matches!(s.found, Found::WarmStart) && theta != p.theta => {
-                        (du - p.du_dtheta) / (theta - p.theta)
-                    }
-                    _ => 0.0,
-                };
-                Some(Prev {
-                    theta,
-                    u: s.cam_param,
-                    q: s.position,
-                    du_dtheta: du,
-                    dq_dtheta: s.velocity * inv_rate,
-                    d2q_dtheta2: (s.acceleration
-                        - m.cam.angular_acceleration * s.velocity * inv_rate)
-                        * inv_rate
-                        * inv_rate,
-                    d2u_dtheta2: d2u,
-                })
-            }
-            Err(_) => None,
-        };
-        result
+        Ok((cam, frame, t, f))
     }
 
+    /// Keeps what the next angle's prediction needs: `(u, u̇, q, q̇, q̈, found)`.
+    #[inline]
+    fn remember(&mut self, theta: f64, r: Option<(f64, f64, f64, f64, f64, Found)>) {
+        let m = self.mech;
+        self.prev = r.map(|(u, u_rate, q, v, a, found)| {
+            let inv_rate = 1.0 / m.cam.speed;
+            let du = u_rate * inv_rate;
+            // the second derivative of u from the last two rates, when they are close
+            let d2u = match self.prev {
+                Some(p) if matches!(found, Found::WarmStart) && theta != p.theta => {
+                    (du - p.du_dtheta) / (theta - p.theta)
+                }
+                _ => 0.0,
+            };
+            Prev {
+                theta,
+                u,
+                q,
+                du_dtheta: du,
+                dq_dtheta: v * inv_rate,
+                d2q_dtheta2: (a - m.cam.angular_acceleration * v * inv_rate) * inv_rate * inv_rate,
+                d2u_dtheta2: d2u,
+            }
+        });
+    }
+
+    #[inline]
     fn warm(&self, theta: f64, frame: &Frame, p: Prev) -> Result<(Touch, Found), CamError> {
         let m = self.mech;
         let dt = theta - p.theta;
