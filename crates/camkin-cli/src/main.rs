@@ -1,17 +1,8 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
-mod analyze;
-mod bench;
-mod compare;
-mod mechfile;
-mod output;
-mod plot;
-mod plots;
-mod scene;
-mod study;
+use camkin_cli::{analyze, bench, compare, plot, Failure};
 
 use clap::{Parser, Subcommand};
-use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Exact cam-follower kinematics by the contact method of K. Lee (2005).
@@ -51,15 +42,6 @@ enum Command {
     Bench(bench::BenchArgs),
 }
 
-/// A failure and its exit code.
-#[derive(Debug)]
-pub enum Failure {
-    /// bad input: exit code 2
-    Input(anyhow::Error),
-    /// internal failure: exit code 1
-    Internal(anyhow::Error),
-}
-
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
@@ -78,19 +60,6 @@ fn main() -> ExitCode {
         Err(Failure::Internal(e)) => {
             eprintln!("internal error: {e:#}");
             ExitCode::from(1)
-        }
-    }
-}
-
-/// Loads the mechanism file, or the paper's built-in mechanism when none is given.
-pub fn load_mechanism(path: Option<&PathBuf>) -> Result<camkin::cam::Mechanism, Failure> {
-    match path {
-        Some(p) => mechfile::load(p).map_err(Failure::Input),
-        None => {
-            eprintln!(
-                "camkin: no mechanism file given; using the paper's cam (examples/paper.toml)"
-            );
-            Ok(mechfile::paper())
         }
     }
 }

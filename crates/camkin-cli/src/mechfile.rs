@@ -1,42 +1,61 @@
-//! Mechanism files (TOML): the schema of the README, turned into a [`camkin::cam::Mechanism`].
+//! Mechanism files (TOML): the schema of the README, validated and turned into a
+//! [`camkin::cam::Mechanism`].
 //!
-//! Lengths are in any one unit; angles in degrees. Unknown fields, and fields that do not belong to
-//! the chosen `kind`, are errors.
+//! Lengths are in any one unit; angles in degrees. Every error names the file, the line and
+//! column, the field and the offending value: unknown fields, fields that do not belong to the
+//! chosen `kind`, missing fields, wrong types, non-finite or out-of-range numbers, a zero
+//! direction, too few or repeated points, a self-intersecting or cusped profile, a follower that
+//! cannot reach the cam.
 
-use anyhow::{anyhow, Context, Result};
-use camkin::cam::{Cam, Follower, Mechanism, Sense};
-use camkin::curve::{read_points_file, Circle, ClosedSpline, Curve, Ellipse, Parameterization};
+use camkin::cam::{Cam, CamError, Follower, Mechanism, Sense};
+use camkin::curve::{Circle, ClosedSpline, Curve, CurveError, Ellipse, Parameterization};
 use camkin::{Point2, Vec2};
 use serde::Deserialize;
+use std::ops::Range;
 use std::path::Path;
 use std::sync::Arc;
+use toml::Spanned;
+
+/// Largest mechanism file read, bytes.
+pub const MAX_FILE_BYTES: u64 = 16 << 20;
+/// Most nodal points of a spline profile (inline or from a points file).
+pub const MAX_POINTS: usize = camkin::curve::MAX_POINTS;
+
+/// Bad input, with where it is.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct InputError {
+    /// the message, starting with `file:line:column:` when the place is known
+    pub message: String,
+}
+
+impl std::fmt::Display for InputError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for InputError {}
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct MechanismFile {
-    pub cam: CamSpec,
-    pub follower: FollowerSpec,
+struct FileSpec {
+    cam: Spanned<CamSpec>,
+    follower: Spanned<FollowerTable>,
 }
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct CamSpec {
-    /// rpm, > 0
-    pub speed_rpm: f64,
-    #[serde(default)]
-    pub direction: SenseSpec,
-    #[serde(default)]
-    pub pivot: [f64; 2],
-    /// optional constant angular acceleration, degrees/s², in the cam's direction of motion
-    #[serde(default)]
-    pub angular_acceleration_deg_s2: f64,
-    pub profile: ProfileSpec,
+struct CamSpec {
+    speed_rpm: Spanned<f64>,
+    direction: Option<Spanned<SenseSpec>>,
+    pivot: Option<Spanned<[f64; 2]>>,
+    angular_acceleration_deg_s2: Option<Spanned<f64>>,
+    profile: Spanned<ProfileTable>,
 }
 
-#[derive(Debug, Deserialize, Default, Clone, Copy)]
+#[derive(Debug, Deserialize, Clone, Copy)]
 #[serde(rename_all = "lowercase")]
-pub enum SenseSpec {
-    #[default]
+enum SenseSpec {
     Ccw,
     Cw,
 }
@@ -50,10 +69,9 @@ impl From<SenseSpec> for Sense {
     }
 }
 
-#[derive(Debug, Deserialize, Default, Clone, Copy)]
+#[derive(Debug, Deserialize, Clone, Copy)]
 #[serde(rename_all = "kebab-case")]
-pub enum ParamSpec {
-    #[default]
+enum ParamSpec {
     Uniform,
     ChordLength,
 }
@@ -67,220 +85,411 @@ impl From<ParamSpec> for Parameterization {
     }
 }
 
+/// `[cam.profile]`: every field of every kind; the kind decides which belong.
 #[derive(Debug, Deserialize)]
-#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
-pub enum ProfileSpec {
-    Spline {
-        points: Vec<[f64; 2]>,
-        #[serde(default)]
-        parameterization: ParamSpec,
-    },
-    Circle {
-        center: [f64; 2],
-        radius: f64,
-    },
-    Ellipse {
-        center: [f64; 2],
-        semi_axes: [f64; 2],
-        #[serde(default)]
-        rotation_deg: f64,
-    },
-    PointsFile {
-        path: String,
-        #[serde(default)]
-        parameterization: ParamSpec,
-    },
+#[serde(deny_unknown_fields)]
+struct ProfileTable {
+    kind: Spanned<String>,
+    points: Option<Spanned<Vec<Spanned<[f64; 2]>>>>,
+    parameterization: Option<Spanned<ParamSpec>>,
+    center: Option<Spanned<[f64; 2]>>,
+    radius: Option<Spanned<f64>>,
+    semi_axes: Option<Spanned<[f64; 2]>>,
+    rotation_deg: Option<Spanned<f64>>,
+    path: Option<Spanned<String>>,
 }
 
-fn default_direction() -> [f64; 2] {
-    [1.0, 0.0]
-}
-
+/// `[follower]`: every field of every kind; the kind decides which belong.
 #[derive(Debug, Deserialize)]
-#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
-pub enum FollowerSpec {
-    TranslatingFlat {
-        #[serde(default = "default_direction")]
-        direction: [f64; 2],
-    },
-    TranslatingRoller {
-        #[serde(default = "default_direction")]
-        direction: [f64; 2],
-        #[serde(default)]
-        offset: f64,
-        roller_radius: f64,
-    },
-    TranslatingKnife {
-        #[serde(default = "default_direction")]
-        direction: [f64; 2],
-        #[serde(default)]
-        offset: f64,
-    },
-    OscillatingFlat {
-        pivot: [f64; 2],
-        #[serde(default)]
-        offset: f64,
-        #[serde(default = "default_closing")]
-        closing: SenseSpec,
-        #[serde(default)]
-        initial_angle_deg: f64,
-    },
-    OscillatingRoller {
-        pivot: [f64; 2],
-        arm_length: f64,
-        roller_radius: f64,
-        #[serde(default = "default_closing")]
-        closing: SenseSpec,
-        #[serde(default)]
-        initial_angle_deg: f64,
-    },
+#[serde(deny_unknown_fields)]
+struct FollowerTable {
+    kind: Spanned<String>,
+    direction: Option<Spanned<[f64; 2]>>,
+    offset: Option<Spanned<f64>>,
+    roller_radius: Option<Spanned<f64>>,
+    pivot: Option<Spanned<[f64; 2]>>,
+    arm_length: Option<Spanned<f64>>,
+    closing: Option<Spanned<SenseSpec>>,
+    initial_angle_deg: Option<Spanned<f64>>,
 }
 
-fn default_closing() -> SenseSpec {
-    SenseSpec::Cw
+/// Places errors in the source text.
+struct Ctx<'a> {
+    name: &'a str,
+    text: &'a str,
 }
 
-fn pt(p: [f64; 2]) -> Point2 {
-    Point2::new(p[0], p[1])
+impl Ctx<'_> {
+    fn at(&self, span: Range<usize>, msg: impl std::fmt::Display) -> InputError {
+        let start = span.start.min(self.text.len());
+        let before = &self.text[..start];
+        let line = before.matches('\n').count() + 1;
+        let col = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+        InputError {
+            message: format!("{}:{line}:{col}: {msg}", self.name),
+        }
+    }
+    /// A finite number.
+    fn finite(&self, field: &str, v: &Spanned<f64>) -> Result<f64, InputError> {
+        let x = *v.get_ref();
+        if x.is_finite() {
+            Ok(x)
+        } else {
+            Err(self.at(v.span(), format!("{field} = {x}: must be a finite number")))
+        }
+    }
+    /// A positive finite number.
+    fn positive(&self, field: &str, v: &Spanned<f64>) -> Result<f64, InputError> {
+        let x = *v.get_ref();
+        if x.is_finite() && x > 0.0 {
+            Ok(x)
+        } else {
+            Err(self.at(
+                v.span(),
+                format!("{field} = {x}: must be positive and finite"),
+            ))
+        }
+    }
+    fn point(&self, field: &str, v: &Spanned<[f64; 2]>) -> Result<Point2, InputError> {
+        let [x, y] = *v.get_ref();
+        if x.is_finite() && y.is_finite() {
+            Ok(Point2::new(x, y))
+        } else {
+            Err(self.at(v.span(), format!("{field} = [{x}, {y}]: must be finite")))
+        }
+    }
+    fn direction(&self, field: &str, v: &Spanned<[f64; 2]>) -> Result<Vec2, InputError> {
+        let p = self.point(field, v)?;
+        if p.coords.norm() > 0.0 {
+            Ok(p.coords)
+        } else {
+            Err(self.at(
+                v.span(),
+                format!("{field} = [{}, {}]: must be a non-zero direction", p.x, p.y),
+            ))
+        }
+    }
+    fn required<'b, T>(
+        &self,
+        table: &str,
+        kind: &Spanned<String>,
+        field: &str,
+        v: &'b Option<Spanned<T>>,
+    ) -> Result<&'b Spanned<T>, InputError> {
+        v.as_ref().ok_or_else(|| {
+            self.at(
+                kind.span(),
+                format!("[{table}] kind = {:?} needs `{field}`", kind.get_ref()),
+            )
+        })
+    }
+}
+
+/// Errors for fields present that do not belong to the kind.
+fn foreign(
+    ctx: &Ctx<'_>,
+    table: &str,
+    kind: &Spanned<String>,
+    present: &[(&str, Option<Range<usize>>)],
+    allowed: &[&str],
+) -> Result<(), InputError> {
+    for (name, span) in present {
+        if let Some(span) = span {
+            if !allowed.contains(name) {
+                return Err(ctx.at(
+                    span.clone(),
+                    format!(
+                        "[{table}] kind = {:?} takes no `{name}` (its fields: {})",
+                        kind.get_ref(),
+                        allowed.join(", ")
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn span_of<T>(v: &Option<Spanned<T>>) -> Option<Range<usize>> {
+    v.as_ref().map(Spanned::span)
 }
 
 /// Reads and builds a mechanism file; every error is bad input (exit code 2).
-pub fn load(path: &Path) -> Result<Mechanism> {
-    let text = std::fs::read_to_string(path)
-        .with_context(|| format!("cannot read mechanism file {}", path.display()))?;
-    let spec: MechanismFile =
-        toml::from_str(&text).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    build(&spec, path.parent().unwrap_or(Path::new(".")))
-        .with_context(|| format!("invalid mechanism file {}", path.display()))
+pub fn load(path: &Path) -> Result<Mechanism, InputError> {
+    let name = path.display().to_string();
+    let len = std::fs::metadata(path)
+        .map_err(|e| InputError {
+            message: format!("cannot read mechanism file {name}: {e}"),
+        })?
+        .len();
+    if len > MAX_FILE_BYTES {
+        return Err(InputError {
+            message: format!(
+                "{name}: {len} bytes is more than the {MAX_FILE_BYTES} a mechanism file may have"
+            ),
+        });
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| InputError {
+        message: format!("cannot read mechanism file {name}: {e}"),
+    })?;
+    parse(&text, &name, path.parent().unwrap_or(Path::new(".")))
 }
 
-/// Builds a mechanism from its parsed file; `base` resolves a relative points-file path.
-pub fn build(spec: &MechanismFile, base: &Path) -> Result<Mechanism> {
-    let profile: Arc<dyn Curve> = match &spec.cam.profile {
-        ProfileSpec::Spline {
-            points,
-            parameterization,
-        } => {
-            let nodes: Vec<Point2> = points.iter().copied().map(pt).collect();
-            Arc::new(
-                ClosedSpline::with_parameterization(&nodes, (*parameterization).into())
-                    .context("in [cam.profile] points")?,
-            )
-        }
-        ProfileSpec::Circle { center, radius } => {
-            Arc::new(Circle::new(pt(*center), *radius).context("in [cam.profile]")?)
-        }
-        ProfileSpec::Ellipse {
-            center,
-            semi_axes,
-            rotation_deg,
-        } => Arc::new(
-            Ellipse::new(
-                pt(*center),
-                semi_axes[0],
-                semi_axes[1],
-                rotation_deg.to_radians(),
-            )
-            .context("in [cam.profile]")?,
-        ),
-        ProfileSpec::PointsFile {
-            path,
-            parameterization,
-        } => {
-            let full = base.join(path);
-            let nodes = read_points_file(&full).context("in [cam.profile] path")?;
-            Arc::new(
-                ClosedSpline::with_parameterization(&nodes, (*parameterization).into())
-                    .with_context(|| format!("in points file {}", full.display()))?,
-            )
-        }
-    };
-    let cam = Cam::from_rpm(
-        profile,
-        pt(spec.cam.pivot),
-        spec.cam.direction.into(),
-        spec.cam.speed_rpm,
-    )?
-    .with_angular_acceleration(spec.cam.angular_acceleration_deg_s2.to_radians())?;
-    let v = |d: [f64; 2]| Vec2::new(d[0], d[1]);
-    let follower = match spec.follower {
-        FollowerSpec::TranslatingFlat { direction } => Follower::TranslatingFlat {
-            direction: v(direction),
-        },
-        FollowerSpec::TranslatingRoller {
-            direction,
-            offset,
-            roller_radius,
-        } => Follower::TranslatingRoller {
-            direction: v(direction),
-            offset,
-            roller_radius,
-        },
-        FollowerSpec::TranslatingKnife { direction, offset } => Follower::TranslatingKnife {
-            direction: v(direction),
-            offset,
-        },
-        FollowerSpec::OscillatingFlat {
-            pivot,
-            offset,
-            closing,
-            initial_angle_deg,
-        } => Follower::OscillatingFlat {
-            pivot: pt(pivot),
-            face_offset: offset,
-            closing: closing.into(),
-            initial_angle: initial_angle_deg.to_radians(),
-        },
-        FollowerSpec::OscillatingRoller {
-            pivot,
-            arm_length,
-            roller_radius,
-            closing,
-            initial_angle_deg,
-        } => Follower::OscillatingRoller {
-            pivot: pt(pivot),
-            arm_length,
-            roller_radius,
-            closing: closing.into(),
-            initial_angle: initial_angle_deg.to_radians(),
-        },
-    };
-    Ok(Mechanism::new(cam, follower)?)
+/// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);
+/// `base` resolves a relative points-file path.
+pub fn parse(text: &str, name: &str, base: &Path) -> Result<Mechanism, InputError> {
+    let spec: FileSpec = toml::from_str(text).map_err(|e| InputError {
+        message: format!("{name}: {e}"),
+    })?;
+    let ctx = Ctx { name, text };
+    let cam = spec.cam.get_ref();
+    let profile = build_profile(&ctx, cam.profile.get_ref(), base)?;
+    let speed = ctx.positive("cam.speed_rpm", &cam.speed_rpm)?;
+    let pivot = cam
+        .pivot
+        .as_ref()
+        .map(|p| ctx.point("cam.pivot", p))
+        .transpose()?
+        .unwrap_or_else(Point2::origin);
+    let alpha = cam
+        .angular_acceleration_deg_s2
+        .as_ref()
+        .map(|a| ctx.finite("cam.angular_acceleration_deg_s2", a))
+        .transpose()?
+        .unwrap_or(0.0);
+    let sense = cam
+        .direction
+        .as_ref()
+        .map_or(Sense::Ccw, |d| (*d.get_ref()).into());
+    let cam_obj = Cam::from_rpm(profile, pivot, sense, speed)
+        .and_then(|c| c.with_angular_acceleration(alpha.to_radians()))
+        .map_err(|e| ctx.at(spec.cam.span(), e))?;
+    let follower = build_follower(&ctx, spec.follower.get_ref())?;
+    let fspan = spec.follower.span();
+    Mechanism::new(cam_obj, follower).map_err(|e| match e {
+        CamError::Cusp { .. } => ctx.at(cam.profile.span(), format!("[cam.profile]: {e}")),
+        _ => ctx.at(fspan, e),
+    })
 }
 
-/// The paper's mechanism (section 3): nine-node spline cam (cm), 1000 rpm ccw, translating
-/// flat-faced follower along +x. `revised` moves the right-extreme node from (5, 0) to (4.2, 0).
+fn build_profile(
+    ctx: &Ctx<'_>,
+    p: &ProfileTable,
+    base: &Path,
+) -> Result<Arc<dyn Curve>, InputError> {
+    const T: &str = "cam.profile";
+    let present = [
+        ("points", span_of(&p.points)),
+        ("parameterization", span_of(&p.parameterization)),
+        ("center", span_of(&p.center)),
+        ("radius", span_of(&p.radius)),
+        ("semi_axes", span_of(&p.semi_axes)),
+        ("rotation_deg", span_of(&p.rotation_deg)),
+        ("path", span_of(&p.path)),
+    ];
+    let kind = &p.kind;
+    let param = p
+        .parameterization
+        .as_ref()
+        .map_or(Parameterization::Uniform, |v| (*v.get_ref()).into());
+    match kind.get_ref().as_str() {
+        "spline" => {
+            foreign(ctx, T, kind, &present, &["points", "parameterization"])?;
+            let pts = ctx.required(T, kind, "points", &p.points)?;
+            let list = pts.get_ref();
+            if list.len() > MAX_POINTS {
+                return Err(ctx.at(pts.span(), format!("cam.profile.points: {} points is more than the {MAX_POINTS} allowed", list.len())));
+            }
+            let mut nodes = Vec::with_capacity(list.len());
+            for (i, q) in list.iter().enumerate() {
+                nodes.push(ctx.point(&format!("cam.profile.points[{i}]"), q)?);
+            }
+            let spans: Vec<Range<usize>> = list.iter().map(Spanned::span).collect();
+            spline(&nodes, param, |i| ctx.at(spans.get(i).cloned().unwrap_or(pts.span()), ""), "cam.profile.points")
+        }
+        "circle" => {
+            foreign(ctx, T, kind, &present, &["center", "radius"])?;
+            let c = ctx.point("cam.profile.center", ctx.required(T, kind, "center", &p.center)?)?;
+            let r = ctx.positive("cam.profile.radius", ctx.required(T, kind, "radius", &p.radius)?)?;
+            Ok(Arc::new(Circle::new(c, r).map_err(|e| ctx.at(kind.span(), e))?))
+        }
+        "ellipse" => {
+            foreign(ctx, T, kind, &present, &["center", "semi_axes", "rotation_deg"])?;
+            let c = ctx.point("cam.profile.center", ctx.required(T, kind, "center", &p.center)?)?;
+            let ax = ctx.required(T, kind, "semi_axes", &p.semi_axes)?;
+            let [a, b] = *ax.get_ref();
+            if !(a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0) {
+                return Err(ctx.at(ax.span(), format!("cam.profile.semi_axes = [{a}, {b}]: both must be positive and finite")));
+            }
+            let rot = p.rotation_deg.as_ref().map(|r| ctx.finite("cam.profile.rotation_deg", r)).transpose()?.unwrap_or(0.0);
+            Ok(Arc::new(Ellipse::new(c, a, b, rot.to_radians()).map_err(|e| ctx.at(kind.span(), e))?))
+        }
+        "points-file" => {
+            foreign(ctx, T, kind, &present, &["path", "parameterization"])?;
+            let path = ctx.required(T, kind, "path", &p.path)?;
+            let full = base.join(path.get_ref());
+            let file = full.display().to_string();
+            let (nodes, lines) = camkin::curve::read_points_file(&full).map_err(|e| match e {
+                CurveError::PointsFileIo { message, .. } => ctx.at(path.span(), format!("cam.profile.path = {:?}: cannot read {file}: {message}", path.get_ref())),
+                CurveError::PointsFileSyntax { line, message, content } => InputError { message: format!("{file}:{line}: {message}: {content:?}") },
+                other => ctx.at(path.span(), other),
+            })?;
+            spline(&nodes, param, |i| InputError { message: format!("{file}:{}: ", lines.get(i).copied().unwrap_or(0)) }, &format!("points file {file}"))
+        }
+        other => Err(ctx.at(kind.span(), format!("cam.profile.kind = {other:?} is not a profile kind (spline, circle, ellipse, points-file)"))),
+    }
+}
+
+/// A closed spline through `nodes`; `place(i)` locates node `i` for messages.
+fn spline(
+    nodes: &[Point2],
+    param: Parameterization,
+    place: impl Fn(usize) -> InputError,
+    what: &str,
+) -> Result<Arc<dyn Curve>, InputError> {
+    let with = |i: usize, msg: String| InputError {
+        message: format!("{}{msg}", place(i).message),
+    };
+    let s = ClosedSpline::with_parameterization(nodes, param).map_err(|e| match e {
+        CurveError::TooFewPoints { count } => with(0, format!("{what}: a closed spline needs at least 3 points, got {count}")),
+        CurveError::RepeatedPoint { index, next, x, y } => with(next, format!("{what}: points {index} and {next} coincide at ({x}, {y}); consecutive points must differ")),
+        CurveError::NonFinitePoint { index, x, y } => with(index, format!("{what}: point {index} = ({x}, {y}) is not finite")),
+        other => with(0, format!("{what}: {other}")),
+    })?;
+    if let Some((ua, ub, p)) = s.self_intersection() {
+        let n = nodes.len();
+        let (i, j) = (
+            (ua.floor() as usize).min(n - 1),
+            (ub.floor() as usize).min(n - 1),
+        );
+        let (i, j) = if param == Parameterization::Uniform {
+            (i, j)
+        } else {
+            (node_of(&s, ua), node_of(&s, ub))
+        };
+        return Err(with(i, format!("{what}: the spline through the points crosses itself near ({:.6}, {:.6}), between points {i}–{} and {j}–{}", p.x, p.y, (i + 1) % n, (j + 1) % n)));
+    }
+    Ok(Arc::new(s))
+}
+
+/// The node starting the segment that holds parameter `u`.
+fn node_of(s: &ClosedSpline, u: f64) -> usize {
+    (0..s.segments())
+        .rev()
+        .find(|&i| s.node_param(i) <= u)
+        .unwrap_or(0)
+}
+
+fn build_follower(ctx: &Ctx<'_>, f: &FollowerTable) -> Result<Follower, InputError> {
+    const T: &str = "follower";
+    let present = [
+        ("direction", span_of(&f.direction)),
+        ("offset", span_of(&f.offset)),
+        ("roller_radius", span_of(&f.roller_radius)),
+        ("pivot", span_of(&f.pivot)),
+        ("arm_length", span_of(&f.arm_length)),
+        ("closing", span_of(&f.closing)),
+        ("initial_angle_deg", span_of(&f.initial_angle_deg)),
+    ];
+    let kind = &f.kind;
+    let direction = || -> Result<Vec2, InputError> {
+        f.direction
+            .as_ref()
+            .map_or(Ok(Vec2::x()), |d| ctx.direction("follower.direction", d))
+    };
+    let offset = || -> Result<f64, InputError> {
+        f.offset
+            .as_ref()
+            .map_or(Ok(0.0), |o| ctx.finite("follower.offset", o))
+    };
+    let closing = f
+        .closing
+        .as_ref()
+        .map_or(Sense::Cw, |c| (*c.get_ref()).into());
+    let initial = || -> Result<f64, InputError> {
+        Ok(f.initial_angle_deg
+            .as_ref()
+            .map(|a| ctx.finite("follower.initial_angle_deg", a))
+            .transpose()?
+            .unwrap_or(0.0)
+            .to_radians())
+    };
+    Ok(match kind.get_ref().as_str() {
+        "translating-flat" => {
+            foreign(ctx, T, kind, &present, &["direction"])?;
+            Follower::TranslatingFlat { direction: direction()? }
+        }
+        "translating-roller" => {
+            foreign(ctx, T, kind, &present, &["direction", "offset", "roller_radius"])?;
+            let r = ctx.positive("follower.roller_radius", ctx.required(T, kind, "roller_radius", &f.roller_radius)?)?;
+            Follower::TranslatingRoller { direction: direction()?, offset: offset()?, roller_radius: r }
+        }
+        "translating-knife" => {
+            foreign(ctx, T, kind, &present, &["direction", "offset"])?;
+            Follower::TranslatingKnife { direction: direction()?, offset: offset()? }
+        }
+        "oscillating-flat" => {
+            foreign(ctx, T, kind, &present, &["pivot", "offset", "closing", "initial_angle_deg"])?;
+            let pivot = ctx.point("follower.pivot", ctx.required(T, kind, "pivot", &f.pivot)?)?;
+            Follower::OscillatingFlat { pivot, face_offset: offset()?, closing, initial_angle: initial()? }
+        }
+        "oscillating-roller" => {
+            foreign(ctx, T, kind, &present, &["pivot", "arm_length", "roller_radius", "closing", "initial_angle_deg"])?;
+            let pivot = ctx.point("follower.pivot", ctx.required(T, kind, "pivot", &f.pivot)?)?;
+            let l = ctx.positive("follower.arm_length", ctx.required(T, kind, "arm_length", &f.arm_length)?)?;
+            let r = ctx.positive("follower.roller_radius", ctx.required(T, kind, "roller_radius", &f.roller_radius)?)?;
+            Follower::OscillatingRoller { pivot, arm_length: l, roller_radius: r, closing, initial_angle: initial()? }
+        }
+        other => {
+            return Err(ctx.at(
+                kind.span(),
+                format!("follower.kind = {other:?} is not a follower kind (translating-flat, translating-roller, translating-knife, oscillating-flat, oscillating-roller)"),
+            ))
+        }
+    })
+}
+
+/// The paper's mechanism (section 3), the file `examples/paper.toml`.
 pub const PAPER_TOML: &str = include_str!("../../../examples/paper.toml");
 
 /// The built-in paper mechanism.
 pub fn paper() -> Mechanism {
-    let spec: MechanismFile = toml::from_str(PAPER_TOML).expect("built-in mechanism parses");
-    build(&spec, Path::new(".")).expect("built-in mechanism is valid")
+    camkin::reference::paper_mechanism(false)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    #[test]
-    fn built_in_paper_mechanism_is_the_papers() {
-        let m = paper();
-        assert_eq!(m.follower().kind_name(), "translating-flat");
-        let s = m.analyze(0.0).expect("analysis");
-        assert!((s.position - 5.0).abs() < 1e-12);
+    fn err(text: &str) -> String {
+        parse(text, "m.toml", Path::new("."))
+            .map(|_| ())
+            .unwrap_err()
+            .message
     }
 
     #[test]
-    fn unknown_and_misplaced_fields_are_rejected() {
-        let bad = PAPER_TOML.replace("direction = [1.0, 0.0]", "roller_radius = 1.0");
-        let e = toml::from_str::<MechanismFile>(&bad)
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains("roller_radius"), "{e}");
-        let bad = PAPER_TOML.replace("kind = \"spline\"", "kind = \"blob\"");
-        let e = toml::from_str::<MechanismFile>(&bad)
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains("blob") && e.contains("line"), "{e}");
+    fn example_file_is_the_built_in_paper_mechanism() {
+        let m = parse(PAPER_TOML, "paper.toml", Path::new(".")).unwrap();
+        let (a, b) = (m.analyze(0.7).unwrap(), paper().analyze(0.7).unwrap());
+        assert_eq!((a.position, a.acceleration), (b.position, b.acceleration));
+    }
+
+    #[test]
+    fn errors_name_line_field_and_value() {
+        let e = err(&PAPER_TOML.replace("direction = [1.0, 0.0]", "roller_radius = 1.0"));
+        assert!(
+            e.contains("takes no `roller_radius`") && e.contains("m.toml:"),
+            "{e}"
+        );
+        let e = err(&PAPER_TOML.replace("kind = \"spline\"", "kind = \"blob\""));
+        assert!(e.contains("\"blob\"") && e.contains("m.toml:9:8:"), "{e}");
+        let e = err(&PAPER_TOML.replace("speed_rpm = 1000.0", "speed_rpm = -5.0"));
+        assert!(
+            e.contains("cam.speed_rpm = -5") && e.contains("m.toml:4:"),
+            "{e}"
+        );
+        let e = err(&PAPER_TOML.replace("speed_rpm = 1000.0", "speed_rpm = \"fast\""));
+        assert!(e.contains("line 4") && e.contains("speed_rpm"), "{e}");
     }
 }

@@ -148,14 +148,31 @@ fn bad_input_exits_2_with_a_message_naming_the_problem() {
 }
 
 #[test]
-fn unreachable_follower_rows_carry_the_error() {
+fn follower_that_never_touches_is_bad_input() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("far.toml");
     std::fs::write(&p, "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 5.0\n").unwrap();
-    let out = camkin()
+    camkin()
         .arg("analyze")
         .arg(&p)
         .args(["--at", "0"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("follower.offset = 5"))
+        .stderr(predicate::str::contains("misses the cam"));
+}
+
+#[test]
+fn rows_where_the_follower_misses_carry_the_error() {
+    // an eccentric circle (axis distances 0.2 to 1.8) and a knife line at 1.5: it touches only
+    // while the cam's far side passes
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("some.toml");
+    std::fs::write(&p, "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0.8, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 1.5\n").unwrap();
+    let out = camkin()
+        .arg("analyze")
+        .arg(&p)
+        .args(["--at", "0,90"])
         .assert()
         .success()
         .stderr(predicate::str::contains("could not be analysed"))
@@ -163,7 +180,12 @@ fn unreachable_follower_rows_carry_the_error() {
         .stdout
         .clone();
     let (_, rows) = parse_csv(&out);
-    assert!(rows[0].last().unwrap().contains("misses the cam"));
+    assert!(
+        rows[0].last().unwrap().contains("misses the cam"),
+        "{:?}",
+        rows[0]
+    );
+    assert!(rows[1].last().unwrap().is_empty(), "{:?}", rows[1]);
 }
 
 #[test]

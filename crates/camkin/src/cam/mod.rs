@@ -256,6 +256,26 @@ pub enum CamError {
         /// the stopping reason
         reason: &'static str,
     },
+    /// The follower can never touch the cam.
+    #[error("{field} = {value}: {reason}")]
+    Unreachable {
+        /// the field, as in mechanism files
+        field: &'static str,
+        /// its value
+        value: f64,
+        /// why, with the dimensions involved
+        reason: String,
+    },
+    /// The profile has a cusp: its tangent vanishes, so its normal and curvature are undefined.
+    #[error("the cam profile has a cusp (zero-length tangent) at u = {param}, ({x}, {y}) in the cam frame")]
+    Cusp {
+        /// the profile parameter
+        param: f64,
+        /// cam-frame x
+        x: f64,
+        /// cam-frame y
+        y: f64,
+    },
     /// The contact kinematics could not be computed.
     #[error("at cam angle {angle_deg}°: {source}")]
     Contact {
@@ -475,6 +495,20 @@ impl Mechanism {
             .sum();
         let orientation = if area2 >= 0.0 { 1.0 } else { -1.0 };
         let convex = pts.iter().all(|e| orientation * e.curvature() > 0.0);
+        // a cusp: the tangent vanishes (relative to its mean length)
+        let mean_g = pts.iter().map(|e| e.d1.norm()).sum::<f64>() / pts.len() as f64;
+        if let Some((e, &u)) = pts
+            .iter()
+            .zip(&dense)
+            .find(|(e, _)| !(e.d1.norm() > 1e-9 * mean_g))
+        {
+            return Err(CamError::Cusp {
+                param: u,
+                x: e.p.x,
+                y: e.p.y,
+            });
+        }
+        check_reach(&geometry, &follower, size)?;
         let options = AnalysisOptions::for_size(size);
         let mut m = Self {
             cam,
@@ -529,6 +563,44 @@ impl Mechanism {
     pub fn is_convex(&self) -> bool {
         self.convex
     }
+    /// Parameter ranges `(from, to)` of the profile that the follower cannot follow: concave
+    /// stretches under a flat face, stretches concave more sharply than the roller (radius of
+    /// curvature below the roller radius). The follower bridges them: the contact jumps across
+    /// and the acceleration is impulsive there. Found on a dense sampling of the profile; empty
+    /// for a knife edge and for convex profiles.
+    pub fn unfollowable_stretches(&self) -> Vec<(f64, f64)> {
+        let limit = match self.geometry.follower {
+            Follower::TranslatingFlat { .. } | Follower::OscillatingFlat { .. } => 0.0,
+            Follower::TranslatingRoller { roller_radius, .. }
+            | Follower::OscillatingRoller { roller_radius, .. } => -1.0 / roller_radius,
+            Follower::TranslatingKnife { .. } => return Vec::new(),
+        };
+        let profile = self.cam.profile.as_ref();
+        let u = bracket_samples(&self.breakpoints, self.period, 64, 2048);
+        let bad: Vec<bool> = u
+            .iter()
+            .map(|&v| self.orientation * profile.curvature(v) < limit)
+            .collect();
+        let mut out = Vec::new();
+        let n = u.len();
+        let Some(start) = (0..n).find(|&k| !bad[k]) else {
+            return vec![(0.0, self.period)];
+        };
+        let mut k = start;
+        for _ in 0..n {
+            let j = (k + 1) % n;
+            if !bad[k] && bad[j] {
+                let mut e = j;
+                while bad[(e + 1) % n] {
+                    e = (e + 1) % n;
+                }
+                out.push((u[j], u[e]));
+            }
+            k = j;
+        }
+        out
+    }
+
     /// +1 when the profile runs counter-clockwise, −1 when clockwise.
     pub fn orientation(&self) -> f64 {
         self.orientation
@@ -1114,6 +1186,36 @@ impl Candidates {
     }
     pub(crate) fn as_slice(&self) -> &[(f64, f64, f64)] {
         &self.items[..self.len]
+    }
+}
+
+/// Refuses followers that can never touch the cam: `size` is the cam's largest distance from
+/// its axis.
+fn check_reach(g: &Geometry, f: &Follower, size: f64) -> Result<(), CamError> {
+    match *f {
+        Follower::TranslatingKnife { offset, .. } if offset.abs() >= size => Err(CamError::Unreachable {
+            field: "follower.offset",
+            value: offset,
+            reason: format!("the knife edge's line of travel misses the cam, which reaches {size} from its axis"),
+        }),
+        Follower::TranslatingRoller { offset, roller_radius, .. } if offset.abs() >= size + roller_radius => Err(CamError::Unreachable {
+            field: "follower.offset",
+            value: offset,
+            reason: format!("the roller (radius {roller_radius}) passes the cam, which reaches {size} from its axis"),
+        }),
+        Follower::OscillatingRoller { pivot, arm_length, roller_radius, .. } => {
+            let d = (pivot - g.cam_pivot).norm();
+            if (d - arm_length).abs() >= size + roller_radius {
+                Err(CamError::Unreachable {
+                    field: "follower.arm_length",
+                    value: arm_length,
+                    reason: format!("the roller cannot reach the cam: its centre stays {} from the cam axis, the cam reaches {size} and the roller radius is {roller_radius}", (d - arm_length).abs()),
+                })
+            } else {
+                Ok(())
+            }
+        }
+        _ => Ok(()),
     }
 }
 

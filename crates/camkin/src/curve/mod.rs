@@ -23,7 +23,9 @@ pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use line::Line;
 pub use point::PointCurve;
-pub use points_file::{parse_points, read_points_file};
+pub use points_file::{
+    parse_points, parse_points_with_lines, read_points_file, MAX_FILE_BYTES, MAX_POINTS,
+};
 pub use spline::{ClosedSpline, Parameterization};
 
 use crate::geometry::{cross, perp, Point2, Vec2};

@@ -6,9 +6,18 @@ use super::CurveError;
 use crate::geometry::Point2;
 use std::path::Path;
 
+/// Most points read from one file.
+pub const MAX_POINTS: usize = 100_000;
+
 /// Parses points from text (see the [module docs](self)); errors name the 1-based line.
 pub fn parse_points(text: &str) -> Result<Vec<Point2>, CurveError> {
+    parse_points_with_lines(text).map(|(p, _)| p)
+}
+
+/// As [`parse_points`], also returning the 1-based line of every point.
+pub fn parse_points_with_lines(text: &str) -> Result<(Vec<Point2>, Vec<usize>), CurveError> {
     let mut points = Vec::new();
+    let mut lines = Vec::new();
     let mut seen_data = false;
     for (i, raw) in text.lines().enumerate() {
         let line = raw.trim();
@@ -49,18 +58,35 @@ pub fn parse_points(text: &str) -> Result<Vec<Point2>, CurveError> {
         if !(x.is_finite() && y.is_finite()) {
             return Err(syntax("coordinates must be finite"));
         }
+        if points.len() == MAX_POINTS {
+            return Err(syntax(&format!("more than {MAX_POINTS} points")));
+        }
         points.push(Point2::new(x, y));
+        lines.push(i + 1);
     }
-    Ok(points)
+    Ok((points, lines))
 }
 
-/// Reads and parses a points file.
-pub fn read_points_file(path: &Path) -> Result<Vec<Point2>, CurveError> {
-    let text = std::fs::read_to_string(path).map_err(|e| CurveError::PointsFileIo {
+/// Largest points file read, bytes.
+pub const MAX_FILE_BYTES: u64 = 64 << 20;
+
+/// Reads and parses a points file (at most [`MAX_FILE_BYTES`]); returns the points and their
+/// lines.
+pub fn read_points_file(path: &Path) -> Result<(Vec<Point2>, Vec<usize>), CurveError> {
+    let io = |message: String| CurveError::PointsFileIo {
         path: path.display().to_string(),
-        message: e.to_string(),
-    })?;
-    parse_points(&text)
+        message,
+    };
+    let len = std::fs::metadata(path)
+        .map_err(|e| io(e.to_string()))?
+        .len();
+    if len > MAX_FILE_BYTES {
+        return Err(io(format!(
+            "{len} bytes is more than the {MAX_FILE_BYTES} read"
+        )));
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| io(e.to_string()))?;
+    parse_points_with_lines(&text)
 }
 
 #[cfg(test)]

@@ -114,6 +114,78 @@ impl ClosedSpline {
     }
 }
 
+impl ClosedSpline {
+    /// Where the spline crosses itself, if it does: the parameters of the two crossing stretches
+    /// and the crossing point. The spline is sampled as a polyline of 8 chords per segment and
+    /// the chords are checked pairwise through a uniform grid (expected linear time).
+    pub fn self_intersection(&self) -> Option<(f64, f64, Point2)> {
+        const PER_SEGMENT: usize = 8;
+        let n = self.segments();
+        let m = n * PER_SEGMENT;
+        let params: Vec<f64> = (0..m)
+            .map(|i| {
+                let seg = i / PER_SEGMENT;
+                self.knots.u[seg]
+                    + self.knots.h(seg) * (i % PER_SEGMENT) as f64 / PER_SEGMENT as f64
+            })
+            .collect();
+        let pts: Vec<Point2> = params.iter().map(|&u| self.position(u)).collect();
+        let seg = |i: usize| (pts[i], pts[(i + 1) % m]);
+        let (mut lo, mut hi) = (pts[0], pts[0]);
+        let mut max_len: f64 = 0.0;
+        for i in 0..m {
+            let (a, b) = seg(i);
+            lo = Point2::new(lo.x.min(a.x), lo.y.min(a.y));
+            hi = Point2::new(hi.x.max(a.x), hi.y.max(a.y));
+            max_len = max_len.max((b - a).norm());
+        }
+        // cells about as large as the longest chord, at most ~4m of them
+        let (w, h) = (hi.x - lo.x, hi.y - lo.y);
+        let mut cell = max_len.max(1e-300);
+        while (w / cell + 1.0) * (h / cell + 1.0) > 4.0 * m as f64 {
+            cell *= 2.0;
+        }
+        let nx = (w / cell) as usize + 1;
+        let ny = (h / cell) as usize + 1;
+        let idx = |x: f64, y: f64| {
+            (((x - lo.x) / cell) as usize).min(nx - 1)
+                + nx * (((y - lo.y) / cell) as usize).min(ny - 1)
+        };
+        let mut grid: Vec<Vec<u32>> = vec![Vec::new(); nx * ny];
+        for i in 0..m {
+            let (a, b) = seg(i);
+            let (x0, x1) = (a.x.min(b.x), a.x.max(b.x));
+            let (y0, y1) = (a.y.min(b.y), a.y.max(b.y));
+            let (c0, c1) = (idx(x0, y0), idx(x1, y1));
+            for cy in c0 / nx..=c1 / nx {
+                for cx in c0 % nx..=c1 % nx {
+                    grid[cx + nx * cy].push(i as u32);
+                }
+            }
+        }
+        let orient = |p: Point2, q: Point2, r: Point2| crate::geometry::cross(q - p, r - p);
+        for cellv in &grid {
+            for (k, &i) in cellv.iter().enumerate() {
+                for &j in &cellv[k + 1..] {
+                    let (i, j) = (i as usize, j as usize);
+                    let gap = (i as isize - j as isize).unsigned_abs();
+                    if gap <= 1 || gap == m - 1 {
+                        continue; // neighbouring chords share an end
+                    }
+                    let ((a, b), (c, d)) = (seg(i), seg(j));
+                    let (o1, o2) = (orient(a, b, c), orient(a, b, d));
+                    let (o3, o4) = (orient(c, d, a), orient(c, d, b));
+                    if o1 * o2 < 0.0 && o3 * o4 < 0.0 {
+                        let t = o1 / (o1 - o2);
+                        return Some((params[i], params[j], c + t * (d - c)));
+                    }
+                }
+            }
+        }
+        None
+    }
+}
+
 impl Curve for ClosedSpline {
     #[inline]
     fn eval(&self, u: f64) -> Derivs {
@@ -221,6 +293,28 @@ mod tests {
         for k in 0..900 {
             assert!(s.curvature(k as f64 * 0.01) > 0.0);
         }
+    }
+
+    #[test]
+    fn self_intersection_is_found_and_convex_cams_have_none() {
+        assert_eq!(
+            ClosedSpline::new(&paper_nodes())
+                .unwrap()
+                .self_intersection(),
+            None
+        );
+        // a figure of eight crosses itself at the origin
+        let eight: Vec<Point2> = (0..12)
+            .map(|i| {
+                let t = std::f64::consts::TAU * i as f64 / 12.0;
+                Point2::new(t.sin(), t.sin() * t.cos())
+            })
+            .collect();
+        let (_, _, p) = ClosedSpline::new(&eight)
+            .unwrap()
+            .self_intersection()
+            .expect("crossing");
+        assert!(p.coords.norm() < 1e-2, "{p}");
     }
 
     #[test]

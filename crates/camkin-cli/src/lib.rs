@@ -1,0 +1,37 @@
+//! The `camkin` command line as a library: the mechanism-file format, the subcommands and their
+//! output. `main.rs` only parses the arguments and maps failures to exit codes (0 success,
+//! 1 internal failure, 2 bad input).
+
+pub mod analyze;
+pub mod bench;
+pub mod compare;
+pub mod mechfile;
+pub mod output;
+pub mod plot;
+pub mod plots;
+pub mod scene;
+pub mod study;
+
+use std::path::PathBuf;
+
+/// A failure and its exit code.
+#[derive(Debug)]
+pub enum Failure {
+    /// bad input: exit code 2
+    Input(anyhow::Error),
+    /// internal failure: exit code 1
+    Internal(anyhow::Error),
+}
+
+/// Loads the mechanism file, or the paper's built-in mechanism when none is given.
+pub fn load_mechanism(path: Option<&PathBuf>) -> Result<camkin::cam::Mechanism, Failure> {
+    match path {
+        Some(p) => mechfile::load(p).map_err(|e| Failure::Input(anyhow::anyhow!(e))),
+        None => {
+            eprintln!(
+                "camkin: no mechanism file given; using the paper's cam (examples/paper.toml)"
+            );
+            Ok(mechfile::paper())
+        }
+    }
+}
