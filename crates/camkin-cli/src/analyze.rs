@@ -3,7 +3,7 @@
 use crate::output::write_atomic;
 use crate::{load_mechanism, Failure};
 use anyhow::{anyhow, bail, Result};
-use camkin::cam::{FollowerState, Found};
+use camkin::cam::{CamError, Follower, FollowerState, Found, Mechanism};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -92,12 +92,14 @@ enum Field {
     Empty,
 }
 
-/// The values of one row, in the order of [`HEADER`].
-fn fields(angle_deg: f64, r: &Result<FollowerState, camkin::cam::CamError>) -> Vec<Field> {
+/// The values of one row, in the order of [`HEADER`]; `jump` marks a row whose contact jumped
+/// since the previous row.
+fn fields(angle_deg: f64, r: &Result<FollowerState, camkin::cam::CamError>, jump: bool) -> Vec<Field> {
     use Field::{Empty, Num, Text};
     match r {
         Ok(s) => {
             let found = match s.found {
+                _ if jump => "jump",
                 Found::Global => "global",
                 Found::WarmStart => "warm",
                 Found::Jump { .. } => "jump",
@@ -197,25 +199,90 @@ fn analyze_with_progress(
     out
 }
 
+/// Rows whose contact jumped since the previous row: flagged by the sweep, or (for a range of
+/// angles) the contact parameter passed over a stretch the follower cannot follow, which it can
+/// only do by jumping.
+fn jump_rows(mech: &Mechanism, results: &[Result<FollowerState, CamError>], stretches: &[(f64, f64)], monotone: bool) -> Vec<bool> {
+    let period = match mech.cam().profile().domain() {
+        camkin::curve::Domain::Periodic { period } => period,
+        _ => 1.0,
+    };
+    let mut out = vec![false; results.len()];
+    for k in 0..results.len() {
+        let Ok(s) = &results[k] else { continue };
+        if matches!(s.found, Found::Jump { .. }) {
+            out[k] = true;
+            continue;
+        }
+        let Some(Ok(p)) = k.checked_sub(1).map(|i| &results[i]) else { continue };
+        if !monotone || stretches.is_empty() {
+            continue;
+        }
+        // the arc from the previous contact to this one, in the direction the contact moves
+        let dir = if p.cam_param_rate >= 0.0 { 1.0 } else { -1.0 };
+        let arc = (dir * (s.cam_param - p.cam_param)).rem_euclid(period);
+        let inside = |u: f64| {
+            let d = (dir * (u - p.cam_param)).rem_euclid(period);
+            d > 0.0 && d < arc
+        };
+        out[k] = stretches.iter().any(|&(a, b)| inside(a) && inside(b));
+    }
+    out
+}
+
+/// Warnings on stderr: profile stretches the follower cannot follow, and where the contact jumps.
+fn report_degenerate(mech: &Mechanism, stretches: &[(f64, f64)], angles: &[f64], jumps: &[bool]) {
+    let what = match mech.follower() {
+        Follower::TranslatingRoller { roller_radius, .. } | Follower::OscillatingRoller { roller_radius, .. } => {
+            format!("concave more sharply than the roller (radius of curvature below {roller_radius})")
+        }
+        _ => "concave under the flat face".to_string(),
+    };
+    let p = mech.cam().profile();
+    for &(a, b) in stretches {
+        let (pa, pb) = (p.position(a), p.position(b));
+        eprintln!(
+            "camkin: warning: the cam profile from u = {a:.4} ({:.4}, {:.4}) to u = {b:.4} ({:.4}, {:.4}) is {what}: the follower cannot follow it, the contact jumps across and the acceleration is impulsive there",
+            pa.x, pa.y, pb.x, pb.y
+        );
+    }
+    let at: Vec<String> = jumps
+        .iter()
+        .enumerate()
+        .filter(|(_, j)| **j)
+        .map(|(k, _)| match k {
+            0 => format!("{}°", angles[0]),
+            _ => format!("{}°–{}°", angles[k - 1], angles[k]),
+        })
+        .collect();
+    if !at.is_empty() {
+        eprintln!("camkin: warning: the contact jumps between cam angles {} (rows marked `jump` in the found column)", at.join(", "));
+    }
+}
+
 pub fn run(args: &Args) -> Result<(), Failure> {
     let mech = load_mechanism(args.mechanism.as_ref())?;
     let angles = angle_list(args.at.as_deref(), args.angles.as_deref()).map_err(Failure::Input)?;
     let thetas: Vec<f64> = angles.iter().map(|a| a.to_radians()).collect();
     let results = analyze_with_progress(&mech, &thetas);
     let failed = results.iter().filter(|r| r.is_err()).count();
+    let stretches = mech.unfollowable_stretches();
+    let jumps = jump_rows(&mech, &results, &stretches, args.at.is_none());
+    report_degenerate(&mech, &stretches, &angles, &jumps);
     write_atomic(args.output.as_deref(), |w| {
         match args.format {
             Format::Csv => {
                 writeln!(w, "{HEADER}")?;
-                for (a, r) in angles.iter().zip(&results) {
-                    csv_row(w, &fields(*a, r))?;
+                for ((a, r), j) in angles.iter().zip(&results).zip(&jumps) {
+                    csv_row(w, &fields(*a, r, *j))?;
                 }
             }
             Format::Json => {
                 let rows: Vec<serde_json::Value> = angles
                     .iter()
                     .zip(&results)
-                    .map(|(a, r)| json_row(&fields(*a, r)))
+                    .zip(&jumps)
+                    .map(|((a, r), j)| json_row(&fields(*a, r, *j)))
                     .collect();
                 serde_json::to_writer(&mut *w, &rows)?;
                 writeln!(w)?;
@@ -267,9 +334,9 @@ mod tests {
         assert!(HEADER.starts_with("angle_deg,position,velocity,acceleration,"));
         let m = crate::mechfile::paper();
         let n = HEADER.split(',').count();
-        assert_eq!(fields(0.0, &m.analyze(0.0)).len(), n);
+        assert_eq!(fields(0.0, &m.analyze(0.0), false).len(), n);
         let err: Result<FollowerState, _> = Err(camkin::cam::CamError::OpenProfile);
-        let f = fields(1.0, &err);
+        let f = fields(1.0, &err, false);
         assert_eq!(f.len(), n);
         let mut out = Vec::new();
         csv_row(&mut out, &f).unwrap();
