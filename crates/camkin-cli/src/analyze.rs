@@ -94,7 +94,11 @@ enum Field {
 
 /// The values of one row, in the order of [`HEADER`]; `jump` marks a row whose contact jumped
 /// since the previous row.
-fn fields(angle_deg: f64, r: &Result<FollowerState, camkin::cam::CamError>, jump: bool) -> Vec<Field> {
+fn fields(
+    angle_deg: f64,
+    r: &Result<FollowerState, camkin::cam::CamError>,
+    jump: bool,
+) -> Vec<Field> {
     use Field::{Empty, Num, Text};
     match r {
         Ok(s) => {
@@ -202,7 +206,12 @@ fn analyze_with_progress(
 /// Rows whose contact jumped since the previous row: flagged by the sweep, or (for a range of
 /// angles) the contact parameter passed over a stretch the follower cannot follow, which it can
 /// only do by jumping.
-fn jump_rows(mech: &Mechanism, results: &[Result<FollowerState, CamError>], stretches: &[(f64, f64)], monotone: bool) -> Vec<bool> {
+fn jump_rows(
+    mech: &Mechanism,
+    results: &[Result<FollowerState, CamError>],
+    stretches: &[(f64, f64)],
+    monotone: bool,
+) -> Vec<bool> {
     let period = match mech.cam().profile().domain() {
         camkin::curve::Domain::Periodic { period } => period,
         _ => 1.0,
@@ -214,7 +223,9 @@ fn jump_rows(mech: &Mechanism, results: &[Result<FollowerState, CamError>], stre
             out[k] = true;
             continue;
         }
-        let Some(Ok(p)) = k.checked_sub(1).map(|i| &results[i]) else { continue };
+        let Some(Ok(p)) = k.checked_sub(1).map(|i| &results[i]) else {
+            continue;
+        };
         if !monotone || stretches.is_empty() {
             continue;
         }
@@ -233,8 +244,11 @@ fn jump_rows(mech: &Mechanism, results: &[Result<FollowerState, CamError>], stre
 /// Warnings on stderr: profile stretches the follower cannot follow, and where the contact jumps.
 fn report_degenerate(mech: &Mechanism, stretches: &[(f64, f64)], angles: &[f64], jumps: &[bool]) {
     let what = match mech.follower() {
-        Follower::TranslatingRoller { roller_radius, .. } | Follower::OscillatingRoller { roller_radius, .. } => {
-            format!("concave more sharply than the roller (radius of curvature below {roller_radius})")
+        Follower::TranslatingRoller { roller_radius, .. }
+        | Follower::OscillatingRoller { roller_radius, .. } => {
+            format!(
+                "concave more sharply than the roller (radius of curvature below {roller_radius})"
+            )
         }
         _ => "concave under the flat face".to_string(),
     };

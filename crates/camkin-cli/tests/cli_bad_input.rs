@@ -1,0 +1,371 @@
+//! Bad input: every case exits with code 2 and a message naming the field (or the line of the
+//! points file) and the offending value, never a panic, and never a written file.
+#![allow(clippy::unwrap_used)]
+use assert_cmd::Command;
+use predicates::prelude::*;
+
+fn camkin() -> Command {
+    Command::cargo_bin("camkin").unwrap()
+}
+
+const CIRCLE: &str =
+    "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [0.5, 0]\nradius = 2\n";
+const FLAT: &str = "[follower]\nkind = \"translating-flat\"\n";
+const SPLINE_HEAD: &str = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"spline\"\n";
+
+/// Runs `camkin analyze` on `toml` (with extra files) and checks exit code 2, every needle in
+/// stderr, no panic and no output file.
+fn bad(name: &str, toml: &str, files: &[(&str, &str)], needles: &[&str]) {
+    let dir = tempfile::tempdir().unwrap();
+    for (f, text) in files {
+        std::fs::write(dir.path().join(f), text).unwrap();
+    }
+    let mech = dir.path().join("m.toml");
+    std::fs::write(&mech, toml).unwrap();
+    let out = dir.path().join("out.csv");
+    let a = camkin()
+        .arg("analyze")
+        .arg(&mech)
+        .args(["--at", "0,90", "-o"])
+        .arg(&out)
+        .assert()
+        .code(2);
+    let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
+    for n in needles {
+        assert!(err.contains(n), "{name}: {n:?} not in {err:?}");
+    }
+    assert!(!err.contains("panicked"), "{name}: {err}");
+    assert!(!out.exists(), "{name}: wrote an output file");
+}
+
+#[test]
+fn missing_and_unknown_fields() {
+    bad(
+        "missing speed",
+        &format!("[cam]\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n{FLAT}"),
+        &[],
+        &["missing field `speed_rpm`"],
+    );
+    bad(
+        "missing radius",
+        &format!("{}\n{FLAT}", CIRCLE.replace("radius = 2\n", "")),
+        &[],
+        &["needs `radius`", "m.toml:4:"],
+    );
+    bad(
+        "missing follower",
+        CIRCLE,
+        &[],
+        &["missing field `follower`"],
+    );
+    bad("missing pivot", &format!("{CIRCLE}[follower]\nkind = \"oscillating-roller\"\narm_length = 5\nroller_radius = 1\n"), &[], &["needs `pivot`"]);
+    bad(
+        "unknown top-level",
+        &format!("{CIRCLE}{FLAT}[extra]\nx = 1\n"),
+        &[],
+        &["unknown field `extra`"],
+    );
+    bad(
+        "unknown field",
+        &format!("{CIRCLE}{FLAT}colour = \"red\"\n"),
+        &[],
+        &["unknown field `colour`"],
+    );
+    bad(
+        "foreign field",
+        &format!("{CIRCLE}points = [[0, 0]]\n{FLAT}"),
+        &[],
+        &["takes no `points`", "m.toml:7:"],
+    );
+    bad(
+        "foreign follower field",
+        &format!("{CIRCLE}{FLAT}roller_radius = 1\n"),
+        &[],
+        &["takes no `roller_radius`"],
+    );
+    bad(
+        "unknown kind",
+        &format!("{CIRCLE}[follower]\nkind = \"rocker\"\n"),
+        &[],
+        &["follower.kind = \"rocker\"", "m.toml:8:"],
+    );
+}
+
+#[test]
+fn wrong_types_and_non_finite_numbers() {
+    bad(
+        "string speed",
+        &format!(
+            "{}{FLAT}",
+            CIRCLE.replace("speed_rpm = 100", "speed_rpm = \"fast\"")
+        ),
+        &[],
+        &["line 2", "speed_rpm", "\"fast\""],
+    );
+    bad(
+        "string radius",
+        &format!("{}{FLAT}", CIRCLE.replace("radius = 2", "radius = \"big\"")),
+        &[],
+        &["line 6", "\"big\""],
+    );
+    bad(
+        "point arity",
+        &format!(
+            "{}{FLAT}",
+            CIRCLE.replace("center = [0.5, 0]", "center = [0.5]")
+        ),
+        &[],
+        &["line 5"],
+    );
+    bad(
+        "nan radius",
+        &format!("{}{FLAT}", CIRCLE.replace("radius = 2", "radius = nan")),
+        &[],
+        &["cam.profile.radius = NaN", "m.toml:6:"],
+    );
+    bad(
+        "inf speed",
+        &format!(
+            "{}{FLAT}",
+            CIRCLE.replace("speed_rpm = 100", "speed_rpm = inf")
+        ),
+        &[],
+        &["cam.speed_rpm = inf"],
+    );
+    bad(
+        "inf pivot",
+        &format!(
+            "{}{FLAT}",
+            CIRCLE.replace("speed_rpm = 100", "speed_rpm = 100\npivot = [0, -inf]")
+        ),
+        &[],
+        &["cam.pivot = [0, -inf]"],
+    );
+    bad(
+        "nan point",
+        &format!("{SPLINE_HEAD}points = [[1, 0], [0, nan], [-1, 0]]\n{FLAT}"),
+        &[],
+        &["cam.profile.points[1]", "NaN"],
+    );
+    bad(
+        "bad direction string",
+        &format!(
+            "{}{FLAT}",
+            CIRCLE.replace("speed_rpm = 100", "speed_rpm = 100\ndirection = \"up\"")
+        ),
+        &[],
+        &["unknown variant `up`"],
+    );
+}
+
+#[test]
+fn out_of_range_values() {
+    bad(
+        "zero speed",
+        &format!(
+            "{}{FLAT}",
+            CIRCLE.replace("speed_rpm = 100", "speed_rpm = 0")
+        ),
+        &[],
+        &["cam.speed_rpm = 0", "positive"],
+    );
+    bad(
+        "negative radius",
+        &format!("{}{FLAT}", CIRCLE.replace("radius = 2", "radius = -1")),
+        &[],
+        &["cam.profile.radius = -1", "positive"],
+    );
+    bad("zero semi-axis", &format!("[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = [2, 0]\n{FLAT}"), &[], &["cam.profile.semi_axes = [2, 0]"]);
+    bad(
+        "zero direction",
+        &format!("{CIRCLE}{FLAT}direction = [0, 0]\n"),
+        &[],
+        &["follower.direction = [0, 0]", "non-zero"],
+    );
+    bad(
+        "negative roller",
+        &format!("{CIRCLE}[follower]\nkind = \"translating-roller\"\nroller_radius = -0.5\n"),
+        &[],
+        &["follower.roller_radius = -0.5"],
+    );
+    bad("zero arm", &format!("{CIRCLE}[follower]\nkind = \"oscillating-roller\"\npivot = [0, 8]\narm_length = 0\nroller_radius = 1\n"), &[], &["follower.arm_length = 0"]);
+}
+
+#[test]
+fn bad_points_inline_and_in_files() {
+    bad(
+        "two points",
+        &format!("{SPLINE_HEAD}points = [[1, 0], [0, 1]]\n{FLAT}"),
+        &[],
+        &["at least 3 points, got 2"],
+    );
+    bad(
+        "repeated",
+        &format!("{SPLINE_HEAD}points = [[1, 0], [0, 1], [0, 1], [-1, 0]]\n{FLAT}"),
+        &[],
+        &["points 1 and 2 coincide at (0, 1)", "m.toml:5:"],
+    );
+    bad(
+        "repeated across the seam",
+        &format!("{SPLINE_HEAD}points = [[1, 0], [0, 1], [-1, 0], [1, 0]]\n{FLAT}"),
+        &[],
+        &["points 3 and 0 coincide"],
+    );
+    let pf = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"points-file\"\npath = \"p.csv\"\n[follower]\nkind = \"translating-flat\"\n";
+    bad(
+        "missing file",
+        pf,
+        &[],
+        &["cam.profile.path = \"p.csv\"", "cannot read"],
+    );
+    bad(
+        "malformed line",
+        pf,
+        &[("p.csv", "1,0\n0,1\nx,y,z\n-1,0\n")],
+        &["p.csv:3:", "expected 2 numbers"],
+    );
+    bad(
+        "non-number",
+        pf,
+        &[("p.csv", "1,0\n0,one\n-1,0\n")],
+        &["p.csv:2:", "\"one\""],
+    );
+    bad(
+        "repeated in file",
+        pf,
+        &[("p.csv", "# nodes\n1,0\n0,1\n0,1\n-1,0\n")],
+        &["p.csv:4:", "points 1 and 2 coincide"],
+    );
+    bad(
+        "too few in file",
+        pf,
+        &[("p.csv", "1,0\n0,1\n")],
+        &["at least 3 points, got 2"],
+    );
+}
+
+#[test]
+fn self_intersecting_profile() {
+    // a figure of eight
+    let pts: Vec<String> = (0..12)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / 12.0;
+            format!("[{}, {}]", 3.0 * t.sin(), 3.0 * t.sin() * t.cos())
+        })
+        .collect();
+    bad(
+        "figure of eight",
+        &format!("{SPLINE_HEAD}points = [{}]\n{FLAT}", pts.join(", ")),
+        &[],
+        &["crosses itself near"],
+    );
+}
+
+#[test]
+fn cusped_profile() {
+    // back and forth along a line: the tangent vanishes where the spline turns back
+    bad(
+        "cusp",
+        &format!("{SPLINE_HEAD}points = [[0, 0], [2, 0], [0, 0], [-2, 0]]\n{FLAT}"),
+        &[],
+        &["cusp"],
+    );
+}
+
+#[test]
+fn follower_that_cannot_reach() {
+    bad(
+        "knife misses",
+        &format!("{CIRCLE}[follower]\nkind = \"translating-knife\"\noffset = 3\n"),
+        &[],
+        &["follower.offset = 3", "misses the cam"],
+    );
+    bad(
+        "roller passes",
+        &format!(
+            "{CIRCLE}[follower]\nkind = \"translating-roller\"\noffset = -4\nroller_radius = 1\n"
+        ),
+        &[],
+        &["follower.offset = -4", "passes the cam"],
+    );
+    bad("arm too short", &format!("{CIRCLE}[follower]\nkind = \"oscillating-roller\"\npivot = [0, 10]\narm_length = 3\nroller_radius = 1\n"), &[], &["follower.arm_length = 3", "cannot reach"]);
+}
+
+#[test]
+fn huge_inputs_are_refused_quickly() {
+    // a million points in a points file: refused at the limit, without reading them all into a spline
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::with_capacity(16 << 20);
+    for i in 0..1_000_000 {
+        let t = std::f64::consts::TAU * i as f64 / 1e6;
+        text.push_str(&format!("{},{}\n", t.cos(), t.sin()));
+    }
+    std::fs::write(dir.path().join("big.csv"), &text).unwrap();
+    let mech = dir.path().join("m.toml");
+    std::fs::write(&mech, "[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"points-file\"\npath = \"big.csv\"\n[follower]\nkind = \"translating-flat\"\n").unwrap();
+    let t = std::time::Instant::now();
+    camkin()
+        .arg("analyze")
+        .arg(&mech)
+        .args(["--at", "0"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("more than 100000 points"));
+    assert!(t.elapsed().as_secs() < 30, "took {:?}", t.elapsed());
+    // a mechanism file over the size limit
+    let big = dir.path().join("big.toml");
+    let f = std::fs::File::create(&big).unwrap();
+    f.set_len((16 << 20) + 1).unwrap();
+    camkin()
+        .arg("analyze")
+        .arg(&big)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("more than"));
+}
+
+#[test]
+fn degenerate_geometry_is_reported_not_hidden() {
+    let dir = tempfile::tempdir().unwrap();
+    let mech = dir.path().join("peanut.toml");
+    std::fs::write(
+        &mech,
+        "[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n",
+    )
+    .unwrap();
+    let a = camkin()
+        .arg("analyze")
+        .arg(&mech)
+        .args(["--angles", "0:360:2"])
+        .assert()
+        .success();
+    let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
+    assert!(err.contains("concave under the flat face"), "{err}");
+    assert!(
+        err.contains("the contact jumps between cam angles"),
+        "{err}"
+    );
+    let out = String::from_utf8(a.get_output().stdout.clone()).unwrap();
+    assert_eq!(
+        out.lines().filter(|l| l.contains(",jump,")).count(),
+        2,
+        "{out}"
+    );
+    // a roller larger than the dents' radius of curvature
+    let roller = mech.with_file_name("roller.toml");
+    std::fs::write(
+        &roller,
+        std::fs::read_to_string(&mech).unwrap().replace(
+            "kind = \"translating-flat\"",
+            "kind = \"translating-roller\"\nroller_radius = 1.5",
+        ),
+    )
+    .unwrap();
+    camkin()
+        .arg("analyze")
+        .arg(&roller)
+        .args(["--angles", "0:360:2"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("more sharply than the roller"));
+}
