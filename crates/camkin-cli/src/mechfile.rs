@@ -17,7 +17,7 @@ use std::sync::Arc;
 use toml::Spanned;
 
 /// Largest mechanism file read, bytes.
-pub const MAX_FILE_BYTES: u64 = 16 << 20;
+pub const MAX_FILE_BYTES: u64 = 8 << 20;
 /// Most nodal points of a spline profile (inline or from a points file).
 pub const MAX_POINTS: usize = camkin::curve::MAX_POINTS;
 
