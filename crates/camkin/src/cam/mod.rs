@@ -624,7 +624,7 @@ impl Mechanism {
         self.motion_at(theta, &cam, &frame, touch, Found::Global)
     }
 
-    #[inline]
+    #[inline(always)]
     pub(crate) fn motion_at(
         &self,
         theta: f64,
@@ -745,20 +745,25 @@ impl Mechanism {
     /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
     #[inline]
     pub(crate) fn is_first_touch_at(&self, e: &WorldDerivs, q: f64) -> bool {
-        let t = Touch { u: 0.0, q };
-        let x = e.p;
-        // the cam's outward normal must face the follower
-        let outward = -self.orientation * e.as_derivs().normal();
-        if !(outward.dot(&self.geometry.toward_follower(x, t.q)) > 0.0) {
+        if !self.faces_follower(e, q) {
             return false;
         }
         if self.geometry.is_knife() {
             return true;
         }
-        match self.geometry.score(x) {
-            Some((_, q)) => (q - t.q).abs() <= self.touch_slack(),
+        match self.geometry.score(e.p) {
+            Some((_, qs)) => (qs - q).abs() <= self.touch_slack(),
             None => false,
         }
+    }
+
+    /// The cam's outward normal at `e` faces the follower at position `q` (the cam's back side
+    /// and a roller touching from inside fail this). Only a sign: no normalisation.
+    #[inline]
+    pub(crate) fn faces_follower(&self, e: &WorldDerivs, q: f64) -> bool {
+        // outward normal ∝ −orientation · k × r'
+        let outward = -self.orientation * crate::geometry::perp(e.d1);
+        outward.dot(&self.geometry.toward_follower(e.p, q)) > 0.0
     }
 
     /// Oriented score of a position (larger is an earlier touch).

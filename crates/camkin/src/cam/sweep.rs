@@ -97,7 +97,7 @@ impl<'a> Sweep<'a> {
     }
 
     /// The contact at `theta`: warm-started from the previous angle when there is one.
-    #[inline]
+    #[inline(always)]
     fn locate(&self, theta: f64) -> Result<(BodyState, Frame, Touch, Found), CamError> {
         let m = self.mech;
         let cam = m.cam.state(theta);
@@ -110,7 +110,7 @@ impl<'a> Sweep<'a> {
     }
 
     /// Keeps what the next angle's prediction needs: `(u, u̇, q, q̇, q̈, found)`.
-    #[inline]
+    #[inline(always)]
     fn remember(&mut self, theta: f64, r: Option<(f64, f64, f64, f64, f64, Found)>) {
         let m = self.mech;
         self.prev = r.map(|(u, u_rate, q, v, a, found)| {
@@ -135,7 +135,7 @@ impl<'a> Sweep<'a> {
         });
     }
 
-    #[inline]
+    #[inline(always)]
     fn warm(&self, theta: f64, frame: &Frame, p: Prev) -> Result<(Touch, Found), CamError> {
         let m = self.mech;
         let dt = theta - p.theta;
@@ -143,8 +143,12 @@ impl<'a> Sweep<'a> {
         let u0 = p.u + dt * (p.du_dtheta + 0.5 * dt * p.d2u_dtheta2);
         let q0 = p.q + dt * (p.dq_dtheta + 0.5 * dt * p.d2q_dtheta2);
         match m.newton_at(theta, frame, u0, q0) {
-            Ok((t, e)) if m.is_first_touch_at(&e, t.q) => {
-                // on a convex profile the first touch is unique: nothing can overtake it
+            // on a convex profile the first touch is unique and Newton started next to it: the
+            // orientation check is enough (it rejects the cam's back side)
+            Ok((t, e))
+                if (m.convex && m.faces_follower(&e, t.q)) || m.is_first_touch_at(&e, t.q) =>
+            {
+                // on a convex profile nothing can overtake the first touch
                 if m.convex {
                     return Ok((t, Found::WarmStart));
                 }
