@@ -25,6 +25,13 @@ pub struct BenchArgs {
     pub repeats: usize,
 }
 
+/// What a caller uses of one query: its position, velocity and acceleration, folded into one
+/// number so that none of them can be optimised away (the sum is `black_box`ed by the caller).
+#[inline]
+fn use_motion(r: Result<camkin::cam::Motion, camkin::cam::CamError>) -> f64 {
+    r.map_or(0.0, |m| m.position + m.velocity + m.acceleration)
+}
+
 /// Median wall time of `f` over `repeats` runs, seconds.
 fn median_time(repeats: usize, mut f: impl FnMut()) -> f64 {
     let mut t: Vec<f64> = (0..repeats.max(1))
@@ -40,8 +47,9 @@ fn median_time(repeats: usize, mut f: impl FnMut()) -> f64 {
 
 /// Sweep angles: revolutions at 0.05°.
 const SWEEP_STEP_DEG: f64 = 0.05;
-/// Revolutions swept in one timed run.
-const SWEEP_REVOLUTIONS: usize = 3;
+/// Revolutions swept in one timed run: long enough (about 10 ms) that waking the thread pool's
+/// idle workers, slow on a virtual machine, is a small part of it.
+const SWEEP_REVOLUTIONS: usize = 10;
 const NODES: [usize; 3] = [100, 1000, 10_000];
 
 pub fn run(args: &BenchArgs) -> Result<(), Failure> {
@@ -68,9 +76,11 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
         )));
     }
     let single = median_time(r, || {
+        let mut acc = 0.0;
         for &t in &cold {
-            let _ = black_box(mech.motion(black_box(t)));
+            acc += use_motion(mech.motion(black_box(t)));
         }
+        black_box(acc);
     }) / cold.len() as f64;
 
     let n = (360.0 / SWEEP_STEP_DEG).round() as usize;
@@ -78,24 +88,28 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
         .map(|k| (k as f64 * SWEEP_STEP_DEG).to_radians())
         .collect();
     // each timed run sweeps SWEEP_REVOLUTIONS revolutions in one go, so that a scheduler
-    // hiccup is a small part of it
+    // hiccup or a worker's wake-up is a small part of it
     let long: Vec<f64> = (0..n * SWEEP_REVOLUTIONS)
         .map(|k| (k as f64 * SWEEP_STEP_DEG).to_radians())
         .collect();
     let sweep = median_time(r, || {
         let mut s = mech.sweep();
+        let mut acc = 0.0;
         for &t in &long {
-            let _ = black_box(s.step_motion(t));
+            acc += use_motion(s.step_motion(t));
         }
+        black_box(acc);
     }) / long.len() as f64;
     let threads = rayon::current_num_threads();
     let chunk = long.len().div_ceil(threads);
     let parallel = median_time(r, || {
         long.par_chunks(chunk).for_each(|c| {
             let mut s = mech.sweep();
+            let mut acc = 0.0;
             for &t in c {
-                let _ = black_box(s.step_motion(t));
+                acc += use_motion(s.step_motion(t));
             }
+            black_box(acc);
         });
     }) / long.len() as f64;
 

@@ -6,8 +6,8 @@
 //! (rad, counter-clockwise from the world x axis).
 
 use super::jet::{Num, V2};
-use crate::body::{BodyState, Pose, WorldDerivs};
-use crate::curve::{Circle, Curve, Line, PointCurve};
+use crate::body::{BodyState, Frame, Pose, WorldDerivs};
+use crate::curve::{Circle, Line, PointCurve};
 use crate::geometry::{perp, wrap_angle_near, Point2, Vec2};
 
 /// Rotation sense: of the cam's motion, or of the spring that closes an oscillating follower.
@@ -111,23 +111,52 @@ pub(crate) enum FollowerCurve {
 }
 
 impl FollowerCurve {
-    pub(crate) fn as_curve(&self) -> &dyn Curve {
+    /// The parameter of the world contact point `c` on this curve (the follower frame is
+    /// `frame`) and the curve's world derivatives there, without a virtual call; a roller's come
+    /// from its radial unit vector.
+    #[inline]
+    pub(crate) fn world_at(&self, frame: &Frame, c: Point2) -> (f64, WorldDerivs) {
         match self {
-            FollowerCurve::Line(c) => c,
-            FollowerCurve::Circle(c) => c,
-            FollowerCurve::Point(c) => c,
-        }
-    }
-
-    /// Parameter of a body-frame point on this curve.
-    pub(crate) fn param_of(&self, x: Point2) -> f64 {
-        match self {
-            FollowerCurve::Line(l) => l.project(x),
-            FollowerCurve::Circle(c) => {
-                let r = x - c.center();
-                r.y.atan2(r.x)
+            FollowerCurve::Line(l) => {
+                let d = frame.rot.apply(l.direction());
+                let a = frame.origin + frame.rot.apply(l.anchor().coords);
+                let u = (c - a).dot(&d);
+                (
+                    u,
+                    WorldDerivs {
+                        p: a + u * d,
+                        d1: d,
+                        d2: Vec2::zeros(),
+                        d3: Vec2::zeros(),
+                    },
+                )
             }
-            FollowerCurve::Point(_) => 0.0,
+            FollowerCurve::Circle(k) => {
+                let centre = frame.origin + frame.rot.apply(k.center().coords);
+                let r = k.radius();
+                let m = c - centre;
+                let radial = m * (1.0 / m.norm());
+                let local = frame.rot.apply_inverse(radial);
+                let t = perp(radial);
+                (
+                    local.y.atan2(local.x),
+                    WorldDerivs {
+                        p: centre + r * radial,
+                        d1: r * t,
+                        d2: -r * radial,
+                        d3: -r * t,
+                    },
+                )
+            }
+            FollowerCurve::Point(q) => (
+                0.0,
+                WorldDerivs {
+                    p: frame.origin + frame.rot.apply(q.at().coords),
+                    d1: Vec2::zeros(),
+                    d2: Vec2::zeros(),
+                    d3: Vec2::zeros(),
+                },
+            ),
         }
     }
 }

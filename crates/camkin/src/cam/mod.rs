@@ -1017,10 +1017,7 @@ impl Mechanism {
         }
         let qd = nu.dot(&cam.velocity_at(c)) / den;
         let body_b = g.body(touch.q, qd, 0.0);
-        let frame_b = body_b.frame();
-        let fcurve = g.curve.as_curve();
-        let u_b = g.curve.param_of(frame_b.to_body(c));
-        let eb = frame_b.eval(fcurve, u_b);
+        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c);
         let pairing = Pairing {
             u_a: touch.u,
             u_b,
