@@ -69,6 +69,7 @@ pub mod body;
 pub mod cam;
 pub mod contact;
 pub mod curve;
+pub mod dynamics;
 pub mod geometry;
 pub mod interp;
 pub(crate) mod periodic;

@@ -111,6 +111,15 @@ pub(crate) enum FollowerCurve {
 }
 
 impl FollowerCurve {
+    /// The curve as a shared trait object (for the dynamics).
+    pub(crate) fn to_arc(self) -> std::sync::Arc<dyn crate::curve::Curve> {
+        match self {
+            FollowerCurve::Line(c) => std::sync::Arc::new(c),
+            FollowerCurve::Circle(c) => std::sync::Arc::new(c),
+            FollowerCurve::Point(c) => std::sync::Arc::new(c),
+        }
+    }
+
     /// The parameter of the world contact point `c` on this curve (the follower frame is
     /// `frame`) and the curve's world derivatives there, without a virtual call; a roller's come
     /// from its radial unit vector.

@@ -601,6 +601,18 @@ impl Mechanism {
         out
     }
 
+    /// The follower's body frame at position `q` (translating: origin at `pivot + e·perp(d) +
+    /// q·d`, angle 0; oscillating: origin at the arm pivot, angle `q`) and its contact curve in that
+    /// frame (face: a line, roller: a circle, knife: a point; oriented material-on-the-left).
+    pub fn follower_body(&self, q: f64) -> (crate::body::Pose, Arc<dyn Curve>) {
+        (self.geometry.pose(q), self.geometry.curve.to_arc())
+    }
+
+    /// The shared profile.
+    pub fn profile_arc(&self) -> Arc<dyn Curve> {
+        self.cam.profile.clone()
+    }
+
     /// +1 when the profile runs counter-clockwise, −1 when clockwise.
     pub fn orientation(&self) -> f64 {
         self.orientation

@@ -1,0 +1,76 @@
+//! Planar multibody dynamics with the contact acceleration constraint of the paper (eq. 11).
+//!
+//! Coordinates are absolute: body `i` has `q_i = (x_i, y_i, θ_i)`, its frame's origin and angle
+//! (conventions: see the [crate docs](crate#sign-conventions)). Constraints `Φ(q, t) = 0` come with
+//! their Jacobian `Φ_q` and the right-hand side `γ` of their acceleration form `Φ_q q̈ = γ`; for a
+//! curve-to-curve contact the row and `γ` are those of [`crate::contact::ContactKinematics`]
+//! (eq. 11), linear in the accelerations because the sliding rates depend on velocities only.
+//!
+//! # Formulation
+//!
+//! The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ` are solved at every evaluation by the
+//! augmented Lagrangian method of Bayo, García de Jalón and Serna (1988): with a penalty `α`,
+//! Baumgarte-type stabilisation of position and velocity drift (damping `ξ`, frequency `Ω`),
+//!
+//! ```text
+//! (M + Φ_qᵀ α Φ_q) q̈ = Q − Φ_qᵀ (λ* + α (−γ + 2ξΩ Φ̇ + Ω² Φ))
+//! λ* ← λ* + α (Φ_q q̈ − γ + 2ξΩ Φ̇ + Ω² Φ)
+//! ```
+//!
+//! iterated until the stabilised acceleration constraints hold to a tolerance; then `λ = λ*` and
+//! `Φ̈ + 2ξΩ Φ̇ + Ω² Φ = 0`, so drift decays instead of growing. The penalty only sets the speed of
+//! the iteration (a few iterations; it acts as iterative refinement of the solve), not the answer.
+
+mod cam;
+mod model;
+mod solver;
+
+pub use cam::{Event, EventKind, FollowerDynamics, Sample, Simulation};
+pub use model::{Constraint, ForceElement, RigidBody, System};
+pub use solver::{AugmentedLagrangian, Evaluation};
+
+/// What went wrong in a dynamic simulation.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DynamicsError {
+    /// A contact's kinematics could not be computed.
+    #[error("at t = {time} s: {source}")]
+    Contact {
+        /// time, s
+        time: f64,
+        /// the contact error
+        source: crate::contact::ContactError,
+    },
+    /// The augmented mass matrix is not positive definite (a body without mass that no
+    /// constraint holds, or a penalty out of range).
+    #[error("at t = {time} s: the augmented mass matrix is singular")]
+    Singular {
+        /// time, s
+        time: f64,
+    },
+    /// The multiplier iteration did not converge.
+    #[error("at t = {time} s: the augmented Lagrangian iteration did not converge ({iterations} iterations, residual {residual})")]
+    NoConvergence {
+        /// time, s
+        time: f64,
+        /// iterations done
+        iterations: usize,
+        /// last constraint residual, 1/s² units of the constraints
+        residual: f64,
+    },
+    /// The kinematic analysis at the start failed.
+    #[error("the starting position cannot be analysed: {source}")]
+    Kinematics {
+        /// the analysis error
+        source: crate::cam::CamError,
+    },
+    /// A parameter is out of range.
+    #[error("{field} = {value}: {reason}")]
+    Invalid {
+        /// the parameter
+        field: &'static str,
+        /// its value
+        value: f64,
+        /// what it must be
+        reason: &'static str,
+    },
+}

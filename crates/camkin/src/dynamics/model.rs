@@ -1,0 +1,322 @@
+//! Bodies, constraints and forces of a planar multibody system.
+
+use crate::body::{BodyState, Pose};
+use crate::contact::{refine, ContactKinematics, Pairing, SearchOptions, Surface};
+use crate::curve::Curve;
+use crate::geometry::{perp, Point2, Rot, Vec2};
+use std::sync::Arc;
+
+/// Mass properties of a rigid body (its frame's origin is where `q` puts it; the inertia is
+/// about that origin).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigidBody {
+    /// mass, kg
+    pub mass: f64,
+    /// moment of inertia about the body frame's origin, kg·m²
+    pub inertia: f64,
+}
+
+/// A constraint between a body and the ground, a driver, or a contact between two bodies.
+#[derive(Debug, Clone)]
+pub enum Constraint {
+    /// Body point `local` (body frame) held at the ground point `ground`: two rows.
+    Revolute {
+        /// the body
+        body: usize,
+        /// the point in the body frame
+        local: Point2,
+        /// where it is held, world
+        ground: Point2,
+    },
+    /// The body slides along the ground line through `through` with unit direction `axis`, its
+    /// angle held at `angle`: two rows (no motion across the axis, no rotation).
+    Translational {
+        /// the body
+        body: usize,
+        /// a point of the line, world
+        through: Point2,
+        /// unit direction of the line
+        axis: Vec2,
+        /// the body's angle, rad
+        angle: f64,
+    },
+    /// The body's angle follows `θ(t) = angle0 + speed t + ½ acceleration t²`: one row.
+    AngleDriver {
+        /// the body
+        body: usize,
+        /// angle at t = 0, rad
+        angle0: f64,
+        /// rad/s
+        speed: f64,
+        /// rad/s²
+        acceleration: f64,
+    },
+    /// Curve `curve_a` on body `a` touching `curve_b` on body `b`: one row (eq. 11).
+    Contact {
+        /// body carrying curve A
+        a: usize,
+        /// curve A in its body frame
+        curve_a: Arc<dyn Curve>,
+        /// body carrying curve B
+        b: usize,
+        /// curve B in its body frame
+        curve_b: Arc<dyn Curve>,
+    },
+}
+
+impl Constraint {
+    /// Number of rows.
+    pub fn rows(&self) -> usize {
+        match self {
+            Constraint::Revolute { .. } | Constraint::Translational { .. } => 2,
+            Constraint::AngleDriver { .. } | Constraint::Contact { .. } => 1,
+        }
+    }
+}
+
+/// An applied force.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ForceElement {
+    /// Gravity on every body, m/s².
+    Gravity(Vec2),
+    /// A linear spring and damper pushing body `body`'s origin along `−axis`:
+    /// `F = −(preload + stiffness (s − reference) + damping ṡ) axis` with `s = (p − origin)·axis`.
+    AxialSpring {
+        /// the body
+        body: usize,
+        /// a point of the axis, world
+        origin: Point2,
+        /// unit axis
+        axis: Vec2,
+        /// N/m
+        stiffness: f64,
+        /// N, at `s = reference`
+        preload: f64,
+        /// m
+        reference: f64,
+        /// N·s/m
+        damping: f64,
+    },
+    /// A torsion spring and damper on body `body` turning it in the sense `sign` (+1 ccw, −1
+    /// cw): `T = sign (preload + stiffness (sign (reference − θ)) ... )`; see [`ForceElement::torsion`].
+    TorsionSpring {
+        /// the body
+        body: usize,
+        /// +1: the torque turns the body counter-clockwise, −1: clockwise
+        sign: f64,
+        /// N·m/rad
+        stiffness: f64,
+        /// N·m, at `θ = reference`
+        preload: f64,
+        /// rad
+        reference: f64,
+        /// N·m·s/rad
+        damping: f64,
+    },
+}
+
+impl ForceElement {
+    /// The torque of a torsion spring at angle `theta` and rate `omega`: the spring winds up as
+    /// the body turns against `sign` from `reference`.
+    pub fn torsion(
+        sign: f64,
+        stiffness: f64,
+        preload: f64,
+        reference: f64,
+        damping: f64,
+        theta: f64,
+        omega: f64,
+    ) -> f64 {
+        let wound = -sign * (theta - reference);
+        sign * (preload + stiffness * wound) - damping * omega
+    }
+}
+
+/// A planar multibody system: bodies, constraints, forces.
+#[derive(Debug, Clone)]
+pub struct System {
+    /// the bodies; body `i` owns coordinates `3i .. 3i + 3`
+    pub bodies: Vec<RigidBody>,
+    /// the constraints
+    pub constraints: Vec<Constraint>,
+    /// the applied forces
+    pub forces: Vec<ForceElement>,
+    /// tolerances of the contact pairing search
+    pub search: SearchOptions,
+}
+
+/// The state of body `i` as a [`BodyState`] (accelerations zero).
+pub(crate) fn body_state(q: &[f64], qd: &[f64], i: usize) -> BodyState {
+    BodyState {
+        pose: Pose::new(Point2::new(q[3 * i], q[3 * i + 1]), q[3 * i + 2]),
+        velocity: Vec2::new(qd[3 * i], qd[3 * i + 1]),
+        omega: qd[3 * i + 2],
+        acceleration: Vec2::zeros(),
+        alpha: 0.0,
+    }
+}
+
+/// One constraint row: `Φ`, `Φ_q` (sparse, as (column, value) pairs), `γ`.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Row {
+    pub(crate) phi: f64,
+    pub(crate) jac: Vec<(usize, f64)>,
+    pub(crate) gamma: f64,
+}
+
+impl System {
+    /// Number of coordinates.
+    pub fn dofs(&self) -> usize {
+        3 * self.bodies.len()
+    }
+
+    /// Generalized applied forces `Q` at `(q, q̇)`.
+    pub(crate) fn forces(&self, q: &[f64], qd: &[f64]) -> Vec<f64> {
+        let mut f = vec![0.0; self.dofs()];
+        for e in &self.forces {
+            match *e {
+                ForceElement::Gravity(g) => {
+                    for (i, b) in self.bodies.iter().enumerate() {
+                        f[3 * i] += b.mass * g.x;
+                        f[3 * i + 1] += b.mass * g.y;
+                    }
+                }
+                ForceElement::AxialSpring {
+                    body,
+                    origin,
+                    axis,
+                    stiffness,
+                    preload,
+                    reference,
+                    damping,
+                } => {
+                    let p = Point2::new(q[3 * body], q[3 * body + 1]);
+                    let s = (p - origin).dot(&axis);
+                    let sd = Vec2::new(qd[3 * body], qd[3 * body + 1]).dot(&axis);
+                    let mag = -(preload + stiffness * (s - reference) + damping * sd);
+                    f[3 * body] += mag * axis.x;
+                    f[3 * body + 1] += mag * axis.y;
+                }
+                ForceElement::TorsionSpring {
+                    body,
+                    sign,
+                    stiffness,
+                    preload,
+                    reference,
+                    damping,
+                } => {
+                    f[3 * body + 2] += ForceElement::torsion(
+                        sign,
+                        stiffness,
+                        preload,
+                        reference,
+                        damping,
+                        q[3 * body + 2],
+                        qd[3 * body + 2],
+                    );
+                }
+            }
+        }
+        f
+    }
+
+    /// The rows of constraint `c` at `(t, q, q̇)`; a contact updates its pairing in place
+    /// (Newton from the previous one).
+    pub(crate) fn rows(
+        &self,
+        c: &Constraint,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        pairing: &mut Option<Pairing>,
+    ) -> Result<Vec<Row>, crate::contact::ContactError> {
+        Ok(match c {
+            Constraint::Revolute {
+                body,
+                local,
+                ground,
+            } => {
+                let i = 3 * body;
+                let th = q[i + 2];
+                let r = Rot::new(th).apply(local.coords);
+                let dr = perp(r); // ∂(R s)/∂θ
+                let w = qd[i + 2];
+                vec![
+                    Row {
+                        phi: q[i] + r.x - ground.x,
+                        jac: vec![(i, 1.0), (i + 2, dr.x)],
+                        gamma: w * w * r.x,
+                    },
+                    Row {
+                        phi: q[i + 1] + r.y - ground.y,
+                        jac: vec![(i + 1, 1.0), (i + 2, dr.y)],
+                        gamma: w * w * r.y,
+                    },
+                ]
+            }
+            Constraint::Translational {
+                body,
+                through,
+                axis,
+                angle,
+            } => {
+                let i = 3 * body;
+                let n = perp(*axis);
+                vec![
+                    Row {
+                        phi: (q[i] - through.x) * n.x + (q[i + 1] - through.y) * n.y,
+                        jac: vec![(i, n.x), (i + 1, n.y)],
+                        gamma: 0.0,
+                    },
+                    Row {
+                        phi: q[i + 2] - angle,
+                        jac: vec![(i + 2, 1.0)],
+                        gamma: 0.0,
+                    },
+                ]
+            }
+            Constraint::AngleDriver {
+                body,
+                angle0,
+                speed,
+                acceleration,
+            } => {
+                let i = 3 * body + 2;
+                vec![Row {
+                    phi: q[i] - (angle0 + speed * t + 0.5 * acceleration * t * t),
+                    jac: vec![(i, 1.0)],
+                    gamma: *acceleration,
+                }]
+            }
+            Constraint::Contact {
+                a,
+                curve_a,
+                b,
+                curve_b,
+            } => {
+                let (sa, sb) = (body_state(q, qd, *a), body_state(q, qd, *b));
+                let (surf_a, surf_b) = (
+                    Surface::new(curve_a.as_ref(), &sa),
+                    Surface::new(curve_b.as_ref(), &sb),
+                );
+                let start = pairing.ok_or(crate::contact::ContactError::Unsupported(
+                    "a contact without a starting pairing",
+                ))?;
+                let p = refine(&surf_a, &surf_b, start.u_a, start.u_b, &self.search)?;
+                *pairing = Some(p);
+                let k = ContactKinematics::new(
+                    &surf_a,
+                    &surf_b,
+                    &p,
+                    crate::contact::CONFORMAL_TOLERANCE,
+                )?;
+                let cols = [3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2];
+                vec![Row {
+                    phi: p.gap,
+                    jac: cols.iter().zip(k.phi_q).map(|(&c, v)| (c, v)).collect(),
+                    gamma: k.gamma,
+                }]
+            }
+        })
+    }
+}
