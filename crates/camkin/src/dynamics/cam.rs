@@ -100,6 +100,13 @@ pub struct Simulation {
 
 const CONTACT: usize = 3;
 
+/// The active constraints as dense rows, with `Φ` and each row's target velocity.
+struct DenseRows {
+    rows: Vec<Vec<f64>>,
+    phi: Vec<f64>,
+    target: Vec<f64>,
+}
+
 impl Simulation {
     /// Builds the multibody model of `mech` with the follower's `params`, starting at cam angle
     /// 0 in contact with the kinematic position and velocity.
@@ -540,7 +547,7 @@ impl Simulation {
         qd: &[f64],
         contact: bool,
         pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<Vec<f64>>, Vec<f64>, Vec<f64>), DynamicsError> {
+    ) -> Result<DenseRows, DynamicsError> {
         let n = q.len();
         let (mut rows, mut phi, mut target) = (Vec::new(), Vec::new(), Vec::new());
         for (k, c) in self.sys.constraints.iter().enumerate() {
@@ -571,7 +578,7 @@ impl Simulation {
                 });
             }
         }
-        Ok((rows, phi, target))
+        Ok(DenseRows { rows, phi, target })
     }
 
     /// Solves `[M Jᵀ; J 0] [x; μ] = [M x0; b]`: the mass-orthogonal projection of `x0` onto
@@ -612,7 +619,7 @@ impl Simulation {
     fn project(&mut self) -> Result<(), DynamicsError> {
         let mut pairings = self.pairings.clone();
         for _ in 0..4 {
-            let (rows, phi, _) =
+            let DenseRows { rows, phi, .. } =
                 self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
             if phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
                 break;
@@ -624,7 +631,7 @@ impl Simulation {
                 *q += d;
             }
         }
-        let (rows, _, target) =
+        let DenseRows { rows, target, .. } =
             self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
         self.qd = self.project_onto(&rows, &self.qd, &target)?;
         self.pairings = pairings;
@@ -636,7 +643,11 @@ impl Simulation {
     /// contact when the rebound is negligible.
     fn impact(&mut self) -> Result<f64, DynamicsError> {
         let mut pairings = self.pairings.clone();
-        let (rows, _, mut targets) = self.dense_rows(&self.q, &self.qd, true, &mut pairings)?;
+        let DenseRows {
+            rows,
+            target: mut targets,
+            ..
+        } = self.dense_rows(&self.q, &self.qd, true, &mut pairings)?;
         let m = rows.len();
         let vn_before = rows[m - 1]
             .iter()
