@@ -10,6 +10,7 @@ pub mod output;
 pub mod plot;
 pub mod plots;
 pub mod scene;
+pub mod simulate;
 pub mod study;
 
 use std::path::PathBuf;

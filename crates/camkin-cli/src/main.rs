@@ -1,6 +1,6 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
-use camkin_cli::{analyze, bench, compare, plot, Failure};
+use camkin_cli::{analyze, bench, compare, plot, simulate, Failure};
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -40,6 +40,11 @@ enum Command {
         after_help = "Examples:\n  camkin bench                      # the paper's cam\n  camkin bench examples/oscillating-roller.toml --json\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Bench(bench::BenchArgs),
+    /// Dynamics: contact force, lift-off and impacts, with a [dynamics] section in the file.
+    #[command(
+        after_help = "Examples:\n  camkin simulate examples/eccentric-flat-dynamics.toml --revolutions 3\n  camkin simulate cam.toml --revolutions 100 --out sim --format json\n\nTime series on stdout (or DIR/time_series.csv), events on stderr (and DIR/events.csv).\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Simulate(simulate::SimulateArgs),
 }
 
 fn main() -> ExitCode {
@@ -50,6 +55,7 @@ fn main() -> ExitCode {
         Command::Compare(args) => compare::run_compare(&args),
         Command::Plot(args) => plot::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Simulate(args) => simulate::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -9,6 +9,7 @@
 
 use camkin::cam::{Cam, CamError, Follower, Mechanism, Sense};
 use camkin::curve::{Circle, ClosedSpline, Curve, CurveError, Ellipse, Parameterization};
+use camkin::dynamics::FollowerDynamics;
 use camkin::{Point2, Vec2};
 use serde::Deserialize;
 use std::ops::Range;
@@ -39,8 +40,23 @@ impl std::error::Error for InputError {}
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct FileSpec {
+    length_unit: Option<Spanned<String>>,
     cam: Spanned<CamSpec>,
     follower: Spanned<FollowerTable>,
+    dynamics: Option<Spanned<DynamicsTable>>,
+}
+
+/// `[dynamics]`, SI units.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct DynamicsTable {
+    mass: Option<Spanned<f64>>,
+    inertia: Option<Spanned<f64>>,
+    spring_stiffness: Spanned<f64>,
+    spring_preload: Spanned<f64>,
+    damping: Option<Spanned<f64>>,
+    restitution: Option<Spanned<f64>>,
+    gravity: Option<Spanned<[f64; 2]>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -117,6 +133,8 @@ struct FollowerTable {
 struct Ctx<'a> {
     name: &'a str,
     text: &'a str,
+    /// metres per length unit of the file (1 when the mechanism is built in file units)
+    scale: f64,
 }
 
 impl Ctx<'_> {
@@ -128,6 +146,10 @@ impl Ctx<'_> {
         InputError {
             message: format!("{}:{line}:{col}: {msg}", self.name),
         }
+    }
+    /// A point in file units converted to the mechanism's units.
+    fn len_point(&self, p: Point2) -> Point2 {
+        Point2::new(self.scale * p.x, self.scale * p.y)
     }
     /// A finite number.
     fn finite(&self, field: &str, v: &Spanned<f64>) -> Result<f64, InputError> {
@@ -235,20 +257,81 @@ pub fn load(path: &Path) -> Result<Mechanism, InputError> {
     parse(&text, &name, path.parent().unwrap_or(Path::new(".")))
 }
 
+/// Reads a mechanism file for a simulation (see [`parse_dynamics`]).
+pub fn load_dynamics(path: &Path) -> Result<(Mechanism, FollowerDynamics), InputError> {
+    let name = path.display().to_string();
+    let len = std::fs::metadata(path)
+        .map_err(|e| InputError {
+            message: format!("cannot read mechanism file {name}: {e}"),
+        })?
+        .len();
+    if len > MAX_FILE_BYTES {
+        return Err(InputError {
+            message: format!(
+                "{name}: {len} bytes is more than the {MAX_FILE_BYTES} a mechanism file may have"
+            ),
+        });
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| InputError {
+        message: format!("cannot read mechanism file {name}: {e}"),
+    })?;
+    parse_dynamics(&text, &name, path.parent().unwrap_or(Path::new(".")))
+}
+
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);
 /// `base` resolves a relative points-file path.
 pub fn parse(text: &str, name: &str, base: &Path) -> Result<Mechanism, InputError> {
+    parse_scaled(text, name, base, false).map(|(m, _)| m)
+}
+
+/// Parses a mechanism file for a dynamic simulation: the geometry converted to metres with the
+/// file's `length_unit`, and the `[dynamics]` section (required).
+pub fn parse_dynamics(
+    text: &str,
+    name: &str,
+    base: &Path,
+) -> Result<(Mechanism, FollowerDynamics), InputError> {
+    let (m, d) = parse_scaled(text, name, base, true)?;
+    Ok((m, d.ok_or_else(|| InputError { message: format!("{name}: a simulation needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)") })?))
+}
+
+fn parse_scaled(
+    text: &str,
+    name: &str,
+    base: &Path,
+    si: bool,
+) -> Result<(Mechanism, Option<FollowerDynamics>), InputError> {
     let spec: FileSpec = toml::from_str(text).map_err(|e| InputError {
         message: format!("{name}: {e}"),
     })?;
-    let ctx = Ctx { name, text };
+    let unit = match &spec.length_unit {
+        None => 1.0,
+        Some(u) => match u.get_ref().as_str() {
+            "m" => 1.0,
+            "cm" => 0.01,
+            "mm" => 0.001,
+            other => {
+                let c = Ctx {
+                    name,
+                    text,
+                    scale: 1.0,
+                };
+                return Err(c.at(
+                    u.span(),
+                    format!("length_unit = {other:?} is not a unit (mm, cm, m)"),
+                ));
+            }
+        },
+    };
+    let scale = if si { unit } else { 1.0 };
+    let ctx = Ctx { name, text, scale };
     let cam = spec.cam.get_ref();
     let profile = build_profile(&ctx, cam.profile.get_ref(), base)?;
     let speed = ctx.positive("cam.speed_rpm", &cam.speed_rpm)?;
     let pivot = cam
         .pivot
         .as_ref()
-        .map(|p| ctx.point("cam.pivot", p))
+        .map(|p| ctx.point("cam.pivot", p).map(|p| ctx.len_point(p)))
         .transpose()?
         .unwrap_or_else(Point2::origin);
     let alpha = cam
@@ -266,9 +349,91 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<Mechanism, InputErro
         .map_err(|e| ctx.at(spec.cam.span(), e))?;
     let follower = build_follower(&ctx, spec.follower.get_ref())?;
     let fspan = spec.follower.span();
-    Mechanism::new(cam_obj, follower).map_err(|e| match e {
+    let oscillating = follower.is_oscillating();
+    let mech = Mechanism::new(cam_obj, follower).map_err(|e| match e {
         CamError::Cusp { .. } => ctx.at(cam.profile.span(), format!("[cam.profile]: {e}")),
         _ => ctx.at(fspan, e),
+    })?;
+    let dynamics = spec
+        .dynamics
+        .as_ref()
+        .map(|d| build_dynamics(&ctx, d, oscillating))
+        .transpose()?;
+    Ok((mech, dynamics))
+}
+
+fn build_dynamics(
+    ctx: &Ctx<'_>,
+    d: &Spanned<DynamicsTable>,
+    oscillating: bool,
+) -> Result<FollowerDynamics, InputError> {
+    let t = d.get_ref();
+    let need = |field: &str, v: &Option<Spanned<f64>>| -> Result<f64, InputError> {
+        match v {
+            Some(v) => ctx.positive(&format!("dynamics.{field}"), v),
+            None => Err(ctx.at(
+                d.span(),
+                format!("[dynamics] needs `{field}` for this follower"),
+            )),
+        }
+    };
+    let nonneg = |field: &str, v: &Spanned<f64>| -> Result<f64, InputError> {
+        let x = ctx.finite(field, v)?;
+        if x >= 0.0 {
+            Ok(x)
+        } else {
+            Err(ctx.at(v.span(), format!("{field} = {x}: must not be negative")))
+        }
+    };
+    let (mass, inertia) = if oscillating {
+        if let Some(m) = &t.mass {
+            return Err(ctx.at(
+                m.span(),
+                "[dynamics] of an oscillating follower takes `inertia`, not `mass`",
+            ));
+        }
+        (1.0, need("inertia", &t.inertia)?)
+    } else {
+        if let Some(i) = &t.inertia {
+            return Err(ctx.at(
+                i.span(),
+                "[dynamics] of a translating follower takes `mass`, not `inertia`",
+            ));
+        }
+        (need("mass", &t.mass)?, 1.0)
+    };
+    let restitution = t
+        .restitution
+        .as_ref()
+        .map(|r| nonneg("dynamics.restitution", r))
+        .transpose()?
+        .unwrap_or(0.0);
+    if restitution > 1.0 {
+        let r = t.restitution.as_ref().map_or(d.span(), Spanned::span);
+        return Err(ctx.at(
+            r,
+            format!("dynamics.restitution = {restitution}: must be from 0 to 1"),
+        ));
+    }
+    let gravity = t
+        .gravity
+        .as_ref()
+        .map(|g| ctx.point("dynamics.gravity", g))
+        .transpose()?
+        .map_or(Vec2::zeros(), |p| p.coords);
+    Ok(FollowerDynamics {
+        mass,
+        inertia,
+        spring_stiffness: nonneg("dynamics.spring_stiffness", &t.spring_stiffness)?,
+        spring_preload: nonneg("dynamics.spring_preload", &t.spring_preload)?,
+        damping: t
+            .damping
+            .as_ref()
+            .map(|c| nonneg("dynamics.damping", c))
+            .transpose()?
+            .unwrap_or(0.0),
+        restitution,
+        gravity,
     })
 }
 
@@ -302,38 +467,41 @@ fn build_profile(
             }
             let mut nodes = Vec::with_capacity(list.len());
             for (i, q) in list.iter().enumerate() {
-                nodes.push(ctx.point(&format!("cam.profile.points[{i}]"), q)?);
+                nodes.push(ctx.len_point(ctx.point(&format!("cam.profile.points[{i}]"), q)?));
             }
             let spans: Vec<Range<usize>> = list.iter().map(Spanned::span).collect();
             spline(&nodes, param, |i| ctx.at(spans.get(i).cloned().unwrap_or(pts.span()), ""), "cam.profile.points")
         }
         "circle" => {
             foreign(ctx, T, kind, &present, &["center", "radius"])?;
-            let c = ctx.point("cam.profile.center", ctx.required(T, kind, "center", &p.center)?)?;
-            let r = ctx.positive("cam.profile.radius", ctx.required(T, kind, "radius", &p.radius)?)?;
+            let c = ctx.len_point(ctx.point("cam.profile.center", ctx.required(T, kind, "center", &p.center)?)?);
+            let r = ctx.scale * ctx.positive("cam.profile.radius", ctx.required(T, kind, "radius", &p.radius)?)?;
             Ok(Arc::new(Circle::new(c, r).map_err(|e| ctx.at(kind.span(), e))?))
         }
         "ellipse" => {
             foreign(ctx, T, kind, &present, &["center", "semi_axes", "rotation_deg"])?;
-            let c = ctx.point("cam.profile.center", ctx.required(T, kind, "center", &p.center)?)?;
+            let c = ctx.len_point(ctx.point("cam.profile.center", ctx.required(T, kind, "center", &p.center)?)?);
             let ax = ctx.required(T, kind, "semi_axes", &p.semi_axes)?;
             let [a, b] = *ax.get_ref();
             if !(a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0) {
                 return Err(ctx.at(ax.span(), format!("cam.profile.semi_axes = [{a}, {b}]: both must be positive and finite")));
             }
             let rot = p.rotation_deg.as_ref().map(|r| ctx.finite("cam.profile.rotation_deg", r)).transpose()?.unwrap_or(0.0);
-            Ok(Arc::new(Ellipse::new(c, a, b, rot.to_radians()).map_err(|e| ctx.at(kind.span(), e))?))
+            Ok(Arc::new(Ellipse::new(c, ctx.scale * a, ctx.scale * b, rot.to_radians()).map_err(|e| ctx.at(kind.span(), e))?))
         }
         "points-file" => {
             foreign(ctx, T, kind, &present, &["path", "parameterization"])?;
             let path = ctx.required(T, kind, "path", &p.path)?;
             let full = base.join(path.get_ref());
             let file = full.display().to_string();
-            let (nodes, lines) = camkin::curve::read_points_file(&full).map_err(|e| match e {
+            let (mut nodes, lines) = camkin::curve::read_points_file(&full).map_err(|e| match e {
                 CurveError::PointsFileIo { message, .. } => ctx.at(path.span(), format!("cam.profile.path = {:?}: cannot read {file}: {message}", path.get_ref())),
                 CurveError::PointsFileSyntax { line, message, content } => InputError { message: format!("{file}:{line}: {message}: {content:?}") },
                 other => ctx.at(path.span(), other),
             })?;
+            for n in &mut nodes {
+                *n = ctx.len_point(*n);
+            }
             spline(&nodes, param, |i| InputError { message: format!("{file}:{}: ", lines.get(i).copied().unwrap_or(0)) }, &format!("points file {file}"))
         }
         other => Err(ctx.at(kind.span(), format!("cam.profile.kind = {other:?} is not a profile kind (spline, circle, ellipse, points-file)"))),
@@ -398,9 +566,9 @@ fn build_follower(ctx: &Ctx<'_>, f: &FollowerTable) -> Result<Follower, InputErr
             .map_or(Ok(Vec2::x()), |d| ctx.direction("follower.direction", d))
     };
     let offset = || -> Result<f64, InputError> {
-        f.offset
-            .as_ref()
-            .map_or(Ok(0.0), |o| ctx.finite("follower.offset", o))
+        f.offset.as_ref().map_or(Ok(0.0), |o| {
+            ctx.finite("follower.offset", o).map(|v| ctx.scale * v)
+        })
     };
     let closing = f
         .closing
@@ -421,7 +589,7 @@ fn build_follower(ctx: &Ctx<'_>, f: &FollowerTable) -> Result<Follower, InputErr
         }
         "translating-roller" => {
             foreign(ctx, T, kind, &present, &["direction", "offset", "roller_radius"])?;
-            let r = ctx.positive("follower.roller_radius", ctx.required(T, kind, "roller_radius", &f.roller_radius)?)?;
+            let r = ctx.scale * ctx.positive("follower.roller_radius", ctx.required(T, kind, "roller_radius", &f.roller_radius)?)?;
             Follower::TranslatingRoller { direction: direction()?, offset: offset()?, roller_radius: r }
         }
         "translating-knife" => {
@@ -430,14 +598,14 @@ fn build_follower(ctx: &Ctx<'_>, f: &FollowerTable) -> Result<Follower, InputErr
         }
         "oscillating-flat" => {
             foreign(ctx, T, kind, &present, &["pivot", "offset", "closing", "initial_angle_deg"])?;
-            let pivot = ctx.point("follower.pivot", ctx.required(T, kind, "pivot", &f.pivot)?)?;
+            let pivot = ctx.len_point(ctx.point("follower.pivot", ctx.required(T, kind, "pivot", &f.pivot)?)?);
             Follower::OscillatingFlat { pivot, face_offset: offset()?, closing, initial_angle: initial()? }
         }
         "oscillating-roller" => {
             foreign(ctx, T, kind, &present, &["pivot", "arm_length", "roller_radius", "closing", "initial_angle_deg"])?;
-            let pivot = ctx.point("follower.pivot", ctx.required(T, kind, "pivot", &f.pivot)?)?;
-            let l = ctx.positive("follower.arm_length", ctx.required(T, kind, "arm_length", &f.arm_length)?)?;
-            let r = ctx.positive("follower.roller_radius", ctx.required(T, kind, "roller_radius", &f.roller_radius)?)?;
+            let pivot = ctx.len_point(ctx.point("follower.pivot", ctx.required(T, kind, "pivot", &f.pivot)?)?);
+            let l = ctx.scale * ctx.positive("follower.arm_length", ctx.required(T, kind, "arm_length", &f.arm_length)?)?;
+            let r = ctx.scale * ctx.positive("follower.roller_radius", ctx.required(T, kind, "roller_radius", &f.roller_radius)?)?;
             Follower::OscillatingRoller { pivot, arm_length: l, roller_radius: r, closing, initial_angle: initial()? }
         }
         other => {

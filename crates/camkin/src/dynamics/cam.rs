@@ -100,6 +100,11 @@ pub struct Simulation {
 
 const CONTACT: usize = 3;
 
+/// A rebound slower than this times the cam's surface speed scale (`ω · size`) ends the bouncing:
+/// the impact is taken as plastic and the contact re-engaged (a sequence of bounces with
+/// restitution below 1 would otherwise never end).
+pub const REBOUND_TOLERANCE: f64 = 1e-3;
+
 /// The active constraints as dense rows, with `Φ` and each row's target velocity.
 struct DenseRows {
     rows: Vec<Vec<f64>>,
@@ -659,7 +664,7 @@ impl Simulation {
         self.qd = self.project_onto(&rows, &self.qd, &targets)?;
         // a negligible rebound: the follower stays on the cam
         let rebound = self.params.restitution * approach;
-        self.in_contact = rebound <= 1e-6 * self.speed * self.size;
+        self.in_contact = rebound <= REBOUND_TOLERANCE * self.speed * self.size;
         Ok(approach)
     }
 }

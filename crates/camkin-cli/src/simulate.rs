@@ -1,0 +1,305 @@
+//! `camkin simulate`: the cam-follower mechanism's dynamics with lift-off and impacts.
+
+use crate::compare::Format;
+use crate::mechfile;
+use crate::output::write_atomic;
+use crate::plots::{self, Chart, Series};
+use crate::Failure;
+use anyhow::anyhow;
+use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, EventKind, Sample, Simulation};
+use std::io::Write;
+use std::path::PathBuf;
+
+#[derive(Debug, clap::Args)]
+pub struct SimulateArgs {
+    /// Mechanism file (TOML) with a [dynamics] section.
+    pub mechanism: PathBuf,
+    /// Cam revolutions to simulate.
+    #[arg(long, value_name = "N", default_value_t = 1.0)]
+    pub revolutions: f64,
+    /// Output interval, degrees of cam angle.
+    #[arg(long, value_name = "DEG", default_value_t = 1.0)]
+    pub step: f64,
+    /// Cam angle at time 0, degrees (the follower starts on the cam there).
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    pub start_angle: f64,
+    /// Integration steps per output interval.
+    #[arg(long, value_name = "K", default_value_t = 1)]
+    pub substeps: usize,
+    /// Directory for the time series, the events and the plots; the time series goes to stdout
+    /// without it.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Format of the time series (table = csv here).
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    pub format: Format,
+}
+
+/// The time-series header; the first seven columns are fixed by the project's interface.
+pub const HEADER: &str = "time,cam_angle_deg,position,velocity,acceleration,contact_force,in_contact,kinematic_position,kinematic_acceleration";
+
+fn dyn_err(e: DynamicsError) -> Failure {
+    match e {
+        DynamicsError::Invalid { .. } | DynamicsError::Kinematics { .. } => {
+            Failure::Input(anyhow!("{e}"))
+        }
+        _ => Failure::Internal(anyhow!("{e}")),
+    }
+}
+
+pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
+    if !(args.revolutions.is_finite() && args.revolutions > 0.0 && args.revolutions <= 1e4) {
+        return Err(Failure::Input(anyhow!(
+            "--revolutions: {} must be in (0, 10000]",
+            args.revolutions
+        )));
+    }
+    let step = crate::compare::check_step(args.step).map_err(Failure::Input)?;
+    if !(1..=1000).contains(&args.substeps) {
+        return Err(Failure::Input(anyhow!(
+            "--substeps: {} must be from 1 to 1000",
+            args.substeps
+        )));
+    }
+    let outputs = (args.revolutions * 360.0 / step).round() as usize;
+    if outputs > 10_000_000 {
+        return Err(Failure::Input(anyhow!(
+            "{outputs} output rows is more than 10000000"
+        )));
+    }
+    let (mech, params) =
+        mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    if !args.start_angle.is_finite() {
+        return Err(Failure::Input(anyhow!(
+            "--start-angle: {} must be finite",
+            args.start_angle
+        )));
+    }
+    let mut sim = Simulation::starting_at(
+        &mech,
+        params,
+        AugmentedLagrangian::default(),
+        args.start_angle.to_radians(),
+    )
+    .map_err(dyn_err)?;
+    let w = mech.cam().speed();
+    let h = step.to_radians() / w / args.substeps as f64;
+    let pb = indicatif::ProgressBar::new(outputs as u64);
+    let mut samples: Vec<Sample> = vec![sim.sample().map_err(dyn_err)?];
+    let mut events: Vec<Event> = Vec::new();
+    for k in 0..outputs {
+        for _ in 0..args.substeps {
+            events.extend(sim.advance(h).map_err(dyn_err)?);
+        }
+        samples.push(sim.sample().map_err(dyn_err)?);
+        if k % 1000 == 0 {
+            pb.set_position(k as u64);
+        }
+    }
+    pb.finish_and_clear();
+    // the kinematic motion at the same cam angles (the contact method)
+    let thetas: Vec<f64> = samples.iter().map(|s| s.cam_angle).collect();
+    let kin: Vec<(f64, f64)> = mech
+        .analyze_all(&thetas)
+        .into_iter()
+        .map(|r| r.map_or((f64::NAN, f64::NAN), |s| (s.position, s.acceleration)))
+        .collect();
+    let series = |w: &mut dyn Write| -> anyhow::Result<()> {
+        match args.format {
+            Format::Json => {
+                let rows: Vec<serde_json::Value> = samples
+                    .iter()
+                    .zip(&kin)
+                    .map(|(s, k)| {
+                        serde_json::json!({
+                            "time": s.time, "cam_angle_deg": s.cam_angle.to_degrees(), "position": s.position, "velocity": s.velocity,
+                            "acceleration": s.acceleration, "contact_force": s.contact_force, "in_contact": s.in_contact,
+                            "kinematic_position": k.0, "kinematic_acceleration": k.1,
+                        })
+                    })
+                    .collect();
+                serde_json::to_writer(
+                    &mut *w,
+                    &serde_json::json!({ "samples": rows, "events": events_json(&events) }),
+                )?;
+                writeln!(w)?;
+            }
+            _ => {
+                writeln!(w, "{HEADER}")?;
+                for (s, k) in samples.iter().zip(&kin) {
+                    writeln!(
+                        w,
+                        "{},{},{},{},{},{},{},{},{}",
+                        s.time,
+                        s.cam_angle.to_degrees(),
+                        s.position,
+                        s.velocity,
+                        s.acceleration,
+                        s.contact_force,
+                        u8::from(s.in_contact),
+                        k.0,
+                        k.1
+                    )?;
+                }
+            }
+        }
+        Ok(())
+    };
+    match &args.out {
+        None => write_atomic(None, series).map_err(Failure::Internal)?,
+        Some(dir) => {
+            std::fs::create_dir_all(dir)
+                .map_err(|e| Failure::Input(anyhow!("cannot create {}: {e}", dir.display())))?;
+            let ext = if args.format == Format::Json {
+                "json"
+            } else {
+                "csv"
+            };
+            write_atomic(Some(&dir.join(format!("time_series.{ext}"))), series)
+                .map_err(Failure::Input)?;
+            write_atomic(Some(&dir.join("events.csv")), |w| {
+                writeln!(w, "event,time,cam_angle_deg,impact_velocity")?;
+                for e in &events {
+                    writeln!(
+                        w,
+                        "{},{},{},{}",
+                        kind(e),
+                        e.time,
+                        e.cam_angle.to_degrees(),
+                        e.impact_velocity
+                    )?;
+                }
+                Ok(())
+            })
+            .map_err(Failure::Input)?;
+            plot(&samples, &kin, dir, mech.follower().is_oscillating())
+                .map_err(Failure::Internal)?;
+        }
+    }
+    report(&events);
+    Ok(())
+}
+
+fn kind(e: &Event) -> &'static str {
+    match e.kind {
+        EventKind::LiftOff => "lift-off",
+        EventKind::Impact => "impact",
+    }
+}
+
+fn events_json(events: &[Event]) -> Vec<serde_json::Value> {
+    events.iter().map(|e| serde_json::json!({"event": kind(e), "time": e.time, "cam_angle_deg": e.cam_angle.to_degrees(), "impact_velocity": e.impact_velocity})).collect()
+}
+
+/// The events as a table on stderr.
+fn report(events: &[Event]) {
+    if events.is_empty() {
+        eprintln!("camkin: no lift-off: the follower stays on the cam");
+        return;
+    }
+    eprintln!(
+        "{:>9} {:>14} {:>15} {:>18}",
+        "event", "time (s)", "cam angle (°)", "impact speed (m/s)"
+    );
+    for e in events.iter().take(50) {
+        eprintln!(
+            "{:>9} {:>14.9} {:>15.6} {:>18.6}",
+            kind(e),
+            e.time,
+            e.cam_angle.to_degrees(),
+            e.impact_velocity
+        );
+    }
+    if events.len() > 50 {
+        eprintln!(
+            "… {} events in all (see events.csv with --out)",
+            events.len()
+        );
+    }
+}
+
+fn plot(
+    samples: &[Sample],
+    kin: &[(f64, f64)],
+    dir: &std::path::Path,
+    oscillating: bool,
+) -> anyhow::Result<()> {
+    let (pu, au) = if oscillating {
+        ("rad", "rad/s²")
+    } else {
+        ("m", "m/s²")
+    };
+    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+        samples
+            .iter()
+            .enumerate()
+            .map(|(k, s)| (s.cam_angle.to_degrees(), f(k)))
+            .collect()
+    };
+    let motion = Chart {
+        title: "follower position: dynamic and kinematic".into(),
+        x_label: "cam angle (°)".into(),
+        y_label: format!("position ({pu})"),
+        series: vec![
+            Series {
+                name: "dynamic".into(),
+                points: pts(&|k| samples[k].position),
+                dashed: false,
+            },
+            Series {
+                name: "kinematic (contact method)".into(),
+                points: pts(&|k| kin[k].0),
+                dashed: true,
+            },
+        ],
+        log_y: false,
+        x_range: None,
+    };
+    plots::save(&motion, &dir.join("motion"))?;
+    let acc = Chart {
+        title: "follower acceleration: dynamic and kinematic".into(),
+        x_label: "cam angle (°)".into(),
+        y_label: format!("acceleration ({au})"),
+        series: vec![
+            Series {
+                name: "dynamic".into(),
+                points: pts(&|k| samples[k].acceleration),
+                dashed: false,
+            },
+            Series {
+                name: "kinematic (contact method)".into(),
+                points: pts(&|k| kin[k].1),
+                dashed: true,
+            },
+        ],
+        log_y: false,
+        x_range: None,
+    };
+    plots::save(&acc, &dir.join("acceleration"))?;
+    let force = Chart {
+        title: "contact force (0 while the follower is off the cam)".into(),
+        x_label: "cam angle (°)".into(),
+        y_label: "contact force (N)".into(),
+        series: vec![
+            Series {
+                name: "contact force".into(),
+                points: pts(&|k| samples[k].contact_force),
+                dashed: false,
+            },
+            Series {
+                name: "zero".into(),
+                points: pts(&|_| 0.0),
+                dashed: true,
+            },
+        ],
+        log_y: false,
+        x_range: None,
+    };
+    plots::save(&force, &dir.join("contact_force"))?;
+    Ok(())
+}

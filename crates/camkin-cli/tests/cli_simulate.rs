@@ -1,0 +1,170 @@
+//! `camkin simulate`: time series, events, plots, bad dynamics input.
+#![allow(clippy::unwrap_used)]
+use assert_cmd::Command;
+use predicates::prelude::*;
+use std::path::PathBuf;
+
+fn camkin() -> Command {
+    Command::cargo_bin("camkin").unwrap()
+}
+
+fn example(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples")
+        .join(name)
+}
+
+#[test]
+fn stiff_spring_stays_on_the_cam_and_follows_the_kinematics() {
+    let out = camkin()
+        .arg("simulate")
+        .arg(example("paper-dynamics.toml"))
+        .args(["--revolutions", "1"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("no lift-off"))
+        .get_output()
+        .stdout
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    assert!(
+        header.starts_with(
+            "time,cam_angle_deg,position,velocity,acceleration,contact_force,in_contact"
+        ),
+        "{header}"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 361);
+    // SI: the paper's cam is in cm, so s(0) = 0.05 m
+    assert!((rows[0][2] - 0.05).abs() < 1e-12, "{}", rows[0][2]);
+    let amax = rows.iter().map(|r| r[8].abs()).fold(0.0, f64::max);
+    for r in &rows {
+        assert_eq!(r[6], 1.0);
+        assert!(r[5] > 0.0);
+        assert!(
+            (r[4] - r[8]).abs() <= 1e-6 * amax,
+            "dynamic {} vs kinematic {}",
+            r[4],
+            r[8]
+        );
+    }
+}
+
+#[test]
+fn lift_off_and_impacts_are_reported_and_written() {
+    let dir = tempfile::tempdir().unwrap();
+    camkin()
+        .arg("simulate")
+        .arg(example("eccentric-flat-dynamics.toml"))
+        .args(["--start-angle", "180", "--revolutions", "1", "--out"])
+        .arg(dir.path())
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("lift-off"))
+        .stderr(predicate::str::contains("impact"));
+    let events = std::fs::read_to_string(dir.path().join("events.csv")).unwrap();
+    assert!(events.starts_with("event,time,cam_angle_deg,impact_velocity"));
+    let lift: f64 = events
+        .lines()
+        .find(|l| l.starts_with("lift-off"))
+        .unwrap()
+        .split(',')
+        .nth(2)
+        .unwrap()
+        .parse()
+        .unwrap();
+    // analytic: cos θ* = (F0 + k e)/(m e ω² − k e) at 1380 rpm
+    let w = 1380.0 * std::f64::consts::TAU / 60.0;
+    let theta = 360.0
+        - ((20.0 + 2000.0 * 0.01) / (0.3 * 0.01 * w * w - 2000.0 * 0.01))
+            .acos()
+            .to_degrees();
+    assert!((lift - theta).abs() < 0.1, "{lift} vs {theta}");
+    for f in [
+        "time_series.csv",
+        "motion.png",
+        "motion.svg",
+        "acceleration.png",
+        "contact_force.png",
+        "contact_force.svg",
+    ] {
+        assert!(dir.path().join(f).exists(), "{f}");
+    }
+}
+
+#[test]
+fn json_has_samples_and_events() {
+    let out = camkin()
+        .arg("simulate")
+        .arg(example("eccentric-flat-dynamics.toml"))
+        .args(["--start-angle", "180", "--step", "2", "--format", "json"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["samples"].as_array().unwrap().len(), 181);
+    assert!(v["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|e| e["event"] == "lift-off"));
+}
+
+#[test]
+fn bad_dynamics_input_exits_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = std::fs::read_to_string(example("eccentric-flat-dynamics.toml")).unwrap();
+    let cases = [
+        (
+            base.replace("mass = 0.3", "mass = -1"),
+            "dynamics.mass = -1",
+        ),
+        (
+            base.replace("mass = 0.3", "inertia = 0.1"),
+            "takes `mass`, not `inertia`",
+        ),
+        (
+            base.replace("restitution = 0.6", "restitution = 1.5"),
+            "dynamics.restitution = 1.5",
+        ),
+        (
+            base.replace("length_unit = \"mm\"", "length_unit = \"inch\""),
+            "length_unit = \"inch\"",
+        ),
+        (
+            base.replace("spring_preload = 20.0", "spring_preload = nan"),
+            "dynamics.spring_preload = NaN",
+        ),
+        (
+            base.split("[dynamics]").next().unwrap().to_string(),
+            "needs a [dynamics] section",
+        ),
+        (
+            base.replace("damping = 0.0", "damping = 0.0\nfriction = 1"),
+            "unknown field `friction`",
+        ),
+    ];
+    for (i, (text, needle)) in cases.iter().enumerate() {
+        let p = dir.path().join(format!("m{i}.toml"));
+        std::fs::write(&p, text).unwrap();
+        camkin()
+            .arg("simulate")
+            .arg(&p)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(*needle))
+            .stderr(predicate::str::contains("panicked").not());
+    }
+    camkin()
+        .arg("simulate")
+        .arg(example("eccentric-flat-dynamics.toml"))
+        .args(["--revolutions", "0"])
+        .assert()
+        .code(2);
+}
