@@ -54,6 +54,10 @@ pub struct Sample {
     pub contact_force: f64,
     /// the follower touches the cam
     pub in_contact: bool,
+    /// the torque driving the cam, N·m
+    pub driver_torque: f64,
+    /// the work done by the driving torque since time 0, J
+    pub driver_work: f64,
 }
 
 /// What happened at an event.
@@ -90,6 +94,7 @@ pub struct Simulation {
     orientation: f64,
     speed: f64,
     theta0: f64,
+    work: f64,
     t: f64,
     q: Vec<f64>,
     qd: Vec<f64>,
@@ -99,6 +104,8 @@ pub struct Simulation {
 }
 
 const CONTACT: usize = 3;
+/// The driver's row among the constraint rows (after the cam's revolute joint).
+const DRIVER_ROW: usize = 2;
 
 /// A rebound slower than this times the cam's surface speed scale (`ω · size`) ends the bouncing:
 /// the impact is taken as plastic and the contact re-engaged (a sequence of bounces with
@@ -304,6 +311,7 @@ impl Simulation {
             orientation: mech.orientation(),
             speed: cam.speed(),
             theta0,
+            work: 0.0,
             t: 0.0,
             q,
             qd,
@@ -322,7 +330,7 @@ impl Simulation {
         [true, true, true, contact]
     }
 
-    /// `(q̈, compressive contact force)` at a state.
+    /// `(q̈, compressive contact force, driving torque)` at a state.
     fn accel(
         &self,
         t: f64,
@@ -330,7 +338,7 @@ impl Simulation {
         qd: &[f64],
         contact: bool,
         pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<f64>, f64), DynamicsError> {
+    ) -> Result<(Vec<f64>, f64, f64), DynamicsError> {
         let e = self
             .sys
             .evaluate(&self.al, t, q, qd, &self.active(contact), pairings)?;
@@ -339,7 +347,8 @@ impl Simulation {
         } else {
             0.0
         };
-        Ok((e.qdd, f))
+        // the driver is row 2 (after the cam's revolute joint); its force on θ is −λ
+        Ok((e.qdd, f, -e.lambda[DRIVER_ROW]))
     }
 
     /// One RK4 step of length `h` from `(t, q, q̇)` in the given mode.
@@ -351,25 +360,28 @@ impl Simulation {
         h: f64,
         contact: bool,
         pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<f64>, Vec<f64>), DynamicsError> {
+    ) -> Result<(Vec<f64>, Vec<f64>, f64), DynamicsError> {
         let n = q.len();
         let add = |a: &[f64], b: &[f64], s: f64| -> Vec<f64> {
             a.iter().zip(b).map(|(x, y)| x + s * y).collect()
         };
-        let (a1, _) = self.accel(t, q, qd, contact, pairings)?;
+        let (a1, _, t1) = self.accel(t, q, qd, contact, pairings)?;
         let (q2, v2) = (add(q, qd, 0.5 * h), add(qd, &a1, 0.5 * h));
-        let (a2, _) = self.accel(t + 0.5 * h, &q2, &v2, contact, pairings)?;
+        let (a2, _, t2) = self.accel(t + 0.5 * h, &q2, &v2, contact, pairings)?;
         let (q3, v3) = (add(q, &v2, 0.5 * h), add(qd, &a2, 0.5 * h));
-        let (a3, _) = self.accel(t + 0.5 * h, &q3, &v3, contact, pairings)?;
+        let (a3, _, t3) = self.accel(t + 0.5 * h, &q3, &v3, contact, pairings)?;
         let (q4, v4) = (add(q, &v3, h), add(qd, &a3, h));
-        let (a4, _) = self.accel(t + h, &q4, &v4, contact, pairings)?;
+        let (a4, _, t4) = self.accel(t + h, &q4, &v4, contact, pairings)?;
         let qn = (0..n)
             .map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]))
             .collect();
         let vn = (0..n)
             .map(|i| qd[i] + h / 6.0 * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]))
             .collect();
-        Ok((qn, vn))
+        // the driving torque's work over the step, integrated with the same stages
+        let w = 2; // θ of the cam
+        let dw = h / 6.0 * (t1 * qd[w] + 2.0 * t2 * v2[w] + 2.0 * t3 * v3[w] + t4 * v4[w]);
+        Ok((qn, vn, dw))
     }
 
     /// Signed gap (positive apart) at a state, following the pairing.
@@ -413,7 +425,7 @@ impl Simulation {
     /// The sample at the current state.
     pub fn sample(&mut self) -> Result<Sample, DynamicsError> {
         let mut pairings = self.pairings.clone();
-        let (qdd, f) = self.accel(
+        let (qdd, f, torque) = self.accel(
             self.t,
             &self.q.clone(),
             &self.qd.clone(),
@@ -439,7 +451,17 @@ impl Simulation {
             acceleration,
             contact_force: f,
             in_contact: self.in_contact,
+            driver_torque: torque,
+            driver_work: self.work,
         })
+    }
+
+    /// The largest `|Φ|` of the active constraints at the current state (length or rad):
+    /// the drift from the constraint manifold.
+    pub fn constraint_residual(&self) -> Result<f64, DynamicsError> {
+        let mut p = self.pairings.clone();
+        let rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut p)?;
+        Ok(rows.phi.iter().fold(0.0f64, |m, x| m.max(x.abs())))
     }
 
     /// The current time, s.
@@ -456,7 +478,7 @@ impl Simulation {
             guard += 1;
             let dt = end - self.t;
             let mut pairings = self.pairings.clone();
-            let (qn, vn) = self.rk4(
+            let (qn, vn, dw) = self.rk4(
                 self.t,
                 &self.q,
                 &self.qd,
@@ -465,16 +487,17 @@ impl Simulation {
                 &mut pairings,
             )?;
             if self.in_contact {
-                let (_, f) = self.accel(end, &qn, &vn, true, &mut pairings.clone())?;
+                let (_, f, _) = self.accel(end, &qn, &vn, true, &mut pairings.clone())?;
                 if f >= 0.0 {
                     (self.q, self.qd, self.pairings, self.t) = (qn, vn, pairings, end);
+                    self.work += dw;
                     self.project()?;
                     continue;
                 }
                 // the force crosses zero inside: bisection on the sub-step
                 let tau = self.bisect(
                     dt,
-                    |s, q, v, p| s.accel(s.t + 0.0, q, v, true, p).map(|(_, f)| f),
+                    |s, t, q, v, p| s.accel(t, q, v, true, p).map(|(_, f, _)| f),
                     true,
                 )?;
                 self.commit(tau, true)?;
@@ -491,10 +514,11 @@ impl Simulation {
                 if g >= -1e-12 * self.size {
                     pairings[CONTACT] = p;
                     (self.q, self.qd, self.pairings, self.t) = (qn, vn, pairings, end);
+                    self.work += dw;
                     self.project()?;
                     continue;
                 }
-                let tau = self.bisect(dt, |s, q, v, p| s.gap(q, v, &mut p[CONTACT]), false)?;
+                let tau = self.bisect(dt, |s, _t, q, v, p| s.gap(q, v, &mut p[CONTACT]), false)?;
                 self.commit(tau, false)?;
                 let vn_before = self.impact()?;
                 events.push(Event {
@@ -513,15 +537,15 @@ impl Simulation {
     fn bisect(
         &self,
         dt: f64,
-        f: impl Fn(&Self, &[f64], &[f64], &mut [Option<Pairing>]) -> Result<f64, DynamicsError>,
+        f: impl Fn(&Self, f64, &[f64], &[f64], &mut [Option<Pairing>]) -> Result<f64, DynamicsError>,
         contact: bool,
     ) -> Result<f64, DynamicsError> {
         let (mut lo, mut hi) = (0.0, dt);
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);
             let mut p = self.pairings.clone();
-            let (q, v) = self.rk4(self.t, &self.q, &self.qd, mid, contact, &mut p)?;
-            let val = f(self, &q, &v, &mut p)?;
+            let (q, v, _) = self.rk4(self.t, &self.q, &self.qd, mid, contact, &mut p)?;
+            let val = f(self, self.t + mid, &q, &v, &mut p)?;
             if val >= 0.0 {
                 lo = mid;
             } else {
@@ -536,11 +560,12 @@ impl Simulation {
 
     fn commit(&mut self, tau: f64, contact: bool) -> Result<(), DynamicsError> {
         let mut p = self.pairings.clone();
-        let (q, v) = self.rk4(self.t, &self.q, &self.qd, tau, contact, &mut p)?;
+        let (q, v, dw) = self.rk4(self.t, &self.q, &self.qd, tau, contact, &mut p)?;
         let mut pc = p[CONTACT];
         let _ = self.gap(&q, &v, &mut pc)?;
         p[CONTACT] = pc;
         (self.q, self.qd, self.pairings, self.t) = (q, v, p, self.t + tau);
+        self.work += dw;
         Ok(())
     }
 
