@@ -6,7 +6,8 @@
 //! - `cold/<follower>`: one query at an arbitrary cam angle (global search, velocity,
 //!   acceleration: `Mechanism::motion`) for each follower type on the paper's cam;
 //! - `sweep/<follower>`: one warm-started step of a 0.05° sweep (`Sweep::step_motion`);
-//! - `sweep_full_state/translating-flat`: the same with every output (`Sweep::step`, no jerk).
+//! - `sweep_full_state/translating-flat`: the same with every output (`Sweep::step`, no jerk);
+//! - `dynamics/revolution_1deg`: one simulated revolution of the paper's cam, 1° steps.
 use camkin::body::{BodyState, Pose};
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
 use camkin::contact::{closest_pair, ContactKinematics, SearchOptions, Surface};
@@ -134,5 +135,35 @@ fn followers_bench(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, spline, contact, followers_bench);
+/// One revolution of the paper's cam (stiff spring, permanent contact) at 1000 rpm with a step
+/// of 1°: the target is 100 revolutions in under a second.
+fn dynamics(c: &mut Criterion) {
+    use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Simulation};
+    let m = paper_mechanism(false);
+    let p = FollowerDynamics {
+        mass: 0.005,
+        inertia: 0.0,
+        spring_stiffness: 2.0e4,
+        spring_preload: 200.0,
+        damping: 5.0,
+        restitution: 0.5,
+        gravity: Vec2::zeros(),
+    };
+    let h = 1f64.to_radians() / m.cam().speed();
+    let mut g = c.benchmark_group("dynamics");
+    g.sample_size(10);
+    g.bench_function("revolution_1deg", |b| {
+        b.iter(|| {
+            let mut sim =
+                Simulation::new(&m, p, AugmentedLagrangian::default()).expect("simulation");
+            for _ in 0..360 {
+                black_box(sim.advance(h).expect("step"));
+                black_box(sim.sample().expect("sample"));
+            }
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, spline, contact, followers_bench, dynamics);
 criterion_main!(benches);

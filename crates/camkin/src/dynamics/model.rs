@@ -97,8 +97,16 @@ pub enum ForceElement {
         /// N·s/m
         damping: f64,
     },
+    /// A constant torque on body `body`, N·m (counter-clockwise positive): a cam driven by a
+    /// motor instead of an angle driver.
+    Torque {
+        /// the body
+        body: usize,
+        /// N·m
+        torque: f64,
+    },
     /// A torsion spring and damper on body `body` turning it in the sense `sign` (+1 ccw, −1
-    /// cw): `T = sign (preload + stiffness (sign (reference − θ)) ... )`; see [`ForceElement::torsion`].
+    /// cw); see [`ForceElement::torsion`].
     TorsionSpring {
         /// the body
         body: usize,
@@ -197,6 +205,7 @@ impl System {
                     f[3 * body] += mag * axis.x;
                     f[3 * body + 1] += mag * axis.y;
                 }
+                ForceElement::Torque { body, torque } => f[3 * body + 2] += torque,
                 ForceElement::TorsionSpring {
                     body,
                     sign,
