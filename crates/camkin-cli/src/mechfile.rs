@@ -254,7 +254,11 @@ pub fn load(path: &Path) -> Result<Mechanism, InputError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError {
         message: format!("cannot read mechanism file {name}: {e}"),
     })?;
-    parse(&text, &name, path.parent().unwrap_or(Path::new(".")))
+    parse(
+        text.strip_prefix('\u{feff}').unwrap_or(&text),
+        &name,
+        path.parent().unwrap_or(Path::new(".")),
+    )
 }
 
 /// Reads a mechanism file for a simulation (see [`parse_dynamics`]).
@@ -275,7 +279,11 @@ pub fn load_dynamics(path: &Path) -> Result<(Mechanism, FollowerDynamics), Input
     let text = std::fs::read_to_string(path).map_err(|e| InputError {
         message: format!("cannot read mechanism file {name}: {e}"),
     })?;
-    parse_dynamics(&text, &name, path.parent().unwrap_or(Path::new(".")))
+    parse_dynamics(
+        text.strip_prefix('\u{feff}').unwrap_or(&text),
+        &name,
+        path.parent().unwrap_or(Path::new(".")),
+    )
 }
 
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);
@@ -502,7 +510,12 @@ fn build_profile(
             for n in &mut nodes {
                 *n = ctx.len_point(*n);
             }
-            spline(&nodes, param, |i| InputError { message: format!("{file}:{}: ", lines.get(i).copied().unwrap_or(0)) }, &format!("points file {file}"))
+            spline(
+                &nodes,
+                param,
+                |i| InputError { message: lines.get(i).map_or_else(|| format!("{file}: "), |l| format!("{file}:{l}: ")) },
+                &format!("points file {file}"),
+            )
         }
         other => Err(ctx.at(kind.span(), format!("cam.profile.kind = {other:?} is not a profile kind (spline, circle, ellipse, points-file)"))),
     }

@@ -16,6 +16,8 @@ pub fn parse_points(text: &str) -> Result<Vec<Point2>, CurveError> {
 
 /// As [`parse_points`], also returning the 1-based line of every point.
 pub fn parse_points_with_lines(text: &str) -> Result<(Vec<Point2>, Vec<usize>), CurveError> {
+    // a byte-order mark, as some CAD and spreadsheet exports write
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut points = Vec::new();
     let mut lines = Vec::new();
     let mut seen_data = false;
@@ -104,6 +106,13 @@ mod tests {
                 Point2::new(5.0, 0.6)
             ]
         );
+    }
+
+    #[test]
+    fn byte_order_mark_and_crlf_are_accepted() {
+        let p = parse_points("\u{feff}1,0\r\n0,1\r\n-1,0\r\n").unwrap();
+        assert_eq!(p.len(), 3);
+        assert_eq!(p[0], Point2::new(1.0, 0.0));
     }
 
     #[test]
