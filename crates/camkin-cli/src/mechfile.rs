@@ -236,14 +236,14 @@ fn span_of<T>(v: &Option<Spanned<T>>) -> Option<Range<usize>> {
     v.as_ref().map(Spanned::span)
 }
 
-/// Reads and builds a mechanism file; every error is bad input (exit code 2).
-pub fn load(path: &Path) -> Result<Mechanism, InputError> {
+/// Reads a mechanism file's text (at most [`MAX_FILE_BYTES`], a byte-order mark dropped):
+/// `(name for messages, text)`.
+fn read_text(path: &Path) -> Result<(String, String), InputError> {
     let name = path.display().to_string();
-    let len = std::fs::metadata(path)
-        .map_err(|e| InputError {
-            message: format!("cannot read mechanism file {name}: {e}"),
-        })?
-        .len();
+    let cannot = |e: std::io::Error| InputError {
+        message: format!("cannot read mechanism file {name}: {e}"),
+    };
+    let len = std::fs::metadata(path).map_err(cannot)?.len();
     if len > MAX_FILE_BYTES {
         return Err(InputError {
             message: format!(
@@ -251,39 +251,24 @@ pub fn load(path: &Path) -> Result<Mechanism, InputError> {
             ),
         });
     }
-    let text = std::fs::read_to_string(path).map_err(|e| InputError {
-        message: format!("cannot read mechanism file {name}: {e}"),
-    })?;
-    parse(
-        text.strip_prefix('\u{feff}').unwrap_or(&text),
-        &name,
-        path.parent().unwrap_or(Path::new(".")),
-    )
+    let text = std::fs::read_to_string(path).map_err(cannot)?;
+    let text = text
+        .strip_prefix('\u{feff}')
+        .map(str::to_string)
+        .unwrap_or(text);
+    Ok((name, text))
+}
+
+/// Reads and builds a mechanism file; every error is bad input (exit code 2).
+pub fn load(path: &Path) -> Result<Mechanism, InputError> {
+    let (name, text) = read_text(path)?;
+    parse(&text, &name, path.parent().unwrap_or(Path::new(".")))
 }
 
 /// Reads a mechanism file for a simulation (see [`parse_dynamics`]).
 pub fn load_dynamics(path: &Path) -> Result<(Mechanism, FollowerDynamics), InputError> {
-    let name = path.display().to_string();
-    let len = std::fs::metadata(path)
-        .map_err(|e| InputError {
-            message: format!("cannot read mechanism file {name}: {e}"),
-        })?
-        .len();
-    if len > MAX_FILE_BYTES {
-        return Err(InputError {
-            message: format!(
-                "{name}: {len} bytes is more than the {MAX_FILE_BYTES} a mechanism file may have"
-            ),
-        });
-    }
-    let text = std::fs::read_to_string(path).map_err(|e| InputError {
-        message: format!("cannot read mechanism file {name}: {e}"),
-    })?;
-    parse_dynamics(
-        text.strip_prefix('\u{feff}').unwrap_or(&text),
-        &name,
-        path.parent().unwrap_or(Path::new(".")),
-    )
+    let (name, text) = read_text(path)?;
+    parse_dynamics(&text, &name, path.parent().unwrap_or(Path::new(".")))
 }
 
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);

@@ -2,7 +2,7 @@
 //! acceleration of a periodic cubic spline through N sampled positions, over one revolution.
 
 use anyhow::{anyhow, Result};
-use camkin::cam::{Follower, FollowerState, Mechanism};
+use camkin::cam::{FollowerState, Mechanism};
 use camkin::interp::{max_and_mean, relative_errors, Interpolated};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::time::Instant;
@@ -24,14 +24,7 @@ pub struct NodeRun {
     pub single_seconds: f64,
 }
 
-/// The independent check of the contact method.
-#[derive(Debug, Clone, Copy)]
-pub struct Check {
-    /// what was compared
-    pub name: &'static str,
-    /// max |a − a_check| / max |a| over the grid
-    pub max_rel_diff: f64,
-}
+pub use camkin::cam::Check;
 
 #[derive(Debug)]
 pub struct Study {
@@ -116,32 +109,7 @@ pub fn run(mech: &Mechanism, nodes: &[usize], step_deg: f64, label: &str) -> Res
     }
 
     // independent checks of the contact method
-    let mut checks = Vec::new();
-    let w = mech.cam().speed();
-    let al = mech.cam().angular_acceleration();
-    if matches!(mech.follower(), Follower::TranslatingFlat { .. }) && mech.is_convex() {
-        let d = exact
-            .iter()
-            .map(|s| {
-                (s.acceleration
-                    - (w * w * (s.radius_of_curvature - s.position) + al * s.velocity / w))
-                    .abs()
-            })
-            .fold(0.0f64, f64::max);
-        checks.push(Check {
-            name: "s̈ = ω²(ρ − s)",
-            max_rel_diff: d / max_abs_acceleration,
-        });
-    }
-    let mut d = 0.0f64;
-    for (s, &th) in exact.iter().zip(&thetas) {
-        let q = mech.angle_derivatives(th)?;
-        d = d.max((s.acceleration - (w * w * q[1] + al * q[0])).abs());
-    }
-    checks.push(Check {
-        name: "implicit differentiation of the first touch",
-        max_rel_diff: d / max_abs_acceleration,
-    });
+    let checks = mech.independent_checks(&exact)?;
     pb.inc(1);
     pb.finish_and_clear();
     Ok(Study {

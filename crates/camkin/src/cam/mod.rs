@@ -13,10 +13,12 @@
 //! the world frame with its origin on the rotation axis. Other conventions: see the
 //! [crate docs](crate#sign-conventions).
 
+mod checks;
 mod follower;
 mod jet;
 mod sweep;
 
+pub use checks::Check;
 pub use follower::{Follower, Sense};
 pub use sweep::{Found, Sweep};
 
