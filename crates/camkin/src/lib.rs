@@ -72,6 +72,7 @@ pub mod curve;
 pub mod dynamics;
 pub mod geometry;
 pub mod interp;
+pub mod motion;
 pub(crate) mod periodic;
 pub mod reference;
 
