@@ -482,9 +482,29 @@ impl Mechanism {
         let breakpoints = profile.breakpoints();
         let samples = bracket_samples(&breakpoints, period, 16, 256);
         // size, orientation (shoelace) and convexity from a dense sampling
-        let dense = bracket_samples(&breakpoints, period, 64, 1024);
-        let pts: Vec<_> = dense.iter().map(|&u| profile.eval(u)).collect();
-        let size = pts.iter().map(|e| e.p.coords.norm()).fold(0.0, f64::max);
+        // one streaming pass over a dense sampling: size, orientation (shoelace), convexity, cusps
+        let (mut size, mut area2, mut kmin, mut kmax, mut gsum, mut count) =
+            (0.0f64, 0.0, f64::INFINITY, f64::NEG_INFINITY, 0.0, 0usize);
+        let mut gmin = (f64::INFINITY, 0.0, Point2::origin());
+        let (mut first, mut prev): (Option<Point2>, Option<Point2>) = (None, None);
+        for u in bracket_params(&breakpoints, period, 64, 1024) {
+            let e = profile.eval(u);
+            size = size.max(e.p.coords.norm());
+            match prev {
+                Some(p) => area2 += cross(p.coords, e.p.coords),
+                None => first = Some(e.p),
+            }
+            prev = Some(e.p);
+            let g = e.d1.norm();
+            if !(g >= gmin.0) {
+                gmin = (g, u, e.p);
+            }
+            gsum += g;
+            count += 1;
+            let k = e.curvature();
+            kmin = kmin.min(k);
+            kmax = kmax.max(k);
+        }
         if !(size.is_finite() && size > 0.0) {
             return Err(CamError::Invalid {
                 field: "cam.profile",
@@ -492,24 +512,24 @@ impl Mechanism {
                 reason: "profile must have a finite, non-zero size",
             });
         }
-        let area2: f64 = (0..pts.len())
-            .map(|i| cross(pts[i].p.coords, pts[(i + 1) % pts.len()].p.coords))
-            .sum();
+        if let (Some(f), Some(l)) = (first, prev) {
+            area2 += cross(l.coords, f.coords);
+        }
         let orientation = if area2 >= 0.0 { 1.0 } else { -1.0 };
-        let convex = pts.iter().all(|e| orientation * e.curvature() > 0.0);
         // a cusp: the tangent vanishes (relative to its mean length)
-        let mean_g = pts.iter().map(|e| e.d1.norm()).sum::<f64>() / pts.len() as f64;
-        if let Some((e, &u)) = pts
-            .iter()
-            .zip(&dense)
-            .find(|(e, _)| !(e.d1.norm() > 1e-9 * mean_g))
-        {
+        let mean_g = gsum / count.max(1) as f64;
+        if !(gmin.0 > 1e-9 * mean_g) {
             return Err(CamError::Cusp {
-                param: u,
-                x: e.p.x,
-                y: e.p.y,
+                param: gmin.1,
+                x: gmin.2.x,
+                y: gmin.2.y,
             });
         }
+        let convex = if orientation > 0.0 {
+            kmin > 0.0
+        } else {
+            kmax < 0.0
+        };
         check_reach(&geometry, &follower, size)?;
         let options = AnalysisOptions::for_size(size);
         let mut m = Self {
@@ -1235,6 +1255,29 @@ fn check_reach(g: &Geometry, f: &Follower, size: f64) -> Result<(), CamError> {
     }
 }
 
+/// The same parameters as [`bracket_samples`], without storing them.
+pub(crate) fn bracket_params(
+    breakpoints: &[f64],
+    period: f64,
+    per_piece: usize,
+    per_curve: usize,
+) -> impl Iterator<Item = f64> + '_ {
+    let n = breakpoints.len();
+    let pieces = if n == 0 { 1 } else { n };
+    (0..pieces).flat_map(move |i| {
+        let (s, e, k) = if n == 0 {
+            (0.0, period, per_curve)
+        } else {
+            (
+                breakpoints[i],
+                breakpoints.get(i + 1).copied().unwrap_or(period),
+                per_piece,
+            )
+        };
+        (0..k).map(move |j| s + (e - s) * j as f64 / k as f64)
+    })
+}
+
 /// Parameters for bracketing: `per_piece` per smooth piece, or `per_curve` over the period.
 pub(crate) fn bracket_samples(
     breakpoints: &[f64],
@@ -1281,5 +1324,13 @@ mod tests {
         let s = bracket_samples(&[0.0, 1.0, 3.0], 4.0, 2, 5);
         assert_eq!(s, vec![0.0, 0.5, 1.0, 2.0, 3.0, 3.5]);
         assert_eq!(bracket_samples(&[], 1.0, 2, 4), vec![0.0, 0.25, 0.5, 0.75]);
+        assert_eq!(
+            bracket_params(&[0.0, 1.0, 3.0], 4.0, 2, 5).collect::<Vec<_>>(),
+            s
+        );
+        assert_eq!(
+            bracket_params(&[], 1.0, 2, 4).collect::<Vec<_>>(),
+            vec![0.0, 0.25, 0.5, 0.75]
+        );
     }
 }
