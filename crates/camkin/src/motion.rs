@@ -120,6 +120,12 @@ fn modified_sine() -> &'static [Piece] {
     })
 }
 
+fn snap_pieces(pieces: &[Piece], x: f64) -> f64 {
+    let k = pieces.iter().rposition(|p| p.x0 <= x).unwrap_or(0);
+    let p = &pieces[k];
+    -p.a * p.w * p.w * (p.w * x + p.phi).sin()
+}
+
 fn eval_pieces(pieces: &[Piece], x: f64) -> [f64; 4] {
     let k = pieces.iter().rposition(|p| p.x0 <= x).unwrap_or(0);
     pieces[k].eval(x)
@@ -165,6 +171,21 @@ impl Law {
             }
             Law::ModifiedTrapezoid => eval_pieces(modified_trapezoid(), x),
             Law::ModifiedSine => eval_pieces(modified_sine(), x),
+        }
+    }
+
+    /// `y''''` at `x ∈ [0, 1]` (the fourth derivative, for the third derivative of synthesised
+    /// profiles).
+    pub fn snap(&self, x: f64) -> f64 {
+        let x = x.clamp(0.0, 1.0);
+        match self {
+            Law::Dwell | Law::ConstantVelocity => 0.0,
+            Law::SimpleHarmonic => -0.5 * PI.powi(4) * (PI * x).cos(),
+            Law::Cycloidal => -TAU.powi(3) * (TAU * x).sin(),
+            Law::Polynomial345 => -360.0 + 720.0 * x,
+            Law::Polynomial4567 => 840.0 - 10080.0 * x + 25200.0 * x * x - 16800.0 * x * x * x,
+            Law::ModifiedTrapezoid => snap_pieces(modified_trapezoid(), x),
+            Law::ModifiedSine => snap_pieces(modified_sine(), x),
         }
     }
 
@@ -381,6 +402,22 @@ impl Program {
         out
     }
 
+    /// `[s, s', s'', s''', s'''']` at cam angle `theta` (rad).
+    pub fn eval5(&self, theta: f64) -> [f64; 5] {
+        let t = theta.rem_euclid(TAU);
+        let k = self.starts.iter().rposition(|&s| s <= t).unwrap_or(0);
+        let e = self.eval_segment(k, t);
+        let seg = &self.segments[k];
+        let b = seg.extent;
+        let snap = seg.rise * seg.law.snap((t - self.starts[k]) / b) / (b * b * b * b);
+        [e[0], e[1], e[2], e[3], snap]
+    }
+
+    /// Cam angles where segments start (rad).
+    pub fn starts(&self) -> &[f64] {
+        &self.starts
+    }
+
     /// The base position (at cam angle 0).
     pub fn base(&self) -> f64 {
         self.base
@@ -429,6 +466,27 @@ mod tests {
                         e[d + 1]
                     );
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn snap_is_the_derivative_of_jerk() {
+        for law in Law::ALL {
+            for k in 1..40 {
+                let x = (k as f64 + 0.37) / 41.0;
+                if matches!(law, Law::ModifiedTrapezoid | Law::ModifiedSine)
+                    && ((x * 8.0) - (x * 8.0).round()).abs() < 1e-2
+                {
+                    continue;
+                }
+                let num = fd(|t| law.normalized(t)[3], x, 1e-4);
+                let e = law.snap(x);
+                assert!(
+                    (num - e).abs() < 1e-5 * (1.0 + e.abs()),
+                    "{} at {x}: {num} vs {e}",
+                    law.name()
+                );
             }
         }
     }

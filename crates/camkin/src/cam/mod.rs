@@ -17,6 +17,7 @@ mod checks;
 mod follower;
 mod jet;
 mod sweep;
+pub mod synthesis;
 
 pub use checks::Check;
 pub use follower::{Follower, Sense};
