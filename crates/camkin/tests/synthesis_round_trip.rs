@@ -129,10 +129,6 @@ fn every_law_and_translating_follower_round_trips() {
 
 #[test]
 fn synthesised_profiles_derivatives_agree_with_differences() {
-    use camkin::curve::Curve;
-    let fd = |f: &dyn Fn(f64) -> Vec2, u: f64, h: f64| {
-        (f(u - 2.0 * h) - 8.0 * f(u - h) + 8.0 * f(u + h) - f(u + 2.0 * h)) / (12.0 * h)
-    };
     for law in Law::ALL {
         for f in [
             Follower::TranslatingFlat {
@@ -148,41 +144,181 @@ fn synthesised_profiles_derivatives_agree_with_differences() {
                 roller_radius: 1.0,
             },
         ] {
-            let prof = synthesize(program(law), 4.0, &f, Sense::Cw).unwrap();
-            for k in 0..36 {
-                let u = (k as f64 * 10.0 + 3.3).to_radians();
-                // off the segment junctions and the modified laws' eighths
-                let deg = u.to_degrees();
-                if [0.0f64, 120.0, 180.0, 300.0, 360.0]
-                    .iter()
-                    .any(|j| (deg - j).abs() < 1.0)
-                {
-                    continue;
+            check_derivatives(
+                &synthesize(program(law), 4.0, &f, Sense::Cw).unwrap(),
+                &format!("{} {}", law.name(), f.kind_name()),
+            );
+        }
+        for f in [
+            Follower::OscillatingRoller {
+                pivot: Point2::new(-3.0, 7.0),
+                arm_length: 9.0,
+                roller_radius: 1.0,
+                closing: Sense::Cw,
+                initial_angle: (-30f64).to_radians(),
+            },
+            Follower::OscillatingFlat {
+                pivot: Point2::new(-3.0, 7.0),
+                face_offset: 0.5,
+                closing: Sense::Cw,
+                initial_angle: (-30f64).to_radians(),
+            },
+        ] {
+            check_derivatives(
+                &synthesize(arm_program(law), 4.0, &f, Sense::Ccw).unwrap(),
+                &format!("{} {}", law.name(), f.kind_name()),
+            );
+        }
+    }
+}
+
+/// d1, d2, d3 of a synthesised profile against 4th-order differences of the lower derivative,
+/// away from the segment junctions.
+fn check_derivatives(prof: &camkin::cam::synthesis::SynthesizedProfile, name: &str) {
+    use camkin::curve::Curve;
+    let fd = |f: &dyn Fn(f64) -> Vec2, u: f64, h: f64| {
+        (f(u - 2.0 * h) - 8.0 * f(u - h) + 8.0 * f(u + h) - f(u + 2.0 * h)) / (12.0 * h)
+    };
+    for k in 0..36 {
+        let deg = k as f64 * 10.0 + 3.3;
+        if [0.0f64, 120.0, 180.0, 300.0, 360.0]
+            .iter()
+            .any(|j| (deg - j).abs() < 1.0)
+        {
+            continue;
+        }
+        let u = deg.to_radians();
+        let e = prof.eval(u);
+        let h = 1e-4;
+        let d1 = fd(&|v| prof.eval(v).p.coords, u, h);
+        let d2 = fd(&|v| prof.eval(v).d1, u, h);
+        let d3 = fd(&|v| prof.eval(v).d2, u, h);
+        let sc = 1.0 + e.d1.norm() + e.d2.norm() + e.d3.norm();
+        assert!((d1 - e.d1).norm() < 1e-6 * sc, "{name} d1 at {deg}");
+        assert!((d2 - e.d2).norm() < 1e-6 * sc, "{name} d2 at {deg}");
+        assert!(
+            (d3 - e.d3).norm() < 1e-5 * sc,
+            "{name} d3 at {deg}: {d3} vs {}",
+            e.d3
+        );
+    }
+}
+
+fn arm_program(law: Law) -> Program {
+    let d = |x: f64| x.to_radians();
+    match law {
+        Law::Dwell => Program::new(
+            0.0,
+            vec![Segment {
+                law,
+                rise: 0.0,
+                extent: d(360.0),
+            }],
+        )
+        .unwrap(),
+        _ => Program::new(
+            0.0,
+            vec![
+                Segment {
+                    law,
+                    rise: 0.25,
+                    extent: d(120.0),
+                },
+                Segment {
+                    law: Law::Dwell,
+                    rise: 0.0,
+                    extent: d(60.0),
+                },
+                Segment {
+                    law,
+                    rise: -0.25,
+                    extent: d(120.0),
+                },
+                Segment {
+                    law: Law::Dwell,
+                    rise: 0.0,
+                    extent: d(60.0),
+                },
+            ],
+        )
+        .unwrap(),
+    }
+}
+
+#[test]
+fn every_law_and_oscillating_follower_round_trips() {
+    let followers = [
+        Follower::OscillatingRoller {
+            pivot: Point2::new(-3.0, 7.0),
+            arm_length: 9.0,
+            roller_radius: 1.0,
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+        },
+        Follower::OscillatingFlat {
+            pivot: Point2::new(-3.0, 7.0),
+            face_offset: 0.5,
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+        },
+    ];
+    for law in Law::ALL {
+        for f in followers {
+            for dir in [Sense::Ccw, Sense::Cw] {
+                let prof = Arc::new(synthesize(arm_program(law), 4.0, &f, dir).unwrap());
+                let m = Mechanism::new(
+                    Cam::from_rpm(prof.clone(), Point2::origin(), dir, 600.0).unwrap(),
+                    f,
+                )
+                .unwrap();
+                let w = m.cam().speed();
+                let (mut worst, mut amax): (f64, f64) = (0.0, 0.0);
+                for k in 0..360 {
+                    let deg = k as f64 + 0.5;
+                    if law == Law::ConstantVelocity
+                        && [0.0f64, 120.0, 180.0, 300.0]
+                            .iter()
+                            .any(|j| (deg - j).abs() < 1.0)
+                    {
+                        continue;
+                    }
+                    let th = deg.to_radians();
+                    let s = m.analyze(th).unwrap_or_else(|e| {
+                        panic!("{} {} {dir:?} at {k}: {e}", law.name(), f.kind_name())
+                    });
+                    let exact = prof.follower_motion(th);
+                    assert!(
+                        (s.position - exact[0]).abs() < 1e-10,
+                        "{} {} {dir:?} φ at {k}: {} vs {}",
+                        law.name(),
+                        f.kind_name(),
+                        s.position,
+                        exact[0]
+                    );
+                    assert!(
+                        (s.velocity - w * exact[1]).abs() < 1e-10 * w,
+                        "{} {} {dir:?} φ̇ at {k}: {} vs {}",
+                        law.name(),
+                        f.kind_name(),
+                        s.velocity,
+                        w * exact[1]
+                    );
+                    worst = worst.max((s.acceleration - w * w * exact[2]).abs());
+                    amax = amax.max((w * w * exact[2]).abs());
+                    assert!(
+                        (s.cam_param - th).abs() < 1e-9,
+                        "{} {} {dir:?}: contact at {} for θ = {th}",
+                        law.name(),
+                        f.kind_name(),
+                        s.cam_param
+                    );
                 }
-                let e = prof.eval(u);
-                let h = 1e-4;
-                let d1 = fd(&|v| prof.eval(v).p.coords, u, h);
-                let d2 = fd(&|v| prof.eval(v).d1, u, h);
-                let d3 = fd(&|v| prof.eval(v).d2, u, h);
-                let sc = 1.0 + e.d1.norm() + e.d2.norm() + e.d3.norm();
+                let scale = amax.max(w * w);
                 assert!(
-                    (d1 - e.d1).norm() < 1e-6 * sc,
-                    "{} {} d1 at {deg}",
+                    worst <= 1e-10 * scale,
+                    "{} {} {dir:?}: acceleration {worst:e} of {scale:e}",
                     law.name(),
                     f.kind_name()
-                );
-                assert!(
-                    (d2 - e.d2).norm() < 1e-6 * sc,
-                    "{} {} d2 at {deg}",
-                    law.name(),
-                    f.kind_name()
-                );
-                assert!(
-                    (d3 - e.d3).norm() < 1e-5 * sc,
-                    "{} {} d3 at {deg}: {d3} vs {}",
-                    law.name(),
-                    f.kind_name(),
-                    e.d3
                 );
             }
         }
