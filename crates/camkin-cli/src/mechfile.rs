@@ -7,9 +7,11 @@
 //! direction, too few or repeated points, a self-intersecting or cusped profile, a follower that
 //! cannot reach the cam.
 
+use camkin::cam::synthesis::synthesize;
 use camkin::cam::{Cam, CamError, Follower, Mechanism, Sense};
 use camkin::curve::{Circle, ClosedSpline, Curve, CurveError, Ellipse, Parameterization};
 use camkin::dynamics::FollowerDynamics;
+use camkin::motion::{Law, Program, Segment};
 use camkin::{Point2, Vec2};
 use serde::Deserialize;
 use std::ops::Range;
@@ -113,6 +115,18 @@ struct ProfileTable {
     semi_axes: Option<Spanned<[f64; 2]>>,
     rotation_deg: Option<Spanned<f64>>,
     path: Option<Spanned<String>>,
+    base_radius: Option<Spanned<f64>>,
+    segments: Option<Spanned<Vec<Spanned<SegmentSpec>>>>,
+}
+
+/// One segment of a `kind = "motion"` profile.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SegmentSpec {
+    law: Spanned<String>,
+    #[serde(default)]
+    rise: Option<Spanned<f64>>,
+    degrees: Spanned<f64>,
 }
 
 /// `[follower]`: every field of every kind; the kind decides which belong.
@@ -319,7 +333,12 @@ fn parse_scaled(
     let scale = if si { unit } else { 1.0 };
     let ctx = Ctx { name, text, scale };
     let cam = spec.cam.get_ref();
-    let profile = build_profile(&ctx, cam.profile.get_ref(), base)?;
+    let follower = build_follower(&ctx, spec.follower.get_ref())?;
+    let sense = cam
+        .direction
+        .as_ref()
+        .map_or(Sense::Ccw, |d| (*d.get_ref()).into());
+    let profile = build_profile(&ctx, cam.profile.get_ref(), base, &follower, sense)?;
     let speed = ctx.positive("cam.speed_rpm", &cam.speed_rpm)?;
     let pivot = cam
         .pivot
@@ -333,14 +352,9 @@ fn parse_scaled(
         .map(|a| ctx.finite("cam.angular_acceleration_deg_s2", a))
         .transpose()?
         .unwrap_or(0.0);
-    let sense = cam
-        .direction
-        .as_ref()
-        .map_or(Sense::Ccw, |d| (*d.get_ref()).into());
     let cam_obj = Cam::from_rpm(profile, pivot, sense, speed)
         .and_then(|c| c.with_angular_acceleration(alpha.to_radians()))
         .map_err(|e| ctx.at(spec.cam.span(), e))?;
-    let follower = build_follower(&ctx, spec.follower.get_ref())?;
     let fspan = spec.follower.span();
     let oscillating = follower.is_oscillating();
     let mech = Mechanism::new(cam_obj, follower).map_err(|e| match e {
@@ -434,9 +448,13 @@ fn build_profile(
     ctx: &Ctx<'_>,
     p: &ProfileTable,
     base: &Path,
+    follower: &Follower,
+    sense: Sense,
 ) -> Result<Arc<dyn Curve>, InputError> {
     const T: &str = "cam.profile";
     let present = [
+        ("base_radius", span_of(&p.base_radius)),
+        ("segments", span_of(&p.segments)),
         ("points", span_of(&p.points)),
         ("parameterization", span_of(&p.parameterization)),
         ("center", span_of(&p.center)),
@@ -482,6 +500,27 @@ fn build_profile(
             let rot = p.rotation_deg.as_ref().map(|r| ctx.finite("cam.profile.rotation_deg", r)).transpose()?.unwrap_or(0.0);
             Ok(Arc::new(Ellipse::new(c, ctx.scale * a, ctx.scale * b, rot.to_radians()).map_err(|e| ctx.at(kind.span(), e))?))
         }
+        "motion" => {
+            foreign(ctx, T, kind, &present, &["base_radius", "segments"])?;
+            let rb = ctx.scale * ctx.positive("cam.profile.base_radius", ctx.required(T, kind, "base_radius", &p.base_radius)?)?;
+            let segs = ctx.required(T, kind, "segments", &p.segments)?;
+            // rises: lengths for translating followers, degrees of arm angle for oscillating ones
+            let rise_scale = if follower.is_oscillating() { 1f64.to_radians() } else { ctx.scale };
+            let mut list = Vec::new();
+            for (i, seg) in segs.get_ref().iter().enumerate() {
+                let sg = seg.get_ref();
+                let law = Law::ALL.iter().copied().find(|l| l.name() == sg.law.get_ref().as_str()).ok_or_else(|| {
+                    let names: Vec<&str> = Law::ALL.iter().map(|l| l.name()).collect();
+                    ctx.at(sg.law.span(), format!("cam.profile.segments[{i}].law = {:?} is not a law ({})", sg.law.get_ref(), names.join(", ")))
+                })?;
+                let rise = sg.rise.as_ref().map(|r| ctx.finite(&format!("cam.profile.segments[{i}].rise"), r)).transpose()?.unwrap_or(0.0);
+                let degrees = ctx.positive(&format!("cam.profile.segments[{i}].degrees"), &sg.degrees)?;
+                list.push(Segment { law, rise: rise * rise_scale, extent: degrees.to_radians() });
+            }
+            let program = Program::new(0.0, list).map_err(|e| ctx.at(segs.span(), format!("cam.profile.segments: {e}")))?;
+            let prof = synthesize(program, rb, follower, sense).map_err(|e| ctx.at(kind.span(), e))?;
+            Ok(Arc::new(prof))
+        }
         "points-file" => {
             foreign(ctx, T, kind, &present, &["path", "parameterization"])?;
             let path = ctx.required(T, kind, "path", &p.path)?;
@@ -502,7 +541,7 @@ fn build_profile(
                 &format!("points file {file}"),
             )
         }
-        other => Err(ctx.at(kind.span(), format!("cam.profile.kind = {other:?} is not a profile kind (spline, circle, ellipse, points-file)"))),
+        other => Err(ctx.at(kind.span(), format!("cam.profile.kind = {other:?} is not a profile kind (spline, circle, ellipse, points-file, motion)"))),
     }
 }
 

@@ -369,3 +369,29 @@ fn degenerate_geometry_is_reported_not_hidden() {
         .success()
         .stderr(predicate::str::contains("more sharply than the roller"));
 }
+
+#[test]
+fn bad_motion_profiles() {
+    let head = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 4\n";
+    let foll = "[follower]\nkind = \"translating-flat\"\n";
+    bad("unknown law", &format!("{head}segments = [{{ law = \"parabolic\", rise = 1, degrees = 180 }}, {{ law = \"dwell\", degrees = 180 }}]\n{foll}"), &[], &["law = \"parabolic\" is not a law", "cycloidal"]);
+    bad(
+        "not a revolution",
+        &format!("{head}segments = [{{ law = \"dwell\", degrees = 300 }}]\n{foll}"),
+        &[],
+        &["cover 300", "not 360"],
+    );
+    bad(
+        "not closed",
+        &format!("{head}segments = [{{ law = \"cycloidal\", rise = 1, degrees = 360 }}]\n{foll}"),
+        &[],
+        &["does not return"],
+    );
+    bad(
+        "foreign field",
+        &format!("{head}radius = 3\nsegments = [{{ law = \"dwell\", degrees = 360 }}]\n{foll}"),
+        &[],
+        &["takes no `radius`"],
+    );
+    bad("no base radius", &format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nsegments = [{{ law = \"dwell\", degrees = 360 }}]\n{foll}"), &[], &["needs `base_radius`"]);
+}
