@@ -12,6 +12,7 @@ pub mod plots;
 pub mod scene;
 pub mod simulate;
 pub mod study;
+pub mod synth;
 
 use std::path::PathBuf;
 

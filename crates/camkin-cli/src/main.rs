@@ -1,6 +1,6 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
-use camkin_cli::{analyze, bench, compare, plot, simulate, Failure};
+use camkin_cli::{analyze, bench, compare, plot, simulate, synth, Failure};
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -45,6 +45,11 @@ enum Command {
         after_help = "Examples:\n  camkin simulate examples/eccentric-flat-dynamics.toml --revolutions 3\n  camkin simulate cam.toml --revolutions 100 --out sim --format json\n\nTime series on stdout (or DIR/time_series.csv), events on stderr (and DIR/events.csv).\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Simulate(simulate::SimulateArgs),
+    /// A cam synthesised from a motion program: profile (CSV, DXF, SVG), SVAJ plots, design checks.
+    #[command(
+        after_help = "Examples:\n  camkin synth examples/motion-roller.toml\n  camkin synth cam.toml --out design --step 0.25 --pressure-limit 25\n\nThe mechanism's profile must be kind = \"motion\". Exit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Synth(synth::SynthArgs),
 }
 
 fn main() -> ExitCode {
@@ -56,6 +61,7 @@ fn main() -> ExitCode {
         Command::Plot(args) => plot::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Simulate(args) => simulate::run(&args),
+        Command::Synth(args) => synth::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -662,6 +662,12 @@ pub fn paper() -> Mechanism {
     camkin::reference::paper_mechanism(false)
 }
 
+/// The synthesised profile behind a mechanism built from a `kind = "motion"` file, if it is one.
+pub fn synthesized(m: &Mechanism) -> Option<&camkin::cam::synthesis::SynthesizedProfile> {
+    let any: &dyn std::any::Any = m.cam().profile();
+    any.downcast_ref()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

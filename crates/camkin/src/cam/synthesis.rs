@@ -214,6 +214,17 @@ impl SynthesizedProfile {
         [self.s0 + rho * s[0], rho * s[1], rho * s[2]]
     }
 
+    /// The program's `[s, s', s'', s''']` at cam angle `theta` (before the base offset and the
+    /// arm's sense).
+    pub fn program_derivatives(&self, theta: f64) -> [f64; 4] {
+        self.program.eval(theta)
+    }
+
+    /// Where the program's segments break continuity (tolerance 1e-9 of each derivative's scale).
+    pub fn discontinuities(&self) -> Vec<crate::motion::Discontinuity> {
+        self.program.discontinuities(1e-9)
+    }
+
     /// `y, y', y'', y''', y''''` of `A w` given `w⁽ᵏ⁾`, k = 0..4 (world vectors).
     fn rotated_derivs(&self, rot: &Rot, w: &[Vec2; 5]) -> [Vec2; 5] {
         let sg = self.sigma;

@@ -102,7 +102,7 @@ pub enum Domain {
 ///
 /// Implementors provide [`eval`](Curve::eval) and [`domain`](Curve::domain); everything else is
 /// derived. A curve must be regular (`r' ≠ 0`) except a [`Domain::Point`] curve.
-pub trait Curve: std::fmt::Debug + Send + Sync {
+pub trait Curve: std::fmt::Debug + Send + Sync + std::any::Any {
     /// Position and first three derivatives at `u`.
     fn eval(&self, u: f64) -> Derivs;
 

@@ -1,0 +1,245 @@
+//! `camkin synth`: the profile of a `kind = "motion"` cam as points, DXF and SVG; the program's
+//! SVAJ curves; design checks; the round-trip error of the contact method.
+
+use crate::output::write_atomic;
+use crate::plots::{self, Chart, Series};
+use crate::{load_mechanism, Failure};
+use anyhow::anyhow;
+use camkin::cam::{Follower, FollowerState};
+use std::path::PathBuf;
+
+#[derive(Debug, clap::Args)]
+pub struct SynthArgs {
+    /// Mechanism file whose profile is `kind = "motion"`.
+    pub mechanism: PathBuf,
+    /// Directory for the profile (CSV, DXF, SVG), the SVAJ plot and the checks.
+    #[arg(long, value_name = "DIR", default_value = "camkin-synth")]
+    pub out: PathBuf,
+    /// Cam-angle step of the profile points and the checks, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 0.5)]
+    pub step: f64,
+    /// Largest acceptable pressure angle, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 30.0)]
+    pub pressure_limit: f64,
+}
+
+/// A DXF (R12, ASCII) drawing with one closed polyline through `pts` (cam frame).
+pub fn dxf_polyline(pts: &[(f64, f64)]) -> String {
+    let mut s = String::from(
+        "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n",
+    );
+    s.push_str("0\nPOLYLINE\n8\nCAM\n66\n1\n70\n1\n10\n0.0\n20\n0.0\n30\n0.0\n");
+    for (x, y) in pts {
+        s.push_str(&format!("0\nVERTEX\n8\nCAM\n10\n{x}\n20\n{y}\n30\n0.0\n"));
+    }
+    s.push_str("0\nSEQEND\n8\nCAM\n0\nENDSEC\n0\nEOF\n");
+    s
+}
+
+fn svg_profile(pts: &[(f64, f64)]) -> String {
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
+    for &(x, y) in pts {
+        (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+    }
+    let pad = 0.05 * (x1 - x0).max(y1 - y0);
+    let (w, h) = (x1 - x0 + 2.0 * pad, y1 - y0 + 2.0 * pad);
+    let k = 600.0 / w.max(h);
+    let pts: Vec<String> = pts
+        .iter()
+        .map(|(x, y)| format!("{:.3},{:.3}", (x - x0 + pad) * k, (y1 + pad - y) * k))
+        .collect();
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0}\" height=\"{:.0}\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<polygon points=\"{}\" fill=\"none\" stroke=\"rgb(31,119,180)\" stroke-width=\"2\"/>\n<circle cx=\"{:.3}\" cy=\"{:.3}\" r=\"3\" fill=\"black\"/>\n</svg>\n",
+        w * k,
+        h * k,
+        pts.join(" "),
+        (-x0 + pad) * k,
+        (y1 + pad) * k
+    )
+}
+
+pub fn run(args: &SynthArgs) -> Result<(), Failure> {
+    let step = crate::compare::check_step(args.step).map_err(Failure::Input)?;
+    if !(args.pressure_limit.is_finite() && args.pressure_limit > 0.0 && args.pressure_limit < 90.0)
+    {
+        return Err(Failure::Input(anyhow!(
+            "--pressure-limit: {} must be in (0, 90) degrees",
+            args.pressure_limit
+        )));
+    }
+    let mech = load_mechanism(Some(&args.mechanism))?;
+    let profile = mech.cam().profile();
+    let Some(synth) = crate::mechfile::synthesized(&mech) else {
+        return Err(Failure::Input(anyhow!(
+            "{}: the profile is not kind = \"motion\"; synth needs a motion program",
+            args.mechanism.display()
+        )));
+    };
+    std::fs::create_dir_all(&args.out)
+        .map_err(|e| Failure::Input(anyhow!("cannot create {}: {e}", args.out.display())))?;
+    let n = (360.0 / step).round() as usize;
+    let thetas: Vec<f64> = (0..n).map(|k| (k as f64 * step).to_radians()).collect();
+    let pts: Vec<(f64, f64)> = thetas
+        .iter()
+        .map(|&t| profile.position(t))
+        .map(|p| (p.x, p.y))
+        .collect();
+    let out = |name: &str| args.out.join(name);
+    write_atomic(Some(&out("profile.csv")), |w| {
+        writeln!(w, "cam_angle_deg,x,y")?;
+        for (t, (x, y)) in thetas.iter().zip(&pts) {
+            writeln!(w, "{},{x},{y}", t.to_degrees())?;
+        }
+        Ok(())
+    })
+    .map_err(Failure::Input)?;
+    write_atomic(Some(&out("profile.dxf")), |w| {
+        Ok(w.write_all(dxf_polyline(&pts).as_bytes())?)
+    })
+    .map_err(Failure::Input)?;
+    write_atomic(Some(&out("profile.svg")), |w| {
+        Ok(w.write_all(svg_profile(&pts).as_bytes())?)
+    })
+    .map_err(Failure::Input)?;
+
+    // the program's SVAJ curves (derivatives in the cam angle)
+    let prog: Vec<[f64; 4]> = thetas
+        .iter()
+        .map(|&t| synth.program_derivatives(t))
+        .collect();
+    let deg: Vec<f64> = thetas.iter().map(|t| t.to_degrees()).collect();
+    let chart = |title: &str, k: usize| Chart {
+        title: title.into(),
+        x_label: "cam angle (°)".into(),
+        y_label: ["s", "ds/dθ", "d²s/dθ²", "d³s/dθ³"][k].into(),
+        series: vec![Series {
+            name: title.into(),
+            points: deg.iter().zip(&prog).map(|(a, p)| (*a, p[k])).collect(),
+            dashed: false,
+        }],
+        log_y: false,
+        x_range: Some((0.0, 360.0)),
+    };
+    for (k, name) in ["displacement", "velocity", "acceleration", "jerk"]
+        .iter()
+        .enumerate()
+    {
+        plots::save(
+            &chart(&format!("program: {name}"), k),
+            &out(&format!("svaj_{name}")),
+        )
+        .map_err(Failure::Internal)?;
+    }
+
+    // analysis of the synthesised profile: the round trip and the design checks
+    let states: Vec<Result<FollowerState, _>> = mech.analyze_all(&thetas);
+    let w = mech.cam().speed();
+    let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let mut failed = 0;
+    let mut over = Vec::new();
+    // angles where the profile is not convex at the contact (ρ ≤ 0): undercut or a concave
+    // stretch the follower cannot follow
+    let mut folded: Vec<f64> = Vec::new();
+    let (mut rho_min, mut rho_at) = (f64::INFINITY, 0.0);
+    let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (t, s) in thetas.iter().zip(&states) {
+        let Ok(s) = s else {
+            failed += 1;
+            continue;
+        };
+        let m = synth.follower_motion(*t);
+        eq = eq.max((s.position - m[0]).abs());
+        ev = ev.max((s.velocity - w * m[1]).abs());
+        ea = ea.max((s.acceleration - w * w * m[2]).abs());
+        amax = amax.max((w * w * m[2]).abs());
+        if s.pressure_angle().to_degrees().abs() > args.pressure_limit {
+            over.push(t.to_degrees());
+        }
+        if !(s.radius_of_curvature > 0.0) {
+            folded.push(t.to_degrees());
+        }
+        if s.radius_of_curvature < rho_min {
+            (rho_min, rho_at) = (s.radius_of_curvature, t.to_degrees());
+        }
+        umin = umin.min(s.follower_param);
+        umax = umax.max(s.follower_param);
+    }
+    let mut report = String::new();
+    report += &format!("round trip (contact method against the motion law): |Δs| ≤ {eq:.2e}, |Δv| ≤ {ev:.2e}, |Δa| ≤ {ea:.2e} ({:.1e} of the peak)\n", ea / amax.max(f64::MIN_POSITIVE));
+    if ea > 1e-6 * amax {
+        report += "round trip FAILED: the follower does not follow the synthesised profile (see the checks below)\n";
+    }
+    report += &format!("smallest radius of curvature of the profile: {rho_min:.6} at {rho_at}°\n");
+    let stretches = mech.unfollowable_stretches();
+    let bad_span = |v: &[f64]| {
+        if v.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " at {} angles, from {}° to {}°",
+                v.len(),
+                v[0],
+                v[v.len() - 1]
+            )
+        }
+    };
+    let broken = !stretches.is_empty() || !folded.is_empty();
+    match mech.follower() {
+        Follower::TranslatingRoller { roller_radius, .. }
+        | Follower::OscillatingRoller { roller_radius, .. } => {
+            report += &if broken {
+                format!("undercut: the profile is concave more sharply than the roller (radius {roller_radius}){}\n", bad_span(&folded))
+            } else {
+                format!("undercut: none (the roller's radius {roller_radius} fits everywhere)\n")
+            };
+        }
+        Follower::TranslatingFlat { .. } | Follower::OscillatingFlat { .. } => {
+            report += &if broken {
+                format!("concave stretches under the flat face: the follower cannot follow the profile{}\n", bad_span(&folded))
+            } else {
+                "concave stretches under the flat face: none\n".to_string()
+            };
+            report += &format!(
+                "face width needed: {:.6} (contact from {umin:.6} to {umax:.6} along the face)\n",
+                umax - umin
+            );
+        }
+        Follower::TranslatingKnife { .. } => {}
+    }
+    report += &if over.is_empty() {
+        format!(
+            "pressure angle: within ±{}° everywhere\n",
+            args.pressure_limit
+        )
+    } else {
+        format!(
+            "pressure angle: beyond ±{}° at {} angles, from {}° to {}°\n",
+            args.pressure_limit,
+            over.len(),
+            over[0],
+            over[over.len() - 1]
+        )
+    };
+    if failed > 0 {
+        report += &format!("{failed} angles could not be analysed\n");
+    }
+    for j in synth.discontinuities() {
+        report += &format!(
+            "program junction at {:.3}°: {} jumps\n",
+            j.at.to_degrees(),
+            ["position", "velocity", "acceleration", "jerk"][j.order]
+        );
+    }
+    write_atomic(Some(&out("checks.txt")), |w| {
+        Ok(w.write_all(report.as_bytes())?)
+    })
+    .map_err(Failure::Input)?;
+    print!("{report}");
+    eprintln!("camkin: wrote {}", args.out.display());
+    Ok(())
+}

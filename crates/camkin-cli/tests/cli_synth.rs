@@ -1,0 +1,157 @@
+//! `camkin synth`: profile files (the DXF read back by a DXF reader), SVAJ plots, design checks
+//! on cams built to violate them, the round trip.
+#![allow(clippy::unwrap_used)]
+use assert_cmd::Command;
+use predicates::prelude::*;
+use std::path::PathBuf;
+
+fn camkin() -> Command {
+    Command::cargo_bin("camkin").unwrap()
+}
+
+#[test]
+fn synth_writes_a_profile_a_dxf_reader_opens() {
+    let dir = tempfile::tempdir().unwrap();
+    let mech = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/motion-roller.toml");
+    let out = camkin()
+        .arg("synth")
+        .arg(&mech)
+        .arg("--out")
+        .arg(dir.path())
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let report = String::from_utf8(out).unwrap();
+    assert!(report.contains("round trip"), "{report}");
+    // the round trip's acceleration error, as a fraction of the peak, is tiny
+    let frac: f64 = report
+        .split(" of the peak")
+        .next()
+        .unwrap()
+        .rsplit('(')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(frac < 1e-10, "{report}");
+    assert!(
+        report.contains("undercut: none") && report.contains("within ±30°"),
+        "{report}"
+    );
+    let drawing =
+        dxf::Drawing::load_file(dir.path().join("profile.dxf").to_str().unwrap()).unwrap();
+    let mut vertices = 0;
+    let mut closed = false;
+    for e in drawing.entities() {
+        if let dxf::entities::EntityType::Polyline(p) = &e.specific {
+            vertices += p.vertices().count();
+            closed = p.is_closed();
+        }
+    }
+    assert_eq!(vertices, 720);
+    assert!(closed);
+    let csv = std::fs::read_to_string(dir.path().join("profile.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 721);
+    for f in [
+        "profile.svg",
+        "svaj_displacement.png",
+        "svaj_jerk.svg",
+        "checks.txt",
+    ] {
+        assert!(dir.path().join(f).exists(), "{f}");
+    }
+}
+
+fn motion_file(
+    dir: &std::path::Path,
+    follower: &str,
+    base: f64,
+    rise: f64,
+    degrees: f64,
+) -> PathBuf {
+    let p = dir.join("m.toml");
+    std::fs::write(
+        &p,
+        format!(
+            "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = {base}\nsegments = [{{ law = \"cycloidal\", rise = {rise}, degrees = {degrees} }}, {{ law = \"dwell\", degrees = {} }}, {{ law = \"cycloidal\", rise = {}, degrees = {degrees} }}, {{ law = \"dwell\", degrees = {} }}]\n{follower}",
+            180.0 - degrees,
+            -rise,
+            180.0 - degrees
+        ),
+    )
+    .unwrap();
+    p
+}
+
+#[test]
+fn design_checks_catch_cams_built_to_violate_them() {
+    let dir = tempfile::tempdir().unwrap();
+    // a flat face on a small base circle with a harsh rise: ρ = s + s'' < 0 somewhere
+    let m = motion_file(
+        dir.path(),
+        "[follower]\nkind = \"translating-flat\"\n",
+        1.0,
+        2.0,
+        60.0,
+    );
+    camkin()
+        .arg("synth")
+        .arg(&m)
+        .arg("--out")
+        .arg(dir.path().join("a"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "the follower cannot follow the profile at",
+        ))
+        .stdout(predicate::str::contains("round trip FAILED"));
+    // a roller larger than the pitch curve's concave radius: undercut
+    let m = motion_file(
+        dir.path(),
+        "[follower]\nkind = \"translating-roller\"\nroller_radius = 3.0\n",
+        1.0,
+        2.0,
+        60.0,
+    );
+    camkin()
+        .arg("synth")
+        .arg(&m)
+        .arg("--out")
+        .arg(dir.path().join("u"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "undercut: the profile is concave more sharply than the roller",
+        ));
+    // a roller with a steep rise: the pressure angle goes far beyond 30°
+    let m = motion_file(
+        dir.path(),
+        "[follower]\nkind = \"translating-roller\"\nroller_radius = 0.2\n",
+        2.0,
+        3.0,
+        60.0,
+    );
+    camkin()
+        .arg("synth")
+        .arg(&m)
+        .arg("--out")
+        .arg(dir.path().join("b"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("pressure angle: beyond ±30°"));
+}
+
+#[test]
+fn synth_needs_a_motion_profile() {
+    let mech = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper.toml");
+    camkin()
+        .arg("synth")
+        .arg(&mech)
+        .arg("--out")
+        .arg(tempfile::tempdir().unwrap().path())
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("kind = \"motion\""));
+}
