@@ -190,7 +190,9 @@ fn rows_where_the_follower_misses_carry_the_error() {
 
 #[test]
 fn help_shows_examples_for_every_subcommand() {
-    for cmd in ["analyze", "paper", "compare", "plot"] {
+    for cmd in [
+        "analyze", "paper", "compare", "plot", "bench", "simulate", "synth",
+    ] {
         camkin()
             .args([cmd, "--help"])
             .assert()
