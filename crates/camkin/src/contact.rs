@@ -116,7 +116,7 @@ pub struct Pairing {
     pub point_a: Point2,
     /// B's pairing point, world frame
     pub point_b: Point2,
-    /// the common normal `ν_A` (unit, world frame; see the [module docs](self))
+    /// the common normal `ν_A` (unit, world frame; see the [module docs](crate::contact))
     pub normal: Vec2,
     /// `ν·(x_A − x_B)`, length: > 0 apart, < 0 overlapping, for curves oriented material-on-the-left
     pub gap: f64,

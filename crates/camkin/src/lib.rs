@@ -8,7 +8,7 @@
 //! mechanism* (Int. J. Automotive Technology, 2005); equation numbers in the docs are the paper's.
 //!
 //! Data flows one way: [`geometry`] → [`curve`] → [`body`] → [`contact`] → [`cam`]
-//! (→ [`interp`], the paper's comparison method; [`reference`] holds the paper's cam).
+//! (→ [`interp`], the paper's comparison method; [`reference`](mod@reference) holds the paper's cam).
 //!
 //! # Example: the paper's cam at one angle
 //!

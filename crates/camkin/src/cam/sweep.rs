@@ -25,7 +25,9 @@ pub enum Found {
     },
 }
 
-/// A warm-started sweep; see the [module docs](self).
+/// A warm-started sweep: each angle starts Newton from the previous contact extrapolated to
+/// second order; on a non-convex profile a guard compares with the sampled first-touch function
+/// and marks jumps of the contact ([`Found::Jump`]).
 #[derive(Debug, Clone)]
 pub struct Sweep<'a> {
     mech: &'a Mechanism,

@@ -9,7 +9,9 @@ use std::path::Path;
 /// Most points read from one file.
 pub const MAX_POINTS: usize = 100_000;
 
-/// Parses points from text (see the [module docs](self)); errors name the 1-based line.
+/// Parses points from text: one `x,y` per line (commas, semicolons, tabs or spaces between the
+/// numbers); blank lines and `#` comments are skipped, a first line with letters is a header.
+/// Errors name the 1-based line.
 pub fn parse_points(text: &str) -> Result<Vec<Point2>, CurveError> {
     parse_points_with_lines(text).map(|(p, _)| p)
 }
