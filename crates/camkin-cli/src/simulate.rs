@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub struct SimulateArgs {
-    /// Mechanism file (TOML) with a [dynamics] section.
+    /// Mechanism file (TOML) with a `[dynamics]` section.
     pub mechanism: PathBuf,
     /// Cam revolutions to simulate.
     #[arg(long, value_name = "N", default_value_t = 1.0)]
