@@ -258,18 +258,15 @@ fn sample_params(c: &dyn Curve, opts: &SearchOptions) -> Option<Vec<f64>> {
         Domain::Point => Some(vec![0.0]),
         Domain::Periodic { period } => {
             let bp = c.breakpoints();
-            if bp.is_empty() {
-                let n = opts.samples_per_curve.max(8);
-                Some((0..n).map(|i| period * i as f64 / n as f64).collect())
-            } else {
-                let k = opts.samples_per_piece.max(2);
-                let mut v = Vec::with_capacity(bp.len() * k);
-                for (i, &s) in bp.iter().enumerate() {
-                    let e = bp.get(i + 1).copied().unwrap_or(period);
-                    v.extend((0..k).map(|j| s + (e - s) * j as f64 / k as f64));
-                }
-                Some(v)
-            }
+            Some(
+                crate::curve::piece_samples(
+                    &bp,
+                    period,
+                    opts.samples_per_piece.max(2),
+                    opts.samples_per_curve.max(8),
+                )
+                .collect(),
+            )
         }
         Domain::Interval { min, max } if min.is_finite() && max.is_finite() => {
             let n = opts.samples_per_curve.max(8);

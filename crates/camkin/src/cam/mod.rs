@@ -1257,27 +1257,7 @@ fn check_reach(g: &Geometry, f: &Follower, size: f64) -> Result<(), CamError> {
 }
 
 /// The same parameters as [`bracket_samples`], without storing them.
-pub(crate) fn bracket_params(
-    breakpoints: &[f64],
-    period: f64,
-    per_piece: usize,
-    per_curve: usize,
-) -> impl Iterator<Item = f64> + '_ {
-    let n = breakpoints.len();
-    let pieces = if n == 0 { 1 } else { n };
-    (0..pieces).flat_map(move |i| {
-        let (s, e, k) = if n == 0 {
-            (0.0, period, per_curve)
-        } else {
-            (
-                breakpoints[i],
-                breakpoints.get(i + 1).copied().unwrap_or(period),
-                per_piece,
-            )
-        };
-        (0..k).map(move |j| s + (e - s) * j as f64 / k as f64)
-    })
-}
+pub(crate) use crate::curve::piece_samples as bracket_params;
 
 /// Parameters for bracketing: `per_piece` per smooth piece, or `per_curve` over the period.
 pub(crate) fn bracket_samples(
@@ -1286,18 +1266,7 @@ pub(crate) fn bracket_samples(
     per_piece: usize,
     per_curve: usize,
 ) -> Vec<f64> {
-    if breakpoints.is_empty() {
-        (0..per_curve)
-            .map(|i| period * i as f64 / per_curve as f64)
-            .collect()
-    } else {
-        let mut v = Vec::with_capacity(breakpoints.len() * per_piece);
-        for (i, &s) in breakpoints.iter().enumerate() {
-            let e = breakpoints.get(i + 1).copied().unwrap_or(period);
-            v.extend((0..per_piece).map(|j| s + (e - s) * j as f64 / per_piece as f64));
-        }
-        v
-    }
+    bracket_params(breakpoints, period, per_piece, per_curve).collect()
 }
 
 #[cfg(test)]

@@ -210,6 +210,29 @@ pub enum CurveError {
     },
 }
 
+/// Sample parameters over one period of a closed curve: `per_piece` evenly in every smooth piece
+/// between consecutive `breakpoints`, or `per_curve` evenly over the period when there are none.
+pub(crate) fn piece_samples(
+    breakpoints: &[f64],
+    period: f64,
+    per_piece: usize,
+    per_curve: usize,
+) -> impl Iterator<Item = f64> + '_ {
+    let n = breakpoints.len();
+    (0..n.max(1)).flat_map(move |i| {
+        let (s, e, k) = if n == 0 {
+            (0.0, period, per_curve)
+        } else {
+            (
+                breakpoints[i],
+                breakpoints.get(i + 1).copied().unwrap_or(period),
+                per_piece,
+            )
+        };
+        (0..k).map(move |j| s + (e - s) * j as f64 / k as f64)
+    })
+}
+
 pub(crate) fn check_positive(field: &'static str, value: f64) -> Result<f64, CurveError> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
