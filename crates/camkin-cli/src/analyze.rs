@@ -3,7 +3,7 @@
 use crate::output::write_atomic;
 use crate::{load_mechanism, Failure};
 use anyhow::{anyhow, bail, Result};
-use camkin::cam::{CamError, Follower, FollowerState, Found, Mechanism};
+use camkin::cam::{CamError, FollowerState, Found, Mechanism};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -243,14 +243,11 @@ fn jump_rows(
 
 /// Warnings on stderr: profile stretches the follower cannot follow, and where the contact jumps.
 fn report_degenerate(mech: &Mechanism, stretches: &[(f64, f64)], angles: &[f64], jumps: &[bool]) {
-    let what = match mech.follower() {
-        Follower::TranslatingRoller { roller_radius, .. }
-        | Follower::OscillatingRoller { roller_radius, .. } => {
-            format!(
-                "concave more sharply than the roller (radius of curvature below {roller_radius})"
-            )
-        }
-        _ => "concave under the flat face".to_string(),
+    let what = match mech.roller_radius() {
+        Some(roller_radius) => format!(
+            "concave more sharply than the roller (radius of curvature below {roller_radius})"
+        ),
+        None => "concave under the flat face".to_string(),
     };
     let p = mech.cam().profile();
     for &(a, b) in stretches {

@@ -2,7 +2,7 @@
 //! nodes, cam axis, follower, contact point and common normal. Rendered by plotters (static SVG
 //! and PNG) and by a small SVG writer (the animation).
 
-use camkin::cam::{Follower, FollowerState, Mechanism};
+use camkin::cam::{FollowerCurve, FollowerState, Joint, Mechanism};
 use camkin::curve::Domain;
 use camkin::geometry::{perp, Rot};
 use camkin::{Point2, Vec2};
@@ -92,96 +92,7 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
     ));
     let Some(s) = state else { return shapes };
     let c = s.contact_world;
-    let q = s.position;
-    match *mech.follower() {
-        Follower::TranslatingFlat { direction } => {
-            let d = direction.normalize();
-            let face_c = axis + q * d;
-            let half = 0.6 * size;
-            let along = perp(d);
-            shapes.push(segment(
-                face_c - half * along,
-                face_c + half * along,
-                FOLLOWER,
-                3,
-            ));
-            shapes.push(segment(face_c, face_c + 0.8 * size * d, FOLLOWER, 3));
-        }
-        Follower::TranslatingRoller {
-            direction,
-            offset,
-            roller_radius,
-        } => {
-            let d = direction.normalize();
-            let centre = axis + offset * perp(d) + q * d;
-            shapes.push(Shape::Circle {
-                c: centre,
-                r: roller_radius,
-                color: FOLLOWER,
-                width: 2,
-            });
-            shapes.push(segment(
-                centre,
-                centre + (roller_radius + 0.8 * size) * d,
-                FOLLOWER,
-                3,
-            ));
-        }
-        Follower::TranslatingKnife { direction, offset } => {
-            let d = direction.normalize();
-            let tip = axis + offset * perp(d) + q * d;
-            let w = 0.06 * size;
-            let back = tip + 0.2 * size * d;
-            shapes.push(Shape::Polyline {
-                pts: vec![tip, back + w * perp(d), back - w * perp(d)],
-                color: FOLLOWER,
-                width: 2,
-                closed: true,
-            });
-            shapes.push(segment(back, tip + 0.8 * size * d, FOLLOWER, 3));
-        }
-        Follower::OscillatingFlat {
-            pivot, face_offset, ..
-        } => {
-            let u = Vec2::new(q.cos(), q.sin());
-            let n = perp(u);
-            let reach = (c - pivot).dot(&u).max(0.0) + 0.4 * size;
-            shapes.push(segment(pivot, pivot + face_offset * n, FOLLOWER, 3));
-            shapes.push(segment(
-                pivot + face_offset * n,
-                pivot + face_offset * n + reach * u,
-                FOLLOWER,
-                3,
-            ));
-            shapes.push(Shape::Circle {
-                c: pivot,
-                r: 0.04 * size,
-                color: FOLLOWER,
-                width: 2,
-            });
-        }
-        Follower::OscillatingRoller {
-            pivot,
-            arm_length,
-            roller_radius,
-            ..
-        } => {
-            let centre = pivot + arm_length * Vec2::new(q.cos(), q.sin());
-            shapes.push(segment(pivot, centre, FOLLOWER, 3));
-            shapes.push(Shape::Circle {
-                c: centre,
-                r: roller_radius,
-                color: FOLLOWER,
-                width: 2,
-            });
-            shapes.push(Shape::Circle {
-                c: pivot,
-                r: 0.04 * size,
-                color: FOLLOWER,
-                width: 2,
-            });
-        }
-    }
+    follower_shapes(mech, s.position, c, size, &mut shapes);
     let nl = 0.35 * size;
     shapes.push(segment(c - nl * s.normal, c + nl * s.normal, NORMAL, 1));
     shapes.push(Shape::Dot {
@@ -190,6 +101,72 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
         px: 5,
     });
     shapes
+}
+
+/// The follower at position `q` touching at `c`, drawn from its model: the contact curve in its
+/// frame (a face, a roller, a knife's tip) and the joint that carries it (a stem along the
+/// direction of travel, or an arm from the pivot).
+fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &mut Vec<Shape>) {
+    let (pose, _) = mech.follower_body(q);
+    let rot = Rot::new(pose.angle);
+    let joint = mech.follower_joint();
+    // where the joint attaches to the curve, and how far the curve reaches beyond it along `d`
+    let (attach, reach) = match mech.follower_curve() {
+        FollowerCurve::Line(l) => {
+            let a = pose.to_world(l.anchor());
+            let t = rot.apply(l.direction());
+            let uc = (c - a).dot(&t);
+            let (lo, hi) = (uc.min(0.0) - 0.4 * size, uc.max(0.0) + 0.4 * size);
+            shapes.push(segment(a + lo * t, a + hi * t, FOLLOWER, 3));
+            (a, 0.0)
+        }
+        FollowerCurve::Circle(k) => {
+            let centre = pose.to_world(k.center());
+            shapes.push(Shape::Circle {
+                c: centre,
+                r: k.radius(),
+                color: FOLLOWER,
+                width: 2,
+            });
+            (centre, k.radius())
+        }
+        FollowerCurve::Point(p) => {
+            let tip = pose.to_world(p.at());
+            let away = match joint {
+                Joint::Translating { direction, .. } => direction,
+                _ => (tip - c).try_normalize(0.0).unwrap_or(Vec2::x()),
+            };
+            let (w, back) = (0.06 * size, tip + 0.2 * size * away);
+            shapes.push(Shape::Polyline {
+                pts: vec![tip, back + w * perp(away), back - w * perp(away)],
+                color: FOLLOWER,
+                width: 2,
+                closed: true,
+            });
+            (back, 0.0)
+        }
+        _ => (pose.origin, 0.0),
+    };
+    match joint {
+        Joint::Translating { direction, .. } => {
+            shapes.push(segment(
+                attach,
+                attach + (reach + 0.8 * size) * direction,
+                FOLLOWER,
+                3,
+            ));
+        }
+        Joint::Rotating { pivot, .. } => {
+            shapes.push(segment(pivot, attach, FOLLOWER, 3));
+            shapes.push(Shape::Circle {
+                c: pivot,
+                r: 0.04 * size,
+                color: FOLLOWER,
+                width: 2,
+            });
+        }
+        _ => {}
+    }
 }
 
 /// Bounding box of shapes: (min, max).

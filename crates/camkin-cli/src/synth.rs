@@ -5,7 +5,7 @@ use crate::output::write_atomic;
 use crate::plots::{self, Chart, Series};
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
-use camkin::cam::{Follower, FollowerState};
+use camkin::cam::{FollowerCurve, FollowerState};
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -189,16 +189,16 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         }
     };
     let broken = !stretches.is_empty() || !folded.is_empty();
-    match mech.follower() {
-        Follower::TranslatingRoller { roller_radius, .. }
-        | Follower::OscillatingRoller { roller_radius, .. } => {
+    match mech.follower_curve() {
+        FollowerCurve::Circle(roller) => {
+            let roller_radius = roller.radius();
             report += &if broken {
                 format!("undercut: the profile is concave more sharply than the roller (radius {roller_radius}){}\n", bad_span(&folded))
             } else {
                 format!("undercut: none (the roller's radius {roller_radius} fits everywhere)\n")
             };
         }
-        Follower::TranslatingFlat { .. } | Follower::OscillatingFlat { .. } => {
+        FollowerCurve::Line(_) => {
             report += &if broken {
                 format!("concave stretches under the flat face: the follower cannot follow the profile{}\n", bad_span(&folded))
             } else {
@@ -209,7 +209,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
                 umax - umin
             );
         }
-        Follower::TranslatingKnife { .. } => {}
+        _ => {}
     }
     report += &if over.is_empty() {
         format!(

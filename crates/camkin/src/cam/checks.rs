@@ -1,7 +1,7 @@
 //! Independent checks of the contact method's acceleration over analysed states: computations
 //! that are not the method, for reports and benchmarks.
 
-use super::{CamError, Follower, FollowerState, Mechanism};
+use super::{CamError, FollowerCurve, FollowerState, Joint, Mechanism};
 
 /// One check: its name and the largest difference from the contact method, relative to the
 /// largest acceleration of the states checked.
@@ -25,7 +25,11 @@ impl Mechanism {
             .fold(0.0f64, |m, s| m.max(s.acceleration.abs()));
         let rel = |d: f64| if amax > 0.0 { d / amax } else { d };
         let mut out = Vec::new();
-        if matches!(self.follower(), Follower::TranslatingFlat { .. }) && self.convex {
+        let flat_face = matches!(
+            (self.follower_joint(), self.follower_curve()),
+            (Joint::Translating { .. }, FollowerCurve::Line(_))
+        );
+        if flat_face && self.convex {
             let d = states
                 .iter()
                 .map(|s| {

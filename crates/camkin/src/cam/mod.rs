@@ -20,16 +20,16 @@ mod sweep;
 pub mod synthesis;
 
 pub use checks::Check;
-pub use follower::{Follower, Sense};
+pub use follower::{Follower, FollowerCurve, Joint, Sense};
 pub use sweep::{Found, Sweep};
 
 use crate::body::{BodyState, Frame, WorldDerivs};
 use crate::contact::{
     ContactError, ContactKinematics, NormalAcceleration, Pairing, CONFORMAL_TOLERANCE,
 };
-use crate::curve::{unit_direction, Curve, CurveError, Domain};
+use crate::curve::{Curve, CurveError, Domain};
 use crate::geometry::{cross, Point2, Rot, Vec2};
-use follower::{Geometry, Kind};
+use follower::{Geometry, Kind as _};
 use jet::{scale, Jet, Num, V2};
 use std::sync::Arc;
 
@@ -406,75 +406,7 @@ pub(crate) struct Touch {
 impl Mechanism {
     /// Validates and prepares a mechanism.
     pub fn new(cam: Cam, follower: Follower) -> Result<Self, CamError> {
-        let d = match follower {
-            Follower::TranslatingFlat { direction }
-            | Follower::TranslatingRoller { direction, .. }
-            | Follower::TranslatingKnife { direction, .. } => {
-                Some(unit_direction("follower.direction", direction)?)
-            }
-            _ => None,
-        };
-        let finite = |field: &'static str, v: f64| {
-            if v.is_finite() {
-                Ok(v)
-            } else {
-                Err(CamError::Invalid {
-                    field,
-                    value: v,
-                    reason: "must be finite",
-                })
-            }
-        };
-        let positive = |field: &'static str, v: f64| {
-            if v.is_finite() && v > 0.0 {
-                Ok(v)
-            } else {
-                Err(CamError::Invalid {
-                    field,
-                    value: v,
-                    reason: "must be positive and finite",
-                })
-            }
-        };
-        match follower {
-            Follower::TranslatingFlat { .. } => {}
-            Follower::TranslatingRoller {
-                offset,
-                roller_radius,
-                ..
-            } => {
-                finite("follower.offset", offset)?;
-                positive("follower.roller_radius", roller_radius)?;
-            }
-            Follower::TranslatingKnife { offset, .. } => {
-                finite("follower.offset", offset)?;
-            }
-            Follower::OscillatingFlat {
-                pivot,
-                face_offset,
-                initial_angle,
-                ..
-            } => {
-                finite("follower.pivot", pivot.x)?;
-                finite("follower.pivot", pivot.y)?;
-                finite("follower.offset", face_offset)?;
-                finite("follower.initial_angle_deg", initial_angle)?;
-            }
-            Follower::OscillatingRoller {
-                pivot,
-                arm_length,
-                roller_radius,
-                initial_angle,
-                ..
-            } => {
-                finite("follower.pivot", pivot.x)?;
-                finite("follower.pivot", pivot.y)?;
-                positive("follower.arm_length", arm_length)?;
-                positive("follower.roller_radius", roller_radius)?;
-                finite("follower.initial_angle_deg", initial_angle)?;
-            }
-        }
-        let geometry = Geometry::new(follower, cam.pivot, d);
+        let geometry = Geometry::new(follower, cam.pivot)?;
         let profile = cam.profile.as_ref();
         let period = match profile.domain() {
             Domain::Periodic { period } => period,
@@ -531,7 +463,7 @@ impl Mechanism {
         } else {
             kmax < 0.0
         };
-        check_reach(&geometry, &follower, size)?;
+        geometry.model.check_reach(size)?;
         let options = AnalysisOptions::for_size(size);
         let mut m = Self {
             cam,
@@ -578,6 +510,18 @@ impl Mechanism {
     pub fn follower(&self) -> &Follower {
         &self.geometry.follower
     }
+    /// The joint that carries the follower.
+    pub fn follower_joint(&self) -> Joint {
+        self.geometry.joint
+    }
+    /// The follower's contact curve in its own frame (see [`Mechanism::follower_body`]).
+    pub fn follower_curve(&self) -> FollowerCurve {
+        self.geometry.curve
+    }
+    /// The radius of a roller follower.
+    pub fn roller_radius(&self) -> Option<f64> {
+        self.geometry.model.roller_radius()
+    }
     /// Largest distance of a profile point from the cam axis (the length scale of tolerances).
     pub fn size(&self) -> f64 {
         self.size
@@ -592,11 +536,8 @@ impl Mechanism {
     /// and the acceleration is impulsive there. Found on a dense sampling of the profile; empty
     /// for a knife edge and for convex profiles.
     pub fn unfollowable_stretches(&self) -> Vec<(f64, f64)> {
-        let limit = match self.geometry.follower {
-            Follower::TranslatingFlat { .. } | Follower::OscillatingFlat { .. } => 0.0,
-            Follower::TranslatingRoller { roller_radius, .. }
-            | Follower::OscillatingRoller { roller_radius, .. } => -1.0 / roller_radius,
-            Follower::TranslatingKnife { .. } => return Vec::new(),
+        let Some(limit) = self.geometry.model.concave_limit() else {
+            return Vec::new();
         };
         let profile = self.cam.profile.as_ref();
         let u = bracket_samples(&self.breakpoints, self.period, 64, 2048);
@@ -628,7 +569,7 @@ impl Mechanism {
     /// q·d`, angle 0; oscillating: origin at the arm pivot, angle `q`) and its contact curve in that
     /// frame (face: a line, roller: a circle, knife: a point; oriented material-on-the-left).
     pub fn follower_body(&self, q: f64) -> (crate::body::Pose, Arc<dyn Curve>) {
-        (self.geometry.pose(q), self.geometry.curve.to_arc())
+        (self.geometry.joint.pose(q), self.geometry.curve.to_arc())
     }
 
     /// The shared profile.
@@ -786,7 +727,7 @@ impl Mechanism {
         if self.geometry.is_knife() {
             return true;
         }
-        match self.geometry.score(e.p) {
+        match self.geometry.model.score(e.p) {
             Some((_, qs)) => (qs - q).abs() <= self.touch_slack(),
             None => false,
         }
@@ -798,21 +739,18 @@ impl Mechanism {
     pub(crate) fn faces_follower(&self, e: &WorldDerivs, q: f64) -> bool {
         // outward normal ∝ −orientation · k × r'
         let outward = -self.orientation * crate::geometry::perp(e.d1);
-        outward.dot(&self.geometry.toward_follower(e.p, q)) > 0.0
+        outward.dot(&self.geometry.model.toward_follower(e.p, q)) > 0.0
     }
 
     /// Oriented score of a position (larger is an earlier touch).
     pub(crate) fn oriented(&self, q: f64) -> f64 {
-        match self.geometry.kind {
-            Kind::Translating { .. } => q,
-            Kind::Oscillating { closing, .. } => -closing * q,
-        }
+        self.geometry.joint.oriented(q)
     }
 
     /// Start candidates for a knife edge: the crossings of its line of travel with the profile
     /// sampled at `s` (linear interpolation between samples), best first.
     fn knife_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) {
-        let Kind::Translating { d, p, e, .. } = self.geometry.kind else {
+        let Some((d, p, e)) = self.geometry.model.knife_line() else {
             return;
         };
         let profile = self.cam.profile.as_ref();
@@ -841,7 +779,7 @@ impl Mechanism {
     fn score_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) -> f64 {
         let profile = self.cam.profile.as_ref();
         let n = s.len();
-        let score = |u: f64| self.geometry.score(frame.position(profile, u));
+        let score = |u: f64| self.geometry.model.score(frame.position(profile, u));
         let val = |x: Option<(f64, f64)>| x.map_or(f64::NEG_INFINITY, |x| x.0);
         let first = score(s[0]);
         let (mut prev, mut cur) = (score(s[n - 1]), first);
@@ -865,7 +803,7 @@ impl Mechanism {
         let profile = self.cam.profile.as_ref();
         let mut best: Option<(f64, f64, f64)> = None;
         for &u in s {
-            if let Some((sc, q)) = self.geometry.score(frame.position(profile, u)) {
+            if let Some((sc, q)) = self.geometry.model.score(frame.position(profile, u)) {
                 if best.is_none_or(|b| sc > b.0) {
                     best = Some((sc, u, q));
                 }
@@ -981,6 +919,7 @@ impl Mechanism {
         let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
         let j = self
             .geometry
+            .model
             .jacobian(&cam.eval_curve(profile, touch.u), touch.q);
         let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
         if !(det.abs() > 0.0 && det.is_finite()) {
@@ -1015,7 +954,7 @@ impl Mechanism {
                 taylor(r.d1.y, r.d2.y, r.d3.y, 0.0),
                 Vec2::zeros(),
             );
-            let f = self.geometry.residual_value(x, x1, Jet(q));
+            let f = self.geometry.model.residual_value(x, x1, Jet(q));
             let (f0, f1) = (f[0].0[k], f[1].0[k]);
             u[k] = (-f0 * j[1][1] + f1 * j[0][1]) / det;
             q[k] = (-j[0][0] * f1 + j[1][0] * f0) / det;
@@ -1041,7 +980,7 @@ impl Mechanism {
         let ea = frame.to_world(&body_a);
         let c = ea.p;
         let nu = ea.as_derivs().normal();
-        let jb = g.velocity_jacobian(c);
+        let jb = g.joint.velocity_jacobian(c);
         // velocity constraint Φ_q q̇ = 0: ν·v_A^P = q̇ ν·J_B
         let den = nu.dot(&jb);
         if !(den.abs() > self.options.lock_tolerance * jb.norm()) {
@@ -1051,7 +990,7 @@ impl Mechanism {
             });
         }
         let qd = nu.dot(&cam.velocity_at(c)) / den;
-        let body_b = g.body(touch.q, qd, 0.0);
+        let body_b = g.joint.body(touch.q, qd, 0.0);
         let (u_b, eb) = g.curve.world_at(&body_b.frame(), c);
         let pairing = Pairing {
             u_a: touch.u,
@@ -1075,10 +1014,7 @@ impl Mechanism {
         // acceleration constraint Φ_q q̈ = γ (eq. 11), cam accelerations known
         let phi = &k.phi_q;
         let known = phi[2] * cam.alpha;
-        let coef = match g.kind {
-            Kind::Translating { d, .. } => phi[3] * d.x + phi[4] * d.y,
-            Kind::Oscillating { .. } => phi[5],
-        };
+        let coef = g.joint.coordinate_coefficient(phi);
         let qdd = (k.gamma - known) / coef;
         Ok(Core {
             body_a,
@@ -1112,7 +1048,7 @@ impl Mechanism {
         } = self.core(theta, cam, frame, touch)?;
         let g = &self.geometry;
         let c = ea.p;
-        let body_b = g.body(touch.q, qd, qdd);
+        let body_b = g.joint.body(touch.q, qd, qdd);
         let kappa_conv = self.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
         let jerk = if at_breakpoint || !self.options.jerk {
@@ -1223,36 +1159,6 @@ impl Candidates {
     }
     pub(crate) fn as_slice(&self) -> &[(f64, f64, f64)] {
         &self.items[..self.len]
-    }
-}
-
-/// Refuses followers that can never touch the cam: `size` is the cam's largest distance from
-/// its axis.
-fn check_reach(g: &Geometry, f: &Follower, size: f64) -> Result<(), CamError> {
-    match *f {
-        Follower::TranslatingKnife { offset, .. } if offset.abs() >= size => Err(CamError::Unreachable {
-            field: "follower.offset",
-            value: offset,
-            reason: format!("the knife edge's line of travel misses the cam, which reaches {size} from its axis"),
-        }),
-        Follower::TranslatingRoller { offset, roller_radius, .. } if offset.abs() >= size + roller_radius => Err(CamError::Unreachable {
-            field: "follower.offset",
-            value: offset,
-            reason: format!("the roller (radius {roller_radius}) passes the cam, which reaches {size} from its axis"),
-        }),
-        Follower::OscillatingRoller { pivot, arm_length, roller_radius, .. } => {
-            let d = (pivot - g.cam_pivot).norm();
-            if (d - arm_length).abs() >= size + roller_radius {
-                Err(CamError::Unreachable {
-                    field: "follower.arm_length",
-                    value: arm_length,
-                    reason: format!("the roller cannot reach the cam: its centre stays {} from the cam axis, the cam reaches {size} and the roller radius is {roller_radius}", (d - arm_length).abs()),
-                })
-            } else {
-                Ok(())
-            }
-        }
-        _ => Ok(()),
     }
 }
 

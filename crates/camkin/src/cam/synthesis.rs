@@ -24,9 +24,10 @@
 //! `y⁽ⁿ⁾ = Σ C(n, k) (−σJ)ⁿ⁻ᵏ A w⁽ᵏ⁾`; the roller's offset is differentiated with truncated Taylor
 //! series. The third derivative uses the law's fourth ([`crate::motion::Law::snap`]).
 
-use super::jet::{scale, Jet, Num};
+use super::follower::{Kind, Model};
+use super::jet::{scale, Jet};
 use super::{CamError, Follower, Sense};
-use crate::curve::{unit_direction, Curve, Derivs, Domain};
+use crate::curve::{Curve, Derivs, Domain};
 use crate::geometry::{perp, Point2, Rot, Vec2};
 use crate::motion::Program;
 
@@ -34,45 +35,24 @@ use crate::motion::Program;
 #[derive(Debug, Clone)]
 pub struct SynthesizedProfile {
     program: Program,
-    kind: Kind,
+    model: Model,
     sigma: f64,
     s0: f64,
 }
 
-#[derive(Debug, Clone, Copy)]
-enum Kind {
-    Flat {
-        d: Vec2,
-        p: Vec2,
-    },
-    Knife {
-        d: Vec2,
-        p: Vec2,
-        e: f64,
-    },
-    Roller {
-        d: Vec2,
-        p: Vec2,
-        e: f64,
-        r: f64,
-    },
-    /// an arm: angle φ = φ0 + ρ s(θ) (φ0 is the profile's `s0`)
-    ArmRoller {
-        o: Vec2,
-        l: f64,
-        r: f64,
-        rho: f64,
-    },
-    ArmFlat {
-        o: Vec2,
-        e: f64,
-        rho: f64,
-    },
+/// What a follower kind's envelope gives: the profile's derivatives, or a path to offset by a
+/// roller's radius.
+pub(crate) enum Envelope {
+    /// the profile point and its derivatives
+    Derivs(Derivs),
+    /// a roller centre's path (value and four derivatives) and the roller radius
+    Offset([Vec2; 5], f64),
 }
 
 /// The profile that drives `follower` with the motion `program` above a base circle of radius
 /// `base_radius` (where the program is at 0), for a cam turning in `direction`; the program's
 /// rises are lengths for translating followers and radians of arm angle for oscillating ones.
+/// The follower's geometry is taken relative to the cam axis.
 pub fn synthesize(
     program: Program,
     base_radius: f64,
@@ -86,118 +66,11 @@ pub fn synthesize(
             reason: "must be positive and finite",
         });
     }
-    let unit = |d: Vec2| unit_direction("follower.direction", d).map_err(CamError::from);
-    let (kind, s0) = match *follower {
-        Follower::TranslatingFlat { direction } => {
-            let d = unit(direction)?;
-            (Kind::Flat { d, p: perp(d) }, base_radius)
-        }
-        Follower::TranslatingKnife { direction, offset } => {
-            let d = unit(direction)?;
-            if offset.abs() >= base_radius {
-                return Err(CamError::Invalid {
-                    field: "follower.offset",
-                    value: offset,
-                    reason: "must be smaller than the base radius",
-                });
-            }
-            (
-                Kind::Knife {
-                    d,
-                    p: perp(d),
-                    e: offset,
-                },
-                (base_radius * base_radius - offset * offset).sqrt(),
-            )
-        }
-        Follower::TranslatingRoller {
-            direction,
-            offset,
-            roller_radius,
-        } => {
-            let d = unit(direction)?;
-            let prime = base_radius + roller_radius;
-            if offset.abs() >= prime {
-                return Err(CamError::Invalid {
-                    field: "follower.offset",
-                    value: offset,
-                    reason: "must be smaller than the prime circle's radius",
-                });
-            }
-            (
-                Kind::Roller {
-                    d,
-                    p: perp(d),
-                    e: offset,
-                    r: roller_radius,
-                },
-                (prime * prime - offset * offset).sqrt(),
-            )
-        }
-        Follower::OscillatingRoller {
-            pivot,
-            arm_length,
-            roller_radius,
-            closing,
-            initial_angle,
-        } => {
-            let o = pivot.coords;
-            let prime = base_radius + roller_radius;
-            // |O + L u(φ0)| = R_b + r: O·u(φ0) = K
-            let k =
-                (prime * prime - o.norm_squared() - arm_length * arm_length) / (2.0 * arm_length);
-            let phi0 = solve_angle(
-                |phi| o.x * phi.cos() + o.y * phi.sin() - k,
-                |phi| -o.x * phi.sin() + o.y * phi.cos(),
-                initial_angle,
-            )
-            .ok_or(CamError::Invalid {
-                field: "follower.arm_length",
-                value: arm_length,
-                reason: "the roller cannot rest on the base circle",
-            })?;
-            (
-                Kind::ArmRoller {
-                    o,
-                    l: arm_length,
-                    r: roller_radius,
-                    rho: -closing.sign(),
-                },
-                phi0,
-            )
-        }
-        Follower::OscillatingFlat {
-            pivot,
-            face_offset,
-            closing,
-            initial_angle,
-        } => {
-            let o = pivot.coords;
-            // the face at signed distance h0 = −closing·R_b from the axis: e + O·n(φ0) = h0
-            let h0 = -closing.sign() * base_radius;
-            let phi0 = solve_angle(
-                |phi| face_offset - o.x * phi.sin() + o.y * phi.cos() - h0,
-                |phi| -o.x * phi.cos() - o.y * phi.sin(),
-                initial_angle,
-            )
-            .ok_or(CamError::Invalid {
-                field: "follower.offset",
-                value: face_offset,
-                reason: "the face cannot rest on the base circle",
-            })?;
-            (
-                Kind::ArmFlat {
-                    o,
-                    e: face_offset,
-                    rho: -closing.sign(),
-                },
-                phi0,
-            )
-        }
-    };
+    let model = follower.model(Point2::origin())?;
+    let s0 = model.synthesis_start(base_radius)?;
     Ok(SynthesizedProfile {
         program,
-        kind,
+        model,
         sigma: direction.sign(),
         s0,
     })
@@ -207,10 +80,7 @@ impl SynthesizedProfile {
     /// The follower's position at cam angle `theta` (rad) and its first two derivatives in θ.
     pub fn follower_motion(&self, theta: f64) -> [f64; 3] {
         let s = self.program.eval(theta);
-        let rho = match self.kind {
-            Kind::ArmRoller { rho, .. } | Kind::ArmFlat { rho, .. } => rho,
-            _ => 1.0,
-        };
+        let rho = self.model.joint().away();
         [self.s0 + rho * s[0], rho * s[1], rho * s[2]]
     }
 
@@ -224,22 +94,28 @@ impl SynthesizedProfile {
     pub fn discontinuities(&self) -> Vec<crate::motion::Discontinuity> {
         self.program.discontinuities(1e-9)
     }
+}
 
-    /// `y, y', y'', y''', y''''` of `A w` given `w⁽ᵏ⁾`, k = 0..4 (world vectors).
-    fn rotated_derivs(&self, rot: &Rot, w: &[Vec2; 5]) -> [Vec2; 5] {
-        let sg = self.sigma;
-        let aw: Vec<Vec2> = w.iter().map(|v| rot.apply(*v)).collect();
-        let m = |v: Vec2| -sg * perp(v); // M = −σJ
-        let m2 = |v: Vec2| -v;
-        let m3 = |v: Vec2| sg * perp(v);
-        [
-            aw[0],
-            m(aw[0]) + aw[1],
-            m2(aw[0]) + 2.0 * m(aw[1]) + aw[2],
-            m3(aw[0]) + 3.0 * m2(aw[1]) + 3.0 * m(aw[2]) + aw[3],
-            aw[0] + 4.0 * m3(aw[1]) + 6.0 * m2(aw[2]) + 4.0 * m(aw[3]) + aw[4],
-        ]
-    }
+/// `y, y', y'', y''', y''''` of `A w` given `w⁽ᵏ⁾`, k = 0..4 (world vectors), with
+/// `A = R(−σθ)` (`rot`) and `A' = −σ J A`.
+pub(crate) fn rotated_derivs(sigma: f64, rot: &Rot, w: &[Vec2; 5]) -> [Vec2; 5] {
+    let sg = sigma;
+    let aw: Vec<Vec2> = w.iter().map(|v| rot.apply(*v)).collect();
+    let m = |v: Vec2| -sg * perp(v); // M = −σJ
+    let m2 = |v: Vec2| -v;
+    let m3 = |v: Vec2| sg * perp(v);
+    [
+        aw[0],
+        m(aw[0]) + aw[1],
+        m2(aw[0]) + 2.0 * m(aw[1]) + aw[2],
+        m3(aw[0]) + 3.0 * m2(aw[1]) + 3.0 * m(aw[2]) + aw[3],
+        aw[0] + 4.0 * m3(aw[1]) + 6.0 * m2(aw[2]) + 4.0 * m(aw[3]) + aw[4],
+    ]
+}
+
+/// A translating follower's reference point `e p + s d` and its derivatives in θ.
+pub(crate) fn translating_path(d: Vec2, p: Vec2, e: f64, s: &[f64; 5]) -> [Vec2; 5] {
+    [e * p + s[0] * d, s[1] * d, s[2] * d, s[3] * d, s[4] * d]
 }
 
 /// `√a` of a jet (a₀ > 0).
@@ -253,7 +129,7 @@ fn jet_sqrt(a: Jet) -> Jet {
 }
 
 /// `1/a` of a jet (a₀ ≠ 0).
-fn jet_recip(a: Jet) -> Jet {
+pub(crate) fn jet_recip(a: Jet) -> Jet {
     let a = a.0;
     let r0 = 1.0 / a[0];
     let r1 = -r0 * (a[1] * r0);
@@ -267,89 +143,9 @@ impl Curve for SynthesizedProfile {
         let s = self.program.eval5(u);
         let s = [self.s0 + s[0], s[1], s[2], s[3], s[4]];
         let rot = Rot::new(-self.sigma * u);
-        let sg = self.sigma;
-        let w =
-            |d: Vec2, p: Vec2, e: f64| [e * p + s[0] * d, s[1] * d, s[2] * d, s[3] * d, s[4] * d];
-        match self.kind {
-            Kind::Flat { d, p } => {
-                let w = [
-                    s[0] * d - sg * s[1] * p,
-                    s[1] * d - sg * s[2] * p,
-                    s[2] * d - sg * s[3] * p,
-                    s[3] * d - sg * s[4] * p,
-                    Vec2::zeros(), // not needed: y''' uses w up to w'''
-                ];
-                let y = self.rotated_derivs(&rot, &w);
-                Derivs {
-                    p: Point2::from(y[0]),
-                    d1: y[1],
-                    d2: y[2],
-                    d3: y[3],
-                }
-            }
-            Kind::Knife { d, p, e } => {
-                let y = self.rotated_derivs(&rot, &w(d, p, e));
-                Derivs {
-                    p: Point2::from(y[0]),
-                    d1: y[1],
-                    d2: y[2],
-                    d3: y[3],
-                }
-            }
-            Kind::Roller { d, p, e, r } => {
-                offset_curve(&self.rotated_derivs(&rot, &w(d, p, e)), r, sg)
-            }
-            Kind::ArmRoller { o, l, r, rho } => {
-                // φ = φ0 + ρ s and its derivatives; u(φ) = (cos φ, sin φ), v = k × u
-                let f = [
-                    self.s0 + rho * (s[0] - self.s0),
-                    rho * s[1],
-                    rho * s[2],
-                    rho * s[3],
-                    rho * s[4],
-                ];
-                let (sn, cs) = f[0].sin_cos();
-                let (u, v) = (Vec2::new(cs, sn), Vec2::new(-sn, cs));
-                let (f1, f2, f3) = (f[1], f[2], f[3]);
-                let w = [
-                    o + l * u,
-                    l * f1 * v,
-                    l * (f2 * v - f1 * f1 * u),
-                    l * ((f3 - f1 * f1 * f1) * v - 3.0 * f1 * f2 * u),
-                    l * ((f[4] - 6.0 * f1 * f1 * f2) * v
-                        + (f1.powi(4) - 4.0 * f1 * f3 - 3.0 * f2 * f2) * u),
-                ];
-                offset_curve(&self.rotated_derivs(&rot, &w), r, sg)
-            }
-            Kind::ArmFlat { o, e, rho } => {
-                // the face in the cam frame: y·N(α) = h, α = φ − σθ, h = e + O·n(φ); envelope
-                // y = h N − (h'/α') T with N = (−sin α, cos α), T = (cos α, sin α)
-                let f = [
-                    self.s0 + rho * (s[0] - self.s0),
-                    rho * s[1],
-                    rho * s[2],
-                    rho * s[3],
-                    rho * s[4],
-                ];
-                let phi = Jet([f[0], f[1], f[2] / 2.0, f[3] / 6.0]);
-                let phi1 = Jet([f[1], f[2], f[3] / 2.0, f[4] / 6.0]);
-                let (sp, cp) = phi.sin_cos();
-                let h = Jet::c(e) + scale(sp, -o.x) + scale(cp, o.y);
-                let h1 = phi1 * (scale(cp, -o.x) + scale(sp, -o.y));
-                let alpha = Jet([f[0] - sg * u, f[1] - sg, f[2] / 2.0, f[3] / 6.0]);
-                let alpha1 = Jet([f[1] - sg, f[2], f[3] / 2.0, f[4] / 6.0]);
-                let q = h1 * jet_recip(alpha1);
-                let (sa, ca) = alpha.sin_cos();
-                let yx = -(h * sa) - q * ca;
-                let yy = h * ca - q * sa;
-                let at = |j: usize, k: f64| Vec2::new(yx.0[j] * k, yy.0[j] * k);
-                Derivs {
-                    p: Point2::from(at(0, 1.0)),
-                    d1: at(1, 1.0),
-                    d2: at(2, 2.0),
-                    d3: at(3, 6.0),
-                }
-            }
+        match self.model.envelope(&s, self.s0, u, self.sigma, &rot) {
+            Envelope::Derivs(d) => d,
+            Envelope::Offset(c, r) => offset_curve(&c, r, self.sigma),
         }
     }
 
@@ -396,7 +192,11 @@ fn offset_curve(c: &[Vec2; 5], r: f64, sg: f64) -> Derivs {
 }
 
 /// Newton for `f(φ) = 0` from `start`; `None` when it does not converge.
-fn solve_angle(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, start: f64) -> Option<f64> {
+pub(crate) fn solve_angle(
+    f: impl Fn(f64) -> f64,
+    df: impl Fn(f64) -> f64,
+    start: f64,
+) -> Option<f64> {
     let mut phi = start;
     for _ in 0..100 {
         let step = f(phi) / df(phi);

@@ -11,9 +11,9 @@
 use super::model::{body_state, Constraint, ForceElement, RigidBody, System};
 use super::solver::AugmentedLagrangian;
 use super::DynamicsError;
-use crate::cam::{Follower, Mechanism};
+use crate::cam::{Joint, Mechanism};
 use crate::contact::{refine, Pairing, SearchOptions, Surface};
-use crate::geometry::{perp, Vec2};
+use crate::geometry::Vec2;
 use nalgebra::{DMatrix, DVector};
 
 /// Dynamic properties of the follower (SI units, lengths in the mechanism's unit converted by the
@@ -148,7 +148,7 @@ impl Simulation {
                 })
             }
         };
-        let oscillating = mech.follower().is_oscillating();
+        let oscillating = mech.follower_joint().is_rotating();
         if oscillating {
             positive("dynamics.inertia", params.inertia)?;
         } else {
@@ -167,31 +167,22 @@ impl Simulation {
             .map_err(|source| DynamicsError::Kinematics { source })?;
         let (pose_b, curve_b) = mech.follower_body(s0.position);
         let sign = cam.direction().sign();
-        let (follower_joint, axis, axis_origin, spring) = match *mech.follower() {
-            Follower::TranslatingFlat { direction }
-            | Follower::TranslatingRoller { direction, .. }
-            | Follower::TranslatingKnife { direction, .. } => {
-                let d = direction.normalize();
-                let e = match *mech.follower() {
-                    Follower::TranslatingRoller { offset, .. }
-                    | Follower::TranslatingKnife { offset, .. } => offset,
-                    _ => 0.0,
-                };
-                let through = cam.pivot() + e * perp(d);
+        let (follower_joint, axis, axis_origin, spring) = match mech.follower_joint() {
+            Joint::Translating { origin, direction } => {
                 let low = lowest(mech, 1.0);
                 (
                     Constraint::Translational {
                         body: 1,
-                        through,
-                        axis: d,
+                        through: origin,
+                        axis: direction,
                         angle: 0.0,
                     },
-                    d,
+                    direction,
                     cam.pivot(),
                     ForceElement::AxialSpring {
                         body: 1,
                         origin: cam.pivot(),
-                        axis: d,
+                        axis: direction,
                         stiffness: params.spring_stiffness,
                         preload: params.spring_preload,
                         reference: low,
@@ -199,8 +190,7 @@ impl Simulation {
                     },
                 )
             }
-            Follower::OscillatingFlat { pivot, closing, .. }
-            | Follower::OscillatingRoller { pivot, closing, .. } => {
+            Joint::Rotating { pivot, closing, .. } => {
                 // the spring turns the arm onto the cam (sense `closing`); lowest = nearest the cam
                 let cs = closing.sign();
                 let low = lowest(mech, -cs);

@@ -1,7 +1,6 @@
 //! The paper's cam (section 3): reference values of `cam-follower.md`.
 #![allow(clippy::unwrap_used)]
-mod common;
-use common::*;
+use crate::common::*;
 
 #[test]
 fn paper_cam_reference_values() {

@@ -1,9 +1,8 @@
 //! Jerk, and the implicit-differentiation derivatives it comes from.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Mechanism, Sense};
 use camkin::{Point2, Vec2};
-use common::*;
 
 /// Two independent methods: implicit differentiation of the first-touch conditions and the
 /// paper's contact method (eqs. 5, 6, 11) give the same velocity and acceleration.

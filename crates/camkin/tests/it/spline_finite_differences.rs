@@ -1,10 +1,9 @@
 //! Every follower type on spline cams: velocity and acceleration by the contact method agree with
 //! 8th-order central differences of the follower's own position (computed by first touch only).
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Mechanism, Sense};
 use camkin::Point2;
-use common::*;
 
 /// Checks the angles whose difference stencil stays on one spline segment (the position is only
 /// C² across a node: its third derivative jumps there). Returns how many angles were checked.

@@ -1,11 +1,10 @@
 //! Lift-off of a flat-faced follower on an eccentric circular cam: analytic threshold speed
 //! ω² = (F0 + 2 k e)/(m e) and the cam angle where the analytic contact force crosses zero.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Sense};
 use camkin::dynamics::{AugmentedLagrangian, EventKind, FollowerDynamics, Simulation};
 use camkin::{Point2, Vec2};
-use common::*;
 
 const R: f64 = 0.04; // m
 const E: f64 = 0.01;

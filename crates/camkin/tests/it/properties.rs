@@ -1,11 +1,10 @@
 //! Property tests over random convex spline cams and poses.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Mechanism, Sense};
 use camkin::curve::ClosedSpline;
 use camkin::geometry::{wrap_angle_near, Rot};
 use camkin::{Point2, Vec2};
-use common::*;
 use proptest::prelude::*;
 use std::sync::Arc;
 

@@ -1,10 +1,9 @@
 //! Eccentric circular cam (radius R, eccentricity e) with a translating flat-faced follower:
 //! s = e cos θ + R, ṡ = −e ω sin θ, s̈ = −e ω² cos θ exactly, for both cam directions.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Sense};
 use camkin::{Point2, Vec2};
-use common::*;
 
 const R: f64 = 4.0;
 const E: f64 = 1.25;

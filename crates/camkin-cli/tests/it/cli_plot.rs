@@ -1,16 +1,8 @@
 //! `camkin plot`: figures, drawings and the animation are produced and well formed.
 #![allow(clippy::unwrap_used)]
-use assert_cmd::Command;
+use crate::common::*;
 use predicates::prelude::*;
-use std::path::{Path, PathBuf};
-
-fn camkin() -> Command {
-    Command::cargo_bin("camkin").unwrap()
-}
-
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
+use std::path::Path;
 
 fn png_size(p: &Path) -> (u32, u32) {
     let b = std::fs::read(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));

@@ -1,17 +1,9 @@
 //! `camkin paper` and `camkin compare`: files produced and well formed, summary contents, JSON
 //! keys, bad input.
 #![allow(clippy::unwrap_used)]
-use assert_cmd::Command;
+use crate::common::*;
 use predicates::prelude::*;
-use std::path::{Path, PathBuf};
-
-fn camkin() -> Command {
-    Command::cargo_bin("camkin").unwrap()
-}
-
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
+use std::path::Path;
 
 /// A PNG of the expected size (signature and IHDR).
 fn assert_png(p: &Path) {

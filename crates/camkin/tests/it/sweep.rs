@@ -1,11 +1,10 @@
 //! Warm-started sweeps: same answers as the global search at every angle; jumps of the contact on
 //! non-convex cams are noticed and flagged.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Found, Mechanism, Sense};
 use camkin::curve::ClosedSpline;
 use camkin::{Point2, Vec2};
-use common::*;
 use std::sync::Arc;
 
 /// Returns (warm starts, jumps flagged by the sweep, jumps of the global contact parameter).

@@ -1,7 +1,6 @@
 //! The test oracle itself: hyper-dual derivatives against known derivatives.
 #![allow(clippy::unwrap_used)]
-mod common;
-use common::*;
+use crate::common::*;
 
 #[test]
 fn hyper_dual_derivatives_are_exact() {

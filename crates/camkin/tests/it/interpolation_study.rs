@@ -6,9 +6,8 @@
 //! derivative jumps wherever the contact crosses a node of the cam's spline, and next to such a
 //! kink the interpolated second derivative is first-order accurate.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::interp::{max_and_mean, relative_errors, Interpolated};
-use common::*;
 
 fn study(revised: bool, n: usize, grid: usize) -> (f64, f64) {
     let m = paper_mechanism(revised);

@@ -1,13 +1,9 @@
 //! `camkin synth`: profile files (the DXF read back by a DXF reader), SVAJ plots, design checks
 //! on cams built to violate them, the round trip.
 #![allow(clippy::unwrap_used)]
-use assert_cmd::Command;
+use crate::common::*;
 use predicates::prelude::*;
 use std::path::PathBuf;
-
-fn camkin() -> Command {
-    Command::cargo_bin("camkin").unwrap()
-}
 
 #[test]
 fn synth_writes_a_profile_a_dxf_reader_opens() {

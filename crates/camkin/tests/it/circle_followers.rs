@@ -1,10 +1,9 @@
 //! A circular cam with every follower type against closed forms (differentiated exactly with
 //! hyper-dual numbers), for both cam directions and a cam axis away from the origin.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Sense};
 use camkin::{Point2, Vec2};
-use common::*;
 
 const RC: f64 = 4.0;
 

@@ -1,11 +1,10 @@
 //! Dynamics with permanent contact: the simulated follower reproduces the kinematic motion of
 //! the contact method, and the contact force balances the follower's equation of motion.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Sense};
 use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Simulation};
 use camkin::{Point2, Vec2};
-use common::*;
 
 fn params(oscillating: bool) -> FollowerDynamics {
     FollowerDynamics {

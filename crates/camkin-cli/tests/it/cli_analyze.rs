@@ -1,16 +1,8 @@
 //! `camkin analyze`: output format, examples, exit codes, atomic output, error messages.
 #![allow(clippy::unwrap_used)]
-use assert_cmd::Command;
+use crate::common::*;
 use predicates::prelude::*;
 use std::path::PathBuf;
-
-fn camkin() -> Command {
-    Command::cargo_bin("camkin").unwrap()
-}
-
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
 
 fn parse_csv(out: &[u8]) -> (Vec<String>, Vec<Vec<String>>) {
     let text = String::from_utf8(out.to_vec()).unwrap();

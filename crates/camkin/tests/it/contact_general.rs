@@ -5,7 +5,7 @@
 //! Φ_q q̈ − γ` (eq. 11), and the pairing parameters drift at the rates of eqs. 5–7, 9. Both are
 //! measured by finite differences of positions only.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::body::{BodyState, Pose};
 use camkin::contact::{
     closest_pair, find_contact, refine, ContactError, ContactKinematics, Pairing, SearchOptions,
@@ -13,7 +13,6 @@ use camkin::contact::{
 };
 use camkin::curve::{Circle, ClosedSpline, Curve, Ellipse, Line, PointCurve};
 use camkin::{Point2, Vec2};
-use common::*;
 
 fn at_time(b: &BodyState, t: f64) -> BodyState {
     BodyState {

@@ -1,10 +1,9 @@
 //! Elliptical cam centred on its axis with a flat-faced follower: s(θ) = √(a² cos²θ + b² sin²θ)
 //! (the ellipse's support function), differentiated exactly.
 #![allow(clippy::unwrap_used)]
-mod common;
+use crate::common::*;
 use camkin::cam::{Follower, Sense};
 use camkin::{Point2, Vec2};
-use common::*;
 
 #[test]
 fn ellipse_support_function_both_directions() {

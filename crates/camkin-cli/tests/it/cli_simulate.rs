@@ -1,12 +1,8 @@
 //! `camkin simulate`: time series, events, plots, bad dynamics input.
 #![allow(clippy::unwrap_used)]
-use assert_cmd::Command;
+use crate::common::*;
 use predicates::prelude::*;
 use std::path::PathBuf;
-
-fn camkin() -> Command {
-    Command::cargo_bin("camkin").unwrap()
-}
 
 fn example(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

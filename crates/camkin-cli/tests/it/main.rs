@@ -1,0 +1,11 @@
+//! The command's integration tests, one module per scenario (one test binary).
+#![allow(clippy::unwrap_used)]
+
+mod cli_analyze;
+mod cli_bad_input;
+mod cli_plot;
+mod cli_simulate;
+mod cli_study;
+mod cli_synth;
+mod common;
+mod properties;

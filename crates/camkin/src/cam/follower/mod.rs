@@ -1,0 +1,446 @@
+//! The follower model: what a follower kind *is*, in one place.
+//!
+//! A follower is a [`Joint`] (a slide along a direction, or a revolute pair at a pivot) carrying a
+//! contact curve in its own frame ([`FollowerCurve`]: a line, a circle or a point). The five named
+//! kinds of [`Follower`] are presets of that shape; each is implemented once, in its own file, by
+//! the crate-private `Kind` trait: validation of its reach, the first-touch position through one
+//! cam point, the tangency residual and its Jacobian that Newton solves, the contact curve, the
+//! synthesis envelope (`super::synthesis`) and the joint (which the dynamics builds on).
+//! `Follower::model` is the one place that lists the kinds.
+//!
+//! Adding a kind: a new file implementing `Kind`, a variant in [`Follower`] and in `Model`, and its
+//! line in `Follower::model` and in the `dispatch!` macro.
+//!
+//! Position `q` (see `cam-follower.md`): translating followers measure `s` from the cam's rotation
+//! axis along the unit direction `d`; oscillating followers give the absolute arm angle `φ`
+//! (rad, counter-clockwise from the world x axis).
+
+mod joint;
+mod oscillating_flat;
+mod oscillating_roller;
+mod translating_flat;
+mod translating_knife;
+mod translating_roller;
+
+pub use joint::Joint;
+
+use super::jet::{Num, V2};
+use super::synthesis::Envelope;
+use super::CamError;
+use crate::body::{Frame, WorldDerivs};
+use crate::curve::{unit_direction, Circle, Line, PointCurve};
+use crate::geometry::{perp, wrap_angle_near, Point2, Rot, Vec2};
+use oscillating_flat::OscillatingFlat;
+use oscillating_roller::OscillatingRoller;
+use translating_flat::TranslatingFlat;
+use translating_knife::TranslatingKnife;
+use translating_roller::TranslatingRoller;
+
+/// Rotation sense: of the cam's motion, or of the spring that closes an oscillating follower.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Sense {
+    /// counter-clockwise
+    #[default]
+    Ccw,
+    /// clockwise
+    Cw,
+}
+
+impl Sense {
+    /// +1 for counter-clockwise, −1 for clockwise.
+    pub fn sign(self) -> f64 {
+        match self {
+            Sense::Ccw => 1.0,
+            Sense::Cw => -1.0,
+        }
+    }
+}
+
+/// A follower and its geometry. Build a [`crate::cam::Mechanism`] to validate it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Follower {
+    /// Translating flat-faced: the face is the line `x·d = s` (positions from the cam axis).
+    TranslatingFlat {
+        /// direction of travel `d`, from the cam towards the follower (normalised on use)
+        direction: Vec2,
+    },
+    /// Translating roller: centre at `e·perp(d) + s·d` from the cam axis.
+    TranslatingRoller {
+        /// direction of travel `d`
+        direction: Vec2,
+        /// offset `e` of the line of travel, length
+        offset: f64,
+        /// roller radius, length
+        roller_radius: f64,
+    },
+    /// Translating knife edge: tip at `e·perp(d) + s·d` from the cam axis.
+    TranslatingKnife {
+        /// direction of travel `d`
+        direction: Vec2,
+        /// offset `e` of the line of travel, length
+        offset: f64,
+    },
+    /// Oscillating flat-faced: the face is the line through `O + e (−sin φ, cos φ)` along
+    /// `(cos φ, sin φ)`, touching the cam on the arm's side of the pivot.
+    OscillatingFlat {
+        /// arm pivot `O`, world
+        pivot: Point2,
+        /// face offset `e` from the pivot, length
+        face_offset: f64,
+        /// sense in which the spring turns the arm onto the cam
+        closing: Sense,
+        /// picks the branch: the solution within ±180° of it, rad
+        initial_angle: f64,
+    },
+    /// Oscillating roller: roller centre at `O + L (cos φ, sin φ)`.
+    OscillatingRoller {
+        /// arm pivot `O`, world
+        pivot: Point2,
+        /// arm length `L`
+        arm_length: f64,
+        /// roller radius
+        roller_radius: f64,
+        /// sense in which the spring turns the arm onto the cam
+        closing: Sense,
+        /// picks the branch: the solution within ±180° of it, rad
+        initial_angle: f64,
+    },
+}
+
+impl Follower {
+    /// The follower model of this kind with the cam axis at `cam_pivot`, validated: directions
+    /// non-zero (normalised), lengths finite, radii and arm lengths positive. The one place
+    /// that lists the kinds.
+    pub(crate) fn model(&self, cam_pivot: Point2) -> Result<Model, CamError> {
+        let unit = |d: Vec2| unit_direction("follower.direction", d).map_err(CamError::from);
+        Ok(match *self {
+            Follower::TranslatingFlat { direction } => {
+                TranslatingFlat::model(cam_pivot, unit(direction)?)
+            }
+            Follower::TranslatingRoller {
+                direction,
+                offset,
+                roller_radius,
+            } => {
+                let d = unit(direction)?;
+                TranslatingRoller::model(
+                    cam_pivot,
+                    d,
+                    finite("follower.offset", offset)?,
+                    positive("follower.roller_radius", roller_radius)?,
+                )
+            }
+            Follower::TranslatingKnife { direction, offset } => {
+                let d = unit(direction)?;
+                TranslatingKnife::model(cam_pivot, d, finite("follower.offset", offset)?)
+            }
+            Follower::OscillatingFlat {
+                pivot,
+                face_offset,
+                closing,
+                initial_angle,
+            } => OscillatingFlat::model(
+                point("follower.pivot", pivot)?,
+                finite("follower.offset", face_offset)?,
+                closing,
+                finite("follower.initial_angle_deg", initial_angle)?,
+            ),
+            Follower::OscillatingRoller {
+                pivot,
+                arm_length,
+                roller_radius,
+                closing,
+                initial_angle,
+            } => {
+                let o = point("follower.pivot", pivot)?;
+                OscillatingRoller::model(
+                    cam_pivot,
+                    o,
+                    positive("follower.arm_length", arm_length)?,
+                    positive("follower.roller_radius", roller_radius)?,
+                    closing,
+                    finite("follower.initial_angle_deg", initial_angle)?,
+                )
+            }
+        })
+    }
+
+    /// Human-readable kind, as in mechanism files.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Follower::TranslatingFlat { .. } => "translating-flat",
+            Follower::TranslatingRoller { .. } => "translating-roller",
+            Follower::TranslatingKnife { .. } => "translating-knife",
+            Follower::OscillatingFlat { .. } => "oscillating-flat",
+            Follower::OscillatingRoller { .. } => "oscillating-roller",
+        }
+    }
+
+    /// True for oscillating followers (position in rad).
+    pub fn is_oscillating(&self) -> bool {
+        matches!(
+            self,
+            Follower::OscillatingFlat { .. } | Follower::OscillatingRoller { .. }
+        )
+    }
+}
+
+fn finite(field: &'static str, v: f64) -> Result<f64, CamError> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(CamError::Invalid {
+            field,
+            value: v,
+            reason: "must be finite",
+        })
+    }
+}
+
+fn positive(field: &'static str, v: f64) -> Result<f64, CamError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(CamError::Invalid {
+            field,
+            value: v,
+            reason: "must be positive and finite",
+        })
+    }
+}
+
+fn point(field: &'static str, p: Point2) -> Result<Point2, CamError> {
+    finite(field, p.x)?;
+    finite(field, p.y)?;
+    Ok(p)
+}
+
+/// `(oriented score, φ)` of an arm angle `phi` taken on the branch within ±180° of `phi0`.
+#[inline]
+fn arm_branch(phi: f64, phi0: f64, closing: f64) -> (f64, f64) {
+    let phi = wrap_angle_near(phi, phi0);
+    (-closing * phi, phi)
+}
+
+/// What each follower kind implements, once, in its own file.
+pub(crate) trait Kind {
+    /// The joint that carries the follower.
+    fn joint(&self) -> Joint;
+    /// The contact curve in the follower's frame, oriented material-on-the-left.
+    fn curve(&self) -> FollowerCurve;
+    /// The position at which the follower's boundary first passes through the world cam point
+    /// `x`, oriented so that larger is "touches earlier" (the first touch is the maximum), or
+    /// `None` when the follower never touches `x`. Returns `(oriented score, q)`.
+    fn score(&self, x: Point2) -> Option<(f64, f64)>;
+    /// Residual of the tangency conditions at world cam point `x` (with `x1 = ∂x/∂u`) and
+    /// position `q`: two equations, zero at a touch. Generic so that the jerk can be computed by
+    /// differentiating it with jets.
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2];
+    /// `∂(residual)/∂(u, q)` at cam point `e` and position `q`.
+    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2];
+    /// A direction from the contact point `c` into the follower at position `q`: along it the
+    /// cam's outward normal must point at a genuine touch (the cam's back side, or a roller
+    /// touching from inside, fail this).
+    fn toward_follower(&self, c: Point2, q: f64) -> Vec2;
+    /// Refuses a follower that can never touch a cam reaching `size` from its axis.
+    fn check_reach(&self, _size: f64) -> Result<(), CamError> {
+        Ok(())
+    }
+    /// The signed curvature (of a counter-clockwise profile) below which the follower cannot
+    /// follow the profile: 0 under a flat face, `−1/r` under a roller; `None` for a point.
+    fn concave_limit(&self) -> Option<f64>;
+    /// A knife edge's line of travel `(d, perp(d), e)`.
+    fn knife_line(&self) -> Option<(Vec2, Vec2, f64)> {
+        None
+    }
+    /// The roller's radius.
+    fn roller_radius(&self) -> Option<f64> {
+        None
+    }
+    /// Synthesis: the follower's position `q₀` (length, or arm angle) where it rests on the base
+    /// circle of radius `base_radius` (the program's zero).
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError>;
+    /// Synthesis: the profile point touching the follower at cam angle `u`, with `s` the
+    /// program's value and four derivatives (`s₀` added to the value), `σ` the cam's sense and
+    /// `rot = R(−σu)`.
+    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rot) -> Envelope;
+}
+
+/// A follower kind with its derived data: one variant per kind.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Model {
+    TranslatingFlat(TranslatingFlat),
+    TranslatingRoller(TranslatingRoller),
+    TranslatingKnife(TranslatingKnife),
+    OscillatingFlat(OscillatingFlat),
+    OscillatingRoller(OscillatingRoller),
+}
+
+/// Calls `$body` with `$k` bound to the kind inside a `Model`.
+macro_rules! dispatch {
+    ($model:expr, $k:ident => $body:expr) => {
+        match $model {
+            Model::TranslatingFlat($k) => $body,
+            Model::TranslatingRoller($k) => $body,
+            Model::TranslatingKnife($k) => $body,
+            Model::OscillatingFlat($k) => $body,
+            Model::OscillatingRoller($k) => $body,
+        }
+    };
+}
+
+impl Kind for Model {
+    fn joint(&self) -> Joint {
+        dispatch!(self, k => k.joint())
+    }
+    fn curve(&self) -> FollowerCurve {
+        dispatch!(self, k => k.curve())
+    }
+    #[inline]
+    fn score(&self, x: Point2) -> Option<(f64, f64)> {
+        dispatch!(self, k => k.score(x))
+    }
+    #[inline]
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        dispatch!(self, k => k.residual_value(x, x1, q))
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
+        dispatch!(self, k => k.jacobian(e, q))
+    }
+    #[inline]
+    fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
+        dispatch!(self, k => k.toward_follower(c, q))
+    }
+    fn check_reach(&self, size: f64) -> Result<(), CamError> {
+        dispatch!(self, k => k.check_reach(size))
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        dispatch!(self, k => k.concave_limit())
+    }
+    fn knife_line(&self) -> Option<(Vec2, Vec2, f64)> {
+        dispatch!(self, k => k.knife_line())
+    }
+    fn roller_radius(&self) -> Option<f64> {
+        dispatch!(self, k => k.roller_radius())
+    }
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
+        dispatch!(self, k => k.synthesis_start(base_radius))
+    }
+    #[inline]
+    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rot) -> Envelope {
+        dispatch!(self, k => k.envelope(s, s0, u, sigma, rot))
+    }
+}
+
+/// The follower's contact curve in its own body frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum FollowerCurve {
+    /// a flat face
+    Line(Line),
+    /// a roller
+    Circle(Circle),
+    /// a knife edge
+    Point(PointCurve),
+}
+
+impl FollowerCurve {
+    /// The curve as a shared trait object (for the dynamics).
+    pub fn to_arc(self) -> std::sync::Arc<dyn crate::curve::Curve> {
+        match self {
+            FollowerCurve::Line(c) => std::sync::Arc::new(c),
+            FollowerCurve::Circle(c) => std::sync::Arc::new(c),
+            FollowerCurve::Point(c) => std::sync::Arc::new(c),
+        }
+    }
+
+    /// The parameter of the world contact point `c` on this curve (the follower frame is
+    /// `frame`) and the curve's world derivatives there, without a virtual call; a roller's come
+    /// from its radial unit vector.
+    #[inline]
+    pub(crate) fn world_at(&self, frame: &Frame, c: Point2) -> (f64, WorldDerivs) {
+        match self {
+            FollowerCurve::Line(l) => {
+                let d = frame.rot.apply(l.direction());
+                let a = frame.origin + frame.rot.apply(l.anchor().coords);
+                let u = (c - a).dot(&d);
+                (
+                    u,
+                    WorldDerivs {
+                        p: a + u * d,
+                        d1: d,
+                        d2: Vec2::zeros(),
+                        d3: Vec2::zeros(),
+                    },
+                )
+            }
+            FollowerCurve::Circle(k) => {
+                let centre = frame.origin + frame.rot.apply(k.center().coords);
+                let r = k.radius();
+                let m = c - centre;
+                let radial = m * (1.0 / m.norm());
+                let local = frame.rot.apply_inverse(radial);
+                let t = perp(radial);
+                (
+                    local.y.atan2(local.x),
+                    WorldDerivs {
+                        p: centre + r * radial,
+                        d1: r * t,
+                        d2: -r * radial,
+                        d3: -r * t,
+                    },
+                )
+            }
+            FollowerCurve::Point(q) => (
+                0.0,
+                WorldDerivs {
+                    p: frame.origin + frame.rot.apply(q.at().coords),
+                    d1: Vec2::zeros(),
+                    d2: Vec2::zeros(),
+                    d3: Vec2::zeros(),
+                },
+            ),
+        }
+    }
+}
+
+/// A validated follower: its model, with the joint and the curve cached from it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Geometry {
+    pub(crate) follower: Follower,
+    /// cam axis (world)
+    pub(crate) cam_pivot: Point2,
+    pub(crate) model: Model,
+    pub(crate) joint: Joint,
+    pub(crate) curve: FollowerCurve,
+}
+
+impl Geometry {
+    pub(crate) fn new(follower: Follower, cam_pivot: Point2) -> Result<Self, CamError> {
+        let model = follower.model(cam_pivot)?;
+        Ok(Self {
+            follower,
+            cam_pivot,
+            model,
+            joint: model.joint(),
+            curve: model.curve(),
+        })
+    }
+
+    /// The residual at cam point `e` and position `q` with its Jacobian in `(u, q)`.
+    #[inline]
+    pub(crate) fn residual(&self, e: &WorldDerivs, q: f64) -> ([f64; 2], [[f64; 2]; 2]) {
+        let f = self.model.residual_value(V2::c(e.p.coords), V2::c(e.d1), q);
+        (f, self.model.jacobian(e, q))
+    }
+
+    /// Converts a change of `q` into a length, for tolerances.
+    pub(crate) fn q_length_scale(&self, size: f64) -> f64 {
+        self.joint.q_length_scale(size, self.cam_pivot)
+    }
+
+    pub(crate) fn is_knife(&self) -> bool {
+        matches!(self.curve, FollowerCurve::Point(_))
+    }
+}

@@ -1,0 +1,131 @@
+//! Oscillating flat-faced follower: the face is the line through `O + e (−sin φ, cos φ)` along
+//! `(cos φ, sin φ)`, touching the cam on the arm's side of the pivot. Its curve is the line
+//! `y = e` of the arm frame, oriented so that the cam lies on its right.
+
+use super::{arm_branch, Joint, Kind, Model, Sense};
+use crate::body::WorldDerivs;
+use crate::cam::jet::{scale, Jet, Num, V2};
+use crate::cam::synthesis::{jet_recip, solve_angle, Envelope};
+use crate::cam::CamError;
+use crate::curve::{Derivs, Line};
+use crate::geometry::{Point2, Rot, Vec2};
+
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct OscillatingFlat {
+    pub(super) o: Point2,
+    /// +1 when the spring closes the arm counter-clockwise
+    pub(super) closing: f64,
+    pub(super) phi0: f64,
+    pub(super) e: f64,
+    pub(super) sense: Sense,
+}
+
+impl OscillatingFlat {
+    pub(super) fn model(o: Point2, e: f64, closing: Sense, phi0: f64) -> Model {
+        Model::OscillatingFlat(Self {
+            o,
+            closing: closing.sign(),
+            phi0,
+            e,
+            sense: closing,
+        })
+    }
+}
+
+impl Kind for OscillatingFlat {
+    fn joint(&self) -> Joint {
+        Joint::Rotating {
+            pivot: self.o,
+            closing: self.sense,
+            initial_angle: self.phi0,
+        }
+    }
+    fn curve(&self) -> super::FollowerCurve {
+        // cw closing: the cam lies on the −n side of the face, the arm on the +n side
+        super::FollowerCurve::Line(
+            Line::new(Point2::new(0.0, self.e), Vec2::new(-self.closing, 0.0))
+                .expect("unit vector"),
+        )
+    }
+    #[inline]
+    fn score(&self, x: Point2) -> Option<(f64, f64)> {
+        let y = x - self.o;
+        let rho = y.norm();
+        let psi = y.y.atan2(y.x);
+        let e = self.e;
+        if rho < e.abs() || rho == 0.0 {
+            return None;
+        }
+        Some(arm_branch(psi - (e / rho).asin(), self.phi0, self.closing))
+    }
+    #[inline]
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        let (s, c) = q.sin_cos();
+        let y = x - V2::c(self.o.coords);
+        let n = V2::new(-s, c);
+        [y.dot(n) - T::c(self.e), x1.dot(n)]
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
+        let (s, c) = q.sin_cos();
+        let u = Vec2::new(c, s);
+        let n = Vec2::new(-s, c);
+        let y = e.p - self.o;
+        [[e.d1.dot(&n), -y.dot(&u)], [e.d2.dot(&n), -e.d1.dot(&u)]]
+    }
+    #[inline]
+    fn toward_follower(&self, _c: Point2, q: f64) -> Vec2 {
+        let (s, co) = q.sin_cos();
+        // cw closing (sign −1): the cam is on the −n side, the arm on the +n side
+        -self.closing * Vec2::new(-s, co)
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        Some(0.0)
+    }
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
+        let o = self.o.coords;
+        let face_offset = self.e;
+        // the face at signed distance h0 = −closing·R_b from the axis: e + O·n(φ0) = h0
+        let h0 = -self.closing * base_radius;
+        solve_angle(
+            |phi| face_offset - o.x * phi.sin() + o.y * phi.cos() - h0,
+            |phi| -o.x * phi.cos() - o.y * phi.sin(),
+            self.phi0,
+        )
+        .ok_or(CamError::Invalid {
+            field: "follower.offset",
+            value: face_offset,
+            reason: "the face cannot rest on the base circle",
+        })
+    }
+    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, _rot: &Rot) -> Envelope {
+        // the face in the cam frame: y·N(α) = h, α = φ − σθ, h = e + O·n(φ); envelope
+        // y = h N − (h'/α') T with N = (−sin α, cos α), T = (cos α, sin α)
+        let (o, e, rho, sg) = (self.o.coords, self.e, -self.closing, sigma);
+        let f = [
+            s0 + rho * (s[0] - s0),
+            rho * s[1],
+            rho * s[2],
+            rho * s[3],
+            rho * s[4],
+        ];
+        let phi = Jet([f[0], f[1], f[2] / 2.0, f[3] / 6.0]);
+        let phi1 = Jet([f[1], f[2], f[3] / 2.0, f[4] / 6.0]);
+        let (sp, cp) = phi.sin_cos();
+        let h = Jet::c(e) + scale(sp, -o.x) + scale(cp, o.y);
+        let h1 = phi1 * (scale(cp, -o.x) + scale(sp, -o.y));
+        let alpha = Jet([f[0] - sg * u, f[1] - sg, f[2] / 2.0, f[3] / 6.0]);
+        let alpha1 = Jet([f[1] - sg, f[2], f[3] / 2.0, f[4] / 6.0]);
+        let q = h1 * jet_recip(alpha1);
+        let (sa, ca) = alpha.sin_cos();
+        let yx = -(h * sa) - q * ca;
+        let yy = h * ca - q * sa;
+        let at = |j: usize, k: f64| Vec2::new(yx.0[j] * k, yy.0[j] * k);
+        Envelope::Derivs(Derivs {
+            p: Point2::from(at(0, 1.0)),
+            d1: at(1, 1.0),
+            d2: at(2, 2.0),
+            d3: at(3, 6.0),
+        })
+    }
+}

@@ -1,0 +1,162 @@
+//! Oscillating roller: the roller centre at `O + L (cos φ, sin φ)`; its curve is the circle of
+//! radius `r` about `(L, 0)` in the arm frame.
+
+use super::{arm_branch, Joint, Kind, Model, Sense};
+use crate::body::WorldDerivs;
+use crate::cam::jet::{Num, V2};
+use crate::cam::synthesis::{rotated_derivs, solve_angle, Envelope};
+use crate::cam::CamError;
+use crate::curve::Circle;
+use crate::geometry::{Point2, Rot, Vec2};
+
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct OscillatingRoller {
+    pub(super) cam_pivot: Point2,
+    pub(super) o: Point2,
+    /// +1 when the spring closes the arm counter-clockwise
+    pub(super) closing: f64,
+    pub(super) phi0: f64,
+    pub(super) l: f64,
+    pub(super) r: f64,
+    pub(super) sense: Sense,
+}
+
+impl OscillatingRoller {
+    pub(super) fn model(
+        cam_pivot: Point2,
+        o: Point2,
+        l: f64,
+        r: f64,
+        closing: Sense,
+        phi0: f64,
+    ) -> Model {
+        Model::OscillatingRoller(Self {
+            cam_pivot,
+            o,
+            closing: closing.sign(),
+            phi0,
+            l,
+            r,
+            sense: closing,
+        })
+    }
+}
+
+impl Kind for OscillatingRoller {
+    fn joint(&self) -> Joint {
+        Joint::Rotating {
+            pivot: self.o,
+            closing: self.sense,
+            initial_angle: self.phi0,
+        }
+    }
+    fn curve(&self) -> super::FollowerCurve {
+        super::FollowerCurve::Circle(
+            Circle::new(Point2::new(self.l, 0.0), self.r).expect("validated radius"),
+        )
+    }
+    #[inline]
+    fn score(&self, x: Point2) -> Option<(f64, f64)> {
+        let y = x - self.o;
+        let rho = y.norm();
+        let psi = y.y.atan2(y.x);
+        let (l, r) = (self.l, self.r);
+        if rho == 0.0 {
+            return None;
+        }
+        let c = (rho * rho + l * l - r * r) / (2.0 * rho * l);
+        if !(-1.0..=1.0).contains(&c) {
+            return None;
+        }
+        // cw closing (arm comes down): largest φ whose roller holds x
+        Some(arm_branch(
+            psi - self.closing * c.acos(),
+            self.phi0,
+            self.closing,
+        ))
+    }
+    #[inline]
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        let (s, c) = q.sin_cos();
+        let y = x - V2::c(self.o.coords);
+        let m = y - V2::new(c, s).scale(T::c(self.l));
+        [T::c(0.5) * (m.dot(m) - T::c(self.r * self.r)), x1.dot(m)]
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
+        let (s, c) = q.sin_cos();
+        let u = Vec2::new(c, s);
+        let n = Vec2::new(-s, c);
+        let y = e.p - self.o;
+        let l = self.l;
+        let m = y - l * u;
+        let dm_dq = -l * n;
+        [
+            [e.d1.dot(&m), m.dot(&dm_dq)],
+            [e.d2.dot(&m) + e.d1.norm_squared(), e.d1.dot(&dm_dq)],
+        ]
+    }
+    #[inline]
+    fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
+        let (s, co) = q.sin_cos();
+        (self.o + self.l * Vec2::new(co, s)) - c
+    }
+    fn check_reach(&self, size: f64) -> Result<(), CamError> {
+        let (l, r) = (self.l, self.r);
+        let d = (self.o - self.cam_pivot).norm();
+        if (d - l).abs() >= size + r {
+            return Err(CamError::Unreachable {
+                field: "follower.arm_length",
+                value: l,
+                reason: format!("the roller cannot reach the cam: its centre stays {} from the cam axis, the cam reaches {size} and the roller radius is {r}", (d - l).abs()),
+            });
+        }
+        Ok(())
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        Some(-1.0 / self.r)
+    }
+    fn roller_radius(&self) -> Option<f64> {
+        Some(self.r)
+    }
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
+        let o = self.o.coords;
+        let arm_length = self.l;
+        let prime = base_radius + self.r;
+        // |O + L u(φ0)| = R_b + r: O·u(φ0) = K
+        let k = (prime * prime - o.norm_squared() - arm_length * arm_length) / (2.0 * arm_length);
+        solve_angle(
+            |phi| o.x * phi.cos() + o.y * phi.sin() - k,
+            |phi| -o.x * phi.sin() + o.y * phi.cos(),
+            self.phi0,
+        )
+        .ok_or(CamError::Invalid {
+            field: "follower.arm_length",
+            value: arm_length,
+            reason: "the roller cannot rest on the base circle",
+        })
+    }
+    fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rot) -> Envelope {
+        // φ = φ0 + ρ s and its derivatives; u(φ) = (cos φ, sin φ), v = k × u
+        let (o, l, rho) = (self.o.coords, self.l, -self.closing);
+        let f = [
+            s0 + rho * (s[0] - s0),
+            rho * s[1],
+            rho * s[2],
+            rho * s[3],
+            rho * s[4],
+        ];
+        let (sn, cs) = f[0].sin_cos();
+        let (u, v) = (Vec2::new(cs, sn), Vec2::new(-sn, cs));
+        let (f1, f2, f3) = (f[1], f[2], f[3]);
+        let w = [
+            o + l * u,
+            l * f1 * v,
+            l * (f2 * v - f1 * f1 * u),
+            l * ((f3 - f1 * f1 * f1) * v - 3.0 * f1 * f2 * u),
+            l * ((f[4] - 6.0 * f1 * f1 * f2) * v
+                + (f1.powi(4) - 4.0 * f1 * f3 - 3.0 * f2 * f2) * u),
+        ];
+        Envelope::Offset(rotated_derivs(sigma, rot, &w), self.r)
+    }
+}

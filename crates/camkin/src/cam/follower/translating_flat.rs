@@ -1,0 +1,83 @@
+//! Translating flat-faced follower: the face is the line `x·d = s` (positions from the cam axis).
+//! Its curve is the line through the frame origin along `−perp(d)` (material on the left: the
+//! follower lies on the `+d` side of its face).
+
+use super::{Joint, Kind, Model};
+use crate::body::WorldDerivs;
+use crate::cam::jet::{Num, V2};
+use crate::cam::synthesis::{rotated_derivs, Envelope};
+use crate::cam::CamError;
+use crate::curve::{Derivs, Line};
+use crate::geometry::{perp, Point2, Rot, Vec2};
+
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TranslatingFlat {
+    pub(super) cam_pivot: Point2,
+    pub(super) d: Vec2,
+    pub(super) p: Vec2,
+}
+
+impl TranslatingFlat {
+    pub(super) fn model(cam_pivot: Point2, d: Vec2) -> Model {
+        Model::TranslatingFlat(Self {
+            cam_pivot,
+            d,
+            p: perp(d),
+        })
+    }
+}
+
+impl Kind for TranslatingFlat {
+    fn joint(&self) -> Joint {
+        Joint::Translating {
+            origin: self.cam_pivot,
+            direction: self.d,
+        }
+    }
+    fn curve(&self) -> super::FollowerCurve {
+        super::FollowerCurve::Line(Line::new(Point2::origin(), -self.p).expect("unit vector"))
+    }
+    #[inline]
+    fn score(&self, x: Point2) -> Option<(f64, f64)> {
+        let q = (x - self.cam_pivot).dot(&self.d);
+        Some((q, q))
+    }
+    #[inline]
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        let y = x - V2::c(self.cam_pivot.coords);
+        let d = V2::c(self.d);
+        [y.dot(d) - q, x1.dot(d)] // y·d = q, y'·d = 0
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
+        [[e.d1.dot(&self.d), -1.0], [e.d2.dot(&self.d), 0.0]]
+    }
+    #[inline]
+    fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {
+        self.d
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        Some(0.0)
+    }
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
+        Ok(base_radius)
+    }
+    fn envelope(&self, s: &[f64; 5], _s0: f64, _u: f64, sigma: f64, rot: &Rot) -> Envelope {
+        // the envelope of the face lines y·A d = s: y = A (s d − σ s' p)
+        let (d, p, sg) = (self.d, self.p, sigma);
+        let w = [
+            s[0] * d - sg * s[1] * p,
+            s[1] * d - sg * s[2] * p,
+            s[2] * d - sg * s[3] * p,
+            s[3] * d - sg * s[4] * p,
+            Vec2::zeros(), // not needed: y''' uses w up to w'''
+        ];
+        let y = rotated_derivs(sigma, rot, &w);
+        Envelope::Derivs(Derivs {
+            p: Point2::from(y[0]),
+            d1: y[1],
+            d2: y[2],
+            d3: y[3],
+        })
+    }
+}

@@ -1,0 +1,96 @@
+//! Translating knife edge: the tip at `e·perp(d) + s·d` from the cam axis; its curve is the point
+//! at the frame origin.
+
+use super::{Joint, Kind, Model};
+use crate::body::WorldDerivs;
+use crate::cam::jet::{Num, V2};
+use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
+use crate::cam::CamError;
+use crate::curve::{Derivs, PointCurve};
+use crate::geometry::{perp, Point2, Rot, Vec2};
+
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TranslatingKnife {
+    pub(super) cam_pivot: Point2,
+    pub(super) d: Vec2,
+    pub(super) p: Vec2,
+    pub(super) e: f64,
+}
+
+impl TranslatingKnife {
+    pub(super) fn model(cam_pivot: Point2, d: Vec2, e: f64) -> Model {
+        Model::TranslatingKnife(Self {
+            cam_pivot,
+            d,
+            p: perp(d),
+            e,
+        })
+    }
+}
+
+impl Kind for TranslatingKnife {
+    fn joint(&self) -> Joint {
+        Joint::Translating {
+            origin: self.cam_pivot + self.e * self.p,
+            direction: self.d,
+        }
+    }
+    fn curve(&self) -> super::FollowerCurve {
+        super::FollowerCurve::Point(PointCurve::new(Point2::origin()).expect("finite"))
+    }
+    #[inline]
+    fn score(&self, x: Point2) -> Option<(f64, f64)> {
+        let q = (x - self.cam_pivot).dot(&self.d);
+        Some((q, q))
+    }
+    #[inline]
+    fn residual_value<T: Num>(&self, x: V2<T>, _x1: V2<T>, q: T) -> [T; 2] {
+        let y = x - V2::c(self.cam_pivot.coords);
+        let (d, p) = (V2::c(self.d), V2::c(self.p));
+        [y.dot(p) - T::c(self.e), y.dot(d) - q] // y·p = e, y·d = q
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
+        [[e.d1.dot(&self.p), 0.0], [e.d1.dot(&self.d), -1.0]]
+    }
+    #[inline]
+    fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {
+        self.d
+    }
+    fn knife_line(&self) -> Option<(Vec2, Vec2, f64)> {
+        Some((self.d, self.p, self.e))
+    }
+    fn check_reach(&self, size: f64) -> Result<(), CamError> {
+        if self.e.abs() >= size {
+            return Err(CamError::Unreachable {
+                field: "follower.offset",
+                value: self.e,
+                reason: format!("the knife edge's line of travel misses the cam, which reaches {size} from its axis"),
+            });
+        }
+        Ok(())
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        None
+    }
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
+        if self.e.abs() >= base_radius {
+            return Err(CamError::Invalid {
+                field: "follower.offset",
+                value: self.e,
+                reason: "must be smaller than the base radius",
+            });
+        }
+        Ok((base_radius * base_radius - self.e * self.e).sqrt())
+    }
+    fn envelope(&self, s: &[f64; 5], _s0: f64, _u: f64, sigma: f64, rot: &Rot) -> Envelope {
+        // the tip's path y = A (e p + s d)
+        let y = rotated_derivs(sigma, rot, &translating_path(self.d, self.p, self.e, s));
+        Envelope::Derivs(Derivs {
+            p: Point2::from(y[0]),
+            d1: y[1],
+            d2: y[2],
+            d3: y[3],
+        })
+    }
+}

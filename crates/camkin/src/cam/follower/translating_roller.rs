@@ -1,0 +1,113 @@
+//! Translating roller: the roller centre at `e·perp(d) + s·d` from the cam axis; its curve is the
+//! circle of radius `r` about the frame origin.
+
+use super::{Joint, Kind, Model};
+use crate::body::WorldDerivs;
+use crate::cam::jet::{Num, V2};
+use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
+use crate::cam::CamError;
+use crate::curve::Circle;
+use crate::geometry::{perp, Point2, Rot, Vec2};
+
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TranslatingRoller {
+    pub(super) cam_pivot: Point2,
+    pub(super) d: Vec2,
+    pub(super) p: Vec2,
+    pub(super) e: f64,
+    pub(super) r: f64,
+}
+
+impl TranslatingRoller {
+    pub(super) fn model(cam_pivot: Point2, d: Vec2, e: f64, r: f64) -> Model {
+        Model::TranslatingRoller(Self {
+            cam_pivot,
+            d,
+            p: perp(d),
+            e,
+            r,
+        })
+    }
+}
+
+impl Kind for TranslatingRoller {
+    fn joint(&self) -> Joint {
+        Joint::Translating {
+            origin: self.cam_pivot + self.e * self.p,
+            direction: self.d,
+        }
+    }
+    fn curve(&self) -> super::FollowerCurve {
+        super::FollowerCurve::Circle(
+            Circle::new(Point2::origin(), self.r).expect("validated radius"),
+        )
+    }
+    #[inline]
+    fn score(&self, x: Point2) -> Option<(f64, f64)> {
+        let y = x - self.cam_pivot;
+        let l = y.dot(&self.p) - self.e;
+        let s2 = self.r * self.r - l * l;
+        if s2 < 0.0 {
+            None
+        } else {
+            let q = y.dot(&self.d) + s2.sqrt();
+            Some((q, q))
+        }
+    }
+    #[inline]
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        let y = x - V2::c(self.cam_pivot.coords);
+        let (d, p) = (V2::c(self.d), V2::c(self.p));
+        let m = y - (p.scale(T::c(self.e)) + d.scale(q));
+        [T::c(0.5) * (m.dot(m) - T::c(self.r * self.r)), x1.dot(m)]
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
+        let (d, p) = (self.d, self.p);
+        let y = e.p - self.cam_pivot;
+        let m = y - (self.e * p + q * d);
+        [
+            [e.d1.dot(&m), -d.dot(&m)],
+            [e.d2.dot(&m) + e.d1.norm_squared(), -e.d1.dot(&d)],
+        ]
+    }
+    #[inline]
+    fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
+        (self.cam_pivot + self.e * self.p + q * self.d) - c
+    }
+    fn check_reach(&self, size: f64) -> Result<(), CamError> {
+        let (e, r) = (self.e, self.r);
+        if e.abs() >= size + r {
+            return Err(CamError::Unreachable {
+                field: "follower.offset",
+                value: e,
+                reason: format!(
+                    "the roller (radius {r}) passes the cam, which reaches {size} from its axis"
+                ),
+            });
+        }
+        Ok(())
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        Some(-1.0 / self.r)
+    }
+    fn roller_radius(&self) -> Option<f64> {
+        Some(self.r)
+    }
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
+        let prime = base_radius + self.r;
+        if self.e.abs() >= prime {
+            return Err(CamError::Invalid {
+                field: "follower.offset",
+                value: self.e,
+                reason: "must be smaller than the prime circle's radius",
+            });
+        }
+        Ok((prime * prime - self.e * self.e).sqrt())
+    }
+    fn envelope(&self, s: &[f64; 5], _s0: f64, _u: f64, sigma: f64, rot: &Rot) -> Envelope {
+        // the roller centre's path c = A (e p + s d), offset by the radius towards the cam
+        let c = rotated_derivs(sigma, rot, &translating_path(self.d, self.p, self.e, s));
+        Envelope::Offset(c, self.r)
+    }
+}

@@ -1,0 +1,20 @@
+//! The library's integration tests, one module per scenario (one test binary builds much faster
+//! than one per file).
+#![allow(clippy::unwrap_used)]
+
+mod circle_followers;
+mod common;
+mod contact_general;
+mod dynamics_contact;
+mod dynamics_liftoff;
+mod dynamics_multibody;
+mod eccentric_circle;
+mod ellipse_flat;
+mod hyperdual_selfcheck;
+mod interpolation_study;
+mod jerk;
+mod paper_cam;
+mod properties;
+mod spline_finite_differences;
+mod sweep;
+mod synthesis_round_trip;
