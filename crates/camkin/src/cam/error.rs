@@ -1,0 +1,80 @@
+//! What can go wrong in building or analysing a mechanism.
+
+use crate::contact::ContactError;
+use crate::curve::CurveError;
+
+/// What went wrong in building or analysing a mechanism.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CamError {
+    /// A curve could not be built.
+    #[error(transparent)]
+    Curve(#[from] CurveError),
+    /// A parameter is out of range.
+    #[error("{field} = {value}: {reason}")]
+    Invalid {
+        /// the field, as in mechanism files
+        field: &'static str,
+        /// the value given
+        value: f64,
+        /// what it must be
+        reason: &'static str,
+    },
+    /// The cam profile is not a closed curve.
+    #[error("the cam profile must be a closed curve")]
+    OpenProfile,
+    /// The follower never touches the cam at this angle.
+    #[error("at cam angle {angle_deg}°: the follower does not touch the cam ({reason})")]
+    NoTouch {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// why
+        reason: &'static str,
+    },
+    /// The contact normal is perpendicular to the follower's motion: no velocity solves the
+    /// contact condition.
+    #[error(
+        "at cam angle {angle_deg}°: the follower is locked (pressure angle {pressure_angle_deg}°)"
+    )]
+    Locked {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// pressure angle, degrees
+        pressure_angle_deg: f64,
+    },
+    /// The first-touch Newton iteration did not converge.
+    #[error("at cam angle {angle_deg}°: the first-touch search did not converge ({reason})")]
+    NoConvergence {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// the stopping reason
+        reason: &'static str,
+    },
+    /// The follower can never touch the cam.
+    #[error("{field} = {value}: {reason}")]
+    Unreachable {
+        /// the field, as in mechanism files
+        field: &'static str,
+        /// its value
+        value: f64,
+        /// why, with the dimensions involved
+        reason: String,
+    },
+    /// The profile has a cusp: its tangent vanishes, so its normal and curvature are undefined.
+    #[error("the cam profile has a cusp (zero-length tangent) at u = {param}, ({x}, {y}) in the cam frame")]
+    Cusp {
+        /// the profile parameter
+        param: f64,
+        /// cam-frame x
+        x: f64,
+        /// cam-frame y
+        y: f64,
+    },
+    /// The contact kinematics could not be computed.
+    #[error("at cam angle {angle_deg}°: {source}")]
+    Contact {
+        /// cam angle, degrees
+        angle_deg: f64,
+        /// the contact error
+        source: ContactError,
+    },
+}

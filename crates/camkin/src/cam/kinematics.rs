@@ -1,0 +1,185 @@
+//! The contact method at a converged first touch: the follower's velocity from the velocity
+//! constraint, the sliding rates (paper eqs. 5, 6), the normal accelerations (eqs. 1, 2) and the
+//! follower's acceleration from the acceleration constraint (eq. 11).
+
+use super::state::pressure_angle;
+use super::{CamError, FollowerState, Found, Mechanism, Motion, Touch};
+use crate::body::{BodyState, Frame, WorldDerivs};
+use crate::contact::{ContactKinematics, Pairing};
+use crate::geometry::Vec2;
+
+/// The shared part of an analysis at a converged touch.
+struct Core {
+    body_a: crate::curve::Derivs,
+    ea: WorldDerivs,
+    nu: Vec2,
+    jb: Vec2,
+    qd: f64,
+    qdd: f64,
+    u_b: f64,
+    k: ContactKinematics,
+}
+
+impl Mechanism {
+    #[inline(always)]
+    pub(crate) fn motion_at(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        frame: &Frame,
+        touch: Touch,
+        found: Found,
+    ) -> Result<Motion, CamError> {
+        let c = self.core(theta, cam, frame, touch)?;
+        Ok(Motion {
+            cam_angle: theta,
+            position: touch.q,
+            velocity: c.qd,
+            acceleration: c.qdd,
+            cam_param: touch.u,
+            cam_param_rate: c.k.param_rate_a,
+            found,
+        })
+    }
+
+    /// Velocity, acceleration and contact data at a converged touch (paper eqs. 5, 6, 1, 2, 11).
+    /// The contact method at a converged touch: velocity from the velocity constraint, sliding
+    /// rates (eqs. 5, 6) and acceleration from the acceleration constraint (eq. 11).
+    #[inline]
+    fn core(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        frame: &Frame,
+        touch: Touch,
+    ) -> Result<Core, CamError> {
+        let g = &self.geometry;
+        let profile = self.cam.profile.as_ref();
+        let angle_deg = theta.to_degrees();
+        let body_a = profile.eval(touch.u);
+        let ea = frame.to_world(&body_a);
+        let c = ea.p;
+        let nu = ea.as_derivs().normal();
+        let jb = g.joint.velocity_jacobian(c);
+        // velocity constraint Φ_q q̇ = 0: ν·v_A^P = q̇ ν·J_B
+        let den = nu.dot(&jb);
+        if !(den.abs() > self.options.lock_tolerance * jb.norm()) {
+            return Err(CamError::Locked {
+                angle_deg,
+                pressure_angle_deg: pressure_angle(jb, nu).to_degrees(),
+            });
+        }
+        let qd = nu.dot(&cam.velocity_at(c)) / den;
+        let body_b = g.joint.body(touch.q, qd, 0.0);
+        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c);
+        let pairing = Pairing {
+            u_a: touch.u,
+            u_b,
+            point_a: c,
+            point_b: eb.p,
+            normal: nu,
+            gap: nu.dot(&(c - eb.p)),
+            iterations: 0,
+        };
+        let k = ContactKinematics::from_geometry(
+            cam,
+            &ea,
+            &body_b,
+            &eb,
+            g.is_knife(),
+            &pairing,
+            self.options.conformal_tolerance,
+        )
+        .map_err(|source| CamError::Contact { angle_deg, source })?;
+        // acceleration constraint Φ_q q̈ = γ (eq. 11), cam accelerations known
+        let phi = &k.phi_q;
+        let known = phi[2] * cam.alpha;
+        let coef = g.joint.coordinate_coefficient(phi);
+        let qdd = (k.gamma - known) / coef;
+        Ok(Core {
+            body_a,
+            ea,
+            nu,
+            jb,
+            qd,
+            qdd,
+            u_b,
+            k,
+        })
+    }
+
+    pub(crate) fn kinematics(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        frame: &Frame,
+        touch: Touch,
+        found: Found,
+    ) -> Result<FollowerState, CamError> {
+        let Core {
+            body_a,
+            ea,
+            nu,
+            jb,
+            qd,
+            qdd,
+            u_b,
+            k,
+        } = self.core(theta, cam, frame, touch)?;
+        let g = &self.geometry;
+        let c = ea.p;
+        let body_b = g.joint.body(touch.q, qd, qdd);
+        let kappa_conv = self.orientation * k.kappa_a;
+        let at_breakpoint = self.at_breakpoint(touch.u);
+        let jerk = if at_breakpoint || !self.options.jerk {
+            None
+        } else {
+            let dq = self.jet_derivatives(theta, cam, touch)?;
+            let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
+            Some(w * w * w * dq[2] + 3.0 * w * al * dq[1])
+        };
+        Ok(FollowerState {
+            cam_angle: theta,
+            position: touch.q,
+            velocity: qd,
+            acceleration: qdd,
+            jerk,
+            contact_world: c,
+            contact_cam: body_a.p,
+            cam_param: touch.u,
+            cam_param_rate: k.param_rate_a,
+            follower_param: u_b,
+            sliding_rate_cam: k.sliding_rate_a,
+            sliding_rate_follower: k.sliding_rate_b,
+            normal_acceleration_cam: k.normal_acceleration_a(cam),
+            normal_acceleration_follower: k.normal_acceleration_b(&body_b),
+            normal: nu,
+            sigma: k.sigma,
+            follower_motion: jb,
+            radius_of_curvature: 1.0 / kappa_conv,
+            at_breakpoint,
+            found,
+        })
+    }
+
+    /// True when `u` is within the breakpoint tolerance of a node of the profile.
+    fn at_breakpoint(&self, u: f64) -> bool {
+        let bp = &self.breakpoints;
+        if bp.is_empty() {
+            return false;
+        }
+        let tol = self.options.breakpoint_tolerance * self.period;
+        let i = bp.partition_point(|&b| b <= u);
+        let below = if i == 0 {
+            bp[bp.len() - 1] - self.period
+        } else {
+            bp[i - 1]
+        };
+        let above = if i < bp.len() {
+            bp[i]
+        } else {
+            bp[0] + self.period
+        };
+        u - below < tol || above - u < tol
+    }
+}

@@ -1,0 +1,195 @@
+//! Building a mechanism (validation, the profile summary, the bracketing samples) and its public
+//! queries.
+
+use super::follower::{Geometry, Kind as _};
+use super::summary::ProfileSummary;
+use super::{
+    bracket_samples, AnalysisOptions, Cam, CamError, Follower, FollowerCurve, FollowerState, Found,
+    Joint, Mechanism, Motion, Sweep,
+};
+use crate::curve::{Curve, Domain};
+use std::sync::Arc;
+
+impl Mechanism {
+    /// Validates and prepares a mechanism.
+    pub fn new(cam: Cam, follower: Follower) -> Result<Self, CamError> {
+        let geometry = Geometry::new(follower, cam.pivot)?;
+        let profile = cam.profile.as_ref();
+        let period = match profile.domain() {
+            Domain::Periodic { period } => period,
+            _ => return Err(CamError::OpenProfile),
+        };
+        let breakpoints = profile.breakpoints();
+        let samples = bracket_samples(&breakpoints, period, 16, 256);
+        let ProfileSummary {
+            size,
+            orientation,
+            convex,
+        } = ProfileSummary::of(profile, &breakpoints, period)?;
+        geometry.model.check_reach(size)?;
+        let options = AnalysisOptions::for_size(size);
+        let mut m = Self {
+            cam,
+            geometry,
+            options,
+            coarse: samples.clone(),
+            samples,
+            period,
+            size,
+            orientation,
+            convex,
+            breakpoints,
+        };
+        m.set_options(options);
+        Ok(m)
+    }
+
+    /// Replaces the analysis options.
+    pub fn set_options(&mut self, options: AnalysisOptions) {
+        self.samples = bracket_samples(
+            &self.breakpoints,
+            self.period,
+            options.samples_per_piece.max(2),
+            options.samples_per_curve.max(8),
+        );
+        self.coarse = bracket_samples(
+            &self.breakpoints,
+            self.period,
+            options.convex_samples_per_piece.max(2),
+            options.convex_samples_per_curve.max(8),
+        );
+        self.options = options;
+    }
+
+    /// The analysis options in force.
+    pub fn options(&self) -> &AnalysisOptions {
+        &self.options
+    }
+
+    /// The cam.
+    pub fn cam(&self) -> &Cam {
+        &self.cam
+    }
+
+    /// The follower.
+    pub fn follower(&self) -> &Follower {
+        &self.geometry.follower
+    }
+
+    /// The joint that carries the follower.
+    pub fn follower_joint(&self) -> Joint {
+        self.geometry.joint
+    }
+
+    /// The follower's contact curve in its own frame (see [`Mechanism::follower_body`]).
+    pub fn follower_curve(&self) -> FollowerCurve {
+        self.geometry.curve
+    }
+
+    /// The radius of a roller follower.
+    pub fn roller_radius(&self) -> Option<f64> {
+        self.geometry.model.roller_radius()
+    }
+
+    /// Largest distance of a profile point from the cam axis (the length scale of tolerances).
+    pub fn size(&self) -> f64 {
+        self.size
+    }
+
+    /// True when the profile's curvature has one sign all round (sampled densely).
+    pub fn is_convex(&self) -> bool {
+        self.convex
+    }
+
+    /// Parameter ranges `(from, to)` of the profile that the follower cannot follow: concave
+    /// stretches under a flat face, stretches concave more sharply than the roller (radius of
+    /// curvature below the roller radius). The follower bridges them: the contact jumps across
+    /// and the acceleration is impulsive there. Found on a dense sampling of the profile; empty
+    /// for a knife edge and for convex profiles.
+    pub fn unfollowable_stretches(&self) -> Vec<(f64, f64)> {
+        let Some(limit) = self.geometry.model.concave_limit() else {
+            return Vec::new();
+        };
+        let profile = self.cam.profile.as_ref();
+        let u = bracket_samples(&self.breakpoints, self.period, 64, 2048);
+        let bad: Vec<bool> = u
+            .iter()
+            .map(|&v| self.orientation * profile.curvature(v) < limit)
+            .collect();
+        let mut out = Vec::new();
+        let n = u.len();
+        let Some(start) = (0..n).find(|&k| !bad[k]) else {
+            return vec![(0.0, self.period)];
+        };
+        let mut k = start;
+        for _ in 0..n {
+            let j = (k + 1) % n;
+            if !bad[k] && bad[j] {
+                let mut e = j;
+                while bad[(e + 1) % n] {
+                    e = (e + 1) % n;
+                }
+                out.push((u[j], u[e]));
+            }
+            k = j;
+        }
+        out
+    }
+
+    /// The follower's body frame at position `q` (translating: origin at `pivot + e·perp(d) +
+    /// q·d`, angle 0; oscillating: origin at the arm pivot, angle `q`) and its contact curve in that
+    /// frame (face: a line, roller: a circle, knife: a point; oriented material-on-the-left).
+    pub fn follower_body(&self, q: f64) -> (crate::body::Pose, Arc<dyn Curve>) {
+        (self.geometry.joint.pose(q), self.geometry.curve.to_arc())
+    }
+
+    /// The shared profile.
+    pub fn profile_arc(&self) -> Arc<dyn Curve> {
+        self.cam.profile.clone()
+    }
+
+    /// +1 when the profile runs counter-clockwise, −1 when clockwise.
+    pub fn orientation(&self) -> f64 {
+        self.orientation
+    }
+
+    /// The follower's motion at cam angle `theta` (rad) with the cam's own speed and
+    /// angular acceleration. The contact is found by a global search.
+    pub fn analyze(&self, theta: f64) -> Result<FollowerState, CamError> {
+        let cam = self.cam.state(theta);
+        let frame = cam.frame();
+        let touch = self.global_touch(theta, &frame)?;
+        self.kinematics(theta, &cam, &frame, touch, Found::Global)
+    }
+
+    /// The follower's position, velocity and acceleration only at cam angle `theta` (rad): the
+    /// same contact method as [`Mechanism::analyze`] without the other outputs.
+    pub fn motion(&self, theta: f64) -> Result<Motion, CamError> {
+        let cam = self.cam.state(theta);
+        let frame = cam.frame();
+        let touch = self.global_touch(theta, &frame)?;
+        self.motion_at(theta, &cam, &frame, touch, Found::Global)
+    }
+
+    /// As [`Mechanism::analyze`] with the angle in degrees.
+    pub fn analyze_deg(&self, theta_deg: f64) -> Result<FollowerState, CamError> {
+        self.analyze(theta_deg.to_radians())
+    }
+
+    /// The follower's position only, at cam angle `theta` (rad), by first touch.
+    pub fn position(&self, theta: f64) -> Result<f64, CamError> {
+        let frame = self.cam.state(theta).frame();
+        Ok(self.global_touch(theta, &frame)?.q)
+    }
+
+    /// A sweep that warm-starts each angle from the previous contact.
+    pub fn sweep(&self) -> Sweep<'_> {
+        Sweep::new(self)
+    }
+
+    /// Analyses every angle of `thetas` (rad) in order with a warm-started [`Sweep`].
+    pub fn analyze_all(&self, thetas: &[f64]) -> Vec<Result<FollowerState, CamError>> {
+        let mut s = self.sweep();
+        thetas.iter().map(|&t| s.step(t)).collect()
+    }
+}

@@ -1,0 +1,101 @@
+//! The analysis state: what the contact method reports at one cam angle.
+
+use super::Found;
+use crate::contact::NormalAcceleration;
+use crate::geometry::{cross, Point2, Vec2};
+
+/// The follower's motion and the contact at one cam angle.
+///
+/// Position, velocity, acceleration and jerk are of the follower's coordinate: translating
+/// followers in length, length/s, length/s², length/s³ (measured from the cam axis along `d`);
+/// oscillating followers in rad, rad/s, rad/s², rad/s³ (absolute arm angle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FollowerState {
+    /// cam angle `θ`, rad
+    pub cam_angle: f64,
+    /// position `q`
+    pub position: f64,
+    /// velocity `q̇`
+    pub velocity: f64,
+    /// acceleration `q̈` by the contact method (eq. 11)
+    pub acceleration: f64,
+    /// jerk `d³q/dt³ = θ̇³ q‴ + 3 θ̇ θ̈ q″` (derivatives in θ by implicit differentiation, see
+    /// [`Mechanism::angle_derivatives`](super::Mechanism::angle_derivatives)); `None` when the contact sits on a node of a spline
+    /// profile, where the curvature has a corner and the jerk jumps, or when
+    /// [`AnalysisOptions::jerk`](super::AnalysisOptions::jerk) is off
+    pub jerk: Option<f64>,
+    /// contact point, world frame
+    pub contact_world: Point2,
+    /// contact point, cam frame
+    pub contact_cam: Point2,
+    /// the cam-profile parameter at the contact, in `[0, period)`
+    pub cam_param: f64,
+    /// `u̇_A = ṡ_A/g_A`: rate of the cam parameter at the contact, relative to the cam, 1/s
+    /// (eq. 7)
+    pub cam_param_rate: f64,
+    /// the follower-curve parameter at the contact (line: arc length; roller: angle in the
+    /// follower frame; knife: 0)
+    pub follower_param: f64,
+    /// `ṡ_A`: sliding rate of the contact point along the cam profile, relative to the cam,
+    /// length/s (eq. 5)
+    pub sliding_rate_cam: f64,
+    /// `ṡ_B`: sliding rate along the follower's curve, relative to the follower, length/s (eq. 6)
+    pub sliding_rate_follower: f64,
+    /// normal acceleration of the contact point seen from the cam (eq. 1), along `normal`
+    pub normal_acceleration_cam: NormalAcceleration,
+    /// normal acceleration seen from the follower (eq. 2), along `normal`
+    pub normal_acceleration_follower: NormalAcceleration,
+    /// the common normal `ν_A` (cam profile's left normal), world frame
+    pub normal: Vec2,
+    /// `σ`
+    pub sigma: f64,
+    /// direction of motion of the follower's material point under the contact per unit rate of
+    /// its coordinate (`∂v_B^P/∂q̇`: `d` for translating followers, `k × (c − O)` for
+    /// oscillating ones), world frame; see [`FollowerState::pressure_angle`]
+    pub follower_motion: Vec2,
+    /// radius of curvature of the cam profile at the contact, positive where convex (∞ on a
+    /// straight stretch), length
+    pub radius_of_curvature: f64,
+    /// the contact sits on a node of the profile (its curvature has a corner there: the jerk
+    /// jumps)
+    pub at_breakpoint: bool,
+    /// how the contact was found
+    pub found: Found,
+}
+
+/// The follower's motion at one cam angle: position, velocity and acceleration by the contact
+/// method with nothing else computed (the fast path for sweeps and dynamics). Units as in
+/// [`FollowerState`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Motion {
+    /// cam angle `θ`, rad
+    pub cam_angle: f64,
+    /// position `q`
+    pub position: f64,
+    /// velocity `q̇`
+    pub velocity: f64,
+    /// acceleration `q̈` (eq. 11)
+    pub acceleration: f64,
+    /// the cam-profile parameter at the contact
+    pub cam_param: f64,
+    /// its rate `u̇_A` relative to the cam, 1/s
+    pub cam_param_rate: f64,
+    /// how the contact was found
+    pub found: Found,
+}
+
+/// The angle from the direction of motion `jb` of the follower's point to the contact normal
+/// `nu` oriented towards the follower, rad, counter-clockwise positive.
+pub(super) fn pressure_angle(jb: Vec2, nu: Vec2) -> f64 {
+    let npush = if nu.dot(&jb) >= 0.0 { nu } else { -nu };
+    cross(jb, npush).atan2(jb.dot(&npush))
+}
+
+impl FollowerState {
+    /// Pressure angle: from the direction of motion of the follower's point at the contact
+    /// ([`FollowerState::follower_motion`]) to the contact normal oriented towards the follower,
+    /// rad, counter-clockwise positive.
+    pub fn pressure_angle(&self) -> f64 {
+        pressure_angle(self.follower_motion, self.normal)
+    }
+}

@@ -1,0 +1,81 @@
+//! The profile summary that [`Mechanism::new`](super::Mechanism::new) computes once: size,
+//! orientation, convexity and cusps, in one streaming pass over a dense sampling (nothing stored,
+//! so a 100 000-node profile needs no more memory than a small one).
+
+use super::{bracket_params, CamError};
+use crate::curve::Curve;
+use crate::geometry::{cross, Point2};
+
+/// What the analysis needs to know of a closed profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ProfileSummary {
+    /// largest distance of a profile point from the cam axis
+    pub(crate) size: f64,
+    /// +1 counter-clockwise, −1 clockwise (shoelace)
+    pub(crate) orientation: f64,
+    /// the curvature has one sign all round
+    pub(crate) convex: bool,
+}
+
+impl ProfileSummary {
+    /// Summarises `profile` (period `period`, smooth pieces between `breakpoints`); refuses a
+    /// profile of no or infinite size and one with a cusp (a vanishing tangent).
+    pub(crate) fn of(
+        profile: &dyn Curve,
+        breakpoints: &[f64],
+        period: f64,
+    ) -> Result<Self, CamError> {
+        let (mut size, mut area2, mut kmin, mut kmax, mut gsum, mut count) =
+            (0.0f64, 0.0, f64::INFINITY, f64::NEG_INFINITY, 0.0, 0usize);
+        let mut gmin = (f64::INFINITY, 0.0, Point2::origin());
+        let (mut first, mut prev): (Option<Point2>, Option<Point2>) = (None, None);
+        for u in bracket_params(breakpoints, period, 64, 1024) {
+            let e = profile.eval(u);
+            size = size.max(e.p.coords.norm());
+            match prev {
+                Some(p) => area2 += cross(p.coords, e.p.coords),
+                None => first = Some(e.p),
+            }
+            prev = Some(e.p);
+            let g = e.d1.norm();
+            if !(g >= gmin.0) {
+                gmin = (g, u, e.p);
+            }
+            gsum += g;
+            count += 1;
+            let k = e.curvature();
+            kmin = kmin.min(k);
+            kmax = kmax.max(k);
+        }
+        if !(size.is_finite() && size > 0.0) {
+            return Err(CamError::Invalid {
+                field: "cam.profile",
+                value: size,
+                reason: "profile must have a finite, non-zero size",
+            });
+        }
+        if let (Some(f), Some(l)) = (first, prev) {
+            area2 += cross(l.coords, f.coords);
+        }
+        let orientation = if area2 >= 0.0 { 1.0 } else { -1.0 };
+        // a cusp: the tangent vanishes (relative to its mean length)
+        let mean_g = gsum / count.max(1) as f64;
+        if !(gmin.0 > 1e-9 * mean_g) {
+            return Err(CamError::Cusp {
+                param: gmin.1,
+                x: gmin.2.x,
+                y: gmin.2.y,
+            });
+        }
+        let convex = if orientation > 0.0 {
+            kmin > 0.0
+        } else {
+            kmax < 0.0
+        };
+        Ok(Self {
+            size,
+            orientation,
+            convex,
+        })
+    }
+}
