@@ -9,12 +9,12 @@
 //! bouncing has died down.
 
 use super::model::{body_state, Constraint, ForceElement, RigidBody, System};
+use super::projection::DenseRows;
 use super::solver::AugmentedLagrangian;
 use super::DynamicsError;
 use crate::cam::{Joint, Mechanism};
 use crate::contact::{refine, Pairing, SearchOptions, Surface};
 use crate::geometry::Vec2;
-use nalgebra::{DMatrix, DVector};
 
 /// Dynamic properties of the follower (SI units, lengths in the mechanism's unit converted by the
 /// caller).
@@ -111,13 +111,6 @@ const DRIVER_ROW: usize = 2;
 /// the impact is taken as plastic and the contact re-engaged (a sequence of bounces with
 /// restitution below 1 would otherwise never end).
 pub const REBOUND_TOLERANCE: f64 = 1e-3;
-
-/// The active constraints as dense rows, with `Φ` and each row's target velocity.
-struct DenseRows {
-    rows: Vec<Vec<f64>>,
-    phi: Vec<f64>,
-    target: Vec<f64>,
-}
 
 impl Simulation {
     /// Builds the multibody model of `mech` with the follower's `params`, starting at cam angle
@@ -559,8 +552,7 @@ impl Simulation {
         Ok(())
     }
 
-    /// The active constraints at `(q, q̇)` as dense rows, with `Φ` and the velocity each row's
-    /// `Φ_q q̇` must have (`−Φ_t`: the driver's speed, else 0).
+    /// The active constraints at `(q, q̇)` as dense rows (see [`System::dense_rows`]).
     fn dense_rows(
         &self,
         q: &[f64],
@@ -568,70 +560,24 @@ impl Simulation {
         contact: bool,
         pairings: &mut [Option<Pairing>],
     ) -> Result<DenseRows, DynamicsError> {
-        let n = q.len();
-        let (mut rows, mut phi, mut target) = (Vec::new(), Vec::new(), Vec::new());
-        for (k, c) in self.sys.constraints.iter().enumerate() {
-            if k == CONTACT && !contact {
-                continue;
-            }
-            let r = self
-                .sys
-                .rows(c, self.t, q, qd, &mut pairings[k])
-                .map_err(|source| DynamicsError::Contact {
-                    time: self.t,
-                    source,
-                })?;
-            for row in r {
-                let mut j = vec![0.0; n];
-                for (col, v) in &row.jac {
-                    j[*col] += v;
-                }
-                rows.push(j);
-                phi.push(row.phi);
-                target.push(match c {
-                    Constraint::AngleDriver {
-                        speed,
-                        acceleration,
-                        ..
-                    } => speed + acceleration * self.t,
-                    _ => 0.0,
-                });
-            }
-        }
-        Ok(DenseRows { rows, phi, target })
+        self.sys
+            .dense_rows(self.t, q, qd, &self.active(contact), pairings)
+            .map_err(|source| DynamicsError::Contact {
+                time: self.t,
+                source,
+            })
     }
 
-    /// Solves `[M Jᵀ; J 0] [x; μ] = [M x0; b]`: the mass-orthogonal projection of `x0` onto
-    /// `J x = b`.
+    /// The mass-orthogonal projection of `x0` onto `J x = b` (see [`System::project_onto`]).
     fn project_onto(
         &self,
         rows: &[Vec<f64>],
         x0: &[f64],
         b: &[f64],
     ) -> Result<Vec<f64>, DynamicsError> {
-        let n = x0.len();
-        let m = rows.len();
-        let mut kkt = DMatrix::zeros(n + m, n + m);
-        let mut rhs = DVector::zeros(n + m);
-        for (i, body) in self.sys.bodies.iter().enumerate() {
-            let d = [body.mass, body.mass, body.inertia];
-            for k in 0..3 {
-                kkt[(3 * i + k, 3 * i + k)] = d[k];
-                rhs[3 * i + k] = d[k] * x0[3 * i + k];
-            }
-        }
-        for (r, j) in rows.iter().enumerate() {
-            for c in 0..n {
-                kkt[(n + r, c)] = j[c];
-                kkt[(c, n + r)] = j[c];
-            }
-            rhs[n + r] = b[r];
-        }
-        let sol = kkt
-            .lu()
-            .solve(&rhs)
-            .ok_or(DynamicsError::Singular { time: self.t })?;
-        Ok(sol.rows(0, n).iter().copied().collect())
+        self.sys
+            .project_onto(rows, x0, b)
+            .ok_or(DynamicsError::Singular { time: self.t })
     }
 
     /// Mass-orthogonal projection of the state onto the constraints (Bayo and Ledesma 1996):

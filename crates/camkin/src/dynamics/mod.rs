@@ -29,6 +29,7 @@
 
 mod cam;
 mod model;
+mod projection;
 mod solver;
 
 pub use cam::{Event, EventKind, FollowerDynamics, Sample, Simulation};
