@@ -74,7 +74,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     }
     let mech = load_mechanism(Some(&args.mechanism))?;
     let profile = mech.cam().profile();
-    let Some(synth) = crate::mechfile::synthesized(&mech) else {
+    let Some(synth) = mech.cam().synthesis() else {
         return Err(Failure::Input(anyhow!(
             "{}: the profile is not kind = \"motion\"; synth needs a motion program",
             args.mechanism.display()

@@ -21,11 +21,7 @@ impl Interpolated {
     /// interpolates it. `N ≥ 3`.
     pub fn new(mech: &Mechanism, nodes: usize) -> Result<Self, CamError> {
         if nodes < 3 {
-            return Err(CamError::Invalid {
-                field: "nodes",
-                value: nodes as f64,
-                reason: "at least 3 nodal points",
-            });
+            return Err(CamError::TooFewNodes { nodes });
         }
         let positions = (0..nodes)
             .map(|k| mech.position(TAU * k as f64 / nodes as f64))

@@ -70,11 +70,13 @@ pub mod cam;
 pub mod contact;
 pub mod curve;
 pub mod dynamics;
+pub mod field;
 pub mod geometry;
 pub mod interp;
 pub mod motion;
 pub(crate) mod periodic;
 pub mod reference;
+pub mod spec;
 
 pub use body::{BodyState, Frame, Pose};
 pub use geometry::{Point2, Vec2};

@@ -2,6 +2,7 @@
 
 use crate::contact::ContactError;
 use crate::curve::CurveError;
+use crate::field::Field;
 
 /// What went wrong in building or analysing a mechanism.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -12,12 +13,30 @@ pub enum CamError {
     /// A parameter is out of range.
     #[error("{field} = {value}: {reason}")]
     Invalid {
-        /// the field, as in mechanism files
-        field: &'static str,
+        /// the field
+        field: Field,
         /// the value given
         value: f64,
         /// what it must be
         reason: &'static str,
+    },
+    /// A point or a vector is out of range.
+    #[error("{field} = [{x}, {y}]: {reason}")]
+    InvalidVector {
+        /// the field
+        field: Field,
+        /// its x
+        x: f64,
+        /// its y
+        y: f64,
+        /// what it must be
+        reason: &'static str,
+    },
+    /// Too few nodal points for the interpolation method.
+    #[error("the interpolation needs at least 3 nodal points, got {nodes}")]
+    TooFewNodes {
+        /// the number given
+        nodes: usize,
     },
     /// The cam profile is not a closed curve.
     #[error("the cam profile must be a closed curve")]
@@ -52,8 +71,8 @@ pub enum CamError {
     /// The follower can never touch the cam.
     #[error("{field} = {value}: {reason}")]
     Unreachable {
-        /// the field, as in mechanism files
-        field: &'static str,
+        /// the field
+        field: Field,
         /// its value
         value: f64,
         /// why, with the dimensions involved

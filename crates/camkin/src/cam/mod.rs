@@ -39,6 +39,7 @@ pub(crate) use search::{bracket_params, bracket_samples, Touch};
 
 use crate::body::BodyState;
 use crate::curve::{Curve, Domain};
+use crate::field::{CamField, Field};
 use crate::geometry::Point2;
 use follower::Geometry;
 use std::sync::Arc;
@@ -51,6 +52,8 @@ pub struct Cam {
     direction: Sense,
     speed: f64,
     angular_acceleration: f64,
+    /// the motion program the profile was synthesised from, when it was
+    synthesis: Option<Arc<synthesis::SynthesizedProfile>>,
 }
 
 impl Cam {
@@ -65,19 +68,16 @@ impl Cam {
             return Err(CamError::OpenProfile);
         }
         if !(pivot.x.is_finite() && pivot.y.is_finite()) {
-            return Err(CamError::Invalid {
-                field: "cam.pivot",
-                value: if pivot.x.is_finite() {
-                    pivot.y
-                } else {
-                    pivot.x
-                },
+            return Err(CamError::InvalidVector {
+                field: Field::Cam(CamField::Pivot),
+                x: pivot.x,
+                y: pivot.y,
                 reason: "must be finite",
             });
         }
         if !(speed.is_finite() && speed > 0.0) {
             return Err(CamError::Invalid {
-                field: "cam.speed",
+                field: Field::Cam(CamField::Speed),
                 value: speed,
                 reason: "must be positive and finite",
             });
@@ -88,6 +88,7 @@ impl Cam {
             direction,
             speed,
             angular_acceleration: 0.0,
+            synthesis: None,
         })
     }
 
@@ -100,7 +101,7 @@ impl Cam {
     ) -> Result<Self, CamError> {
         if !(rpm.is_finite() && rpm > 0.0) {
             return Err(CamError::Invalid {
-                field: "cam.speed_rpm",
+                field: Field::Cam(CamField::SpeedRpm),
                 value: rpm,
                 reason: "must be positive and finite",
             });
@@ -118,13 +119,24 @@ impl Cam {
     pub fn with_angular_acceleration(mut self, alpha: f64) -> Result<Self, CamError> {
         if !alpha.is_finite() {
             return Err(CamError::Invalid {
-                field: "cam.angular_acceleration",
+                field: Field::Cam(CamField::AngularAcceleration),
                 value: alpha,
                 reason: "must be finite",
             });
         }
         self.angular_acceleration = alpha;
         Ok(self)
+    }
+
+    /// The profile as synthesised from a motion program, when the cam was built from one (by
+    /// [`crate::spec::MechanismSpec::build`]).
+    pub fn synthesis(&self) -> Option<&synthesis::SynthesizedProfile> {
+        self.synthesis.as_deref()
+    }
+
+    /// Records that the profile is `s` (which the cam already holds as its curve).
+    pub(crate) fn set_synthesis(&mut self, s: Arc<synthesis::SynthesizedProfile>) {
+        self.synthesis = Some(s);
     }
 
     /// The profile.

@@ -4,6 +4,7 @@
 
 use super::{bracket_params, CamError};
 use crate::curve::Curve;
+use crate::field::{Field, ProfileField};
 use crate::geometry::{cross, Point2};
 
 /// What the analysis needs to know of a closed profile.
@@ -49,7 +50,7 @@ impl ProfileSummary {
         }
         if !(size.is_finite() && size > 0.0) {
             return Err(CamError::Invalid {
-                field: "cam.profile",
+                field: Field::Profile(ProfileField::Table),
                 value: size,
                 reason: "profile must have a finite, non-zero size",
             });

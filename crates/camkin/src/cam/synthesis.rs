@@ -28,6 +28,7 @@ use super::follower::{Kind, Model};
 use super::jet::{scale, Jet};
 use super::{CamError, Follower, Sense};
 use crate::curve::{Curve, Derivs, Domain};
+use crate::field::{Field, ProfileField};
 use crate::geometry::{perp, Point2, Rot, Vec2};
 use crate::motion::Program;
 
@@ -61,7 +62,7 @@ pub fn synthesize(
 ) -> Result<SynthesizedProfile, CamError> {
     if !(base_radius.is_finite() && base_radius > 0.0) {
         return Err(CamError::Invalid {
-            field: "cam.profile.base_radius",
+            field: Field::Profile(ProfileField::BaseRadius),
             value: base_radius,
             reason: "must be positive and finite",
         });

@@ -6,6 +6,8 @@ use crate::periodic::{eval_local, fit, Knots};
 
 /// Where the nodes sit in the parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
 pub enum Parameterization {
     /// Node i at `u = i`; `u ∈ [0, n)`. The paper's choice and the default.
     #[default]

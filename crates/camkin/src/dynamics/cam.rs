@@ -14,6 +14,7 @@ use super::solver::AugmentedLagrangian;
 use super::DynamicsError;
 use crate::cam::{Joint, Mechanism};
 use crate::contact::{refine, Pairing, SearchOptions, Surface};
+use crate::field::{DynamicsField, Field};
 use crate::geometry::Vec2;
 
 /// Dynamic properties of the follower (SI units, lengths in the mechanism's unit converted by the
@@ -130,7 +131,7 @@ impl Simulation {
         al: AugmentedLagrangian,
         theta0: f64,
     ) -> Result<Self, DynamicsError> {
-        let positive = |field: &'static str, v: f64| {
+        let positive = |field: Field, v: f64| {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
@@ -143,13 +144,13 @@ impl Simulation {
         };
         let oscillating = mech.follower_joint().is_rotating();
         if oscillating {
-            positive("dynamics.inertia", params.inertia)?;
+            positive(Field::Dynamics(DynamicsField::Inertia), params.inertia)?;
         } else {
-            positive("dynamics.mass", params.mass)?;
+            positive(Field::Dynamics(DynamicsField::Mass), params.mass)?;
         }
         if !(0.0..=1.0).contains(&params.restitution) {
             return Err(DynamicsError::Invalid {
-                field: "dynamics.restitution",
+                field: Field::Dynamics(DynamicsField::Restitution),
                 value: params.restitution,
                 reason: "must be from 0 to 1",
             });

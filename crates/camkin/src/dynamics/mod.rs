@@ -74,7 +74,7 @@ pub enum DynamicsError {
     #[error("{field} = {value}: {reason}")]
     Invalid {
         /// the parameter
-        field: &'static str,
+        field: crate::field::Field,
         /// its value
         value: f64,
         /// what it must be

@@ -28,7 +28,8 @@ use super::jet::{Num, V2};
 use super::synthesis::Envelope;
 use super::CamError;
 use crate::body::{Frame, WorldDerivs};
-use crate::curve::{unit_direction, Circle, Line, PointCurve};
+use crate::curve::{Circle, Line, PointCurve};
+use crate::field::{Field, FollowerField};
 use crate::geometry::{perp, wrap_angle_near, Point2, Rot, Vec2};
 use oscillating_flat::OscillatingFlat;
 use oscillating_roller::OscillatingRoller;
@@ -38,6 +39,8 @@ use translating_roller::TranslatingRoller;
 
 /// Rotation sense: of the cam's motion, or of the spring that closes an oscillating follower.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 pub enum Sense {
     /// counter-clockwise
     #[default]
@@ -112,7 +115,19 @@ impl Follower {
     /// non-zero (normalised), lengths finite, radii and arm lengths positive. The one place
     /// that lists the kinds.
     pub(crate) fn model(&self, cam_pivot: Point2) -> Result<Model, CamError> {
-        let unit = |d: Vec2| unit_direction("follower.direction", d).map_err(CamError::from);
+        let unit = |d: Vec2| {
+            let n = d.norm();
+            if n.is_finite() && n > 0.0 {
+                Ok(d / n)
+            } else {
+                Err(CamError::InvalidVector {
+                    field: Field::Follower(FollowerField::Direction),
+                    x: d.x,
+                    y: d.y,
+                    reason: "must be a non-zero direction",
+                })
+            }
+        };
         Ok(match *self {
             Follower::TranslatingFlat { direction } => {
                 TranslatingFlat::model(cam_pivot, unit(direction)?)
@@ -126,13 +141,17 @@ impl Follower {
                 TranslatingRoller::model(
                     cam_pivot,
                     d,
-                    finite("follower.offset", offset)?,
-                    positive("follower.roller_radius", roller_radius)?,
+                    finite(Field::Follower(FollowerField::Offset), offset)?,
+                    positive(Field::Follower(FollowerField::RollerRadius), roller_radius)?,
                 )
             }
             Follower::TranslatingKnife { direction, offset } => {
                 let d = unit(direction)?;
-                TranslatingKnife::model(cam_pivot, d, finite("follower.offset", offset)?)
+                TranslatingKnife::model(
+                    cam_pivot,
+                    d,
+                    finite(Field::Follower(FollowerField::Offset), offset)?,
+                )
             }
             Follower::OscillatingFlat {
                 pivot,
@@ -140,10 +159,10 @@ impl Follower {
                 closing,
                 initial_angle,
             } => OscillatingFlat::model(
-                point("follower.pivot", pivot)?,
-                finite("follower.offset", face_offset)?,
+                point(Field::Follower(FollowerField::Pivot), pivot)?,
+                finite(Field::Follower(FollowerField::Offset), face_offset)?,
                 closing,
-                finite("follower.initial_angle_deg", initial_angle)?,
+                finite(Field::Follower(FollowerField::InitialAngle), initial_angle)?,
             ),
             Follower::OscillatingRoller {
                 pivot,
@@ -152,18 +171,27 @@ impl Follower {
                 closing,
                 initial_angle,
             } => {
-                let o = point("follower.pivot", pivot)?;
+                let o = point(Field::Follower(FollowerField::Pivot), pivot)?;
                 OscillatingRoller::model(
                     cam_pivot,
                     o,
-                    positive("follower.arm_length", arm_length)?,
-                    positive("follower.roller_radius", roller_radius)?,
+                    positive(Field::Follower(FollowerField::ArmLength), arm_length)?,
+                    positive(Field::Follower(FollowerField::RollerRadius), roller_radius)?,
                     closing,
-                    finite("follower.initial_angle_deg", initial_angle)?,
+                    finite(Field::Follower(FollowerField::InitialAngle), initial_angle)?,
                 )
             }
         })
     }
+
+    /// The kinds' names, as in mechanism files.
+    pub const KIND_NAMES: [&'static str; 5] = [
+        "translating-flat",
+        "translating-roller",
+        "translating-knife",
+        "oscillating-flat",
+        "oscillating-roller",
+    ];
 
     /// Human-readable kind, as in mechanism files.
     pub fn kind_name(&self) -> &'static str {
@@ -185,7 +213,7 @@ impl Follower {
     }
 }
 
-fn finite(field: &'static str, v: f64) -> Result<f64, CamError> {
+fn finite(field: Field, v: f64) -> Result<f64, CamError> {
     if v.is_finite() {
         Ok(v)
     } else {
@@ -197,7 +225,7 @@ fn finite(field: &'static str, v: f64) -> Result<f64, CamError> {
     }
 }
 
-fn positive(field: &'static str, v: f64) -> Result<f64, CamError> {
+fn positive(field: Field, v: f64) -> Result<f64, CamError> {
     if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {
@@ -209,10 +237,17 @@ fn positive(field: &'static str, v: f64) -> Result<f64, CamError> {
     }
 }
 
-fn point(field: &'static str, p: Point2) -> Result<Point2, CamError> {
-    finite(field, p.x)?;
-    finite(field, p.y)?;
-    Ok(p)
+fn point(field: Field, p: Point2) -> Result<Point2, CamError> {
+    if p.x.is_finite() && p.y.is_finite() {
+        Ok(p)
+    } else {
+        Err(CamError::InvalidVector {
+            field,
+            x: p.x,
+            y: p.y,
+            reason: "must be finite",
+        })
+    }
 }
 
 /// `(oriented score, φ)` of an arm angle `phi` taken on the branch within ±180° of `phi0`.

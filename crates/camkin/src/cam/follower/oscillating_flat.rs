@@ -8,6 +8,7 @@ use crate::cam::jet::{scale, Jet, Num, V2};
 use crate::cam::synthesis::{jet_recip, solve_angle, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
+use crate::field::{Field, FollowerField};
 use crate::geometry::{Point2, Rot, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -93,7 +94,7 @@ impl Kind for OscillatingFlat {
             self.phi0,
         )
         .ok_or(CamError::Invalid {
-            field: "follower.offset",
+            field: Field::Follower(FollowerField::Offset),
             value: face_offset,
             reason: "the face cannot rest on the base circle",
         })

@@ -7,6 +7,7 @@ use crate::cam::jet::{Num, V2};
 use crate::cam::synthesis::{rotated_derivs, solve_angle, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
+use crate::field::{Field, FollowerField};
 use crate::geometry::{Point2, Rot, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -106,7 +107,7 @@ impl Kind for OscillatingRoller {
         let d = (self.o - self.cam_pivot).norm();
         if (d - l).abs() >= size + r {
             return Err(CamError::Unreachable {
-                field: "follower.arm_length",
+                field: Field::Follower(FollowerField::ArmLength),
                 value: l,
                 reason: format!("the roller cannot reach the cam: its centre stays {} from the cam axis, the cam reaches {size} and the roller radius is {r}", (d - l).abs()),
             });
@@ -131,7 +132,7 @@ impl Kind for OscillatingRoller {
             self.phi0,
         )
         .ok_or(CamError::Invalid {
-            field: "follower.arm_length",
+            field: Field::Follower(FollowerField::ArmLength),
             value: arm_length,
             reason: "the roller cannot rest on the base circle",
         })

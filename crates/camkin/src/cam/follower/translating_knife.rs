@@ -7,6 +7,7 @@ use crate::cam::jet::{Num, V2};
 use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, PointCurve};
+use crate::field::{Field, FollowerField};
 use crate::geometry::{perp, Point2, Rot, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -63,7 +64,7 @@ impl Kind for TranslatingKnife {
     fn check_reach(&self, size: f64) -> Result<(), CamError> {
         if self.e.abs() >= size {
             return Err(CamError::Unreachable {
-                field: "follower.offset",
+                field: Field::Follower(FollowerField::Offset),
                 value: self.e,
                 reason: format!("the knife edge's line of travel misses the cam, which reaches {size} from its axis"),
             });
@@ -76,7 +77,7 @@ impl Kind for TranslatingKnife {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         if self.e.abs() >= base_radius {
             return Err(CamError::Invalid {
-                field: "follower.offset",
+                field: Field::Follower(FollowerField::Offset),
                 value: self.e,
                 reason: "must be smaller than the base radius",
             });

@@ -7,6 +7,7 @@ use crate::cam::jet::{Num, V2};
 use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
+use crate::field::{Field, FollowerField};
 use crate::geometry::{perp, Point2, Rot, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -79,7 +80,7 @@ impl Kind for TranslatingRoller {
         let (e, r) = (self.e, self.r);
         if e.abs() >= size + r {
             return Err(CamError::Unreachable {
-                field: "follower.offset",
+                field: Field::Follower(FollowerField::Offset),
                 value: e,
                 reason: format!(
                     "the roller (radius {r}) passes the cam, which reaches {size} from its axis"
@@ -98,7 +99,7 @@ impl Kind for TranslatingRoller {
         let prime = base_radius + self.r;
         if self.e.abs() >= prime {
             return Err(CamError::Invalid {
-                field: "follower.offset",
+                field: Field::Follower(FollowerField::Offset),
                 value: self.e,
                 reason: "must be smaller than the prime circle's radius",
             });

@@ -1,0 +1,297 @@
+//! Fields of a mechanism, named by enums: what an error points at. [`Field`]'s `Display` is the
+//! key path of the mechanism-file schema (`cam.profile.points[3]`), which front ends map to their
+//! own places (a TOML key's line and column, a Python dict key).
+
+use std::fmt;
+
+/// A field of a mechanism specification.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Field {
+    /// `length_unit`
+    LengthUnit,
+    /// a field of `[cam]`
+    Cam(CamField),
+    /// a field of `[cam.profile]`
+    Profile(ProfileField),
+    /// a field of `[follower]`
+    Follower(FollowerField),
+    /// a field of `[dynamics]`
+    Dynamics(DynamicsField),
+}
+
+/// Fields of `[cam]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum CamField {
+    /// the whole table
+    Table,
+    /// `speed_rpm`
+    SpeedRpm,
+    /// the speed in rad/s of [`crate::cam::Cam::new`] (no file key: `speed_rpm` in files)
+    Speed,
+    /// `direction`
+    Direction,
+    /// `pivot`
+    Pivot,
+    /// `angular_acceleration_deg_s2`
+    AngularAcceleration,
+}
+
+/// Fields of `[cam.profile]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ProfileField {
+    /// the whole table (a property of the profile as a whole: its size, a cusp)
+    Table,
+    /// `kind`
+    Kind,
+    /// `points`
+    Points,
+    /// `points[i]`
+    Point(usize),
+    /// `parameterization`
+    Parameterization,
+    /// `center`
+    Center,
+    /// `radius`
+    Radius,
+    /// `semi_axes`
+    SemiAxes,
+    /// `rotation_deg`
+    RotationDeg,
+    /// `path`
+    Path,
+    /// `base_radius`
+    BaseRadius,
+    /// `segments`
+    Segments,
+    /// `segments[i].law`, `.rise` or `.degrees`
+    Segment(usize, SegmentField),
+}
+
+/// Fields of one motion segment.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum SegmentField {
+    /// `law`
+    Law,
+    /// `rise`
+    Rise,
+    /// `degrees`
+    Degrees,
+}
+
+/// Fields of `[follower]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum FollowerField {
+    /// the whole table
+    Table,
+    /// `kind`
+    Kind,
+    /// `direction`
+    Direction,
+    /// `offset` (of the line of travel, or of an oscillating face)
+    Offset,
+    /// `roller_radius`
+    RollerRadius,
+    /// `pivot`
+    Pivot,
+    /// `arm_length`
+    ArmLength,
+    /// `closing`
+    Closing,
+    /// `initial_angle_deg`
+    InitialAngle,
+}
+
+/// Fields of `[dynamics]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum DynamicsField {
+    /// the whole table
+    Table,
+    /// `mass`
+    Mass,
+    /// `inertia`
+    Inertia,
+    /// `spring_stiffness`
+    SpringStiffness,
+    /// `spring_preload`
+    SpringPreload,
+    /// `damping`
+    Damping,
+    /// `restitution`
+    Restitution,
+    /// `gravity`
+    Gravity,
+}
+
+impl Field {
+    /// The table the field is in (`cam.profile` for `cam.profile.radius`).
+    pub fn table(&self) -> Field {
+        match *self {
+            Field::LengthUnit => Field::LengthUnit,
+            Field::Cam(_) => Field::Cam(CamField::Table),
+            Field::Profile(_) => Field::Profile(ProfileField::Table),
+            Field::Follower(_) => Field::Follower(FollowerField::Table),
+            Field::Dynamics(_) => Field::Dynamics(DynamicsField::Table),
+        }
+    }
+
+    /// The key path as segments: names and array indices (`["cam", "profile", "points", 3]`).
+    pub fn path(&self) -> Vec<Key> {
+        use Key::{Index, Name};
+        let mut p = Vec::new();
+        match *self {
+            Field::LengthUnit => p.push(Name("length_unit")),
+            Field::Cam(c) => {
+                p.push(Name("cam"));
+                if let Some(n) = c.name() {
+                    p.push(Name(n));
+                }
+            }
+            Field::Profile(f) => {
+                p.extend([Name("cam"), Name("profile")]);
+                match f {
+                    ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),
+                    ProfileField::Segment(i, s) => {
+                        p.extend([Name("segments"), Index(i), Name(s.name())]);
+                    }
+                    other => p.extend(other.name().map(Name)),
+                }
+            }
+            Field::Follower(f) => {
+                p.push(Name("follower"));
+                p.extend(f.name().map(Name));
+            }
+            Field::Dynamics(f) => {
+                p.push(Name("dynamics"));
+                p.extend(f.name().map(Name));
+            }
+        }
+        p
+    }
+}
+
+/// One step of a key path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Key {
+    /// a table key
+    Name(&'static str),
+    /// an array index
+    Index(usize),
+}
+
+impl CamField {
+    fn name(self) -> Option<&'static str> {
+        Some(match self {
+            CamField::Table => return None,
+            CamField::SpeedRpm => "speed_rpm",
+            CamField::Speed => "speed",
+            CamField::Direction => "direction",
+            CamField::Pivot => "pivot",
+            CamField::AngularAcceleration => "angular_acceleration_deg_s2",
+        })
+    }
+}
+
+impl ProfileField {
+    /// The key's name (`None` for the table, and for indexed fields).
+    pub fn name(self) -> Option<&'static str> {
+        Some(match self {
+            ProfileField::Table | ProfileField::Point(_) | ProfileField::Segment(..) => {
+                return None
+            }
+            ProfileField::Kind => "kind",
+            ProfileField::Points => "points",
+            ProfileField::Parameterization => "parameterization",
+            ProfileField::Center => "center",
+            ProfileField::Radius => "radius",
+            ProfileField::SemiAxes => "semi_axes",
+            ProfileField::RotationDeg => "rotation_deg",
+            ProfileField::Path => "path",
+            ProfileField::BaseRadius => "base_radius",
+            ProfileField::Segments => "segments",
+        })
+    }
+}
+
+impl SegmentField {
+    fn name(self) -> &'static str {
+        match self {
+            SegmentField::Law => "law",
+            SegmentField::Rise => "rise",
+            SegmentField::Degrees => "degrees",
+        }
+    }
+}
+
+impl FollowerField {
+    /// The key's name (`None` for the table).
+    pub fn name(self) -> Option<&'static str> {
+        Some(match self {
+            FollowerField::Table => return None,
+            FollowerField::Kind => "kind",
+            FollowerField::Direction => "direction",
+            FollowerField::Offset => "offset",
+            FollowerField::RollerRadius => "roller_radius",
+            FollowerField::Pivot => "pivot",
+            FollowerField::ArmLength => "arm_length",
+            FollowerField::Closing => "closing",
+            FollowerField::InitialAngle => "initial_angle_deg",
+        })
+    }
+}
+
+impl DynamicsField {
+    fn name(self) -> Option<&'static str> {
+        Some(match self {
+            DynamicsField::Table => return None,
+            DynamicsField::Mass => "mass",
+            DynamicsField::Inertia => "inertia",
+            DynamicsField::SpringStiffness => "spring_stiffness",
+            DynamicsField::SpringPreload => "spring_preload",
+            DynamicsField::Damping => "damping",
+            DynamicsField::Restitution => "restitution",
+            DynamicsField::Gravity => "gravity",
+        })
+    }
+}
+
+impl fmt::Display for Field {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, k) in self.path().iter().enumerate() {
+            match k {
+                Key::Name(n) if i == 0 => f.write_str(n)?,
+                Key::Name(n) => write!(f, ".{n}")?,
+                Key::Index(j) => write!(f, "[{j}]")?,
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fields_print_as_key_paths() {
+        assert_eq!(
+            Field::Profile(ProfileField::Point(3)).to_string(),
+            "cam.profile.points[3]"
+        );
+        assert_eq!(
+            Field::Profile(ProfileField::Segment(1, SegmentField::Law)).to_string(),
+            "cam.profile.segments[1].law"
+        );
+        assert_eq!(Field::Cam(CamField::SpeedRpm).to_string(), "cam.speed_rpm");
+        assert_eq!(
+            Field::Follower(FollowerField::Table).to_string(),
+            "follower"
+        );
+        assert_eq!(Field::LengthUnit.to_string(), "length_unit");
+    }
+}

@@ -1,0 +1,840 @@
+//! Validation of a [`MechanismSpec`] and the mechanism it describes.
+
+use super::{DynamicsSpec, FollowerSpec, MechanismSpec, ProfileSpec};
+use crate::cam::synthesis::synthesize;
+use crate::cam::{Cam, CamError, Follower, Mechanism, Sense};
+use crate::curve::{
+    read_points_file, Circle, ClosedSpline, Curve, CurveError, Ellipse, Parameterization,
+    MAX_POINTS,
+};
+use crate::dynamics::FollowerDynamics;
+use crate::field::{CamField, DynamicsField, Field, FollowerField, ProfileField, SegmentField};
+use crate::motion::{Law, Program, Segment};
+use crate::{Point2, Vec2};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// The unit of a mechanism's lengths.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum LengthUnit {
+    /// metres (the default)
+    #[default]
+    M,
+    /// centimetres
+    Cm,
+    /// millimetres
+    Mm,
+}
+
+impl LengthUnit {
+    /// All units with their names.
+    pub const ALL: [(LengthUnit, &'static str); 3] = [
+        (LengthUnit::Mm, "mm"),
+        (LengthUnit::Cm, "cm"),
+        (LengthUnit::M, "m"),
+    ];
+    /// Metres per unit.
+    pub fn metres(self) -> f64 {
+        match self {
+            LengthUnit::M => 1.0,
+            LengthUnit::Cm => 0.01,
+            LengthUnit::Mm => 0.001,
+        }
+    }
+    /// The unit's symbol.
+    pub fn name(self) -> &'static str {
+        Self::ALL
+            .iter()
+            .find(|(u, _)| *u == self)
+            .map_or("m", |(_, n)| n)
+    }
+}
+
+/// How a spec is built.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BuildOptions {
+    /// the folder a relative points-file path is read from (default: the current folder)
+    pub base_dir: PathBuf,
+    /// convert lengths to metres with `length_unit` (for a dynamic simulation); otherwise the
+    /// mechanism is built in the file's units
+    pub si: bool,
+}
+
+/// A built mechanism with what else its spec said.
+#[derive(Debug, Clone)]
+pub struct Built {
+    /// the mechanism
+    pub mechanism: Mechanism,
+    /// the follower's dynamics, when the spec has them (SI units)
+    pub dynamics: Option<FollowerDynamics>,
+    /// the unit of the spec's lengths
+    pub length_unit: LengthUnit,
+}
+
+/// What is wrong with a spec. Every variant names the field ([`SpecError::field`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SpecError {
+    /// A value is out of range.
+    #[error("{field} = {value}: {reason}")]
+    Invalid {
+        /// the field
+        field: Field,
+        /// the value, as written in a file
+        value: String,
+        /// what it must be
+        reason: String,
+    },
+    /// A name (a kind, a law, a unit) is not one of those known.
+    #[error("{field} = {value:?} is not {what} ({known})")]
+    Unknown {
+        /// the field
+        field: Field,
+        /// the name given
+        value: String,
+        /// what it should name
+        what: &'static str,
+        /// the names known
+        known: String,
+    },
+    /// A kind needs a field that is missing (the error is placed at the kind).
+    #[error("[{}] kind = {kind:?} needs `{missing}`", field.table())]
+    Missing {
+        /// the kind's field
+        field: Field,
+        /// the kind
+        kind: String,
+        /// the missing field's name
+        missing: &'static str,
+    },
+    /// A field that the kind does not take.
+    #[error("[{}] kind = {kind:?} takes no `{name}` (its fields: {allowed})", field.table())]
+    Foreign {
+        /// the field present
+        field: Field,
+        /// its name
+        name: &'static str,
+        /// the kind
+        kind: String,
+        /// the fields the kind takes
+        allowed: String,
+    },
+    /// A rule about a field or a table as a whole is broken.
+    #[error("{field}: {reason}")]
+    Rule {
+        /// the field or the table
+        field: Field,
+        /// what is wrong
+        reason: String,
+    },
+    /// A points file is malformed or its points do not make a profile.
+    #[error("{path}{}: {message}", line.map(|l| format!(":{l}")).unwrap_or_default())]
+    PointsFile {
+        /// the file
+        path: String,
+        /// the 1-based line, where known
+        line: Option<usize>,
+        /// what is wrong
+        message: String,
+    },
+}
+
+impl SpecError {
+    /// The field the error is about (for a points file: `cam.profile.path`).
+    pub fn field(&self) -> Field {
+        match self {
+            SpecError::Invalid { field, .. }
+            | SpecError::Unknown { field, .. }
+            | SpecError::Missing { field, .. }
+            | SpecError::Foreign { field, .. }
+            | SpecError::Rule { field, .. } => *field,
+            SpecError::PointsFile { .. } => Field::Profile(ProfileField::Path),
+        }
+    }
+}
+
+fn vector(v: [f64; 2]) -> String {
+    format!("[{}, {}]", v[0], v[1])
+}
+
+impl From<CamError> for SpecError {
+    fn from(e: CamError) -> Self {
+        match e {
+            CamError::Invalid {
+                field,
+                value,
+                reason,
+            } => SpecError::Invalid {
+                field,
+                value: value.to_string(),
+                reason: reason.to_string(),
+            },
+            CamError::InvalidVector {
+                field,
+                x,
+                y,
+                reason,
+            } => SpecError::Invalid {
+                field,
+                value: vector([x, y]),
+                reason: reason.to_string(),
+            },
+            CamError::Unreachable {
+                field,
+                value,
+                reason,
+            } => SpecError::Invalid {
+                field,
+                value: value.to_string(),
+                reason,
+            },
+            CamError::Cusp { .. } => SpecError::Rule {
+                field: Field::Profile(ProfileField::Table),
+                reason: e.to_string(),
+            },
+            other => SpecError::Rule {
+                field: Field::Cam(CamField::Table),
+                reason: other.to_string(),
+            },
+        }
+    }
+}
+
+impl TryFrom<MechanismSpec> for Mechanism {
+    type Error = SpecError;
+    /// Builds in the spec's units, reading points files relative to the current folder.
+    fn try_from(spec: MechanismSpec) -> Result<Self, SpecError> {
+        spec.build(&BuildOptions::default()).map(|b| b.mechanism)
+    }
+}
+
+/// The fields of a table present in a spec, for the foreign-field check.
+type Present = [(&'static str, bool, Field)];
+
+fn check_kind(
+    kind_field: Field,
+    kind: &str,
+    present: &Present,
+    allowed: &[&str],
+) -> Result<(), SpecError> {
+    for &(name, here, field) in present {
+        if here && !allowed.contains(&name) {
+            return Err(SpecError::Foreign {
+                field,
+                name,
+                kind: kind.to_string(),
+                allowed: allowed.join(", "),
+            });
+        }
+    }
+    let _ = kind_field;
+    Ok(())
+}
+
+fn need<T: Copy>(
+    kind_field: Field,
+    kind: &str,
+    name: &'static str,
+    v: Option<T>,
+) -> Result<T, SpecError> {
+    v.ok_or_else(|| SpecError::Missing {
+        field: kind_field,
+        kind: kind.to_string(),
+        missing: name,
+    })
+}
+
+fn finite(field: Field, x: f64) -> Result<f64, SpecError> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(SpecError::Invalid {
+            field,
+            value: x.to_string(),
+            reason: "must be a finite number".into(),
+        })
+    }
+}
+
+fn positive(field: Field, x: f64) -> Result<f64, SpecError> {
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(SpecError::Invalid {
+            field,
+            value: x.to_string(),
+            reason: "must be positive and finite".into(),
+        })
+    }
+}
+
+fn non_negative(field: Field, x: f64) -> Result<f64, SpecError> {
+    let x = finite(field, x)?;
+    if x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(SpecError::Invalid {
+            field,
+            value: x.to_string(),
+            reason: "must not be negative".into(),
+        })
+    }
+}
+
+fn point(field: Field, v: [f64; 2]) -> Result<Point2, SpecError> {
+    if v[0].is_finite() && v[1].is_finite() {
+        Ok(Point2::new(v[0], v[1]))
+    } else {
+        Err(SpecError::Invalid {
+            field,
+            value: vector(v),
+            reason: "must be finite".into(),
+        })
+    }
+}
+
+fn direction(field: Field, v: [f64; 2]) -> Result<Vec2, SpecError> {
+    let p = point(field, v)?;
+    if p.coords.norm() > 0.0 {
+        Ok(p.coords)
+    } else {
+        Err(SpecError::Invalid {
+            field,
+            value: vector(v),
+            reason: "must be a non-zero direction".into(),
+        })
+    }
+}
+
+impl MechanismSpec {
+    /// Validates the spec and builds its mechanism (and dynamics). Every error names its field.
+    pub fn build(&self, options: &BuildOptions) -> Result<Built, SpecError> {
+        let unit = match &self.length_unit {
+            None => LengthUnit::M,
+            Some(u) => LengthUnit::ALL
+                .iter()
+                .find(|(_, n)| n == u)
+                .map(|(x, _)| *x)
+                .ok_or_else(|| SpecError::Unknown {
+                    field: Field::LengthUnit,
+                    value: u.clone(),
+                    what: "a unit",
+                    known: "mm, cm, m".into(),
+                })?,
+        };
+        let scale = if options.si { unit.metres() } else { 1.0 };
+        let cam = &self.cam;
+        let follower = self.follower.build(scale)?;
+        let sense = cam.direction.unwrap_or(Sense::Ccw);
+        let (profile, synthesis) = cam
+            .profile
+            .build(scale, &options.base_dir, &follower, sense)?;
+        let speed = positive(Field::Cam(CamField::SpeedRpm), cam.speed_rpm)?;
+        let pivot = match cam.pivot {
+            Some(p) => {
+                let p = point(Field::Cam(CamField::Pivot), p)?;
+                Point2::new(scale * p.x, scale * p.y)
+            }
+            None => Point2::origin(),
+        };
+        let alpha = match cam.angular_acceleration_deg_s2 {
+            Some(a) => finite(Field::Cam(CamField::AngularAcceleration), a)?,
+            None => 0.0,
+        };
+        let mut cam_obj = Cam::from_rpm(profile, pivot, sense, speed)?
+            .with_angular_acceleration(alpha.to_radians())?;
+        if let Some(s) = synthesis {
+            cam_obj.set_synthesis(s);
+        }
+        let oscillating = follower.is_oscillating();
+        let mechanism = Mechanism::new(cam_obj, follower)?;
+        let dynamics = self
+            .dynamics
+            .as_ref()
+            .map(|d| d.build(oscillating))
+            .transpose()?;
+        Ok(Built {
+            mechanism,
+            dynamics,
+            length_unit: unit,
+        })
+    }
+}
+
+impl FollowerSpec {
+    fn build(&self, scale: f64) -> Result<Follower, SpecError> {
+        use FollowerField as F;
+        let f = |x| Field::Follower(x);
+        let kind_field = f(F::Kind);
+        let kind = self.kind.as_str();
+        let present: &Present = &[
+            ("direction", self.direction.is_some(), f(F::Direction)),
+            ("offset", self.offset.is_some(), f(F::Offset)),
+            (
+                "roller_radius",
+                self.roller_radius.is_some(),
+                f(F::RollerRadius),
+            ),
+            ("pivot", self.pivot.is_some(), f(F::Pivot)),
+            ("arm_length", self.arm_length.is_some(), f(F::ArmLength)),
+            ("closing", self.closing.is_some(), f(F::Closing)),
+            (
+                "initial_angle_deg",
+                self.initial_angle_deg.is_some(),
+                f(F::InitialAngle),
+            ),
+        ];
+        let dir = || -> Result<Vec2, SpecError> {
+            self.direction
+                .map_or(Ok(Vec2::x()), |d| direction(f(F::Direction), d))
+        };
+        let offset = || -> Result<f64, SpecError> {
+            self.offset
+                .map_or(Ok(0.0), |o| finite(f(F::Offset), o).map(|v| scale * v))
+        };
+        let closing = self.closing.unwrap_or(Sense::Cw);
+        let initial = || -> Result<f64, SpecError> {
+            Ok(self
+                .initial_angle_deg
+                .map(|a| finite(f(F::InitialAngle), a))
+                .transpose()?
+                .unwrap_or(0.0)
+                .to_radians())
+        };
+        let pivot = || -> Result<Point2, SpecError> {
+            let p = point(f(F::Pivot), need(kind_field, kind, "pivot", self.pivot)?)?;
+            Ok(Point2::new(scale * p.x, scale * p.y))
+        };
+        let len = |field: F, name: &'static str, v: Option<f64>| -> Result<f64, SpecError> {
+            Ok(scale * positive(f(field), need(kind_field, kind, name, v)?)?)
+        };
+        Ok(match kind {
+            "translating-flat" => {
+                check_kind(kind_field, kind, present, &["direction"])?;
+                Follower::TranslatingFlat { direction: dir()? }
+            }
+            "translating-roller" => {
+                check_kind(
+                    kind_field,
+                    kind,
+                    present,
+                    &["direction", "offset", "roller_radius"],
+                )?;
+                let r = len(F::RollerRadius, "roller_radius", self.roller_radius)?;
+                Follower::TranslatingRoller {
+                    direction: dir()?,
+                    offset: offset()?,
+                    roller_radius: r,
+                }
+            }
+            "translating-knife" => {
+                check_kind(kind_field, kind, present, &["direction", "offset"])?;
+                Follower::TranslatingKnife {
+                    direction: dir()?,
+                    offset: offset()?,
+                }
+            }
+            "oscillating-flat" => {
+                check_kind(
+                    kind_field,
+                    kind,
+                    present,
+                    &["pivot", "offset", "closing", "initial_angle_deg"],
+                )?;
+                Follower::OscillatingFlat {
+                    pivot: pivot()?,
+                    face_offset: offset()?,
+                    closing,
+                    initial_angle: initial()?,
+                }
+            }
+            "oscillating-roller" => {
+                check_kind(
+                    kind_field,
+                    kind,
+                    present,
+                    &[
+                        "pivot",
+                        "arm_length",
+                        "roller_radius",
+                        "closing",
+                        "initial_angle_deg",
+                    ],
+                )?;
+                let pivot = pivot()?;
+                let l = len(F::ArmLength, "arm_length", self.arm_length)?;
+                let r = len(F::RollerRadius, "roller_radius", self.roller_radius)?;
+                Follower::OscillatingRoller {
+                    pivot,
+                    arm_length: l,
+                    roller_radius: r,
+                    closing,
+                    initial_angle: initial()?,
+                }
+            }
+            other => {
+                return Err(SpecError::Unknown {
+                    field: kind_field,
+                    value: other.to_string(),
+                    what: "a follower kind",
+                    known: Follower::KIND_NAMES.join(", "),
+                })
+            }
+        })
+    }
+}
+
+/// Where a spline's nodes came from, to place an error at a node.
+enum Nodes<'a> {
+    Inline,
+    File { path: &'a str, lines: &'a [usize] },
+}
+
+impl Nodes<'_> {
+    fn error(&self, node: usize, message: String) -> SpecError {
+        match self {
+            Nodes::Inline => SpecError::Rule {
+                field: Field::Profile(ProfileField::Point(node)),
+                reason: message,
+            },
+            Nodes::File { path, lines } => SpecError::PointsFile {
+                path: path.to_string(),
+                line: lines.get(node).copied(),
+                message,
+            },
+        }
+    }
+    fn whole(&self, message: String) -> SpecError {
+        match self {
+            Nodes::Inline => SpecError::Rule {
+                field: Field::Profile(ProfileField::Points),
+                reason: message,
+            },
+            Nodes::File { path, .. } => SpecError::PointsFile {
+                path: path.to_string(),
+                line: None,
+                message,
+            },
+        }
+    }
+}
+
+/// A closed spline through `nodes`, refusing repeated points and a self-intersecting curve.
+fn spline(
+    nodes: &[Point2],
+    param: Parameterization,
+    from: &Nodes<'_>,
+) -> Result<Arc<dyn Curve>, SpecError> {
+    let s = ClosedSpline::with_parameterization(nodes, param).map_err(|e| match e {
+        CurveError::TooFewPoints { count } => from.whole(format!(
+            "a closed spline needs at least 3 points, got {count}"
+        )),
+        CurveError::RepeatedPoint { index, next, x, y } => from.error(
+            next,
+            format!(
+                "points {index} and {next} coincide at ({x}, {y}); consecutive points must differ"
+            ),
+        ),
+        CurveError::NonFinitePoint { index, x, y } => {
+            from.error(index, format!("point {index} = ({x}, {y}) is not finite"))
+        }
+        other => from.whole(other.to_string()),
+    })?;
+    if let Some((ua, ub, p)) = s.self_intersection() {
+        let n = nodes.len();
+        let node_of = |u: f64| match param {
+            Parameterization::Uniform => (u.floor() as usize).min(n - 1),
+            _ => (0..s.segments())
+                .rev()
+                .find(|&i| s.node_param(i) <= u)
+                .unwrap_or(0),
+        };
+        let (i, j) = (node_of(ua), node_of(ub));
+        return Err(from.error(
+            i,
+            format!(
+                "the spline through the points crosses itself near ({:.6}, {:.6}), between points {i}–{} and {j}–{}",
+                p.x,
+                p.y,
+                (i + 1) % n,
+                (j + 1) % n
+            ),
+        ));
+    }
+    Ok(Arc::new(s))
+}
+
+/// The profile and, for `kind = "motion"`, its synthesis.
+type BuiltProfile = (
+    Arc<dyn Curve>,
+    Option<Arc<crate::cam::synthesis::SynthesizedProfile>>,
+);
+
+impl ProfileSpec {
+    fn build(
+        &self,
+        scale: f64,
+        base: &Path,
+        follower: &Follower,
+        sense: Sense,
+    ) -> Result<BuiltProfile, SpecError> {
+        use ProfileField as P;
+        let f = |x| Field::Profile(x);
+        let kind_field = f(P::Kind);
+        let kind = self.kind.as_str();
+        let present: &Present = &[
+            ("base_radius", self.base_radius.is_some(), f(P::BaseRadius)),
+            ("segments", self.segments.is_some(), f(P::Segments)),
+            ("points", self.points.is_some(), f(P::Points)),
+            (
+                "parameterization",
+                self.parameterization.is_some(),
+                f(P::Parameterization),
+            ),
+            ("center", self.center.is_some(), f(P::Center)),
+            ("radius", self.radius.is_some(), f(P::Radius)),
+            ("semi_axes", self.semi_axes.is_some(), f(P::SemiAxes)),
+            (
+                "rotation_deg",
+                self.rotation_deg.is_some(),
+                f(P::RotationDeg),
+            ),
+            ("path", self.path.is_some(), f(P::Path)),
+        ];
+        let param = self.parameterization.unwrap_or_default();
+        let scaled = |p: Point2| Point2::new(scale * p.x, scale * p.y);
+        let center = || -> Result<Point2, SpecError> {
+            Ok(scaled(point(
+                f(P::Center),
+                need(kind_field, kind, "center", self.center)?,
+            )?))
+        };
+        let curve: Arc<dyn Curve> = match kind {
+            "spline" => {
+                check_kind(kind_field, kind, present, &["points", "parameterization"])?;
+                let pts = self.points.as_ref().ok_or_else(|| SpecError::Missing {
+                    field: kind_field,
+                    kind: kind.to_string(),
+                    missing: "points",
+                })?;
+                if pts.len() > MAX_POINTS {
+                    return Err(SpecError::Rule {
+                        field: f(P::Points),
+                        reason: format!(
+                            "{} points is more than the {MAX_POINTS} allowed",
+                            pts.len()
+                        ),
+                    });
+                }
+                let nodes = pts
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &q)| point(f(P::Point(i)), q).map(scaled))
+                    .collect::<Result<Vec<_>, _>>()?;
+                spline(&nodes, param, &Nodes::Inline)?
+            }
+            "circle" => {
+                check_kind(kind_field, kind, present, &["center", "radius"])?;
+                let c = center()?;
+                let r =
+                    scale * positive(f(P::Radius), need(kind_field, kind, "radius", self.radius)?)?;
+                Arc::new(Circle::new(c, r).map_err(|e| SpecError::Rule {
+                    field: kind_field,
+                    reason: e.to_string(),
+                })?)
+            }
+            "ellipse" => {
+                check_kind(
+                    kind_field,
+                    kind,
+                    present,
+                    &["center", "semi_axes", "rotation_deg"],
+                )?;
+                let c = center()?;
+                let ax = need(kind_field, kind, "semi_axes", self.semi_axes)?;
+                let [a, b] = ax;
+                if !(a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0) {
+                    return Err(SpecError::Invalid {
+                        field: f(P::SemiAxes),
+                        value: vector(ax),
+                        reason: "both must be positive and finite".into(),
+                    });
+                }
+                let rot = self
+                    .rotation_deg
+                    .map(|r| finite(f(P::RotationDeg), r))
+                    .transpose()?
+                    .unwrap_or(0.0);
+                Arc::new(
+                    Ellipse::new(c, scale * a, scale * b, rot.to_radians()).map_err(|e| {
+                        SpecError::Rule {
+                            field: kind_field,
+                            reason: e.to_string(),
+                        }
+                    })?,
+                )
+            }
+            "motion" => {
+                check_kind(kind_field, kind, present, &["base_radius", "segments"])?;
+                let rb = scale
+                    * positive(
+                        f(P::BaseRadius),
+                        need(kind_field, kind, "base_radius", self.base_radius)?,
+                    )?;
+                let segs = self.segments.as_ref().ok_or_else(|| SpecError::Missing {
+                    field: kind_field,
+                    kind: kind.to_string(),
+                    missing: "segments",
+                })?;
+                // rises: lengths for translating followers, degrees of arm angle for oscillating
+                let rise_scale = if follower.is_oscillating() {
+                    1f64.to_radians()
+                } else {
+                    scale
+                };
+                let mut list = Vec::with_capacity(segs.len());
+                for (i, sg) in segs.iter().enumerate() {
+                    let seg = |x| f(P::Segment(i, x));
+                    let law = Law::ALL
+                        .iter()
+                        .copied()
+                        .find(|l| l.name() == sg.law)
+                        .ok_or_else(|| SpecError::Unknown {
+                            field: seg(SegmentField::Law),
+                            value: sg.law.clone(),
+                            what: "a law",
+                            known: Law::ALL.map(|l| l.name()).join(", "),
+                        })?;
+                    let rise = sg
+                        .rise
+                        .map(|r| finite(seg(SegmentField::Rise), r))
+                        .transpose()?
+                        .unwrap_or(0.0);
+                    let degrees = positive(seg(SegmentField::Degrees), sg.degrees)?;
+                    list.push(Segment {
+                        law,
+                        rise: rise * rise_scale,
+                        extent: degrees.to_radians(),
+                    });
+                }
+                let program = Program::new(0.0, list).map_err(|e| SpecError::Rule {
+                    field: f(P::Segments),
+                    reason: e.to_string(),
+                })?;
+                let prof = Arc::new(synthesize(program, rb, follower, sense)?);
+                return Ok((prof.clone(), Some(prof)));
+            }
+            "points-file" => {
+                check_kind(kind_field, kind, present, &["path", "parameterization"])?;
+                let path = self.path.as_ref().ok_or_else(|| SpecError::Missing {
+                    field: kind_field,
+                    kind: kind.to_string(),
+                    missing: "path",
+                })?;
+                let full = base.join(path);
+                let file = full.display().to_string();
+                let (nodes, lines) = read_points_file(&full).map_err(|e| match e {
+                    CurveError::PointsFileIo { message, .. } => SpecError::Invalid {
+                        field: f(P::Path),
+                        value: format!("{path:?}"),
+                        reason: format!("cannot read {file}: {message}"),
+                    },
+                    CurveError::PointsFileSyntax {
+                        line,
+                        message,
+                        content,
+                    } => SpecError::PointsFile {
+                        path: file.clone(),
+                        line: Some(line),
+                        message: format!("{message}: {content:?}"),
+                    },
+                    other => SpecError::Invalid {
+                        field: f(P::Path),
+                        value: format!("{path:?}"),
+                        reason: other.to_string(),
+                    },
+                })?;
+                let nodes: Vec<Point2> = nodes.into_iter().map(scaled).collect();
+                spline(
+                    &nodes,
+                    param,
+                    &Nodes::File {
+                        path: &file,
+                        lines: &lines,
+                    },
+                )?
+            }
+            other => {
+                return Err(SpecError::Unknown {
+                    field: kind_field,
+                    value: other.to_string(),
+                    what: "a profile kind",
+                    known: "spline, circle, ellipse, points-file, motion".into(),
+                })
+            }
+        };
+        Ok((curve, None))
+    }
+}
+
+impl DynamicsSpec {
+    fn build(&self, oscillating: bool) -> Result<FollowerDynamics, SpecError> {
+        use DynamicsField as D;
+        let f = |x| Field::Dynamics(x);
+        let needed = |field: D, name: &str, v: Option<f64>| match v {
+            Some(v) => positive(f(field), v),
+            None => Err(SpecError::Rule {
+                field: f(D::Table),
+                reason: format!("needs `{name}` for this follower"),
+            }),
+        };
+        let (mass, inertia) = if oscillating {
+            if self.mass.is_some() {
+                return Err(SpecError::Rule {
+                    field: f(D::Mass),
+                    reason: "an oscillating follower takes `inertia`, not `mass`".into(),
+                });
+            }
+            (1.0, needed(D::Inertia, "inertia", self.inertia)?)
+        } else {
+            if self.inertia.is_some() {
+                return Err(SpecError::Rule {
+                    field: f(D::Inertia),
+                    reason: "a translating follower takes `mass`, not `inertia`".into(),
+                });
+            }
+            (needed(D::Mass, "mass", self.mass)?, 1.0)
+        };
+        let restitution = self
+            .restitution
+            .map(|r| non_negative(f(D::Restitution), r))
+            .transpose()?
+            .unwrap_or(0.0);
+        if restitution > 1.0 {
+            return Err(SpecError::Invalid {
+                field: f(D::Restitution),
+                value: restitution.to_string(),
+                reason: "must be from 0 to 1".into(),
+            });
+        }
+        let gravity = self
+            .gravity
+            .map(|g| point(f(D::Gravity), g))
+            .transpose()?
+            .map_or(Vec2::zeros(), |p| p.coords);
+        Ok(FollowerDynamics {
+            mass,
+            inertia,
+            spring_stiffness: non_negative(f(D::SpringStiffness), self.spring_stiffness)?,
+            spring_preload: non_negative(f(D::SpringPreload), self.spring_preload)?,
+            damping: self
+                .damping
+                .map(|c| non_negative(f(D::Damping), c))
+                .transpose()?
+                .unwrap_or(0.0),
+            restitution,
+            gravity,
+        })
+    }
+}
