@@ -15,6 +15,7 @@ mod interpolation_study;
 mod jerk;
 mod paper_cam;
 mod properties;
+mod spec;
 mod spline_finite_differences;
 mod sweep;
 mod synthesis_round_trip;

@@ -1,0 +1,340 @@
+//! `MechanismSpec`: a mechanism built from plain data, with no command-line code; every invalid
+//! spec is refused with the field named by an enum and the value.
+
+use crate::common::*;
+use camkin::cam::{Cam, Follower, Mechanism, Sense};
+use camkin::spec::{
+    CamField, CamSpec, DynamicsField, DynamicsSpec, Field, FollowerField, FollowerSpec,
+    MechanismSpec, ProfileField, ProfileSpec, SegmentField, SegmentSpec, SpecError,
+};
+use camkin::Point2;
+
+fn circle_spec(follower: FollowerSpec) -> MechanismSpec {
+    MechanismSpec {
+        cam: CamSpec {
+            speed_rpm: 600.0,
+            direction: Some(Sense::Cw),
+            profile: ProfileSpec {
+                kind: "circle".into(),
+                center: Some([0.7, 0.3]),
+                radius: Some(2.0),
+                ..Default::default()
+            },
+            ..Default::default()
+        },
+        follower,
+        ..Default::default()
+    }
+}
+
+fn flat() -> FollowerSpec {
+    FollowerSpec {
+        kind: "translating-flat".into(),
+        ..Default::default()
+    }
+}
+
+#[test]
+fn paper_spec_builds_the_papers_mechanism_bit_for_bit() {
+    let spec = MechanismSpec {
+        cam: CamSpec {
+            speed_rpm: 1000.0,
+            profile: ProfileSpec {
+                kind: "spline".into(),
+                points: Some(paper_nodes(false).iter().map(|p| [p.x, p.y]).collect()),
+                ..Default::default()
+            },
+            ..Default::default()
+        },
+        follower: FollowerSpec {
+            direction: Some([1.0, 0.0]),
+            ..flat()
+        },
+        ..Default::default()
+    };
+    let m = Mechanism::try_from(spec).unwrap();
+    let r = paper_mechanism(false);
+    for k in 0..36 {
+        let t = (k as f64 * 10.0).to_radians();
+        let (a, b) = (m.analyze(t).unwrap(), r.analyze(t).unwrap());
+        assert_eq!(
+            (a.position, a.velocity, a.acceleration),
+            (b.position, b.velocity, b.acceleration)
+        );
+    }
+}
+
+#[test]
+fn eccentric_circle_spec_gives_the_closed_form() {
+    // cw cam, centre off the follower's axis: s(θ) = x-extent of the circle turned by −θ
+    let m = Mechanism::try_from(circle_spec(flat())).unwrap();
+    let w = 600.0 * std::f64::consts::TAU / 60.0;
+    for k in 0..24 {
+        let t = (k as f64 * 15.0).to_radians();
+        let s = m.analyze(t).unwrap();
+        // centre (0.7, 0.3) turned by −θ: x = 0.7 cos θ + 0.3 sin θ
+        let x = 0.7 * t.cos() + 0.3 * t.sin();
+        let a = -w * w * x;
+        assert_close(s.position, x + 2.0, 1e-13, 3.0, "s");
+        assert_close(s.acceleration, a, 1e-11, w * w, "a");
+    }
+}
+
+#[test]
+fn every_follower_kind_matches_the_follower_built_directly() {
+    let specs = [
+        (
+            FollowerSpec {
+                kind: "translating-roller".into(),
+                direction: Some([0.0, 1.0]),
+                offset: Some(0.4),
+                roller_radius: Some(0.5),
+                ..Default::default()
+            },
+            Follower::TranslatingRoller {
+                direction: camkin::Vec2::new(0.0, 1.0),
+                offset: 0.4,
+                roller_radius: 0.5,
+            },
+        ),
+        (
+            FollowerSpec {
+                kind: "translating-knife".into(),
+                offset: Some(-0.3),
+                ..Default::default()
+            },
+            Follower::TranslatingKnife {
+                direction: camkin::Vec2::x(),
+                offset: -0.3,
+            },
+        ),
+        (
+            FollowerSpec {
+                kind: "oscillating-flat".into(),
+                pivot: Some([-3.0, 7.0]),
+                offset: Some(0.2),
+                closing: Some(Sense::Cw),
+                initial_angle_deg: Some(-30.0),
+                ..Default::default()
+            },
+            Follower::OscillatingFlat {
+                pivot: Point2::new(-3.0, 7.0),
+                face_offset: 0.2,
+                closing: Sense::Cw,
+                initial_angle: (-30f64).to_radians(),
+            },
+        ),
+        (
+            FollowerSpec {
+                kind: "oscillating-roller".into(),
+                pivot: Some([-3.0, 7.0]),
+                arm_length: Some(9.0),
+                roller_radius: Some(1.0),
+                closing: Some(Sense::Cw),
+                initial_angle_deg: Some(-30.0),
+                ..Default::default()
+            },
+            Follower::OscillatingRoller {
+                pivot: Point2::new(-3.0, 7.0),
+                arm_length: 9.0,
+                roller_radius: 1.0,
+                closing: Sense::Cw,
+                initial_angle: (-30f64).to_radians(),
+            },
+        ),
+    ];
+    for (spec, follower) in specs {
+        let a = Mechanism::try_from(circle_spec(spec.clone())).unwrap();
+        let profile =
+            std::sync::Arc::new(camkin::curve::Circle::new(Point2::new(0.7, 0.3), 2.0).unwrap());
+        let b = Mechanism::new(
+            Cam::from_rpm(profile, Point2::origin(), Sense::Cw, 600.0).unwrap(),
+            follower,
+        )
+        .unwrap();
+        assert_eq!(a.follower(), b.follower(), "{}", spec.kind);
+        let (sa, sb) = (a.analyze(0.4).unwrap(), b.analyze(0.4).unwrap());
+        assert_eq!(
+            (sa.position, sa.acceleration),
+            (sb.position, sb.acceleration),
+            "{}",
+            spec.kind
+        );
+    }
+}
+
+/// Each edit of a valid spec is refused naming `field` (an enum) with `value` in the message.
+#[test]
+fn invalid_specs_name_the_field_by_enum_and_carry_the_value() {
+    type Edit = fn(&mut MechanismSpec);
+    let cases: Vec<(Edit, Field, &str)> = vec![
+        (
+            |s| s.cam.speed_rpm = -5.0,
+            Field::Cam(CamField::SpeedRpm),
+            "-5",
+        ),
+        (
+            |s| s.cam.speed_rpm = f64::INFINITY,
+            Field::Cam(CamField::SpeedRpm),
+            "inf",
+        ),
+        (
+            |s| s.cam.pivot = Some([0.0, f64::NAN]),
+            Field::Cam(CamField::Pivot),
+            "[0, NaN]",
+        ),
+        (
+            |s| s.cam.angular_acceleration_deg_s2 = Some(f64::NAN),
+            Field::Cam(CamField::AngularAcceleration),
+            "NaN",
+        ),
+        (
+            |s| s.cam.profile.radius = Some(0.0),
+            Field::Profile(ProfileField::Radius),
+            "0",
+        ),
+        (
+            |s| s.cam.profile.kind = "blob".into(),
+            Field::Profile(ProfileField::Kind),
+            "\"blob\"",
+        ),
+        (
+            |s| s.cam.profile.points = Some(vec![[0.0, 0.0]]),
+            Field::Profile(ProfileField::Points),
+            "points",
+        ),
+        (
+            |s| s.cam.profile.radius = None,
+            Field::Profile(ProfileField::Kind),
+            "needs `radius`",
+        ),
+        (
+            |s| s.follower.kind = "rocker".into(),
+            Field::Follower(FollowerField::Kind),
+            "\"rocker\"",
+        ),
+        (
+            |s| s.follower.direction = Some([0.0, 0.0]),
+            Field::Follower(FollowerField::Direction),
+            "[0, 0]",
+        ),
+        (
+            |s| s.follower.roller_radius = Some(1.0),
+            Field::Follower(FollowerField::RollerRadius),
+            "takes no `roller_radius`",
+        ),
+        (
+            |s| s.length_unit = Some("furlong".into()),
+            Field::LengthUnit,
+            "\"furlong\"",
+        ),
+        (
+            |s| {
+                s.dynamics = Some(DynamicsSpec {
+                    mass: Some(1.0),
+                    spring_stiffness: 1.0,
+                    spring_preload: 1.0,
+                    restitution: Some(1.5),
+                    ..Default::default()
+                })
+            },
+            Field::Dynamics(DynamicsField::Restitution),
+            "1.5",
+        ),
+        (
+            |s| {
+                s.dynamics = Some(DynamicsSpec {
+                    inertia: Some(1.0),
+                    spring_stiffness: 1.0,
+                    spring_preload: 1.0,
+                    ..Default::default()
+                })
+            },
+            Field::Dynamics(DynamicsField::Inertia),
+            "takes `mass`",
+        ),
+    ];
+    for (edit, field, value) in cases {
+        let mut s = circle_spec(flat());
+        edit(&mut s);
+        let e = Mechanism::try_from(s).unwrap_err();
+        assert_eq!(e.field(), field, "{e}");
+        assert!(e.to_string().contains(value), "{e} lacks {value:?}");
+        assert!(
+            e.to_string().starts_with(&field.to_string()) || e.to_string().starts_with('['),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn motion_spec_errors_name_the_segment() {
+    let mut s = circle_spec(FollowerSpec {
+        kind: "translating-roller".into(),
+        roller_radius: Some(1.0),
+        ..Default::default()
+    });
+    s.cam.profile = ProfileSpec {
+        kind: "motion".into(),
+        base_radius: Some(4.0),
+        segments: Some(vec![
+            SegmentSpec {
+                law: "cycloidal".into(),
+                rise: Some(1.0),
+                degrees: 180.0,
+            },
+            SegmentSpec {
+                law: "parabolic".into(),
+                rise: Some(-1.0),
+                degrees: 180.0,
+            },
+        ]),
+        ..Default::default()
+    };
+    let e = Mechanism::try_from(s.clone()).unwrap_err();
+    assert_eq!(
+        e.field(),
+        Field::Profile(ProfileField::Segment(1, SegmentField::Law))
+    );
+    assert_eq!(e.field().to_string(), "cam.profile.segments[1].law");
+    s.cam.profile.segments.as_mut().unwrap()[1].law = "3-4-5".into();
+    let m = Mechanism::try_from(s).unwrap();
+    assert!(
+        m.cam().synthesis().is_some(),
+        "a motion profile keeps its synthesis"
+    );
+}
+
+#[cfg(feature = "serde")]
+#[test]
+fn specs_round_trip_through_json() {
+    let s = circle_spec(FollowerSpec {
+        kind: "oscillating-roller".into(),
+        pivot: Some([-3.0, 7.0]),
+        arm_length: Some(9.0),
+        roller_radius: Some(1.0),
+        ..Default::default()
+    });
+    let json = serde_json::to_string(&s).unwrap();
+    let back: MechanismSpec = serde_json::from_str(&json).unwrap();
+    assert_eq!(back, s);
+    assert!(!json.contains("null"), "absent fields are left out: {json}");
+    let bad = json.replace("\"arm_length\"", "\"arm_lenght\"");
+    let err = serde_json::from_str::<MechanismSpec>(&bad)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("arm_lenght"), "{err}");
+}
+
+#[test]
+fn spec_errors_are_not_panics_for_any_kind_without_its_fields() {
+    for kind in Follower::KIND_NAMES {
+        let e = Mechanism::try_from(circle_spec(FollowerSpec {
+            kind: kind.into(),
+            ..Default::default()
+        }));
+        if let Err(e) = e {
+            assert!(matches!(e, SpecError::Missing { .. }), "{kind}: {e}");
+        }
+    }
+}
