@@ -126,6 +126,7 @@ pub struct Pairing {
 
 /// Why the contact could not be computed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum ContactError {
     /// `D = κ_B − σ κ_A = 0`: the contact point is not determined by the geometry.
     #[error("conformal contact at ({x}, {y}): κ_A = {kappa_a}, κ_B = {kappa_b}, σ = {sigma}; the contact point is not determined by the geometry", x = point.x, y = point.y)]

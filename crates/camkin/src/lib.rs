@@ -70,6 +70,7 @@ pub mod cam;
 pub mod contact;
 pub mod curve;
 pub mod dynamics;
+mod error;
 pub mod field;
 pub mod geometry;
 pub mod interp;
@@ -79,4 +80,5 @@ pub mod reference;
 pub mod spec;
 
 pub use body::{BodyState, Frame, Pose};
+pub use error::Error;
 pub use geometry::{Point2, Vec2};

@@ -242,6 +242,7 @@ pub struct Discontinuity {
 
 /// What is wrong with a motion program.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum MotionError {
     /// No segments.
     #[error("a motion program needs at least one segment")]

@@ -5,7 +5,7 @@
 
 use super::follower::Kind as _;
 use super::jet::{scale, Jet, Num, V2};
-use super::{CamError, Mechanism, Touch};
+use super::{CamError, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
 use crate::geometry::{Rot, Vec2};
 
@@ -40,7 +40,7 @@ impl Mechanism {
         if !(det.abs() > 0.0 && det.is_finite()) {
             return Err(CamError::NoConvergence {
                 angle_deg: theta.to_degrees(),
-                reason: "singular tangency Jacobian",
+                reason: StopReason::SingularJacobian,
             });
         }
         let mut u = [0.0; 4];

@@ -6,6 +6,7 @@ use crate::field::Field;
 
 /// What went wrong in building or analysing a mechanism.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum CamError {
     /// A curve could not be built.
     #[error(transparent)]
@@ -65,8 +66,8 @@ pub enum CamError {
     NoConvergence {
         /// cam angle, degrees
         angle_deg: f64,
-        /// the stopping reason
-        reason: &'static str,
+        /// why the search stopped
+        reason: StopReason,
     },
     /// The follower can never touch the cam.
     #[error("{field} = {value}: {reason}")]
@@ -96,4 +97,33 @@ pub enum CamError {
         /// the contact error
         source: ContactError,
     },
+}
+
+/// Why the first-touch search stopped without an answer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum StopReason {
+    /// the tangency Jacobian is singular (or not finite) at an iterate
+    SingularJacobian,
+    /// Newton's iteration limit was reached
+    IterationLimit,
+    /// Newton converged to a tangency that is not the first touch (the cam's back side, a roller
+    /// touching from inside)
+    NotFirstTouch,
+    /// the bracketing found no start
+    NoCandidate,
+    /// the refined contact is behind a sampled point of the first-touch function
+    BehindSample,
+}
+
+impl std::fmt::Display for StopReason {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            StopReason::SingularJacobian => "singular tangency Jacobian",
+            StopReason::IterationLimit => "iteration limit reached",
+            StopReason::NotFirstTouch => "Newton reached a tangency that is not the first touch",
+            StopReason::NoCandidate => "no candidate",
+            StopReason::BehindSample => "refined contact is behind a sampled one",
+        })
+    }
 }

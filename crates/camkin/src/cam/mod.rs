@@ -28,7 +28,7 @@ mod sweep;
 pub mod synthesis;
 
 pub use checks::Check;
-pub use error::CamError;
+pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, Joint, Sense};
 pub use options::AnalysisOptions;
 pub use search::MAX_CANDIDATES;

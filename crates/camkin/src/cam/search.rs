@@ -3,7 +3,7 @@
 //! local maxima refined by Newton).
 
 use super::follower::Kind as _;
-use super::{CamError, Mechanism};
+use super::{CamError, Mechanism, StopReason};
 use crate::body::{Frame, WorldDerivs};
 
 /// A converged first touch: cam parameter and follower position.
@@ -60,7 +60,7 @@ impl Mechanism {
             if !(du.is_finite() && dq.is_finite()) {
                 return Err(CamError::NoConvergence {
                     angle_deg: theta.to_degrees(),
-                    reason: "singular tangency Jacobian",
+                    reason: StopReason::SingularJacobian,
                 });
             }
             // a step stays within a fraction of the period (safeguard against wild steps)
@@ -79,7 +79,7 @@ impl Mechanism {
         }
         Err(CamError::NoConvergence {
             angle_deg: theta.to_degrees(),
-            reason: "iteration limit reached",
+            reason: StopReason::IterationLimit,
         })
     }
 
@@ -238,7 +238,7 @@ impl Mechanism {
                 Ok(_) => {
                     last_err = Some(CamError::NoConvergence {
                         angle_deg: theta.to_degrees(),
-                        reason: "Newton reached a tangency that is not the first touch",
+                        reason: StopReason::NotFirstTouch,
                     })
                 }
                 Err(e) => last_err = Some(e),
@@ -247,14 +247,14 @@ impl Mechanism {
         let best = best.ok_or_else(|| {
             last_err.unwrap_or(CamError::NoConvergence {
                 angle_deg: theta.to_degrees(),
-                reason: "no candidate",
+                reason: StopReason::NoCandidate,
             })
         })?;
         // the refined touch can only be later than (or equal to) a sampled one
         if self.oriented(best.q) < best_sample - self.touch_slack() {
             return Err(CamError::NoConvergence {
                 angle_deg: theta.to_degrees(),
-                reason: "refined contact is behind a sampled one",
+                reason: StopReason::BehindSample,
             });
         }
         Ok(best)

@@ -135,6 +135,7 @@ pub trait Curve: std::fmt::Debug + Send + Sync + std::any::Any {
 
 /// What is wrong with the data a curve was asked to be built from.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum CurveError {
     /// A closed spline needs at least three nodes.
     #[error("a closed spline needs at least 3 points, got {count}")]

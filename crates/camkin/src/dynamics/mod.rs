@@ -38,6 +38,7 @@ pub use solver::{AugmentedLagrangian, Evaluation};
 
 /// What went wrong in a dynamic simulation.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum DynamicsError {
     /// A contact's kinematics could not be computed.
     #[error("at t = {time} s: {source}")]
