@@ -1,18 +1,11 @@
 //! Validation of a [`MechanismSpec`] and the mechanism it describes.
 
-use super::{DynamicsSpec, FollowerSpec, MechanismSpec, ProfileSpec};
-use crate::cam::synthesis::synthesize;
+use super::{DynamicsSpec, FollowerSpec, MechanismSpec};
 use crate::cam::{Cam, CamError, Follower, Mechanism, Sense};
-use crate::curve::{
-    read_points_file, Circle, ClosedSpline, Curve, CurveError, Ellipse, Parameterization,
-    MAX_POINTS,
-};
 use crate::dynamics::FollowerDynamics;
-use crate::field::{CamField, DynamicsField, Field, FollowerField, ProfileField, SegmentField};
-use crate::motion::{Law, Program, Segment};
+use crate::field::{CamField, DynamicsField, Field, FollowerField, ProfileField};
 use crate::{Point2, Vec2};
-use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::path::PathBuf;
 
 /// The unit of a mechanism's lengths.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -154,7 +147,7 @@ impl SpecError {
     }
 }
 
-fn vector(v: [f64; 2]) -> String {
+pub(super) fn vector(v: [f64; 2]) -> String {
     format!("[{}, {}]", v[0], v[1])
 }
 
@@ -210,9 +203,9 @@ impl TryFrom<MechanismSpec> for Mechanism {
 }
 
 /// The fields of a table present in a spec, for the foreign-field check.
-type Present = [(&'static str, bool, Field)];
+pub(super) type Present = [(&'static str, bool, Field)];
 
-fn check_kind(
+pub(super) fn check_kind(
     kind_field: Field,
     kind: &str,
     present: &Present,
@@ -232,7 +225,7 @@ fn check_kind(
     Ok(())
 }
 
-fn need<T: Copy>(
+pub(super) fn need<T: Copy>(
     kind_field: Field,
     kind: &str,
     name: &'static str,
@@ -245,7 +238,7 @@ fn need<T: Copy>(
     })
 }
 
-fn finite(field: Field, x: f64) -> Result<f64, SpecError> {
+pub(super) fn finite(field: Field, x: f64) -> Result<f64, SpecError> {
     if x.is_finite() {
         Ok(x)
     } else {
@@ -257,7 +250,7 @@ fn finite(field: Field, x: f64) -> Result<f64, SpecError> {
     }
 }
 
-fn positive(field: Field, x: f64) -> Result<f64, SpecError> {
+pub(super) fn positive(field: Field, x: f64) -> Result<f64, SpecError> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
@@ -269,7 +262,7 @@ fn positive(field: Field, x: f64) -> Result<f64, SpecError> {
     }
 }
 
-fn non_negative(field: Field, x: f64) -> Result<f64, SpecError> {
+pub(super) fn non_negative(field: Field, x: f64) -> Result<f64, SpecError> {
     let x = finite(field, x)?;
     if x >= 0.0 {
         Ok(x)
@@ -282,7 +275,7 @@ fn non_negative(field: Field, x: f64) -> Result<f64, SpecError> {
     }
 }
 
-fn point(field: Field, v: [f64; 2]) -> Result<Point2, SpecError> {
+pub(super) fn point(field: Field, v: [f64; 2]) -> Result<Point2, SpecError> {
     if v[0].is_finite() && v[1].is_finite() {
         Ok(Point2::new(v[0], v[1]))
     } else {
@@ -294,7 +287,7 @@ fn point(field: Field, v: [f64; 2]) -> Result<Point2, SpecError> {
     }
 }
 
-fn direction(field: Field, v: [f64; 2]) -> Result<Vec2, SpecError> {
+pub(super) fn direction(field: Field, v: [f64; 2]) -> Result<Vec2, SpecError> {
     let p = point(field, v)?;
     if p.coords.norm() > 0.0 {
         Ok(p.coords)
@@ -482,299 +475,6 @@ impl FollowerSpec {
                 })
             }
         })
-    }
-}
-
-/// Where a spline's nodes came from, to place an error at a node.
-enum Nodes<'a> {
-    Inline,
-    File { path: &'a str, lines: &'a [usize] },
-}
-
-impl Nodes<'_> {
-    fn error(&self, node: usize, message: String) -> SpecError {
-        match self {
-            Nodes::Inline => SpecError::Rule {
-                field: Field::Profile(ProfileField::Point(node)),
-                reason: message,
-            },
-            Nodes::File { path, lines } => SpecError::PointsFile {
-                path: path.to_string(),
-                line: lines.get(node).copied(),
-                message,
-            },
-        }
-    }
-    fn whole(&self, message: String) -> SpecError {
-        match self {
-            Nodes::Inline => SpecError::Rule {
-                field: Field::Profile(ProfileField::Points),
-                reason: message,
-            },
-            Nodes::File { path, .. } => SpecError::PointsFile {
-                path: path.to_string(),
-                line: None,
-                message,
-            },
-        }
-    }
-}
-
-/// A closed spline through `nodes`, refusing repeated points and a self-intersecting curve.
-fn spline(
-    nodes: &[Point2],
-    param: Parameterization,
-    from: &Nodes<'_>,
-) -> Result<Arc<dyn Curve>, SpecError> {
-    let s = ClosedSpline::with_parameterization(nodes, param).map_err(|e| match e {
-        CurveError::TooFewPoints { count } => from.whole(format!(
-            "a closed spline needs at least 3 points, got {count}"
-        )),
-        CurveError::RepeatedPoint { index, next, x, y } => from.error(
-            next,
-            format!(
-                "points {index} and {next} coincide at ({x}, {y}); consecutive points must differ"
-            ),
-        ),
-        CurveError::NonFinitePoint { index, x, y } => {
-            from.error(index, format!("point {index} = ({x}, {y}) is not finite"))
-        }
-        other => from.whole(other.to_string()),
-    })?;
-    if let Some((ua, ub, p)) = s.self_intersection() {
-        let n = nodes.len();
-        let node_of = |u: f64| match param {
-            Parameterization::Uniform => (u.floor() as usize).min(n - 1),
-            _ => (0..s.segments())
-                .rev()
-                .find(|&i| s.node_param(i) <= u)
-                .unwrap_or(0),
-        };
-        let (i, j) = (node_of(ua), node_of(ub));
-        return Err(from.error(
-            i,
-            format!(
-                "the spline through the points crosses itself near ({:.6}, {:.6}), between points {i}–{} and {j}–{}",
-                p.x,
-                p.y,
-                (i + 1) % n,
-                (j + 1) % n
-            ),
-        ));
-    }
-    Ok(Arc::new(s))
-}
-
-/// The profile and, for `kind = "motion"`, its synthesis.
-type BuiltProfile = (
-    Arc<dyn Curve>,
-    Option<Arc<crate::cam::synthesis::SynthesizedProfile>>,
-);
-
-impl ProfileSpec {
-    fn build(
-        &self,
-        scale: f64,
-        base: &Path,
-        follower: &Follower,
-        sense: Sense,
-    ) -> Result<BuiltProfile, SpecError> {
-        use ProfileField as P;
-        let f = |x| Field::Profile(x);
-        let kind_field = f(P::Kind);
-        let kind = self.kind.as_str();
-        let present: &Present = &[
-            ("base_radius", self.base_radius.is_some(), f(P::BaseRadius)),
-            ("segments", self.segments.is_some(), f(P::Segments)),
-            ("points", self.points.is_some(), f(P::Points)),
-            (
-                "parameterization",
-                self.parameterization.is_some(),
-                f(P::Parameterization),
-            ),
-            ("center", self.center.is_some(), f(P::Center)),
-            ("radius", self.radius.is_some(), f(P::Radius)),
-            ("semi_axes", self.semi_axes.is_some(), f(P::SemiAxes)),
-            (
-                "rotation_deg",
-                self.rotation_deg.is_some(),
-                f(P::RotationDeg),
-            ),
-            ("path", self.path.is_some(), f(P::Path)),
-        ];
-        let param = self.parameterization.unwrap_or_default();
-        let scaled = |p: Point2| Point2::new(scale * p.x, scale * p.y);
-        let center = || -> Result<Point2, SpecError> {
-            Ok(scaled(point(
-                f(P::Center),
-                need(kind_field, kind, "center", self.center)?,
-            )?))
-        };
-        let curve: Arc<dyn Curve> = match kind {
-            "spline" => {
-                check_kind(kind_field, kind, present, &["points", "parameterization"])?;
-                let pts = self.points.as_ref().ok_or_else(|| SpecError::Missing {
-                    field: kind_field,
-                    kind: kind.to_string(),
-                    missing: "points",
-                })?;
-                if pts.len() > MAX_POINTS {
-                    return Err(SpecError::Rule {
-                        field: f(P::Points),
-                        reason: format!(
-                            "{} points is more than the {MAX_POINTS} allowed",
-                            pts.len()
-                        ),
-                    });
-                }
-                let nodes = pts
-                    .iter()
-                    .enumerate()
-                    .map(|(i, &q)| point(f(P::Point(i)), q).map(scaled))
-                    .collect::<Result<Vec<_>, _>>()?;
-                spline(&nodes, param, &Nodes::Inline)?
-            }
-            "circle" => {
-                check_kind(kind_field, kind, present, &["center", "radius"])?;
-                let c = center()?;
-                let r =
-                    scale * positive(f(P::Radius), need(kind_field, kind, "radius", self.radius)?)?;
-                Arc::new(Circle::new(c, r).map_err(|e| SpecError::Rule {
-                    field: kind_field,
-                    reason: e.to_string(),
-                })?)
-            }
-            "ellipse" => {
-                check_kind(
-                    kind_field,
-                    kind,
-                    present,
-                    &["center", "semi_axes", "rotation_deg"],
-                )?;
-                let c = center()?;
-                let ax = need(kind_field, kind, "semi_axes", self.semi_axes)?;
-                let [a, b] = ax;
-                if !(a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0) {
-                    return Err(SpecError::Invalid {
-                        field: f(P::SemiAxes),
-                        value: vector(ax),
-                        reason: "both must be positive and finite".into(),
-                    });
-                }
-                let rot = self
-                    .rotation_deg
-                    .map(|r| finite(f(P::RotationDeg), r))
-                    .transpose()?
-                    .unwrap_or(0.0);
-                Arc::new(
-                    Ellipse::new(c, scale * a, scale * b, rot.to_radians()).map_err(|e| {
-                        SpecError::Rule {
-                            field: kind_field,
-                            reason: e.to_string(),
-                        }
-                    })?,
-                )
-            }
-            "motion" => {
-                check_kind(kind_field, kind, present, &["base_radius", "segments"])?;
-                let rb = scale
-                    * positive(
-                        f(P::BaseRadius),
-                        need(kind_field, kind, "base_radius", self.base_radius)?,
-                    )?;
-                let segs = self.segments.as_ref().ok_or_else(|| SpecError::Missing {
-                    field: kind_field,
-                    kind: kind.to_string(),
-                    missing: "segments",
-                })?;
-                // rises: lengths for translating followers, degrees of arm angle for oscillating
-                let rise_scale = if follower.is_oscillating() {
-                    1f64.to_radians()
-                } else {
-                    scale
-                };
-                let mut list = Vec::with_capacity(segs.len());
-                for (i, sg) in segs.iter().enumerate() {
-                    let seg = |x| f(P::Segment(i, x));
-                    let law = Law::ALL
-                        .iter()
-                        .copied()
-                        .find(|l| l.name() == sg.law)
-                        .ok_or_else(|| SpecError::Unknown {
-                            field: seg(SegmentField::Law),
-                            value: sg.law.clone(),
-                            what: "a law",
-                            known: Law::ALL.map(|l| l.name()).join(", "),
-                        })?;
-                    let rise = sg
-                        .rise
-                        .map(|r| finite(seg(SegmentField::Rise), r))
-                        .transpose()?
-                        .unwrap_or(0.0);
-                    let degrees = positive(seg(SegmentField::Degrees), sg.degrees)?;
-                    list.push(Segment {
-                        law,
-                        rise: rise * rise_scale,
-                        extent: degrees.to_radians(),
-                    });
-                }
-                let program = Program::new(0.0, list).map_err(|e| SpecError::Rule {
-                    field: f(P::Segments),
-                    reason: e.to_string(),
-                })?;
-                let prof = Arc::new(synthesize(program, rb, follower, sense)?);
-                return Ok((prof.clone(), Some(prof)));
-            }
-            "points-file" => {
-                check_kind(kind_field, kind, present, &["path", "parameterization"])?;
-                let path = self.path.as_ref().ok_or_else(|| SpecError::Missing {
-                    field: kind_field,
-                    kind: kind.to_string(),
-                    missing: "path",
-                })?;
-                let full = base.join(path);
-                let file = full.display().to_string();
-                let (nodes, lines) = read_points_file(&full).map_err(|e| match e {
-                    CurveError::PointsFileIo { message, .. } => SpecError::Invalid {
-                        field: f(P::Path),
-                        value: format!("{path:?}"),
-                        reason: format!("cannot read {file}: {message}"),
-                    },
-                    CurveError::PointsFileSyntax {
-                        line,
-                        message,
-                        content,
-                    } => SpecError::PointsFile {
-                        path: file.clone(),
-                        line: Some(line),
-                        message: format!("{message}: {content:?}"),
-                    },
-                    other => SpecError::Invalid {
-                        field: f(P::Path),
-                        value: format!("{path:?}"),
-                        reason: other.to_string(),
-                    },
-                })?;
-                let nodes: Vec<Point2> = nodes.into_iter().map(scaled).collect();
-                spline(
-                    &nodes,
-                    param,
-                    &Nodes::File {
-                        path: &file,
-                        lines: &lines,
-                    },
-                )?
-            }
-            other => {
-                return Err(SpecError::Unknown {
-                    field: kind_field,
-                    value: other.to_string(),
-                    what: "a profile kind",
-                    known: "spline, circle, ellipse, points-file, motion".into(),
-                })
-            }
-        };
-        Ok((curve, None))
     }
 }
 

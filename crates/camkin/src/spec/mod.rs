@@ -37,6 +37,7 @@
 //! ```
 
 mod build;
+mod profile;
 
 pub use crate::field::{
     CamField, DynamicsField, Field, FollowerField, Key, ProfileField, SegmentField,
