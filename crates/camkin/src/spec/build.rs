@@ -205,12 +205,7 @@ impl TryFrom<MechanismSpec> for Mechanism {
 /// The fields of a table present in a spec, for the foreign-field check.
 pub(super) type Present = [(&'static str, bool, Field)];
 
-pub(super) fn check_kind(
-    kind_field: Field,
-    kind: &str,
-    present: &Present,
-    allowed: &[&str],
-) -> Result<(), SpecError> {
+pub(super) fn check_kind(kind: &str, present: &Present, allowed: &[&str]) -> Result<(), SpecError> {
     for &(name, here, field) in present {
         if here && !allowed.contains(&name) {
             return Err(SpecError::Foreign {
@@ -221,7 +216,6 @@ pub(super) fn check_kind(
             });
         }
     }
-    let _ = kind_field;
     Ok(())
 }
 
@@ -404,16 +398,11 @@ impl FollowerSpec {
         };
         Ok(match kind {
             "translating-flat" => {
-                check_kind(kind_field, kind, present, &["direction"])?;
+                check_kind(kind, present, &["direction"])?;
                 Follower::TranslatingFlat { direction: dir()? }
             }
             "translating-roller" => {
-                check_kind(
-                    kind_field,
-                    kind,
-                    present,
-                    &["direction", "offset", "roller_radius"],
-                )?;
+                check_kind(kind, present, &["direction", "offset", "roller_radius"])?;
                 let r = len(F::RollerRadius, "roller_radius", self.roller_radius)?;
                 Follower::TranslatingRoller {
                     direction: dir()?,
@@ -422,7 +411,7 @@ impl FollowerSpec {
                 }
             }
             "translating-knife" => {
-                check_kind(kind_field, kind, present, &["direction", "offset"])?;
+                check_kind(kind, present, &["direction", "offset"])?;
                 Follower::TranslatingKnife {
                     direction: dir()?,
                     offset: offset()?,
@@ -430,7 +419,6 @@ impl FollowerSpec {
             }
             "oscillating-flat" => {
                 check_kind(
-                    kind_field,
                     kind,
                     present,
                     &["pivot", "offset", "closing", "initial_angle_deg"],
@@ -444,7 +432,6 @@ impl FollowerSpec {
             }
             "oscillating-roller" => {
                 check_kind(
-                    kind_field,
                     kind,
                     present,
                     &[

@@ -141,7 +141,7 @@ impl ProfileSpec {
         };
         let curve: Arc<dyn Curve> = match kind {
             "spline" => {
-                check_kind(kind_field, kind, present, &["points", "parameterization"])?;
+                check_kind(kind, present, &["points", "parameterization"])?;
                 let pts = self.points.as_ref().ok_or_else(|| SpecError::Missing {
                     field: kind_field,
                     kind: kind.to_string(),
@@ -164,7 +164,7 @@ impl ProfileSpec {
                 spline(&nodes, param, &Nodes::Inline)?
             }
             "circle" => {
-                check_kind(kind_field, kind, present, &["center", "radius"])?;
+                check_kind(kind, present, &["center", "radius"])?;
                 let c = center()?;
                 let r =
                     scale * positive(f(P::Radius), need(kind_field, kind, "radius", self.radius)?)?;
@@ -174,12 +174,7 @@ impl ProfileSpec {
                 })?)
             }
             "ellipse" => {
-                check_kind(
-                    kind_field,
-                    kind,
-                    present,
-                    &["center", "semi_axes", "rotation_deg"],
-                )?;
+                check_kind(kind, present, &["center", "semi_axes", "rotation_deg"])?;
                 let c = center()?;
                 let ax = need(kind_field, kind, "semi_axes", self.semi_axes)?;
                 let [a, b] = ax;
@@ -205,7 +200,7 @@ impl ProfileSpec {
                 )
             }
             "motion" => {
-                check_kind(kind_field, kind, present, &["base_radius", "segments"])?;
+                check_kind(kind, present, &["base_radius", "segments"])?;
                 let rb = scale
                     * positive(
                         f(P::BaseRadius),
@@ -255,7 +250,7 @@ impl ProfileSpec {
                 return Ok((prof.clone(), Some(prof)));
             }
             "points-file" => {
-                check_kind(kind_field, kind, present, &["path", "parameterization"])?;
+                check_kind(kind, present, &["path", "parameterization"])?;
                 let path = self.path.as_ref().ok_or_else(|| SpecError::Missing {
                     field: kind_field,
                     kind: kind.to_string(),
