@@ -4,7 +4,7 @@
 
 use camkin::cam::{FollowerCurve, FollowerState, Joint, Mechanism};
 use camkin::curve::Domain;
-use camkin::geometry::{perp, Rot};
+use camkin::geometry::{rot90, Rotation};
 use camkin::{Point2, Vec2};
 use std::fmt::Write as _;
 
@@ -86,7 +86,7 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
     });
     shapes.push(segment(
         axis,
-        axis + Rot::new(body.pose.angle).apply(Vec2::new(0.25 * size, 0.0)),
+        axis + Rotation::new(body.pose.angle) * Vec2::new(0.25 * size, 0.0),
         CAM,
         1,
     ));
@@ -94,7 +94,7 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
     let c = s.contact_world;
     follower_shapes(mech, s.position, c, size, &mut shapes);
     let nl = 0.35 * size;
-    shapes.push(segment(c - nl * s.normal, c + nl * s.normal, NORMAL, 1));
+    shapes.push(segment(c - nl * *s.normal, c + nl * *s.normal, NORMAL, 1));
     shapes.push(Shape::Dot {
         p: c,
         color: CONTACT,
@@ -108,13 +108,13 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
 /// direction of travel, or an arm from the pivot).
 fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &mut Vec<Shape>) {
     let (pose, _) = mech.follower_body(q);
-    let rot = Rot::new(pose.angle);
+    let rot = Rotation::new(pose.angle);
     let joint = mech.follower_joint();
     // where the joint attaches to the curve, and how far the curve reaches beyond it along `d`
     let (attach, reach) = match mech.follower_curve() {
         FollowerCurve::Line(l) => {
             let a = pose.to_world(l.anchor());
-            let t = rot.apply(l.direction());
+            let t = rot * l.direction();
             let uc = (c - a).dot(&t);
             let (lo, hi) = (uc.min(0.0) - 0.4 * size, uc.max(0.0) + 0.4 * size);
             shapes.push(segment(a + lo * t, a + hi * t, FOLLOWER, 3));
@@ -133,12 +133,12 @@ fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &mut 
         FollowerCurve::Point(p) => {
             let tip = pose.to_world(p.at());
             let away = match joint {
-                Joint::Translating { direction, .. } => direction,
+                Joint::Translating { direction, .. } => *direction,
                 _ => (tip - c).try_normalize(0.0).unwrap_or(Vec2::x()),
             };
             let (w, back) = (0.06 * size, tip + 0.2 * size * away);
             shapes.push(Shape::Polyline {
-                pts: vec![tip, back + w * perp(away), back - w * perp(away)],
+                pts: vec![tip, back + w * rot90(away), back - w * rot90(away)],
                 color: FOLLOWER,
                 width: 2,
                 closed: true,
@@ -151,7 +151,7 @@ fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &mut 
         Joint::Translating { direction, .. } => {
             shapes.push(segment(
                 attach,
-                attach + (reach + 0.8 * size) * direction,
+                attach + (reach + 0.8 * size) * *direction,
                 FOLLOWER,
                 3,
             ));

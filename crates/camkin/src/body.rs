@@ -3,7 +3,7 @@
 //! Conventions: see the [crate docs](crate#sign-conventions).
 
 use crate::curve::{Curve, Derivs};
-use crate::geometry::{perp, Point2, Rot, Vec2};
+use crate::geometry::{rot90, Frame, Point2, Rotation, Vec2};
 
 /// Where a body is: origin `p` (length) and angle `θ` (rad, counter-clockwise).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -21,11 +21,22 @@ impl Pose {
     }
     /// A body point `r` in the world: `p + R(θ) r`.
     pub fn to_world(&self, r: Point2) -> Point2 {
-        self.origin + Rot::new(self.angle).apply(r.coords)
+        self.frame() * r
     }
     /// A world point in the body frame: `R(θ)ᵀ (x − p)`.
     pub fn to_body(&self, x: Point2) -> Point2 {
-        Point2::from(Rot::new(self.angle).apply_inverse(x - self.origin))
+        self.frame().inverse_transform_point(&x)
+    }
+    /// The body frame as an isometry (its rotation's cosine and sine computed once).
+    #[inline]
+    pub fn frame(&self) -> Frame {
+        // a translating body's angle is exactly 0: skip the sin_cos
+        let rotation = if self.angle == 0.0 {
+            Rotation::identity()
+        } else {
+            Rotation::new(self.angle)
+        };
+        Frame::from_parts(self.origin.coords.into(), rotation)
     }
 }
 
@@ -96,7 +107,7 @@ impl BodyState {
     /// Velocity of the material point of this body at world point `x`: `ṗ + ω k × (x − p)`.
     #[inline]
     pub fn velocity_at(&self, x: Point2) -> Vec2 {
-        self.velocity + self.omega * perp(x - self.pose.origin)
+        self.velocity + self.omega * rot90(x - self.pose.origin)
     }
 
     /// Acceleration of the material point at world point `x`:
@@ -104,62 +115,52 @@ impl BodyState {
     #[inline]
     pub fn acceleration_at(&self, x: Point2) -> Vec2 {
         let r = x - self.pose.origin;
-        self.acceleration + self.alpha * perp(r) - self.omega * self.omega * r
+        self.acceleration + self.alpha * rot90(r) - self.omega * self.omega * r
     }
 
     /// The curve at `u`, in the world frame.
     #[inline]
     pub fn eval_curve(&self, curve: &dyn Curve, u: f64) -> WorldDerivs {
-        self.frame().eval(curve, u)
+        self.frame().curve_at(curve, u)
     }
 
     /// The body frame with its rotation computed once, for evaluating many curve points.
     #[inline]
     pub fn frame(&self) -> Frame {
-        Frame {
-            origin: self.pose.origin,
-            rot: Rot::new(self.pose.angle),
-        }
+        self.pose.frame()
     }
 }
 
-/// A body frame at one instant: origin and rotation (cosine and sine computed once).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Frame {
-    /// the frame's origin in the world
-    pub origin: Point2,
-    /// its rotation
-    pub rot: Rot,
-}
-
-impl Frame {
+/// Curves seen through a body [`Frame`].
+pub trait CurveInFrame {
     /// Body-frame derivatives expressed in the world frame.
+    fn derivs_to_world(&self, d: &Derivs) -> WorldDerivs;
+    /// The curve at `u`, in the world frame.
+    fn curve_at(&self, curve: &dyn Curve, u: f64) -> WorldDerivs;
+    /// Only the world position of the curve at `u`.
+    fn curve_position(&self, curve: &dyn Curve, u: f64) -> Point2;
+}
+
+impl CurveInFrame for Frame {
     #[inline]
-    pub fn to_world(&self, d: &Derivs) -> WorldDerivs {
+    fn derivs_to_world(&self, d: &Derivs) -> WorldDerivs {
+        let r = &self.rotation;
         WorldDerivs {
-            p: self.origin + self.rot.apply(d.p.coords),
-            d1: self.rot.apply(d.d1),
-            d2: self.rot.apply(d.d2),
-            d3: self.rot.apply(d.d3),
+            p: self * d.p,
+            d1: r * d.d1,
+            d2: r * d.d2,
+            d3: r * d.d3,
         }
     }
 
-    /// The curve at `u`, in the world frame.
     #[inline]
-    pub fn eval(&self, curve: &dyn Curve, u: f64) -> WorldDerivs {
-        self.to_world(&curve.eval(u))
+    fn curve_at(&self, curve: &dyn Curve, u: f64) -> WorldDerivs {
+        self.derivs_to_world(&curve.eval(u))
     }
 
-    /// Only the world position of the curve at `u`.
     #[inline]
-    pub fn position(&self, curve: &dyn Curve, u: f64) -> Point2 {
-        self.origin + self.rot.apply(curve.position(u).coords)
-    }
-
-    /// A world point in the body frame.
-    #[inline]
-    pub fn to_body(&self, x: Point2) -> Point2 {
-        Point2::from(self.rot.apply_inverse(x - self.origin))
+    fn curve_position(&self, curve: &dyn Curve, u: f64) -> Point2 {
+        self * curve.position(u)
     }
 }
 
@@ -181,7 +182,7 @@ mod tests {
         let x = |t: f64| {
             let p = p0 + v0 * t + 0.5 * a0 * t * t;
             let th = th0 + w0 * t + 0.5 * al * t * t;
-            p + Rot::new(th).apply(r)
+            p + crate::geometry::Rotation::new(th) * r
         };
         let b = BodyState {
             pose: Pose::new(Point2::from(p0), th0),

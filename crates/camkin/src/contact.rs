@@ -31,9 +31,10 @@
 //! size, a flat on a flat): the contact point is not determined by the geometry and
 //! [`ContactError::Conformal`] is returned rather than a division.
 
-use crate::body::{BodyState, Frame, WorldDerivs};
+use crate::body::{BodyState, CurveInFrame, WorldDerivs};
 use crate::curve::{Curve, Domain};
-use crate::geometry::{cross, perp, Point2, Vec2};
+use crate::geometry::Frame;
+use crate::geometry::{cross, rot90, Point2, UnitVec2, Vec2};
 
 /// A curve carried by a body at one instant.
 #[derive(Debug, Clone, Copy)]
@@ -59,7 +60,7 @@ impl<'a> Surface<'a> {
     }
     #[inline]
     fn eval(&self, u: f64) -> WorldDerivs {
-        self.frame.eval(self.curve, u)
+        self.frame.curve_at(self.curve, u)
     }
 }
 
@@ -117,7 +118,7 @@ pub struct Pairing {
     /// B's pairing point, world frame
     pub point_b: Point2,
     /// the common normal `ν_A` (unit, world frame; see the [module docs](crate::contact))
-    pub normal: Vec2,
+    pub normal: UnitVec2,
     /// `ν·(x_A − x_B)`, length: > 0 apart, < 0 overlapping, for curves oriented material-on-the-left
     pub gap: f64,
     /// Newton iterations used (0 when the pairing was given, not searched)
@@ -177,11 +178,12 @@ pub enum ContactError {
 pub fn pairing_at(a: &Surface<'_>, b: &Surface<'_>, u_a: f64, u_b: f64) -> Pairing {
     let ea = a.eval(u_a);
     let eb = b.eval(u_b);
-    let normal = if a.is_point() {
+    // a unit vector by construction (`Derivs::normal`)
+    let normal = UnitVec2::new_unchecked(if a.is_point() {
         -eb.as_derivs().normal()
     } else {
         ea.as_derivs().normal()
-    };
+    });
     Pairing {
         u_a,
         u_b,
@@ -404,7 +406,7 @@ pub struct ContactKinematics {
     /// the contact point `c` (A's pairing point), length
     pub point: Point2,
     /// the common normal `ν_A` (unit)
-    pub normal: Vec2,
+    pub normal: UnitVec2,
     /// A's unit tangent at `c`
     pub tangent_a: Vec2,
     /// `σ = t_A·t_B = ±1`. When a curve is a point it is −1: with B a point it multiplies zeros;
@@ -553,7 +555,7 @@ impl ContactKinematics {
         let c = pairing.point_a;
         let inv_ga = 1.0 / g_a;
         let t_a = ea.d1 * inv_ga;
-        let nu = perp(t_a);
+        let nu = rot90(t_a);
         let kappa_a = cross(ea.d1, ea.d2) * (inv_ga * inv_ga * inv_ga);
         let (wa, wb) = (body_a.omega, body_b.omega);
         let va = body_a.velocity_at(c);
@@ -589,7 +591,7 @@ impl ContactKinematics {
             nu.dot(&(wa * wa * ra - wb * wb * rb)) - 2.0 * wa * sa - kappa_a * sa * sa + b_terms;
         Ok(Self {
             point: c,
-            normal: nu,
+            normal: UnitVec2::new_unchecked(nu),
             tangent_a: t_a,
             sigma,
             kappa_a,
@@ -606,10 +608,10 @@ impl ContactKinematics {
             phi_q: [
                 nu.x,
                 nu.y,
-                nu.dot(&perp(ra)),
+                nu.dot(&rot90(ra)),
                 -nu.x,
                 -nu.y,
-                -nu.dot(&perp(rb)),
+                -nu.dot(&rot90(rb)),
             ],
             gamma,
             omega_a: wa,

@@ -9,9 +9,10 @@ pub type Point2 = nalgebra::Point2<f64>;
 /// A displacement, velocity, acceleration or direction in the plane.
 pub type Vec2 = nalgebra::Vector2<f64>;
 
-/// `k × v`: `v` turned by +90° (counter-clockwise). The left normal of a tangent `t` is `perp(t)`.
+/// `k × v`: `v` turned by +90° (counter-clockwise). The left normal of a tangent `t` is `rot90(t)`.
+/// (nalgebra's `Vector2::perp` is the scalar cross product, [`cross`] here.)
 #[inline]
-pub fn perp(v: Vec2) -> Vec2 {
+pub fn rot90(v: Vec2) -> Vec2 {
     Vec2::new(-v.y, v.x)
 }
 
@@ -21,44 +22,14 @@ pub fn cross(a: Vec2, b: Vec2) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
-/// A rotation by `angle` radians (counter-clockwise positive), stored as its cosine and sine.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Rot {
-    /// cos of the angle
-    pub cos: f64,
-    /// sin of the angle
-    pub sin: f64,
-}
+/// A planar rotation (nalgebra's unit complex number: its cosine and sine, computed once).
+pub type Rotation = nalgebra::UnitComplex<f64>;
 
-impl Rot {
-    /// The rotation by `angle` radians.
-    #[inline]
-    pub fn new(angle: f64) -> Self {
-        if angle == 0.0 {
-            return Self { cos: 1.0, sin: 0.0 };
-        }
-        let (sin, cos) = angle.sin_cos();
-        Self { cos, sin }
-    }
+/// A body frame at one instant: a rotation followed by a translation, `x = p + R r`.
+pub type Frame = nalgebra::Isometry2<f64>;
 
-    /// `R v`.
-    #[inline]
-    pub fn apply(&self, v: Vec2) -> Vec2 {
-        Vec2::new(
-            self.cos * v.x - self.sin * v.y,
-            self.sin * v.x + self.cos * v.y,
-        )
-    }
-
-    /// `Rᵀ v` (the inverse rotation).
-    #[inline]
-    pub fn apply_inverse(&self, v: Vec2) -> Vec2 {
-        Vec2::new(
-            self.cos * v.x + self.sin * v.y,
-            -self.sin * v.x + self.cos * v.y,
-        )
-    }
-}
+/// A direction or normal that must have unit length.
+pub type UnitVec2 = nalgebra::Unit<Vec2>;
 
 /// The angle `a` shifted by a multiple of 2π into `(centre − π, centre + π]`.
 pub fn wrap_angle_near(a: f64, centre: f64) -> f64 {
@@ -84,16 +55,16 @@ mod tests {
 
     #[test]
     fn rotation_round_trips_and_is_ccw() {
-        let r = Rot::new(std::f64::consts::FRAC_PI_2);
-        let v = r.apply(Vec2::new(1.0, 0.0));
+        let r = Rotation::new(std::f64::consts::FRAC_PI_2);
+        let v = r * Vec2::new(1.0, 0.0);
         assert_relative_eq!(v, Vec2::new(0.0, 1.0), epsilon = 1e-15);
         let w = Vec2::new(0.3, -2.0);
-        assert_relative_eq!(r.apply_inverse(r.apply(w)), w, epsilon = 1e-15);
+        assert_relative_eq!(r.inverse() * (r * w), w, epsilon = 1e-15);
     }
 
     #[test]
-    fn perp_is_left_normal_and_cross_is_signed() {
-        assert_eq!(perp(Vec2::new(1.0, 0.0)), Vec2::new(0.0, 1.0));
+    fn rot90_is_left_normal_and_cross_is_signed() {
+        assert_eq!(rot90(Vec2::new(1.0, 0.0)), Vec2::new(0.0, 1.0));
         assert_eq!(cross(Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.0)), 1.0);
         assert_eq!(cross(Vec2::new(0.0, 1.0), Vec2::new(1.0, 0.0)), -1.0);
     }

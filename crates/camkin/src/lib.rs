@@ -79,6 +79,7 @@ pub(crate) mod periodic;
 pub mod reference;
 pub mod spec;
 
-pub use body::{BodyState, Frame, Pose};
+pub use body::{BodyState, CurveInFrame, Pose};
 pub use error::Error;
+pub use geometry::{Frame, Rotation, UnitVec2};
 pub use geometry::{Point2, Vec2};

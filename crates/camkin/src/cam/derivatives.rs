@@ -7,7 +7,7 @@ use super::follower::Kind as _;
 use super::jet::{scale, Jet, Num, V2};
 use super::{CamError, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
-use crate::geometry::{Rot, Vec2};
+use crate::geometry::{Rotation, Vec2};
 
 impl Mechanism {
     /// `(dq/dθ, d²q/dθ², d³q/dθ³)` at cam angle `theta` (rad) by implicit differentiation of the
@@ -29,7 +29,7 @@ impl Mechanism {
         let profile = self.cam.profile.as_ref();
         let r = profile.eval(touch.u);
         let s = self.cam.direction.sign();
-        let rot0 = Rot::new(s * theta);
+        let rot0 = Rotation::new(s * theta);
         // R(s ε) as jets: cos(sε) = 1 − ε²/2, sin(sε) = s ε − s ε³/6 (s = ±1)
         let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
         let j = self
@@ -48,8 +48,8 @@ impl Mechanism {
         let world = |x: Jet, y: Jet, origin: Vec2| {
             let (ax, ay) = (ce * x - se * y, se * x + ce * y);
             V2::new(
-                Jet::c(origin.x) + scale(ax, rot0.cos) - scale(ay, rot0.sin),
-                Jet::c(origin.y) + scale(ax, rot0.sin) + scale(ay, rot0.cos),
+                Jet::c(origin.x) + scale(ax, rot0.cos_angle()) - scale(ay, rot0.sin_angle()),
+                Jet::c(origin.y) + scale(ax, rot0.sin_angle()) + scale(ay, rot0.cos_angle()),
             )
         };
         for k in 1..=3 {

@@ -4,9 +4,9 @@
 
 use super::state::pressure_angle;
 use super::{CamError, FollowerState, Found, Mechanism, Motion, Touch};
-use crate::body::{BodyState, Frame, WorldDerivs};
+use crate::body::{BodyState, CurveInFrame, WorldDerivs};
 use crate::contact::{ContactKinematics, Pairing};
-use crate::geometry::Vec2;
+use crate::geometry::{Frame, UnitVec2, Vec2};
 
 /// The shared part of an analysis at a converged touch.
 struct Core {
@@ -57,7 +57,7 @@ impl Mechanism {
         let profile = self.cam.profile.as_ref();
         let angle_deg = theta.to_degrees();
         let body_a = profile.eval(touch.u);
-        let ea = frame.to_world(&body_a);
+        let ea = frame.derivs_to_world(&body_a);
         let c = ea.p;
         let nu = ea.as_derivs().normal();
         let jb = g.joint.velocity_jacobian(c);
@@ -77,7 +77,7 @@ impl Mechanism {
             u_b,
             point_a: c,
             point_b: eb.p,
-            normal: nu,
+            normal: UnitVec2::new_unchecked(nu),
             gap: nu.dot(&(c - eb.p)),
             iterations: 0,
         };
@@ -153,7 +153,7 @@ impl Mechanism {
             sliding_rate_follower: k.sliding_rate_b,
             normal_acceleration_cam: k.normal_acceleration_a(cam),
             normal_acceleration_follower: k.normal_acceleration_b(&body_b),
-            normal: nu,
+            normal: UnitVec2::new_unchecked(nu),
             sigma: k.sigma,
             follower_motion: jb,
             radius_of_curvature: 1.0 / kappa_conv,

@@ -136,7 +136,7 @@ impl Mechanism {
         out
     }
 
-    /// The follower's body frame at position `q` (translating: origin at `pivot + e·perp(d) +
+    /// The follower's body frame at position `q` (translating: origin at `pivot + e·rot90(d) +
     /// q·d`, angle 0; oscillating: origin at the arm pivot, angle `q`) and its contact curve in that
     /// frame (face: a line, roller: a circle, knife: a point; oriented material-on-the-left).
     pub fn follower_body(&self, q: f64) -> (crate::body::Pose, Arc<dyn Curve>) {

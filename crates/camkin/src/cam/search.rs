@@ -4,7 +4,8 @@
 
 use super::follower::Kind as _;
 use super::{CamError, Mechanism, StopReason};
-use crate::body::{Frame, WorldDerivs};
+use crate::body::{CurveInFrame, WorldDerivs};
+use crate::geometry::Frame;
 
 /// A converged first touch: cam parameter and follower position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,7 +53,7 @@ impl Mechanism {
         let qs = self.q_scale();
         let lim = self.options.max_step_fraction * self.period;
         for _ in 0..self.options.max_iterations {
-            let e = frame.eval(profile, u);
+            let e = frame.curve_at(profile, u);
             let (f, j) = self.geometry.residual(&e, q);
             let inv_det = 1.0 / (j[0][0] * j[1][1] - j[0][1] * j[1][0]);
             let du = (-f[0] * j[1][1] + f[1] * j[0][1]) * inv_det;
@@ -86,7 +87,7 @@ impl Mechanism {
     /// True when `(u, q)` is the follower's first touch through that cam point (not another
     /// tangency such as the cam's back side or a roller touching from inside).
     pub(crate) fn is_first_touch(&self, frame: &Frame, t: &Touch) -> bool {
-        self.is_first_touch_at(&frame.eval(self.cam.profile.as_ref(), t.u), t.q)
+        self.is_first_touch_at(&frame.curve_at(self.cam.profile.as_ref(), t.u), t.q)
     }
 
     /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
@@ -109,7 +110,7 @@ impl Mechanism {
     #[inline]
     pub(crate) fn faces_follower(&self, e: &WorldDerivs, q: f64) -> bool {
         // outward normal ∝ −orientation · k × r'
-        let outward = -self.orientation * crate::geometry::perp(e.d1);
+        let outward = -self.orientation * crate::geometry::rot90(e.d1);
         outward.dot(&self.geometry.model.toward_follower(e.p, q)) > 0.0
     }
 
@@ -126,7 +127,7 @@ impl Mechanism {
         };
         let profile = self.cam.profile.as_ref();
         let n = s.len();
-        let y = |k: usize| frame.position(profile, s[k]) - self.cam.pivot;
+        let y = |k: usize| frame.curve_position(profile, s[k]) - self.cam.pivot;
         let (y0, mut ya) = (y(0), y(0));
         let mut la = ya.dot(&p) - e;
         for k in 0..n {
@@ -150,7 +151,7 @@ impl Mechanism {
     fn score_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) -> f64 {
         let profile = self.cam.profile.as_ref();
         let n = s.len();
-        let score = |u: f64| self.geometry.model.score(frame.position(profile, u));
+        let score = |u: f64| self.geometry.model.score(frame.curve_position(profile, u));
         let val = |x: Option<(f64, f64)>| x.map_or(f64::NEG_INFINITY, |x| x.0);
         let first = score(s[0]);
         let (mut prev, mut cur) = (score(s[n - 1]), first);
@@ -174,7 +175,7 @@ impl Mechanism {
         let profile = self.cam.profile.as_ref();
         let mut best: Option<(f64, f64, f64)> = None;
         for &u in s {
-            if let Some((sc, q)) = self.geometry.model.score(frame.position(profile, u)) {
+            if let Some((sc, q)) = self.geometry.model.score(frame.curve_position(profile, u)) {
                 if best.is_none_or(|b| sc > b.0) {
                     best = Some((sc, u, q));
                 }

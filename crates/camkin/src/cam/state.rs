@@ -2,7 +2,7 @@
 
 use super::Found;
 use crate::contact::NormalAcceleration;
-use crate::geometry::{cross, Point2, Vec2};
+use crate::geometry::{cross, Point2, UnitVec2, Vec2};
 
 /// The follower's motion and the contact at one cam angle.
 ///
@@ -46,7 +46,7 @@ pub struct FollowerState {
     /// normal acceleration seen from the follower (eq. 2), along `normal`
     pub normal_acceleration_follower: NormalAcceleration,
     /// the common normal `ν_A` (cam profile's left normal), world frame
-    pub normal: Vec2,
+    pub normal: UnitVec2,
     /// `σ`
     pub sigma: f64,
     /// direction of motion of the follower's material point under the contact per unit rate of
@@ -96,6 +96,6 @@ impl FollowerState {
     /// ([`FollowerState::follower_motion`]) to the contact normal oriented towards the follower,
     /// rad, counter-clockwise positive.
     pub fn pressure_angle(&self) -> f64 {
-        pressure_angle(self.follower_motion, self.normal)
+        pressure_angle(self.follower_motion, *self.normal)
     }
 }

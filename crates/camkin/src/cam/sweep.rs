@@ -8,7 +8,8 @@
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
-use crate::body::{BodyState, Frame};
+use crate::body::BodyState;
+use crate::geometry::Frame;
 
 /// How the contact at an angle was found.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -29,7 +29,7 @@ use super::jet::{scale, Jet};
 use super::{CamError, Follower, Sense};
 use crate::curve::{Curve, Derivs, Domain};
 use crate::field::{Field, ProfileField};
-use crate::geometry::{perp, Point2, Rot, Vec2};
+use crate::geometry::{rot90, Point2, Rotation, Vec2};
 use crate::motion::Program;
 
 /// A profile synthesised from a motion program.
@@ -99,12 +99,12 @@ impl SynthesizedProfile {
 
 /// `y, y', y'', y''', y''''` of `A w` given `w⁽ᵏ⁾`, k = 0..4 (world vectors), with
 /// `A = R(−σθ)` (`rot`) and `A' = −σ J A`.
-pub(crate) fn rotated_derivs(sigma: f64, rot: &Rot, w: &[Vec2; 5]) -> [Vec2; 5] {
+pub(crate) fn rotated_derivs(sigma: f64, rot: &Rotation, w: &[Vec2; 5]) -> [Vec2; 5] {
     let sg = sigma;
-    let aw: Vec<Vec2> = w.iter().map(|v| rot.apply(*v)).collect();
-    let m = |v: Vec2| -sg * perp(v); // M = −σJ
+    let aw: Vec<Vec2> = w.iter().map(|v| rot * v).collect();
+    let m = |v: Vec2| -sg * rot90(v); // M = −σJ
     let m2 = |v: Vec2| -v;
-    let m3 = |v: Vec2| sg * perp(v);
+    let m3 = |v: Vec2| sg * rot90(v);
     [
         aw[0],
         m(aw[0]) + aw[1],
@@ -143,7 +143,7 @@ impl Curve for SynthesizedProfile {
     fn eval(&self, u: f64) -> Derivs {
         let s = self.program.eval5(u);
         let s = [self.s0 + s[0], s[1], s[2], s[3], s[4]];
-        let rot = Rot::new(-self.sigma * u);
+        let rot = Rotation::new(-self.sigma * u);
         match self.model.envelope(&s, self.s0, u, self.sigma, &rot) {
             Envelope::Derivs(d) => d,
             Envelope::Offset(c, r) => offset_curve(&c, r, self.sigma),
@@ -179,7 +179,7 @@ fn offset_curve(c: &[Vec2; 5], r: f64, sg: f64) -> Derivs {
     );
     let inv_g = jet_recip(jet_sqrt(tx * tx + ty * ty));
     let (ux, uy) = (tx * inv_g, ty * inv_g);
-    // y = c − r σ perp(t̂), perp(t) = (−t_y, t_x)
+    // y = c − r σ rot90(t̂), rot90(t) = (−t_y, t_x)
     let k = -r * sg;
     let yx = cx + scale(-uy, k);
     let yy = cy + scale(ux, k);

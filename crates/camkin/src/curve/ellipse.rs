@@ -1,7 +1,7 @@
 //! Ellipse: `r(u) = c + R(φ) (a cos u, b sin u)`, counter-clockwise, `u` the eccentric anomaly.
 
 use super::{check_finite, check_point, check_positive, Curve, CurveError, Derivs, Domain};
-use crate::geometry::{Point2, Rot, Vec2};
+use crate::geometry::{Point2, Rotation, Vec2};
 
 /// An ellipse with semi-axis `a` along its own x axis and `b` along its own y axis, that frame
 /// rotated by `rotation` (rad, counter-clockwise) about `center`. Traversed counter-clockwise.
@@ -11,7 +11,7 @@ pub struct Ellipse {
     a: f64,
     b: f64,
     rotation: f64,
-    rot: Rot,
+    rot: Rotation,
 }
 
 impl Ellipse {
@@ -22,7 +22,7 @@ impl Ellipse {
             a: check_positive("semi_axes[0]", a)?,
             b: check_positive("semi_axes[1]", b)?,
             rotation: check_finite("rotation", rotation)?,
-            rot: Rot::new(rotation),
+            rot: Rotation::new(rotation),
         })
     }
     /// Centre.
@@ -45,10 +45,10 @@ impl Curve for Ellipse {
         let (a, b) = (self.a, self.b);
         let r = &self.rot;
         Derivs {
-            p: self.center + r.apply(Vec2::new(a * c, b * s)),
-            d1: r.apply(Vec2::new(-a * s, b * c)),
-            d2: r.apply(Vec2::new(-a * c, -b * s)),
-            d3: r.apply(Vec2::new(a * s, -b * c)),
+            p: self.center + r * Vec2::new(a * c, b * s),
+            d1: r * Vec2::new(-a * s, b * c),
+            d2: r * Vec2::new(-a * c, -b * s),
+            d3: r * Vec2::new(a * s, -b * c),
         }
     }
     fn domain(&self) -> Domain {

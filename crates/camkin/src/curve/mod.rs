@@ -28,7 +28,7 @@ pub use points_file::{
 };
 pub use spline::{ClosedSpline, Parameterization};
 
-use crate::geometry::{cross, perp, Point2, Vec2};
+use crate::geometry::{cross, rot90, Point2, Vec2};
 
 /// Position and derivatives of a curve at one parameter value, in the curve's (body) frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,7 +58,7 @@ impl Derivs {
     /// Left normal `k × t`.
     #[inline]
     pub fn normal(&self) -> Vec2 {
-        perp(self.tangent())
+        rot90(self.tangent())
     }
     /// Signed curvature `κ = (r' × r'')/|r'|³`, 1/length; positive where the curve turns left.
     #[inline]

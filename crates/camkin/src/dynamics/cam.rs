@@ -168,15 +168,15 @@ impl Simulation {
                     Constraint::Translational {
                         body: 1,
                         through: origin,
-                        axis: direction,
+                        axis: *direction,
                         angle: 0.0,
                     },
-                    direction,
+                    *direction,
                     cam.pivot(),
                     ForceElement::AxialSpring {
                         body: 1,
                         origin: cam.pivot(),
-                        axis: direction,
+                        axis: *direction,
                         stiffness: params.spring_stiffness,
                         preload: params.spring_preload,
                         reference: low,
@@ -387,7 +387,7 @@ impl Simulation {
             u_b: 0.0,
             point_a: crate::Point2::origin(),
             point_b: crate::Point2::origin(),
-            normal: Vec2::x(),
+            normal: crate::UnitVec2::new_unchecked(Vec2::x()),
             gap: 0.0,
             iterations: 0,
         });

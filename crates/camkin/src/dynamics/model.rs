@@ -3,7 +3,7 @@
 use crate::body::{BodyState, Pose};
 use crate::contact::{refine, ContactKinematics, Pairing, SearchOptions, Surface};
 use crate::curve::Curve;
-use crate::geometry::{perp, Point2, Rot, Vec2};
+use crate::geometry::{rot90, Point2, Rotation, Vec2};
 use std::sync::Arc;
 
 /// Mass properties of a rigid body (its frame's origin is where `q` puts it; the inertia is
@@ -247,8 +247,8 @@ impl System {
             } => {
                 let i = 3 * body;
                 let th = q[i + 2];
-                let r = Rot::new(th).apply(local.coords);
-                let dr = perp(r); // ∂(R s)/∂θ
+                let r = Rotation::new(th) * local.coords;
+                let dr = rot90(r); // ∂(R s)/∂θ
                 let w = qd[i + 2];
                 vec![
                     Row {
@@ -270,7 +270,7 @@ impl System {
                 angle,
             } => {
                 let i = 3 * body;
-                let n = perp(*axis);
+                let n = rot90(*axis);
                 vec![
                     Row {
                         phi: (q[i] - through.x) * n.x + (q[i + 1] - through.y) * n.y,

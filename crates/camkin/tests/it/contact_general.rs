@@ -36,7 +36,7 @@ fn touching(
 ) -> (BodyState, BodyState, Pairing) {
     let p = closest_pair(&Surface::new(ca, &a), &Surface::new(cb, &b), opts).unwrap();
     // move B along the normal to close the gap
-    b.pose.origin += p.gap * p.normal;
+    b.pose.origin += p.gap * *p.normal;
     let p = refine(
         &Surface::new(ca, &a),
         &Surface::new(cb, &b),
@@ -50,7 +50,7 @@ fn touching(
     let vn = p
         .normal
         .dot(&(a.velocity_at(p.point_a) - b.velocity_at(p.point_a)));
-    b.velocity += vn * p.normal;
+    b.velocity += vn * *p.normal;
     (a, b, p)
 }
 
@@ -359,5 +359,5 @@ fn regression_point_as_a_constraint_sign() {
         10.0,
         "Φ_q q̈ − γ",
     );
-    assert_eq!(k.normal, Vec2::new(1.0, 0.0)); // −ν_B of a ccw circle at angle 0 (ν_B = (−1, 0))
+    assert_eq!(*k.normal, Vec2::new(1.0, 0.0)); // −ν_B of a ccw circle at angle 0 (ν_B = (−1, 0))
 }

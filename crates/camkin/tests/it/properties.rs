@@ -3,7 +3,7 @@
 use crate::common::*;
 use camkin::cam::{Follower, Mechanism, Sense};
 use camkin::curve::ClosedSpline;
-use camkin::geometry::{wrap_angle_near, Rot};
+use camkin::geometry::{wrap_angle_near, Rotation};
 use camkin::{Point2, Vec2};
 use proptest::prelude::*;
 use std::sync::Arc;
@@ -24,23 +24,23 @@ fn cam_nodes() -> impl Strategy<Value = Vec<Point2>> {
     })
 }
 
-fn rotate_follower(f: &Follower, r: &Rot, beta: f64) -> Follower {
-    let rp = |p: Point2| Point2::from(r.apply(p.coords));
+fn rotate_follower(f: &Follower, r: &Rotation, beta: f64) -> Follower {
+    let rp = |p: Point2| r * p;
     match *f {
         Follower::TranslatingFlat { direction } => Follower::TranslatingFlat {
-            direction: r.apply(direction),
+            direction: r * direction,
         },
         Follower::TranslatingRoller {
             direction,
             offset,
             roller_radius,
         } => Follower::TranslatingRoller {
-            direction: r.apply(direction),
+            direction: r * direction,
             offset,
             roller_radius,
         },
         Follower::TranslatingKnife { direction, offset } => Follower::TranslatingKnife {
-            direction: r.apply(direction),
+            direction: r * direction,
             offset,
         },
         Follower::OscillatingFlat {
@@ -110,10 +110,10 @@ proptest! {
         let f = all_followers(pivot)[kind];
         let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
         prop_assume!(m.is_convex());
-        let r = Rot::new(beta);
-        let nodes_r: Vec<Point2> = nodes.iter().map(|p| Point2::from(r.apply(p.coords))).collect();
+        let r = Rotation::new(beta);
+        let nodes_r: Vec<Point2> = nodes.iter().map(|p| r * p).collect();
         let mr = Mechanism::new(
-            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&nodes_r).unwrap()), Point2::from(r.apply(pivot.coords)), sense, 1000.0).unwrap(),
+            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&nodes_r).unwrap()), r * pivot, sense, 1000.0).unwrap(),
             rotate_follower(&f, &r, beta),
         ).unwrap();
         let (a, b) = (m.analyze_deg(theta), mr.analyze_deg(theta));
@@ -155,10 +155,10 @@ proptest! {
         prop_assume!(p.is_ok());
         let p = p.unwrap();
         prop_assume!(sp.curvature(p.u_a) > 0.0);
-        b.pose.origin += p.gap * p.normal; // bring B into contact
+        b.pose.origin += p.gap * *p.normal; // bring B into contact
         let p = refine(&Surface::new(&sp, &a), &Surface::new(&el, &b), p.u_a, p.u_b, &opts).unwrap();
         let vn = p.normal.dot(&(a.velocity_at(p.point_a) - b.velocity_at(p.point_a)));
-        b.velocity += vn * p.normal; // sustained contact
+        b.velocity += vn * *p.normal; // sustained contact
         let (sa, sb) = (Surface::new(&sp, &a), Surface::new(&el, &b));
         let kab = ContactKinematics::new(&sa, &sb, &p, 1e-9).unwrap();
         let q = refine(&sb, &sa, p.u_b, p.u_a, &opts).unwrap();

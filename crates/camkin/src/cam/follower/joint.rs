@@ -5,7 +5,7 @@
 
 use super::Sense;
 use crate::body::{BodyState, Pose};
-use crate::geometry::{perp, Point2, Vec2};
+use crate::geometry::{rot90, Point2, UnitVec2, Vec2};
 
 /// How a follower moves: one coordinate `q`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -14,10 +14,10 @@ pub enum Joint {
     /// A slide: the follower frame's origin is at `origin + q·direction`, its angle 0; `q` is a
     /// length measured from the cam axis along `direction`.
     Translating {
-        /// the frame's origin at `q = 0` (world): the cam axis moved by the offset `e·perp(d)`
+        /// the frame's origin at `q = 0` (world): the cam axis moved by the offset `e·rot90(d)`
         origin: Point2,
-        /// unit direction of travel `d`, from the cam towards the follower
-        direction: Vec2,
+        /// direction of travel `d`, from the cam towards the follower
+        direction: UnitVec2,
     },
     /// A revolute pair: the follower frame's origin is the pivot, its angle the arm angle `q`
     /// (rad, counter-clockwise from the world x axis).
@@ -36,7 +36,7 @@ impl Joint {
     #[inline]
     pub fn pose(&self, q: f64) -> Pose {
         match *self {
-            Joint::Translating { origin, direction } => Pose::new(origin + q * direction, 0.0),
+            Joint::Translating { origin, direction } => Pose::new(origin + q * *direction, 0.0),
             Joint::Rotating { pivot, .. } => Pose::new(pivot, q),
         }
     }
@@ -48,9 +48,9 @@ impl Joint {
         match *self {
             Joint::Translating { direction, .. } => BodyState {
                 pose,
-                velocity: qd * direction,
+                velocity: qd * *direction,
                 omega: 0.0,
-                acceleration: qdd * direction,
+                acceleration: qdd * *direction,
                 alpha: 0.0,
             },
             Joint::Rotating { .. } => BodyState {
@@ -68,8 +68,8 @@ impl Joint {
     #[inline]
     pub fn velocity_jacobian(&self, c: Point2) -> Vec2 {
         match *self {
-            Joint::Translating { direction, .. } => direction,
-            Joint::Rotating { pivot, .. } => perp(c - pivot),
+            Joint::Translating { direction, .. } => *direction,
+            Joint::Rotating { pivot, .. } => rot90(c - pivot),
         }
     }
 

@@ -27,10 +27,11 @@ pub use joint::Joint;
 use super::jet::{Num, V2};
 use super::synthesis::Envelope;
 use super::CamError;
-use crate::body::{Frame, WorldDerivs};
+use crate::body::WorldDerivs;
 use crate::curve::{Circle, Line, PointCurve};
 use crate::field::{Field, FollowerField};
-use crate::geometry::{perp, wrap_angle_near, Point2, Rot, Vec2};
+use crate::geometry::Frame;
+use crate::geometry::{rot90, wrap_angle_near, Point2, Rotation, UnitVec2, Vec2};
 use oscillating_flat::OscillatingFlat;
 use oscillating_roller::OscillatingRoller;
 use translating_flat::TranslatingFlat;
@@ -67,7 +68,7 @@ pub enum Follower {
         /// direction of travel `d`, from the cam towards the follower (normalised on use)
         direction: Vec2,
     },
-    /// Translating roller: centre at `e·perp(d) + s·d` from the cam axis.
+    /// Translating roller: centre at `e·rot90(d) + s·d` from the cam axis.
     TranslatingRoller {
         /// direction of travel `d`
         direction: Vec2,
@@ -76,7 +77,7 @@ pub enum Follower {
         /// roller radius, length
         roller_radius: f64,
     },
-    /// Translating knife edge: tip at `e·perp(d) + s·d` from the cam axis.
+    /// Translating knife edge: tip at `e·rot90(d) + s·d` from the cam axis.
     TranslatingKnife {
         /// direction of travel `d`
         direction: Vec2,
@@ -115,10 +116,13 @@ impl Follower {
     /// non-zero (normalised), lengths finite, radii and arm lengths positive. The one place
     /// that lists the kinds.
     pub(crate) fn model(&self, cam_pivot: Point2) -> Result<Model, CamError> {
+        // scaled by its largest component first, so that a direction's length never matters:
+        // [1e-300, 0] is the x axis and [1e300, 1e300] the diagonal (no underflow, no overflow)
         let unit = |d: Vec2| {
-            let n = d.norm();
-            if n.is_finite() && n > 0.0 {
-                Ok(d / n)
+            let m = d.x.abs().max(d.y.abs());
+            if d.x.is_finite() && d.y.is_finite() && m > 0.0 {
+                let s = d / m;
+                Ok(UnitVec2::new_normalize(s))
             } else {
                 Err(CamError::InvalidVector {
                     field: Field::Follower(FollowerField::Direction),
@@ -284,7 +288,7 @@ pub(crate) trait Kind {
     /// The signed curvature (of a counter-clockwise profile) below which the follower cannot
     /// follow the profile: 0 under a flat face, `−1/r` under a roller; `None` for a point.
     fn concave_limit(&self) -> Option<f64>;
-    /// A knife edge's line of travel `(d, perp(d), e)`.
+    /// A knife edge's line of travel `(d, rot90(d), e)`.
     fn knife_line(&self) -> Option<(Vec2, Vec2, f64)> {
         None
     }
@@ -298,7 +302,7 @@ pub(crate) trait Kind {
     /// Synthesis: the profile point touching the follower at cam angle `u`, with `s` the
     /// program's value and four derivatives (`s₀` added to the value), `σ` the cam's sense and
     /// `rot = R(−σu)`.
-    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rot) -> Envelope;
+    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rotation) -> Envelope;
 }
 
 /// A follower kind with its derived data: one variant per kind.
@@ -363,7 +367,7 @@ impl Kind for Model {
         dispatch!(self, k => k.synthesis_start(base_radius))
     }
     #[inline]
-    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rot) -> Envelope {
+    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         dispatch!(self, k => k.envelope(s, s0, u, sigma, rot))
     }
 }
@@ -397,8 +401,8 @@ impl FollowerCurve {
     pub(crate) fn world_at(&self, frame: &Frame, c: Point2) -> (f64, WorldDerivs) {
         match self {
             FollowerCurve::Line(l) => {
-                let d = frame.rot.apply(l.direction());
-                let a = frame.origin + frame.rot.apply(l.anchor().coords);
+                let d = frame.rotation * l.direction();
+                let a = frame * l.anchor();
                 let u = (c - a).dot(&d);
                 (
                     u,
@@ -411,12 +415,12 @@ impl FollowerCurve {
                 )
             }
             FollowerCurve::Circle(k) => {
-                let centre = frame.origin + frame.rot.apply(k.center().coords);
+                let centre = frame * k.center();
                 let r = k.radius();
                 let m = c - centre;
                 let radial = m * (1.0 / m.norm());
-                let local = frame.rot.apply_inverse(radial);
-                let t = perp(radial);
+                let local = frame.rotation.inverse_transform_vector(&radial);
+                let t = rot90(radial);
                 (
                     local.y.atan2(local.x),
                     WorldDerivs {
@@ -430,7 +434,7 @@ impl FollowerCurve {
             FollowerCurve::Point(q) => (
                 0.0,
                 WorldDerivs {
-                    p: frame.origin + frame.rot.apply(q.at().coords),
+                    p: frame * q.at(),
                     d1: Vec2::zeros(),
                     d2: Vec2::zeros(),
                     d3: Vec2::zeros(),
@@ -477,5 +481,44 @@ impl Geometry {
 
     pub(crate) fn is_knife(&self) -> bool {
         matches!(self.curve, FollowerCurve::Point(_))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn direction_of(d: Vec2) -> Result<Vec2, CamError> {
+        let m = Follower::TranslatingFlat { direction: d }.model(Point2::origin())?;
+        match m.joint() {
+            Joint::Translating { direction, .. } => Ok(*direction),
+            Joint::Rotating { .. } => unreachable!("a translating follower"),
+        }
+    }
+
+    #[test]
+    fn direction_length_does_not_matter() {
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        for (d, expect) in [
+            (Vec2::new(1e-300, 0.0), Vec2::new(1.0, 0.0)),
+            (Vec2::new(5e-324, 0.0), Vec2::new(1.0, 0.0)),
+            (Vec2::new(0.0, -1e-310), Vec2::new(0.0, -1.0)),
+            (Vec2::new(1e300, 1e300), Vec2::new(h, h)),
+            (Vec2::new(-f64::MAX, f64::MAX), Vec2::new(-h, h)),
+            (Vec2::new(3.0, 4.0), Vec2::new(0.6, 0.8)),
+        ] {
+            let got = direction_of(d).expect("a valid direction");
+            assert!((got - expect).norm() < 1e-15, "{d:?} gave {got:?}");
+        }
+        for d in [
+            Vec2::zeros(),
+            Vec2::new(f64::INFINITY, 0.0),
+            Vec2::new(f64::NAN, 1.0),
+        ] {
+            assert!(
+                matches!(direction_of(d), Err(CamError::InvalidVector { .. })),
+                "{d:?} accepted"
+            );
+        }
     }
 }

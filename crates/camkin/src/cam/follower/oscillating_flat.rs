@@ -9,7 +9,7 @@ use crate::cam::synthesis::{jet_recip, solve_angle, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
 use crate::field::{Field, FollowerField};
-use crate::geometry::{Point2, Rot, Vec2};
+use crate::geometry::{Point2, Rotation, Vec2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingFlat {
@@ -99,7 +99,7 @@ impl Kind for OscillatingFlat {
             reason: "the face cannot rest on the base circle",
         })
     }
-    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, _rot: &Rot) -> Envelope {
+    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, _rot: &Rotation) -> Envelope {
         // the face in the cam frame: y·N(α) = h, α = φ − σθ, h = e + O·n(φ); envelope
         // y = h N − (h'/α') T with N = (−sin α, cos α), T = (cos α, sin α)
         let (o, e, rho, sg) = (self.o.coords, self.e, -self.closing, sigma);

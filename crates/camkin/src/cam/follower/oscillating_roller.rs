@@ -8,7 +8,7 @@ use crate::cam::synthesis::{rotated_derivs, solve_angle, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
-use crate::geometry::{Point2, Rot, Vec2};
+use crate::geometry::{Point2, Rotation, Vec2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingRoller {
@@ -137,7 +137,7 @@ impl Kind for OscillatingRoller {
             reason: "the roller cannot rest on the base circle",
         })
     }
-    fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rot) -> Envelope {
+    fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         // φ = φ0 + ρ s and its derivatives; u(φ) = (cos φ, sin φ), v = k × u
         let (o, l, rho) = (self.o.coords, self.l, -self.closing);
         let f = [

@@ -1,5 +1,5 @@
 //! Translating flat-faced follower: the face is the line `x·d = s` (positions from the cam axis).
-//! Its curve is the line through the frame origin along `−perp(d)` (material on the left: the
+//! Its curve is the line through the frame origin along `−rot90(d)` (material on the left: the
 //! follower lies on the `+d` side of its face).
 
 use super::{Joint, Kind, Model};
@@ -8,7 +8,7 @@ use crate::cam::jet::{Num, V2};
 use crate::cam::synthesis::{rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
-use crate::geometry::{perp, Point2, Rot, Vec2};
+use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct TranslatingFlat {
@@ -18,11 +18,11 @@ pub(crate) struct TranslatingFlat {
 }
 
 impl TranslatingFlat {
-    pub(super) fn model(cam_pivot: Point2, d: Vec2) -> Model {
+    pub(super) fn model(cam_pivot: Point2, d: UnitVec2) -> Model {
         Model::TranslatingFlat(Self {
             cam_pivot,
-            d,
-            p: perp(d),
+            d: d.into_inner(),
+            p: rot90(d.into_inner()),
         })
     }
 }
@@ -31,7 +31,8 @@ impl Kind for TranslatingFlat {
     fn joint(&self) -> Joint {
         Joint::Translating {
             origin: self.cam_pivot,
-            direction: self.d,
+            // `d` came in as a `UnitVec2` (`model`)
+            direction: UnitVec2::new_unchecked(self.d),
         }
     }
     fn curve(&self) -> super::FollowerCurve {
@@ -62,7 +63,7 @@ impl Kind for TranslatingFlat {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         Ok(base_radius)
     }
-    fn envelope(&self, s: &[f64; 5], _s0: f64, _u: f64, sigma: f64, rot: &Rot) -> Envelope {
+    fn envelope(&self, s: &[f64; 5], _s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         // the envelope of the face lines y·A d = s: y = A (s d − σ s' p)
         let (d, p, sg) = (self.d, self.p, sigma);
         let w = [

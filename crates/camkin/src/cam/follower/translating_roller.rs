@@ -1,4 +1,4 @@
-//! Translating roller: the roller centre at `e·perp(d) + s·d` from the cam axis; its curve is the
+//! Translating roller: the roller centre at `e·rot90(d) + s·d` from the cam axis; its curve is the
 //! circle of radius `r` about the frame origin.
 
 use super::{Joint, Kind, Model};
@@ -8,7 +8,7 @@ use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
-use crate::geometry::{perp, Point2, Rot, Vec2};
+use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct TranslatingRoller {
@@ -20,11 +20,11 @@ pub(crate) struct TranslatingRoller {
 }
 
 impl TranslatingRoller {
-    pub(super) fn model(cam_pivot: Point2, d: Vec2, e: f64, r: f64) -> Model {
+    pub(super) fn model(cam_pivot: Point2, d: UnitVec2, e: f64, r: f64) -> Model {
         Model::TranslatingRoller(Self {
             cam_pivot,
-            d,
-            p: perp(d),
+            d: d.into_inner(),
+            p: rot90(d.into_inner()),
             e,
             r,
         })
@@ -35,7 +35,8 @@ impl Kind for TranslatingRoller {
     fn joint(&self) -> Joint {
         Joint::Translating {
             origin: self.cam_pivot + self.e * self.p,
-            direction: self.d,
+            // `d` came in as a `UnitVec2` (`model`)
+            direction: UnitVec2::new_unchecked(self.d),
         }
     }
     fn curve(&self) -> super::FollowerCurve {
@@ -106,7 +107,7 @@ impl Kind for TranslatingRoller {
         }
         Ok((prime * prime - self.e * self.e).sqrt())
     }
-    fn envelope(&self, s: &[f64; 5], _s0: f64, _u: f64, sigma: f64, rot: &Rot) -> Envelope {
+    fn envelope(&self, s: &[f64; 5], _s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         // the roller centre's path c = A (e p + s d), offset by the radius towards the cam
         let c = rotated_derivs(sigma, rot, &translating_path(self.d, self.p, self.e, s));
         Envelope::Offset(c, self.r)
