@@ -2,17 +2,12 @@
 //! output. `main.rs` only parses the arguments and maps failures to exit codes (0 success,
 //! 1 internal failure, 2 bad input).
 
-pub mod analyze;
-pub mod bench;
-pub mod compare;
+pub mod args;
+pub mod commands;
+pub mod draw;
 pub mod mechfile;
 pub mod output;
-pub mod plot;
-pub mod plots;
-pub mod scene;
-pub mod simulate;
 pub mod study;
-pub mod synth;
 
 use std::path::PathBuf;
 

@@ -1,6 +1,7 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
-use camkin_cli::{analyze, bench, compare, plot, simulate, synth, Failure};
+use camkin_cli::commands::{analyze, bench, compare, plot, simulate, synth};
+use camkin_cli::Failure;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

@@ -45,3 +45,94 @@ pub fn write_atomic(
         }
     }
 }
+
+/// How a table is written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum TableFormat {
+    /// comma-separated values with a header
+    Csv,
+    /// an array of objects keyed by the CSV column names
+    Json,
+}
+
+/// Writes rows as CSV (header from the row type's field names; an absent value is an empty
+/// cell) or as a JSON array of objects (an absent or non-finite value is `null`). Numbers keep
+/// round-trip precision.
+pub fn write_table<T: serde::Serialize>(
+    w: &mut dyn Write,
+    rows: &[T],
+    format: TableFormat,
+) -> Result<()> {
+    match format {
+        TableFormat::Csv => {
+            let mut c = csv::Writer::from_writer(w);
+            for r in rows {
+                c.serialize(r)?;
+            }
+            c.flush()?;
+        }
+        TableFormat::Json => {
+            serde_json::to_writer(&mut *w, rows)?;
+            writeln!(w)?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use camkin::cam::{CamError, FollowerState};
+    use camkin::table::AnalysisRow;
+
+    fn rows() -> Vec<AnalysisRow> {
+        let m = crate::mechfile::paper();
+        let err: std::result::Result<FollowerState, _> = Err(CamError::OpenProfile);
+        vec![
+            AnalysisRow::new(0.0, &m.analyze(0.0), false),
+            AnalysisRow::new(1.0, &err, false),
+        ]
+    }
+
+    #[test]
+    fn analysis_csv_header_starts_with_the_fixed_columns_and_rows_match_it() {
+        let mut out = Vec::new();
+        write_table(&mut out, &rows(), TableFormat::Csv).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines.len(), 3);
+        assert!(lines[0].starts_with("angle_deg,position,velocity,acceleration,"));
+        let n = lines[0].split(',').count();
+        assert_eq!(n, 24);
+        assert_eq!(lines[1].split(',').count(), n);
+        let err: Vec<&str> = lines[2].split(',').collect();
+        assert_eq!(err.len(), n);
+        assert_eq!(err[0].parse::<f64>().unwrap(), 1.0);
+        assert!(err[1..n - 1].iter().all(|c| c.is_empty()), "{}", lines[2]);
+        assert!(err[n - 1].contains("closed"));
+    }
+
+    #[test]
+    fn analysis_json_keys_are_the_csv_columns() {
+        let mut out = Vec::new();
+        write_table(&mut out, &rows(), TableFormat::Json).unwrap();
+        let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        let mut csv_out = Vec::new();
+        write_table(&mut csv_out, &rows(), TableFormat::Csv).unwrap();
+        let header = String::from_utf8(csv_out).unwrap();
+        let header: Vec<&str> = header.lines().next().unwrap().split(',').collect();
+        let keys: Vec<&str> = j[0]
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(|k| k.as_str())
+            .collect();
+        let mut sorted = header.clone();
+        sorted.sort_unstable();
+        assert_eq!(keys, sorted); // serde_json's map is ordered by key
+        assert_eq!(j[1]["angle_deg"], 1.0);
+        assert!(j[1]["position"].is_null());
+        assert!(j[1]["error"].as_str().unwrap().contains("closed"));
+        assert_eq!(j[0]["found"], "global");
+    }
+}

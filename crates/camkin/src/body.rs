@@ -7,6 +7,7 @@ use crate::geometry::{rot90, Frame, Point2, Rotation, Vec2};
 
 /// Where a body is: origin `p` (length) and angle `θ` (rad, counter-clockwise).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Pose {
     /// the body frame's origin in the world
     pub origin: Point2,
@@ -42,6 +43,7 @@ impl Pose {
 
 /// The state of a planar rigid body at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct BodyState {
     /// pose
     pub pose: Pose,

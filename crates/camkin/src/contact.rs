@@ -108,6 +108,7 @@ impl Default for SearchOptions {
 
 /// A pair of pairing points: the parameters where `x_A − x_B` is normal to both curves.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Pairing {
     /// parameter on A
     pub u_a: f64,
@@ -402,6 +403,7 @@ pub fn find_contact(
 /// Velocity-level contact kinematics at a pairing (paper eqs. 3–7, 9) and the acceleration
 /// constraint row (eq. 11). All quantities are in the world frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ContactKinematics {
     /// the contact point `c` (A's pairing point), length
     pub point: Point2,
@@ -445,6 +447,7 @@ pub struct ContactKinematics {
 /// The normal acceleration of the contact point as seen from one body (eq. 1 or 2), split in its
 /// terms; components along the common normal `ν_A`, length/s².
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct NormalAcceleration {
     /// `ν_A·a_X^P`: the material point of the body under `c`
     pub material: f64,

@@ -78,6 +78,7 @@ pub mod motion;
 pub(crate) mod periodic;
 pub mod reference;
 pub mod spec;
+pub mod table;
 
 pub use body::{BodyState, CurveInFrame, Pose};
 pub use error::Error;

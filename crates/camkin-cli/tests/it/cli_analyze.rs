@@ -52,8 +52,9 @@ fn at_list_and_numbers_round_trip() {
         .clone();
     let (_, rows) = parse_csv(&out);
     assert_eq!(rows.len(), 2);
-    assert_eq!(rows[0][0], "45");
-    assert_eq!(rows[1][0], "-10");
+    // the angle column echoes the angle asked for, exactly
+    assert_eq!(rows[0][0].parse::<f64>().unwrap(), 45.0);
+    assert_eq!(rows[1][0].parse::<f64>().unwrap(), -10.0);
     let s: f64 = rows[0][1].parse().unwrap();
     assert!((s - 4.448456).abs() < 5e-7);
 }

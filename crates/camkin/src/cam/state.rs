@@ -10,6 +10,7 @@ use crate::geometry::{cross, Point2, UnitVec2, Vec2};
 /// followers in length, length/s, length/s², length/s³ (measured from the cam axis along `d`);
 /// oscillating followers in rad, rad/s, rad/s², rad/s³ (absolute arm angle).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FollowerState {
     /// cam angle `θ`, rad
     pub cam_angle: f64,

@@ -13,6 +13,7 @@ use crate::geometry::Frame;
 
 /// How the contact at an angle was found.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub enum Found {
     /// global bracketing then Newton
     Global,

@@ -40,6 +40,7 @@ pub struct FollowerDynamics {
 
 /// The follower's state at one instant of a simulation.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Sample {
     /// time, s
     pub time: f64,
@@ -63,6 +64,7 @@ pub struct Sample {
 
 /// What happened at an event.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub enum EventKind {
     /// the contact force reached zero: the follower leaves the cam
     LiftOff,
@@ -72,6 +74,7 @@ pub enum EventKind {
 
 /// A located event.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Event {
     /// lift-off or impact
     pub kind: EventKind,

@@ -1,9 +1,10 @@
 //! `camkin plot`: kinematics over a revolution, drawings of the mechanism, an animation.
 
-use crate::plots::{self, Chart, Series};
-use crate::scene::{self, Shape};
+use crate::args::{AngleList, RevolutionStep};
+use crate::draw::chart::{self, Chart, Series};
+use crate::draw::mechanism::{self as scene, Shape};
 use crate::{load_mechanism, Failure};
-use anyhow::{anyhow, bail, Context, Result};
+use anyhow::{anyhow, Context, Result};
 use camkin::cam::{FollowerState, Mechanism};
 use camkin::Point2;
 use plotters::coord::Shift;
@@ -24,10 +25,10 @@ pub struct PlotArgs {
         default_value = "0,90,180,270",
         allow_hyphen_values = true
     )]
-    pub at: String,
+    pub at: AngleList,
     /// Angle step of the kinematic curves, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 0.25)]
-    pub step: f64,
+    #[arg(long, value_name = "DEG", default_value = "0.25")]
+    pub step: RevolutionStep,
     /// Frames of the animation over one revolution.
     #[arg(long, value_name = "N", default_value_t = 72)]
     pub frames: usize,
@@ -116,26 +117,9 @@ where
         .into_iter()
         .zip(charts)
     {
-        plots::draw(area, c)?;
+        chart::draw(area, c)?;
     }
     Ok(())
-}
-
-fn parse_angles(s: &str) -> Result<Vec<f64>> {
-    let v = s
-        .split(',')
-        .map(|t| {
-            t.trim()
-                .parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| anyhow!("--at: {t:?} is not a number of degrees"))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    if v.len() > 360 {
-        bail!("--at: at most 360 drawings");
-    }
-    Ok(v)
 }
 
 fn kinematics(
@@ -202,17 +186,23 @@ fn kinematics(
         ),
     ];
     let size = (1400, 1300);
-    plots::register_font();
+    chart::register_font();
     let svg = dir.join("kinematics.svg");
     let png = dir.join("kinematics.png");
-    plots::write_svg(&svg, size, |root| draw_panels(root, &charts))?;
-    plots::write_png(&png, size, |root| draw_panels(root, &charts))?;
+    chart::write_svg(&svg, size, |root| draw_panels(root, &charts))?;
+    chart::write_png(&png, size, |root| draw_panels(root, &charts))?;
     Ok(vec![svg, png])
 }
 
 pub fn run(args: &PlotArgs) -> Result<(), Failure> {
-    let angles = parse_angles(&args.at).map_err(Failure::Input)?;
-    let step = crate::compare::check_step(args.step).map_err(Failure::Input)?;
+    let angles = args.at.0.clone();
+    if angles.len() > 360 {
+        return Err(Failure::Input(anyhow!(
+            "--at: {} drawings is more than 360",
+            angles.len()
+        )));
+    }
+    let step = args.step.deg();
     if !(1..=3600).contains(&args.frames) {
         return Err(Failure::Input(anyhow!(
             "--frames: {} must be from 1 to 3600",
@@ -257,15 +247,15 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         800u32,
         (800.0 * aspect + 40.0).round().clamp(200.0, 2400.0) as u32,
     );
-    plots::register_font();
+    chart::register_font();
     for (a, shapes) in scenes.iter().take(angles.len()) {
         let title = format!("cam angle {a}°");
         let base = args.out.join(format!("drawing_{a}"));
         let svg = base.with_extension("svg");
         let png = base.with_extension("png");
-        plots::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
+        chart::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
             .map_err(Failure::Internal)?;
-        plots::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
+        chart::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
             .map_err(Failure::Internal)?;
         written.extend([svg, png]);
     }

@@ -1,8 +1,9 @@
 //! `camkin synth`: the profile of a `kind = "motion"` cam as points, DXF and SVG; the program's
 //! SVAJ curves; design checks; the round-trip error of the contact method.
 
+use crate::args::RevolutionStep;
+use crate::draw::chart::{self, Chart, Series};
 use crate::output::write_atomic;
-use crate::plots::{self, Chart, Series};
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
 use camkin::cam::{FollowerCurve, FollowerState};
@@ -16,8 +17,8 @@ pub struct SynthArgs {
     #[arg(long, value_name = "DIR", default_value = "camkin-synth")]
     pub out: PathBuf,
     /// Cam-angle step of the profile points and the checks, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 0.5)]
-    pub step: f64,
+    #[arg(long, value_name = "DEG", default_value = "0.5")]
+    pub step: RevolutionStep,
     /// Largest acceptable pressure angle, degrees.
     #[arg(long, value_name = "DEG", default_value_t = 30.0)]
     pub pressure_limit: f64,
@@ -64,7 +65,7 @@ fn svg_profile(pts: &[(f64, f64)]) -> String {
 }
 
 pub fn run(args: &SynthArgs) -> Result<(), Failure> {
-    let step = crate::compare::check_step(args.step).map_err(Failure::Input)?;
+    let step = args.step.deg();
     if !(args.pressure_limit.is_finite() && args.pressure_limit > 0.0 && args.pressure_limit < 90.0)
     {
         return Err(Failure::Input(anyhow!(
@@ -129,7 +130,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         .iter()
         .enumerate()
     {
-        plots::save(
+        chart::save(
             &chart(&format!("program: {name}"), k),
             &out(&format!("svaj_{name}")),
         )

@@ -1,12 +1,13 @@
 //! `camkin simulate`: the cam-follower mechanism's dynamics with lift-off and impacts.
 
-use crate::compare::Format;
+use crate::args::RevolutionStep;
+use crate::draw::chart::{self, Chart, Series};
 use crate::mechfile;
-use crate::output::write_atomic;
-use crate::plots::{self, Chart, Series};
+use crate::output::{write_atomic, write_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, EventKind, Sample, Simulation};
+use camkin::table::{EventRow, SampleRow};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -18,8 +19,8 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "N", default_value_t = 1.0)]
     pub revolutions: f64,
     /// Output interval, degrees of cam angle.
-    #[arg(long, value_name = "DEG", default_value_t = 1.0)]
-    pub step: f64,
+    #[arg(long, value_name = "DEG", default_value = "1")]
+    pub step: RevolutionStep,
     /// Cam angle at time 0, degrees (the follower starts on the cam there).
     #[arg(
         long,
@@ -35,13 +36,10 @@ pub struct SimulateArgs {
     /// without it.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
-    /// Format of the time series (table = csv here).
-    #[arg(long, value_enum, default_value_t = Format::Csv)]
-    pub format: Format,
+    /// Format of the time series.
+    #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+    pub format: TableFormat,
 }
-
-/// The time-series header; the first seven columns are fixed by the project's interface.
-pub const HEADER: &str = "time,cam_angle_deg,position,velocity,acceleration,contact_force,in_contact,kinematic_position,kinematic_acceleration";
 
 fn dyn_err(e: DynamicsError) -> Failure {
     match e {
@@ -59,7 +57,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             args.revolutions
         )));
     }
-    let step = crate::compare::check_step(args.step).map_err(Failure::Input)?;
+    let step = args.step.deg();
     if !(1..=1000).contains(&args.substeps) {
         return Err(Failure::Input(anyhow!(
             "--substeps: {} must be from 1 to 1000",
@@ -104,58 +102,38 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     pb.finish_and_clear();
     // the kinematic motion at the same cam angles (the contact method)
     let thetas: Vec<f64> = samples.iter().map(|s| s.cam_angle).collect();
-    let kin: Vec<(f64, f64)> = mech
-        .analyze_all(&thetas)
-        .into_iter()
-        .map(|r| r.map_or((f64::NAN, f64::NAN), |s| (s.position, s.acceleration)))
+    let kin = mech.analyze_all(&thetas);
+    let rows: Vec<SampleRow> = samples
+        .iter()
+        .zip(&kin)
+        .map(|(s, k)| SampleRow::new(s, k.as_ref().ok()))
         .collect();
+    let event_rows: Vec<EventRow> = events.iter().map(EventRow::from).collect();
     let series = |w: &mut dyn Write| -> anyhow::Result<()> {
         match args.format {
-            Format::Json => {
-                let rows: Vec<serde_json::Value> = samples
-                    .iter()
-                    .zip(&kin)
-                    .map(|(s, k)| {
-                        serde_json::json!({
-                            "time": s.time, "cam_angle_deg": s.cam_angle.to_degrees(), "position": s.position, "velocity": s.velocity,
-                            "acceleration": s.acceleration, "contact_force": s.contact_force, "in_contact": s.in_contact,
-                            "kinematic_position": k.0, "kinematic_acceleration": k.1,
-                        })
-                    })
-                    .collect();
-                serde_json::to_writer(
-                    &mut *w,
-                    &serde_json::json!({ "samples": rows, "events": events_json(&events) }),
-                )?;
-                writeln!(w)?;
-            }
-            _ => {
-                writeln!(w, "{HEADER}")?;
-                for (s, k) in samples.iter().zip(&kin) {
-                    writeln!(
-                        w,
-                        "{},{},{},{},{},{},{},{},{}",
-                        s.time,
-                        s.cam_angle.to_degrees(),
-                        s.position,
-                        s.velocity,
-                        s.acceleration,
-                        s.contact_force,
-                        u8::from(s.in_contact),
-                        k.0,
-                        k.1
-                    )?;
+            TableFormat::Json => {
+                #[derive(serde::Serialize)]
+                struct Series<'a> {
+                    samples: &'a [SampleRow],
+                    events: &'a [EventRow],
                 }
+                let all = Series {
+                    samples: &rows,
+                    events: &event_rows,
+                };
+                serde_json::to_writer(&mut *w, &all)?;
+                writeln!(w)?;
+                Ok(())
             }
+            TableFormat::Csv => write_table(w, &rows, TableFormat::Csv),
         }
-        Ok(())
     };
     match &args.out {
         None => write_atomic(None, series).map_err(Failure::Internal)?,
         Some(dir) => {
             std::fs::create_dir_all(dir)
                 .map_err(|e| Failure::Input(anyhow!("cannot create {}: {e}", dir.display())))?;
-            let ext = if args.format == Format::Json {
+            let ext = if args.format == TableFormat::Json {
                 "json"
             } else {
                 "csv"
@@ -163,21 +141,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             write_atomic(Some(&dir.join(format!("time_series.{ext}"))), series)
                 .map_err(Failure::Input)?;
             write_atomic(Some(&dir.join("events.csv")), |w| {
-                writeln!(w, "event,time,cam_angle_deg,impact_velocity")?;
-                for e in &events {
-                    writeln!(
-                        w,
-                        "{},{},{},{}",
-                        kind(e),
-                        e.time,
-                        e.cam_angle.to_degrees(),
-                        e.impact_velocity
-                    )?;
-                }
-                Ok(())
+                write_table(w, &event_rows, TableFormat::Csv)
             })
             .map_err(Failure::Input)?;
-            plot(&samples, &kin, dir, mech.follower().is_oscillating())
+            plot(&samples, &rows, dir, mech.follower().is_oscillating())
                 .map_err(Failure::Internal)?;
         }
     }
@@ -190,10 +157,6 @@ fn kind(e: &Event) -> &'static str {
         EventKind::LiftOff => "lift-off",
         EventKind::Impact => "impact",
     }
-}
-
-fn events_json(events: &[Event]) -> Vec<serde_json::Value> {
-    events.iter().map(|e| serde_json::json!({"event": kind(e), "time": e.time, "cam_angle_deg": e.cam_angle.to_degrees(), "impact_velocity": e.impact_velocity})).collect()
 }
 
 /// The events as a table on stderr.
@@ -225,7 +188,7 @@ fn report(events: &[Event]) {
 
 fn plot(
     samples: &[Sample],
-    kin: &[(f64, f64)],
+    rows: &[SampleRow],
     dir: &std::path::Path,
     oscillating: bool,
 ) -> anyhow::Result<()> {
@@ -253,14 +216,14 @@ fn plot(
             },
             Series {
                 name: "kinematic (contact method)".into(),
-                points: pts(&|k| kin[k].0),
+                points: pts(&|k| rows[k].kinematic_position),
                 dashed: true,
             },
         ],
         log_y: false,
         x_range: None,
     };
-    plots::save(&motion, &dir.join("motion"))?;
+    chart::save(&motion, &dir.join("motion"))?;
     let acc = Chart {
         title: "follower acceleration: dynamic and kinematic".into(),
         x_label: "cam angle (°)".into(),
@@ -273,14 +236,14 @@ fn plot(
             },
             Series {
                 name: "kinematic (contact method)".into(),
-                points: pts(&|k| kin[k].1),
+                points: pts(&|k| rows[k].kinematic_acceleration),
                 dashed: true,
             },
         ],
         log_y: false,
         x_range: None,
     };
-    plots::save(&acc, &dir.join("acceleration"))?;
+    chart::save(&acc, &dir.join("acceleration"))?;
     let force = Chart {
         title: "contact force (0 while the follower is off the cam)".into(),
         x_label: "cam angle (°)".into(),
@@ -300,6 +263,6 @@ fn plot(
         log_y: false,
         x_range: None,
     };
-    plots::save(&force, &dir.join("contact_force"))?;
+    chart::save(&force, &dir.join("contact_force"))?;
     Ok(())
 }

@@ -1,10 +1,11 @@
 //! `camkin paper` and `camkin compare`: the paper's study, on its cams or on any mechanism.
 
+use crate::args::{AngleWindow, NodeCounts, RevolutionStep};
+use crate::draw::chart::{self, Chart, Series};
 use crate::output::write_atomic;
-use crate::plots::{self, Chart, Series};
 use crate::study::{self, Study};
 use crate::{load_mechanism, Failure};
-use anyhow::{anyhow, bail, Context, Result};
+use anyhow::{Context, Result};
 use camkin::cam::Mechanism;
 use serde_json::{json, Map, Value};
 use std::path::{Path, PathBuf};
@@ -26,11 +27,11 @@ pub struct PaperArgs {
     #[arg(long, value_name = "DIR", default_value = "camkin-paper")]
     pub out: PathBuf,
     /// Grid on which the errors are evaluated, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 0.05)]
-    pub step: f64,
+    #[arg(long, value_name = "DEG", default_value = "0.05")]
+    pub step: RevolutionStep,
     /// Nodal points of the interpolation method, comma-separated.
     #[arg(long, value_name = "N1,N2,...", default_value = "100,1000,10000")]
-    pub nodes: String,
+    pub nodes: NodeCounts,
     /// Format of the summary on stdout.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
@@ -42,65 +43,19 @@ pub struct CompareArgs {
     pub mechanism: PathBuf,
     /// Nodal points of the interpolation method, comma-separated.
     #[arg(long, value_name = "N1,N2,...", default_value = "100,1000,10000")]
-    pub nodes: String,
+    pub nodes: NodeCounts,
     /// Grid on which the errors are evaluated, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 0.05)]
-    pub step: f64,
+    #[arg(long, value_name = "DEG", default_value = "0.05")]
+    pub step: RevolutionStep,
     /// Directory for CSV data and plots (none are written without it).
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Zoomed error plot over START:STOP degrees (with --out).
     #[arg(long, value_name = "START:STOP")]
-    pub zoom: Option<String>,
+    pub zoom: Option<AngleWindow>,
     /// Format of the summary on stdout.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-}
-
-/// Parses and checks `--nodes`.
-pub fn parse_nodes(s: &str) -> Result<Vec<usize>> {
-    let v = s
-        .split(',')
-        .map(|t| {
-            t.trim()
-                .parse::<usize>()
-                .map_err(|_| anyhow!("--nodes: {t:?} is not a whole number"))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    for &n in &v {
-        if !(3..=1_000_000).contains(&n) {
-            bail!("--nodes: {n} is out of range (3 to 1000000)");
-        }
-    }
-    Ok(v)
-}
-
-/// Checks `--step`: a positive divisor of the revolution small enough to be useful.
-pub fn check_step(step: f64) -> Result<f64> {
-    if !(step.is_finite() && step > 0.0 && step <= 90.0) {
-        bail!("--step: {step} must be a number of degrees in (0, 90]");
-    }
-    let n = 360.0 / step;
-    if n > 10_000_000.0 {
-        bail!("--step: {step} gives more than 10000000 angles");
-    }
-    if (n - n.round()).abs() > 1e-9 * n {
-        bail!("--step: {step} does not divide 360°");
-    }
-    Ok(step)
-}
-
-fn parse_zoom(s: &str) -> Result<(f64, f64)> {
-    let p: Vec<&str> = s.split(':').collect();
-    let num = |t: &str| t.trim().parse::<f64>().ok().filter(|v| v.is_finite());
-    match (
-        p.len(),
-        p.first().and_then(|t| num(t)),
-        p.get(1).and_then(|t| num(t)),
-    ) {
-        (2, Some(a), Some(b)) if a < b => Ok((a, b)),
-        _ => bail!("--zoom: {s:?} is not START:STOP with START < STOP (degrees)"),
-    }
 }
 
 /// Units of the follower coordinate, for labels.
@@ -206,7 +161,7 @@ fn write_files(
         log_y: false,
         x_range: Some((0.0, 360.0)),
     };
-    written.extend(plots::save(&displacement, &dir.join("displacement"))?);
+    written.extend(chart::save(&displacement, &dir.join("displacement"))?);
     // the paper compares with 1000 nodal points; otherwise the N closest to it
     if let Some(r) = study.runs.iter().min_by_key(|r| r.nodes.abs_diff(1000)) {
         let acc = Chart {
@@ -231,7 +186,7 @@ fn write_files(
             log_y: false,
             x_range: Some((0.0, 360.0)),
         };
-        written.extend(plots::save(&acc, &dir.join("acceleration"))?);
+        written.extend(chart::save(&acc, &dir.join("acceleration"))?);
     }
     let mut err = Chart {
         title: format!("{title}: relative error of the interpolated acceleration"),
@@ -249,11 +204,11 @@ fn write_files(
         log_y: true,
         x_range: Some((0.0, 360.0)),
     };
-    written.extend(plots::save(&err, &dir.join("relative_error"))?);
+    written.extend(chart::save(&err, &dir.join("relative_error"))?);
     if let Some((a, b)) = zoom {
         err.title = format!("{title}: relative error, {a}°–{b}°");
         err.x_range = Some((a, b));
-        written.extend(plots::save(&err, &dir.join("relative_error_zoom"))?);
+        written.extend(chart::save(&err, &dir.join("relative_error_zoom"))?);
     }
     Ok(written)
 }
@@ -345,8 +300,7 @@ fn json_summary(study: &Study) -> Value {
 }
 
 pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
-    let nodes = parse_nodes(&args.nodes).map_err(Failure::Input)?;
-    let step = check_step(args.step).map_err(Failure::Input)?;
+    let (nodes, step) = (&args.nodes.0, args.step.deg());
     let mut md =
         String::from("# The paper's study: contact method against interpolated displacement\n\n");
     let mut csv = String::from(CSV_HEADER);
@@ -356,7 +310,7 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
         ("revised", true, "Revised cam"),
     ] {
         let mech = camkin::reference::paper_mechanism(revised);
-        let study = study::run(&mech, &nodes, step, title).map_err(Failure::Internal)?;
+        let study = study::run(&mech, nodes, step, title).map_err(Failure::Internal)?;
         let zoom = if revised { Some((5.0, 10.0)) } else { None };
         write_files(&study, &mech, &args.out.join(key), title, "cm", zoom)
             .map_err(Failure::Input)?;
@@ -375,21 +329,15 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
 }
 
 pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
-    let nodes = parse_nodes(&args.nodes).map_err(Failure::Input)?;
-    let step = check_step(args.step).map_err(Failure::Input)?;
-    let zoom = args
-        .zoom
-        .as_deref()
-        .map(parse_zoom)
-        .transpose()
-        .map_err(Failure::Input)?;
+    let (nodes, step) = (&args.nodes.0, args.step.deg());
+    let zoom = args.zoom.map(|w| (w.start, w.stop));
     let mech = load_mechanism(Some(&args.mechanism))?;
     let title = args
         .mechanism
         .file_stem()
         .map(|s| s.to_string_lossy().to_string())
         .unwrap_or_else(|| "mechanism".into());
-    let study = study::run(&mech, &nodes, step, &title).map_err(Failure::Input)?;
+    let study = study::run(&mech, nodes, step, &title).map_err(Failure::Input)?;
     if let Some(dir) = &args.out {
         write_files(&study, &mech, dir, &title, "length", zoom).map_err(Failure::Input)?;
     }

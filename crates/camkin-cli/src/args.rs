@@ -1,0 +1,249 @@
+//! Command-line values parsed at the boundary into typed values (`FromStr`, used by clap as value
+//! parsers): a bad value is refused by clap with the option's name, the value and the reason,
+//! exit code 2, before any work starts.
+
+use std::fmt;
+use std::str::FromStr;
+
+/// Largest number of angles one run analyses.
+pub const MAX_ANGLES: usize = 10_000_000;
+
+/// Why a value was refused (clap prints it after the option and the value).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct BadValue(String);
+
+impl fmt::Display for BadValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for BadValue {}
+
+fn bad(msg: impl Into<String>) -> BadValue {
+    BadValue(msg.into())
+}
+
+/// A finite number (degrees, or whatever the option says).
+fn number(what: &str, s: &str) -> Result<f64, BadValue> {
+    let t = s.trim();
+    let v: f64 = t
+        .parse()
+        .map_err(|_| bad(format!("{what} {t:?} is not a number")))?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(bad(format!("{what} {t:?} must be finite")))
+    }
+}
+
+/// Cam angles in degrees, comma-separated: `A1,A2,...`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AngleList(pub Vec<f64>);
+
+impl FromStr for AngleList {
+    type Err = BadValue;
+    fn from_str(s: &str) -> Result<Self, BadValue> {
+        let v = s
+            .split(',')
+            .map(|t| number("angle", t))
+            .collect::<Result<Vec<_>, _>>()?;
+        if v.len() > MAX_ANGLES {
+            return Err(bad(format!("{} angles is more than {MAX_ANGLES}", v.len())));
+        }
+        Ok(Self(v))
+    }
+}
+
+/// A range of cam angles in degrees: `START:STOP:STEP`, STOP excluded, at least one angle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AngleRange {
+    /// the first angle, degrees
+    pub start: f64,
+    /// the end, excluded, degrees
+    pub stop: f64,
+    /// the step, degrees (negative for a decreasing range)
+    pub step: f64,
+}
+
+impl AngleRange {
+    /// One revolution in 1° steps.
+    pub const REVOLUTION: Self = Self {
+        start: 0.0,
+        stop: 360.0,
+        step: 1.0,
+    };
+
+    /// The angles of the range, degrees.
+    pub fn angles(&self) -> Vec<f64> {
+        let count = ((self.stop - self.start) / self.step).ceil().max(0.0) as usize;
+        (0..count)
+            .map(|k| self.start + k as f64 * self.step)
+            .filter(|&a| {
+                if self.step > 0.0 {
+                    a < self.stop
+                } else {
+                    a > self.stop
+                }
+            })
+            .collect()
+    }
+}
+
+impl FromStr for AngleRange {
+    type Err = BadValue;
+    fn from_str(s: &str) -> Result<Self, BadValue> {
+        let parts: Vec<&str> = s.split(':').collect();
+        if parts.len() != 3 {
+            return Err(bad("not START:STOP:STEP (degrees)"));
+        }
+        let (start, stop, step) = (
+            number("START", parts[0])?,
+            number("STOP", parts[1])?,
+            number("STEP", parts[2])?,
+        );
+        if step == 0.0 || (stop - start) * step <= 0.0 {
+            return Err(bad(format!(
+                "STEP {step}° does not lead from START {start}° to STOP {stop}°"
+            )));
+        }
+        let count = ((stop - start) / step).ceil();
+        if count > MAX_ANGLES as f64 {
+            return Err(bad(format!("{count:.3e} angles is more than {MAX_ANGLES}")));
+        }
+        Ok(Self { start, stop, step })
+    }
+}
+
+/// An angle step in degrees that divides the revolution: in (0°, 90°], at most 10 000 000 steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RevolutionStep(pub f64);
+
+impl RevolutionStep {
+    /// The step, degrees.
+    pub fn deg(self) -> f64 {
+        self.0
+    }
+}
+
+impl FromStr for RevolutionStep {
+    type Err = BadValue;
+    fn from_str(s: &str) -> Result<Self, BadValue> {
+        let step = number("step", s)?;
+        if !(step > 0.0 && step <= 90.0) {
+            return Err(bad(format!("{step}° is not in (0°, 90°]")));
+        }
+        let n = 360.0 / step;
+        if n > MAX_ANGLES as f64 {
+            return Err(bad(format!(
+                "{step}° gives more than {MAX_ANGLES} angles per revolution"
+            )));
+        }
+        if (n - n.round()).abs() > 1e-9 * n {
+            return Err(bad(format!("{step}° does not divide 360°")));
+        }
+        Ok(Self(step))
+    }
+}
+
+/// Nodal point counts of the interpolation method, comma-separated, each 3 to 1 000 000.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NodeCounts(pub Vec<usize>);
+
+impl FromStr for NodeCounts {
+    type Err = BadValue;
+    fn from_str(s: &str) -> Result<Self, BadValue> {
+        let v = s
+            .split(',')
+            .map(|t| {
+                let t = t.trim();
+                t.parse::<usize>()
+                    .map_err(|_| bad(format!("{t:?} is not a whole number")))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        for &n in &v {
+            if !(3..=1_000_000).contains(&n) {
+                return Err(bad(format!("{n} is out of range (3 to 1000000)")));
+            }
+        }
+        Ok(Self(v))
+    }
+}
+
+/// A window of cam angles in degrees: `START:STOP` with START < STOP.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AngleWindow {
+    /// degrees
+    pub start: f64,
+    /// degrees
+    pub stop: f64,
+}
+
+impl FromStr for AngleWindow {
+    type Err = BadValue;
+    fn from_str(s: &str) -> Result<Self, BadValue> {
+        let p: Vec<&str> = s.split(':').collect();
+        if p.len() != 2 {
+            return Err(bad("not START:STOP (degrees)"));
+        }
+        let (start, stop) = (number("START", p[0])?, number("STOP", p[1])?);
+        if start >= stop {
+            return Err(bad(format!("START {start}° is not below STOP {stop}°")));
+        }
+        Ok(Self { start, stop })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn angle_ranges_exclude_stop() {
+        let r = |s: &str| s.parse::<AngleRange>().map(|r| r.angles());
+        assert_eq!(r("0:3:1").unwrap(), vec![0.0, 1.0, 2.0]);
+        assert_eq!(r("10:0:-5").unwrap(), vec![10.0, 5.0]);
+        assert_eq!(AngleRange::REVOLUTION.angles().len(), 360);
+        assert!(r("0:1:0").is_err());
+        assert!(r("0:10:-1").is_err());
+        assert!(r("0:0:1").is_err(), "an empty range");
+        assert!(r("0:1").is_err());
+        assert!(r("0:1e12:1e-6").is_err());
+        assert!(r("0:inf:1").is_err());
+    }
+
+    #[test]
+    fn angle_lists_are_finite_numbers() {
+        assert_eq!(
+            "0, 45,-10".parse::<AngleList>().unwrap().0,
+            vec![0.0, 45.0, -10.0]
+        );
+        for bad in ["a", "1,,2", "nan", "1,inf", ""] {
+            assert!(bad.parse::<AngleList>().is_err(), "{bad:?} accepted");
+        }
+    }
+
+    #[test]
+    fn steps_divide_the_revolution() {
+        assert_eq!("0.25".parse::<RevolutionStep>().unwrap().deg(), 0.25);
+        for bad in ["0", "-1", "7", "91", "1e-6", "nan", "x"] {
+            assert!(bad.parse::<RevolutionStep>().is_err(), "{bad:?} accepted");
+        }
+    }
+
+    #[test]
+    fn node_counts_and_windows() {
+        assert_eq!(
+            "100, 1000".parse::<NodeCounts>().unwrap().0,
+            vec![100, 1000]
+        );
+        for bad in ["2", "1e3", "-5", "10,", "2000000"] {
+            assert!(bad.parse::<NodeCounts>().is_err(), "{bad:?} accepted");
+        }
+        let w: AngleWindow = "5:10".parse().unwrap();
+        assert_eq!((w.start, w.stop), (5.0, 10.0));
+        for bad in ["10:5", "5:5", "5", "a:b", "1:2:3"] {
+            assert!(bad.parse::<AngleWindow>().is_err(), "{bad:?} accepted");
+        }
+    }
+}

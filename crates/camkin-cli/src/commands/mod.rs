@@ -1,0 +1,8 @@
+//! One module per subcommand: its arguments (`clap::Args`) and its `run`.
+
+pub mod analyze;
+pub mod bench;
+pub mod compare;
+pub mod plot;
+pub mod simulate;
+pub mod synth;

@@ -1,0 +1,4 @@
+//! Pictures: line charts (`chart`) and the mechanism drawn to scale (`mechanism`).
+
+pub mod chart;
+pub mod mechanism;

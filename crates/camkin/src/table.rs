@@ -1,0 +1,271 @@
+//! Results as table rows: one type per table, so that every front end (the command's CSV and
+//! JSON, the Python package's arrays) reads the same columns from one definition. The field
+//! names are the column names; with the `serde` feature the rows derive `Serialize`.
+//!
+//! Rows keep the library's units: angles in degrees where the column name says `_deg`, lengths in
+//! the mechanism's length unit, time in seconds. Numbers are not rounded.
+
+use crate::cam::{CamError, FollowerState, Found, Mechanism};
+use crate::curve::Domain;
+use crate::dynamics::{Event, EventKind, Sample};
+
+/// How a row's contact was found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[non_exhaustive]
+pub enum FoundBy {
+    /// a global search (a first angle, or after a failed warm start)
+    Global,
+    /// Newton's method from the previous row's contact
+    Warm,
+    /// the contact jumped since the previous row (a global search found a different contact,
+    /// or the contact passed over a stretch the follower cannot follow)
+    Jump,
+}
+
+/// One row of the analysis (`camkin analyze`): the follower's motion and the contact at one cam
+/// angle. A row that could not be computed has only `angle_deg` and `error`.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct AnalysisRow {
+    /// cam angle, degrees, as asked for
+    pub angle_deg: f64,
+    /// follower position: distance from the cam axis (translating), arm angle in rad (oscillating)
+    pub position: Option<f64>,
+    /// its time derivative
+    pub velocity: Option<f64>,
+    /// its second time derivative
+    pub acceleration: Option<f64>,
+    /// its third time derivative (none at a profile node, where it jumps)
+    pub jerk: Option<f64>,
+    /// contact point, world frame
+    pub contact_x: Option<f64>,
+    /// contact point, world frame
+    pub contact_y: Option<f64>,
+    /// contact point in the cam's frame
+    pub cam_x: Option<f64>,
+    /// contact point in the cam's frame
+    pub cam_y: Option<f64>,
+    /// the profile parameter of the contact point
+    pub cam_param: Option<f64>,
+    /// the sliding rate of the contact point along the cam profile, `ṡ_A` (eq. 3), length/s
+    pub sliding_rate_cam: Option<f64>,
+    /// along the follower's curve, `ṡ_B` (eq. 4), length/s
+    pub sliding_rate_follower: Option<f64>,
+    /// the normal acceleration of the contact point seen from the cam (eq. 1), length/s²
+    pub normal_accel_cam: Option<f64>,
+    /// its Coriolis term, length/s²
+    pub coriolis_cam: Option<f64>,
+    /// its relative term, length/s²
+    pub relative_cam: Option<f64>,
+    /// the normal acceleration seen from the follower (eq. 2), length/s²
+    pub normal_accel_follower: Option<f64>,
+    /// the common normal (the cam profile's left normal), world frame
+    pub normal_x: Option<f64>,
+    /// the common normal, world frame
+    pub normal_y: Option<f64>,
+    /// `σ = ±1`: the tangents' relative orientation (eq. 5)
+    pub sigma: Option<f64>,
+    /// pressure angle, degrees
+    pub pressure_angle_deg: Option<f64>,
+    /// the cam profile's radius of curvature at the contact, length (∞ on a straight stretch)
+    pub radius_of_curvature: Option<f64>,
+    /// 1 when the contact is at a profile node (where the jerk jumps), else 0
+    pub at_node: Option<u8>,
+    /// how the contact was found
+    pub found: Option<FoundBy>,
+    /// why the row could not be computed
+    pub error: Option<String>,
+}
+
+impl AnalysisRow {
+    /// The row of one result; `jump` marks a contact that jumped since the previous row.
+    pub fn new(angle_deg: f64, result: &Result<FollowerState, CamError>, jump: bool) -> Self {
+        match result {
+            Ok(s) => Self {
+                angle_deg,
+                position: Some(s.position),
+                velocity: Some(s.velocity),
+                acceleration: Some(s.acceleration),
+                jerk: s.jerk,
+                contact_x: Some(s.contact_world.x),
+                contact_y: Some(s.contact_world.y),
+                cam_x: Some(s.contact_cam.x),
+                cam_y: Some(s.contact_cam.y),
+                cam_param: Some(s.cam_param),
+                sliding_rate_cam: Some(s.sliding_rate_cam),
+                sliding_rate_follower: Some(s.sliding_rate_follower),
+                normal_accel_cam: Some(s.normal_acceleration_cam.total()),
+                coriolis_cam: Some(s.normal_acceleration_cam.coriolis),
+                relative_cam: Some(s.normal_acceleration_cam.relative),
+                normal_accel_follower: Some(s.normal_acceleration_follower.total()),
+                normal_x: Some(s.normal.x),
+                normal_y: Some(s.normal.y),
+                sigma: Some(s.sigma),
+                pressure_angle_deg: Some(s.pressure_angle().to_degrees()),
+                radius_of_curvature: Some(s.radius_of_curvature),
+                at_node: Some(u8::from(s.at_breakpoint)),
+                found: Some(match s.found {
+                    _ if jump => FoundBy::Jump,
+                    Found::Global => FoundBy::Global,
+                    Found::WarmStart => FoundBy::Warm,
+                    Found::Jump { .. } => FoundBy::Jump,
+                }),
+                error: None,
+            },
+            Err(e) => Self {
+                angle_deg,
+                position: None,
+                velocity: None,
+                acceleration: None,
+                jerk: None,
+                contact_x: None,
+                contact_y: None,
+                cam_x: None,
+                cam_y: None,
+                cam_param: None,
+                sliding_rate_cam: None,
+                sliding_rate_follower: None,
+                normal_accel_cam: None,
+                coriolis_cam: None,
+                relative_cam: None,
+                normal_accel_follower: None,
+                normal_x: None,
+                normal_y: None,
+                sigma: None,
+                pressure_angle_deg: None,
+                radius_of_curvature: None,
+                at_node: None,
+                found: None,
+                error: Some(e.to_string()),
+            },
+        }
+    }
+}
+
+/// The analysis rows of a sweep: `angles_deg[k]` gave `results[k]`. `contiguous` says the angles
+/// are a range in order (then a contact that passed over a stretch the follower cannot follow
+/// between two rows has jumped, and its row says so even when the sweep's warm start held).
+pub fn analysis_rows(
+    mech: &Mechanism,
+    angles_deg: &[f64],
+    results: &[Result<FollowerState, CamError>],
+    contiguous: bool,
+) -> Vec<AnalysisRow> {
+    let jumps = contact_jumps(mech, results, contiguous);
+    angles_deg
+        .iter()
+        .zip(results)
+        .zip(jumps)
+        .map(|((&a, r), j)| AnalysisRow::new(a, r, j))
+        .collect()
+}
+
+/// Rows whose contact jumped since the previous row: flagged by the sweep, or (for contiguous
+/// angles) the contact parameter passed over a stretch the follower cannot follow, which it can
+/// only do by jumping.
+pub fn contact_jumps(
+    mech: &Mechanism,
+    results: &[Result<FollowerState, CamError>],
+    contiguous: bool,
+) -> Vec<bool> {
+    let stretches = mech.unfollowable_stretches();
+    let period = match mech.cam().profile().domain() {
+        Domain::Periodic { period } => period,
+        _ => 1.0,
+    };
+    let mut out = vec![false; results.len()];
+    for k in 0..results.len() {
+        let Ok(s) = &results[k] else { continue };
+        if matches!(s.found, Found::Jump { .. }) {
+            out[k] = true;
+            continue;
+        }
+        let Some(Ok(p)) = k.checked_sub(1).map(|i| &results[i]) else {
+            continue;
+        };
+        if !contiguous || stretches.is_empty() {
+            continue;
+        }
+        // the arc from the previous contact to this one, in the direction the contact moves
+        let dir = if p.cam_param_rate >= 0.0 { 1.0 } else { -1.0 };
+        let arc = (dir * (s.cam_param - p.cam_param)).rem_euclid(period);
+        let inside = |u: f64| {
+            let d = (dir * (u - p.cam_param)).rem_euclid(period);
+            d > 0.0 && d < arc
+        };
+        out[k] = stretches.iter().any(|&(a, b)| inside(a) && inside(b));
+    }
+    out
+}
+
+/// One row of a simulation's time series (`camkin simulate`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SampleRow {
+    /// time, s
+    pub time: f64,
+    /// cam angle, degrees
+    pub cam_angle_deg: f64,
+    /// follower position (as in [`AnalysisRow::position`])
+    pub position: f64,
+    /// its time derivative
+    pub velocity: f64,
+    /// its second time derivative
+    pub acceleration: f64,
+    /// contact force along the common normal, N, compressive positive; 0 in free flight
+    pub contact_force: f64,
+    /// 1 while the follower touches the cam, else 0
+    pub in_contact: u8,
+    /// the position the follower would have in permanent contact (the kinematic motion)
+    pub kinematic_position: f64,
+    /// the acceleration it would have in permanent contact
+    pub kinematic_acceleration: f64,
+}
+
+impl SampleRow {
+    /// The row of a sample, beside the kinematic motion at the same cam angle (`NaN` where it
+    /// could not be computed).
+    pub fn new(s: &Sample, kinematic: Option<&FollowerState>) -> Self {
+        Self {
+            time: s.time,
+            cam_angle_deg: s.cam_angle.to_degrees(),
+            position: s.position,
+            velocity: s.velocity,
+            acceleration: s.acceleration,
+            contact_force: s.contact_force,
+            in_contact: u8::from(s.in_contact),
+            kinematic_position: kinematic.map_or(f64::NAN, |k| k.position),
+            kinematic_acceleration: kinematic.map_or(f64::NAN, |k| k.acceleration),
+        }
+    }
+}
+
+/// One row of a simulation's events.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct EventRow {
+    /// `lift-off` or `impact`
+    pub event: &'static str,
+    /// time, s
+    pub time: f64,
+    /// cam angle, degrees
+    pub cam_angle_deg: f64,
+    /// normal approach speed at an impact (0 at a lift-off), m/s
+    pub impact_velocity: f64,
+}
+
+impl From<&Event> for EventRow {
+    fn from(e: &Event) -> Self {
+        Self {
+            event: match e.kind {
+                EventKind::LiftOff => "lift-off",
+                EventKind::Impact => "impact",
+            },
+            time: e.time,
+            cam_angle_deg: e.cam_angle.to_degrees(),
+            impact_velocity: e.impact_velocity,
+        }
+    }
+}
