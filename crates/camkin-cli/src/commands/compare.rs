@@ -2,7 +2,7 @@
 
 use crate::args::{AngleWindow, NodeCounts, RevolutionStep};
 use crate::draw::chart::{self, Chart, Series};
-use crate::output::write_atomic;
+use crate::output::{write_atomic, write_table, TableFormat};
 use crate::study::{self, Study};
 use crate::{load_mechanism, Failure};
 use anyhow::{Context, Result};
@@ -92,52 +92,53 @@ fn write_files(
     let mut written = Vec::new();
     let p = dir.join("displacement.csv");
     write_atomic(Some(&p), |w| {
-        writeln!(w, "angle_deg,position,velocity,acceleration,jerk")?;
-        for (a, s) in study.grid_deg.iter().zip(&study.exact) {
-            writeln!(
-                w,
-                "{a},{},{},{},{}",
-                s.position,
-                s.velocity,
-                s.acceleration,
-                s.jerk.map(|j| j.to_string()).unwrap_or_default()
-            )?;
-        }
-        Ok(())
+        let rows: Vec<MotionRow> = study
+            .grid_deg
+            .iter()
+            .zip(&study.exact)
+            .map(|(&angle_deg, s)| MotionRow {
+                angle_deg,
+                position: s.position,
+                velocity: s.velocity,
+                acceleration: s.acceleration,
+                jerk: s.jerk,
+            })
+            .collect();
+        write_table(w, &rows, TableFormat::Csv)
     })?;
     written.push(p);
     let p = dir.join("acceleration.csv");
     write_atomic(Some(&p), |w| {
-        write!(w, "angle_deg,contact_method")?;
-        for r in &study.runs {
-            write!(w, ",interpolated_{}", r.nodes)?;
-        }
-        writeln!(w)?;
+        // one column per node count: a record type cannot name them, so the csv crate's records
+        let mut c = csv::Writer::from_writer(w);
+        let mut head = vec!["angle_deg".to_string(), "contact_method".to_string()];
+        head.extend(
+            study
+                .runs
+                .iter()
+                .map(|r| format!("interpolated_{}", r.nodes)),
+        );
+        c.write_record(&head)?;
         for (k, (a, s)) in study.grid_deg.iter().zip(&study.exact).enumerate() {
-            write!(w, "{a},{}", s.acceleration)?;
-            for r in &study.runs {
-                write!(w, ",{}", r.acceleration[k])?;
-            }
-            writeln!(w)?;
+            let mut rec = vec![*a, s.acceleration];
+            rec.extend(study.runs.iter().map(|r| r.acceleration[k]));
+            c.serialize(&rec)?;
         }
-        Ok(())
+        Ok(c.flush()?)
     })?;
     written.push(p);
     let p = dir.join("relative_error.csv");
     write_atomic(Some(&p), |w| {
-        write!(w, "angle_deg")?;
-        for r in &study.runs {
-            write!(w, ",n_{}", r.nodes)?;
-        }
-        writeln!(w)?;
+        let mut c = csv::Writer::from_writer(w);
+        let mut head = vec!["angle_deg".to_string()];
+        head.extend(study.runs.iter().map(|r| format!("n_{}", r.nodes)));
+        c.write_record(&head)?;
         for (k, a) in study.grid_deg.iter().enumerate() {
-            write!(w, "{a}")?;
-            for r in &study.runs {
-                write!(w, ",{}", r.rel_error[k])?;
-            }
-            writeln!(w)?;
+            let mut rec = vec![*a];
+            rec.extend(study.runs.iter().map(|r| r.rel_error[k]));
+            c.serialize(&rec)?;
         }
-        Ok(())
+        Ok(c.flush()?)
     })?;
     written.push(p);
 
@@ -258,22 +259,53 @@ fn table(study: &Study, title: &str, acc_unit: &str) -> String {
     t
 }
 
-fn csv_rows(study: &Study, cam: &str, w: &mut String) {
-    for r in &study.runs {
-        w.push_str(&format!(
-            "{cam},{},{},{},{},{},{},{}\n",
-            r.nodes,
-            r.max_rel_error,
-            r.mean_rel_error,
-            r.total_seconds,
-            r.single_seconds,
-            study.contact_total_seconds,
-            study.contact_single_seconds
-        ));
-    }
+fn summary_rows(study: &Study, cam: &str) -> Vec<SummaryRow> {
+    study
+        .runs
+        .iter()
+        .map(|r| SummaryRow {
+            cam: cam.to_string(),
+            nodes: r.nodes,
+            max_rel_error: r.max_rel_error,
+            mean_rel_error: r.mean_rel_error,
+            interp_total_s: r.total_seconds,
+            interp_single_s: r.single_seconds,
+            contact_total_s: study.contact_total_seconds,
+            contact_single_s: study.contact_single_seconds,
+        })
+        .collect()
 }
 
-const CSV_HEADER: &str = "cam,nodes,max_rel_error,mean_rel_error,interp_total_s,interp_single_s,contact_total_s,contact_single_s\n";
+/// The exact motion on the study's grid (`displacement.csv`).
+#[derive(Debug, serde::Serialize)]
+struct MotionRow {
+    angle_deg: f64,
+    position: f64,
+    velocity: f64,
+    acceleration: f64,
+    jerk: Option<f64>,
+}
+
+/// One node count of the study (the summary with `--format csv`).
+#[derive(Debug, serde::Serialize)]
+struct SummaryRow {
+    /// the cam (`original`, `revised`, or the file's name)
+    cam: String,
+    /// nodal points per revolution
+    nodes: usize,
+    /// largest |a_N − a| / max|a|
+    max_rel_error: f64,
+    /// its mean over the grid
+    mean_rel_error: f64,
+    /// the interpolation method: set-up and all evaluations, s
+    interp_total_s: f64,
+    /// one evaluation, s
+    interp_single_s: f64,
+    /// the contact method over the grid, s
+    contact_total_s: f64,
+    /// one evaluation, s
+    contact_single_s: f64,
+}
 
 /// The summary as JSON: `max_rel_error` and `mean_rel_error` map every N (as a string) to its value.
 fn json_summary(study: &Study) -> Value {
@@ -303,7 +335,7 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let (nodes, step) = (&args.nodes.0, args.step.deg());
     let mut md =
         String::from("# The paper's study: contact method against interpolated displacement\n\n");
-    let mut csv = String::from(CSV_HEADER);
+    let mut csv = Vec::new();
     let mut js = Map::new();
     for (key, revised, title) in [
         ("original", false, "Original cam"),
@@ -316,7 +348,7 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
             .map_err(Failure::Input)?;
         md += &table(&study, title, "cm/s²");
         md.push('\n');
-        csv_rows(&study, key, &mut csv);
+        csv.extend(summary_rows(&study, key));
         js.insert(key.to_string(), json_summary(&study));
     }
     write_atomic(Some(&args.out.join("summary.md")), |w| {
@@ -343,8 +375,7 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
     }
     let acc = units(&mech, "length").acc;
     let md = table(&study, &title, &acc);
-    let mut csv = String::from(CSV_HEADER);
-    csv_rows(&study, &title, &mut csv);
+    let csv = summary_rows(&study, &title);
     let mut js = json_summary(&study);
     if let Value::Object(m) = &mut js {
         m.insert(
@@ -361,11 +392,11 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
     print_summary(args.format, &md, &csv, &js)
 }
 
-fn print_summary(format: Format, md: &str, csv: &str, js: &Value) -> Result<(), Failure> {
-    let text = match format {
-        Format::Table => md.to_string(),
-        Format::Csv => csv.to_string(),
-        Format::Json => format!("{js}\n"),
-    };
-    write_atomic(None, |w| Ok(w.write_all(text.as_bytes())?)).map_err(Failure::Internal)
+fn print_summary(format: Format, md: &str, csv: &[SummaryRow], js: &Value) -> Result<(), Failure> {
+    write_atomic(None, |w| match format {
+        Format::Table => Ok(w.write_all(md.as_bytes())?),
+        Format::Csv => write_table(w, csv, TableFormat::Csv),
+        Format::Json => Ok(writeln!(w, "{js}")?),
+    })
+    .map_err(Failure::Internal)
 }

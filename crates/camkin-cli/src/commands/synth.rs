@@ -3,7 +3,7 @@
 
 use crate::args::RevolutionStep;
 use crate::draw::chart::{self, Chart, Series};
-use crate::output::write_atomic;
+use crate::output::{write_atomic, write_table, TableFormat};
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
 use camkin::cam::{FollowerCurve, FollowerState};
@@ -22,6 +22,17 @@ pub struct SynthArgs {
     /// Largest acceptable pressure angle, degrees.
     #[arg(long, value_name = "DEG", default_value_t = 30.0)]
     pub pressure_limit: f64,
+}
+
+/// A point of the synthesised profile in the cam's frame (`profile.csv`).
+#[derive(Debug, serde::Serialize)]
+struct ProfilePoint {
+    /// the cam angle whose follower position this point gives, degrees
+    cam_angle_deg: f64,
+    /// cam frame
+    x: f64,
+    /// cam frame
+    y: f64,
 }
 
 /// A DXF (R12, ASCII) drawing with one closed polyline through `pts` (cam frame).
@@ -92,11 +103,16 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         .collect();
     let out = |name: &str| args.out.join(name);
     write_atomic(Some(&out("profile.csv")), |w| {
-        writeln!(w, "cam_angle_deg,x,y")?;
-        for (t, (x, y)) in thetas.iter().zip(&pts) {
-            writeln!(w, "{},{x},{y}", t.to_degrees())?;
-        }
-        Ok(())
+        let rows: Vec<ProfilePoint> = thetas
+            .iter()
+            .zip(&pts)
+            .map(|(t, &(x, y))| ProfilePoint {
+                cam_angle_deg: t.to_degrees(),
+                x,
+                y,
+            })
+            .collect();
+        write_table(w, &rows, TableFormat::Csv)
     })
     .map_err(Failure::Input)?;
     write_atomic(Some(&out("profile.dxf")), |w| {
