@@ -1,7 +1,7 @@
 //! Criterion benchmarks of the hot paths: `cargo bench -p camkin`.
 //!
 //! - `spline/eval`: one evaluation of the paper's cam profile (position and three derivatives);
-//! - `contact/closest_pair`: the general pairing-point search between a spline and an ellipse;
+//! - `contact/find_contact`: the general pairing-point search between a spline and an ellipse;
 //! - `contact/kinematics`: sliding rates, constraint row and right-hand side at a given pairing;
 //! - `cold/<follower>`: one query at an arbitrary cam angle (global search, velocity,
 //!   acceleration: `Mechanism::motion`) for each follower type on the paper's cam;
@@ -10,7 +10,7 @@
 //! - `dynamics/revolution_1deg`: one simulated revolution of the paper's cam, 1° steps.
 use camkin::body::{BodyState, Pose};
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
-use camkin::contact::{closest_pair, ContactKinematics, SearchOptions, Surface};
+use camkin::contact::{find_contact, ContactKinematics, SearchOptions, Surface};
 use camkin::curve::{Curve, Ellipse};
 use camkin::reference::{paper_mechanism, paper_profile};
 use camkin::{Point2, Vec2};
@@ -92,10 +92,10 @@ fn contact(c: &mut Criterion) {
     };
     let opts = SearchOptions::for_length_scale(5.0);
     let (sa, sb) = (Surface::new(&sp, &a), Surface::new(&el, &b));
-    c.bench_function("contact/closest_pair", |bch| {
-        bch.iter(|| black_box(closest_pair(&sa, &sb, &opts)))
+    c.bench_function("contact/find_contact", |bch| {
+        bch.iter(|| black_box(find_contact(&sa, &sb, &opts)))
     });
-    let p = closest_pair(&sa, &sb, &opts).expect("pair");
+    let p = find_contact(&sa, &sb, &opts).expect("pair").pairing();
     c.bench_function("contact/kinematics", |bch| {
         bch.iter(|| black_box(ContactKinematics::new(&sa, &sb, black_box(&p), 1e-9)))
     });

@@ -154,14 +154,6 @@ pub enum ContactError {
         /// length of the last step, length
         last_step: f64,
     },
-    /// The curves overlap: the nearest normal pair penetrates.
-    #[error("the curves overlap by {depth} at ({x}, {y})", x = pairing.point_a.x, y = pairing.point_a.y)]
-    Penetrating {
-        /// overlap, length (> 0)
-        depth: f64,
-        /// the deepest pairing found
-        pairing: Pairing,
-    },
     /// Both curves are unbounded, or both are points: no nearest pair to search for.
     #[error("cannot search a nearest pair between {0}")]
     Unsupported(&'static str),
@@ -284,19 +276,76 @@ fn sample_params(c: &dyn Curve, opts: &SearchOptions) -> Option<Vec<f64>> {
     }
 }
 
-/// The nearest pair of pairing points between two curves, found by global bracketing (sampling
-/// every smooth piece of both curves, the best sampled pairs refined by Newton) and never a far
-/// pair when a nearer one exists.
+/// How two curves lie relative to each other: the result of [`find_contact`]. Overlap is a
+/// result (the curves are placed so), not a failure of the search.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub enum Proximity {
+    /// The curves are apart: the nearest pair, with `gap > contact_tolerance`.
+    Apart(Pairing),
+    /// The curves touch: `|gap| ≤ contact_tolerance`; the pairing is the contact.
+    Touching(Pairing),
+    /// The curves overlap: the deepest pair found, with `gap < −contact_tolerance` (the depth is
+    /// `−gap`).
+    Overlapping(Pairing),
+}
+
+impl Proximity {
+    /// The pairing: the nearest pair, the contact, or the deepest pair.
+    pub fn pairing(&self) -> Pairing {
+        match *self {
+            Proximity::Apart(p) | Proximity::Touching(p) | Proximity::Overlapping(p) => p,
+        }
+    }
+    /// The signed gap, length: > 0 apart, < 0 overlapping.
+    pub fn gap(&self) -> f64 {
+        self.pairing().gap
+    }
+    /// The contact, when the curves touch.
+    pub fn contact(&self) -> Option<Pairing> {
+        match *self {
+            Proximity::Touching(p) => Some(p),
+            _ => None,
+        }
+    }
+}
+
+/// Where two curves carried by bodies touch, or how far apart they are, or how deep they overlap:
+/// the nearest pair of pairing points, found by global bracketing (sampling every smooth piece of
+/// both curves, the best sampled pairs refined by Newton), never a far pair when a nearer one
+/// exists.
 ///
-/// Returns the pair with the smallest gap when the curves are apart; when they overlap, a
-/// [`ContactError::Penetrating`] error carrying the deepest pair found. The gap's sign needs both
-/// curves oriented material-on-the-left (see the [crate docs](crate#sign-conventions)). At most one
-/// of the two curves may be unbounded (a line).
-pub fn closest_pair(
+/// The gap's sign needs both curves oriented material-on-the-left (see the
+/// [crate docs](crate#sign-conventions)). At most one of the two curves may be unbounded (a line).
+/// An error says why the search stopped (two unbounded curves, no pairing point converged).
+///
+/// ```
+/// use camkin::body::{BodyState, Pose};
+/// use camkin::contact::{find_contact, Proximity, SearchOptions, Surface};
+/// use camkin::curve::Circle;
+/// use camkin::Point2;
+///
+/// // a disc of radius 2 at the origin and one of radius 1 whose centre is 3 away: they touch
+/// let (big, small) = (Circle::new(Point2::origin(), 2.0)?, Circle::new(Point2::origin(), 1.0)?);
+/// let a = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
+/// let b = BodyState::at_rest(Pose::new(Point2::new(3.0, 0.0), 0.0));
+/// let opts = SearchOptions::for_length_scale(2.0);
+/// match find_contact(&Surface::new(&big, &a), &Surface::new(&small, &b), &opts)? {
+///     Proximity::Touching(p) => assert!((p.point_a.x - 2.0).abs() < 1e-12),
+///     other => panic!("expected contact, got {other:?}"),
+/// }
+/// // moved 0.5 closer they overlap by 0.5: a result, not an error
+/// let b = BodyState::at_rest(Pose::new(Point2::new(2.5, 0.0), 0.0));
+/// let p = find_contact(&Surface::new(&big, &a), &Surface::new(&small, &b), &opts)?;
+/// assert!(matches!(p, Proximity::Overlapping(_)) && (p.gap() + 0.5).abs() < 1e-9);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn find_contact(
     a: &Surface<'_>,
     b: &Surface<'_>,
     opts: &SearchOptions,
-) -> Result<Pairing, ContactError> {
+) -> Result<Proximity, ContactError> {
     let sa = sample_params(a.curve, opts);
     let sb = sample_params(b.curve, opts);
     // Candidate starting pairs: (distance², u_a, u_b).
@@ -353,13 +402,11 @@ pub fn closest_pair(
     }
     // A crossing of the two curves shows up as a sampled distance near zero with no tangent pair.
     if let Some(d) = deepest {
-        return Err(ContactError::Penetrating {
-            depth: -d.gap,
-            pairing: d,
-        });
+        return Ok(Proximity::Overlapping(d));
     }
     match best {
-        Some(p) => Ok(p),
+        Some(p) if p.gap <= opts.contact_tolerance => Ok(Proximity::Touching(p)),
+        Some(p) => Ok(Proximity::Apart(p)),
         None => Err(last_err.unwrap_or(ContactError::Unsupported("curves with no pairing points"))),
     }
 }
@@ -382,22 +429,6 @@ fn project_onto(s: &Surface<'_>, x: Point2, u0: f64, opts: &SearchOptions) -> f6
         }
     }
     u
-}
-
-/// The contact between two curves, if they touch: `Ok(Some(pairing))` when the nearest pair's
-/// gap is within `opts.contact_tolerance`, `Ok(None)` when the curves are apart, an error when they
-/// overlap or the search fails.
-pub fn find_contact(
-    a: &Surface<'_>,
-    b: &Surface<'_>,
-    opts: &SearchOptions,
-) -> Result<Option<Pairing>, ContactError> {
-    let p = closest_pair(a, b, opts)?;
-    if p.gap.abs() <= opts.contact_tolerance {
-        Ok(Some(p))
-    } else {
-        Ok(None)
-    }
 }
 
 /// Velocity-level contact kinematics at a pairing (paper eqs. 3–7, 9) and the acceleration

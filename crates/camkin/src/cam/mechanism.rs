@@ -155,6 +155,25 @@ impl Mechanism {
 
     /// The follower's motion at cam angle `theta` (rad) with the cam's own speed and
     /// angular acceleration. The contact is found by a global search.
+    ///
+    /// ```
+    /// use camkin::cam::{Cam, Follower, Mechanism, Sense};
+    /// use camkin::curve::Circle;
+    /// use camkin::{Point2, Vec2};
+    /// use std::sync::Arc;
+    ///
+    /// // an eccentric circle (radius 4, centre 1.25 off the axis) under a flat face moving
+    /// // along x: s = R + e cos θ, s̈ = −e ω² cos θ exactly
+    /// let (r, e) = (4.0, 1.25);
+    /// let disc = Arc::new(Circle::new(Point2::new(e, 0.0), r)?);
+    /// let cam = Cam::from_rpm(disc, Point2::origin(), Sense::Ccw, 1000.0)?;
+    /// let m = Mechanism::new(cam, Follower::TranslatingFlat { direction: Vec2::x() })?;
+    /// let (theta, w) = (0.3_f64, m.cam().speed());
+    /// let s = m.analyze(theta)?;
+    /// assert!((s.position - (r + e * theta.cos())).abs() < 1e-12);
+    /// assert!((s.acceleration + e * w * w * theta.cos()).abs() < 1e-9 * e * w * w);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn analyze(&self, theta: f64) -> Result<FollowerState, CamError> {
         let cam = self.cam.state(theta);
         let frame = cam.frame();

@@ -30,6 +30,23 @@ pub enum Found {
 /// A warm-started sweep: each angle starts Newton from the previous contact extrapolated to
 /// second order; on a non-convex profile a guard compares with the sampled first-touch function
 /// and marks jumps of the contact ([`Found::Jump`]).
+///
+/// ```
+/// use camkin::cam::Found;
+///
+/// // the paper's cam over a revolution in 1° steps: one global search, then warm starts
+/// let m = camkin::reference::paper_mechanism(false);
+/// let mut sweep = m.sweep();
+/// let states: Vec<_> = (0..360)
+///     .map(|k| sweep.step(f64::from(k).to_radians()))
+///     .collect::<Result<_, _>>()?;
+/// assert_eq!(states[0].found, Found::Global);
+/// assert!(states[1..].iter().all(|s| s.found == Found::WarmStart));
+/// // the same contact as a global search at every angle
+/// let cold = m.analyze(100f64.to_radians())?;
+/// assert!((states[100].acceleration - cold.acceleration).abs() <= 1e-9 * cold.acceleration.abs());
+/// # Ok::<(), camkin::cam::CamError>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct Sweep<'a> {
     mech: &'a Mechanism,

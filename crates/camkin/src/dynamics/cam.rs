@@ -119,6 +119,38 @@ pub const REBOUND_TOLERANCE: f64 = 1e-3;
 impl Simulation {
     /// Builds the multibody model of `mech` with the follower's `params`, starting at cam angle
     /// 0 in contact with the kinematic position and velocity.
+    ///
+    /// ```
+    /// use camkin::cam::{Cam, Follower, Mechanism, Sense};
+    /// use camkin::curve::Circle;
+    /// use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Simulation};
+    /// use camkin::{Point2, Vec2};
+    /// use std::sync::Arc;
+    ///
+    /// // an eccentric disc (m) at 300 rpm under a flat face; a stiff, preloaded spring keeps the
+    /// // follower on the cam, so it follows the kinematic motion s = R + e cos θ
+    /// let disc = Arc::new(Circle::new(Point2::new(0.005, 0.0), 0.04)?);
+    /// let cam = Cam::from_rpm(disc, Point2::origin(), Sense::Ccw, 300.0)?;
+    /// let m = Mechanism::new(cam, Follower::TranslatingFlat { direction: Vec2::x() })?;
+    /// let params = FollowerDynamics {
+    ///     mass: 0.5,
+    ///     inertia: 0.0,
+    ///     spring_stiffness: 2.0e4,
+    ///     spring_preload: 200.0,
+    ///     damping: 0.0,
+    ///     restitution: 0.0,
+    ///     gravity: Vec2::zeros(),
+    /// };
+    /// let mut sim = Simulation::new(&m, params, AugmentedLagrangian::default())?;
+    /// let h = 1f64.to_radians() / m.cam().speed(); // 1° of cam rotation
+    /// for _ in 0..90 {
+    ///     assert!(sim.advance(h)?.is_empty(), "no lift-off");
+    /// }
+    /// let s = sim.sample()?;
+    /// let exact = 0.04 + 0.005 * s.cam_angle.cos();
+    /// assert!(s.in_contact && (s.position - exact).abs() < 1e-8);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn new(
         mech: &Mechanism,
         params: FollowerDynamics,

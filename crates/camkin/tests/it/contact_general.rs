@@ -8,7 +8,7 @@
 use crate::common::*;
 use camkin::body::{BodyState, Pose};
 use camkin::contact::{
-    closest_pair, find_contact, refine, ContactError, ContactKinematics, Pairing, SearchOptions,
+    find_contact, refine, ContactError, ContactKinematics, Pairing, Proximity, SearchOptions,
     Surface,
 };
 use camkin::curve::{Circle, ClosedSpline, Curve, Ellipse, Line, PointCurve};
@@ -34,7 +34,9 @@ fn touching(
     mut b: BodyState,
     opts: &SearchOptions,
 ) -> (BodyState, BodyState, Pairing) {
-    let p = closest_pair(&Surface::new(ca, &a), &Surface::new(cb, &b), opts).unwrap();
+    let p = find_contact(&Surface::new(ca, &a), &Surface::new(cb, &b), opts)
+        .unwrap()
+        .pairing();
     // move B along the normal to close the gap
     b.pose.origin += p.gap * *p.normal;
     let p = refine(
@@ -158,7 +160,7 @@ fn swapping_a_and_b_gives_same_contact_and_sliding_rates() {
     );
     let (sa, sb) = (Surface::new(&sp, &a), Surface::new(&e, &b));
     let kab = ContactKinematics::new(&sa, &sb, &p, 1e-9).unwrap();
-    let q = closest_pair(&sb, &sa, &opts).unwrap();
+    let q = find_contact(&sb, &sa, &opts).unwrap().pairing();
     let kba = ContactKinematics::new(&sb, &sa, &q, 1e-9).unwrap();
     assert_close(q.u_a, p.u_b, 1e-10, 1.0, "u swapped");
     assert_close(q.u_b, p.u_a, 1e-10, 1.0, "u swapped");
@@ -236,29 +238,26 @@ fn flat_line_against_curve() {
 }
 
 #[test]
-fn apart_is_none_and_overlap_is_an_error() {
+fn apart_touching_and_overlapping_are_results() {
     let c1 = Circle::new(Point2::origin(), 2.0).unwrap();
     let c2 = Circle::new(Point2::origin(), 1.0).unwrap();
     let a = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
     let opts = SearchOptions::for_length_scale(2.0);
     let far = BodyState::at_rest(Pose::new(Point2::new(3.5, 0.0), 0.0));
-    assert_eq!(
-        find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &far), &opts).unwrap(),
-        None
-    );
-    let p = closest_pair(&Surface::new(&c1, &a), &Surface::new(&c2, &far), &opts).unwrap();
-    assert_close(p.gap, 0.5, 1e-12, 1.0, "gap of separated circles");
+    match find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &far), &opts).unwrap() {
+        Proximity::Apart(p) => assert_close(p.gap, 0.5, 1e-12, 1.0, "gap of separated circles"),
+        other => panic!("expected apart, got {other:?}"),
+    }
     let touch = BodyState::at_rest(Pose::new(Point2::new(3.0, 0.0), 0.0));
     let c = find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &touch), &opts)
         .unwrap()
-        .unwrap();
+        .contact()
+        .expect("touching");
     assert_close(c.point_a.x, 2.0, 1e-12, 1.0, "contact point");
     let overlap = BodyState::at_rest(Pose::new(Point2::new(2.5, 0.0), 0.0));
-    match closest_pair(&Surface::new(&c1, &a), &Surface::new(&c2, &overlap), &opts) {
-        Err(ContactError::Penetrating { depth, .. }) => {
-            assert_close(depth, 0.5, 1e-9, 1.0, "depth")
-        }
-        other => panic!("expected penetration, got {other:?}"),
+    match find_contact(&Surface::new(&c1, &a), &Surface::new(&c2, &overlap), &opts) {
+        Ok(Proximity::Overlapping(p)) => assert_close(-p.gap, 0.5, 1e-9, 1.0, "depth"),
+        other => panic!("expected overlap, got {other:?}"),
     }
 }
 

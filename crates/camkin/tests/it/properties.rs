@@ -144,16 +144,16 @@ proptest! {
         bearing in 0.0f64..std::f64::consts::TAU,
     ) {
         use camkin::body::{BodyState, Pose};
-        use camkin::contact::{closest_pair, refine, ContactKinematics, SearchOptions, Surface};
+        use camkin::contact::{find_contact, refine, ContactKinematics, SearchOptions, Surface};
         use camkin::curve::{Curve, Ellipse};
         let sp = ClosedSpline::new(&nodes).unwrap();
         let el = Ellipse::new(Point2::new(0.2, -0.1), 1.5, 0.8, 0.3).unwrap();
         let opts = SearchOptions::for_length_scale(4.0);
         let a = BodyState { pose: Pose::new(Point2::origin(), ang_a), velocity: Vec2::new(va.0, va.1), omega: wa, acceleration: Vec2::zeros(), alpha: 0.0 };
         let mut b = BodyState { pose: Pose::new(Point2::new(9.0 * bearing.cos(), 9.0 * bearing.sin()), ang_b), velocity: Vec2::zeros(), omega: wb, acceleration: Vec2::zeros(), alpha: 0.0 };
-        let p = closest_pair(&Surface::new(&sp, &a), &Surface::new(&el, &b), &opts);
+        let p = find_contact(&Surface::new(&sp, &a), &Surface::new(&el, &b), &opts);
         prop_assume!(p.is_ok());
-        let p = p.unwrap();
+        let p = p.unwrap().pairing();
         prop_assume!(sp.curvature(p.u_a) > 0.0);
         b.pose.origin += p.gap * *p.normal; // bring B into contact
         let p = refine(&Surface::new(&sp, &a), &Surface::new(&el, &b), p.u_a, p.u_b, &opts).unwrap();
