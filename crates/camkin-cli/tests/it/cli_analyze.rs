@@ -1,7 +1,7 @@
 //! `camkin analyze`: output format, examples, exit codes, atomic output, error messages.
 #![allow(clippy::unwrap_used)]
+use crate::common::predicate;
 use crate::common::*;
-use predicates::prelude::*;
 use std::path::PathBuf;
 
 fn parse_csv(out: &[u8]) -> (Vec<String>, Vec<Vec<String>>) {

@@ -1,8 +1,8 @@
 //! Bad input: every case exits with code 2 and a message naming the field (or the line of the
 //! points file) and the offending value, never a panic, and never a written file.
 #![allow(clippy::unwrap_used)]
+use crate::common::predicate;
 use crate::common::*;
-use predicates::prelude::*;
 
 const CIRCLE: &str =
     "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [0.5, 0]\nradius = 2\n";

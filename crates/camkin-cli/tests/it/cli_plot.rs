@@ -1,7 +1,7 @@
 //! `camkin plot`: figures, drawings and the animation are produced and well formed.
 #![allow(clippy::unwrap_used)]
+use crate::common::predicate;
 use crate::common::*;
-use predicates::prelude::*;
 use std::path::Path;
 
 fn png_size(p: &Path) -> (u32, u32) {

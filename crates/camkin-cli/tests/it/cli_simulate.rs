@@ -1,7 +1,7 @@
 //! `camkin simulate`: time series, events, plots, bad dynamics input.
 #![allow(clippy::unwrap_used)]
+use crate::common::predicate;
 use crate::common::*;
-use predicates::prelude::*;
 use std::path::PathBuf;
 
 fn example(name: &str) -> PathBuf {

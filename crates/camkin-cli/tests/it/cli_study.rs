@@ -1,8 +1,8 @@
 //! `camkin paper` and `camkin compare`: files produced and well formed, summary contents, JSON
 //! keys, bad input.
 #![allow(clippy::unwrap_used)]
+use crate::common::predicate;
 use crate::common::*;
-use predicates::prelude::*;
 use std::path::Path;
 
 /// A PNG of the expected size (signature and IHDR).

@@ -1,8 +1,8 @@
 //! `camkin synth`: profile files (the DXF read back by a DXF reader), SVAJ plots, design checks
 //! on cams built to violate them, the round trip.
 #![allow(clippy::unwrap_used)]
+use crate::common::predicate;
 use crate::common::*;
-use predicates::prelude::*;
 use std::path::PathBuf;
 
 #[test]
@@ -36,20 +36,22 @@ fn synth_writes_a_profile_a_dxf_reader_opens() {
         report.contains("undercut: none") && report.contains("within ±30°"),
         "{report}"
     );
-    let drawing =
-        dxf::Drawing::load_file(dir.path().join("profile.dxf").to_str().unwrap()).unwrap();
-    let mut vertices = 0;
-    let mut closed = false;
-    for e in drawing.entities() {
-        if let dxf::entities::EntityType::Polyline(p) = &e.specific {
-            vertices += p.vertices().count();
-            closed = p.is_closed();
-        }
-    }
-    assert_eq!(vertices, 720);
-    assert!(closed);
+    let polylines =
+        dxf_polylines(&std::fs::read_to_string(dir.path().join("profile.dxf")).unwrap());
+    assert_eq!(polylines.len(), 1);
+    let (closed, vertices) = &polylines[0];
+    assert!(*closed);
+    assert_eq!(vertices.len(), 720);
     let csv = std::fs::read_to_string(dir.path().join("profile.csv")).unwrap();
     assert_eq!(csv.lines().count(), 721);
+    // the drawing's vertices are the profile's points
+    for (line, v) in csv.lines().skip(1).zip(vertices) {
+        let c: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        assert!(
+            (c[1] - v.0).abs() < 1e-12 && (c[2] - v.1).abs() < 1e-12,
+            "{line} {v:?}"
+        );
+    }
     for f in [
         "profile.svg",
         "svaj_displacement.png",
@@ -150,4 +152,49 @@ fn synth_needs_a_motion_profile() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("kind = \"motion\""));
+}
+
+/// The POLYLINE entities of an ASCII DXF file (group code / value line pairs, read here from the
+/// format's definition, not with the writer's code): each with its closed flag (group 70, bit 1)
+/// and its VERTEX points (groups 10, 20).
+fn dxf_polylines(text: &str) -> Vec<(bool, Vec<(f64, f64)>)> {
+    let lines: Vec<&str> = text.lines().map(str::trim).collect();
+    assert!(lines.len() % 2 == 0, "DXF is pairs of lines");
+    let pairs: Vec<(i32, &str)> = lines
+        .chunks(2)
+        .map(|p| (p[0].parse().expect("a group code"), p[1]))
+        .collect();
+    let mut out = Vec::new();
+    let mut k = 0;
+    while k < pairs.len() {
+        if pairs[k] == (0, "POLYLINE") {
+            let mut closed = false;
+            let mut pts = Vec::new();
+            k += 1;
+            while pairs[k].0 != 0 {
+                if pairs[k].0 == 70 {
+                    closed = pairs[k].1.parse::<i32>().unwrap() & 1 == 1;
+                }
+                k += 1;
+            }
+            while pairs[k] == (0, "VERTEX") {
+                let (mut x, mut y) = (None, None);
+                k += 1;
+                while pairs[k].0 != 0 {
+                    match pairs[k].0 {
+                        10 => x = Some(pairs[k].1.parse::<f64>().unwrap()),
+                        20 => y = Some(pairs[k].1.parse::<f64>().unwrap()),
+                        _ => {}
+                    }
+                    k += 1;
+                }
+                pts.push((x.expect("x"), y.expect("y")));
+            }
+            assert_eq!(pairs[k], (0, "SEQEND"), "a polyline ends with SEQEND");
+            out.push((closed, pts));
+        }
+        k += 1;
+    }
+    assert_eq!(pairs.last(), Some(&(0, "EOF")));
+    out
 }
