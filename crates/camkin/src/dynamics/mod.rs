@@ -32,7 +32,7 @@ mod model;
 mod projection;
 mod solver;
 
-pub use cam::{Event, EventKind, FollowerDynamics, Sample, Simulation};
+pub use cam::{Event, EventKind, FollowerDynamics, Sample, Simulation, REBOUND_TOLERANCE};
 pub use model::{Constraint, ForceElement, RigidBody, System};
 pub use solver::{AugmentedLagrangian, Evaluation};
 

@@ -20,9 +20,13 @@ fn params(oscillating: bool) -> FollowerDynamics {
 
 #[test]
 fn permanent_contact_reproduces_kinematics_for_every_follower() {
-    for f in all_followers(Point2::origin()) {
+    for (dir, f) in [Sense::Ccw, Sense::Cw].into_iter().flat_map(|d| {
+        all_followers(Point2::origin())
+            .into_iter()
+            .map(move |f| (d, f))
+    }) {
         let osc = f.is_oscillating();
-        let m = mechanism(paper_profile(false), Point2::origin(), Sense::Ccw, 100.0, f);
+        let m = mechanism(paper_profile(false), Point2::origin(), dir, 100.0, f);
         let p = params(osc);
         let mut sim = Simulation::new(&m, p, AugmentedLagrangian::default()).unwrap();
         let sign = match *m.follower() {
@@ -64,19 +68,21 @@ fn permanent_contact_reproduces_kinematics_for_every_follower() {
             );
         }
         eprintln!(
-            "{}: |Δa|/max|a| = {:e}, force balance |Δ|/max = {:e}",
+            "{} {dir:?}: |Δa|/max|a| = {:e}, force balance |Δ|/max = {:e}",
             f.kind_name(),
             worst_a / amax,
             worst_f / fmax
         );
         assert!(
-            worst_a <= 1e-6 * amax,
+            // the README claims 3e-14 of the peak
+            worst_a <= 1e-13 * amax,
             "{}: {}",
             f.kind_name(),
             worst_a / amax
         );
         assert!(
-            worst_f <= 1e-6 * fmax,
+            // the README claims 2e-10 of the largest force
+            worst_f <= 1e-9 * fmax,
             "{}: {}",
             f.kind_name(),
             worst_f / fmax
@@ -111,8 +117,8 @@ fn spring_torque(p: &FollowerDynamics, sign: f64, low: f64, phi: f64) -> f64 {
 }
 
 /// No damping, permanent contact, 100 revolutions: the driving torque's work equals the gain in
-/// kinetic plus spring energy (to 1e-6 of the energy exchanged), and the constraints do not drift
-/// (below 1e-9 of the cam's size).
+/// kinetic plus spring energy (the README claims 2.6e-7 of the energy exchanged with 0.25° steps),
+/// and the constraints do not drift (the README claims 5e-14 of the cam's size).
 #[test]
 fn energy_balance_and_no_drift_over_a_hundred_revolutions() {
     let m = mechanism(
@@ -156,6 +162,6 @@ fn energy_balance_and_no_drift_over_a_hundred_revolutions() {
         "energy: |W − ΔE| ≤ {worst:e} against swings of {swing:e}; drift {drift:e} (size {})",
         m.size()
     );
-    assert!(worst <= 1e-6 * swing, "{worst} vs {swing}");
-    assert!(drift <= 1e-9 * m.size(), "{drift}");
+    assert!(worst <= 5e-7 * swing, "{worst} vs {swing}");
+    assert!(drift <= 2e-13 * m.size(), "{drift}");
 }

@@ -1,25 +1,68 @@
-//! Lift-off of a flat-faced follower on an eccentric circular cam: analytic threshold speed
-//! ω² = (F0 + 2 k e)/(m e) and the cam angle where the analytic contact force crosses zero.
+//! Lift-off, free flight and re-contact of a flat-faced follower on an eccentric circular cam,
+//! against closed forms that share nothing with the simulation: the follower's kinematic motion
+//! `s = R + e cos φ` (φ = σθ + β), the analytic contact force, the harmonic free flight under the
+//! spring, and the restitution rule. Both cam directions, the disc's centre off the follower's
+//! axis (so that a cw cam treated as ccw would fail).
 #![allow(clippy::unwrap_used)]
 use crate::common::*;
-use camkin::cam::{Follower, Sense};
-use camkin::dynamics::{AugmentedLagrangian, EventKind, FollowerDynamics, Simulation};
+use camkin::cam::{Follower, Mechanism, Sense};
+use camkin::dynamics::{
+    AugmentedLagrangian, Event, EventKind, FollowerDynamics, Sample, Simulation, REBOUND_TOLERANCE,
+};
 use camkin::{Point2, Vec2};
+use std::f64::consts::{PI, TAU};
+use std::sync::Arc;
 
 const R: f64 = 0.04; // m
 const E: f64 = 0.01;
 const M: f64 = 0.3; // kg
 const K: f64 = 2000.0; // N/m
 const F0: f64 = 20.0; // N at the lowest position
+const REST: f64 = 0.6;
 
-fn run(speed_factor: f64) -> (Vec<camkin::dynamics::Event>, f64) {
-    let w_crit = ((F0 + 2.0 * K * E) / (M * E)).sqrt();
-    let w = speed_factor * w_crit;
+/// The analytic threshold speed: the contact force `−m e ω² cos φ + F0 + k e (1 + cos φ)` first
+/// reaches zero at `φ = 0`.
+fn w_crit() -> f64 {
+    ((F0 + 2.0 * K * E) / (M * E)).sqrt()
+}
+
+struct Run {
+    m: Mechanism,
+    w: f64,
+    sigma: f64,
+    beta: f64,
+    theta0: f64,
+    events: Vec<Event>,
+    last: Sample,
+}
+
+impl Run {
+    /// φ at time t.
+    fn phi(&self, t: f64) -> f64 {
+        self.sigma * (self.theta0 + self.w * t) + self.beta
+    }
+    /// The cam's support along x (the flat face's kinematic position) and its rate at time t.
+    fn cam(&self, t: f64) -> (f64, f64) {
+        let p = self.phi(t);
+        (R + E * p.cos(), -E * self.sigma * self.w * p.sin())
+    }
+    /// The analytic contact force in permanent contact at time t.
+    fn force(&self, t: f64) -> f64 {
+        let p = self.phi(t);
+        -M * E * self.w * self.w * p.cos() + F0 + K * E * (1.0 + p.cos())
+    }
+}
+
+fn run(speed_factor: f64, sense: Sense, beta: f64) -> Run {
+    let w = speed_factor * w_crit();
+    let disc = Arc::new(
+        camkin::curve::Circle::new(Point2::new(E * beta.cos(), E * beta.sin()), R).unwrap(),
+    );
     let m = mechanism(
-        eccentric_circle(R, E),
+        disc,
         Point2::origin(),
-        Sense::Ccw,
-        w * 60.0 / std::f64::consts::TAU,
+        sense,
+        w * 60.0 / TAU,
         Follower::TranslatingFlat {
             direction: Vec2::x(),
         },
@@ -30,54 +73,143 @@ fn run(speed_factor: f64) -> (Vec<camkin::dynamics::Event>, f64) {
         spring_stiffness: K,
         spring_preload: F0,
         damping: 0.0,
-        restitution: 0.6,
+        restitution: REST,
         gravity: Vec2::zeros(),
     };
-    // start where the contact force is largest (θ = 180°) and run one revolution
-    let mut sim =
-        Simulation::starting_at(&m, p, AugmentedLagrangian::default(), std::f64::consts::PI)
-            .unwrap();
+    // start where the contact force is largest (φ = π) and run one revolution
+    let sigma = sense.sign();
+    let theta0 = sigma * (PI - beta);
+    let mut sim = Simulation::starting_at(&m, p, AugmentedLagrangian::default(), theta0).unwrap();
     let h = 0.5f64.to_radians() / w;
     let mut events = Vec::new();
     for _ in 0..720 {
         events.extend(sim.advance(h).unwrap());
     }
-    (events, w)
+    let last = sim.sample().unwrap();
+    Run {
+        m,
+        w,
+        sigma,
+        beta,
+        theta0,
+        events,
+        last,
+    }
+}
+
+/// The first root of `f` after `t0` (f(t0⁺) > 0), by scanning in steps of `dt` and bisecting.
+fn first_root(f: impl Fn(f64) -> f64, t0: f64, dt: f64, t_max: f64) -> Option<f64> {
+    let mut a = t0;
+    while a < t_max {
+        let b = a + dt;
+        if f(b) <= 0.0 {
+            let (mut lo, mut hi) = (a, b);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if f(mid) > 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            return Some(0.5 * (lo + hi));
+        }
+        a = b;
+    }
+    None
 }
 
 #[test]
 fn no_lift_off_below_the_threshold() {
-    let (events, _) = run(0.98);
-    assert!(events.is_empty(), "{events:?}");
+    for (sense, beta) in [(Sense::Ccw, 0.0), (Sense::Cw, 0.7)] {
+        let r = run(0.98, sense, beta);
+        assert!(r.events.is_empty(), "{:?}", r.events);
+    }
 }
 
+/// Lift-off where the analytic force crosses zero; free flight under the spring is harmonic, so
+/// each landing time and approach speed follows from the state after the previous event; each
+/// impact reverses the normal velocity times the restitution; once a rebound is slower than
+/// `REBOUND_TOLERANCE · ω · size` the follower stays on the cam and follows the kinematic motion.
 #[test]
-fn lift_off_above_the_threshold_where_the_force_crosses_zero() {
-    let (events, w) = run(1.02);
-    let lift = events
-        .iter()
-        .find(|e| e.kind == EventKind::LiftOff)
-        .expect("a lift-off");
-    // F_c(θ) = −m e ω² cos θ + F0 + k e (1 + cos θ) reaches zero first on the way to θ = 360°
-    let cos_t = (F0 + K * E) / (M * E * w * w - K * E);
-    let theta = std::f64::consts::TAU - cos_t.acos();
-    let got = lift.cam_angle.rem_euclid(std::f64::consts::TAU);
-    eprintln!(
-        "lift-off at {:.6}°, analytic {:.6}°; events {events:?}",
-        got.to_degrees(),
-        theta.to_degrees()
-    );
-    assert!(
-        (got - theta).to_degrees().abs() < 0.1,
-        "lift-off at {}°, analytic {}°",
-        got.to_degrees(),
-        theta.to_degrees()
-    );
-    // the follower comes back: an impact, after the lift-off
-    assert!(
-        events
-            .iter()
-            .any(|e| e.kind == EventKind::Impact && e.time > lift.time && e.impact_velocity > 0.0),
-        "{events:?}"
-    );
+fn lift_off_flight_impacts_and_re_engagement_follow_closed_forms() {
+    for (sense, beta) in [(Sense::Ccw, 0.0), (Sense::Cw, 0.7)] {
+        let r = run(1.02, sense, beta);
+        let period = TAU / r.w;
+        let name = format!("{sense:?}, β = {}", r.beta);
+        // lift-off: the first zero of the analytic contact force
+        let t_lift = first_root(|t| r.force(t), 0.0, period / 3600.0, period).unwrap();
+        let lift = &r.events[0];
+        assert_eq!(lift.kind, EventKind::LiftOff, "{name}: {:?}", r.events);
+        let d_angle = (lift.time - t_lift) * r.w;
+        eprintln!(
+            "{name}: lift-off at {:.7}°, analytic {:.7}° (Δ = {:.1e}°)",
+            lift.cam_angle.to_degrees(),
+            (r.theta0 + r.w * t_lift).to_degrees(),
+            d_angle.to_degrees()
+        );
+        assert!(
+            d_angle.to_degrees().abs() < 1e-9,
+            "{name}: Δ = {d_angle:e} rad"
+        );
+
+        // the flights, from the analytic state at lift-off
+        let omega = (K / M).sqrt();
+        let low = R - E;
+        let (mut t0, mut x0, mut v0) = {
+            let (x, v) = r.cam(t_lift);
+            (t_lift, x, v)
+        };
+        let threshold = REBOUND_TOLERANCE * r.w * r.m.size();
+        let mut impacts = 0;
+        let mut worst_t: f64 = 0.0;
+        let mut worst_v: f64 = 0.0;
+        loop {
+            // x(τ) about the spring's equilibrium low − F0/k, harmonic with Ω = √(k/m)
+            let y0 = x0 - (low - F0 / K);
+            let x = |t: f64| {
+                let tau = t - t0;
+                (low - F0 / K) + y0 * (omega * tau).cos() + v0 / omega * (omega * tau).sin()
+            };
+            let v = |t: f64| {
+                let tau = t - t0;
+                -y0 * omega * (omega * tau).sin() + v0 * (omega * tau).cos()
+            };
+            let gap = |t: f64| x(t) - r.cam(t).0;
+            let t_land = first_root(gap, t0 + 1e-7 * period, period / 20_000.0, t0 + period)
+                .unwrap_or_else(|| panic!("{name}: no landing predicted"));
+            let approach = r.cam(t_land).1 - v(t_land);
+            impacts += 1;
+            let ev = r
+                .events
+                .get(impacts)
+                .unwrap_or_else(|| panic!("{name}: impact {impacts} missing: {:?}", r.events));
+            assert_eq!(ev.kind, EventKind::Impact, "{name}");
+            worst_t = worst_t.max(((ev.time - t_land) / period).abs());
+            worst_v = worst_v.max(((ev.impact_velocity - approach) / approach).abs());
+            let rebound = REST * approach;
+            if rebound <= threshold {
+                break;
+            }
+            // after the impact: on the cam, moving away with the relative speed e·v
+            t0 = t_land;
+            x0 = r.cam(t_land).0;
+            v0 = r.cam(t_land).1 + rebound;
+        }
+        eprintln!(
+            "{name}: {impacts} impacts; landing times within {worst_t:.1e} of a revolution, approach speeds within {worst_v:.1e} relative"
+        );
+        assert_eq!(r.events.len(), impacts + 1, "{name}: {:?}", r.events);
+        assert!(worst_t < 1e-9, "{name}: landing times off by {worst_t:e}");
+        assert!(worst_v < 1e-7, "{name}: approach speeds off by {worst_v:e}");
+        // re-engaged: in contact at the end of the revolution, on the kinematic motion
+        let t_end = r.last.time;
+        assert!(r.last.in_contact, "{name}");
+        assert!(
+            (r.last.position - r.cam(t_end).0).abs() < 1e-9 * R,
+            "{name}: {} vs {}",
+            r.last.position,
+            r.cam(t_end).0
+        );
+    }
 }
