@@ -4,8 +4,9 @@ use crate::common::*;
 use camkin::cam::{Follower, Mechanism, Sense};
 use camkin::{Point2, Vec2};
 
-/// Two independent methods: implicit differentiation of the first-touch conditions and the
-/// paper's contact method (eqs. 5, 6, 11) give the same velocity and acceleration.
+/// The contact method (eqs. 5, 6, 11) against a second derivation: implicit differentiation of the
+/// first-touch conditions. Not independent (both use the global search, the profile's derivatives
+/// and the residual of the Newton solve); it checks the method's formulas, not the contact.
 #[test]
 fn implicit_differentiation_agrees_with_contact_method_for_every_follower() {
     for (revised, dir, pivot) in [
@@ -130,8 +131,9 @@ fn jerk_is_absent_exactly_at_a_spline_node() {
     assert_eq!(s.jerk, None);
 }
 
-/// With a cam angular acceleration θ̈: q̈ = θ̇² q'' + θ̈ q' (contact method against implicit
-/// differentiation), for every follower type and both directions.
+/// With a cam angular acceleration θ̈: q̈ = θ̇² q'' + θ̈ q' (the contact method against the
+/// implicit-differentiation derivatives, which share the search and the residual with it), for
+/// every follower type and both directions.
 #[test]
 fn angular_acceleration_for_every_follower() {
     for dir in [Sense::Ccw, Sense::Cw] {
@@ -155,15 +157,47 @@ fn angular_acceleration_for_every_follower() {
                     scale,
                     f.kind_name(),
                 );
-                if let Some(j) = s.jerk {
-                    assert_close(
-                        j,
-                        w * w * w * d[2] + 3.0 * w * al * d[1],
-                        1e-12,
-                        scale * w,
-                        "jerk",
-                    );
-                }
+            }
+        }
+    }
+}
+
+/// Velocity, acceleration and jerk with a cam angular acceleration against time differences along
+/// the trajectory θ(t) = θ₀ + ω₀t + αt²/2, ω(t) = ω₀ + αt: each instant is a separate analysis (a cam
+/// with that instant's speed), so the `3 θ̇ θ̈ q″` term of the jerk and the `θ̈ q′` term of the
+/// acceleration are checked against the method's own lower derivatives, differenced in time, for
+/// every follower type and both directions (a smooth ellipse cam: no nodes in the stencils).
+#[test]
+fn angular_acceleration_terms_agree_with_time_differences_for_every_follower() {
+    let profile = ellipse(5.0, 3.5, Point2::new(0.4, 0.2), 0.3);
+    for dir in [Sense::Ccw, Sense::Cw] {
+        for f in all_followers(Point2::origin()) {
+            let (w0, al) = (40.0_f64, 3.0e3_f64);
+            let at = |t: f64| {
+                let cam =
+                    camkin::cam::Cam::new(profile.clone(), Point2::origin(), dir, w0 + al * t)
+                        .unwrap()
+                        .with_angular_acceleration(al)
+                        .unwrap();
+                let m = Mechanism::new(cam, f).unwrap();
+                let th = 0.7 + w0 * t + 0.5 * al * t * t;
+                m.analyze(th).unwrap()
+            };
+            let size = 5.0;
+            for k in 0..12 {
+                let t0 = k as f64 * 0.55 / w0;
+                let s = at(t0);
+                let w = w0 + al * t0;
+                let h = 0.3f64.to_radians() / w;
+                let (v, _) = fd8(|t| at(t).position, t0, h);
+                let (a, _) = fd8(|t| at(t).velocity, t0, h);
+                let (j, _) = fd8(|t| at(t).acceleration, t0, h);
+                let name = format!("{} {dir:?} at t = {t0:.4} s", f.kind_name());
+                assert_close(s.velocity, v, 1e-8, w * size, &format!("{name}: v"));
+                let sa = (w * w + al) * size;
+                assert_close(s.acceleration, a, 1e-8, sa, &format!("{name}: a"));
+                let jerk = s.jerk.expect("jerk on a smooth cam");
+                assert_close(jerk, j, 1e-7, sa * w, &format!("{name}: jerk"));
             }
         }
     }
