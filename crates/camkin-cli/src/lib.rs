@@ -20,6 +20,19 @@ pub enum Failure {
     Internal(anyhow::Error),
 }
 
+impl Failure {
+    /// A failure to write output. The one rule for every command: when the system refused a write
+    /// to a path the user gave (no such directory, a file in the way, no permission, disk full),
+    /// exit 2 with the path and the reason; any other failure while producing output, exit 1.
+    pub fn output(e: anyhow::Error) -> Self {
+        if e.chain().any(|c| c.is::<std::io::Error>()) {
+            Failure::Input(e)
+        } else {
+            Failure::Internal(e)
+        }
+    }
+}
+
 /// Loads the mechanism file, or the paper's built-in mechanism when none is given.
 pub fn load_mechanism(path: Option<&PathBuf>) -> Result<camkin::cam::Mechanism, Failure> {
     match path {

@@ -94,6 +94,45 @@ mod tests {
         ]
     }
 
+    fn entries(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+            .collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn a_fill_that_fails_midway_leaves_the_old_file_and_no_temporary_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("out.csv");
+        std::fs::write(&p, "old contents\n").unwrap();
+        let r = write_atomic(Some(&p), |w| {
+            w.write_all(&[b'x'; 100_000])?; // more than the buffer: bytes reach the temporary file
+            anyhow::bail!("failed midway")
+        });
+        assert!(r.is_err());
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "old contents\n");
+        assert_eq!(entries(dir.path()), vec!["out.csv".to_string()]);
+        // and a fill that succeeds replaces the file whole, leaving nothing else
+        write_atomic(Some(&p), |w| Ok(w.write_all(b"new\n")?)).unwrap();
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "new\n");
+        assert_eq!(entries(dir.path()), vec!["out.csv".to_string()]);
+    }
+
+    #[test]
+    fn a_new_file_that_fails_midway_is_not_created() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("new.csv");
+        let r = write_atomic(Some(&p), |w| {
+            w.write_all(b"partial")?;
+            anyhow::bail!("failed midway")
+        });
+        assert!(r.is_err());
+        assert!(entries(dir.path()).is_empty());
+    }
+
     #[test]
     fn analysis_csv_header_starts_with_the_fixed_columns_and_rows_match_it() {
         let mut out = Vec::new();

@@ -101,8 +101,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     })
     .map_err(|e| {
         if args.output.is_some() {
-            Failure::Input(e)
+            Failure::output(e)
         } else {
+            // standard output that cannot be written is not the user's input
             Failure::Internal(e)
         }
     })?;

@@ -345,7 +345,7 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
         let study = study::run(&mech, nodes, step, title).map_err(Failure::Internal)?;
         let zoom = if revised { Some((5.0, 10.0)) } else { None };
         write_files(&study, &mech, &args.out.join(key), title, "cm", zoom)
-            .map_err(Failure::Input)?;
+            .map_err(Failure::output)?;
         md += &table(&study, title, "cm/s²");
         md.push('\n');
         csv.extend(summary_rows(&study, key));
@@ -354,7 +354,7 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     write_atomic(Some(&args.out.join("summary.md")), |w| {
         Ok(w.write_all(md.as_bytes())?)
     })
-    .map_err(Failure::Input)?;
+    .map_err(Failure::output)?;
     print_summary(args.format, &md, &csv, &Value::Object(js))?;
     eprintln!("camkin: wrote {}", args.out.display());
     Ok(())
@@ -371,7 +371,7 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
         .unwrap_or_else(|| "mechanism".into());
     let study = study::run(&mech, nodes, step, &title).map_err(Failure::Input)?;
     if let Some(dir) = &args.out {
-        write_files(&study, &mech, dir, &title, "length", zoom).map_err(Failure::Input)?;
+        write_files(&study, &mech, dir, &title, "length", zoom).map_err(Failure::output)?;
     }
     let acc = units(&mech, "length").acc;
     let md = table(&study, &title, &acc);
@@ -387,7 +387,7 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
         write_atomic(Some(&dir.join("summary.md")), |w| {
             Ok(w.write_all(md.as_bytes())?)
         })
-        .map_err(Failure::Input)?;
+        .map_err(Failure::output)?;
     }
     print_summary(args.format, &md, &csv, &js)
 }

@@ -225,7 +225,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     if failed == states.len() {
         return Err(Failure::Input(anyhow!("the follower cannot be analysed at any cam angle (try `camkin analyze` for the reasons)")));
     }
-    let mut written = kinematics(&mech, &grid, &states, &args.out).map_err(Failure::Internal)?;
+    let mut written = kinematics(&mech, &grid, &states, &args.out).map_err(Failure::output)?;
 
     // one box for every drawing and frame, so the scale does not jump
     let frame_angles: Vec<f64> = (0..args.frames)
@@ -254,9 +254,9 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         let svg = base.with_extension("svg");
         let png = base.with_extension("png");
         chart::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
-            .map_err(Failure::Internal)?;
+            .map_err(Failure::output)?;
         chart::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
-            .map_err(Failure::Internal)?;
+            .map_err(Failure::output)?;
         written.extend([svg, png]);
     }
     let frames: Vec<Vec<Shape>> = scenes
@@ -271,7 +271,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let svg = scene::animated_svg(&frames, &titles, bbox, 6.0);
     let anim = args.out.join("animation.svg");
     crate::output::write_atomic(Some(&anim), |w| Ok(w.write_all(svg.as_bytes())?))
-        .map_err(Failure::Input)?;
+        .map_err(Failure::output)?;
     written.push(anim);
     if failed > 0 {
         eprintln!(

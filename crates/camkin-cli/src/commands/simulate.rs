@@ -139,13 +139,13 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
                 "csv"
             };
             write_atomic(Some(&dir.join(format!("time_series.{ext}"))), series)
-                .map_err(Failure::Input)?;
+                .map_err(Failure::output)?;
             write_atomic(Some(&dir.join("events.csv")), |w| {
                 write_table(w, &event_rows, TableFormat::Csv)
             })
-            .map_err(Failure::Input)?;
+            .map_err(Failure::output)?;
             plot(&samples, &rows, dir, mech.follower().is_oscillating())
-                .map_err(Failure::Internal)?;
+                .map_err(Failure::output)?;
         }
     }
     report(&events);

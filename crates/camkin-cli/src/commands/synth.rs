@@ -114,15 +114,15 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             .collect();
         write_table(w, &rows, TableFormat::Csv)
     })
-    .map_err(Failure::Input)?;
+    .map_err(Failure::output)?;
     write_atomic(Some(&out("profile.dxf")), |w| {
         Ok(w.write_all(dxf_polyline(&pts).as_bytes())?)
     })
-    .map_err(Failure::Input)?;
+    .map_err(Failure::output)?;
     write_atomic(Some(&out("profile.svg")), |w| {
         Ok(w.write_all(svg_profile(&pts).as_bytes())?)
     })
-    .map_err(Failure::Input)?;
+    .map_err(Failure::output)?;
 
     // the program's SVAJ curves (derivatives in the cam angle)
     let prog: Vec<[f64; 4]> = thetas
@@ -150,7 +150,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             &chart(&format!("program: {name}"), k),
             &out(&format!("svaj_{name}")),
         )
-        .map_err(Failure::Internal)?;
+        .map_err(Failure::output)?;
     }
 
     // analysis of the synthesised profile: the round trip and the design checks
@@ -255,7 +255,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     write_atomic(Some(&out("checks.txt")), |w| {
         Ok(w.write_all(report.as_bytes())?)
     })
-    .map_err(Failure::Input)?;
+    .map_err(Failure::output)?;
     print!("{report}");
     eprintln!("camkin: wrote {}", args.out.display());
     Ok(())

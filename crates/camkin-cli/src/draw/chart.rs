@@ -95,7 +95,10 @@ pub fn write_png(
     let result = (|| {
         let root = BitMapBackend::new(&tmp, size).into_drawing_area();
         f(root.clone())?;
-        root.present().map_err(|e| anyhow!("{e}"))?;
+        // the backend's error is the file system's: keep it an I/O error (exit 2 for a bad path)
+        root.present()
+            .map_err(|e| std::io::Error::other(e.to_string()))
+            .with_context(|| format!("cannot write {}", path.display()))?;
         drop(root);
         std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))
     })();

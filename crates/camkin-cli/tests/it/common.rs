@@ -33,6 +33,11 @@ impl Cmd {
         self.0.args(a);
         self
     }
+    /// Sends standard output to `file` instead of capturing it.
+    pub fn stdout_to(&mut self, file: std::fs::File) -> &mut Self {
+        self.0.stdout(file);
+        self
+    }
     /// Runs the command to its end, stdin closed.
     pub fn assert(&mut self) -> Assert {
         let out = self

@@ -1,0 +1,105 @@
+//! Where output goes, and the one exit-code rule for output that cannot be written: a path the
+//! user gave that the system refuses is exit 2 in every command (with the path and the reason);
+//! standard output that cannot be written is exit 1.
+#![allow(clippy::unwrap_used)]
+use crate::common::predicate;
+use crate::common::*;
+
+/// A directory path under a regular file: no command can create or write it.
+fn blocked(dir: &std::path::Path) -> std::path::PathBuf {
+    let file = dir.join("a-file");
+    std::fs::write(&file, "not a directory").unwrap();
+    file.join("out")
+}
+
+#[test]
+fn an_output_path_that_cannot_be_written_is_exit_2_in_every_command() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = blocked(dir.path());
+    let ex = examples();
+    let runs: Vec<Vec<String>> = vec![
+        vec![
+            "analyze".into(),
+            "--at".into(),
+            "0".into(),
+            "-o".into(),
+            bad.join("x.csv").display().to_string(),
+        ],
+        vec![
+            "plot".into(),
+            "--at".into(),
+            "0".into(),
+            "--step".into(),
+            "5".into(),
+            "--frames".into(),
+            "4".into(),
+            "--out".into(),
+            bad.display().to_string(),
+        ],
+        vec![
+            "synth".into(),
+            ex.join("motion-roller.toml").display().to_string(),
+            "--step".into(),
+            "5".into(),
+            "--out".into(),
+            bad.display().to_string(),
+        ],
+        vec![
+            "simulate".into(),
+            ex.join("paper-dynamics.toml").display().to_string(),
+            "--step".into(),
+            "5".into(),
+            "--out".into(),
+            bad.display().to_string(),
+        ],
+        vec![
+            "compare".into(),
+            ex.join("paper.toml").display().to_string(),
+            "--nodes".into(),
+            "10".into(),
+            "--step".into(),
+            "5".into(),
+            "--out".into(),
+            bad.display().to_string(),
+        ],
+        vec![
+            "paper".into(),
+            "--nodes".into(),
+            "10".into(),
+            "--step".into(),
+            "5".into(),
+            "--out".into(),
+            bad.display().to_string(),
+        ],
+    ];
+    for args in runs {
+        camkin()
+            .args(&args)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("a-file"))
+            .stderr(predicate::str::contains("panicked").not());
+    }
+    // a directory where the file should go
+    camkin()
+        .args(["analyze", "--at", "0", "-o"])
+        .arg(dir.path())
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("cannot write"));
+}
+
+#[test]
+fn standard_output_that_cannot_be_written_is_exit_1() {
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full");
+    let Ok(full) = full else {
+        eprintln!("no /dev/full on this system: skipped");
+        return;
+    };
+    camkin()
+        .args(["analyze", "--at", "0,1,2"])
+        .stdout_to(full)
+        .assert()
+        .code(1)
+        .stderr(predicate::str::contains("internal error"));
+}
