@@ -209,3 +209,32 @@ fn study_bad_input_exits_2() {
         .stderr(predicate::str::contains("cannot read"));
     camkin().args(["paper", "--step", "-1"]).assert().code(2);
 }
+
+#[test]
+fn bench_runs_and_reports_every_key() {
+    let out = camkin()
+        .args(["bench", "--repeats", "1", "--json"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    for key in [
+        "single_query_ns",
+        "sweep_ns_per_angle",
+        "parallel_sweep_ns_per_angle",
+    ] {
+        let v = j[key].as_f64().unwrap_or_else(|| panic!("{key}: {j}"));
+        assert!(v.is_finite() && v > 0.0, "{key} = {v}");
+    }
+    assert_eq!(j["follower"], "translating-flat");
+    // the baseline's error falls with the number of nodes; the contact method's check is tight
+    let e = |n: &str| j["baseline_max_rel_error"][n].as_f64().unwrap();
+    assert!(e("100") > e("1000") && e("1000") > e("10000"), "{j}");
+    assert!(
+        j["contact_check"]["max_rel_diff"].as_f64().unwrap() < 1e-12,
+        "{j}"
+    );
+    camkin().args(["bench", "--repeats", "0"]).assert().code(2);
+}

@@ -73,8 +73,14 @@ proptest! {
         let m = parse(&text, "m.toml", Path::new("."));
         prop_assert!(m.is_ok(), "{}\n{}", text, m.err().map(|e| e.message).unwrap_or_default());
         let m = m.unwrap();
-        if let Ok(s) = m.analyze(theta) {
-            prop_assert!(s.position.is_finite() && s.velocity.is_finite() && s.acceleration.is_finite());
+        match m.analyze(theta) {
+            Ok(s) => prop_assert!(s.position.is_finite() && s.velocity.is_finite() && s.acceleration.is_finite()),
+            // a generated follower may miss a generated cam: that is geometry, said as such; a
+            // numerical failure of the solver is not acceptable here
+            Err(e) => prop_assert!(
+                matches!(e, camkin::cam::CamError::NoTouch { .. } | camkin::cam::CamError::Unreachable { .. }),
+                "{text}\n{e:?}"
+            ),
         }
     }
 

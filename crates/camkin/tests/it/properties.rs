@@ -73,10 +73,10 @@ fn rotate_follower(f: &Follower, r: &Rotation, beta: f64) -> Follower {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
-    /// For a translating flat-faced follower on a convex cam, s̈ = ω² (ρ − s) (an identity that
-    /// is not the method), for any direction of travel, cam direction and axis.
+    /// For a translating flat-faced follower on a random convex cam, for any direction of
+    /// travel, cam direction and axis: velocity and acceleration against differences of position.
     #[test]
-    fn flat_face_identity_on_random_convex_cams(
+    fn flat_face_motion_agrees_with_differences_on_random_convex_cams(
         nodes in cam_nodes(),
         dir_angle in 0.0f64..std::f64::consts::TAU,
         ccw in any::<bool>(),
@@ -89,10 +89,18 @@ proptest! {
             Follower::TranslatingFlat { direction: Vec2::new(dir_angle.cos(), dir_angle.sin()) });
         prop_assume!(m.is_convex());
         let w = m.cam().speed();
-        let s = m.analyze_deg(theta).unwrap();
-        let expect = w * w * (s.radius_of_curvature - s.position);
-        prop_assert!((s.acceleration - expect).abs() <= 1e-10 * w * w * m.size(),
-            "a = {}, ω²(ρ − s) = {}", s.acceleration, expect);
+        let th = theta.to_radians();
+        let s = m.analyze(th).unwrap();
+        // against 8th-order differences of the follower's position (the first touch alone, no
+        // velocity or acceleration formula), away from spline nodes (where the jerk jumps)
+        let h = 2e-3;
+        let (lo, hi) = (m.analyze(th - 4.0 * h).unwrap(), m.analyze(th + 4.0 * h).unwrap());
+        prop_assume!(lo.cam_param.floor() == s.cam_param.floor() && hi.cam_param.floor() == s.cam_param.floor());
+        let (d1, d2) = fd8(|t| m.position(t).unwrap(), th, h);
+        prop_assert!((s.velocity - w * d1).abs() <= 1e-8 * w * m.size(),
+            "v = {}, by differences {}", s.velocity, w * d1);
+        prop_assert!((s.acceleration - w * w * d2).abs() <= 1e-6 * w * w * m.size(),
+            "a = {}, by differences {}", s.acceleration, w * w * d2);
     }
 
     /// Rotating the whole mechanism (cam axis, profile, follower) about the world origin changes
@@ -117,7 +125,9 @@ proptest! {
             rotate_follower(&f, &r, beta),
         ).unwrap();
         let (a, b) = (m.analyze_deg(theta), mr.analyze_deg(theta));
-        prop_assume!(a.is_ok()); // a random cam may leave the follower's reach
+        // a random cam may leave the follower's reach, but then in both placements alike
+        prop_assert_eq!(a.is_ok(), b.is_ok(), "{:?} vs {:?}", a.as_ref().err(), b.as_ref().err());
+        prop_assume!(a.is_ok());
         let (a, b) = (a.unwrap(), b.unwrap());
         let w = m.cam().speed();
         let qb = if f.is_oscillating() { wrap_angle_near(b.position - beta, a.position) } else { b.position };
