@@ -67,8 +67,28 @@ fn closed_form(f: &Follower, theta: HD, pivot: Point2, c0: Vec2, s: f64) -> HD {
     }
 }
 
+/// The five followers, plus the oscillating ones closing counter-clockwise (their arm below the
+/// cam, the mirror image of `all_followers`' arms, on the branch near +30°).
+fn followers(pivot: Point2) -> Vec<Follower> {
+    let mut v = all_followers(pivot);
+    v.push(Follower::OscillatingFlat {
+        pivot: pivot + Vec2::new(-3.0, -7.0),
+        face_offset: 0.5,
+        closing: Sense::Ccw,
+        initial_angle: 30f64.to_radians(),
+    });
+    v.push(Follower::OscillatingRoller {
+        pivot: pivot + Vec2::new(-3.0, -7.0),
+        arm_length: 9.0,
+        roller_radius: 1.0,
+        closing: Sense::Ccw,
+        initial_angle: 30f64.to_radians(),
+    });
+    v
+}
+
 fn check(pivot: Point2, dir: Sense, c0: Vec2) {
-    for f in all_followers(pivot) {
+    for f in followers(pivot) {
         let m = mechanism(
             std::sync::Arc::new(camkin::curve::Circle::new(Point2::from(c0), RC).unwrap()),
             pivot,
