@@ -26,7 +26,7 @@ pub enum FoundBy {
 
 /// One row of the analysis (`camkin analyze`): the follower's motion and the contact at one cam
 /// angle. A row that could not be computed has only `angle_deg` and `error`.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct AnalysisRow {
     /// cam angle, degrees, as asked for
@@ -116,29 +116,8 @@ impl AnalysisRow {
             },
             Err(e) => Self {
                 angle_deg,
-                position: None,
-                velocity: None,
-                acceleration: None,
-                jerk: None,
-                contact_x: None,
-                contact_y: None,
-                cam_x: None,
-                cam_y: None,
-                cam_param: None,
-                sliding_rate_cam: None,
-                sliding_rate_follower: None,
-                normal_accel_cam: None,
-                coriolis_cam: None,
-                relative_cam: None,
-                normal_accel_follower: None,
-                normal_x: None,
-                normal_y: None,
-                sigma: None,
-                pressure_angle_deg: None,
-                radius_of_curvature: None,
-                at_node: None,
-                found: None,
                 error: Some(e.to_string()),
+                ..Self::default()
             },
         }
     }
