@@ -109,7 +109,7 @@ pub fn run(mech: &Mechanism, nodes: &[usize], step_deg: f64, label: &str) -> Res
     }
 
     // independent checks of the contact method
-    let checks = mech.independent_checks(&exact)?;
+    let checks = mech.consistency_checks(&exact)?;
     pb.inc(1);
     pb.finish_and_clear();
     Ok(Study {

@@ -177,7 +177,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
             );
         }
         println!(
-            "  contact method's own check: {}",
+            "  contact method's self-consistency (rounding, not independent): {}",
             check["name"].as_str().unwrap_or("")
         );
         println!(
@@ -192,7 +192,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
 /// where it applies, implicit differentiation otherwise.
 fn contact_check(mech: &Mechanism, thetas: &[f64]) -> Value {
     let states: Vec<_> = mech.analyze_all(thetas).into_iter().flatten().collect();
-    match mech.independent_checks(&states) {
+    match mech.consistency_checks(&states) {
         Ok(c) => json!({"name": c[0].name, "max_rel_diff": c[0].max_rel_diff}),
         Err(e) => json!({"name": "unavailable", "error": e.to_string()}),
     }

@@ -240,7 +240,7 @@ fn table(study: &Study, title: &str, acc_unit: &str) -> String {
     );
     for c in &study.checks {
         t += &format!(
-            "Independent check, {}: max |difference| / max |a| = {:.1e}\n",
+            "Self-consistency (rounding, not an independent check), {}: max |difference| / max |a| = {:.1e}\n",
             c.name, c.max_rel_diff
         );
     }

@@ -1,5 +1,7 @@
-//! Independent checks of the contact method's acceleration over analysed states: computations
-//! that are not the method, for reports and benchmarks.
+//! Self-consistency checks of the contact method's acceleration over analysed states, for reports
+//! and benchmarks. They measure rounding, not correctness: for a flat face `s̈ = ω² (ρ − s)` is the
+//! method's own algebra, and implicit differentiation shares its search and residual. The
+//! independent checks are the tests (closed forms, differences of position).
 
 use super::{CamError, FollowerCurve, FollowerState, Joint, Mechanism};
 
@@ -14,10 +16,10 @@ pub struct Check {
 }
 
 impl Mechanism {
-    /// Checks the accelerations of `states` against independent computations: the identity
+    /// Checks the accelerations of `states` against self-consistency relations: the identity
     /// `s̈ = ω² (ρ − s) + ω̇ s'` for a translating flat face on a convex cam, and implicit
     /// differentiation of the first-touch conditions ([`Mechanism::angle_derivatives`]) always.
-    pub fn independent_checks(&self, states: &[FollowerState]) -> Result<Vec<Check>, CamError> {
+    pub fn consistency_checks(&self, states: &[FollowerState]) -> Result<Vec<Check>, CamError> {
         let w = self.cam.speed;
         let al = self.cam.angular_acceleration;
         let amax = states
