@@ -238,12 +238,15 @@ fn table(study: &Study, title: &str, acc_unit: &str) -> String {
         fmt_time(study.contact_total_seconds / study.grid_deg.len() as f64),
         fmt_time(study.contact_single_seconds),
     );
-    for c in &study.checks {
-        t += &format!(
-            "Self-consistency (rounding, not an independent check), {}: max |difference| / max |a| = {:.1e}\n",
-            c.name, c.max_rel_diff
-        );
-    }
+    let c = &study.check;
+    t += &format!(
+        "Independent check (support function of the cam, finite differences in θ) at {} angles: position {:.1e} of the cam's size, velocity {:.1e} and acceleration {:.1e} of their peaks{}\n",
+        c.angles,
+        c.position,
+        c.velocity,
+        c.acceleration,
+        if c.skipped > 0 { format!(" ({} angles next to contact jumps skipped)", c.skipped) } else { String::new() }
+    );
     t += "\n| N | max relative error | mean relative error | whole study | one angle | one angle vs contact method |\n|---:|---:|---:|---:|---:|---:|\n";
     for r in &study.runs {
         t += &format!(
@@ -327,7 +330,7 @@ fn json_summary(study: &Study) -> Value {
         "interp_single_seconds": by_n(&|r| r.single_seconds),
         "contact_total_seconds": study.contact_total_seconds,
         "contact_single_seconds": study.contact_single_seconds,
-        "checks": study.checks.iter().map(|c| json!({"name": c.name, "max_rel_diff": c.max_rel_diff})).collect::<Vec<_>>(),
+        "independent_check": check_json(&study.check),
     })
 }
 
@@ -399,4 +402,15 @@ fn print_summary(format: Format, md: &str, csv: &[SummaryRow], js: &Value) -> Re
         Format::Json => Ok(writeln!(w, "{js}")?),
     })
     .map_err(Failure::Internal)
+}
+
+/// The independent check as JSON (relative differences; see [`camkin::cam::IndependentCheck`]).
+pub fn check_json(c: &camkin::cam::IndependentCheck) -> Value {
+    json!({
+        "angles": c.angles,
+        "skipped": c.skipped,
+        "position": c.position,
+        "velocity": c.velocity,
+        "acceleration": c.acceleration,
+    })
 }

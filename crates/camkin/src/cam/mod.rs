@@ -13,7 +13,6 @@
 //! the world frame with its origin on the rotation axis. Other conventions: see the
 //! [crate docs](crate#sign-conventions).
 
-mod checks;
 mod derivatives;
 mod error;
 mod follower;
@@ -24,15 +23,16 @@ mod options;
 mod search;
 mod state;
 mod summary;
+mod support;
 mod sweep;
 pub mod synthesis;
 
-pub use checks::Check;
 pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, Joint, Sense};
 pub use options::AnalysisOptions;
 pub use search::MAX_CANDIDATES;
 pub use state::{FollowerState, Motion};
+pub use support::IndependentCheck;
 pub use sweep::{Found, Sweep};
 
 pub(crate) use search::{bracket_params, bracket_samples, Touch};

@@ -17,5 +17,6 @@ mod paper_cam;
 mod properties;
 mod spec;
 mod spline_finite_differences;
+mod support_check;
 mod sweep;
 mod synthesis_round_trip;

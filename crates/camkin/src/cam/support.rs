@@ -1,0 +1,511 @@
+//! An independent computation of the follower's motion, to check the contact method against.
+//!
+//! The follower's position is computed as a *support function*: for every cam point `p`, the
+//! coordinate at which the follower's boundary passes through `p` entering the follower in its
+//! closing sense (a closed form of the joint and its contact curve); the follower's position is
+//! the extreme of that over the profile, found by sampling the profile and golden-section
+//! search. A knife edge's position is the extreme over the crossings of the profile with the
+//! tip's path, found by bisection. No tangency condition, Newton solve, curvature or normal
+//! acceleration is involved. The velocity and acceleration are then finite differences in the
+//! cam angle (seven points, sixth order centred), on stencils kept within one smooth piece of the profile
+//! (a spline's curvature has a corner at its nodes, where differences lose their order).
+//!
+//! What the check shares with the contact method is only its input: the profile's positions,
+//! the joint and contact curve of the follower, and the cam-angle convention.
+
+use super::{CamError, FollowerCurve, Joint, Mechanism};
+use crate::geometry::{Point2, Vec2};
+use std::f64::consts::{PI, TAU};
+
+/// The largest step of the finite differences in the cam angle, rad; it is halved
+/// `LEVELS − 1` times (rounding grows as 1/h², truncation falls as h⁶ centred, h⁵ shifted).
+const STEP: f64 = 0.005;
+const LEVELS: usize = 5;
+/// Nodes of a difference stencil.
+const NODES: usize = 7;
+/// Profile samples per revolution of the parameter for the global maximum (at least 16 per
+/// smooth piece).
+const SAMPLES: usize = 512;
+
+/// The contact method against the support function over a set of cam angles.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct IndependentCheck {
+    /// cam angles compared
+    pub angles: usize,
+    /// cam angles left out: no seven-point stencil around them stays on one smooth piece of the
+    /// profile (the contact jumps there, or the pieces are too short for the step)
+    pub skipped: usize,
+    /// `max |Δq|`, as a length (an arm angle times the follower's reach from its pivot),
+    /// relative to the profile's size; ∞ when the support function found no touch where the
+    /// method did
+    pub position: f64,
+    /// `max |Δq̇| / max |q̇|`
+    pub velocity: f64,
+    /// `max |Δq̈| / max |q̈|`
+    pub acceleration: f64,
+}
+
+impl IndependentCheck {
+    /// The largest of the three relative differences.
+    pub fn worst(&self) -> f64 {
+        self.position.max(self.velocity).max(self.acceleration)
+    }
+}
+
+/// One support-function evaluation: the follower's coordinate and the profile parameter that
+/// realises it.
+#[derive(Debug, Clone, Copy)]
+struct Support {
+    q: f64,
+    u: f64,
+}
+
+impl Mechanism {
+    /// The follower's position at cam angle `theta` (rad) computed independently of the contact
+    /// method (see the module docs of `support`), or `None` when the follower touches no cam
+    /// point.
+    pub fn support_position(&self, theta: f64) -> Option<f64> {
+        self.support(theta).map(|s| s.q)
+    }
+
+    /// Compares the contact method's position, velocity and acceleration at `thetas` (rad) with
+    /// the support function and its finite differences. Fails only when the contact method
+    /// fails.
+    pub fn independent_check(&self, thetas: &[f64]) -> Result<IndependentCheck, CamError> {
+        let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
+        let reach = self.size
+            + match self.follower_joint() {
+                Joint::Rotating { pivot, .. } => (pivot - self.cam.pivot).norm(),
+                Joint::Translating { .. } => 0.0,
+            };
+        let q_length = |dq: f64| match self.follower_joint() {
+            Joint::Rotating { .. } => dq.abs() * reach,
+            Joint::Translating { .. } => dq.abs(),
+        };
+        let mut out = IndependentCheck {
+            angles: 0,
+            skipped: 0,
+            position: 0.0,
+            velocity: 0.0,
+            acceleration: 0.0,
+        };
+        let (mut dv, mut da, mut vmax, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        for &theta in thetas {
+            let s = self.analyze(theta)?;
+            vmax = vmax.max(s.velocity.abs());
+            amax = amax.max(s.acceleration.abs());
+            let Some(centre) = self.support(theta) else {
+                out.position = f64::INFINITY;
+                continue;
+            };
+            let dq = match self.follower_joint() {
+                Joint::Rotating { .. } => wrap_near_zero(s.position - centre.q),
+                Joint::Translating { .. } => s.position - centre.q,
+            };
+            out.position = out.position.max(q_length(dq) / self.size);
+            let Some((d1, d2)) = self.differences(theta, centre) else {
+                out.skipped += 1;
+                continue;
+            };
+            out.angles += 1;
+            dv = dv.max((s.velocity - w * d1).abs());
+            da = da.max((s.acceleration - (w * w * d2 + al * d1)).abs());
+        }
+        out.velocity = if vmax > 0.0 { dv / vmax } else { dv };
+        out.acceleration = if amax > 0.0 { da / amax } else { da };
+        Ok(out)
+    }
+
+    /// `(dq/dθ, d²q/dθ²)` of the support function at `theta` by seven-point differences at
+    /// halving steps, each on the stencil nearest to centred whose maxima all lie on
+    /// the smooth piece of `centre` and move steadily along it: the finer of the two consecutive
+    /// steps that agree best (truncation falls and rounding grows as the step shrinks); `None`
+    /// when fewer than two steps have a stencil.
+    fn differences(&self, theta: f64, centre: Support) -> Option<(f64, f64)> {
+        let half = (NODES / 2) as i32;
+        let piece = |u: f64| self.breakpoints.partition_point(|&b| b <= u);
+        let home = piece(centre.u);
+        let estimate = |h: f64| -> Option<(f64, f64)> {
+            let mut cache: Vec<Option<Option<Support>>> = vec![None; (4 * half + 1) as usize];
+            for shift in [0, -1, 1, -2, 2, -3, 3] {
+                let ks: Vec<i32> = (shift - half..=shift + half).collect();
+                let mut nodes = Vec::with_capacity(NODES);
+                for &k in &ks {
+                    let s = if k == 0 {
+                        Some(centre)
+                    } else {
+                        *cache[(k + 2 * half) as usize]
+                            .get_or_insert_with(|| self.support(theta + k as f64 * h))
+                    };
+                    match s {
+                        Some(s) if piece(s.u) == home => nodes.push(s),
+                        _ => break,
+                    }
+                }
+                if nodes.len() < NODES || !steady(&nodes, self.period) {
+                    continue;
+                }
+                let x: Vec<f64> = ks.iter().map(|&k| k as f64 * h).collect();
+                let w = fornberg(&x, 2);
+                let mut q: Vec<f64> = nodes.iter().map(|n| n.q).collect();
+                if let Joint::Rotating { .. } = self.follower_joint() {
+                    for v in &mut q {
+                        *v = centre.q + wrap_near_zero(*v - centre.q);
+                    }
+                }
+                let d = |m: usize| w[m].iter().zip(&q).map(|(a, b)| a * b).sum::<f64>();
+                return Some((d(1), d(2)));
+            }
+            None
+        };
+        let mut best: Option<(f64, (f64, f64))> = None;
+        let mut previous = estimate(STEP);
+        for l in 1..LEVELS {
+            let next = estimate(STEP / f64::from(1u32 << l));
+            if let (Some(a), Some(b)) = (previous, next) {
+                let gap = (a.1 - b.1).abs() + (a.0 - b.0).abs();
+                if best.is_none_or(|(g, _)| gap < g) {
+                    best = Some((gap, b));
+                }
+            }
+            previous = next;
+        }
+        best.map(|(_, d)| d)
+    }
+
+    /// The support function at `theta`.
+    fn support(&self, theta: f64) -> Option<Support> {
+        let profile = self.cam.profile.as_ref();
+        let (sn, cs) = (self.cam.direction.sign() * theta).sin_cos();
+        let pivot = self.cam.pivot;
+        let world = |u: f64| {
+            let x = profile.position(u);
+            pivot + Vec2::new(cs * x.x - sn * x.y, sn * x.x + cs * x.y)
+        };
+        let joint = self.follower_joint();
+        let period = self.period;
+        let grid = sample_grid(&self.breakpoints, period);
+        match self.follower_curve() {
+            FollowerCurve::Point(tip) => {
+                // the extreme of the crossings of the profile with the tip's path
+                let tip = tip.at().coords;
+                let path = |u: f64| crossing(&joint, tip, world(u));
+                let mut best: Option<(f64, Support)> = None;
+                let n = grid.len();
+                for i in 0..n {
+                    let (a, b) = (grid[i], if i + 1 < n { grid[i + 1] } else { period });
+                    let (fa, fb) = (path(a).0, path(b).0);
+                    if fa == 0.0 || fa.signum() != fb.signum() {
+                        let u = bisect(|u| path(u).0, a, b, fa);
+                        let q = path(u).1;
+                        let score = oriented(&joint, q);
+                        if best.is_none_or(|(s, _)| score > s) {
+                            best = Some((score, Support { q, u: u % period }));
+                        }
+                    }
+                }
+                best.map(|(_, s)| s)
+            }
+            curve => {
+                let f = |u: f64| {
+                    touch(&joint, &curve, world(u))
+                        .map_or(f64::NEG_INFINITY, |q| oriented(&joint, q))
+                };
+                let values: Vec<f64> = grid.iter().map(|&u| f(u)).collect();
+                let (i, &best) = values
+                    .iter()
+                    .enumerate()
+                    .max_by(|a, b| a.1.total_cmp(b.1))?;
+                if best == f64::NEG_INFINITY {
+                    return None;
+                }
+                let n = grid.len();
+                let lo = if i == 0 {
+                    grid[n - 1] - period
+                } else {
+                    grid[i - 1]
+                };
+                let hi = if i + 1 == n {
+                    period + grid[0]
+                } else {
+                    grid[i + 1]
+                };
+                let u = golden_max(&f, lo, hi, grid[i], best).rem_euclid(period);
+                touch(&joint, &curve, world(u)).map(|q| Support { q, u })
+            }
+        }
+    }
+}
+
+/// The coordinate at which the follower's contact curve (a line or a circle, material on its
+/// left) passes through the world point `p` entering the follower in its closing sense.
+fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2) -> Option<f64> {
+    match (*joint, curve) {
+        (Joint::Translating { origin, direction }, FollowerCurve::Line(line)) => {
+            // outside distance g(q) = −m·(p − origin − q d − a), m into the material: the
+            // follower closes by decreasing q, so g must fall with q: m·d > 0
+            let m = left(line.direction());
+            let md = m.dot(&direction);
+            (md > 0.0).then(|| m.dot(&(p - origin - line.anchor().coords)) / md)
+        }
+        (Joint::Translating { origin, direction }, FollowerCurve::Circle(c)) => {
+            // |w − q d| = r, the larger root (the roller comes from q = +∞)
+            let w = p - origin - c.center().coords;
+            let lateral = w.dot(&left(*direction));
+            let disc = c.radius() * c.radius() - lateral * lateral;
+            (disc >= 0.0).then(|| w.dot(&direction) + disc.sqrt())
+        }
+        (
+            Joint::Rotating {
+                pivot,
+                closing,
+                initial_angle,
+            },
+            curve,
+        ) => {
+            // in polar form about the pivot, the boundary passes through p where
+            // cos(ψ − γ − q) = k; it enters the follower (turning in the closing sense κ) at
+            // q = ψ − γ − κ acos k
+            let y = p - pivot;
+            let (rho, psi) = (y.norm(), y.y.atan2(y.x));
+            let (gamma, k) = match curve {
+                FollowerCurve::Line(line) => {
+                    let m = left(line.direction());
+                    (m.y.atan2(m.x), m.dot(&line.anchor().coords) / rho)
+                }
+                FollowerCurve::Circle(c) => {
+                    let cc = c.center().coords;
+                    let l = cc.norm();
+                    let r = c.radius();
+                    (
+                        cc.y.atan2(cc.x),
+                        (rho * rho + l * l - r * r) / (2.0 * rho * l),
+                    )
+                }
+                _ => return None,
+            };
+            if rho == 0.0 || !(-1.0..=1.0).contains(&k) {
+                return None;
+            }
+            let q = psi - gamma - closing.sign() * k.acos();
+            Some(initial_angle + wrap_near_zero(q - initial_angle))
+        }
+        _ => None,
+    }
+}
+
+/// For a knife edge with its tip at `tip` in the follower frame: `(f, q)` where `f` changes sign
+/// where the world point `p` crosses the tip's path and `q` is the coordinate putting the tip
+/// at `p` there.
+fn crossing(joint: &Joint, tip: Vec2, p: Point2) -> (f64, f64) {
+    match *joint {
+        Joint::Translating { origin, direction } => {
+            let w = p - origin - tip;
+            (w.dot(&left(*direction)), w.dot(&direction))
+        }
+        Joint::Rotating {
+            pivot,
+            initial_angle,
+            ..
+        } => {
+            let y = p - pivot;
+            let q = y.y.atan2(y.x) - tip.y.atan2(tip.x);
+            (
+                y.norm() - tip.norm(),
+                initial_angle + wrap_near_zero(q - initial_angle),
+            )
+        }
+    }
+}
+
+/// `q` oriented so that larger touches earlier.
+fn oriented(joint: &Joint, q: f64) -> f64 {
+    match joint {
+        Joint::Translating { .. } => q,
+        Joint::Rotating { closing, .. } => -closing.sign() * q,
+    }
+}
+
+fn left(v: Vec2) -> Vec2 {
+    Vec2::new(-v.y, v.x)
+}
+
+fn wrap_near_zero(a: f64) -> f64 {
+    let d = a.rem_euclid(TAU);
+    if d > PI {
+        d - TAU
+    } else {
+        d
+    }
+}
+
+/// Parameters at which to sample the profile: every smooth piece evenly, `SAMPLES` in all and
+/// at least 16 per piece.
+fn sample_grid(breakpoints: &[f64], period: f64) -> Vec<f64> {
+    let mut cuts: Vec<f64> = breakpoints.to_vec();
+    if cuts.is_empty() {
+        cuts.push(0.0);
+    }
+    let per = (SAMPLES / cuts.len()).max(16);
+    let mut grid = Vec::with_capacity(per * cuts.len());
+    for (i, &a) in cuts.iter().enumerate() {
+        let b = cuts.get(i + 1).copied().unwrap_or(cuts[0] + period);
+        grid.extend((0..per).map(|j| a + (b - a) * j as f64 / per as f64));
+    }
+    grid
+}
+
+/// The contact moves steadily along the profile over the stencil: its parameter steps all have
+/// one sign and differ by less than a factor 4 (a contact jump makes one step an outlier).
+fn steady(nodes: &[Support], period: f64) -> bool {
+    let steps: Vec<f64> = nodes
+        .windows(2)
+        .map(|w| {
+            let d = (w[1].u - w[0].u).rem_euclid(period);
+            if d > period / 2.0 {
+                d - period
+            } else {
+                d
+            }
+        })
+        .collect();
+    let big = steps.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+    let small = steps.iter().fold(f64::INFINITY, |m, d| m.min(d.abs()));
+    let tiny = 1e-9 * period;
+    big <= tiny || (steps.iter().all(|d| d.signum() == steps[0].signum()) && big <= 4.0 * small)
+}
+
+/// The maximiser of `f` on `[lo, hi]` by golden-section search, given its best sample.
+fn golden_max(f: &impl Fn(f64) -> f64, lo: f64, hi: f64, start: f64, f_start: f64) -> f64 {
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut a, mut b) = (lo, hi);
+    let (mut best_u, mut best_f) = (start, f_start);
+    let mut c = b - g * (b - a);
+    let mut d = a + g * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..200 {
+        if b - a <= 1e-15 * (a.abs() + b.abs()).max(1.0) {
+            break;
+        }
+        if fc >= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = f(d);
+        }
+        for (u, v) in [(c, fc), (d, fd)] {
+            if v > best_f {
+                best_u = u;
+                best_f = v;
+            }
+        }
+    }
+    best_u
+}
+
+/// A root of `f` in `[a, b]` where it changes sign, by bisection to the last bit.
+fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
+    if fa == 0.0 {
+        return a;
+    }
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if m <= a || m >= b {
+            break;
+        }
+        let fm = f(m);
+        if fm == 0.0 {
+            return m;
+        }
+        if fm.signum() == fa.signum() {
+            a = m;
+            fa = fm;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// Finite-difference weights (Fornberg 1988): `w[m][j]` is the weight of the value at `x[j]` in
+/// the `m`-th derivative at 0, for `m ≤ order`.
+fn fornberg(x: &[f64], order: usize) -> Vec<Vec<f64>> {
+    let n = x.len();
+    let mut c = vec![vec![0.0; n]; order + 1];
+    c[0][0] = 1.0;
+    let mut c1 = 1.0;
+    let mut c4 = x[0];
+    for i in 1..n {
+        let mn = i.min(order);
+        let mut c2 = 1.0;
+        let c5 = c4;
+        c4 = x[i];
+        for j in 0..i {
+            let c3 = x[i] - x[j];
+            c2 *= c3;
+            if j == i - 1 {
+                for k in (1..=mn).rev() {
+                    c[k][i] = c1 * (k as f64 * c[k - 1][i - 1] - c5 * c[k][i - 1]) / c2;
+                }
+                c[0][i] = -c1 * c5 * c[0][i - 1] / c2;
+            }
+            for k in (1..=mn).rev() {
+                c[k][j] = (c4 * c[k][j] - k as f64 * c[k - 1][j]) / c3;
+            }
+            c[0][j] = c4 * c[0][j] / c3;
+        }
+        c1 = c2;
+    }
+    c
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn fornberg_weights_are_the_textbook_ones() {
+        // centred five points: f'' ≈ (−f₋₂ + 16f₋₁ − 30f₀ + 16f₁ − f₂)/12, f' ≈ (f₋₂ − 8f₋₁ + 8f₁ − f₂)/12
+        let w = fornberg(&[-2.0, -1.0, 0.0, 1.0, 2.0], 2);
+        let d1 = [1.0 / 12.0, -8.0 / 12.0, 0.0, 8.0 / 12.0, -1.0 / 12.0];
+        let d2 = [
+            -1.0 / 12.0,
+            16.0 / 12.0,
+            -30.0 / 12.0,
+            16.0 / 12.0,
+            -1.0 / 12.0,
+        ];
+        for j in 0..5 {
+            assert_relative_eq!(w[1][j], d1[j], epsilon = 1e-15);
+            assert_relative_eq!(w[2][j], d2[j], epsilon = 1e-15);
+        }
+    }
+
+    #[test]
+    fn one_sided_weights_differentiate_a_sextic_exactly() {
+        // seven nodes reproduce polynomials to degree 6, wherever the stencil sits
+        let x: Vec<f64> = (-1..=5).map(|k| k as f64 * 0.1).collect();
+        let w = fornberg(&x, 2);
+        let f = |t: f64| 1.0 + 2.0 * t - 3.0 * t * t + 0.5 * t.powi(5) - t.powi(6);
+        let d = |m: usize| w[m].iter().zip(&x).map(|(a, &t)| a * f(t)).sum::<f64>();
+        assert_relative_eq!(d(1), 2.0, epsilon = 1e-10);
+        assert_relative_eq!(d(2), -6.0, epsilon = 1e-8);
+    }
+
+    #[test]
+    fn golden_section_and_bisection_converge() {
+        let u = golden_max(&|u: f64| -(u - 0.3).powi(2), 0.0, 1.0, 0.5, -0.04);
+        assert!((u - 0.3).abs() < 1e-7);
+        let r = bisect(|u| u * u - 2.0, 1.0, 2.0, -1.0);
+        assert_relative_eq!(r, 2f64.sqrt(), epsilon = 4e-16);
+    }
+}
