@@ -120,16 +120,22 @@ impl Mechanism {
     }
 
     /// Start candidates for a knife edge: the crossings of its line of travel with the profile
-    /// sampled at `s` (linear interpolation between samples), best first.
+    /// sampled at `s` (linear interpolation between samples), best first. Two crossings between
+    /// neighbouring samples (the line nearly tangent to the profile) show no sign change: where
+    /// the sampled distance from the line has a local minimum, its true minimum is located and,
+    /// when it crosses the line, both crossings become candidates.
     fn knife_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) {
         let Some((d, p, e)) = self.geometry.model.knife_line() else {
             return;
         };
         let profile = self.cam.profile.as_ref();
         let n = s.len();
-        let y = |k: usize| frame.curve_position(profile, s[k]) - self.cam.pivot;
+        let at = |u: f64| frame.curve_position(profile, u) - self.cam.pivot;
+        let y = |k: usize| at(s[k]);
+        let lateral = |u: f64| at(u).dot(&p) - e;
         let (y0, mut ya) = (y(0), y(0));
         let mut la = ya.dot(&p) - e;
+        let mut l_before = lateral(s[n - 1]);
         for k in 0..n {
             let (yb, ub) = if k + 1 < n {
                 (y(k + 1), s[k + 1])
@@ -137,11 +143,39 @@ impl Mechanism {
                 (y0, self.period)
             };
             let lb = yb.dot(&p) - e;
-            if la == 0.0 || (la > 0.0) != (lb > 0.0) {
+            let ua = if k == 0 {
+                s[n - 1] - self.period
+            } else {
+                s[k - 1]
+            };
+            if (la > 0.0) != (lb > 0.0) && (l_before > 0.0) != (la > 0.0) {
+                // two crossings on either side of sample k: the line is nearly tangent there and
+                // interpolated starts can both lead Newton to one of them; start from each root
+                for (lo, hi) in [(ua, s[k]), (s[k], ub)] {
+                    let u0 = bisect_sign(&lateral, lo, hi);
+                    let q0 = at(u0).dot(&d);
+                    out.push((q0, u0.rem_euclid(self.period), q0));
+                }
+            } else if la == 0.0 || (la > 0.0) != (lb > 0.0) {
                 let f = if la == lb { 0.0 } else { la / (la - lb) };
                 let q0 = ya.dot(&d) * (1.0 - f) + yb.dot(&d) * f;
                 out.push((q0, s[k] + f * (ub - s[k]), q0));
+            } else if (l_before > 0.0) == (la > 0.0)
+                && la.abs() < l_before.abs()
+                && la.abs() <= lb.abs()
+            {
+                // a local minimum of |distance| at sample k: does the profile cross in between?
+                let sign = la.signum();
+                let (um, lm) = minimise(|u| sign * lateral(u), ua, ub);
+                if lm < 0.0 {
+                    for (lo, hi) in [(ua, um), (um, ub)] {
+                        let u0 = bisect_sign(&lateral, lo, hi);
+                        let q0 = at(u0).dot(&d);
+                        out.push((q0, u0.rem_euclid(self.period), q0));
+                    }
+                }
             }
+            l_before = la;
             (ya, la) = (yb, lb);
         }
     }
@@ -321,6 +355,52 @@ pub(crate) fn bracket_samples(
     per_curve: usize,
 ) -> Vec<f64> {
     bracket_params(breakpoints, period, per_piece, per_curve).collect()
+}
+
+/// The minimum of `f` on `[a, b]` by golden-section search, `(u, f(u))`.
+fn minimise(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - g * (b - a);
+    let mut d = a + g * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..60 {
+        if fc < 0.0 || fd < 0.0 {
+            break; // it crosses: that is all the caller needs
+        }
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = f(d);
+        }
+    }
+    if fc <= fd {
+        (c, fc)
+    } else {
+        (d, fd)
+    }
+}
+
+/// A point near the sign change of `f` in `[a, b]` (the ends have opposite signs), by 30
+/// bisections: a start for Newton.
+fn bisect_sign(f: &impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let fa = f(a);
+    for _ in 0..30 {
+        let m = 0.5 * (a + b);
+        if (f(m) > 0.0) == (fa > 0.0) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
 }
 
 #[cfg(test)]

@@ -63,15 +63,20 @@ struct Support {
 
 impl Mechanism {
     /// The follower's position at cam angle `theta` (rad) computed independently of the contact
-    /// method (see the module docs of `support`), or `None` when the follower touches no cam
-    /// point.
-    pub fn support_position(&self, theta: f64) -> Option<f64> {
-        self.support(theta).map(|s| s.q)
+    /// method (the support function: see [`Mechanism::independent_check`]) and the profile
+    /// parameter of the cam point realising it, or `None` when the follower touches no cam point.
+    pub fn support_position(&self, theta: f64) -> Option<(f64, f64)> {
+        self.support(theta).map(|s| (s.q, s.u))
     }
 
     /// Compares the contact method's position, velocity and acceleration at `thetas` (rad) with
-    /// the support function and its finite differences. Fails only when the contact method
-    /// fails.
+    /// an independent computation: the follower's position as the cam's *support function* (for
+    /// every cam point, the coordinate at which the follower's boundary passes through it,
+    /// entering the follower in its closing sense; the extreme of that over the profile, by
+    /// sampling and golden-section search; a knife edge's over the crossings of its path, by
+    /// bisection), its velocity and acceleration by seven-point differences in the cam angle.
+    /// No tangency condition, Newton solve or curvature is involved. Fails only when the contact
+    /// method fails.
     pub fn independent_check(&self, thetas: &[f64]) -> Result<IndependentCheck, CamError> {
         let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
         let reach = self.size
@@ -192,16 +197,49 @@ impl Mechanism {
                 let tip = tip.at().coords;
                 let path = |u: f64| crossing(&joint, tip, world(u));
                 let mut best: Option<(f64, Support)> = None;
+                let mut keep = |u: f64| {
+                    let q = path(u).1;
+                    let score = oriented(&joint, q);
+                    if best.is_none_or(|(s, _)| score > s) {
+                        best = Some((
+                            score,
+                            Support {
+                                q,
+                                u: u.rem_euclid(period),
+                            },
+                        ));
+                    }
+                };
                 let n = grid.len();
+                let at = |i: usize| {
+                    if i < n {
+                        grid[i]
+                    } else {
+                        grid[i - n] + period
+                    }
+                };
+                let f: Vec<f64> = (0..=n + 1).map(|i| path(at(i)).0).collect();
                 for i in 0..n {
-                    let (a, b) = (grid[i], if i + 1 < n { grid[i + 1] } else { period });
-                    let (fa, fb) = (path(a).0, path(b).0);
-                    if fa == 0.0 || fa.signum() != fb.signum() {
-                        let u = bisect(|u| path(u).0, a, b, fa);
-                        let q = path(u).1;
-                        let score = oriented(&joint, q);
-                        if best.is_none_or(|(s, _)| score > s) {
-                            best = Some((score, Support { q, u: u % period }));
+                    let (a, b) = (at(i), at(i + 1));
+                    if f[i] == 0.0 || f[i].signum() != f[i + 1].signum() {
+                        keep(bisect(|u| path(u).0, a, b, f[i]));
+                    } else if f[i + 1].abs() < f[i].abs()
+                        && f[i + 1].abs() < f[i + 2].abs()
+                        && f[i + 1].signum() == f[i + 2].signum()
+                    {
+                        // |f| has a local minimum at a sample: two crossings may hide around it
+                        let sign = f[i + 1].signum();
+                        let um = golden_max(
+                            &|u| -sign * path(u).0,
+                            a,
+                            at(i + 2),
+                            at(i + 1),
+                            -f[i + 1].abs(),
+                        );
+                        let fm = path(um).0;
+                        if fm.signum() != sign {
+                            keep(bisect(|u| path(u).0, a, um, f[i]));
+                            keep(bisect(|u| path(u).0, um, at(i + 2), fm));
                         }
                     }
                 }
@@ -213,25 +251,32 @@ impl Mechanism {
                         .map_or(f64::NEG_INFINITY, |q| oriented(&joint, q))
                 };
                 let values: Vec<f64> = grid.iter().map(|&u| f(u)).collect();
-                let (i, &best) = values
-                    .iter()
-                    .enumerate()
-                    .max_by(|a, b| a.1.total_cmp(b.1))?;
-                if best == f64::NEG_INFINITY {
-                    return None;
-                }
+                // every sampled local maximum is refined: near a contact jump two lobes touch
+                // almost together and the best sample need not be on the winning one
                 let n = grid.len();
-                let lo = if i == 0 {
-                    grid[n - 1] - period
-                } else {
-                    grid[i - 1]
-                };
-                let hi = if i + 1 == n {
-                    period + grid[0]
-                } else {
-                    grid[i + 1]
-                };
-                let u = golden_max(&f, lo, hi, grid[i], best).rem_euclid(period);
+                let mut best: Option<(f64, f64)> = None;
+                for i in 0..n {
+                    let (before, after) = (values[(i + n - 1) % n], values[(i + 1) % n]);
+                    if values[i] == f64::NEG_INFINITY || values[i] < before || values[i] < after {
+                        continue;
+                    }
+                    let lo = if i == 0 {
+                        grid[n - 1] - period
+                    } else {
+                        grid[i - 1]
+                    };
+                    let hi = if i + 1 == n {
+                        period + grid[0]
+                    } else {
+                        grid[i + 1]
+                    };
+                    let u = golden_max(&f, lo, hi, grid[i], values[i]);
+                    let v = f(u);
+                    if best.is_none_or(|(b, _)| v > b) {
+                        best = Some((v, u));
+                    }
+                }
+                let u = best?.1.rem_euclid(period);
                 touch(&joint, &curve, world(u)).map(|q| Support { q, u })
             }
         }

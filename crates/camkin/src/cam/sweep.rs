@@ -163,11 +163,24 @@ impl<'a> Sweep<'a> {
         // second-order extrapolation: the start is off by O(Δθ³)
         let u0 = p.u + dt * (p.du_dtheta + 0.5 * dt * p.d2u_dtheta2);
         let q0 = p.q + dt * (p.dq_dtheta + 0.5 * dt * p.d2q_dtheta2);
+        // on a non-convex profile a knife's crossing can vanish (it merges with its partner where
+        // the line of travel grazes the profile) and the tip falls to another crossing: a
+        // contact is a continuation only if Newton at the previous angle, started from it, comes
+        // back to the previous contact (local rates diverge at the fold, so no step bound works)
+        let knife_fold = !m.convex && m.geometry.is_knife();
+        let continues = |t: &Touch| {
+            let back = m.cam.state(p.theta).frame();
+            m.newton_at(p.theta, &back, t.u, t.q).is_ok_and(|(b, _)| {
+                let d = (b.u - p.u).rem_euclid(m.period);
+                d.min(m.period - d) <= 1e-6 * m.period
+            })
+        };
         match m.newton_at(theta, frame, u0, q0) {
             // on a convex profile the first touch is unique and Newton started next to it: the
             // orientation check is enough (it rejects the cam's back side)
             Ok((t, e))
-                if (m.convex && m.faces_follower(&e, t.q)) || m.is_first_touch_at(&e, t.q) =>
+                if (m.convex && m.faces_follower(&e, t.q))
+                    || (m.is_first_touch_at(&e, t.q) && (!knife_fold || continues(&t))) =>
             {
                 // on a convex profile nothing can overtake the first touch
                 if m.convex {
@@ -195,7 +208,15 @@ impl<'a> Sweep<'a> {
                     Ok((t, Found::WarmStart))
                 }
             }
-            _ => m.global_touch(theta, frame).map(|t| (t, Found::Global)),
+            // the contact followed so far is gone: on a non-convex profile, a contact found
+            // elsewhere is a jump
+            _ => m.global_touch(theta, frame).map(|g| {
+                if !m.convex && !continues(&g) {
+                    (g, Found::Jump { from_cam_param: u0 })
+                } else {
+                    (g, Found::Global)
+                }
+            }),
         }
     }
 }

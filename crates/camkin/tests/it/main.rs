@@ -5,6 +5,7 @@
 mod circle_followers;
 mod common;
 mod contact_general;
+mod contact_jumps;
 mod dynamics_contact;
 mod dynamics_liftoff;
 mod dynamics_multibody;

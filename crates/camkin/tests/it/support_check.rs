@@ -120,9 +120,9 @@ fn the_support_function_itself_matches_closed_forms() {
     );
     for th in grid(7.0) {
         let (s, c) = th.sin_cos();
-        let q = flat.support_position(th).unwrap();
+        let q = flat.support_position(th).unwrap().0;
         assert!((q - (r + e * c)).abs() < 1e-14 * r, "flat at {th}: {q}");
-        let q = roller.support_position(th).unwrap();
+        let q = roller.support_position(th).unwrap().0;
         let exact = e * c + ((r + rr).powi(2) - (e * s).powi(2)).sqrt();
         assert!(
             (q - exact).abs() < 1e-14 * r,

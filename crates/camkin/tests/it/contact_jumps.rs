@@ -1,0 +1,271 @@
+//! Contact jumps on a non-convex cam are flagged where they happen: every flagged step brackets
+//! an independently located jump angle and every such angle is flagged, for all five followers.
+//! The jump angles come from the convex hull (a flat face jumps when it lies along a hull edge
+//! bridging a dent) and, for every follower, from the support function of the cam
+//! (`Mechanism::support_position`'s maximiser switching branch), which shares no code with the
+//! search or the sweep.
+
+use super::common::*;
+use camkin::cam::{Follower, Mechanism, Sense};
+use camkin::curve::{ClosedSpline, Curve};
+use camkin::table::contact_jumps;
+use camkin::{Point2, Vec2};
+use std::f64::consts::TAU;
+use std::sync::Arc;
+
+/// A cam with two dents.
+fn peanut() -> Arc<ClosedSpline> {
+    let pts = [
+        (4.0, 0.0),
+        (3.0, 2.4),
+        (0.5, 1.1),
+        (-2.0, 2.4),
+        (-3.5, 0.1),
+        (-2.2, -2.5),
+        (0.6, -1.0),
+        (3.1, -2.3),
+    ];
+    Arc::new(ClosedSpline::new(&pts.map(|(x, y)| Point2::new(x, y))).unwrap())
+}
+
+fn followers() -> Vec<Follower> {
+    vec![
+        Follower::TranslatingFlat {
+            direction: Vec2::new(1.0, 0.3),
+        },
+        Follower::TranslatingRoller {
+            direction: Vec2::new(0.0, 1.0),
+            offset: 0.4,
+            roller_radius: 1.5,
+        },
+        Follower::TranslatingKnife {
+            direction: Vec2::new(-1.0, 0.2),
+            offset: 1.6,
+        },
+        Follower::OscillatingFlat {
+            pivot: Point2::new(-3.0, 8.0),
+            face_offset: 0.5,
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+        },
+        Follower::OscillatingRoller {
+            pivot: Point2::new(9.0, 3.0),
+            arm_length: 8.0,
+            roller_radius: 1.2,
+            closing: Sense::Ccw,
+            initial_angle: 200f64.to_radians(),
+        },
+    ]
+}
+
+const PERIOD: f64 = 8.0; // the peanut's parameter period (8 nodes)
+
+/// Parameter distance on the closed profile.
+fn du(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(PERIOD);
+    d.min(PERIOD - d)
+}
+
+/// The jump angles of the support function over a revolution: where its maximiser moves by more
+/// than a tenth of a node spacing between neighbouring angles 0.05° apart (a steady contact moves
+/// by a few hundredths at most), located by bisection to 1e-12 rad.
+fn support_jumps(m: &Mechanism) -> Vec<f64> {
+    let u = |t: f64| m.support_position(t).unwrap().1;
+    let n = 7200;
+    let mut out = Vec::new();
+    for k in 0..n {
+        let (mut a, mut b) = (k as f64 * TAU / n as f64, (k + 1) as f64 * TAU / n as f64);
+        let (ua, ub) = (u(a), u(b));
+        if du(ua, ub) < 0.1 {
+            continue;
+        }
+        while b - a > 1e-12 {
+            let mid = 0.5 * (a + b);
+            let um = u(mid);
+            if du(um, ua) < du(um, ub) {
+                a = mid;
+            } else {
+                b = mid;
+            }
+        }
+        out.push(0.5 * (a + b));
+    }
+    out
+}
+
+/// The angles at which a flat face along `d` lies along a hull edge bridging a dent: the edge's
+/// outward normal, turned with the cam, points along `d`.
+fn hull_jumps(profile: &dyn Curve, d: Vec2, sense: Sense) -> Vec<f64> {
+    let n = 20_000;
+    let mut pts: Vec<Point2> = (0..n)
+        .map(|k| profile.position(k as f64 * PERIOD / n as f64))
+        .collect();
+    pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    // Andrew's monotone chain, counter-clockwise
+    let cross = |o: Point2, a: Point2, b: Point2| (a - o).perp(&(b - o));
+    let mut hull: Vec<Point2> = Vec::new();
+    for pass in 0..2 {
+        let start = hull.len();
+        let it: Box<dyn Iterator<Item = &Point2>> = if pass == 0 {
+            Box::new(pts.iter())
+        } else {
+            Box::new(pts.iter().rev())
+        };
+        for &p in it {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    let spacing = 20.0 * 30.0 / n as f64; // well above the samples' spacing (perimeter < 30)
+    let mut out = Vec::new();
+    for i in 0..hull.len() {
+        let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
+        let e = b - a;
+        if e.norm() > spacing {
+            // outward normal of a ccw hull; the cam frame turns by σθ: R(σθ) n = d
+            let normal = Vec2::new(e.y, -e.x);
+            let theta = sense.sign() * (d.y.atan2(d.x) - normal.y.atan2(normal.x));
+            out.push(theta.rem_euclid(TAU));
+        }
+    }
+    out
+}
+
+/// The flagged steps `(θ_prev, θ)` of a sweep at `step_deg` (what `camkin analyze` reports).
+fn flagged(m: &Mechanism, step_deg: f64) -> Vec<(f64, f64)> {
+    let n = (360.0 / step_deg).round() as usize;
+    let thetas: Vec<f64> = (0..=n)
+        .map(|k| (k as f64 * step_deg + 0.01).to_radians())
+        .collect();
+    let rows = m.analyze_all(&thetas);
+    assert!(
+        rows.iter().all(|r| r.is_ok()),
+        "{}",
+        m.follower().kind_name()
+    );
+    let jumps = contact_jumps(m, &rows, true);
+    (1..thetas.len())
+        .filter(|&k| jumps[k])
+        .map(|k| (thetas[k - 1], thetas[k]))
+        .collect()
+}
+
+/// Each flagged step holds exactly one of `angles` and each angle is in a flagged step.
+fn assert_located(what: &str, steps: &[(f64, f64)], angles: &[f64]) {
+    let inside = |&(a, b): &(f64, f64), t: f64| {
+        let t = a + (t - a).rem_euclid(TAU);
+        t > a && t <= b
+    };
+    for s in steps {
+        let hits = angles.iter().filter(|&&t| inside(s, t)).count();
+        assert_eq!(
+            hits,
+            1,
+            "{what}: flagged step {:.3}°–{:.3}° holds {hits} jump angles of {angles:?}",
+            s.0.to_degrees(),
+            s.1.to_degrees()
+        );
+    }
+    for &t in angles {
+        assert!(
+            steps.iter().any(|s| inside(s, t)),
+            "{what}: the jump at {:.4}° is not flagged (flagged: {steps:?})",
+            t.to_degrees()
+        );
+    }
+}
+
+#[test]
+fn jumps_are_flagged_where_the_support_function_switches_branch_for_every_follower() {
+    let mut jumping = Vec::new();
+    for f in followers() {
+        for sense in [Sense::Ccw, Sense::Cw] {
+            let m = mechanism(peanut(), Point2::origin(), sense, 600.0, f);
+            assert!(!m.is_convex());
+            let angles = support_jumps(&m);
+            let what = format!("{} {sense:?}", f.kind_name());
+            for step in [1.0, 0.25] {
+                assert_located(&format!("{what} at {step}°"), &flagged(&m, step), &angles);
+            }
+            if !angles.is_empty() {
+                jumping.push(f.kind_name());
+            }
+        }
+    }
+    // the test means something only where there are jumps: all five kinds jump on this cam
+    jumping.dedup();
+    assert_eq!(jumping.len(), 5, "kinds that jump: {jumping:?}");
+}
+
+#[test]
+fn a_flat_face_jumps_where_it_lies_along_a_hull_edge_bridging_a_dent() {
+    let d = Vec2::new(1.0, 0.3);
+    for sense in [Sense::Ccw, Sense::Cw] {
+        let m = mechanism(
+            peanut(),
+            Point2::origin(),
+            sense,
+            600.0,
+            Follower::TranslatingFlat { direction: d },
+        );
+        let hull = hull_jumps(peanut().as_ref(), d, sense);
+        assert_eq!(hull.len(), 2, "two dents, two bridging edges: {hull:?}");
+        // the support function switches branch at the same angles (the hull is sampled: 1e-6 rad)
+        let support = support_jumps(&m);
+        assert_eq!(support.len(), 2);
+        for t in &hull {
+            assert!(
+                support
+                    .iter()
+                    .any(|s| (s - t).abs().min(TAU - (s - t).abs()) < 1e-6),
+                "hull {t} vs support {support:?}"
+            );
+        }
+        for step in [2.0, 0.5, 0.05] {
+            assert_located(
+                &format!("flat {sense:?} at {step}°"),
+                &flagged(&m, step),
+                &hull,
+            );
+        }
+    }
+}
+
+/// Regression: a knife edge whose crossing merges with its partner and vanishes (the line of
+/// travel grazes a lobe) falls to another crossing; the sweep followed Newton there and called it
+/// a warm start, so the fall was not flagged.
+#[test]
+fn knife_falling_off_a_lobe_is_flagged_as_a_jump() {
+    let m = mechanism(peanut(), Point2::origin(), Sense::Cw, 600.0, followers()[2]);
+    let thetas: Vec<f64> = [31.01f64, 32.01, 33.01].map(f64::to_radians).to_vec();
+    let rows = m.analyze_all(&thetas);
+    let jumps = contact_jumps(&m, &rows, true);
+    assert_eq!(jumps, [false, false, true]);
+    let fall = rows[1].as_ref().unwrap().position - rows[2].as_ref().unwrap().position;
+    assert!(fall > 3.0, "the tip falls by {fall}");
+}
+
+/// Regression: near a grazing line of travel the two crossings lie between neighbouring samples
+/// (or on either side of one sample) and the global search converged to the wrong one or missed
+/// both, answering a lower crossing: it must agree with the support function.
+#[test]
+fn knife_global_search_finds_crossings_near_tangency() {
+    let m = mechanism(peanut(), Point2::origin(), Sense::Cw, 600.0, followers()[2]);
+    // the top crossing pair vanishes at about 32.1516°
+    for k in 0..40 {
+        let th = (32.10 + k as f64 * 0.0013).to_radians();
+        let (q, _) = m.support_position(th).unwrap();
+        let g = m.analyze(th).unwrap();
+        assert!(
+            (g.position - q).abs() < 1e-9,
+            "at {:.4}°: global search {} vs support {q}",
+            th.to_degrees(),
+            g.position
+        );
+    }
+}
