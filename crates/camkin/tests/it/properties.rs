@@ -70,6 +70,74 @@ fn rotate_follower(f: &Follower, r: &Rotation, beta: f64) -> Follower {
     }
 }
 
+/// The mirror image `(x, y) → (x, −y)` of a follower: directions and points mirrored, offsets
+/// (measured along `rot90(d)` or the arm's normal) and arm angles negated, closing reversed.
+fn mirror_follower(f: &Follower) -> Follower {
+    let mp = |p: Point2| Point2::new(p.x, -p.y);
+    let mv = |v: Vec2| Vec2::new(v.x, -v.y);
+    let flip = |s: Sense| {
+        if s == Sense::Ccw {
+            Sense::Cw
+        } else {
+            Sense::Ccw
+        }
+    };
+    match *f {
+        Follower::TranslatingFlat { direction } => Follower::TranslatingFlat {
+            direction: mv(direction),
+        },
+        Follower::TranslatingRoller {
+            direction,
+            offset,
+            roller_radius,
+        } => Follower::TranslatingRoller {
+            direction: mv(direction),
+            offset: -offset,
+            roller_radius,
+        },
+        Follower::TranslatingKnife { direction, offset } => Follower::TranslatingKnife {
+            direction: mv(direction),
+            offset: -offset,
+        },
+        Follower::OscillatingFlat {
+            pivot,
+            face_offset,
+            closing,
+            initial_angle,
+        } => Follower::OscillatingFlat {
+            pivot: mp(pivot),
+            face_offset: -face_offset,
+            closing: flip(closing),
+            initial_angle: -initial_angle,
+        },
+        Follower::OscillatingRoller {
+            pivot,
+            arm_length,
+            roller_radius,
+            closing,
+            initial_angle,
+        } => Follower::OscillatingRoller {
+            pivot: mp(pivot),
+            arm_length,
+            roller_radius,
+            closing: flip(closing),
+            initial_angle: -initial_angle,
+        },
+    }
+}
+
+/// The five followers of `all_followers` and the mirror images of its two oscillating ones,
+/// which close counter-clockwise.
+fn seven_followers(pivot: Point2) -> Vec<Follower> {
+    let mut f = all_followers(pivot);
+    let mirrored_pivot = Point2::new(pivot.x, -pivot.y);
+    for k in [3, 4] {
+        let m = mirror_follower(&all_followers(mirrored_pivot)[k]);
+        f.push(m);
+    }
+    f
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
@@ -137,6 +205,72 @@ proptest! {
         prop_assert!((a.acceleration - b.acceleration).abs() <= 1e-9 * w * w * scale, "a {} vs {}", a.acceleration, b.acceleration);
         prop_assert!((a.sliding_rate_cam - b.sliding_rate_cam).abs() <= 1e-9 * w * scale);
         prop_assert!((a.cam_param - b.cam_param).abs() <= 1e-9);
+    }
+
+    /// Mirroring the whole mechanism (`y → −y`) reverses the cam's sense and the closing sense:
+    /// the same translating position, arm angles negated, rates alike. A cw cam or a ccw closing
+    /// treated as its opposite fails this.
+    #[test]
+    fn the_mirror_image_moves_as_the_mirror_image(
+        nodes in cam_nodes(),
+        kind in 0usize..7,
+        ccw in any::<bool>(),
+        theta in 0.0f64..360.0,
+    ) {
+        let pivot = Point2::new(0.7, -0.4);
+        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
+        let f = seven_followers(pivot)[kind];
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        prop_assume!(m.is_convex());
+        let nodes_m: Vec<Point2> = nodes.iter().map(|p| Point2::new(p.x, -p.y)).collect();
+        let other = if ccw { Sense::Cw } else { Sense::Ccw };
+        let mm = Mechanism::new(
+            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&nodes_m).unwrap()), Point2::new(pivot.x, -pivot.y), other, 1000.0).unwrap(),
+            mirror_follower(&f),
+        ).unwrap();
+        let (a, b) = (m.analyze_deg(theta), mm.analyze_deg(theta));
+        prop_assert_eq!(a.is_ok(), b.is_ok(), "{:?} vs {:?}", a.as_ref().err(), b.as_ref().err());
+        prop_assume!(a.is_ok());
+        let (a, b) = (a.unwrap(), b.unwrap());
+        let sg = if f.is_oscillating() { -1.0 } else { 1.0 };
+        let w = m.cam().speed();
+        let scale = m.size() + 10.0;
+        let qb = if f.is_oscillating() { wrap_angle_near(-b.position, a.position) } else { b.position };
+        prop_assert!((a.position - qb).abs() <= 1e-11 * scale, "q {} vs {}", a.position, qb);
+        prop_assert!((a.velocity - sg * b.velocity).abs() <= 1e-10 * w * scale, "v {} vs {}", a.velocity, b.velocity);
+        prop_assert!((a.acceleration - sg * b.acceleration).abs() <= 1e-9 * w * w * scale, "a {} vs {}", a.acceleration, b.acceleration);
+        prop_assert!((a.contact_world.x - b.contact_world.x).abs() <= 1e-10 * scale);
+        prop_assert!((a.contact_world.y + b.contact_world.y).abs() <= 1e-10 * scale);
+    }
+
+    /// On random convex cams, every follower (both closing senses) agrees with the support
+    /// function at a random angle: position, velocity and acceleration, to the README's figures.
+    #[test]
+    fn every_follower_agrees_with_the_support_function_on_random_convex_cams(
+        nodes in cam_nodes(),
+        kind in 0usize..7,
+        ccw in any::<bool>(),
+        theta in 0.0f64..360.0,
+    ) {
+        let pivot = Point2::new(0.7, -0.4);
+        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
+        let f = seven_followers(pivot)[kind];
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        prop_assume!(m.is_convex());
+        let th = theta.to_radians();
+        let a = m.analyze(th);
+        prop_assume!(a.is_ok());
+        let a = a.unwrap();
+        let c = m.independent_check(&[th]).unwrap();
+        prop_assert_eq!(c.angles, 1, "no stencil on a convex cam: {:?}", c);
+        let w = m.cam().speed();
+        // relative to this angle's values (the check's figures are relative to the peaks over
+        // its angles): bounded below by the cam's size so that a zero crossing does not count
+        let (dv, da) = (c.velocity * a.velocity.abs(), c.acceleration * a.acceleration.abs());
+        let scale = if f.is_oscillating() { 1.0 } else { m.size() };
+        prop_assert!(c.position <= 2e-14, "{:?}", c);
+        prop_assert!(dv <= 1e-10 * w * scale, "{:?} at v = {}", c, a.velocity);
+        prop_assert!(da <= 1e-7 * w * w * scale, "{:?} at a = {}", c, a.acceleration);
     }
 }
 

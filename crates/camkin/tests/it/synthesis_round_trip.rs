@@ -47,7 +47,9 @@ fn translating() -> [Follower; 3] {
     ]
 }
 
-fn oscillating() -> [Follower; 2] {
+/// Oscillating followers closing clockwise from above the cam, and their mirror images closing
+/// counter-clockwise from below (another branch: the arm near +30° instead of −30°).
+fn oscillating() -> [Follower; 4] {
     [
         Follower::OscillatingRoller {
             pivot: Point2::new(-3.0, 7.0),
@@ -61,6 +63,19 @@ fn oscillating() -> [Follower; 2] {
             face_offset: 0.5,
             closing: Sense::Cw,
             initial_angle: (-30f64).to_radians(),
+        },
+        Follower::OscillatingRoller {
+            pivot: Point2::new(-3.0, -7.0),
+            arm_length: 9.0,
+            roller_radius: 1.0,
+            closing: Sense::Ccw,
+            initial_angle: 30f64.to_radians(),
+        },
+        Follower::OscillatingFlat {
+            pivot: Point2::new(-3.0, -7.0),
+            face_offset: -0.5,
+            closing: Sense::Ccw,
+            initial_angle: 30f64.to_radians(),
         },
     ]
 }
