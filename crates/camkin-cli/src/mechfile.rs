@@ -38,15 +38,28 @@ fn read_text(path: &Path) -> Result<(String, String), InputError> {
     let cannot = |e: std::io::Error| InputError {
         message: format!("cannot read mechanism file {name}: {e}"),
     };
-    let len = std::fs::metadata(path).map_err(cannot)?.len();
-    if len > MAX_FILE_BYTES {
+    // counted while reading: a device or a pipe has no length in its metadata
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| {
+            use std::io::Read;
+            f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes)
+        })
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(InputError {
             message: format!(
-                "{name}: {len} bytes is more than the {MAX_FILE_BYTES} a mechanism file may have"
+                "{name}: more than {MAX_FILE_BYTES} bytes ({} MiB), the most a mechanism file may have",
+                MAX_FILE_BYTES >> 20
             ),
         });
     }
-    let text = std::fs::read_to_string(path).map_err(cannot)?;
+    let text = String::from_utf8(bytes).map_err(|e| InputError {
+        message: format!(
+            "{name}: not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        ),
+    })?;
     let text = text
         .strip_prefix('\u{feff}')
         .map(str::to_string)

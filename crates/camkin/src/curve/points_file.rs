@@ -33,18 +33,26 @@ pub fn parse_points_with_lines(text: &str) -> Result<(Vec<Point2>, Vec<usize>), 
             message: message.to_string(),
             content: raw.chars().take(120).collect(),
         };
-        let fields: Vec<&str> = line
-            .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
-            .filter(|f| !f.is_empty())
-            .collect();
+        // commas or semicolons delimit fields (an empty field between two is an error, not
+        // skipped); without them, whitespace does
+        let fields: Vec<&str> = if line.contains([',', ';']) {
+            line.split([',', ';']).map(str::trim).collect()
+        } else {
+            line.split_whitespace().collect()
+        };
+        // a header: the first line that holds no number at all, only words (`x,y`, `x_info y_mm`)
         if !seen_data
-            && fields.iter().any(|f| f.parse::<f64>().is_err())
+            && fields.iter().all(|f| f.parse::<f64>().is_err())
             && line.chars().any(|c| c.is_alphabetic())
-            && !line.to_ascii_lowercase().contains("nan")
-            && !line.to_ascii_lowercase().contains("inf")
         {
-            seen_data = true; // header
+            seen_data = true;
             continue;
+        }
+        if let Some(k) = fields.iter().position(|f| f.is_empty()) {
+            return Err(syntax(&format!(
+                "field {} is empty (two delimiters in a row, or one at the end)",
+                k + 1
+            )));
         }
         seen_data = true;
         if fields.len() != 2 {
@@ -72,24 +80,33 @@ pub fn parse_points_with_lines(text: &str) -> Result<(Vec<Point2>, Vec<usize>), 
 }
 
 /// Largest points file read, bytes.
-pub const MAX_FILE_BYTES: u64 = 64 << 20;
+pub const MAX_FILE_BYTES: u64 = 16 << 20;
 
-/// Reads and parses a points file (at most [`MAX_FILE_BYTES`]); returns the points and their
-/// lines.
+/// Reads and parses a points file (at most [`MAX_FILE_BYTES`], counted while reading, so that a
+/// device or a pipe cannot make it read without end); returns the points and their lines.
 pub fn read_points_file(path: &Path) -> Result<(Vec<Point2>, Vec<usize>), CurveError> {
+    use std::io::Read;
     let io = |message: String| CurveError::PointsFileIo {
         path: path.display().to_string(),
         message,
     };
-    let len = std::fs::metadata(path)
-        .map_err(|e| io(e.to_string()))?
-        .len();
-    if len > MAX_FILE_BYTES {
+    let file = std::fs::File::open(path).map_err(|e| io(e.to_string()))?;
+    let mut bytes = Vec::new();
+    file.take(MAX_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| io(e.to_string()))?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(io(format!(
-            "{len} bytes is more than the {MAX_FILE_BYTES} read"
+            "more than {} MiB: not a points file (the limit is {MAX_FILE_BYTES} bytes)",
+            MAX_FILE_BYTES >> 20
         )));
     }
-    let text = std::fs::read_to_string(path).map_err(|e| io(e.to_string()))?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        io(format!(
+            "not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
     parse_points_with_lines(&text)
 }
 
@@ -131,5 +148,38 @@ mod tests {
             matches!(e, CurveError::PointsFileSyntax { line: 2, .. }),
             "{e}"
         );
+    }
+
+    #[test]
+    fn an_empty_field_is_an_error_not_skipped() {
+        for text in ["1,2\n5.0,,0.0\n", "1,2\n5.0;;0.0\n", "1,2\n5.0,0.0,\n", "1,2\n,5.0,0.0\n"] {
+            let e = parse_points(text).unwrap_err();
+            assert!(
+                matches!(e, CurveError::PointsFileSyntax { line: 2, .. }),
+                "{text:?}: {e}"
+            );
+            assert!(e.to_string().contains("empty"), "{e}");
+        }
+    }
+
+    #[test]
+    fn a_header_is_words_only_wherever_its_letters_are() {
+        for header in ["x_info,y_info", "X Y", "x_mm;y_mm", "inflection,nancy"] {
+            let p = parse_points(&format!("{header}\n1,2\n3,4\n")).unwrap();
+            assert_eq!(p.len(), 2, "{header}");
+        }
+        // a first line with a number in it is data: a typo is an error, not a skipped header
+        let e = parse_points("1.0,2.O\n3,4\n").unwrap_err();
+        assert!(matches!(e, CurveError::PointsFileSyntax { line: 1, .. }), "{e}");
+    }
+
+    #[test]
+    fn reading_stops_at_the_cap_whatever_the_metadata_says() {
+        // /dev/zero has length 0 in its metadata and no end
+        let zero = Path::new("/dev/zero");
+        if zero.exists() {
+            let e = read_points_file(zero).unwrap_err();
+            assert!(e.to_string().contains("MiB"), "{e}");
+        }
     }
 }

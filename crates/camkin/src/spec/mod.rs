@@ -37,6 +37,8 @@
 //! ```
 
 mod build;
+#[cfg(feature = "serde")]
+mod pair;
 mod profile;
 
 pub use crate::field::{
@@ -87,7 +89,7 @@ pub struct CamSpec {
     /// the rotation axis, world (default the origin)
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
+        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
     )]
     pub pivot: Option<[f64; 2]>,
     /// constant angular acceleration, deg/s² (default 0)
@@ -113,7 +115,7 @@ pub struct ProfileSpec {
     pub kind: String,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
+        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option_list")
     )]
     pub points: Option<Vec<[f64; 2]>>,
     #[cfg_attr(
@@ -123,7 +125,7 @@ pub struct ProfileSpec {
     pub parameterization: Option<Parameterization>,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
+        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
     )]
     pub center: Option<[f64; 2]>,
     #[cfg_attr(
@@ -133,7 +135,7 @@ pub struct ProfileSpec {
     pub radius: Option<f64>,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
+        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
     )]
     pub semi_axes: Option<[f64; 2]>,
     #[cfg_attr(
@@ -190,7 +192,7 @@ pub struct FollowerSpec {
     pub kind: String,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
+        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
     )]
     pub direction: Option<[f64; 2]>,
     #[cfg_attr(
@@ -205,7 +207,7 @@ pub struct FollowerSpec {
     pub roller_radius: Option<f64>,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
+        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
     )]
     pub pivot: Option<[f64; 2]>,
     #[cfg_attr(
@@ -261,7 +263,7 @@ pub struct DynamicsSpec {
     /// m/s², default none
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
+        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
     )]
     pub gravity: Option<[f64; 2]>,
 }
