@@ -230,11 +230,43 @@ impl ProfileSpec {
                             what: "a law",
                             known: Law::ALL.map(|l| l.name()).join(", "),
                         })?;
-                    let rise = sg
-                        .rise
-                        .map(|r| finite(seg(SegmentField::Rise), r))
-                        .transpose()?
-                        .unwrap_or(0.0);
+                    // a law other than a dwell moves the follower: its rise is required and
+                    // non-zero (a missing rise silently meaning a dwell is refused); a dwell has none
+                    let rise = match (law, sg.rise) {
+                        (Law::Dwell, None) => 0.0,
+                        (Law::Dwell, Some(r)) if r == 0.0 => 0.0,
+                        (Law::Dwell, Some(r)) => {
+                            return Err(SpecError::Invalid {
+                                field: seg(SegmentField::Rise),
+                                value: format!("{r}"),
+                                reason: "a dwell has no rise (leave it out, or choose a law that moves)".into(),
+                            })
+                        }
+                        (_, None) => {
+                            return Err(SpecError::Invalid {
+                                field: seg(SegmentField::Rise),
+                                value: "none".into(),
+                                reason: format!(
+                                    "the {} law needs a rise (negative for a return); a segment that does not move is law = \"dwell\"",
+                                    law.name()
+                                ),
+                            })
+                        }
+                        (_, Some(r)) => {
+                            let r = finite(seg(SegmentField::Rise), r)?;
+                            if r == 0.0 {
+                                return Err(SpecError::Invalid {
+                                    field: seg(SegmentField::Rise),
+                                    value: "0".into(),
+                                    reason: format!(
+                                        "the {} law with no rise is a dwell: write law = \"dwell\"",
+                                        law.name()
+                                    ),
+                                });
+                            }
+                            r
+                        }
+                    };
                     let degrees = positive(seg(SegmentField::Degrees), sg.degrees)?;
                     list.push(Segment {
                         law,
