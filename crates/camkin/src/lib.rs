@@ -73,6 +73,7 @@ pub mod dynamics;
 mod error;
 pub mod field;
 pub mod geometry;
+pub mod human;
 pub mod interp;
 pub mod motion;
 pub(crate) mod periodic;

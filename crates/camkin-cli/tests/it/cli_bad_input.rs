@@ -289,13 +289,15 @@ fn follower_that_cannot_reach() {
 
 #[test]
 fn huge_inputs_are_refused_quickly() {
-    // a million points in a points file: refused at the limit, without reading them all into a spline
+    // 200 000 points in a points file (under its 16 MiB cap): refused at the points limit,
+    // without building a spline through them
     let dir = tempfile::tempdir().unwrap();
-    let mut text = String::with_capacity(16 << 20);
-    for i in 0..1_000_000 {
-        let t = std::f64::consts::TAU * i as f64 / 1e6;
-        text.push_str(&format!("{},{}\n", t.cos(), t.sin()));
+    let mut text = String::with_capacity(4 << 20);
+    for i in 0..200_000 {
+        let t = std::f64::consts::TAU * i as f64 / 2e5;
+        text.push_str(&format!("{:.6},{:.6}\n", t.cos(), t.sin()));
     }
+    assert!(text.len() < 16 << 20);
     std::fs::write(dir.path().join("big.csv"), &text).unwrap();
     let mech = dir.path().join("m.toml");
     std::fs::write(&mech, "[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"points-file\"\npath = \"big.csv\"\n[follower]\nkind = \"translating-flat\"\n").unwrap();
@@ -335,9 +337,7 @@ fn mechanism_file_size_limit_is_8_mib_exactly() {
         .args(["--at", "0"])
         .assert()
         .code(2)
-        .stderr(predicate::str::contains(
-            "more than 8388608 bytes (8 MiB)",
-        ));
+        .stderr(predicate::str::contains("more than 8388608 bytes (8 MiB)"));
     // a device has no length in its metadata: the cap is counted while reading
     if std::path::Path::new("/dev/zero").exists() {
         camkin()
@@ -418,4 +418,118 @@ fn bad_motion_profiles() {
         &["takes no `radius`"],
     );
     bad("no base radius", &format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nsegments = [{{ law = \"dwell\", degrees = 360 }}]\n{foll}"), &[], &["needs `base_radius`"]);
+}
+
+/// Issue 12, class 1: data that was silently accepted. Every pair of the wrong length, in every
+/// place a pair is read, is refused naming its line and value.
+#[test]
+fn pairs_of_the_wrong_length_are_refused_everywhere() {
+    let dynamics = "[dynamics]\nmass = 1\nspring_stiffness = 100\nspring_preload = 10\n";
+    let cases: Vec<(&str, String, &str)> = vec![
+        ("direction of 3", format!("{CIRCLE}[follower]\nkind = \"translating-flat\"\ndirection = [1.0, 0.0, 7.0]\n"), "found 3 numbers: [1.0, 0.0, 7.0]"),
+        ("direction of 1", format!("{CIRCLE}[follower]\nkind = \"translating-flat\"\ndirection = [1.0]\n"), "found 1 number: [1.0]"),
+        ("empty direction", format!("{CIRCLE}[follower]\nkind = \"translating-flat\"\ndirection = []\n"), "found 0 numbers"),
+        ("cam pivot", format!("{}{FLAT}", CIRCLE.replace("speed_rpm = 100\n", "speed_rpm = 100\npivot = [0, 0, 1]\n")), "found 3 numbers"),
+        ("centre", format!("{}{FLAT}", CIRCLE.replace("center = [0.5, 0]", "center = [0.5, 0, 7]")), "[0.5, 0.0, 7.0]"),
+        ("semi-axes", format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = [3, 2, 1]\n{FLAT}"), "found 3 numbers"),
+        ("a spline point", format!("{SPLINE_HEAD}points = [[5.0, 0.0, 1.0], [0, 5], [-5, 0], [0, -5]]\n{FLAT}"), "point 1: expected a pair"),
+        ("a later spline point", format!("{SPLINE_HEAD}points = [[5.0, 0.0], [0, 5], [-5], [0, -5]]\n{FLAT}"), "point 3: expected a pair"),
+        ("arm pivot", format!("{CIRCLE}[follower]\nkind = \"oscillating-roller\"\npivot = [-3, 7, 0]\narm_length = 8\nroller_radius = 1\n"), "found 3 numbers"),
+        ("gravity", format!("{CIRCLE}{FLAT}{dynamics}gravity = [0, -9.81, 0]\n"), "found 3 numbers"),
+    ];
+    for (name, toml, needle) in cases {
+        bad(name, &toml, &[], &[needle, "m.toml:"]);
+    }
+}
+
+/// Issue 12, class 1: a points-file row with an empty field, and motion segments whose law and
+/// rise disagree.
+#[test]
+fn empty_fields_and_rises_that_do_not_fit_the_law_are_refused() {
+    let pts = format!(
+        "{}path = \"p.csv\"\n{FLAT}",
+        SPLINE_HEAD.replace("\"spline\"", "\"points-file\"")
+    );
+    for (row, line) in [
+        ("5.0,,0.0", "p.csv:2:"),
+        ("5.0,0.0,", "p.csv:2:"),
+        ("5.0;;0.0", "p.csv:2:"),
+    ] {
+        let csv = format!("4,0\n{row}\n0,4\n-4,0\n0,-4\n");
+        bad(row, &pts, &[("p.csv", &csv)], &[line, "empty"]);
+    }
+    let motion = |segs: &str| {
+        format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40\nsegments = [{segs}]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n")
+    };
+    bad(
+        "rise missing",
+        &motion("{ law = \"cycloidal\", degrees = 180 }, { law = \"cycloidal\", rise = -1, degrees = 180 }"),
+        &[],
+        &["segments[0].rise = none", "needs a rise"],
+    );
+    bad(
+        "rise zero",
+        &motion("{ law = \"3-4-5\", rise = 0, degrees = 180 }, { law = \"dwell\", degrees = 180 }"),
+        &[],
+        &["segments[0].rise = 0", "dwell"],
+    );
+    bad(
+        "dwell with a rise",
+        &motion("{ law = \"dwell\", rise = 3, degrees = 360 }"),
+        &[],
+        &["segments[0].rise = 3", "a dwell has no rise"],
+    );
+}
+
+/// Issue 12, class 2: speeds whose outputs would overflow or underflow are refused naming the
+/// field as given and its value rounded for people; speeds inside the range give finite rows.
+#[test]
+fn extreme_speeds_are_refused_by_their_own_field() {
+    for (rpm, needle) in [
+        ("1e200", "cam.speed_rpm = 1e200: is too fast"),
+        ("1e308", "cam.speed_rpm = 1e308: is too fast"),
+        ("1.7e308", "cam.speed_rpm = 1.7e308: is too fast"),
+        ("1e-300", "cam.speed_rpm = 1e-300: is too slow"),
+        ("1e-140", "cam.speed_rpm = 1e-140: is too slow"),
+    ] {
+        bad(
+            rpm,
+            &format!(
+                "{}{FLAT}",
+                CIRCLE.replace("speed_rpm = 100", &format!("speed_rpm = {rpm}"))
+            ),
+            &[],
+            &[needle],
+        );
+    }
+    for rpm in ["1e60", "1e-60"] {
+        let dir = tempfile::tempdir().unwrap();
+        let mech = dir.path().join("m.toml");
+        std::fs::write(
+            &mech,
+            format!(
+                "{}{FLAT}",
+                CIRCLE.replace("speed_rpm = 100", &format!("speed_rpm = {rpm}"))
+            ),
+        )
+        .unwrap();
+        let a = camkin()
+            .arg("analyze")
+            .arg(&mech)
+            .args(["--angles", "0:360:7"])
+            .assert()
+            .success();
+        let out = String::from_utf8(a.get_output().stdout.clone()).unwrap();
+        for line in out.lines().skip(1) {
+            for v in line.split(',').take(5) {
+                if let Ok(x) = v.parse::<f64>() {
+                    assert!(x.is_finite(), "{rpm}: {line}");
+                }
+            }
+            assert!(
+                !line.contains("NaN") && !line.contains("inf"),
+                "{rpm}: {line}"
+            );
+        }
+    }
 }

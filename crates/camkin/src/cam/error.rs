@@ -12,7 +12,7 @@ pub enum CamError {
     #[error(transparent)]
     Curve(#[from] CurveError),
     /// A parameter is out of range.
-    #[error("{field} = {value}: {reason}")]
+    #[error("{field} = {}: {reason}", crate::human::human(*.value))]
     Invalid {
         /// the field
         field: Field,
@@ -22,7 +22,7 @@ pub enum CamError {
         reason: &'static str,
     },
     /// A point or a vector is out of range.
-    #[error("{field} = [{x}, {y}]: {reason}")]
+    #[error("{field} = [{}, {}]: {reason}", crate::human::human(*.x), crate::human::human(*.y))]
     InvalidVector {
         /// the field
         field: Field,
@@ -43,7 +43,7 @@ pub enum CamError {
     #[error("the cam profile must be a closed curve")]
     OpenProfile,
     /// The follower never touches the cam at this angle.
-    #[error("at cam angle {angle_deg}°: the follower does not touch the cam ({reason})")]
+    #[error("at cam angle {}°: the follower does not touch the cam ({reason})", crate::human::human(*.angle_deg))]
     NoTouch {
         /// cam angle, degrees
         angle_deg: f64,
@@ -62,7 +62,7 @@ pub enum CamError {
         pressure_angle_deg: f64,
     },
     /// The first-touch Newton iteration did not converge.
-    #[error("at cam angle {angle_deg}°: the first-touch search did not converge ({reason})")]
+    #[error("at cam angle {}°: the first-touch search did not converge ({reason})", crate::human::human(*.angle_deg))]
     NoConvergence {
         /// cam angle, degrees
         angle_deg: f64,
@@ -70,7 +70,7 @@ pub enum CamError {
         reason: StopReason,
     },
     /// The follower can never touch the cam.
-    #[error("{field} = {value}: {reason}")]
+    #[error("{field} = {}: {reason}", crate::human::human(*.value))]
     Unreachable {
         /// the field
         field: Field,
@@ -80,7 +80,7 @@ pub enum CamError {
         reason: String,
     },
     /// The profile has a cusp: its tangent vanishes, so its normal and curvature are undefined.
-    #[error("the cam profile has a cusp (zero-length tangent) at u = {param}, ({x}, {y}) in the cam frame")]
+    #[error("the cam profile has a cusp (zero-length tangent) at u = {}, ({}, {}) in the cam frame", crate::human::human(*.param), crate::human::human(*.x), crate::human::human(*.y))]
     Cusp {
         /// the profile parameter
         param: f64,
@@ -90,7 +90,7 @@ pub enum CamError {
         y: f64,
     },
     /// The contact kinematics could not be computed.
-    #[error("at cam angle {angle_deg}°: {source}")]
+    #[error("at cam angle {}°: {source}", crate::human::human(*.angle_deg))]
     Contact {
         /// cam angle, degrees
         angle_deg: f64,

@@ -27,6 +27,7 @@ impl Mechanism {
             convex,
         } = ProfileSummary::of(profile, &breakpoints, period)?;
         geometry.model.check_reach(size)?;
+        cam.check_magnitudes(size)?;
         let options = AnalysisOptions::for_size(size);
         let mut m = Self {
             cam,

@@ -52,6 +52,10 @@ pub struct Cam {
     direction: Sense,
     speed: f64,
     angular_acceleration: f64,
+    /// the speed as given: its field (`speed` in rad/s or `speed_rpm`) and value, for messages
+    speed_given: (CamField, f64),
+    /// the angular acceleration as given: its value and the factor to rad/s²
+    alpha_given: (f64, f64),
     /// the motion program the profile was synthesised from, when it was
     synthesis: Option<Arc<synthesis::SynthesizedProfile>>,
 }
@@ -88,6 +92,8 @@ impl Cam {
             direction,
             speed,
             angular_acceleration: 0.0,
+            speed_given: (CamField::Speed, speed),
+            alpha_given: (0.0, 1.0),
             synthesis: None,
         })
     }
@@ -106,12 +112,15 @@ impl Cam {
                 reason: "must be positive and finite",
             });
         }
-        Self::new(
+        // τ/60 first: rpm · τ would overflow near f64::MAX
+        let mut cam = Self::new(
             profile,
             pivot,
             direction,
-            rpm * std::f64::consts::TAU / 60.0,
-        )
+            rpm * (std::f64::consts::TAU / 60.0),
+        )?;
+        cam.speed_given = (CamField::SpeedRpm, rpm);
+        Ok(cam)
     }
 
     /// With a constant angular acceleration `θ̈` (rad/s², in the cam's direction of motion); the
@@ -125,6 +134,7 @@ impl Cam {
             });
         }
         self.angular_acceleration = alpha;
+        self.alpha_given = (alpha, 1.0);
         Ok(self)
     }
 
@@ -158,6 +168,47 @@ impl Cam {
     /// Angular acceleration `θ̈`, rad/s².
     pub fn angular_acceleration(&self) -> f64 {
         self.angular_acceleration
+    }
+
+    /// Records the angular acceleration as the user gave it (`value · factor` rad/s²), for
+    /// messages.
+    pub(crate) fn set_alpha_given(&mut self, value: f64, factor: f64) {
+        self.alpha_given = (value, factor);
+    }
+
+    /// Refuses a speed or an angular acceleration whose outputs on a cam reaching `size` from
+    /// its axis would overflow (jerk `~ ω³ size`) or underflow (acceleration `~ ω² size`), naming
+    /// the field as given.
+    pub(crate) fn check_magnitudes(&self, size: f64) -> Result<(), CamError> {
+        const BIG: f64 = 1e290;
+        const SMALL: f64 = 1e-290;
+        let w = self.speed;
+        let (field, value) = self.speed_given;
+        let jerk = w * w * w * size;
+        let accel = w * w * size;
+        if !(jerk.is_finite() && jerk <= BIG) {
+            return Err(CamError::Invalid {
+                field: Field::Cam(field),
+                value,
+                reason: "is too fast for this cam: its jerk (~ ω³ × size) would overflow f64",
+            });
+        }
+        if accel.min(jerk) < SMALL {
+            return Err(CamError::Invalid {
+                field: Field::Cam(field),
+                value,
+                reason: "is too slow for this cam: its accelerations and jerk (~ ω² × size, ω³ × size) would underflow f64",
+            });
+        }
+        let al = self.angular_acceleration.abs();
+        if al > 0.0 && !(al * w * size <= BIG && al * al * size <= BIG) {
+            return Err(CamError::Invalid {
+                field: Field::Cam(CamField::AngularAcceleration),
+                value: self.alpha_given.0,
+                reason: "is too large for this cam: its terms in the jerk would overflow f64",
+            });
+        }
+        Ok(())
     }
 
     /// The cam body's state at cam angle `theta` (rad): angle `±θ`, angular velocity `±ω`.

@@ -144,7 +144,7 @@ pub enum CurveError {
         count: usize,
     },
     /// A coordinate is NaN or infinite.
-    #[error("point {index} is not finite: ({x}, {y})")]
+    #[error("point {index} is not finite: ({}, {})", crate::human::human(*.x), crate::human::human(*.y))]
     NonFinitePoint {
         /// index of the point (0-based)
         index: usize,
@@ -154,7 +154,7 @@ pub enum CurveError {
         y: f64,
     },
     /// Two consecutive nodes coincide (the last and the first count as consecutive).
-    #[error("points {index} and {next} coincide at ({x}, {y})")]
+    #[error("points {index} and {next} coincide at ({}, {})", crate::human::human(*.x), crate::human::human(*.y))]
     RepeatedPoint {
         /// index of the first of the two
         index: usize,
@@ -166,7 +166,7 @@ pub enum CurveError {
         y: f64,
     },
     /// A size (radius, semi-axis) is not positive and finite.
-    #[error("{field} must be positive and finite, got {value}")]
+    #[error("{field} must be positive and finite, got {}", crate::human::human(*.value))]
     NonPositive {
         /// the field
         field: &'static str,
@@ -174,7 +174,7 @@ pub enum CurveError {
         value: f64,
     },
     /// A number that must be finite is not.
-    #[error("{field} must be finite, got {value}")]
+    #[error("{field} must be finite, got {}", crate::human::human(*.value))]
     NonFinite {
         /// the field
         field: &'static str,
@@ -182,7 +182,7 @@ pub enum CurveError {
         value: f64,
     },
     /// A direction vector has zero (or non-finite) length.
-    #[error("{field} must be a non-zero finite vector, got ({x}, {y})")]
+    #[error("{field} must be a non-zero finite vector, got ({}, {})", crate::human::human(*.x), crate::human::human(*.y))]
     ZeroDirection {
         /// the field
         field: &'static str,

@@ -152,7 +152,12 @@ mod tests {
 
     #[test]
     fn an_empty_field_is_an_error_not_skipped() {
-        for text in ["1,2\n5.0,,0.0\n", "1,2\n5.0;;0.0\n", "1,2\n5.0,0.0,\n", "1,2\n,5.0,0.0\n"] {
+        for text in [
+            "1,2\n5.0,,0.0\n",
+            "1,2\n5.0;;0.0\n",
+            "1,2\n5.0,0.0,\n",
+            "1,2\n,5.0,0.0\n",
+        ] {
             let e = parse_points(text).unwrap_err();
             assert!(
                 matches!(e, CurveError::PointsFileSyntax { line: 2, .. }),
@@ -170,7 +175,10 @@ mod tests {
         }
         // a first line with a number in it is data: a typo is an error, not a skipped header
         let e = parse_points("1.0,2.O\n3,4\n").unwrap_err();
-        assert!(matches!(e, CurveError::PointsFileSyntax { line: 1, .. }), "{e}");
+        assert!(
+            matches!(e, CurveError::PointsFileSyntax { line: 1, .. }),
+            "{e}"
+        );
     }
 
     #[test]

@@ -72,7 +72,7 @@ pub enum DynamicsError {
         source: crate::cam::CamError,
     },
     /// A parameter is out of range.
-    #[error("{field} = {value}: {reason}")]
+    #[error("{field} = {}: {reason}", crate::human::human(*.value))]
     Invalid {
         /// the parameter
         field: crate::field::Field,

@@ -148,7 +148,11 @@ impl SpecError {
 }
 
 pub(super) fn vector(v: [f64; 2]) -> String {
-    format!("[{}, {}]", v[0], v[1])
+    format!(
+        "[{}, {}]",
+        crate::human::human(v[0]),
+        crate::human::human(v[1])
+    )
 }
 
 impl From<CamError> for SpecError {
@@ -160,7 +164,7 @@ impl From<CamError> for SpecError {
                 reason,
             } => SpecError::Invalid {
                 field,
-                value: value.to_string(),
+                value: crate::human::human(value),
                 reason: reason.to_string(),
             },
             CamError::InvalidVector {
@@ -179,7 +183,7 @@ impl From<CamError> for SpecError {
                 reason,
             } => SpecError::Invalid {
                 field,
-                value: value.to_string(),
+                value: crate::human::human(value),
                 reason,
             },
             CamError::Cusp { .. } => SpecError::Rule {
@@ -238,7 +242,7 @@ pub(super) fn finite(field: Field, x: f64) -> Result<f64, SpecError> {
     } else {
         Err(SpecError::Invalid {
             field,
-            value: x.to_string(),
+            value: crate::human::human(x),
             reason: "must be a finite number".into(),
         })
     }
@@ -250,7 +254,7 @@ pub(super) fn positive(field: Field, x: f64) -> Result<f64, SpecError> {
     } else {
         Err(SpecError::Invalid {
             field,
-            value: x.to_string(),
+            value: crate::human::human(x),
             reason: "must be positive and finite".into(),
         })
     }
@@ -263,7 +267,7 @@ pub(super) fn non_negative(field: Field, x: f64) -> Result<f64, SpecError> {
     } else {
         Err(SpecError::Invalid {
             field,
-            value: x.to_string(),
+            value: crate::human::human(x),
             reason: "must not be negative".into(),
         })
     }
@@ -331,6 +335,7 @@ impl MechanismSpec {
         };
         let mut cam_obj = Cam::from_rpm(profile, pivot, sense, speed)?
             .with_angular_acceleration(alpha.to_radians())?;
+        cam_obj.set_alpha_given(alpha, 1f64.to_radians());
         if let Some(s) = synthesis {
             cam_obj.set_synthesis(s);
         }
@@ -501,7 +506,7 @@ impl DynamicsSpec {
         if restitution > 1.0 {
             return Err(SpecError::Invalid {
                 field: f(D::Restitution),
-                value: restitution.to_string(),
+                value: crate::human::human(restitution),
                 reason: "must be from 0 to 1".into(),
             });
         }

@@ -89,7 +89,11 @@ pub struct CamSpec {
     /// the rotation axis, world (default the origin)
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
     )]
     pub pivot: Option<[f64; 2]>,
     /// constant angular acceleration, deg/s² (default 0)
@@ -115,7 +119,11 @@ pub struct ProfileSpec {
     pub kind: String,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option_list")
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option_list"
+        )
     )]
     pub points: Option<Vec<[f64; 2]>>,
     #[cfg_attr(
@@ -125,7 +133,11 @@ pub struct ProfileSpec {
     pub parameterization: Option<Parameterization>,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
     )]
     pub center: Option<[f64; 2]>,
     #[cfg_attr(
@@ -135,7 +147,11 @@ pub struct ProfileSpec {
     pub radius: Option<f64>,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
     )]
     pub semi_axes: Option<[f64; 2]>,
     #[cfg_attr(
@@ -192,7 +208,11 @@ pub struct FollowerSpec {
     pub kind: String,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
     )]
     pub direction: Option<[f64; 2]>,
     #[cfg_attr(
@@ -207,7 +227,11 @@ pub struct FollowerSpec {
     pub roller_radius: Option<f64>,
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
     )]
     pub pivot: Option<[f64; 2]>,
     #[cfg_attr(
@@ -263,7 +287,11 @@ pub struct DynamicsSpec {
     /// m/s², default none
     #[cfg_attr(
         feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "pair::option")
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
     )]
     pub gravity: Option<[f64; 2]>,
 }

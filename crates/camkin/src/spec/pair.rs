@@ -56,9 +56,10 @@ impl<'de> Visitor<'de> for Pairs {
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<[f64; 2]>, A::Error> {
         let mut out = Vec::new();
-        while let Some(Pair(p)) = seq.next_element::<Pair>().map_err(|e| {
-            A::Error::custom(format!("point {}: {e}", out.len() + 1))
-        })? {
+        while let Some(Pair(p)) = seq
+            .next_element::<Pair>()
+            .map_err(|e| A::Error::custom(format!("point {}: {e}", out.len() + 1)))?
+        {
             out.push(p);
         }
         Ok(out)

@@ -234,11 +234,11 @@ impl ProfileSpec {
                     // non-zero (a missing rise silently meaning a dwell is refused); a dwell has none
                     let rise = match (law, sg.rise) {
                         (Law::Dwell, None) => 0.0,
-                        (Law::Dwell, Some(r)) if r == 0.0 => 0.0,
+                        (Law::Dwell, Some(0.0)) => 0.0,
                         (Law::Dwell, Some(r)) => {
                             return Err(SpecError::Invalid {
                                 field: seg(SegmentField::Rise),
-                                value: format!("{r}"),
+                                value: crate::human::human(r),
                                 reason: "a dwell has no rise (leave it out, or choose a law that moves)".into(),
                             })
                         }
