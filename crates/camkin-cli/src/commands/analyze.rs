@@ -55,9 +55,9 @@ fn analyze_with_progress(
 fn report_degenerate(mech: &Mechanism, stretches: &[(f64, f64)], angles: &[f64], jumps: &[bool]) {
     let what = match mech.roller_radius() {
         Some(roller_radius) => format!(
-            "concave more sharply than the roller (radius of curvature below {roller_radius})"
+            "concave more sharply than the roller (radius of curvature below {roller_radius}), or folds over itself"
         ),
-        None => "concave under the flat face".to_string(),
+        None => "concave under the flat face, or folds over itself".to_string(),
     };
     let p = mech.cam().profile();
     for &(a, b) in stretches {

@@ -165,15 +165,29 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     let (mut rho_min, mut rho_at) = (f64::INFINITY, 0.0);
     let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
     for (t, s) in thetas.iter().zip(&states) {
-        let Ok(s) = s else {
-            failed += 1;
-            continue;
-        };
+        // the program's peak over every angle, not only those analysed
         let m = synth.follower_motion(*t);
+        amax = amax.max((w * w * m[2]).abs());
+        let s = match s {
+            Ok(s) => s,
+            Err(e) => {
+                failed += 1;
+                // resting on a cusp of the folded profile: the follower cannot follow it there
+                if matches!(
+                    e,
+                    camkin::cam::CamError::NoConvergence {
+                        reason: camkin::cam::StopReason::OnCusp,
+                        ..
+                    }
+                ) {
+                    folded.push(t.to_degrees());
+                }
+                continue;
+            }
+        };
         eq = eq.max((s.position - m[0]).abs());
         ev = ev.max((s.velocity - w * m[1]).abs());
         ea = ea.max((s.acceleration - w * w * m[2]).abs());
-        amax = amax.max((w * w * m[2]).abs());
         if s.pressure_angle().to_degrees().abs() > args.pressure_limit {
             over.push(t.to_degrees());
         }
@@ -187,8 +201,26 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         umax = umax.max(s.follower_param);
     }
     let mut report = String::new();
-    report += &format!("round trip (contact method against the motion law): |Δs| ≤ {eq:.2e}, |Δv| ≤ {ev:.2e}, |Δa| ≤ {ea:.2e} ({:.1e} of the peak)\n", ea / amax.max(f64::MIN_POSITIVE));
-    if ea > 1e-6 * amax {
+    // relative to the program's peak acceleration, or to ω² times the cam's size (ω² × 1 rad for
+    // an arm) when the program has none (constant velocity and dwells)
+    let natural = if mech.follower().is_oscillating() {
+        w * w
+    } else {
+        w * w * mech.size()
+    };
+    // a program's "peak" below 1e-9 of the natural scale is rounding (constant velocity)
+    let has_peak = amax > 1e-9 * natural;
+    let scale = if has_peak { amax } else { natural };
+    let rel = if has_peak {
+        format!("{:.1e} of the peak", ea / amax)
+    } else {
+        format!(
+            "{:.1e} of ω² × the cam's size; the program has no acceleration",
+            ea / scale
+        )
+    };
+    report += &format!("round trip (contact method against the motion law): |Δs| ≤ {eq:.2e}, |Δv| ≤ {ev:.2e}, |Δa| ≤ {ea:.2e} ({rel})\n");
+    if ea > 1e-6 * scale || failed > 0 {
         report += "round trip FAILED: the follower does not follow the synthesised profile (see the checks below)\n";
     }
     report += &format!("smallest radius of curvature of the profile: {rho_min:.6} at {rho_at}°\n");

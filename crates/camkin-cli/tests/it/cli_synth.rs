@@ -198,3 +198,25 @@ fn dxf_polylines(text: &str) -> Vec<(bool, Vec<(f64, f64)>)> {
     assert_eq!(pairs.last(), Some(&(0, "EOF")));
     out
 }
+
+/// Regression (issue 12): a program with no acceleration (constant velocity) was reported as
+/// "round trip FAILED … 9.2e297 of the peak": its rounding-level peak was taken as the scale.
+#[test]
+fn round_trip_of_a_program_without_acceleration_is_not_failed() {
+    let dir = tempfile::tempdir().unwrap();
+    let m = dir.path().join("cv.toml");
+    std::fs::write(
+        &m,
+        "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40.0\nsegments = [{ law = \"constant-velocity\", rise = 10.0, degrees = 180 }, { law = \"constant-velocity\", rise = -10.0, degrees = 180 }]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n",
+    )
+    .unwrap();
+    camkin()
+        .arg("synth")
+        .arg(&m)
+        .arg("--out")
+        .arg(dir.path().join("o"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("the program has no acceleration"))
+        .stdout(predicate::str::contains("FAILED").not());
+}

@@ -114,6 +114,9 @@ pub enum StopReason {
     NoCandidate,
     /// the refined contact is behind a sampled point of the first-touch function
     BehindSample,
+    /// the follower rests on a cusp of a folded profile (a corner: no tangency, no contact
+    /// kinematics); the profile folds where the follower cannot follow its motion program
+    OnCusp,
 }
 
 impl std::fmt::Display for StopReason {
@@ -124,6 +127,9 @@ impl std::fmt::Display for StopReason {
             StopReason::NotFirstTouch => "Newton reached a tangency that is not the first touch",
             StopReason::NoCandidate => "no candidate",
             StopReason::BehindSample => "refined contact is behind a sampled one",
+            StopReason::OnCusp => {
+                "the follower rests on a cusp of the profile, which folds over itself there (the follower cannot follow the motion program)"
+            }
         })
     }
 }

@@ -25,6 +25,8 @@ impl Mechanism {
             size,
             orientation,
             convex,
+            mean_speed,
+            cusps,
         } = ProfileSummary::of(profile, &breakpoints, period)?;
         geometry.model.check_reach(size)?;
         cam.check_magnitudes(size)?;
@@ -39,6 +41,8 @@ impl Mechanism {
             size,
             orientation,
             convex,
+            mean_speed,
+            cusps,
             breakpoints,
         };
         m.set_options(options);
@@ -104,7 +108,9 @@ impl Mechanism {
 
     /// Parameter ranges `(from, to)` of the profile that the follower cannot follow: concave
     /// stretches under a flat face, stretches concave more sharply than the roller (radius of
-    /// curvature below the roller radius). The follower bridges them: the contact jumps across
+    /// curvature below the roller radius), the backward branch of a fold (a profile that crosses
+    /// itself between two cusps, as an envelope does where the follower cannot follow its
+    /// motion program). The follower bridges them: the contact jumps across
     /// and the acceleration is impulsive there. Found on a dense sampling of the profile; empty
     /// for a knife edge and for convex profiles.
     pub fn unfollowable_stretches(&self) -> Vec<(f64, f64)> {
@@ -113,12 +119,33 @@ impl Mechanism {
         };
         let profile = self.cam.profile.as_ref();
         let u = bracket_samples(&self.breakpoints, self.period, 64, 2048);
-        let bad: Vec<bool> = u
+        let mut bad: Vec<bool> = u
             .iter()
             .map(|&v| self.orientation * profile.curvature(v) < limit)
             .collect();
-        let mut out = Vec::new();
+        // a folded profile (a swallowtail between two cusps): the branch between the cusps runs
+        // backwards and the follower cannot follow it whatever its curvature says; the tangent
+        // reverses at each cusp, the shorter alternate branches are the reversed ones
+        let d1: Vec<_> = u.iter().map(|&v| profile.eval(v).d1).collect();
         let n = u.len();
+        let cusp: Vec<bool> = (0..n)
+            .map(|k| d1[(k + n - 1) % n].dot(&d1[k]) < 0.0)
+            .collect();
+        if cusp.iter().filter(|&&c| c).count() >= 2 {
+            let mut parity = false;
+            let mut reversed = vec![false; n];
+            for k in 0..n {
+                parity ^= cusp[k];
+                reversed[k] = parity;
+            }
+            if reversed.iter().filter(|&&r| r).count() * 2 > n {
+                reversed.iter_mut().for_each(|r| *r = !*r);
+            }
+            for k in 0..n {
+                bad[k] |= reversed[k];
+            }
+        }
+        let mut out = Vec::new();
         let Some(start) = (0..n).find(|&k| !bad[k]) else {
             return vec![(0.0, self.period)];
         };

@@ -235,5 +235,9 @@ pub struct Mechanism {
     size: f64,
     orientation: f64,
     convex: bool,
+    /// the mean `|r'|` of the profile: below 1e-6 of it a contact is taken to sit on a cusp
+    mean_speed: f64,
+    /// the cusps of a folded profile (parameters)
+    cusps: Vec<f64>,
     breakpoints: Vec<f64>,
 }

@@ -96,6 +96,11 @@ impl Mechanism {
         if !self.faces_follower(e, q) {
             return false;
         }
+        // on a cusp of a folded profile the tangency conditions hold trivially (r' = 0): the
+        // follower rests on a corner there, which the contact method cannot describe
+        if !self.convex && e.d1.norm_squared() < (1e-6 * self.mean_speed).powi(2) {
+            return false;
+        }
         if self.geometry.is_knife() {
             return true;
         }
@@ -103,6 +108,23 @@ impl Mechanism {
             Some((_, qs)) => (qs - q).abs() <= self.touch_slack(),
             None => false,
         }
+    }
+
+    /// Fails with [`StopReason::OnCusp`] when a cusp of a folded profile touches the follower
+    /// before the contact at position `q`: the follower then rests on that corner.
+    pub(crate) fn check_cusps(&self, theta: f64, frame: &Frame, q: f64) -> Result<(), CamError> {
+        for &u in &self.cusps {
+            let p = frame.curve_position(self.cam.profile.as_ref(), u);
+            if let Some((score, _)) = self.geometry.model.score(p) {
+                if score > self.oriented(q) + self.touch_slack() {
+                    return Err(CamError::NoConvergence {
+                        angle_deg: theta.to_degrees(),
+                        reason: StopReason::OnCusp,
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The cam's outward normal at `e` faces the follower at position `q` (the cam's back side
@@ -203,6 +225,42 @@ impl Mechanism {
         best
     }
 
+    /// The peak of the first-touch function on `[a, b]` by golden-section search: `(u, q)`.
+    fn score_peak(&self, frame: &Frame, mut a: f64, mut b: f64) -> Option<(f64, f64)> {
+        let profile = self.cam.profile.as_ref();
+        let score = |u: f64| {
+            self.geometry
+                .model
+                .score(frame.curve_position(profile, u))
+                .map_or(f64::NEG_INFINITY, |s| s.0)
+        };
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let mut c = b - g * (b - a);
+        let mut d = a + g * (b - a);
+        let (mut fc, mut fd) = (score(c), score(d));
+        for _ in 0..60 {
+            if fc >= fd {
+                b = d;
+                d = c;
+                fd = fc;
+                c = b - g * (b - a);
+                fc = score(c);
+            } else {
+                a = c;
+                c = d;
+                fc = fd;
+                d = a + g * (b - a);
+                fd = score(d);
+            }
+        }
+        let u = if fc >= fd { c } else { d };
+        let (_, q) = self
+            .geometry
+            .model
+            .score(frame.curve_position(profile, u))?;
+        Some((u.rem_euclid(self.period), q))
+    }
+
     /// The single best sample of the first-touch function at `s` (a convex profile has one
     /// maximum).
     fn best_sample(&self, frame: &Frame, s: &[f64]) -> Option<(f64, f64, f64)> {
@@ -263,8 +321,24 @@ impl Mechanism {
         }
         let mut best: Option<Touch> = None;
         let mut last_err = None;
+        let spacing = self.period / self.samples.len().max(1) as f64;
         for &(_, u0, q0) in starts.as_slice() {
-            match self.newton(theta, frame, u0, q0) {
+            // a start from which Newton wanders (the profile turning sharply near it) is first
+            // moved to the sampled maximum's peak by golden-section search on the score
+            let refined = || {
+                let (u1, q1) = self.score_peak(frame, u0 - spacing, u0 + spacing)?;
+                self.newton(theta, frame, u1, q1).ok()
+            };
+            let attempt = match self.newton(theta, frame, u0, q0) {
+                Err(
+                    e @ CamError::NoConvergence {
+                        reason: StopReason::IterationLimit | StopReason::SingularJacobian,
+                        ..
+                    },
+                ) if !knife => refined().ok_or(e),
+                other => other,
+            };
+            match attempt {
                 Ok(t) if self.is_first_touch(frame, &t) => {
                     if best.is_none_or(|b| self.oriented(t.q) > self.oriented(b.q)) {
                         best = Some(t);
@@ -285,6 +359,7 @@ impl Mechanism {
                 reason: StopReason::NoCandidate,
             })
         })?;
+        self.check_cusps(theta, frame, best.q)?;
         // the refined touch can only be later than (or equal to) a sampled one
         if self.oriented(best.q) < best_sample - self.touch_slack() {
             return Err(CamError::NoConvergence {

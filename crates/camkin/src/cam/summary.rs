@@ -8,7 +8,7 @@ use crate::field::{Field, ProfileField};
 use crate::geometry::{cross, Point2};
 
 /// What the analysis needs to know of a closed profile.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) struct ProfileSummary {
     /// largest distance of a profile point from the cam axis
     pub(crate) size: f64,
@@ -16,6 +16,10 @@ pub(crate) struct ProfileSummary {
     pub(crate) orientation: f64,
     /// the curvature has one sign all round
     pub(crate) convex: bool,
+    /// the mean length of the tangent `|r'|` over the samples
+    pub(crate) mean_speed: f64,
+    /// the parameters of the cusps of a folded profile (where the tangent reverses)
+    pub(crate) cusps: Vec<f64>,
 }
 
 impl ProfileSummary {
@@ -30,8 +34,19 @@ impl ProfileSummary {
             (0.0f64, 0.0, f64::INFINITY, f64::NEG_INFINITY, 0.0, 0usize);
         let mut gmin = (f64::INFINITY, 0.0, Point2::origin());
         let (mut first, mut prev): (Option<Point2>, Option<Point2>) = (None, None);
+        // a fold (a swallowtail between two cusps, as an envelope makes where the follower cannot
+        // follow the program): the tangent reverses between neighbouring samples while the
+        // curvature keeps its sign, so the curvature alone calls it convex
+        let mut prev_d1: Option<(f64, crate::geometry::Vec2)> = None;
+        let mut cusps = Vec::new();
         for u in bracket_params(breakpoints, period, 64, 1024) {
             let e = profile.eval(u);
+            if let Some((up, d)) = prev_d1 {
+                if d.dot(&e.d1) < 0.0 {
+                    cusps.push(cusp_between(profile, up, u));
+                }
+            }
+            prev_d1 = Some((u, e.d1));
             size = size.max(e.p.coords.norm());
             match prev {
                 Some(p) => area2 += cross(p.coords, e.p.coords),
@@ -68,15 +83,54 @@ impl ProfileSummary {
                 y: gmin.2.y,
             });
         }
-        let convex = if orientation > 0.0 {
-            kmin > 0.0
-        } else {
-            kmax < 0.0
-        };
+        if let Some((up, d)) = prev_d1 {
+            let e = profile.eval(period);
+            if d.dot(&e.d1) < 0.0 {
+                cusps.push(cusp_between(profile, up, period) % period);
+            }
+        }
+        let convex = cusps.is_empty()
+            && if orientation > 0.0 {
+                kmin > 0.0
+            } else {
+                kmax < 0.0
+            };
         Ok(Self {
             size,
             orientation,
             convex,
+            mean_speed: mean_g,
+            cusps,
         })
+    }
+}
+
+/// The cusp between `a` and `b` (where the tangent reverses): the minimum of `|r'|`, by
+/// golden-section search.
+fn cusp_between(profile: &dyn Curve, mut a: f64, mut b: f64) -> f64 {
+    let f = |u: f64| profile.eval(u).d1.norm();
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - g * (b - a);
+    let mut d = a + g * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..80 {
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = f(d);
+        }
+    }
+    if fc <= fd {
+        c
+    } else {
+        d
     }
 }

@@ -180,7 +180,9 @@ impl<'a> Sweep<'a> {
             // orientation check is enough (it rejects the cam's back side)
             Ok((t, e))
                 if (m.convex && m.faces_follower(&e, t.q))
-                    || (m.is_first_touch_at(&e, t.q) && (!knife_fold || continues(&t))) =>
+                    // evaluated at the converged point itself: near a cusp the tangent (and
+                    // with it the normal) turns over within the last Newton step
+                    || (!m.convex && m.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
             {
                 // on a convex profile nothing can overtake the first touch
                 if m.convex {
@@ -194,6 +196,7 @@ impl<'a> Sweep<'a> {
                     m.best_sampled_score(frame) > m.oriented(t.q) + m.touch_slack()
                 };
                 if !ahead {
+                    m.check_cusps(theta, frame, t.q)?;
                     return Ok((t, Found::WarmStart));
                 }
                 let g = m.global_touch(theta, frame)?;

@@ -141,3 +141,85 @@ fn motion_fast_path_equals_full_analysis() {
         }
     }
 }
+
+/// Regression (issue 12): a motion program too fast for its base circle folds the synthesised
+/// profile (a swallowtail between two cusps, while the curvature keeps one sign); the profile was
+/// taken as convex and the warm-started sweep followed the fold's backward branch over a dwell
+/// (s = 27.67 → 21.71 where it is 28) without a flag. Now the fold makes the profile non-convex,
+/// it is reported as a stretch the follower cannot follow, and every answer of a sweep equals
+/// the single query's and the independent support function's.
+#[test]
+fn warm_sweep_on_a_folded_motion_profile_agrees_with_single_queries() {
+    use camkin::cam::synthesis::synthesize;
+    use camkin::motion::{Law, Program, Segment};
+    for (base, sense) in [
+        (8.0, Sense::Ccw),
+        (8.0, Sense::Cw),
+        (6.0, Sense::Ccw),
+        (5.0, Sense::Cw),
+    ] {
+        let seg = |law, rise, deg: f64| Segment {
+            law,
+            rise,
+            extent: deg.to_radians(),
+        };
+        let program = Program::new(
+            0.0,
+            vec![
+                seg(Law::Cycloidal, 20.0, 120.0),
+                seg(Law::Dwell, 0.0, 60.0),
+                seg(Law::Polynomial345, -20.0, 120.0),
+                seg(Law::Dwell, 0.0, 60.0),
+            ],
+        )
+        .unwrap();
+        let f = Follower::TranslatingFlat {
+            direction: Vec2::x(),
+        };
+        let prof = Arc::new(synthesize(program, base, &f, sense).unwrap());
+        let m = mechanism(prof, Point2::origin(), sense, 1000.0, f);
+        let what = format!("base {base} {sense:?}");
+        assert!(!m.is_convex(), "{what}: a folded profile is not convex");
+        assert!(
+            !m.unfollowable_stretches().is_empty(),
+            "{what}: the fold is reported"
+        );
+        let thetas: Vec<f64> = (0..360).map(|k| (k as f64 + 0.5).to_radians()).collect();
+        let (mut answered, mut dwell) = (0, 0);
+        for (t, r) in thetas.iter().zip(m.analyze_all(&thetas)) {
+            let Ok(s) = r else { continue };
+            answered += 1;
+            let g = m
+                .analyze(*t)
+                .unwrap_or_else(|e| panic!("{what} at {t}: sweep answered, single query: {e}"));
+            assert!(
+                (s.position - g.position).abs() < 1e-9,
+                "{what} at {:.1}°: sweep {} vs single {}",
+                t.to_degrees(),
+                s.position,
+                g.position
+            );
+            let (q, _) = m.support_position(*t).unwrap();
+            assert!(
+                (s.position - q).abs() < 1e-9,
+                "{what} at {:.1}°: sweep {} vs support {q}",
+                t.to_degrees(),
+                s.position
+            );
+            let deg = t.to_degrees();
+            if (125.0..175.0).contains(&deg) {
+                assert!(
+                    (s.position - (base + 20.0)).abs() < 1e-9,
+                    "{what}: the dwell at {deg}° reads {}",
+                    s.position
+                );
+                dwell += 1;
+            }
+        }
+        assert!(answered > 200, "{what}: {answered} answers");
+        assert!(
+            dwell >= 40,
+            "{what}: {dwell} of the dwell's 50 angles answered"
+        );
+    }
+}
