@@ -31,6 +31,13 @@ pub type Frame = nalgebra::Isometry2<f64>;
 /// A direction or normal that must have unit length.
 pub type UnitVec2 = nalgebra::Unit<Vec2>;
 
+/// An angle in degrees as radians, reduced modulo 360° *in degrees first* (exactly: `rem_euclid`
+/// of an `f64` by 360 has no rounding error), so that `1e20` and `280` (which `1e20` is, modulo
+/// 360) give the same angle. Converting first would multiply the rounding of a huge angle.
+pub fn deg_to_rad(deg: f64) -> f64 {
+    deg.rem_euclid(360.0).to_radians()
+}
+
 /// The angle `a` shifted by a multiple of 2π into `(centre − π, centre + π]`.
 pub fn wrap_angle_near(a: f64, centre: f64) -> f64 {
     let two_pi = std::f64::consts::TAU;
@@ -67,6 +74,14 @@ mod tests {
         assert_eq!(rot90(Vec2::new(1.0, 0.0)), Vec2::new(0.0, 1.0));
         assert_eq!(cross(Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.0)), 1.0);
         assert_eq!(cross(Vec2::new(0.0, 1.0), Vec2::new(1.0, 0.0)), -1.0);
+    }
+
+    #[test]
+    fn degrees_are_reduced_before_conversion() {
+        // 1e20 = 277 777 777 777 777 777 × 360 + 280 exactly
+        assert_eq!(deg_to_rad(1e20), deg_to_rad(280.0));
+        assert_eq!(deg_to_rad(-90.0), deg_to_rad(270.0));
+        assert_eq!(deg_to_rad(720.5), deg_to_rad(0.5));
     }
 
     #[test]

@@ -87,7 +87,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         (Some(list), _) => list.0.clone(),
         (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
     };
-    let thetas: Vec<f64> = angles.iter().map(|a| a.to_radians()).collect();
+    let thetas: Vec<f64> = angles
+        .iter()
+        .map(|&a| camkin::geometry::deg_to_rad(a))
+        .collect();
     let results = analyze_with_progress(&mech, &thetas);
     let failed = results.iter().filter(|r| r.is_err()).count();
     let rows = analysis_rows(&mech, &angles, &results, args.at.is_none());

@@ -215,7 +215,10 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         .map_err(Failure::Input)?;
     let n = (360.0 / step).round() as usize;
     let grid: Vec<f64> = (0..n).map(|k| k as f64 * step).collect();
-    let thetas: Vec<f64> = grid.iter().map(|a| a.to_radians()).collect();
+    let thetas: Vec<f64> = grid
+        .iter()
+        .map(|&a| camkin::geometry::deg_to_rad(a))
+        .collect();
     let states: Vec<Option<FollowerState>> = mech
         .analyze_all(&thetas)
         .into_iter()
@@ -234,7 +237,10 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let mut scenes: Vec<(f64, Vec<Shape>)> = Vec::new();
     for &a in angles.iter().chain(&frame_angles) {
         let st = mech.analyze_deg(a).ok();
-        scenes.push((a, scene::scene(&mech, a.to_radians(), st.as_ref())));
+        scenes.push((
+            a,
+            scene::scene(&mech, camkin::geometry::deg_to_rad(a), st.as_ref()),
+        ));
     }
     let (lo, hi) = scene::bounds(scenes.iter().flat_map(|(_, s)| s.iter()));
     let pad = 0.05 * (hi - lo).norm();
@@ -248,11 +254,23 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         (800.0 * aspect + 40.0).round().clamp(200.0, 2400.0) as u32,
     );
     chart::register_font();
+    // one drawing per distinct angle modulo 360°, named by it (`drawing_0.5.svg`: the name is
+    // built whole, since a `.5` would be taken for an extension; 1e300 is named by its 280-ish
+    // residue, not by 301 digits)
+    let mut names = std::collections::BTreeSet::new();
     for (a, shapes) in scenes.iter().take(angles.len()) {
-        let title = format!("cam angle {a}°");
-        let base = args.out.join(format!("drawing_{a}"));
-        let svg = base.with_extension("svg");
-        let png = base.with_extension("png");
+        let reduced = a.rem_euclid(360.0);
+        let name = format!("drawing_{reduced}");
+        if !names.insert(name.clone()) {
+            continue; // the same cam angle as an earlier one: the same drawing
+        }
+        let title = if reduced == *a {
+            format!("cam angle {a}°")
+        } else {
+            format!("cam angle {}° ≡ {reduced}°", camkin::human::human(*a))
+        };
+        let svg = args.out.join(format!("{name}.svg"));
+        let png = args.out.join(format!("{name}.png"));
         chart::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
             .map_err(Failure::output)?;
         chart::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))

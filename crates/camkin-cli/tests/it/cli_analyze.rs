@@ -217,3 +217,38 @@ fn json_format_has_the_csv_columns_as_keys() {
     assert!(rows[0]["jerk"].is_null()); // θ = 0 sits on a spline node
     assert!(rows[1]["jerk"].is_number());
 }
+
+/// Regression (issue 12): angles are reduced modulo 360° in degrees before conversion, so an
+/// angle and any angle congruent to it give the same row (1e20 ≡ 280, −90 ≡ 270).
+#[test]
+fn congruent_angles_give_the_same_row() {
+    let a = camkin()
+        .args(["analyze", "--at", "280,1e20,270,-90,0.5,720.5"])
+        .assert()
+        .success();
+    let out = String::from_utf8(a.get_output().stdout.clone()).unwrap();
+    let rows: Vec<Vec<&str>> = out
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    // every number the same to round-off (a warm start and a global search may differ in the
+    // last bits); only `found` (global or warm) may differ
+    let numbers = |r: &[&str]| -> Vec<f64> {
+        r[1..r.len() - 2]
+            .iter()
+            .map(|v| v.parse().unwrap())
+            .collect()
+    };
+    for (i, j) in [(0, 1), (2, 3), (4, 5)] {
+        let (a, b) = (numbers(&rows[i]), numbers(&rows[j]));
+        for (k, (x, y)) in a.iter().zip(&b).enumerate() {
+            assert!(
+                (x - y).abs() <= 1e-12 * x.abs().max(y.abs()).max(1.0),
+                "{} vs {}: column {k}: {x} vs {y}",
+                rows[i][0],
+                rows[j][0]
+            );
+        }
+    }
+}

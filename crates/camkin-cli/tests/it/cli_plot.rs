@@ -110,3 +110,46 @@ fn plot_bad_input_exits_2() {
             .stderr(predicate::str::contains(needle));
     }
 }
+
+/// Regression (issue 12): `plot --at 0,0.5` wrote one drawing (`drawing_0.svg` held the 0.5° one:
+/// `.5` was taken for an extension), and `--at 1e300` would name a file with 301 digits.
+#[test]
+fn drawings_are_named_by_their_whole_angle_modulo_360() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("p");
+    camkin()
+        .args([
+            "plot",
+            "--frames",
+            "2",
+            "--at",
+            "0,0.5,1e300,280,1e20",
+            "--out",
+        ])
+        .arg(&out)
+        .assert()
+        .success();
+    let mut names: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with("drawing_"))
+        .collect();
+    names.sort();
+    // 1e300 ≡ 0 and 1e20 ≡ 280 (mod 360): the same drawings as 0° and 280°
+    assert_eq!(
+        names,
+        [
+            "drawing_0.5.png",
+            "drawing_0.5.svg",
+            "drawing_0.png",
+            "drawing_0.svg",
+            "drawing_280.png",
+            "drawing_280.svg"
+        ]
+    );
+    let half = std::fs::read_to_string(out.join("drawing_0.5.svg")).unwrap();
+    assert!(
+        half.contains("cam angle 0.5°"),
+        "the 0.5° drawing is the 0.5° one"
+    );
+}

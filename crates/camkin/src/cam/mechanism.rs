@@ -220,7 +220,7 @@ impl Mechanism {
 
     /// As [`Mechanism::analyze`] with the angle in degrees.
     pub fn analyze_deg(&self, theta_deg: f64) -> Result<FollowerState, CamError> {
-        self.analyze(theta_deg.to_radians())
+        self.analyze(crate::geometry::deg_to_rad(theta_deg))
     }
 
     /// The follower's position only, at cam angle `theta` (rad), by first touch.
