@@ -252,3 +252,23 @@ fn congruent_angles_give_the_same_row() {
         }
     }
 }
+
+/// Issue 12, class 7: valid files are accepted — TOML dotted keys at the top level, and a
+/// points-file header whose words hold `inf` or `nan` (`x_info,y_info`).
+#[test]
+fn dotted_keys_and_wordy_headers_are_valid() {
+    let dir = tempfile::tempdir().unwrap();
+    let m = dir.path().join("dotted.toml");
+    std::fs::write(&m, "cam.speed_rpm = 1000.0\ncam.profile.kind = \"points-file\"\ncam.profile.path = \"p.csv\"\nfollower.kind = \"translating-flat\"\n").unwrap();
+    std::fs::write(
+        dir.path().join("p.csv"),
+        "x_info,y_info\n4,0\n0,4\n-4,0\n0,-4\n",
+    )
+    .unwrap();
+    camkin()
+        .arg("analyze")
+        .arg(&m)
+        .args(["--at", "10"])
+        .assert()
+        .success();
+}
