@@ -53,7 +53,34 @@ enum Command {
     Synth(synth::SynthArgs),
 }
 
+/// True when a failure is only the reader of our output going away (`camkin … | head -1`).
+fn broken_pipe(e: &anyhow::Error) -> bool {
+    // the csv writer wraps its io errors without exposing them as a source: the message then
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+            || c.downcast_ref::<csv::Error>().is_some_and(|ce| {
+                matches!(ce.kind(), csv::ErrorKind::Io(io) if io.kind() == std::io::ErrorKind::BrokenPipe)
+            })
+    })
+}
+
 fn main() -> ExitCode {
+    // `println!` panics when the reader of stdout has gone away: end quietly then, as a closed
+    // pipe is the reader's choice, not a failure (exit 0); any other panic keeps the default hook
+    let default_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let payload = info.payload();
+        let msg = payload
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| payload.downcast_ref::<&str>().copied())
+            .unwrap_or("");
+        if msg.contains("Broken pipe") {
+            std::process::exit(0);
+        }
+        default_hook(info);
+    }));
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Analyze(args) => analyze::run(&args),
@@ -66,6 +93,7 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Input(e) | Failure::Internal(e)) if broken_pipe(&e) => ExitCode::SUCCESS,
         Err(Failure::Input(e)) => {
             eprintln!("error: {e:#}");
             ExitCode::from(2)

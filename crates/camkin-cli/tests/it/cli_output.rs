@@ -103,3 +103,33 @@ fn standard_output_that_cannot_be_written_is_exit_1() {
         .code(1)
         .stderr(predicate::str::contains("internal error"));
 }
+
+/// Issue 12, class 5: a reader that goes away (`camkin analyze | head -1`) ends the command
+/// quietly with exit 0: no panic, no "internal error".
+#[test]
+fn a_closed_pipe_ends_quietly() {
+    use std::io::{BufRead, BufReader};
+    use std::process::{Command, Stdio};
+    for args in [
+        vec!["analyze", "--angles", "0:360:0.005"],
+        vec!["bench", "--repeats", "1"],
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_camkin"))
+            .args(&args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut out = BufReader::new(child.stdout.take().unwrap());
+        let mut first = String::new();
+        out.read_line(&mut first).unwrap();
+        drop(out);
+        let res = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&res.stderr);
+        assert_eq!(res.status.code(), Some(0), "{args:?}: {err}");
+        assert!(
+            !err.contains("panicked") && !err.contains("internal error"),
+            "{args:?}: {err}"
+        );
+    }
+}
