@@ -533,3 +533,21 @@ fn extreme_speeds_are_refused_by_their_own_field() {
         }
     }
 }
+
+/// Issue 12, class 4: collinear spline points (a profile with no area) are refused up front, not
+/// half the rows failing.
+#[test]
+fn a_profile_with_no_area_is_refused_up_front() {
+    for pts in [
+        "[[0, 0], [1, 0], [2, 0], [3, 0]]",
+        "[[0, 0], [1, 1], [2, 2], [3, 3], [1.5, 1.5]]",
+        "[[1e-9, 0], [2e-9, 0], [3e-9, 0]]",
+    ] {
+        bad(
+            pts,
+            &format!("{SPLINE_HEAD}points = {pts}\n{FLAT}"),
+            &[],
+            &["encloses no area", "collinear"],
+        );
+    }
+}

@@ -79,6 +79,12 @@ pub enum CamError {
         /// why, with the dimensions involved
         reason: String,
     },
+    /// The profile encloses no area (collinear points: it runs out and back along a line).
+    #[error("the cam profile encloses no area (signed area {}): are its points collinear?", crate::human::human(*.area))]
+    NoArea {
+        /// the signed area enclosed
+        area: f64,
+    },
     /// The profile has a cusp: its tangent vanishes, so its normal and curvature are undefined.
     #[error("the cam profile has a cusp (zero-length tangent) at u = {}, ({}, {}) in the cam frame", crate::human::human(*.param), crate::human::human(*.x), crate::human::human(*.y))]
     Cusp {

@@ -89,6 +89,11 @@ impl ProfileSummary {
                 cusps.push(cusp_between(profile, up, period) % period);
             }
         }
+        // (after the cusp check, which names the point) a profile that encloses no area (collinear points: it runs out and back along a line)
+        // is no cam; refused up front rather than failing at every angle
+        if !(area2.abs() > 1e-9 * size * size) {
+            return Err(CamError::NoArea { area: area2 / 2.0 });
+        }
         let convex = cusps.is_empty()
             && if orientation > 0.0 {
                 kmin > 0.0

@@ -186,7 +186,7 @@ impl From<CamError> for SpecError {
                 value: crate::human::human(value),
                 reason,
             },
-            CamError::Cusp { .. } => SpecError::Rule {
+            CamError::Cusp { .. } | CamError::NoArea { .. } => SpecError::Rule {
                 field: Field::Profile(ProfileField::Table),
                 reason: e.to_string(),
             },
