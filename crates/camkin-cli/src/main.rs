@@ -81,6 +81,12 @@ fn main() -> ExitCode {
         }
         default_hook(info);
     }));
+    // an interrupted run (Ctrl-C, SIGTERM) removes the temporary file of a write in progress
+    // (the output it would have replaced stays as it was) and exits 130, as shells expect
+    let _ = ctrlc::set_handler(|| {
+        camkin_cli::output::remove_temporaries();
+        std::process::exit(130);
+    });
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Analyze(args) => analyze::run(&args),

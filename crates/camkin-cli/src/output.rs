@@ -5,11 +5,79 @@ use anyhow::{Context, Result};
 use std::io::Write;
 use std::path::Path;
 
+/// The temporary files being written now: removed by [`remove_temporaries`] when the process is
+/// interrupted (Ctrl-C, SIGTERM), which would otherwise leave them behind.
+static TEMPORARIES: std::sync::Mutex<Vec<std::path::PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// Removes the temporary files of writes in progress (called from the interrupt handler).
+pub fn remove_temporaries() {
+    if let Ok(list) = TEMPORARIES.lock() {
+        for p in list.iter() {
+            let _ = std::fs::remove_file(p);
+        }
+    }
+}
+
+/// Registers a temporary file for the interrupt handler while it exists.
+struct Registered(std::path::PathBuf);
+
+impl Registered {
+    fn new(p: &Path) -> Self {
+        if let Ok(mut list) = TEMPORARIES.lock() {
+            list.push(p.to_path_buf());
+        }
+        Self(p.to_path_buf())
+    }
+}
+
+impl Drop for Registered {
+    fn drop(&mut self) {
+        if let Ok(mut list) = TEMPORARIES.lock() {
+            list.retain(|q| q != &self.0);
+        }
+    }
+}
+
 /// Writes what `fill` produces to `path` atomically, or to stdout when `path` is `None`.
+///
+/// A regular file (or none yet) gets a temporary file beside it, renamed over it at the end, so
+/// that a failure leaves the old file intact. A path that is not a regular file (a device such
+/// as `/dev/null`, a FIFO) is written through, never renamed over; a symbolic link is followed,
+/// so the file it points to is replaced, not the link; a directory is refused.
 pub fn write_atomic(
     path: Option<&Path>,
     fill: impl FnOnce(&mut dyn Write) -> Result<()>,
 ) -> Result<()> {
+    let resolved;
+    let path = match path {
+        Some(p) => match std::fs::metadata(p) {
+            Ok(m) if m.is_dir() => {
+                return Err(std::io::Error::new(
+                    std::io::ErrorKind::IsADirectory,
+                    "is a directory",
+                ))
+                .with_context(|| format!("cannot write {}", p.display()));
+            }
+            Ok(m) if !m.is_file() => {
+                let f = std::fs::OpenOptions::new()
+                    .write(true)
+                    .open(p)
+                    .with_context(|| format!("cannot write {}", p.display()))?;
+                let mut w = std::io::BufWriter::new(f);
+                fill(&mut w)?;
+                w.flush()
+                    .with_context(|| format!("writing {}", p.display()))?;
+                return Ok(());
+            }
+            Ok(_) if std::fs::symlink_metadata(p).is_ok_and(|l| l.file_type().is_symlink()) => {
+                resolved = std::fs::canonicalize(p)
+                    .with_context(|| format!("cannot resolve {}", p.display()))?;
+                Some(resolved.as_path())
+            }
+            _ => Some(p),
+        },
+        None => None,
+    };
     match path {
         None => {
             let stdout = std::io::stdout();
@@ -25,6 +93,7 @@ pub fn write_atomic(
             };
             let tmp = tempfile::NamedTempFile::new_in(dir)
                 .with_context(|| format!("cannot create a file in {}", dir.display()))?;
+            let _registered = Registered::new(tmp.path());
             let mut w = std::io::BufWriter::new(tmp);
             fill(&mut w)?;
             let tmp = w
@@ -173,5 +242,51 @@ mod tests {
         assert!(j[1]["position"].is_null());
         assert!(j[1]["error"].as_str().unwrap().contains("closed"));
         assert_eq!(j[0]["found"], "global");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_device_is_written_through_not_replaced() {
+        use std::os::unix::fs::FileTypeExt;
+        let null = Path::new("/dev/null");
+        write_atomic(Some(null), |w| Ok(w.write_all(b"x")?)).unwrap();
+        assert!(std::fs::metadata(null)
+            .unwrap()
+            .file_type()
+            .is_char_device());
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_is_written_through_and_a_link_is_followed() {
+        use std::os::unix::fs::FileTypeExt;
+        let dir = tempfile::tempdir().unwrap();
+        // a FIFO, when the system has mkfifo: read on another thread while we write
+        let fifo = dir.path().join("fifo");
+        if std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .is_ok_and(|s| s.success())
+        {
+            let f2 = fifo.clone();
+            let reader = std::thread::spawn(move || std::fs::read_to_string(f2).unwrap());
+            write_atomic(Some(&fifo), |w| Ok(w.write_all(b"through")?)).unwrap();
+            assert_eq!(reader.join().unwrap(), "through");
+            assert!(std::fs::metadata(&fifo).unwrap().file_type().is_fifo());
+        }
+        // a symbolic link: the file it points to is replaced, the link stays a link
+        let target = dir.path().join("target.csv");
+        std::fs::write(&target, "old").unwrap();
+        let link = dir.path().join("link.csv");
+        std::os::unix::fs::symlink(&target, &link).unwrap();
+        write_atomic(Some(&link), |w| Ok(w.write_all(b"new")?)).unwrap();
+        assert!(std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        assert_eq!(std::fs::read_to_string(&target).unwrap(), "new");
+        // a directory is refused, untouched
+        let e = write_atomic(Some(dir.path()), |w| Ok(w.write_all(b"x")?)).unwrap_err();
+        assert!(format!("{e:#}").contains("directory"), "{e:#}");
     }
 }

@@ -133,3 +133,46 @@ fn a_closed_pipe_ends_quietly() {
         );
     }
 }
+
+/// Issue 12, class 5: a run terminated (SIGTERM, as Ctrl-C's SIGINT) while writing removes its
+/// temporary file, leaves no output file and exits 130.
+#[cfg(unix)]
+#[test]
+fn a_terminated_run_leaves_no_temporary_file() {
+    use std::process::{Command, Stdio};
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.csv");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_camkin"))
+        .args(["analyze", "--angles", "0:360:0.0002", "-o"])
+        .arg(&out)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let temporary = || {
+        std::fs::read_dir(dir.path())
+            .unwrap()
+            .any(|e| e.unwrap().file_name().to_string_lossy().starts_with(".tmp"))
+    };
+    // wait (at most 60 s) until the writing has begun
+    let start = std::time::Instant::now();
+    while !temporary() && start.elapsed().as_secs() < 60 {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    if child.try_wait().unwrap().is_some() {
+        return; // finished before we could interrupt it: nothing to check on this machine
+    }
+    assert!(temporary(), "the write never began");
+    let killed = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130));
+    assert!(!temporary(), "a temporary file was left behind");
+    assert!(!out.exists(), "a partial output file was written");
+}
