@@ -148,6 +148,41 @@ pub fn write_table<T: serde::Serialize>(
     Ok(())
 }
 
+/// Writes rows chunk by chunk as `next_chunk` produces them (until it returns `None`), in bounded
+/// memory; the same bytes as [`write_table`] on all the rows at once.
+pub fn write_rows<T: serde::Serialize>(
+    w: &mut dyn Write,
+    format: TableFormat,
+    mut next_chunk: impl FnMut() -> Option<Vec<T>>,
+) -> Result<()> {
+    match format {
+        TableFormat::Csv => {
+            let mut c = csv::Writer::from_writer(w);
+            while let Some(rows) = next_chunk() {
+                for r in &rows {
+                    c.serialize(r)?;
+                }
+            }
+            c.flush()?;
+        }
+        TableFormat::Json => {
+            write!(w, "[")?;
+            let mut first = true;
+            while let Some(rows) = next_chunk() {
+                for r in &rows {
+                    if !first {
+                        write!(w, ",")?;
+                    }
+                    first = false;
+                    serde_json::to_writer(&mut *w, r)?;
+                }
+            }
+            writeln!(w, "]")?;
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -288,5 +323,21 @@ mod tests {
         // a directory is refused, untouched
         let e = write_atomic(Some(dir.path()), |w| Ok(w.write_all(b"x")?)).unwrap_err();
         assert!(format!("{e:#}").contains("directory"), "{e:#}");
+    }
+
+    #[test]
+    fn rows_written_in_chunks_are_the_rows_written_at_once() {
+        for format in [TableFormat::Csv, TableFormat::Json] {
+            let all = rows();
+            let mut whole = Vec::new();
+            write_table(&mut whole, &all, format).unwrap();
+            let mut chunks = all.chunks(1).map(|c| c.to_vec());
+            let mut streamed = Vec::new();
+            write_rows(&mut streamed, format, || chunks.next()).unwrap();
+            assert_eq!(
+                String::from_utf8(whole).unwrap(),
+                String::from_utf8(streamed).unwrap()
+            );
+        }
     }
 }

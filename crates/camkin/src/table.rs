@@ -149,7 +149,17 @@ pub fn contact_jumps(
     results: &[Result<FollowerState, CamError>],
     contiguous: bool,
 ) -> Vec<bool> {
-    let stretches = mech.unfollowable_stretches();
+    contact_jumps_with(mech, &mech.unfollowable_stretches(), results, contiguous)
+}
+
+/// [`contact_jumps`] with the mechanism's [`Mechanism::unfollowable_stretches`] computed once by
+/// the caller (a long run in chunks).
+pub fn contact_jumps_with(
+    mech: &Mechanism,
+    stretches: &[(f64, f64)],
+    results: &[Result<FollowerState, CamError>],
+    contiguous: bool,
+) -> Vec<bool> {
     let period = match mech.cam().profile().domain() {
         Domain::Periodic { period } => period,
         _ => 1.0,

@@ -1,11 +1,11 @@
 //! `camkin analyze`: the one-instant analysis at a list or range of cam angles, as CSV.
 
 use crate::args::{AngleList, AngleRange};
-use crate::output::{write_atomic, write_table, TableFormat};
+use crate::output::{write_atomic, write_rows, TableFormat};
 use crate::{load_mechanism, Failure};
 use anyhow::Result;
 use camkin::cam::{FollowerState, Mechanism};
-use camkin::table::{analysis_rows, FoundBy};
+use camkin::table::{contact_jumps_with, AnalysisRow};
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -29,30 +29,20 @@ pub struct Args {
     /// Output file (written atomically); standard output without it.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// Allow output over 1 GiB (refused otherwise, with the estimate).
+    #[arg(long)]
+    pub large: bool,
 }
 
-/// A warm-started sweep, with a progress bar on a terminal when it is long.
-fn analyze_with_progress(
-    mech: &camkin::cam::Mechanism,
-    thetas: &[f64],
-) -> Vec<Result<FollowerState, camkin::cam::CamError>> {
-    const CHUNK: usize = 10_000;
-    if thetas.len() <= 5 * CHUNK {
-        return mech.analyze_all(thetas);
-    }
-    let pb = indicatif::ProgressBar::new(thetas.len() as u64);
-    let mut sweep = mech.sweep();
-    let mut out = Vec::with_capacity(thetas.len());
-    for chunk in thetas.chunks(CHUNK) {
-        out.extend(chunk.iter().map(|&t| sweep.step(t)));
-        pb.inc(chunk.len() as u64);
-    }
-    pb.finish_and_clear();
-    out
-}
-
-/// Warnings on stderr: profile stretches the follower cannot follow, and where the contact jumps.
-fn report_degenerate(mech: &Mechanism, stretches: &[(f64, f64)], angles: &[f64], jumps: &[bool]) {
+/// Warnings on stderr: profile stretches the follower cannot follow, and where the contact jumps
+/// (`jump_at`: the first rows that jumped, of `total`).
+fn report_degenerate(
+    mech: &Mechanism,
+    stretches: &[(f64, f64)],
+    angles: &[f64],
+    jump_at: &[usize],
+    total: usize,
+) {
     let what = match mech.roller_radius() {
         Some(roller_radius) => format!(
             "concave more sharply than the roller (radius of curvature below {roller_radius}), or folds over itself"
@@ -67,19 +57,32 @@ fn report_degenerate(mech: &Mechanism, stretches: &[(f64, f64)], angles: &[f64],
             pa.x, pa.y, pb.x, pb.y
         );
     }
-    let at: Vec<String> = jumps
+    let at: Vec<String> = jump_at
         .iter()
-        .enumerate()
-        .filter(|(_, j)| **j)
-        .map(|(k, _)| match k {
-            0 => format!("{}°", angles[0]),
-            _ => format!("{}°–{}°", angles[k - 1], angles[k]),
+        .map(|&k| {
+            let h = camkin::human::human;
+            match k {
+                0 => format!("{}°", h(angles[0])),
+                _ => format!("{}°–{}°", h(angles[k - 1]), h(angles[k])),
+            }
         })
         .collect();
     if !at.is_empty() {
-        eprintln!("camkin: warning: the contact jumps between cam angles {} (rows marked `jump` in the found column)", at.join(", "));
+        let more = if total > at.len() {
+            format!(" and {} more", total - at.len())
+        } else {
+            String::new()
+        };
+        eprintln!("camkin: warning: the contact jumps between cam angles {}{more} (rows marked `jump` in the found column)", at.join(", "));
     }
 }
+
+/// Rows computed and written per chunk: the memory a run holds whatever its length.
+const CHUNK: usize = 65_536;
+/// Bytes of output per row, about (CSV; JSON is about twice): for the size estimate.
+const BYTES_PER_ROW: f64 = 380.0;
+/// Output larger than this needs `--large`.
+const LARGE_BYTES: f64 = 1024.0 * 1024.0 * 1024.0;
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let mech = load_mechanism(args.mechanism.as_ref())?;
@@ -87,20 +90,70 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         (Some(list), _) => list.0.clone(),
         (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
     };
-    let thetas: Vec<f64> = angles
-        .iter()
-        .map(|&a| camkin::geometry::deg_to_rad(a))
-        .collect();
-    let results = analyze_with_progress(&mech, &thetas);
-    let failed = results.iter().filter(|r| r.is_err()).count();
-    let rows = analysis_rows(&mech, &angles, &results, args.at.is_none());
-    let jumps: Vec<bool> = rows
-        .iter()
-        .map(|r| r.found == Some(FoundBy::Jump))
-        .collect();
-    report_degenerate(&mech, &mech.unfollowable_stretches(), &angles, &jumps);
+    let per_row = match args.format {
+        TableFormat::Csv => BYTES_PER_ROW,
+        TableFormat::Json => 2.0 * BYTES_PER_ROW,
+    };
+    let estimate = angles.len() as f64 * per_row;
+    if estimate > LARGE_BYTES && !args.large {
+        return Err(Failure::Input(anyhow::anyhow!(
+            "{} angles would write about {:.1} GB ({:.0} s at about 1 µs per angle); pass --large to write it (memory stays bounded: rows are written {CHUNK} at a time)",
+            angles.len(),
+            estimate / 1e9,
+            angles.len() as f64 * 1e-6
+        )));
+    }
+    let contiguous = args.at.is_none();
+    let stretches = mech.unfollowable_stretches();
+    let mut sweep = mech.sweep();
+    let (mut failed, mut jump_at): (usize, Vec<usize>) = (0, Vec::new());
+    let mut jumps_total = 0usize;
+    let pb = if angles.len() > 5 * CHUNK {
+        indicatif::ProgressBar::new(angles.len() as u64)
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+    let mut prev: Option<std::result::Result<FollowerState, camkin::cam::CamError>> = None;
+    let mut start = 0usize;
+    let mut next_chunk = || {
+        if start >= angles.len() {
+            return None;
+        }
+        let chunk = &angles[start..(start + CHUNK).min(angles.len())];
+        // the previous chunk's last result leads, so that a jump across the seam is seen
+        let mut results: Vec<_> = prev.take().into_iter().collect();
+        let lead = results.len();
+        results.extend(
+            chunk
+                .iter()
+                .map(|&a| sweep.step(camkin::geometry::deg_to_rad(a))),
+        );
+        let jumps = contact_jumps_with(&mech, &stretches, &results, contiguous);
+        let rows: Vec<AnalysisRow> = chunk
+            .iter()
+            .zip(&results[lead..])
+            .zip(&jumps[lead..])
+            .enumerate()
+            .map(|(k, ((&a, r), &j))| {
+                if r.is_err() {
+                    failed += 1;
+                }
+                if j {
+                    jumps_total += 1;
+                    if jump_at.len() < 50 {
+                        jump_at.push(start + k);
+                    }
+                }
+                AnalysisRow::new(a, r, j)
+            })
+            .collect();
+        prev = results.pop();
+        start += chunk.len();
+        pb.inc(chunk.len() as u64);
+        Some(rows)
+    };
     write_atomic(args.output.as_deref(), |w| {
-        write_table(w, &rows, args.format)
+        write_rows(w, args.format, &mut next_chunk)
     })
     .map_err(|e| {
         if args.output.is_some() {
@@ -110,6 +163,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             Failure::Internal(e)
         }
     })?;
+    pb.finish_and_clear();
+    report_degenerate(&mech, &stretches, &angles, &jump_at, jumps_total);
     if failed > 0 {
         eprintln!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",

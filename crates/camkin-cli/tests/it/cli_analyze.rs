@@ -272,3 +272,53 @@ fn dotted_keys_and_wordy_headers_are_valid() {
         .assert()
         .success();
 }
+
+/// Issue 12, class 6: a long run is written in chunks (bounded memory) with the same rows as the
+/// library gives for all the angles at once, jumps across chunk seams included; output over
+/// 1 GiB is refused up front with the estimate unless `--large`.
+#[test]
+fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
+    let dir = tempfile::tempdir().unwrap();
+    let m = dir.path().join("peanut.toml");
+    std::fs::write(&m, "[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n").unwrap();
+    let out = dir.path().join("rows.csv");
+    // 0.005° over a revolution: 72 000 rows, two chunks
+    camkin()
+        .arg("analyze")
+        .arg(&m)
+        .args(["--angles", "0:360:0.005", "-o"])
+        .arg(&out)
+        .assert()
+        .success();
+    let mech = camkin_cli::mechfile::load(&m).unwrap();
+    let angles: Vec<f64> = (0..72_000).map(|k| k as f64 * 0.005).collect();
+    let thetas: Vec<f64> = angles
+        .iter()
+        .map(|&a| camkin::geometry::deg_to_rad(a))
+        .collect();
+    let results = mech.analyze_all(&thetas);
+    let rows = camkin::table::analysis_rows(&mech, &angles, &results, true);
+    let mut expected = Vec::new();
+    camkin_cli::output::write_table(&mut expected, &rows, camkin_cli::output::TableFormat::Csv)
+        .unwrap();
+    let got = std::fs::read(&out).unwrap();
+    assert!(
+        got == expected,
+        "streamed rows differ from the rows computed at once"
+    );
+    assert_eq!(
+        rows.iter()
+            .filter(|r| r.found == Some(camkin::table::FoundBy::Jump))
+            .count(),
+        2
+    );
+
+    camkin()
+        .args(["analyze", "--angles", "0:1e7:1"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "10000000 angles would write about 3.8 GB",
+        ))
+        .stderr(predicate::str::contains("--large"));
+}
