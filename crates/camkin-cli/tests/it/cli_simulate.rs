@@ -164,3 +164,20 @@ fn bad_dynamics_input_exits_2() {
         .assert()
         .code(2);
 }
+
+/// Issue 12, class 6: a simulation estimated at hours is refused up front with the estimate and
+/// the flag that allows it.
+#[test]
+fn an_hours_long_simulation_asks_first() {
+    let m =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-dynamics.toml");
+    camkin()
+        .arg("simulate")
+        .arg(&m)
+        .args(["--revolutions", "10000", "--substeps", "1000"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("3600000000 steps"))
+        .stderr(predicate::str::contains("would take about 72000 s"))
+        .stderr(predicate::str::contains("--large"));
+}
