@@ -145,6 +145,27 @@ fn bad_dynamics_input_exits_2() {
             base.replace("damping = 0.0", "damping = 0.0\nfriction = 1"),
             "unknown field `friction`",
         ),
+        // issue 12, class 2: magnitudes the dynamics cannot compute in are refused by field
+        (
+            base.replace("mass = 0.3", "mass = 1e300"),
+            "dynamics.mass = 1e300: is outside the range",
+        ),
+        (
+            base.replace("mass = 0.3", "mass = 1e-300"),
+            "dynamics.mass = 1e-300: is outside the range",
+        ),
+        (
+            base.replace("spring_stiffness = ", "spring_stiffness = 1e300 #"),
+            "dynamics.spring_stiffness = 1e300",
+        ),
+        (
+            base.replace("damping = 0.0", "damping = 1e9"),
+            "dynamics.damping = 1000000000: too stiff for the time step",
+        ),
+        (
+            base.replace("damping = 0.0", "damping = 0.0\ngravity = [0, -1e308]"),
+            "dynamics.gravity = [0, -1e308]",
+        ),
     ];
     for (i, (text, needle)) in cases.iter().enumerate() {
         let p = dir.path().join(format!("m{i}.toml"));

@@ -515,16 +515,63 @@ impl DynamicsSpec {
             .map(|g| point(f(D::Gravity), g))
             .transpose()?
             .map_or(Vec2::zeros(), |p| p.coords);
-        Ok(FollowerDynamics {
-            mass,
-            inertia,
-            spring_stiffness: non_negative(f(D::SpringStiffness), self.spring_stiffness)?,
-            spring_preload: non_negative(f(D::SpringPreload), self.spring_preload)?,
-            damping: self
-                .damping
+        // the range the dynamics is computed in (SI units): wide for any machine, narrow enough
+        // that forces, energies and the penalty of the constraint solve stay far from overflow
+        let within = |field: D, v: f64, lo: f64, hi: f64| {
+            if v == 0.0 && lo == 0.0 || (lo..=hi).contains(&v) {
+                Ok(v)
+            } else {
+                Err(SpecError::Invalid {
+                    field: f(field),
+                    value: crate::human::human(v),
+                    reason: format!(
+                        "is outside the range the dynamics is computed in ({} to {})",
+                        crate::human::human(lo),
+                        crate::human::human(hi)
+                    ),
+                })
+            }
+        };
+        if !oscillating {
+            within(D::Mass, mass, 1e-9, 1e9)?;
+        } else {
+            within(D::Inertia, inertia, 1e-12, 1e9)?;
+        }
+        let stiffness = within(
+            D::SpringStiffness,
+            non_negative(f(D::SpringStiffness), self.spring_stiffness)?,
+            0.0,
+            1e15,
+        )?;
+        let preload = within(
+            D::SpringPreload,
+            non_negative(f(D::SpringPreload), self.spring_preload)?,
+            0.0,
+            1e12,
+        )?;
+        let damping = within(
+            D::Damping,
+            self.damping
                 .map(|c| non_negative(f(D::Damping), c))
                 .transpose()?
                 .unwrap_or(0.0),
+            0.0,
+            1e12,
+        )?;
+        if gravity.norm() > 1e6 {
+            return Err(SpecError::Invalid {
+                field: f(D::Gravity),
+                value: vector([gravity.x, gravity.y]),
+                reason: "is outside the range the dynamics is computed in (at most 1e6 m/s²)"
+                    .into(),
+            });
+        }
+        Ok(FollowerDynamics {
+            mass,
+            inertia,
+            spring_stiffness: stiffness,
+            spring_preload: preload,
+            damping,
             restitution,
             gravity,
         })
