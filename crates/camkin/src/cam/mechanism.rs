@@ -123,21 +123,16 @@ impl Mechanism {
             .iter()
             .map(|&v| self.orientation * profile.curvature(v) < limit)
             .collect();
-        // a folded profile (a swallowtail between two cusps): the branch between the cusps runs
-        // backwards and the follower cannot follow it whatever its curvature says; the tangent
-        // reverses at each cusp, the shorter alternate branches are the reversed ones
-        let d1: Vec<_> = u.iter().map(|&v| profile.eval(v).d1).collect();
+        // a folded profile (a swallowtail between two cusps, found once by the summary): the
+        // branch between the cusps runs backwards and the follower cannot follow it whatever its
+        // curvature says; the tangent reverses at each cusp, the shorter alternate branches are
+        // the reversed ones
         let n = u.len();
-        let cusp: Vec<bool> = (0..n)
-            .map(|k| d1[(k + n - 1) % n].dot(&d1[k]) < 0.0)
-            .collect();
-        if cusp.iter().filter(|&&c| c).count() >= 2 {
-            let mut parity = false;
-            let mut reversed = vec![false; n];
-            for k in 0..n {
-                parity ^= cusp[k];
-                reversed[k] = parity;
-            }
+        if self.cusps.len() >= 2 {
+            let mut reversed: Vec<bool> = u
+                .iter()
+                .map(|&v| self.cusps.iter().filter(|&&c| c <= v).count() % 2 == 1)
+                .collect();
             if reversed.iter().filter(|&&r| r).count() * 2 > n {
                 reversed.iter_mut().for_each(|r| *r = !*r);
             }

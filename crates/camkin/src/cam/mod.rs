@@ -16,6 +16,7 @@
 mod derivatives;
 mod error;
 mod follower;
+mod golden;
 mod jet;
 mod kinematics;
 mod mechanism;

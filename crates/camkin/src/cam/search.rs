@@ -188,7 +188,9 @@ impl Mechanism {
             {
                 // a local minimum of |distance| at sample k: does the profile cross in between?
                 let sign = la.signum();
-                let (um, lm) = minimise(|u| sign * lateral(u), ua, ub);
+                // stopping once it crosses: that is all that is needed
+                let (um, lm) =
+                    super::golden::golden_min(|u| sign * lateral(u), ua, ub, 60, |v| v < 0.0);
                 if lm < 0.0 {
                     for (lo, hi) in [(ua, um), (um, ub)] {
                         let u0 = bisect_sign(&lateral, lo, hi);
@@ -226,7 +228,7 @@ impl Mechanism {
     }
 
     /// The peak of the first-touch function on `[a, b]` by golden-section search: `(u, q)`.
-    fn score_peak(&self, frame: &Frame, mut a: f64, mut b: f64) -> Option<(f64, f64)> {
+    fn score_peak(&self, frame: &Frame, a: f64, b: f64) -> Option<(f64, f64)> {
         let profile = self.cam.profile.as_ref();
         let score = |u: f64| {
             self.geometry
@@ -234,26 +236,7 @@ impl Mechanism {
                 .score(frame.curve_position(profile, u))
                 .map_or(f64::NEG_INFINITY, |s| s.0)
         };
-        let g = 0.5 * (5f64.sqrt() - 1.0);
-        let mut c = b - g * (b - a);
-        let mut d = a + g * (b - a);
-        let (mut fc, mut fd) = (score(c), score(d));
-        for _ in 0..60 {
-            if fc >= fd {
-                b = d;
-                d = c;
-                fd = fc;
-                c = b - g * (b - a);
-                fc = score(c);
-            } else {
-                a = c;
-                c = d;
-                fc = fd;
-                d = a + g * (b - a);
-                fd = score(d);
-            }
-        }
-        let u = if fc >= fd { c } else { d };
+        let (u, _) = super::golden::golden_min(|u| -score(u), a, b, 60, |_| false);
         let (_, q) = self
             .geometry
             .model
@@ -430,37 +413,6 @@ pub(crate) fn bracket_samples(
     per_curve: usize,
 ) -> Vec<f64> {
     bracket_params(breakpoints, period, per_piece, per_curve).collect()
-}
-
-/// The minimum of `f` on `[a, b]` by golden-section search, `(u, f(u))`.
-fn minimise(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let mut c = b - g * (b - a);
-    let mut d = a + g * (b - a);
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..60 {
-        if fc < 0.0 || fd < 0.0 {
-            break; // it crosses: that is all the caller needs
-        }
-        if fc <= fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - g * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + g * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc <= fd {
-        (c, fc)
-    } else {
-        (d, fd)
-    }
 }
 
 /// A point near the sign change of `f` in `[a, b]` (the ends have opposite signs), by 30

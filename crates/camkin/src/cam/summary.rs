@@ -110,32 +110,7 @@ impl ProfileSummary {
     }
 }
 
-/// The cusp between `a` and `b` (where the tangent reverses): the minimum of `|r'|`, by
-/// golden-section search.
-fn cusp_between(profile: &dyn Curve, mut a: f64, mut b: f64) -> f64 {
-    let f = |u: f64| profile.eval(u).d1.norm();
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let mut c = b - g * (b - a);
-    let mut d = a + g * (b - a);
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..80 {
-        if fc <= fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - g * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + g * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc <= fd {
-        c
-    } else {
-        d
-    }
+/// The cusp between `a` and `b` (where the tangent reverses): the minimum of `|r'|`.
+fn cusp_between(profile: &dyn Curve, a: f64, b: f64) -> f64 {
+    super::golden::golden_min(|u| profile.eval(u).d1.norm(), a, b, 80, |_| false).0
 }
