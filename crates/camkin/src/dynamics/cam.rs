@@ -105,6 +105,9 @@ pub struct Simulation {
     in_contact: bool,
     pairings: Vec<Option<Pairing>>,
     size: f64,
+    /// events found at the start (a tensile force there: lift-off at time 0), returned by the
+    /// first [`Simulation::advance`]
+    pending: Vec<Event>,
 }
 
 const CONTACT: usize = 3;
@@ -118,7 +121,9 @@ pub const REBOUND_TOLERANCE: f64 = 1e-3;
 
 impl Simulation {
     /// Builds the multibody model of `mech` with the follower's `params`, starting at cam angle
-    /// 0 in contact with the kinematic position and velocity.
+    /// 0 at the kinematic position and velocity, in contact unless the contact force there would
+    /// be tensile (then it starts in flight, and the first [`Simulation::advance`] reports a
+    /// lift-off at time 0).
     ///
     /// ```
     /// use camkin::cam::{Cam, Follower, Mechanism, Sense};
@@ -320,7 +325,7 @@ impl Simulation {
             gap: 0.0,
             iterations: 0,
         };
-        Ok(Self {
+        let mut sim = Self {
             sys,
             al,
             params,
@@ -337,7 +342,23 @@ impl Simulation {
             in_contact: true,
             pairings: vec![None, None, None, Some(pairing)],
             size: mech.size(),
-        })
+            pending: Vec::new(),
+        };
+        // The kinematic start is in contact; a tensile force there means the spring cannot hold
+        // the follower on the cam at this angle and speed: it leaves at once.
+        let (q0, qd0) = (sim.q.clone(), sim.qd.clone());
+        let mut p = sim.pairings.clone();
+        let (_, f, _) = sim.accel(0.0, &q0, &qd0, true, &mut p)?;
+        if f < 0.0 {
+            sim.in_contact = false;
+            sim.pending.push(Event {
+                kind: EventKind::LiftOff,
+                time: 0.0,
+                cam_angle: theta0,
+                impact_velocity: 0.0,
+            });
+        }
+        Ok(sim)
     }
 
     /// The multibody system (for inspection).
@@ -490,7 +511,7 @@ impl Simulation {
 
     /// Advances by `h` seconds, locating lift-off and impact events inside the step.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
-        let mut events = Vec::new();
+        let mut events = std::mem::take(&mut self.pending);
         let end = self.t + h;
         let mut guard = 0;
         while self.t < end - 1e-15 * end.abs().max(1.0) && guard < 64 {

@@ -213,3 +213,61 @@ fn lift_off_flight_impacts_and_re_engagement_follow_closed_forms() {
         );
     }
 }
+
+/// Regression (`simulate examples/eccentric-flat-dynamics.toml` started in contact carrying a
+/// tensile force of −2.65 N): above the jump speed, a start at the top of the stroke (φ = 0, where
+/// the analytic contact force is negative) is in flight from time 0: the first sample carries no
+/// force and the spring's acceleration `−(F0 + 2 k e)/m`, and the first step reports a lift-off at
+/// time 0, for both cam senses.
+#[test]
+fn a_start_with_a_tensile_contact_force_is_in_flight_from_time_zero() {
+    for sense in [Sense::Ccw, Sense::Cw] {
+        let beta: f64 = 0.3;
+        let sigma = sense.sign();
+        let w = 1.02 * w_crit();
+        let disc = Arc::new(
+            camkin::curve::Circle::new(Point2::new(E * beta.cos(), E * beta.sin()), R).unwrap(),
+        );
+        let m = mechanism(
+            disc,
+            Point2::origin(),
+            sense,
+            w * 60.0 / TAU,
+            Follower::TranslatingFlat {
+                direction: Vec2::x(),
+            },
+        );
+        let p = FollowerDynamics {
+            mass: M,
+            inertia: 0.0,
+            spring_stiffness: K,
+            spring_preload: F0,
+            damping: 0.0,
+            restitution: REST,
+            gravity: Vec2::zeros(),
+        };
+        // φ = σθ + β = 0 at the start: the top of the stroke
+        let theta0 = -sigma * beta;
+        let analytic_force = -M * E * w * w + F0 + 2.0 * K * E;
+        assert!(analytic_force < 0.0, "the case must start tensile");
+        let mut sim =
+            Simulation::starting_at(&m, p, AugmentedLagrangian::default(), theta0).unwrap();
+        let s0 = sim.sample().unwrap();
+        assert!(!s0.in_contact, "{sense:?}: starts in contact");
+        assert_eq!(s0.contact_force, 0.0);
+        assert_close(s0.position, R + E, 1e-12, R, "start position");
+        let spring_accel = -(F0 + 2.0 * K * E) / M;
+        assert_close(
+            s0.acceleration,
+            spring_accel,
+            1e-9,
+            spring_accel.abs(),
+            "free-flight acceleration",
+        );
+        let events = sim.advance(0.5f64.to_radians() / w).unwrap();
+        assert!(
+            matches!(events.first(), Some(e) if e.kind == EventKind::LiftOff && e.time == 0.0),
+            "{sense:?}: {events:?}"
+        );
+    }
+}
