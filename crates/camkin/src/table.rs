@@ -5,8 +5,8 @@
 //! Rows keep the library's units: angles in degrees where the column name says `_deg`, lengths in
 //! the mechanism's length unit, time in seconds. Numbers are not rounded.
 
+pub use crate::cam::{contact_jumps, contact_jumps_with};
 use crate::cam::{CamError, FollowerState, Found, Mechanism};
-use crate::curve::Domain;
 use crate::dynamics::{Event, EventKind, Sample};
 
 /// How a row's contact was found.
@@ -139,54 +139,6 @@ pub fn analysis_rows(
         .zip(jumps)
         .map(|((&a, r), j)| AnalysisRow::new(a, r, j))
         .collect()
-}
-
-/// Rows whose contact jumped since the previous row: flagged by the sweep, or (for contiguous
-/// angles) the contact parameter passed over a stretch the follower cannot follow, which it can
-/// only do by jumping.
-pub fn contact_jumps(
-    mech: &Mechanism,
-    results: &[Result<FollowerState, CamError>],
-    contiguous: bool,
-) -> Vec<bool> {
-    contact_jumps_with(mech, &mech.unfollowable_stretches(), results, contiguous)
-}
-
-/// [`contact_jumps`] with the mechanism's [`Mechanism::unfollowable_stretches`] computed once by
-/// the caller (a long run in chunks).
-pub fn contact_jumps_with(
-    mech: &Mechanism,
-    stretches: &[(f64, f64)],
-    results: &[Result<FollowerState, CamError>],
-    contiguous: bool,
-) -> Vec<bool> {
-    let period = match mech.cam().profile().domain() {
-        Domain::Periodic { period } => period,
-        _ => 1.0,
-    };
-    let mut out = vec![false; results.len()];
-    for k in 0..results.len() {
-        let Ok(s) = &results[k] else { continue };
-        if matches!(s.found, Found::Jump { .. }) {
-            out[k] = true;
-            continue;
-        }
-        let Some(Ok(p)) = k.checked_sub(1).map(|i| &results[i]) else {
-            continue;
-        };
-        if !contiguous || stretches.is_empty() {
-            continue;
-        }
-        // the arc from the previous contact to this one, in the direction the contact moves
-        let dir = if p.cam_param_rate >= 0.0 { 1.0 } else { -1.0 };
-        let arc = (dir * (s.cam_param - p.cam_param)).rem_euclid(period);
-        let inside = |u: f64| {
-            let d = (dir * (u - p.cam_param)).rem_euclid(period);
-            d > 0.0 && d < arc
-        };
-        out[k] = stretches.iter().any(|&(a, b)| inside(a) && inside(b));
-    }
-    out
 }
 
 /// One row of a simulation's time series (`camkin simulate`).

@@ -47,10 +47,20 @@ pub struct SimulateArgs {
 
 fn dyn_err(e: DynamicsError) -> Failure {
     match e {
-        DynamicsError::Invalid { .. } | DynamicsError::Kinematics { .. } => {
-            Failure::Input(anyhow!("{e}"))
-        }
+        DynamicsError::Invalid { .. }
+        | DynamicsError::Kinematics { .. }
+        | DynamicsError::ContactJumps { .. }
+        | DynamicsError::StepTooLong { .. } => Failure::Input(anyhow!("{e}")),
         _ => Failure::Internal(anyhow!("{e}")),
+    }
+}
+
+/// The follower's mass, or its inertia when it oscillates.
+fn m_eff(mech: &camkin::cam::Mechanism, params: &camkin::dynamics::FollowerDynamics) -> f64 {
+    if mech.follower().is_oscillating() {
+        params.inertia
+    } else {
+        params.mass
     }
 }
 
@@ -103,31 +113,22 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     .map_err(dyn_err)?;
     let w = mech.cam().speed();
     let h = step.to_radians() / w / args.substeps as f64;
-    // the damping and the spring must be resolved by the time step: c/m·h ≤ 3.5, k/m·h² ≤ 1e8 (measured: 3.3 runs, 4.2 diverges)
-    // (beyond, the constraint solve diverges); say how many substeps would do
-    let m_eff = if mech.follower().is_oscillating() {
-        params.inertia
-    } else {
-        params.mass
-    };
-    let damp = params.damping / m_eff * h;
-    let spring = params.spring_stiffness / m_eff * h * h;
-    if damp > 3.5 || spring > 1e8 {
-        let need = (damp / 3.5).max((spring / 1e8).sqrt()) * args.substeps as f64;
-        let (field, value) = if damp > 3.5 {
-            ("dynamics.damping", params.damping)
-        } else {
-            ("dynamics.spring_stiffness", params.spring_stiffness)
-        };
+    // the damping and the spring must be resolved by the time step (the library refuses a longer
+    // one): say how many substeps would do
+    let max_step = sim.max_step();
+    if h > max_step {
+        let (rate, field, value) = sim.fastest_rate();
+        let need = (h / max_step * args.substeps as f64).ceil();
         return Err(Failure::Input(anyhow!(
-            "{field} = {}: too stiff for the time step {} s ({}° / ω / {} substeps): the follower's rate c/m = {} /s, k/m = {} /s²; use --substeps {} or more, or a finer --step",
+            "{field} = {}: too stiff for the time step {} s ({}° / ω / {} substeps): the follower's fastest rate is {} /s (c/m = {} /s, √(k/m) = {} /s); use --substeps {} or more, or a finer --step",
             camkin::human::human(value),
             camkin::human::human(h),
             camkin::human::human(step),
             args.substeps,
-            camkin::human::human(params.damping / m_eff),
-            camkin::human::human(params.spring_stiffness / m_eff),
-            need.ceil()
+            camkin::human::human(rate),
+            camkin::human::human(params.damping / m_eff(&mech, &params)),
+            camkin::human::human((params.spring_stiffness / m_eff(&mech, &params)).sqrt()),
+            need
         )));
     }
     let pb = indicatif::ProgressBar::new(outputs as u64);

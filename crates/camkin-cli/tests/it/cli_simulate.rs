@@ -163,6 +163,19 @@ fn bad_dynamics_input_exits_2() {
             "dynamics.damping = 1000000000: too stiff for the time step",
         ),
         (
+            base.replace("spring_stiffness = 2000.0", "spring_stiffness = 1e9"),
+            "dynamics.spring_stiffness = 1000000000: too stiff for the time step",
+        ),
+        // issue 12, class 4: a concave stretch under a flat face (a dented disc) is reported as
+        // the contact jump it causes, not as a pairing-point search that did not converge
+        (
+            base.replace(
+                "kind = \"circle\"\ncenter = [10.0, 0.0]\nradius = 40.0",
+                "kind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]",
+            ),
+            "the contact jumps at cam angle",
+        ),
+        (
             base.replace("damping = 0.0", "damping = 0.0\ngravity = [0, -1e308]"),
             "dynamics.gravity = [0, -1e308]",
         ),

@@ -18,6 +18,7 @@ mod error;
 mod follower;
 mod golden;
 mod jet;
+mod jumps;
 mod kinematics;
 mod mechanism;
 mod options;
@@ -30,6 +31,7 @@ pub mod synthesis;
 
 pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, Joint, Sense};
+pub use jumps::{contact_jumps, contact_jumps_with};
 pub use options::AnalysisOptions;
 pub use search::MAX_CANDIDATES;
 pub use state::{FollowerState, Motion};

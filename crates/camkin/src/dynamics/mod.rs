@@ -71,6 +71,29 @@ pub enum DynamicsError {
         /// the analysis error
         source: crate::cam::CamError,
     },
+    /// The contact jumps across a stretch of the profile the follower cannot follow (a concave
+    /// stretch under a flat face, one sharper than the roller, a fold, a knife falling off a
+    /// lobe): the dynamics follows one contact point continuously and cannot model the jump.
+    #[error("the contact jumps at cam angle {}: the follower cannot follow the profile there (a concave stretch under a flat face, one sharper than the roller, or a fold; `camkin analyze` flags the rows), and the dynamics follows one contact point continuously", fmt_angles(.angles_deg))]
+    ContactJumps {
+        /// cam angles (degrees, in [0, 360)) of the jumps, sampled every 0.25°
+        angles_deg: Vec<f64>,
+    },
+    /// A time step too long for the follower's fastest rate (the damping's `c/m` or the spring's
+    /// `√(k/m)`): the explicit integration would be unstable.
+    #[error("{field} = {}: too stiff for the time step {} s: the follower's fastest rate is {} /s, so the step must be at most {} s", crate::human::human(*.value), crate::human::human(*.step), crate::human::human(*.rate), crate::human::human(*.max_step))]
+    StepTooLong {
+        /// the parameter that sets the rate (damping or spring stiffness)
+        field: crate::field::Field,
+        /// its value
+        value: f64,
+        /// the step asked for, s
+        step: f64,
+        /// the fastest rate, 1/s
+        rate: f64,
+        /// the longest stable step, s
+        max_step: f64,
+    },
     /// A parameter is out of range.
     #[error("{field} = {}: {reason}", crate::human::human(*.value))]
     Invalid {
@@ -81,4 +104,18 @@ pub enum DynamicsError {
         /// what it must be
         reason: &'static str,
     },
+}
+
+/// `12.5°, 140°, … (7 in all)`
+fn fmt_angles(a: &[f64]) -> String {
+    let shown: Vec<String> = a
+        .iter()
+        .take(4)
+        .map(|x| format!("{}°", crate::human::human(*x)))
+        .collect();
+    if a.len() > 4 {
+        format!("{}, … ({} in all)", shown.join(", "), a.len())
+    } else {
+        shown.join(", ")
+    }
 }

@@ -269,3 +269,52 @@ fn knife_global_search_finds_crossings_near_tangency() {
         );
     }
 }
+
+/// Regression (`simulate` on a concave stretch under a flat face ended in "pairing-point search
+/// did not converge", an internal error): a simulation on a cam whose contact jumps is refused
+/// up front with the jump angles, and those angles are the independently located jumps (each
+/// one at most a 0.25° sample after it), for every follower and both senses.
+#[test]
+fn simulation_across_a_contact_jump_is_refused_with_the_jump_angles() {
+    use camkin::dynamics::{AugmentedLagrangian, DynamicsError, FollowerDynamics, Simulation};
+    for f in followers() {
+        for sense in [Sense::Ccw, Sense::Cw] {
+            let m = mechanism(peanut(), Point2::origin(), sense, 600.0, f);
+            let located: Vec<f64> = support_jumps(&m)
+                .iter()
+                .map(|t| t.to_degrees().rem_euclid(360.0))
+                .collect();
+            let what = format!("{} {sense:?}", f.kind_name());
+            let params = FollowerDynamics {
+                mass: 0.5,
+                inertia: 0.01,
+                spring_stiffness: 1000.0,
+                spring_preload: 50.0,
+                damping: 0.0,
+                restitution: 0.5,
+                gravity: Vec2::zeros(),
+            };
+            let r = Simulation::new(&m, params, AugmentedLagrangian::default());
+            if located.is_empty() {
+                assert!(r.is_ok(), "{what}: {:?}", r.err());
+                continue;
+            }
+            let Err(DynamicsError::ContactJumps { angles_deg }) = r else {
+                panic!("{what}: not refused with the jumps: {:?}", r.err());
+            };
+            assert_eq!(
+                angles_deg.len(),
+                located.len(),
+                "{what}: {angles_deg:?} vs {located:?}"
+            );
+            for t in &located {
+                assert!(
+                    angles_deg
+                        .iter()
+                        .any(|a| (a - t).rem_euclid(360.0) <= 0.25 + 1e-9),
+                    "{what}: the jump at {t}° is not among {angles_deg:?}"
+                );
+            }
+        }
+    }
+}
