@@ -189,13 +189,30 @@ impl Mechanism {
             pivot + Vec2::new(cs * x.x - sn * x.y, sn * x.x + cs * x.y)
         };
         let joint = self.follower_joint();
+        // a rotating follower: compare angles on the branch centred on the cam's axis, report
+        // them within ±180° of the initial angle
+        let (branch, report) = match joint {
+            Joint::Rotating {
+                pivot: o,
+                initial_angle,
+                ..
+            } => {
+                let d = pivot - o;
+                (d.y.atan2(d.x), Some(initial_angle))
+            }
+            Joint::Translating { .. } => (0.0, None),
+        };
+        let report = |s: Support| Support {
+            q: report.map_or(s.q, |a| a + wrap_near_zero(s.q - a)),
+            u: s.u,
+        };
         let period = self.period;
         let grid = sample_grid(&self.breakpoints, period);
         match self.follower_curve() {
             FollowerCurve::Point(tip) => {
                 // the extreme of the crossings of the profile with the tip's path
                 let tip = tip.at().coords;
-                let path = |u: f64| crossing(&joint, tip, world(u));
+                let path = |u: f64| crossing(&joint, tip, world(u), branch);
                 let mut best: Option<(f64, Support)> = None;
                 let mut keep = |u: f64| {
                     let q = path(u).1;
@@ -243,11 +260,11 @@ impl Mechanism {
                         }
                     }
                 }
-                best.map(|(_, s)| s)
+                best.map(|(_, s)| report(s))
             }
             curve => {
                 let f = |u: f64| {
-                    touch(&joint, &curve, world(u))
+                    touch(&joint, &curve, world(u), branch)
                         .map_or(f64::NEG_INFINITY, |q| oriented(&joint, q))
                 };
                 let values: Vec<f64> = grid.iter().map(|&u| f(u)).collect();
@@ -277,7 +294,7 @@ impl Mechanism {
                     }
                 }
                 let u = best?.1.rem_euclid(period);
-                touch(&joint, &curve, world(u)).map(|q| Support { q, u })
+                touch(&joint, &curve, world(u), branch).map(|q| report(Support { q, u }))
             }
         }
     }
@@ -285,7 +302,10 @@ impl Mechanism {
 
 /// The coordinate at which the follower's contact curve (a line or a circle, material on its
 /// left) passes through the world point `p` entering the follower in its closing sense.
-fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2) -> Option<f64> {
+///
+/// A rotating follower's angles are taken within ±180° of `branch` (the direction from its
+/// pivot to the cam's axis), where the angles that touch the cam form one interval.
+fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2, branch: f64) -> Option<f64> {
     match (*joint, curve) {
         (Joint::Translating { origin, direction }, FollowerCurve::Line(line)) => {
             // outside distance g(q) = −m·(p − origin − q d − a), m into the material: the
@@ -301,14 +321,7 @@ fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2) -> Option<f64> {
             let disc = c.radius() * c.radius() - lateral * lateral;
             (disc >= 0.0).then(|| w.dot(&direction) + disc.sqrt())
         }
-        (
-            Joint::Rotating {
-                pivot,
-                closing,
-                initial_angle,
-            },
-            curve,
-        ) => {
+        (Joint::Rotating { pivot, closing, .. }, curve) => {
             // in polar form about the pivot, the boundary passes through p where
             // cos(ψ − γ − q) = k; it enters the follower (turning in the closing sense κ) at
             // q = ψ − γ − κ acos k
@@ -334,7 +347,7 @@ fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2) -> Option<f64> {
                 return None;
             }
             let q = psi - gamma - closing.sign() * k.acos();
-            Some(initial_angle + wrap_near_zero(q - initial_angle))
+            Some(branch + wrap_near_zero(q - branch))
         }
         _ => None,
     }
@@ -343,23 +356,16 @@ fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2) -> Option<f64> {
 /// For a knife edge with its tip at `tip` in the follower frame: `(f, q)` where `f` changes sign
 /// where the world point `p` crosses the tip's path and `q` is the coordinate putting the tip
 /// at `p` there.
-fn crossing(joint: &Joint, tip: Vec2, p: Point2) -> (f64, f64) {
+fn crossing(joint: &Joint, tip: Vec2, p: Point2, branch: f64) -> (f64, f64) {
     match *joint {
         Joint::Translating { origin, direction } => {
             let w = p - origin - tip;
             (w.dot(&left(*direction)), w.dot(&direction))
         }
-        Joint::Rotating {
-            pivot,
-            initial_angle,
-            ..
-        } => {
+        Joint::Rotating { pivot, .. } => {
             let y = p - pivot;
             let q = y.y.atan2(y.x) - tip.y.atan2(tip.x);
-            (
-                y.norm() - tip.norm(),
-                initial_angle + wrap_near_zero(q - initial_angle),
-            )
+            (y.norm() - tip.norm(), branch + wrap_near_zero(q - branch))
         }
     }
 }

@@ -191,23 +191,3 @@ fn offset_curve(c: &[Vec2; 5], r: f64, sg: f64) -> Derivs {
         d3: at(3, 6.0),
     }
 }
-
-/// Newton for `f(φ) = 0` from `start`; `None` when it does not converge.
-pub(crate) fn solve_angle(
-    f: impl Fn(f64) -> f64,
-    df: impl Fn(f64) -> f64,
-    start: f64,
-) -> Option<f64> {
-    let mut phi = start;
-    for _ in 0..100 {
-        let step = f(phi) / df(phi);
-        if !step.is_finite() {
-            return None;
-        }
-        phi -= step.clamp(-0.5, 0.5);
-        if step.abs() < 1e-15 {
-            return Some(phi);
-        }
-    }
-    (f(phi).abs() < 1e-12).then_some(phi)
-}

@@ -318,10 +318,6 @@ impl MechanismSpec {
         let cam = &self.cam;
         let follower = self.follower.build(scale)?;
         let sense = cam.direction.unwrap_or(Sense::Ccw);
-        let (profile, synthesis) = cam
-            .profile
-            .build(scale, &options.base_dir, &follower, sense)?;
-        let speed = positive(Field::Cam(CamField::SpeedRpm), cam.speed_rpm)?;
         let pivot = match cam.pivot {
             Some(p) => {
                 let p = point(Field::Cam(CamField::Pivot), p)?;
@@ -329,6 +325,14 @@ impl MechanismSpec {
             }
             None => Point2::origin(),
         };
+        // a synthesis places the follower relative to the cam's axis
+        let (profile, synthesis) = cam.profile.build(
+            scale,
+            &options.base_dir,
+            &follower.relative_to(pivot),
+            sense,
+        )?;
+        let speed = positive(Field::Cam(CamField::SpeedRpm), cam.speed_rpm)?;
         let alpha = match cam.angular_acceleration_deg_s2 {
             Some(a) => finite(Field::Cam(CamField::AngularAcceleration), a)?,
             None => 0.0,

@@ -14,6 +14,7 @@ mod ellipse_flat;
 mod hyperdual_selfcheck;
 mod interpolation_study;
 mod jerk;
+mod oscillating_branch;
 mod paper_cam;
 mod properties;
 mod spec;

@@ -26,8 +26,12 @@ pub enum Joint {
         pivot: Point2,
         /// the sense in which the spring turns the arm onto the cam
         closing: Sense,
-        /// the branch: the solution within ±180° of this angle, rad
+        /// the arm angle is reported within ±180° of this angle, rad
         initial_angle: f64,
+        /// the direction from the pivot to the cam's axis, rad: the first touch is found among
+        /// arm angles within ±180° of it, so that the branch cut lies where the arm points away
+        /// from the cam and cannot touch it
+        toward_cam: f64,
     },
 }
 
@@ -97,7 +101,11 @@ impl Joint {
     pub(crate) fn oriented(&self, q: f64) -> f64 {
         match *self {
             Joint::Translating { .. } => q,
-            Joint::Rotating { closing, .. } => -closing.sign() * q,
+            Joint::Rotating {
+                closing,
+                toward_cam,
+                ..
+            } => -closing.sign() * crate::geometry::wrap_angle_near(q, toward_cam),
         }
     }
 

@@ -93,7 +93,7 @@ pub enum Follower {
         face_offset: f64,
         /// sense in which the spring turns the arm onto the cam
         closing: Sense,
-        /// picks the branch: the solution within ±180° of it, rad
+        /// the arm angle is reported within ±180° of it, rad (any value finds the same contact)
         initial_angle: f64,
     },
     /// Oscillating roller: roller centre at `O + L (cos φ, sin φ)`.
@@ -106,7 +106,7 @@ pub enum Follower {
         roller_radius: f64,
         /// sense in which the spring turns the arm onto the cam
         closing: Sense,
-        /// picks the branch: the solution within ±180° of it, rad
+        /// the arm angle is reported within ±180° of it, rad (any value finds the same contact)
         initial_angle: f64,
     },
 }
@@ -163,6 +163,7 @@ impl Follower {
                 closing,
                 initial_angle,
             } => OscillatingFlat::model(
+                cam_pivot,
                 point(Field::Follower(FollowerField::Pivot), pivot)?,
                 finite(Field::Follower(FollowerField::Offset), face_offset)?,
                 closing,
@@ -196,6 +197,20 @@ impl Follower {
         "oscillating-flat",
         "oscillating-roller",
     ];
+
+    /// The same follower described relative to a cam axis at `cam_pivot`: an arm's pivot moved
+    /// by `−cam_pivot` (translating followers are already placed relative to the cam's axis).
+    /// [`crate::cam::synthesis::synthesize`] takes its follower this way.
+    pub fn relative_to(&self, cam_pivot: Point2) -> Follower {
+        let mut f = *self;
+        match &mut f {
+            Follower::OscillatingFlat { pivot, .. } | Follower::OscillatingRoller { pivot, .. } => {
+                *pivot -= cam_pivot.coords;
+            }
+            _ => {}
+        }
+        f
+    }
 
     /// Human-readable kind, as in mechanism files.
     pub fn kind_name(&self) -> &'static str {
@@ -254,11 +269,54 @@ fn point(field: Field, p: Point2) -> Result<Point2, CamError> {
     }
 }
 
-/// `(oriented score, φ)` of an arm angle `phi` taken on the branch within ±180° of `phi0`.
+/// `(oriented score, φ)` of an arm angle `phi`: the score on the branch within ±180° of
+/// `toward_cam` (the direction from the pivot to the cam's axis, so that the arm angles that
+/// touch the cam form one interval, cut where the arm points away from the cam), the angle
+/// reported within ±180° of `phi0`.
 #[inline]
-fn arm_branch(phi: f64, phi0: f64, closing: f64) -> (f64, f64) {
-    let phi = wrap_angle_near(phi, phi0);
-    (-closing * phi, phi)
+fn arm_branch(phi: f64, toward_cam: f64, phi0: f64, closing: f64) -> (f64, f64) {
+    let on_branch = wrap_angle_near(phi, toward_cam);
+    (-closing * on_branch, wrap_angle_near(phi, phi0))
+}
+
+/// The arm angle at which an oscillating follower rests on the base circle: of the roots of
+/// `a cos φ + b sin φ = c` that `valid` accepts, the one the arm reaches first turning in its
+/// closing sense (the larger oriented score on the branch about `toward_cam`), reported within
+/// ±180° of `phi0`; `None` when there is none.
+fn first_touch_root(
+    [a, b, c]: [f64; 3],
+    valid: impl Fn(f64) -> bool,
+    toward_cam: f64,
+    phi0: f64,
+    closing: f64,
+) -> Option<f64> {
+    let r = a.hypot(b);
+    let k = c / r;
+    if !(r > 0.0 && (-1.0..=1.0).contains(&k)) {
+        return None;
+    }
+    let (alpha, beta) = (b.atan2(a), k.acos());
+    let best = [alpha + beta, alpha - beta]
+        .into_iter()
+        .filter(|&phi| valid(phi))
+        .map(|phi| arm_branch(phi, toward_cam, phi0, closing))
+        .fold(
+            (f64::NEG_INFINITY, f64::NAN),
+            |m, x| {
+                if x.0 > m.0 {
+                    x
+                } else {
+                    m
+                }
+            },
+        );
+    best.1.is_finite().then_some(best.1)
+}
+
+/// The direction (rad) from an arm's pivot `o` to the cam's axis.
+fn toward(cam_pivot: Point2, o: Point2) -> f64 {
+    let d = cam_pivot - o;
+    d.y.atan2(d.x)
 }
 
 /// What each follower kind implements, once, in its own file.

@@ -2,10 +2,10 @@
 //! `(cos φ, sin φ)`, touching the cam on the arm's side of the pivot. Its curve is the line
 //! `y = e` of the arm frame, oriented so that the cam lies on its right.
 
-use super::{arm_branch, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{scale, Jet, Num, V2};
-use crate::cam::synthesis::{jet_recip, solve_angle, Envelope};
+use crate::cam::synthesis::{jet_recip, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
 use crate::field::{Field, FollowerField};
@@ -13,20 +13,25 @@ use crate::geometry::{Point2, Rotation, Vec2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingFlat {
+    pub(super) cam_pivot: Point2,
     pub(super) o: Point2,
     /// +1 when the spring closes the arm counter-clockwise
     pub(super) closing: f64,
     pub(super) phi0: f64,
+    /// direction from the pivot to the cam's axis, rad
+    pub(super) toward_cam: f64,
     pub(super) e: f64,
     pub(super) sense: Sense,
 }
 
 impl OscillatingFlat {
-    pub(super) fn model(o: Point2, e: f64, closing: Sense, phi0: f64) -> Model {
+    pub(super) fn model(cam_pivot: Point2, o: Point2, e: f64, closing: Sense, phi0: f64) -> Model {
         Model::OscillatingFlat(Self {
+            cam_pivot,
             o,
             closing: closing.sign(),
             phi0,
+            toward_cam: toward(cam_pivot, o),
             e,
             sense: closing,
         })
@@ -39,6 +44,7 @@ impl Kind for OscillatingFlat {
             pivot: self.o,
             closing: self.sense,
             initial_angle: self.phi0,
+            toward_cam: self.toward_cam,
         }
     }
     fn curve(&self) -> super::FollowerCurve {
@@ -57,7 +63,12 @@ impl Kind for OscillatingFlat {
         if rho < e.abs() || rho == 0.0 {
             return None;
         }
-        Some(arm_branch(psi - (e / rho).asin(), self.phi0, self.closing))
+        Some(arm_branch(
+            psi - (e / rho).asin(),
+            self.toward_cam,
+            self.phi0,
+            self.closing,
+        ))
     }
     #[inline]
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
@@ -84,14 +95,20 @@ impl Kind for OscillatingFlat {
         Some(0.0)
     }
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
-        let o = self.o.coords;
+        // the pivot from the cam's axis (the profile is in the cam's frame, centred there)
+        let o = self.o - self.cam_pivot;
         let face_offset = self.e;
-        // the face at signed distance h0 = −closing·R_b from the axis: e + O·n(φ0) = h0
+        // the face at signed distance h0 = −closing·R_b from the axis: e + O·n(φ0) = h0,
+        // n = (−sin φ, cos φ)
         let h0 = -self.closing * base_radius;
-        solve_angle(
-            |phi| face_offset - o.x * phi.sin() + o.y * phi.cos() - h0,
-            |phi| -o.x * phi.cos() - o.y * phi.sin(),
+        // the face touches on the arm's side of the pivot: the foot of the perpendicular from
+        // the cam's axis, h0·n, lies ahead of the pivot along the arm, (h0 n − O)·u = −O·u > 0
+        first_touch_root(
+            [o.y, -o.x, h0 - face_offset],
+            |phi: f64| o.x * phi.cos() + o.y * phi.sin() < 0.0,
+            self.toward_cam,
             self.phi0,
+            self.closing,
         )
         .ok_or(CamError::Invalid {
             field: Field::Follower(FollowerField::Offset),
@@ -102,7 +119,7 @@ impl Kind for OscillatingFlat {
     fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, _rot: &Rotation) -> Envelope {
         // the face in the cam frame: y·N(α) = h, α = φ − σθ, h = e + O·n(φ); envelope
         // y = h N − (h'/α') T with N = (−sin α, cos α), T = (cos α, sin α)
-        let (o, e, rho, sg) = (self.o.coords, self.e, -self.closing, sigma);
+        let (o, e, rho, sg) = (self.o - self.cam_pivot, self.e, -self.closing, sigma);
         let f = [
             s0 + rho * (s[0] - s0),
             rho * s[1],

@@ -1,10 +1,10 @@
 //! Oscillating roller: the roller centre at `O + L (cos φ, sin φ)`; its curve is the circle of
 //! radius `r` about `(L, 0)` in the arm frame.
 
-use super::{arm_branch, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
-use crate::cam::synthesis::{rotated_derivs, solve_angle, Envelope};
+use crate::cam::synthesis::{rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
@@ -17,6 +17,8 @@ pub(crate) struct OscillatingRoller {
     /// +1 when the spring closes the arm counter-clockwise
     pub(super) closing: f64,
     pub(super) phi0: f64,
+    /// direction from the pivot to the cam's axis, rad
+    pub(super) toward_cam: f64,
     pub(super) l: f64,
     pub(super) r: f64,
     pub(super) sense: Sense,
@@ -36,6 +38,7 @@ impl OscillatingRoller {
             o,
             closing: closing.sign(),
             phi0,
+            toward_cam: toward(cam_pivot, o),
             l,
             r,
             sense: closing,
@@ -49,6 +52,7 @@ impl Kind for OscillatingRoller {
             pivot: self.o,
             closing: self.sense,
             initial_angle: self.phi0,
+            toward_cam: self.toward_cam,
         }
     }
     fn curve(&self) -> super::FollowerCurve {
@@ -72,6 +76,7 @@ impl Kind for OscillatingRoller {
         // cw closing (arm comes down): largest φ whose roller holds x
         Some(arm_branch(
             psi - self.closing * c.acos(),
+            self.toward_cam,
             self.phi0,
             self.closing,
         ))
@@ -121,15 +126,18 @@ impl Kind for OscillatingRoller {
         Some(self.r)
     }
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
-        let o = self.o.coords;
+        // the pivot from the cam's axis (the profile is in the cam's frame, centred there)
+        let o = self.o - self.cam_pivot;
         let arm_length = self.l;
         let prime = base_radius + self.r;
         // |O + L u(φ0)| = R_b + r: O·u(φ0) = K
         let k = (prime * prime - o.norm_squared() - arm_length * arm_length) / (2.0 * arm_length);
-        solve_angle(
-            |phi| o.x * phi.cos() + o.y * phi.sin() - k,
-            |phi| -o.x * phi.sin() + o.y * phi.cos(),
+        first_touch_root(
+            [o.x, o.y, k],
+            |_| true,
+            self.toward_cam,
             self.phi0,
+            self.closing,
         )
         .ok_or(CamError::Invalid {
             field: Field::Follower(FollowerField::ArmLength),
@@ -139,7 +147,7 @@ impl Kind for OscillatingRoller {
     }
     fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         // φ = φ0 + ρ s and its derivatives; u(φ) = (cos φ, sin φ), v = k × u
-        let (o, l, rho) = (self.o.coords, self.l, -self.closing);
+        let (o, l, rho) = (self.o - self.cam_pivot, self.l, -self.closing);
         let f = [
             s0 + rho * (s[0] - s0),
             rho * s[1],
