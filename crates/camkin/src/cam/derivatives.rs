@@ -5,6 +5,7 @@
 
 use super::follower::Kind as _;
 use super::jet::{scale, Jet, Num, V2};
+use super::search::solve2;
 use super::{CamError, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
 use crate::geometry::{Rotation, Vec2};
@@ -36,8 +37,7 @@ impl Mechanism {
             .geometry
             .model
             .jacobian(&cam.eval_curve(profile, touch.u), touch.q);
-        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-        if !(det.abs() > 0.0 && det.is_finite()) {
+        if !solve2(&j, [1.0, 1.0]).iter().all(|x| x.is_finite()) {
             return Err(CamError::NoConvergence {
                 angle_deg: theta.to_degrees(),
                 reason: StopReason::SingularJacobian,
@@ -70,9 +70,7 @@ impl Mechanism {
                 Vec2::zeros(),
             );
             let f = self.geometry.model.residual_value(x, x1, Jet(q));
-            let (f0, f1) = (f[0].0[k], f[1].0[k]);
-            u[k] = (-f0 * j[1][1] + f1 * j[0][1]) / det;
-            q[k] = (-j[0][0] * f1 + j[1][0] * f0) / det;
+            [u[k], q[k]] = solve2(&j, [f[0].0[k], f[1].0[k]]);
         }
         Ok([q[1], 2.0 * q[2], 6.0 * q[3]])
     }

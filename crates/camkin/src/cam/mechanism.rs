@@ -8,6 +8,7 @@ use super::{
     Joint, Mechanism, Motion, Sweep,
 };
 use crate::curve::{Curve, Domain};
+use crate::field::{Field, ProfileField};
 use std::sync::Arc;
 
 impl Mechanism {
@@ -27,10 +28,25 @@ impl Mechanism {
             convex,
             mean_speed,
             cusps,
+            min_radius,
         } = ProfileSummary::of(profile, &breakpoints, period)?;
+        if !(super::LENGTH_RANGE.0..=super::LENGTH_RANGE.1).contains(&size) {
+            return Err(CamError::Invalid {
+                field: Field::Profile(ProfileField::Table),
+                value: size,
+                reason: "the cam's size (its greatest reach from its axis) must be from 1e-100 to 1e100 length units",
+            });
+        }
         geometry.model.check_reach(size)?;
         cam.check_magnitudes(size)?;
-        let options = AnalysisOptions::for_size(size);
+        let mut options = AnalysisOptions::for_size(size);
+        // Newton's error after a step δ is about δ²/ρ for the smallest radius ρ in play: the
+        // profile's sharpest curvature, a small roller (a 1e-9 roller accepted a step of 1e-8
+        // that left an error of 1e-7)
+        let sharpest = size
+            .min(min_radius)
+            .min(geometry.model.roller_radius().unwrap_or(f64::INFINITY));
+        options.newton_contraction = 1e3 / sharpest;
         let mut m = Self {
             cam,
             geometry,
@@ -41,6 +57,7 @@ impl Mechanism {
             size,
             orientation,
             convex,
+            roller: geometry.model.roller_radius().is_some(),
             mean_speed,
             cusps,
             breakpoints,

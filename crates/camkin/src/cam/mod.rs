@@ -30,7 +30,7 @@ mod sweep;
 pub mod synthesis;
 
 pub use error::{CamError, StopReason};
-pub use follower::{Follower, FollowerCurve, Joint, Sense};
+pub use follower::{Follower, FollowerCurve, Joint, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};
 pub use options::AnalysisOptions;
 pub use search::MAX_CANDIDATES;
@@ -238,6 +238,8 @@ pub struct Mechanism {
     size: f64,
     orientation: f64,
     convex: bool,
+    /// the follower is a roller (translating or oscillating)
+    roller: bool,
     /// the mean `|r'|` of the profile: below 1e-6 of it a contact is taken to sit on a cusp
     mean_speed: f64,
     /// the cusps of a folded profile (parameters)

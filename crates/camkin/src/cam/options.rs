@@ -39,7 +39,10 @@ pub struct AnalysisOptions {
     pub jerk: bool,
     /// A bound `C` (1/length) on Newton's quadratic convergence: a step `δ` leaves an error of
     /// about `C δ²`, so a step whose `C δ²` is below [`AnalysisOptions::position_tolerance`] is
-    /// accepted without another evaluation. Conservative by default (`10³/size`).
+    /// accepted without another evaluation. Conservative by default: `10³` over the smallest of
+    /// the cam's size, its sharpest radius of curvature and the roller's radius
+    /// ([`Mechanism::new`](super::Mechanism::new) sets it; [`AnalysisOptions::for_size`] gives
+    /// `10³/size`).
     pub newton_contraction: f64,
 }
 

@@ -2,10 +2,11 @@
 //! first touch, and the global search (bracketing samples of the first-touch function, the best
 //! local maxima refined by Newton).
 
+use super::follower::CentrePath;
 use super::follower::Kind as _;
 use super::{CamError, Mechanism, StopReason};
 use crate::body::{CurveInFrame, WorldDerivs};
-use crate::geometry::Frame;
+use crate::geometry::{rot90, Frame, Point2};
 
 /// A converged first touch: cam parameter and follower position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,18 +47,19 @@ impl Mechanism {
         mut q: f64,
     ) -> Result<(Touch, WorldDerivs), CamError> {
         let profile = self.cam.profile.as_ref();
+        // in units of the tolerance (squares of lengths could underflow at extreme sizes):
+        // a step δ is accepted when δ ≤ tol, or when C δ² ≤ tol (the next step would be below
+        // the tolerance): (δ/tol)² ≤ 1 or (C tol)² (δ/tol)⁴ ≤ 1
         let tol = self.options.position_tolerance;
-        let tol2 = tol * tol;
-        // C² δ⁴ ≤ tol²: the next step would be below the tolerance
-        let c2 = self.options.newton_contraction * self.options.newton_contraction;
+        let inv_tol = 1.0 / tol;
+        let ct = self.options.newton_contraction * tol;
+        let c2 = ct * ct;
         let qs = self.q_scale();
         let lim = self.options.max_step_fraction * self.period;
         for _ in 0..self.options.max_iterations {
             let e = frame.curve_at(profile, u);
             let (f, j) = self.geometry.residual(&e, q);
-            let inv_det = 1.0 / (j[0][0] * j[1][1] - j[0][1] * j[1][0]);
-            let du = (-f[0] * j[1][1] + f[1] * j[0][1]) * inv_det;
-            let dq = (-j[0][0] * f[1] + j[1][0] * f[0]) * inv_det;
+            let [du, dq] = solve2(&j, f);
             if !(du.is_finite() && dq.is_finite()) {
                 return Err(CamError::NoConvergence {
                     angle_deg: theta.to_degrees(),
@@ -68,8 +70,9 @@ impl Mechanism {
             let du = du.clamp(-lim, lim);
             u += du;
             q += dq;
-            let step2 = (du * du * e.d1.norm_squared()).max(dq * dq * qs * qs);
-            if step2 <= tol2 || c2 * step2 * step2 <= tol2 {
+            let (su, sq) = (du * inv_tol, dq * qs * inv_tol);
+            let step2 = (su * su * e.d1.norm_squared()).max(sq * sq);
+            if step2 <= 1.0 || c2 * step2 * step2 <= 1.0 {
                 let u = if (0.0..self.period).contains(&u) {
                     u
                 } else {
@@ -141,67 +144,127 @@ impl Mechanism {
         self.geometry.joint.oriented(q)
     }
 
-    /// Start candidates for a knife edge: the crossings of its line of travel with the profile
-    /// sampled at `s` (linear interpolation between samples), best first. Two crossings between
-    /// neighbouring samples (the line nearly tangent to the profile) show no sign change: where
-    /// the sampled distance from the line has a local minimum, its true minimum is located and,
-    /// when it crosses the line, both crossings become candidates.
-    fn knife_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) {
-        let Some((d, p, e)) = self.geometry.model.knife_line() else {
-            return;
+    /// Start candidates for a knife edge or a roller: the crossings of the path of its tip or
+    /// centre with the profile's offset curve at its distance (the profile itself for a knife,
+    /// the pitch curve for a roller), sampled at `s` (linear interpolation between samples),
+    /// best first. Sign changes find a crossing however thin the roller's reach is beside the
+    /// path (a small roller, a long thin cam). Two crossings between neighbouring samples (the
+    /// path nearly tangent to the offset curve) show no sign change: where the sampled distance
+    /// from the path has a local minimum, its true minimum is located and, when it crosses the
+    /// path, both crossings become candidates.
+    ///
+    /// Returns the best exact first-touch score of the sampled profile points (a lower bound of
+    /// the first touch; `−∞` for a knife, whose samples are not touches).
+    fn path_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) -> f64 {
+        let Some((path, r)) = self.geometry.model.centre_path() else {
+            return f64::NEG_INFINITY;
         };
+        let model = &self.geometry.model;
+        let best = std::cell::Cell::new(f64::NEG_INFINITY);
         let profile = self.cam.profile.as_ref();
         let n = s.len();
-        let at = |u: f64| frame.curve_position(profile, u) - self.cam.pivot;
-        let y = |k: usize| at(s[k]);
-        let lateral = |u: f64| at(u).dot(&p) - e;
-        let (y0, mut ya) = (y(0), y(0));
-        let mut la = ya.dot(&p) - e;
+        let pivot = self.cam.pivot;
+        let joint = self.geometry.joint;
+        // the offset curve's point at u: outward normal −orientation·rot90(r')/|r'|
+        let shift = -self.orientation * r;
+        let at = |u: f64| -> Point2 {
+            if r == 0.0 {
+                frame.curve_position(profile, u)
+            } else {
+                let d = profile.eval(u);
+                if let Some((sc, _)) = model.score(frame * d.p) {
+                    best.set(best.get().max(sc));
+                }
+                let len = d.d1.norm();
+                let local = if len > 0.0 {
+                    d.p + (shift / len) * rot90(d.d1)
+                } else {
+                    d.p
+                };
+                frame * local
+            }
+        };
+        let lateral_of = |x: Point2| match path {
+            CentrePath::Line { p, e, .. } => (x - pivot).dot(&p) - e,
+            CentrePath::Circle { o, l } => (x - o).norm() - l,
+        };
+        let coord = |x: Point2| -> (f64, f64) {
+            match path {
+                CentrePath::Line { d, .. } => {
+                    let q = (x - pivot).dot(&d);
+                    (q, q)
+                }
+                CentrePath::Circle { o, .. } => {
+                    let y = x - o;
+                    joint.branch(y.y.atan2(y.x))
+                }
+            }
+        };
+        let lateral = |u: f64| lateral_of(at(u));
+        // a roller's start must put its centre within a fraction of its radius of the pitch
+        // curve, or Newton can settle on the roller's far side (the two are a diameter apart):
+        // linear interpolation between samples is not that close for a small roller
+        let root = |lo: f64, hi: f64| {
+            if r == 0.0 {
+                bisect_sign(&lateral, lo, hi)
+            } else {
+                falsi(&lateral, lo, hi, lateral(lo), lateral(hi), 0.1 * r)
+            }
+        };
+        let mut push = |u: f64, x: Point2| {
+            let (score, q) = coord(x);
+            out.push((score, u.rem_euclid(self.period), q));
+        };
+        let (x0, mut xa) = (at(s[0]), at(s[0]));
+        let mut la = lateral_of(xa);
         let mut l_before = lateral(s[n - 1]);
         for k in 0..n {
-            let (yb, ub) = if k + 1 < n {
-                (y(k + 1), s[k + 1])
+            let (xb, ub) = if k + 1 < n {
+                (at(s[k + 1]), s[k + 1])
             } else {
-                (y0, self.period)
+                (x0, self.period)
             };
-            let lb = yb.dot(&p) - e;
+            let lb = lateral_of(xb);
             let ua = if k == 0 {
                 s[n - 1] - self.period
             } else {
                 s[k - 1]
             };
             if (la > 0.0) != (lb > 0.0) && (l_before > 0.0) != (la > 0.0) {
-                // two crossings on either side of sample k: the line is nearly tangent there and
+                // two crossings on either side of sample k: the path is nearly tangent there and
                 // interpolated starts can both lead Newton to one of them; start from each root
                 for (lo, hi) in [(ua, s[k]), (s[k], ub)] {
-                    let u0 = bisect_sign(&lateral, lo, hi);
-                    let q0 = at(u0).dot(&d);
-                    out.push((q0, u0.rem_euclid(self.period), q0));
+                    let u0 = root(lo, hi);
+                    push(u0, at(u0));
                 }
             } else if la == 0.0 || (la > 0.0) != (lb > 0.0) {
                 let f = if la == lb { 0.0 } else { la / (la - lb) };
-                let q0 = ya.dot(&d) * (1.0 - f) + yb.dot(&d) * f;
-                out.push((q0, s[k] + f * (ub - s[k]), q0));
+                if r == 0.0 {
+                    push(s[k] + f * (ub - s[k]), xa + f * (xb - xa));
+                } else {
+                    let u0 = falsi(&lateral, s[k], ub, la, lb, 0.1 * r);
+                    push(u0, at(u0));
+                }
             } else if (l_before > 0.0) == (la > 0.0)
                 && la.abs() < l_before.abs()
                 && la.abs() <= lb.abs()
             {
-                // a local minimum of |distance| at sample k: does the profile cross in between?
+                // a local minimum of |distance| at sample k: does the curve cross in between?
                 let sign = la.signum();
                 // stopping once it crosses: that is all that is needed
                 let (um, lm) =
                     super::golden::golden_min(|u| sign * lateral(u), ua, ub, 60, |v| v < 0.0);
                 if lm < 0.0 {
                     for (lo, hi) in [(ua, um), (um, ub)] {
-                        let u0 = bisect_sign(&lateral, lo, hi);
-                        let q0 = at(u0).dot(&d);
-                        out.push((q0, u0.rem_euclid(self.period), q0));
+                        let u0 = root(lo, hi);
+                        push(u0, at(u0));
                     }
                 }
             }
             l_before = la;
-            (ya, la) = (yb, lb);
+            (xa, la) = (xb, lb);
         }
+        best.get()
     }
 
     /// Start candidates: the local maxima of the first-touch function sampled at `s`, best
@@ -266,12 +329,13 @@ impl Mechanism {
     /// is kept.
     pub(crate) fn global_touch(&self, theta: f64, frame: &Frame) -> Result<Touch, CamError> {
         let knife = self.geometry.is_knife();
+        let on_path = self.geometry.model.centre_path().is_some();
         if self.convex {
-            // a knife's line crosses a convex profile twice: the coarse scan finds the outer
-            // crossing unless the line only grazes the profile (then the dense scan below)
-            let start = if knife {
+            // a knife's or a roller's path crosses a convex (offset) profile twice: the coarse
+            // scan finds the outer crossing unless the path only grazes it (then the dense scan)
+            let start = if on_path {
                 let mut c = Candidates::new(1);
-                self.knife_starts(frame, &self.coarse, &mut c);
+                self.path_starts(frame, &self.coarse, &mut c);
                 c.as_slice().first().copied()
             } else {
                 self.best_sample(frame, &self.coarse)
@@ -285,15 +349,18 @@ impl Mechanism {
             }
         }
         let mut starts = Candidates::new(self.options.candidates);
-        let best_sample = if knife {
-            self.knife_starts(frame, &self.samples, &mut starts);
-            f64::NEG_INFINITY // a knife's interpolated crossings are not exact touches
+        let best_sample = if on_path {
+            // starts from the crossings; a roller's sampled scores (exact first touches of the
+            // points it reaches) still bound the result from below
+            self.path_starts(frame, &self.samples, &mut starts)
         } else {
             self.score_starts(frame, &self.samples, &mut starts)
         };
         if starts.is_empty() {
             let reason = if knife {
                 "the knife edge's line of travel misses the cam"
+            } else if on_path {
+                "the roller's path misses the cam"
             } else {
                 "the follower cannot reach the cam"
             };
@@ -318,7 +385,7 @@ impl Mechanism {
                         reason: StopReason::IterationLimit | StopReason::SingularJacobian,
                         ..
                     },
-                ) if !knife => refined().ok_or(e),
+                ) if !on_path => refined().ok_or(e),
                 other => other,
             };
             match attempt {
@@ -358,6 +425,29 @@ impl Mechanism {
         self.best_sample(frame, &self.samples)
             .map_or(f64::NEG_INFINITY, |b| b.0)
     }
+}
+
+/// `J⁻¹ (−f)` for a 2×2 `J`, each equation first scaled by its largest coefficient: the
+/// coefficients mix units (a cam parameter and a length: a roller's are lengths squared and
+/// lengths), so at extreme sizes the unscaled products underflow or overflow even where the
+/// determinant does not (a cam 1e-80 in size lost the position's step entirely). Non-finite
+/// when `J` is singular.
+#[inline]
+pub(crate) fn solve2(j: &[[f64; 2]; 2], f: [f64; 2]) -> [f64; 2] {
+    let mut a = *j;
+    let mut b = f;
+    for k in 0..2 {
+        let m = a[k][0].abs().max(a[k][1].abs());
+        if m > 0.0 && m.is_finite() {
+            let inv = 1.0 / m;
+            (a[k][0], a[k][1], b[k]) = (a[k][0] * inv, a[k][1] * inv, b[k] * inv);
+        }
+    }
+    let inv_det = 1.0 / (a[0][0] * a[1][1] - a[0][1] * a[1][0]);
+    [
+        (-b[0] * a[1][1] + b[1] * a[0][1]) * inv_det,
+        (-a[0][0] * b[1] + a[1][0] * b[0]) * inv_det,
+    ]
 }
 
 /// Most start candidates refined by the global search.
@@ -413,6 +503,51 @@ pub(crate) fn bracket_samples(
     per_curve: usize,
 ) -> Vec<f64> {
     bracket_params(breakpoints, period, per_piece, per_curve).collect()
+}
+
+/// A root of `f` in `[a, b]` (`fa = f(a)`, `fb = f(b)` of opposite signs, or one zero) by the
+/// Illinois variant of regula falsi, stopping once `|f| ≤ tol`: the first step is the linear
+/// interpolation, so a root the samples already pin down costs one evaluation.
+fn falsi(
+    f: &impl Fn(f64) -> f64,
+    mut a: f64,
+    mut b: f64,
+    mut fa: f64,
+    mut fb: f64,
+    tol: f64,
+) -> f64 {
+    if fa == 0.0 {
+        return a;
+    }
+    let mut side = 0;
+    let mut x = a;
+    for _ in 0..100 {
+        if fb == 0.0 {
+            return b;
+        }
+        x = (a * fb - b * fa) / (fb - fa);
+        if !(x > a.min(b) && x < a.max(b)) {
+            x = 0.5 * (a + b);
+        }
+        let fx = f(x);
+        if fx.abs() <= tol || x == a || x == b {
+            return x;
+        }
+        if (fx > 0.0) == (fb > 0.0) {
+            (b, fb) = (x, fx);
+            if side == -1 {
+                fa *= 0.5;
+            }
+            side = -1;
+        } else {
+            (a, fa) = (x, fx);
+            if side == 1 {
+                fb *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    x
 }
 
 /// A point near the sign change of `f` in `[a, b]` (the ends have opposite signs), by 30

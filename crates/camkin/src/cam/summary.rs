@@ -20,6 +20,8 @@ pub(crate) struct ProfileSummary {
     pub(crate) mean_speed: f64,
     /// the parameters of the cusps of a folded profile (where the tangent reverses)
     pub(crate) cusps: Vec<f64>,
+    /// the smallest radius of curvature over the samples
+    pub(crate) min_radius: f64,
 }
 
 impl ProfileSummary {
@@ -106,6 +108,7 @@ impl ProfileSummary {
             convex,
             mean_speed: mean_g,
             cusps,
+            min_radius: 1.0 / kmin.abs().max(kmax.abs()),
         })
     }
 }

@@ -209,10 +209,26 @@ impl Mechanism {
         let period = self.period;
         let grid = sample_grid(&self.breakpoints, period);
         match self.follower_curve() {
-            FollowerCurve::Point(tip) => {
-                // the extreme of the crossings of the profile with the tip's path
-                let tip = tip.at().coords;
-                let path = |u: f64| crossing(&joint, tip, world(u), branch);
+            curve @ (FollowerCurve::Point(_) | FollowerCurve::Circle(_)) => {
+                // the extreme of the crossings of the tip's path with the profile, or of the
+                // roller centre's path with the profile's offset by the radius (outward normal
+                // −orientation·rot90(r')): a roller's reach beside its path can be far narrower
+                // than the sampling
+                let (tip, r) = match curve {
+                    FollowerCurve::Circle(c) => (c.center().coords, c.radius()),
+                    FollowerCurve::Point(p) => (p.at().coords, 0.0),
+                    _ => unreachable!("matched above"),
+                };
+                let shift = -self.orientation * r;
+                let offset = |u: f64| {
+                    if r == 0.0 {
+                        return world(u);
+                    }
+                    let t = profile.eval(u).d1;
+                    let n = Vec2::new(-t.y, t.x) * (shift / t.norm());
+                    world(u) + Vec2::new(cs * n.x - sn * n.y, sn * n.x + cs * n.y)
+                };
+                let path = |u: f64| crossing(&joint, tip, offset(u), branch);
                 let mut best: Option<(f64, Support)> = None;
                 let mut keep = |u: f64| {
                     let q = path(u).1;
@@ -300,8 +316,8 @@ impl Mechanism {
     }
 }
 
-/// The coordinate at which the follower's contact curve (a line or a circle, material on its
-/// left) passes through the world point `p` entering the follower in its closing sense.
+/// The coordinate at which the follower's face (a line, material on its left) passes through the
+/// world point `p` entering the follower in its closing sense.
 ///
 /// A rotating follower's angles are taken within ±180° of `branch` (the direction from its
 /// pivot to the cam's axis), where the angles that touch the cam form one interval.
@@ -314,13 +330,6 @@ fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2, branch: f64) -> Option
             let md = m.dot(&direction);
             (md > 0.0).then(|| m.dot(&(p - origin - line.anchor().coords)) / md)
         }
-        (Joint::Translating { origin, direction }, FollowerCurve::Circle(c)) => {
-            // |w − q d| = r, the larger root (the roller comes from q = +∞)
-            let w = p - origin - c.center().coords;
-            let lateral = w.dot(&left(*direction));
-            let disc = c.radius() * c.radius() - lateral * lateral;
-            (disc >= 0.0).then(|| w.dot(&direction) + disc.sqrt())
-        }
         (Joint::Rotating { pivot, closing, .. }, curve) => {
             // in polar form about the pivot, the boundary passes through p where
             // cos(ψ − γ − q) = k; it enters the follower (turning in the closing sense κ) at
@@ -331,15 +340,6 @@ fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2, branch: f64) -> Option
                 FollowerCurve::Line(line) => {
                     let m = left(line.direction());
                     (m.y.atan2(m.x), m.dot(&line.anchor().coords) / rho)
-                }
-                FollowerCurve::Circle(c) => {
-                    let cc = c.center().coords;
-                    let l = cc.norm();
-                    let r = c.radius();
-                    (
-                        cc.y.atan2(cc.x),
-                        (rho * rho + l * l - r * r) / (2.0 * rho * l),
-                    )
                 }
                 _ => return None,
             };

@@ -7,6 +7,7 @@
 //! sampled first-touch function is compared with the warm contact, and if another part of the
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
+use super::follower::Kind as _;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
 use crate::body::BodyState;
 use crate::geometry::Frame;
@@ -177,9 +178,11 @@ impl<'a> Sweep<'a> {
         };
         match m.newton_at(theta, frame, u0, q0) {
             // on a convex profile the first touch is unique and Newton started next to it: the
-            // orientation check is enough (it rejects the cam's back side)
+            // orientation check is enough (it rejects the cam's back side); a roller's Newton
+            // can leap (its residual bends on the scale of the roller's radius, which may be
+            // tiny), so its touch must also be the first touch of its cam point
             Ok((t, e))
-                if (m.convex && m.faces_follower(&e, t.q))
+                if (m.convex && m.faces_follower(&e, t.q) && (!m.roller || m.is_first_touch_at(&e, t.q)))
                     // evaluated at the converged point itself: near a cusp the tangent (and
                     // with it the normal) turns over within the last Newton step
                     || (!m.convex && m.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
@@ -189,8 +192,10 @@ impl<'a> Sweep<'a> {
                     return Ok((t, Found::WarmStart));
                 }
                 // non-convex: another part of the profile touches first if a sample does (a
-                // sampled score is an exact first touch of that point)
-                let ahead = if m.geometry.is_knife() {
+                // sampled score is an exact first touch of that point); a knife's or a roller's
+                // reach beside its path can be narrower than the sample spacing, so for them the
+                // global search (crossings of the path) decides
+                let ahead = if m.geometry.model.centre_path().is_some() {
                     true
                 } else {
                     m.best_sampled_score(frame) > m.oriented(t.q) + m.touch_slack()

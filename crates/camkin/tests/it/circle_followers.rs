@@ -140,3 +140,83 @@ fn all_followers_on_eccentric_circle_ccw() {
 fn all_followers_on_eccentric_circle_cw_axis_elsewhere() {
     check(Point2::new(2.0, -1.0), Sense::Cw, Vec2::new(0.6, -0.8));
 }
+
+/// Issue 12 (a paper cam under a 0.01 roller failed at most angles; a thin cam under a small
+/// roller "does not touch"): a roller's reach beside its path can be far narrower than the
+/// profile's sample spacing. Rollers from 1e-9 to 1e3 times the cam's radius, translating (two
+/// offsets) and oscillating, single queries and a 1° sweep, against the closed form.
+#[test]
+fn tiny_and_huge_rollers_on_an_eccentric_circle_match_the_closed_form() {
+    let (pivot, c0) = (Point2::new(0.5, -0.3), Vec2::new(0.6, -0.8));
+    for r in [1e-9, 1e-6, 1e-3, 0.05, 1e3] {
+        let mut fs = vec![
+            Follower::TranslatingRoller {
+                direction: Vec2::new(0.0, 1.0),
+                offset: 0.0,
+                roller_radius: r,
+            },
+            Follower::TranslatingRoller {
+                direction: Vec2::new(1.0, 1.0),
+                offset: -0.7 * RC,
+                roller_radius: r,
+            },
+        ];
+        if r < 1.0 {
+            fs.push(Follower::OscillatingRoller {
+                pivot: pivot + Vec2::new(-3.0, 7.0),
+                arm_length: 9.0,
+                roller_radius: r,
+                closing: Sense::Cw,
+                initial_angle: (-30f64).to_radians(),
+            });
+        }
+        for f in fs {
+            for dir in [Sense::Ccw, Sense::Cw] {
+                let m = mechanism(
+                    std::sync::Arc::new(camkin::curve::Circle::new(Point2::from(c0), RC).unwrap()),
+                    pivot,
+                    dir,
+                    1000.0,
+                    f,
+                );
+                let w = m.cam().speed();
+                let name = format!("{} r = {r} {dir:?}", f.kind_name());
+                let scale = RC + r;
+                let mut sweep = m.sweep();
+                for k in 0..360 {
+                    let th = (k as f64 + 0.25).to_radians();
+                    let cf = closed_form(&f, HD::var(th), pivot, c0, dir.sign());
+                    let single = m
+                        .analyze(th)
+                        .unwrap_or_else(|e| panic!("{name} at {k}°: {e}"));
+                    let warm = sweep
+                        .step(th)
+                        .unwrap_or_else(|e| panic!("{name} sweep at {k}°: {e}"));
+                    for (how, s) in [("single", single), ("sweep", warm)] {
+                        let phi = if f.is_oscillating() {
+                            camkin::geometry::wrap_angle_near(cf.v, s.position)
+                        } else {
+                            cf.v
+                        };
+                        let what = format!("{name} {how} at {k}°");
+                        assert_close(s.position, phi, 1e-12, scale, &format!("{what} q"));
+                        assert_close(
+                            s.velocity,
+                            w * cf.d1,
+                            1e-11,
+                            w * scale,
+                            &format!("{what} v"),
+                        );
+                        assert_close(
+                            s.acceleration,
+                            w * w * cf.d2,
+                            1e-10,
+                            w * w * scale,
+                            &format!("{what} a"),
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

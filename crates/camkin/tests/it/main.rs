@@ -22,3 +22,4 @@ mod spline_finite_differences;
 mod support_check;
 mod sweep;
 mod synthesis_round_trip;
+mod thin_geometry;

@@ -126,6 +126,51 @@ fn mirror_follower(f: &Follower) -> Follower {
     }
 }
 
+/// The follower with every length (offsets, radii, arm, pivot) multiplied by `k`.
+fn scale_follower(f: &Follower, k: f64) -> Follower {
+    let sp = |p: Point2| Point2::from(p.coords * k);
+    match *f {
+        Follower::TranslatingFlat { direction } => Follower::TranslatingFlat { direction },
+        Follower::TranslatingRoller {
+            direction,
+            offset,
+            roller_radius,
+        } => Follower::TranslatingRoller {
+            direction,
+            offset: k * offset,
+            roller_radius: k * roller_radius,
+        },
+        Follower::TranslatingKnife { direction, offset } => Follower::TranslatingKnife {
+            direction,
+            offset: k * offset,
+        },
+        Follower::OscillatingFlat {
+            pivot,
+            face_offset,
+            closing,
+            initial_angle,
+        } => Follower::OscillatingFlat {
+            pivot: sp(pivot),
+            face_offset: k * face_offset,
+            closing,
+            initial_angle,
+        },
+        Follower::OscillatingRoller {
+            pivot,
+            arm_length,
+            roller_radius,
+            closing,
+            initial_angle,
+        } => Follower::OscillatingRoller {
+            pivot: sp(pivot),
+            arm_length: k * arm_length,
+            roller_radius: k * roller_radius,
+            closing,
+            initial_angle,
+        },
+    }
+}
+
 /// The five followers of `all_followers` and the mirror images of its two oscillating ones,
 /// which close counter-clockwise.
 fn seven_followers(pivot: Point2) -> Vec<Follower> {
@@ -273,6 +318,92 @@ proptest! {
         prop_assert!(c.position <= 2e-14, "{:?}", c);
         prop_assert!(dv <= 1e-10 * w * scale, "{:?} at v = {}", c, a.velocity);
         prop_assert!(da <= 1e-7 * w * w * scale, "{:?} at a = {}", c, a.acceleration);
+    }
+    /// Issue 12: scaling every length by any factor from 1e-99 to 1e98 scales positions,
+    /// velocities and accelerations by it (arm angles unchanged), in single queries and in a
+    /// sweep, for all seven followers: no tolerance, search step or test depends on the unit.
+    #[test]
+    fn scaling_every_length_scales_the_answers(
+        nodes in cam_nodes(),
+        exponent in -99.0f64..98.0,
+        kind in 0usize..7,
+        ccw in any::<bool>(),
+        theta0 in 0.0f64..360.0,
+    ) {
+        let k = 10f64.powf(exponent);
+        let pivot = Point2::new(0.7, -0.4);
+        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
+        let f = seven_followers(pivot)[kind];
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        prop_assume!(m.is_convex());
+        let scaled: Vec<Point2> = nodes.iter().map(|p| Point2::from(p.coords * k)).collect();
+        let ms = Mechanism::new(
+            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&scaled).unwrap()), Point2::from(pivot.coords * k), sense, 1000.0).unwrap(),
+            scale_follower(&f, k),
+        ).unwrap();
+        let lk = if f.is_oscillating() { 1.0 } else { k };
+        let w = m.cam().speed();
+        let scale = if f.is_oscillating() { 1.0 } else { m.size() + 10.0 };
+        let (mut sw, mut sws) = (m.sweep(), ms.sweep());
+        for j in 0..12 {
+            let th = (theta0 + 2.0 * j as f64).to_radians();
+            let (a, b) = (m.analyze(th), ms.analyze(th));
+            prop_assert_eq!(a.is_ok(), b.is_ok(), "{:?} vs {:?}", a.as_ref().err(), b.as_ref().err());
+            let (wa, wb) = (sw.step(th), sws.step(th));
+            prop_assert_eq!(wa.is_ok(), wb.is_ok(), "{:?} vs {:?}", wa.as_ref().err(), wb.as_ref().err());
+            for (a, b) in [(a, b), (wa, wb)] {
+                let (Ok(a), Ok(b)) = (a, b) else { continue };
+                prop_assert!((a.position - b.position / lk).abs() <= 1e-12 * scale, "q {} vs {} / {lk}", a.position, b.position);
+                prop_assert!((a.velocity - b.velocity / lk).abs() <= 1e-11 * w * scale, "v {} vs {}", a.velocity, b.velocity / lk);
+                prop_assert!((a.acceleration - b.acceleration / lk).abs() <= 1e-10 * w * w * scale, "a {} vs {}", a.acceleration, b.acceleration / lk);
+            }
+        }
+    }
+
+    /// Issue 12: rollers of any radius from 1e-9 to 3 times the cam's (a roller's reach beside
+    /// its path can be far narrower than the profile's sample spacing), translating or
+    /// oscillating, agree with the support function (crossings of the roller centre's path with
+    /// the offset profile, by bisection) in single queries and in a 1° sweep.
+    #[test]
+    fn rollers_of_any_size_agree_with_the_support_function(
+        nodes in cam_nodes(),
+        exponent in -9.0f64..0.5,
+        oscillating in any::<bool>(),
+        ccw in any::<bool>(),
+        theta0 in 0.0f64..360.0,
+    ) {
+        let r = 3.0 * 10f64.powf(exponent);
+        let pivot = Point2::new(0.7, -0.4);
+        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
+        let f = if oscillating {
+            Follower::OscillatingRoller {
+                pivot: pivot + Vec2::new(-3.0, 7.0 + r),
+                arm_length: 9.0,
+                roller_radius: r,
+                closing: Sense::Cw,
+                initial_angle: (-30f64).to_radians(),
+            }
+        } else {
+            Follower::TranslatingRoller { direction: Vec2::new(0.3, 1.0), offset: 0.5, roller_radius: r }
+        };
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        prop_assume!(m.is_convex());
+        let scale = if oscillating { 1.0 } else { m.size() + r };
+        let mut sweep = m.sweep();
+        for j in 0..20 {
+            let th = (theta0 + j as f64).to_radians();
+            let Some((q, _)) = m.support_position(th) else {
+                prop_assert!(m.analyze(th).is_err(), "touches where the support function does not");
+                continue;
+            };
+            let single = m.analyze(th);
+            prop_assert!(single.is_ok(), "r = {r} at {}°: {:?}", th.to_degrees(), single.err());
+            let warm = sweep.step(th);
+            prop_assert!(warm.is_ok(), "r = {r} at {}°: {:?}", th.to_degrees(), warm.err());
+            for s in [single.unwrap(), warm.unwrap()] {
+                prop_assert!((s.position - q).abs() <= 1e-12 * scale, "r = {r} at {}°: q {} vs {q}", th.to_degrees(), s.position);
+            }
+        }
     }
 }
 

@@ -109,6 +109,25 @@ impl Joint {
         }
     }
 
+    /// `(oriented score, reported q)` of a position `q` found as an angle anywhere (a rotating
+    /// joint's: the score on the branch about the cam, the angle within ±180° of the initial
+    /// angle); `(q, q)` for a slide.
+    #[inline]
+    pub(crate) fn branch(&self, q: f64) -> (f64, f64) {
+        match *self {
+            Joint::Translating { .. } => (q, q),
+            Joint::Rotating {
+                closing,
+                initial_angle,
+                toward_cam,
+                ..
+            } => (
+                -closing.sign() * crate::geometry::wrap_angle_near(q, toward_cam),
+                crate::geometry::wrap_angle_near(q, initial_angle),
+            ),
+        }
+    }
+
     /// +1 when `q` is a length (translating), the closing sign's opposite otherwise: the sign
     /// of `q` that moves the follower away from the cam.
     #[inline]

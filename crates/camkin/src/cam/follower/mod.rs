@@ -167,7 +167,7 @@ impl Follower {
                 point(Field::Follower(FollowerField::Pivot), pivot)?,
                 finite(Field::Follower(FollowerField::Offset), face_offset)?,
                 closing,
-                finite(Field::Follower(FollowerField::InitialAngle), initial_angle)?,
+                arm_angle(Field::Follower(FollowerField::InitialAngle), initial_angle)?,
             ),
             Follower::OscillatingRoller {
                 pivot,
@@ -183,7 +183,7 @@ impl Follower {
                     positive(Field::Follower(FollowerField::ArmLength), arm_length)?,
                     positive(Field::Follower(FollowerField::RollerRadius), roller_radius)?,
                     closing,
-                    finite(Field::Follower(FollowerField::InitialAngle), initial_angle)?,
+                    arm_angle(Field::Follower(FollowerField::InitialAngle), initial_angle)?,
                 )
             }
         })
@@ -232,39 +232,75 @@ impl Follower {
     }
 }
 
+/// Largest length the computation takes (it squares lengths): see [`LENGTH_RANGE`].
+const BIG: f64 = 1e100;
+
+/// The lengths the computation keeps full accuracy for, in any unit: a cam's size and a
+/// follower's lengths from `1e-100` to `1e100` (lengths are squared inside, and squares of
+/// lengths beyond overflow or underflow `f64`).
+pub const LENGTH_RANGE: (f64, f64) = (1e-100, 1e100);
+
+/// An offset or coordinate: finite and at most [`LENGTH_RANGE`]'s upper end in magnitude.
 fn finite(field: Field, v: f64) -> Result<f64, CamError> {
-    if v.is_finite() {
+    if v.is_finite() && v.abs() <= BIG {
         Ok(v)
     } else {
         Err(CamError::Invalid {
             field,
             value: v,
-            reason: "must be finite",
+            reason: if v.is_finite() {
+                "must be at most 1e100 in magnitude"
+            } else {
+                "must be finite"
+            },
         })
     }
 }
 
+/// A length: within [`LENGTH_RANGE`].
 fn positive(field: Field, v: f64) -> Result<f64, CamError> {
-    if v.is_finite() && v > 0.0 {
+    if v.is_finite() && v > 0.0 && (LENGTH_RANGE.0..=LENGTH_RANGE.1).contains(&v) {
         Ok(v)
     } else {
         Err(CamError::Invalid {
             field,
             value: v,
-            reason: "must be positive and finite",
+            reason: if v.is_finite() && v > 0.0 {
+                "must be from 1e-100 to 1e100"
+            } else {
+                "must be positive and finite"
+            },
+        })
+    }
+}
+
+/// An arm's initial angle, rad: within ±10 turns (the arm angle is reported within ±180° of
+/// it, so a larger one would cost the reported angle its accuracy).
+fn arm_angle(field: Field, v: f64) -> Result<f64, CamError> {
+    if v.is_finite() && v.abs() <= 20.0 * std::f64::consts::PI {
+        Ok(v)
+    } else {
+        Err(CamError::Invalid {
+            field,
+            value: v.to_degrees(),
+            reason: "must be finite and within ±3600°",
         })
     }
 }
 
 fn point(field: Field, p: Point2) -> Result<Point2, CamError> {
-    if p.x.is_finite() && p.y.is_finite() {
+    if p.x.is_finite() && p.y.is_finite() && p.x.abs().max(p.y.abs()) <= BIG {
         Ok(p)
     } else {
         Err(CamError::InvalidVector {
             field,
             x: p.x,
             y: p.y,
-            reason: "must be finite",
+            reason: if p.x.is_finite() && p.y.is_finite() {
+                "must be at most 1e100 in magnitude"
+            } else {
+                "must be finite"
+            },
         })
     }
 }
@@ -346,8 +382,12 @@ pub(crate) trait Kind {
     /// The signed curvature (of a counter-clockwise profile) below which the follower cannot
     /// follow the profile: 0 under a flat face, `−1/r` under a roller; `None` for a point.
     fn concave_limit(&self) -> Option<f64>;
-    /// A knife edge's line of travel `(d, rot90(d), e)`.
-    fn knife_line(&self) -> Option<(Vec2, Vec2, f64)> {
+    /// The path of the follower's reference point (a knife's tip, a roller's centre) and its
+    /// distance from the cam's boundary at a touch (0, the roller's radius): the first touch is
+    /// the extreme crossing of that path with the profile's outward offset curve at that
+    /// distance (the pitch curve), found by sign changes whatever the roller's size. `None` for
+    /// a flat face.
+    fn centre_path(&self) -> Option<(CentrePath, f64)> {
         None
     }
     /// The roller's radius.
@@ -361,6 +401,15 @@ pub(crate) trait Kind {
     /// program's value and four derivatives (`s₀` added to the value), `σ` the cam's sense and
     /// `rot = R(−σu)`.
     fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rotation) -> Envelope;
+}
+
+/// The path of a follower's reference point (knife tip, roller centre).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum CentrePath {
+    /// the line `cam axis + e·p + q·d` of a translating follower (`p = rot90(d)`)
+    Line { d: Vec2, p: Vec2, e: f64 },
+    /// the circle of radius `l` about an arm's pivot `o` (world)
+    Circle { o: Point2, l: f64 },
 }
 
 /// A follower kind with its derived data: one variant per kind.
@@ -415,8 +464,8 @@ impl Kind for Model {
     fn concave_limit(&self) -> Option<f64> {
         dispatch!(self, k => k.concave_limit())
     }
-    fn knife_line(&self) -> Option<(Vec2, Vec2, f64)> {
-        dispatch!(self, k => k.knife_line())
+    fn centre_path(&self) -> Option<(CentrePath, f64)> {
+        dispatch!(self, k => k.centre_path())
     }
     fn roller_radius(&self) -> Option<f64> {
         dispatch!(self, k => k.roller_radius())

@@ -69,16 +69,31 @@ impl Kind for OscillatingRoller {
         if rho == 0.0 {
             return None;
         }
-        let c = (rho * rho + l * l - r * r) / (2.0 * rho * l);
-        if !(-1.0..=1.0).contains(&c) {
+        // the angle β at the pivot between x and the roller's centre (triangle ρ, L, r) by the
+        // half-angle formula, tan²(β/2) = (r − d)(r + d) / ((ρ + L − r)(ρ + L + r)), d = ρ − L:
+        // accurate for a small roller, where the law of cosines' acos near 1 loses half the digits
+        let d = rho - l;
+        let num = (r - d) * (r + d);
+        let den = (rho + l - r) * (rho + l + r);
+        if !(num >= 0.0 && den > 0.0) {
             return None;
         }
+        let beta = 2.0 * (num / den).sqrt().atan();
         // cw closing (arm comes down): largest φ whose roller holds x
         Some(arm_branch(
-            psi - self.closing * c.acos(),
+            psi - self.closing * beta,
             self.toward_cam,
             self.phi0,
             self.closing,
+        ))
+    }
+    fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
+        Some((
+            super::CentrePath::Circle {
+                o: self.o,
+                l: self.l,
+            },
+            self.r,
         ))
     }
     #[inline]

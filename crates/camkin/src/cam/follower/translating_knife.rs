@@ -59,8 +59,15 @@ impl Kind for TranslatingKnife {
     fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {
         self.d
     }
-    fn knife_line(&self) -> Option<(Vec2, Vec2, f64)> {
-        Some((self.d, self.p, self.e))
+    fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
+        Some((
+            super::CentrePath::Line {
+                d: self.d,
+                p: self.p,
+                e: self.e,
+            },
+            0.0,
+        ))
     }
     fn check_reach(&self, size: f64) -> Result<(), CamError> {
         if self.e.abs() >= size {

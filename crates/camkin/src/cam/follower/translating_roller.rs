@@ -56,6 +56,16 @@ impl Kind for TranslatingRoller {
             Some((q, q))
         }
     }
+    fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
+        Some((
+            super::CentrePath::Line {
+                d: self.d,
+                p: self.p,
+                e: self.e,
+            },
+            self.r,
+        ))
+    }
     #[inline]
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         let y = x - V2::c(self.cam_pivot.coords);
