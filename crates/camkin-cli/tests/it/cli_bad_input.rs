@@ -551,3 +551,65 @@ fn a_profile_with_no_area_is_refused_up_front() {
         );
     }
 }
+
+/// Issue 12, class 2: lengths beyond the range the computation keeps its accuracy in (it squares
+/// them) and arm angles beyond ±10 turns are refused by field, with the value; inside the
+/// range (1e-100 … 1e100) the answers scale (see the library's scale property test).
+#[test]
+fn lengths_and_arm_angles_beyond_their_range_are_refused_by_field() {
+    let roller = |r: &str| {
+        format!("{CIRCLE}[follower]\nkind = \"translating-roller\"\nroller_radius = {r}\n")
+    };
+    let arm = |extra: &str| {
+        format!(
+            "{CIRCLE}[follower]\nkind = \"oscillating-roller\"\npivot = [-3, 7]\narm_length = 9\nroller_radius = 1\n{extra}\n"
+        )
+    };
+    for (name, toml, needle) in [
+        (
+            "huge cam",
+            CIRCLE.replace("radius = 2", "radius = 2e100") + FLAT,
+            "cam.profile = 2e100: the cam's size",
+        ),
+        (
+            "tiny cam",
+            CIRCLE
+                .replace("radius = 2", "radius = 2e-101")
+                .replace("[0.5, 0]", "[0, 0]")
+                + FLAT,
+            "cam.profile = 2e-101: the cam's size",
+        ),
+        (
+            "tiny roller",
+            roller("1e-101"),
+            "follower.roller_radius = 1e-101: must be from 1e-100 to 1e100",
+        ),
+        (
+            "huge roller",
+            roller("1e101"),
+            "follower.roller_radius = 1e101",
+        ),
+        (
+            "huge offset",
+            roller("1").replace("roller_radius", "offset = 1e120\nroller_radius"),
+            "follower.offset = 1e120: must be at most 1e100",
+        ),
+        (
+            "far pivot",
+            arm("").replace("[-3, 7]", "[-3, 1e101]"),
+            "follower.pivot = [-3, 1e101]",
+        ),
+        (
+            "initial angle",
+            arm("initial_angle_deg = 1e300"),
+            "follower.initial_angle_deg = 1e300: must be finite and within ±3600°",
+        ),
+        (
+            "initial angle 4000",
+            arm("initial_angle_deg = -4000"),
+            "follower.initial_angle_deg = -4000",
+        ),
+    ] {
+        bad(name, &toml, &[], &[needle]);
+    }
+}
