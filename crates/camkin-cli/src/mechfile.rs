@@ -7,7 +7,7 @@
 
 use camkin::cam::Mechanism;
 use camkin::dynamics::FollowerDynamics;
-use camkin::spec::{BuildOptions, Built, Field, Key, MechanismSpec, SpecError};
+use camkin::spec::{BuildOptions, Built, Field, Key, MechanismSpec, SpecError, SpecWarning};
 use std::ops::Range;
 use std::path::Path;
 
@@ -109,7 +109,29 @@ fn build(text: &str, name: &str, base: &Path, si: bool) -> Result<Built, InputEr
         base_dir: base.to_path_buf(),
         si,
     };
-    spec.build(&options).map_err(|e| place(text, name, &e))
+    let built = spec.build(&options).map_err(|e| place(text, name, &e))?;
+    for w in &built.warnings {
+        let field = match w {
+            SpecWarning::UnevenNodes { field, .. } => Some(*field),
+            _ => None,
+        };
+        eprintln!("camkin: warning: {}: {w}", located(text, name, field));
+    }
+    Ok(built)
+}
+
+/// `file:line:column` of `field`'s key (or `file` alone).
+fn located(text: &str, name: &str, field: Option<Field>) -> String {
+    match field.and_then(|f| span_of(text, f)) {
+        Some(span) => {
+            let start = span.start.min(text.len());
+            let before = &text[..start];
+            let line = before.matches('\n').count() + 1;
+            let col = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+            format!("{name}:{line}:{col}")
+        }
+        None => name.to_string(),
+    }
 }
 
 /// The error as `file:line:column: message`, at the key of the field it names (the nearest
@@ -120,19 +142,8 @@ fn place(text: &str, name: &str, e: &SpecError) -> InputError {
             message: e.to_string(),
         };
     }
-    match span_of(text, e.field()) {
-        Some(span) => {
-            let start = span.start.min(text.len());
-            let before = &text[..start];
-            let line = before.matches('\n').count() + 1;
-            let col = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
-            InputError {
-                message: format!("{name}:{line}:{col}: {e}"),
-            }
-        }
-        None => InputError {
-            message: format!("{name}: {e}"),
-        },
+    InputError {
+        message: format!("{}: {e}", located(text, name, Some(e.field()))),
     }
 }
 

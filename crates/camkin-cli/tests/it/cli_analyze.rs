@@ -376,3 +376,75 @@ fn any_initial_angle_and_a_small_roller_analyse_every_angle() {
     assert!(small.contains("roller_radius = 0.01"));
     run(&small);
 }
+
+/// Issue 12, class 4: unevenly spaced points under the uniform parameterisation draw a warning
+/// naming `chord-length` (inline points and a points file that asks for uniform); a points
+/// file is parameterised by chord length by default (the same rows as asking for it), silently.
+#[test]
+fn uneven_points_under_uniform_parameterisation_warn_and_files_default_to_chord_length() {
+    let dir = tempfile::tempdir().unwrap();
+    // a circle of 24 points at alternating angular steps a, 3a
+    let a = std::f64::consts::TAU / 48.0;
+    let (mut t, mut pts) = (0.0f64, Vec::new());
+    for k in 0..24 {
+        pts.push((0.5 + 3.0 * t.cos(), 3.0 * t.sin()));
+        t += if k % 2 == 0 { a } else { 3.0 * a };
+    }
+    let csv: String = pts.iter().map(|(x, y)| format!("{x},{y}\n")).collect();
+    std::fs::write(dir.path().join("p.csv"), csv).unwrap();
+    let inline: Vec<String> = pts.iter().map(|(x, y)| format!("[{x}, {y}]")).collect();
+    let head = "[cam]\nspeed_rpm = 60\n[cam.profile]\n";
+    let flat = "[follower]\nkind = \"translating-flat\"\n";
+    let run = |name: &str, text: String| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        let a = camkin()
+            .arg("analyze")
+            .arg(&p)
+            .args(["--angles", "0:360:5"])
+            .assert()
+            .success();
+        let o = a.get_output();
+        (
+            String::from_utf8(o.stdout.clone()).unwrap(),
+            String::from_utf8(o.stderr.clone()).unwrap(),
+        )
+    };
+    let warned = |err: &str| err.contains("unevenly spaced") && err.contains("chord-length");
+    let (_, err) = run(
+        "inline.toml",
+        format!(
+            "{head}kind = \"spline\"\npoints = [{}]\n{flat}",
+            inline.join(", ")
+        ),
+    );
+    assert!(warned(&err), "{err}");
+    assert!(err.contains("cam.profile.points"), "{err}");
+    let (_, err) = run(
+        "uniform.toml",
+        format!("{head}kind = \"points-file\"\npath = \"p.csv\"\nparameterization = \"uniform\"\n{flat}"),
+    );
+    assert!(warned(&err) && err.contains("cam.profile.path"), "{err}");
+    let (default_rows, err) = run(
+        "default.toml",
+        format!("{head}kind = \"points-file\"\npath = \"p.csv\"\n{flat}"),
+    );
+    assert!(!err.contains("warning"), "{err}");
+    let (chord_rows, _) = run(
+        "chord.toml",
+        format!("{head}kind = \"points-file\"\npath = \"p.csv\"\nparameterization = \"chord-length\"\n{flat}"),
+    );
+    assert_eq!(default_rows, chord_rows);
+    // and chord length follows the circle: the flat face's acceleration −e ω² cos θ (e = 0.5)
+    // to the spline's own approximation of it
+    let (_, rows) = parse_csv(default_rows.as_bytes());
+    let w = std::f64::consts::TAU;
+    for r in &rows {
+        let th = r[0].parse::<f64>().unwrap().to_radians();
+        let acc = r[3].parse::<f64>().unwrap();
+        assert!(
+            (acc + 0.5 * w * w * th.cos()).abs() < 0.2 * 0.5 * w * w,
+            "{r:?}"
+        );
+    }
+}

@@ -63,6 +63,23 @@ pub struct Built {
     pub dynamics: Option<FollowerDynamics>,
     /// the unit of the spec's lengths
     pub length_unit: LengthUnit,
+    /// what is valid but probably not meant (a front end shows them)
+    pub warnings: Vec<SpecWarning>,
+}
+
+/// A valid spec that is probably not what was meant.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SpecWarning {
+    /// Unevenly spaced nodes under the uniform parameterisation, which puts them at equal
+    /// parameter steps and bends the spline between them.
+    #[error("{field}: the points are unevenly spaced (the longest chord between neighbours is {} times the shortest) and parameterization = \"uniform\" puts them at equal parameter steps, which bends the spline between them: its accelerations can be off by many times their peak (measured: 17 times at a ratio of 1.5 on a circle); write parameterization = \"chord-length\" unless the profile is defined this way", crate::human::human(*.ratio))]
+    UnevenNodes {
+        /// `points` or `path`
+        field: Field,
+        /// longest over shortest chord
+        ratio: f64,
+    },
 }
 
 /// What is wrong with a spec. Every variant names the field ([`SpecError::field`]).
@@ -326,11 +343,13 @@ impl MechanismSpec {
             None => Point2::origin(),
         };
         // a synthesis places the follower relative to the cam's axis
+        let mut warnings = Vec::new();
         let (profile, synthesis) = cam.profile.build(
             scale,
             &options.base_dir,
             &follower.relative_to(pivot),
             sense,
+            &mut warnings,
         )?;
         let speed = positive(Field::Cam(CamField::SpeedRpm), cam.speed_rpm)?;
         let alpha = match cam.angular_acceleration_deg_s2 {
@@ -354,6 +373,7 @@ impl MechanismSpec {
             mechanism,
             dynamics,
             length_unit: unit,
+            warnings,
         })
     }
 }

@@ -44,7 +44,7 @@ mod profile;
 pub use crate::field::{
     CamField, DynamicsField, Field, FollowerField, Key, ProfileField, SegmentField,
 };
-pub use build::{BuildOptions, Built, LengthUnit, SpecError};
+pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;
@@ -126,6 +126,9 @@ pub struct ProfileSpec {
         )
     )]
     pub points: Option<Vec<[f64; 2]>>,
+    /// where the nodes sit in the parameter: `uniform` by default for `spline` (the paper's),
+    /// `chord-length` for `points-file`; uneven nodes under `uniform` draw a
+    /// [`SpecWarning::UnevenNodes`]
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")

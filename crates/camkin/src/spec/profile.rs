@@ -1,6 +1,8 @@
 //! Validation of `[cam.profile]`: the profile kinds, inline and file points, motion programs.
 
-use super::build::{check_kind, finite, need, point, positive, vector, Present, SpecError};
+use super::build::{
+    check_kind, finite, need, point, positive, vector, Present, SpecError, SpecWarning,
+};
 use super::ProfileSpec;
 use crate::cam::synthesis::synthesize;
 use crate::cam::{Follower, Sense};
@@ -54,6 +56,7 @@ fn spline(
     nodes: &[Point2],
     param: Parameterization,
     from: &Nodes<'_>,
+    warnings: &mut Vec<SpecWarning>,
 ) -> Result<Arc<dyn Curve>, SpecError> {
     let s = ClosedSpline::with_parameterization(nodes, param).map_err(|e| match e {
         CurveError::TooFewPoints { count } => from.whole(format!(
@@ -91,8 +94,31 @@ fn spline(
             ),
         ));
     }
+    if param == Parameterization::Uniform {
+        let n = nodes.len();
+        let chords = (0..n).map(|i| (nodes[(i + 1) % n] - nodes[i]).norm());
+        let (lo, hi) = chords.fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
+            (lo.min(c), hi.max(c))
+        });
+        if hi > UNEVEN_RATIO * lo {
+            warnings.push(SpecWarning::UnevenNodes {
+                field: Field::Profile(match from {
+                    Nodes::Inline => ProfileField::Points,
+                    Nodes::File { .. } => ProfileField::Path,
+                }),
+                ratio: hi / lo,
+            });
+        }
+    }
     Ok(Arc::new(s))
 }
+
+/// Longest over shortest chord between neighbouring nodes above which the uniform
+/// parameterisation draws a warning. Measured on a circle of 24 nodes at alternating angular
+/// steps: at a ratio of 1.5 the uniform spline's accelerations under a flat face are off by 17
+/// times their peak (chord-length: 0.07, the spline's own approximation of the circle), at 2 by
+/// 270 times; the paper's own nodes have a ratio of 1.6.
+pub const UNEVEN_RATIO: f64 = 2.0;
 
 /// The profile and, for `kind = "motion"`, its synthesis.
 type BuiltProfile = (
@@ -107,6 +133,7 @@ impl ProfileSpec {
         base: &Path,
         follower: &Follower,
         sense: Sense,
+        warnings: &mut Vec<SpecWarning>,
     ) -> Result<BuiltProfile, SpecError> {
         use ProfileField as P;
         let f = |x| Field::Profile(x);
@@ -161,7 +188,7 @@ impl ProfileSpec {
                     .enumerate()
                     .map(|(i, &q)| point(f(P::Point(i)), q).map(scaled))
                     .collect::<Result<Vec<_>, _>>()?;
-                spline(&nodes, param, &Nodes::Inline)?
+                spline(&nodes, param, &Nodes::Inline, warnings)?
             }
             "circle" => {
                 check_kind(kind, present, &["center", "radius"])?;
@@ -312,13 +339,17 @@ impl ProfileSpec {
                     },
                 })?;
                 let nodes: Vec<Point2> = nodes.into_iter().map(scaled).collect();
+                // measured or digitised points are rarely evenly spaced: chord-length unless
+                // the file says otherwise
                 spline(
                     &nodes,
-                    param,
+                    self.parameterization
+                        .unwrap_or(Parameterization::ChordLength),
                     &Nodes::File {
                         path: &file,
                         lines: &lines,
                     },
+                    warnings,
                 )?
             }
             other => {
