@@ -35,6 +35,10 @@ pub struct PaperArgs {
     /// Format of the summary on stdout.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
+    /// Allow a study estimated at over a minute or 2 GB of memory (refused otherwise, with the
+    /// estimate).
+    #[arg(long)]
+    pub large: bool,
 }
 
 #[derive(Debug, clap::Args)]
@@ -56,6 +60,10 @@ pub struct CompareArgs {
     /// Format of the summary on stdout.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
+    /// Allow a study estimated at over a minute or 2 GB of memory (refused otherwise, with the
+    /// estimate).
+    #[arg(long)]
+    pub large: bool,
 }
 
 /// Units of the follower coordinate, for labels.
@@ -336,6 +344,7 @@ fn json_summary(study: &Study) -> Value {
 
 pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let (nodes, step) = (&args.nodes.0, args.step.deg());
+    study::check_bounds(nodes, step, 2, true, args.large).map_err(Failure::Input)?;
     let mut md =
         String::from("# The paper's study: contact method against interpolated displacement\n\n");
     let mut csv = Vec::new();
@@ -365,6 +374,7 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
 
 pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
     let (nodes, step) = (&args.nodes.0, args.step.deg());
+    study::check_bounds(nodes, step, 1, args.out.is_some(), args.large).map_err(Failure::Input)?;
     let zoom = args.zoom.map(|w| (w.start, w.stop));
     let mech = load_mechanism(Some(&args.mechanism))?;
     let title = args

@@ -243,3 +243,39 @@ fn bench_runs_and_reports_every_key() {
     assert!(c["acceleration"].as_f64().unwrap() < 1e-7, "{j}");
     camkin().args(["bench", "--repeats", "0"]).assert().code(2);
 }
+
+/// Issue 12, class 6: a study estimated at over a minute, 2 GB of memory or 1 GB of files is
+/// refused up front with the estimate and the flag that allows it, and writes nothing.
+#[test]
+fn studies_that_would_take_minutes_or_gigabytes_ask_first() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("study");
+    let many = vec!["1000000"; 40].join(",");
+    for (args, needle) in [
+        (
+            vec!["compare", "MECH", "--nodes", many.as_str()],
+            "40000000 interpolation nodes in all would take about",
+        ),
+        (vec!["compare", "MECH", "--step", "0.00004"], "GB of memory"),
+        (
+            vec!["paper", "--step", "0.0001", "--out", "OUT"],
+            "write 2 GB of files",
+        ),
+    ] {
+        let args: Vec<String> = args
+            .iter()
+            .map(|a| match *a {
+                "MECH" => examples().join("paper.toml").display().to_string(),
+                "OUT" => out.display().to_string(),
+                a => a.to_string(),
+            })
+            .collect();
+        camkin()
+            .args(&args)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(needle))
+            .stderr(predicate::str::contains("--large"));
+        assert!(!out.exists(), "{args:?} wrote {}", out.display());
+    }
+}
