@@ -22,7 +22,14 @@ pub struct SynthArgs {
     /// Largest acceptable pressure angle, degrees.
     #[arg(long, value_name = "DEG", default_value_t = 30.0)]
     pub pressure_limit: f64,
+    /// Allow files estimated at over 1 GB in all (refused otherwise, with the estimate).
+    #[arg(long)]
+    pub large: bool,
 }
+
+/// Bytes written per profile point, about (CSV, DXF, SVG and the four SVAJ SVGs; measured:
+/// 5.9 MB for 36 000 points).
+const BYTES_PER_POINT: f64 = 165.0;
 
 /// A point of the synthesised profile in the cam's frame (`profile.csv`).
 #[derive(Debug, serde::Serialize)]
@@ -82,6 +89,13 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         return Err(Failure::Input(anyhow!(
             "--pressure-limit: {} must be in (0, 90) degrees",
             args.pressure_limit
+        )));
+    }
+    let points = (360.0 / step).round();
+    if points * BYTES_PER_POINT > 1024.0 * 1024.0 * 1024.0 && !args.large {
+        return Err(Failure::Input(anyhow!(
+            "--step {step}: {points} profile points would write about {} GB of files; pass --large to write them, or use a coarser --step",
+            camkin::human::human((points * BYTES_PER_POINT / 1e8).ceil() / 10.0)
         )));
     }
     let mech = load_mechanism(Some(&args.mechanism))?;

@@ -220,3 +220,22 @@ fn round_trip_of_a_program_without_acceleration_is_not_failed() {
         .stdout(predicate::str::contains("the program has no acceleration"))
         .stdout(predicate::str::contains("FAILED").not());
 }
+
+/// Issue 12, class 6: files estimated at over 1 GB are refused up front with the estimate and
+/// the flag, and nothing is written.
+#[test]
+fn a_profile_of_gigabytes_asks_first() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s");
+    camkin()
+        .arg("synth")
+        .arg(examples().join("motion-roller.toml"))
+        .arg("--out")
+        .arg(&out)
+        .args(["--step", "0.00004"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("would write about 1.5 GB"))
+        .stderr(predicate::str::contains("--large"));
+    assert!(!out.exists());
+}
