@@ -173,10 +173,18 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     let mut failed = 0;
     let mut over = Vec::new();
-    // angles where the profile is not convex at the contact (ρ ≤ 0): undercut or a concave
-    // stretch the follower cannot follow
+    // angles where the profile at the contact is concave more sharply than the follower can
+    // follow (a flat face: any concave stretch, ρ ≤ 0; a roller of radius r: −r < ρ ≤ 0; a
+    // knife follows any), or the follower rests on a cusp: undercut
     let mut folded: Vec<f64> = Vec::new();
-    let (mut rho_min, mut rho_at) = (f64::INFINITY, 0.0);
+    let concave_limit = match mech.follower_curve() {
+        FollowerCurve::Circle(roller) => -roller.radius(),
+        FollowerCurve::Line(_) => 0.0,
+        _ => f64::NEG_INFINITY,
+    };
+    // the smallest convex radius and the sharpest concave one, with their cam angles
+    let (mut convex_min, mut convex_at) = (f64::INFINITY, 0.0);
+    let (mut concave_min, mut concave_at) = (f64::NEG_INFINITY, 0.0);
     let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
     for (t, s) in thetas.iter().zip(&states) {
         // the program's peak over every angle, not only those analysed
@@ -205,11 +213,15 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         if s.pressure_angle().to_degrees().abs() > args.pressure_limit {
             over.push(t.to_degrees());
         }
-        if !(s.radius_of_curvature > 0.0) {
+        let rho = s.radius_of_curvature;
+        if concave_limit > f64::NEG_INFINITY && !(rho > 0.0 || rho < concave_limit) {
             folded.push(t.to_degrees());
         }
-        if s.radius_of_curvature < rho_min {
-            (rho_min, rho_at) = (s.radius_of_curvature, t.to_degrees());
+        if rho > 0.0 && rho < convex_min {
+            (convex_min, convex_at) = (rho, t.to_degrees());
+        }
+        if rho < 0.0 && rho > concave_min {
+            (concave_min, concave_at) = (rho, t.to_degrees());
         }
         umin = umin.min(s.follower_param);
         umax = umax.max(s.follower_param);
@@ -237,7 +249,25 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     if ea > 1e-6 * scale || failed > 0 {
         report += "round trip FAILED: the follower does not follow the synthesised profile (see the checks below)\n";
     }
-    report += &format!("smallest radius of curvature of the profile: {rho_min:.6} at {rho_at}°\n");
+    let h = camkin::human::human;
+    report += &if convex_min.is_finite() {
+        format!(
+            "smallest convex radius of curvature of the profile: {} at {}°\n",
+            h(convex_min),
+            h(convex_at)
+        )
+    } else {
+        String::new()
+    };
+    report += &if concave_min.is_finite() {
+        format!(
+            "sharpest concave radius of curvature of the profile: {} at {}° (negative: concave)\n",
+            h(concave_min),
+            h(concave_at)
+        )
+    } else {
+        "the profile is convex at every contact\n".to_string()
+    };
     let stretches = mech.unfollowable_stretches();
     let bad_span = |v: &[f64]| {
         if v.is_empty() {
@@ -246,8 +276,8 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             format!(
                 " at {} angles, from {}° to {}°",
                 v.len(),
-                v[0],
-                v[v.len() - 1]
+                camkin::human::human(v[0]),
+                camkin::human::human(v[v.len() - 1])
             )
         }
     };
@@ -282,10 +312,10 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     } else {
         format!(
             "pressure angle: beyond ±{}° at {} angles, from {}° to {}°\n",
-            args.pressure_limit,
+            h(args.pressure_limit),
             over.len(),
-            over[0],
-            over[over.len() - 1]
+            h(over[0]),
+            h(over[over.len() - 1])
         )
     };
     if failed > 0 {

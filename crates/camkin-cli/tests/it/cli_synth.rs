@@ -239,3 +239,59 @@ fn a_profile_of_gigabytes_asks_first() {
         .stderr(predicate::str::contains("--large"));
     assert!(!out.exists());
 }
+
+/// Issue 12, class 3 (regression: "undercut" reported on a roller cam whose concave radii, ≥ 38,
+/// are far larger than its roller, 10): a concave stretch a roller fits in is no undercut. The
+/// sharpest concave radius reported is checked against the closed form of the pitch curve
+/// `r_p(θ) = R_b + r + s(θ)` (cycloidal rise), whose radius of curvature is
+/// `(r_p² + r_p'²)^{3/2} / (r_p² + 2 r_p'² − r_p r_p'')`; the profile's is that minus `r`.
+#[test]
+fn concave_stretches_a_roller_fits_in_are_no_undercut() {
+    let dir = tempfile::tempdir().unwrap();
+    let (base, rise, beta, roller) = (40.0f64, 30.0f64, 90.0f64, 10.0f64);
+    let m = motion_file(
+        dir.path(),
+        &format!("[follower]\nkind = \"translating-roller\"\ndirection = [0.0, 1.0]\nroller_radius = {roller}\n"),
+        base,
+        rise,
+        beta,
+    );
+    let a = camkin()
+        .arg("synth")
+        .arg(&m)
+        .arg("--out")
+        .arg(dir.path().join("c"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("undercut: none"));
+    let out = String::from_utf8(a.get_output().stdout.clone()).unwrap();
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("sharpest concave radius of curvature of the profile: "))
+        .unwrap_or_else(|| panic!("{out}"));
+    let words: Vec<&str> = line.split_whitespace().collect();
+    let rho: f64 = words[8].parse().unwrap();
+    let at: f64 = words[10].trim_end_matches('°').parse().unwrap();
+    // the pitch curve's radius at program angle `at`: the rise spans 0…β, the return (its
+    // mirror, s = rise − rise's s) 180°…180° + β
+    let b = beta.to_radians();
+    let (x, sign) = if at < beta {
+        (at.to_radians(), 1.0)
+    } else {
+        assert!((180.0..180.0 + beta).contains(&at), "{line}");
+        ((at - 180.0).to_radians(), -1.0)
+    };
+    let k = std::f64::consts::TAU / b;
+    let cyc = rise * (x / b - (k * x).sin() / std::f64::consts::TAU);
+    let s = if sign > 0.0 { cyc } else { rise - cyc };
+    let s1 = sign * rise / b * (1.0 - (k * x).cos());
+    let s2 = sign * rise / b * k * (k * x).sin();
+    let r = base + roller + s;
+    let rho_p = (r * r + s1 * s1).powf(1.5) / (r * r + 2.0 * s1 * s1 - r * s2);
+    assert!(rho_p < 0.0 && rho_p.abs() > roller, "{rho_p}");
+    assert!(
+        (rho - (rho_p - roller)).abs() <= 1e-5 * rho.abs(),
+        "{line}: closed form {}",
+        rho_p - roller
+    );
+}
