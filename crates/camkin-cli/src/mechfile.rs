@@ -98,8 +98,18 @@ pub fn parse_dynamics(
 
 /// The spec in a mechanism file's text.
 pub fn parse_spec(text: &str, name: &str) -> Result<MechanismSpec, InputError> {
-    toml::from_str(text).map_err(|e| InputError {
-        message: format!("{name}: {e}"),
+    // the path of the value that failed (`follower.direction`), which the TOML error's own
+    // message does not name for a value of the wrong shape
+    serde_path_to_error::deserialize(toml::Deserializer::new(text)).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        InputError {
+            message: if path.is_empty() || path == "." {
+                format!("{name}: {inner}")
+            } else {
+                format!("{name}: {path}: {inner}")
+            },
+        }
     })
 }
 

@@ -104,4 +104,73 @@ proptest! {
             }
         }
     }
+
+    /// Issue 12, class 1: a pair of any length but two (`direction`, `pivot`, `center`,
+    /// `semi_axes`, a spline point, `gravity`) is refused, naming the field, never read as its
+    /// first two numbers.
+    #[test]
+    fn pairs_of_any_other_length_are_refused_naming_the_field(
+        which in 0usize..6,
+        values in prop::collection::vec(-5.0f64..5.0, 0..7),
+    ) {
+        prop_assume!(values.len() != 2);
+        let list = format!("[{}]", values.iter().map(|v| format!("{v:.3}")).collect::<Vec<_>>().join(", "));
+        let circle = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [0.5, 0]\nradius = 2\n";
+        let (text, field) = match which {
+            0 => (format!("{circle}[follower]\nkind = \"translating-flat\"\ndirection = {list}\n"), "follower.direction"),
+            1 => (format!("{circle}[follower]\nkind = \"oscillating-flat\"\npivot = {list}\n"), "follower.pivot"),
+            2 => (format!("{}[follower]\nkind = \"translating-flat\"\n", circle.replace("[0.5, 0]", &list)), "cam.profile.center"),
+            3 => (format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = {list}\n[follower]\nkind = \"translating-flat\"\n"), "cam.profile.semi_axes"),
+            4 => (format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"spline\"\npoints = [[3, 0], [0, 3], {list}, [0, -3]]\n[follower]\nkind = \"translating-flat\"\n"), "cam.profile.points"),
+            _ => (format!("length_unit = \"mm\"\n{circle}[follower]\nkind = \"translating-flat\"\n[dynamics]\nmass = 1\nspring_stiffness = 100\nspring_preload = 10\ngravity = {list}\n"), "dynamics.gravity"),
+        };
+        let err = if which == 5 {
+            camkin_cli::mechfile::parse_dynamics(&text, "m.toml", Path::new(".")).err()
+        } else {
+            parse(&text, "m.toml", Path::new(".")).err()
+        };
+        let msg = err.map(|e| e.message);
+        prop_assert!(msg.as_ref().is_some_and(|m| m.contains(field) && m.starts_with("m.toml:")), "{text}\n{msg:?}");
+    }
+
+    /// Issue 12, class 2: any magnitude of speed (1e-300 … 1e300 rpm) and of every length
+    /// (1e-150 … 1e150) is either computed, with finite numbers, or refused naming its field.
+    #[test]
+    fn any_magnitude_is_computed_finite_or_refused_by_field(
+        speed_exp in -300.0f64..300.0,
+        length_exp in -150.0f64..150.0,
+        theta in 0.0f64..6.3,
+        roller in any::<bool>(),
+    ) {
+        let (w, k) = (10f64.powf(speed_exp), 10f64.powf(length_exp));
+        let follower = if roller {
+            format!("kind = \"translating-roller\"\ndirection = [0, 1]\noffset = {:e}\nroller_radius = {:e}\n", 0.3 * k, 0.8 * k)
+        } else {
+            "kind = \"translating-flat\"\n".to_string()
+        };
+        let text = format!(
+            "[cam]\nspeed_rpm = {w:e}\n[cam.profile]\nkind = \"circle\"\ncenter = [{:e}, 0]\nradius = {:e}\n[follower]\n{follower}",
+            0.5 * k,
+            2.0 * k
+        );
+        match parse(&text, "m.toml", Path::new(".")) {
+            Ok(m) => {
+                let s = m.analyze(theta);
+                prop_assert!(s.is_ok(), "{text}\n{:?}", s.err());
+                let s = s.unwrap();
+                prop_assert!(s.position.is_finite() && s.velocity.is_finite() && s.acceleration.is_finite() && s.jerk.is_none_or(f64::is_finite), "{text}\n{s:?}");
+                // and scaled: the flat face's position is R + e cos θ
+                if !roller {
+                    prop_assert!((s.position / k - (2.0 + 0.5 * theta.cos())).abs() < 1e-12, "{text}\n{s:?}");
+                }
+            }
+            Err(e) => {
+                let msg = e.message;
+                prop_assert!(
+                    msg.starts_with("m.toml:") && (msg.contains("cam.speed_rpm") || msg.contains("cam.profile") || msg.contains("follower.")),
+                    "{text}\n{msg}"
+                );
+            }
+        }
+    }
 }
