@@ -29,7 +29,8 @@ pub struct Args {
     /// Output file (written atomically); standard output without it.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
-    /// Allow output over 1 GiB (refused otherwise, with the estimate).
+    /// Allow output over 1 GiB or a run estimated at over 30 s (refused otherwise, with the
+    /// estimate).
     #[arg(long)]
     pub large: bool,
 }
@@ -103,6 +104,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             angles.len() as f64 * 1e-6
         )));
     }
+    crate::check_sweep_time(&mech, angles.len(), 1, args.large)?;
     let contiguous = args.at.is_none();
     let stretches = mech.unfollowable_stretches();
     let mut sweep = mech.sweep();

@@ -22,6 +22,9 @@ pub struct BenchArgs {
     /// Repetitions of each measurement (the median is reported).
     #[arg(long, default_value_t = 15)]
     pub repeats: usize,
+    /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
+    #[arg(long)]
+    pub large: bool,
 }
 
 /// What a caller uses of one query: its position, velocity and acceleration, folded into one
@@ -64,6 +67,13 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
     opts.jerk = false;
     mech.set_options(opts);
     let r = args.repeats;
+    // cold queries and two timed sweeps of SWEEP_REVOLUTIONS revolutions per repetition, one
+    // revolution for the baseline's reference, the baseline's nodes twice per repetition
+    let per_revolution = (360.0 / SWEEP_STEP_DEG).round() as usize;
+    let work = r
+        * (1000 + 2 * SWEEP_REVOLUTIONS * per_revolution + 2 * NODES.iter().sum::<usize>())
+        + per_revolution;
+    crate::check_sweep_time(&mech, work, 1, args.large)?;
 
     // cold queries at scattered angles
     let cold: Vec<f64> = (0..1000)

@@ -382,6 +382,9 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
         .file_stem()
         .map(|s| s.to_string_lossy().to_string())
         .unwrap_or_else(|| "mechanism".into());
+    // the grid, and every interpolation node twice (built twice, for its timing)
+    let grid = (360.0 / step).round() as usize;
+    crate::check_sweep_time(&mech, grid + 2 * nodes.iter().sum::<usize>(), 1, args.large)?;
     let study = study::run(&mech, nodes, step, &title).map_err(Failure::Input)?;
     if let Some(dir) = &args.out {
         write_files(&study, &mech, dir, &title, "length", zoom).map_err(Failure::output)?;

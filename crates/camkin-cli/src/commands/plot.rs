@@ -32,6 +32,9 @@ pub struct PlotArgs {
     /// Frames of the animation over one revolution.
     #[arg(long, value_name = "N", default_value_t = 72)]
     pub frames: usize,
+    /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
+    #[arg(long)]
+    pub large: bool,
 }
 
 fn rgb(c: scene::Rgb) -> RGBColor {
@@ -210,6 +213,13 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         )));
     }
     let mech = load_mechanism(args.mechanism.as_ref())?;
+    let curve_angles = (360.0 / step).round() as usize;
+    crate::check_sweep_time(
+        &mech,
+        curve_angles + args.frames + angles.len(),
+        1,
+        args.large,
+    )?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))
         .map_err(Failure::Input)?;

@@ -98,6 +98,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     }
     let (mech, params) =
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    // the jump scan at the start (every 0.25°) and the kinematic motion beside every row
+    crate::check_sweep_time(&mech, 1441 + outputs, 1, args.large)?;
     if !args.start_angle.is_finite() {
         return Err(Failure::Input(anyhow!(
             "--start-angle: {} must be finite",

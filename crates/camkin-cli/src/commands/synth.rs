@@ -22,7 +22,8 @@ pub struct SynthArgs {
     /// Largest acceptable pressure angle, degrees.
     #[arg(long, value_name = "DEG", default_value_t = 30.0)]
     pub pressure_limit: f64,
-    /// Allow files estimated at over 1 GB in all (refused otherwise, with the estimate).
+    /// Allow files estimated at over 1 GB in all, or a run estimated at over 30 s (refused
+    /// otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
 }
@@ -99,6 +100,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         )));
     }
     let mech = load_mechanism(Some(&args.mechanism))?;
+    crate::check_sweep_time(&mech, points as usize, 1, args.large)?;
     let profile = mech.cam().profile();
     let Some(synth) = mech.cam().synthesis() else {
         return Err(Failure::Input(anyhow!(
