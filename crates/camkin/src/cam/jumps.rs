@@ -1,7 +1,6 @@
 //! Where the contact jumps: rows of a sweep flagged by the warm start's guard, or whose contact
 //! passed over a stretch the follower cannot follow.
 
-use super::follower::Kind as _;
 use super::{CamError, FollowerState, Found, Mechanism};
 use crate::curve::Domain;
 
@@ -54,35 +53,15 @@ pub fn contact_jumps_with(
 }
 
 impl Mechanism {
-    /// A rough estimate of the seconds a warm-started sweep over `angles` cam angles takes, for
-    /// refusing work of minutes up front: about a microsecond a step on a convex profile; on a
-    /// non-convex one every step scans the profile's dense samples (16 a spline piece), at about
-    /// 50 ns a sample, 110 ns for a knife or a roller whose scan evaluates the tangent (measured
-    /// on a 100 000-node points file, 2-core host).
-    pub fn sweep_seconds_estimate(&self, angles: usize) -> f64 {
-        let per_step = if self.convex {
-            1e-6
-        } else {
-            let per_sample = if self.geometry.model.centre_path().is_some() {
-                110e-9
-            } else {
-                50e-9
-            };
-            1e-6 + self.samples.len() as f64 * per_sample
-        };
-        angles as f64 * per_step
-    }
-
-    /// The number of dense samples of the profile the global search scans.
-    pub fn sample_count(&self) -> usize {
-        self.samples.len()
-    }
-
     /// Cam angles (degrees, in `[0, 360)`) at which the contact jumps over a revolution sampled
     /// every `step_deg` degrees: the end angle of every step across which the contact left one
     /// part of the profile for another (see [`contact_jumps`]). Empty for a follower that stays
     /// on the profile all round.
     pub fn jump_angles(&self, step_deg: f64) -> Vec<f64> {
+        // on a convex profile the first touch moves continuously: nothing to scan
+        if self.convex {
+            return Vec::new();
+        }
         let n = (360.0 / step_deg).ceil().max(1.0) as usize;
         let angles: Vec<f64> = (0..=n).map(|k| k as f64 * 360.0 / n as f64).collect();
         let mut sweep = self.sweep();

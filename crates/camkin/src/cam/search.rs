@@ -153,9 +153,10 @@ impl Mechanism {
     /// from the path has a local minimum, its true minimum is located and, when it crosses the
     /// path, both crossings become candidates.
     ///
-    /// Returns the best exact first-touch score of the sampled profile points (a lower bound of
-    /// the first touch; `−∞` for a knife, whose samples are not touches).
-    fn path_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) -> f64 {
+    /// With `bound`, returns the best exact first-touch score of the sampled profile points (a
+    /// lower bound of the first touch; `−∞` for a knife, whose samples are not touches, and
+    /// without `bound`).
+    fn path_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates, bound: bool) -> f64 {
         let Some((path, r)) = self.geometry.model.centre_path() else {
             return f64::NEG_INFINITY;
         };
@@ -172,8 +173,10 @@ impl Mechanism {
                 frame.curve_position(profile, u)
             } else {
                 let d = profile.eval(u);
-                if let Some((sc, _)) = model.score(frame * d.p) {
-                    best.set(best.get().max(sc));
+                if bound {
+                    if let Some((sc, _)) = model.score(frame * d.p) {
+                        best.set(best.get().max(sc));
+                    }
                 }
                 let len = d.d1.norm();
                 let local = if len > 0.0 {
@@ -335,7 +338,7 @@ impl Mechanism {
             // scan finds the outer crossing unless the path only grazes it (then the dense scan)
             let start = if on_path {
                 let mut c = Candidates::new(1);
-                self.path_starts(frame, &self.coarse, &mut c);
+                self.path_starts(frame, &self.coarse, &mut c, false);
                 c.as_slice().first().copied()
             } else {
                 self.best_sample(frame, &self.coarse)
@@ -352,7 +355,7 @@ impl Mechanism {
         let best_sample = if on_path {
             // starts from the crossings; a roller's sampled scores (exact first touches of the
             // points it reaches) still bound the result from below
-            self.path_starts(frame, &self.samples, &mut starts)
+            self.path_starts(frame, &self.samples, &mut starts, true)
         } else {
             self.score_starts(frame, &self.samples, &mut starts)
         };

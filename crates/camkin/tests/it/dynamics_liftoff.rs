@@ -53,12 +53,13 @@ impl Run {
     }
 }
 
-fn run(speed_factor: f64, sense: Sense, beta: f64) -> Run {
-    let w = speed_factor * w_crit();
+/// The eccentric disc (centre at `E` in direction `beta`) turning at `w` rad/s in `sense` under
+/// a flat face travelling along x.
+fn eccentric_flat(w: f64, sense: Sense, beta: f64) -> Mechanism {
     let disc = Arc::new(
         camkin::curve::Circle::new(Point2::new(E * beta.cos(), E * beta.sin()), R).unwrap(),
     );
-    let m = mechanism(
+    mechanism(
         disc,
         Point2::origin(),
         sense,
@@ -66,16 +67,26 @@ fn run(speed_factor: f64, sense: Sense, beta: f64) -> Run {
         Follower::TranslatingFlat {
             direction: Vec2::x(),
         },
-    );
-    let p = FollowerDynamics {
+    )
+}
+
+/// The follower: mass `M` on the spring `K`, `F0`, with damping `c` (N·s/m).
+fn follower(c: f64) -> FollowerDynamics {
+    FollowerDynamics {
         mass: M,
         inertia: 0.0,
         spring_stiffness: K,
         spring_preload: F0,
-        damping: 0.0,
+        damping: c,
         restitution: REST,
         gravity: Vec2::zeros(),
-    };
+    }
+}
+
+fn run(speed_factor: f64, sense: Sense, beta: f64) -> Run {
+    let w = speed_factor * w_crit();
+    let m = eccentric_flat(w, sense, beta);
+    let p = follower(0.0);
     // start where the contact force is largest (φ = π) and run one revolution
     let sigma = sense.sign();
     let theta0 = sigma * (PI - beta);
@@ -225,27 +236,8 @@ fn a_start_with_a_tensile_contact_force_is_in_flight_from_time_zero() {
         let beta: f64 = 0.3;
         let sigma = sense.sign();
         let w = 1.02 * w_crit();
-        let disc = Arc::new(
-            camkin::curve::Circle::new(Point2::new(E * beta.cos(), E * beta.sin()), R).unwrap(),
-        );
-        let m = mechanism(
-            disc,
-            Point2::origin(),
-            sense,
-            w * 60.0 / TAU,
-            Follower::TranslatingFlat {
-                direction: Vec2::x(),
-            },
-        );
-        let p = FollowerDynamics {
-            mass: M,
-            inertia: 0.0,
-            spring_stiffness: K,
-            spring_preload: F0,
-            damping: 0.0,
-            restitution: REST,
-            gravity: Vec2::zeros(),
-        };
+        let m = eccentric_flat(w, sense, beta);
+        let p = follower(0.0);
         // φ = σθ + β = 0 at the start: the top of the stroke
         let theta0 = -sigma * beta;
         let analytic_force = -M * E * w * w + F0 + 2.0 * K * E;
@@ -281,28 +273,9 @@ fn a_start_with_a_tensile_contact_force_is_in_flight_from_time_zero() {
 fn a_step_too_long_for_the_damping_is_refused_and_the_longest_allowed_is_stable() {
     let beta: f64 = 0.0;
     let w = 1.2 * w_crit();
-    let disc = Arc::new(
-        camkin::curve::Circle::new(Point2::new(E * beta.cos(), E * beta.sin()), R).unwrap(),
-    );
-    let m = mechanism(
-        disc,
-        Point2::origin(),
-        Sense::Ccw,
-        w * 60.0 / TAU,
-        Follower::TranslatingFlat {
-            direction: Vec2::x(),
-        },
-    );
+    let m = eccentric_flat(w, Sense::Ccw, beta);
     let c = 2000.0; // N·s/m: c/m = 6667 /s, far above √(k/m) = 82 /s
-    let p = FollowerDynamics {
-        mass: M,
-        inertia: 0.0,
-        spring_stiffness: K,
-        spring_preload: F0,
-        damping: c,
-        restitution: REST,
-        gravity: Vec2::zeros(),
-    };
+    let p = follower(c);
     let mut sim = Simulation::starting_at(&m, p, AugmentedLagrangian::default(), 0.0).unwrap();
     let (cm, km) = (c / M, K / M);
     let rate = 0.5 * (cm + (cm * cm - 4.0 * km).sqrt());

@@ -116,13 +116,8 @@ impl Joint {
     pub(crate) fn branch(&self, q: f64) -> (f64, f64) {
         match *self {
             Joint::Translating { .. } => (q, q),
-            Joint::Rotating {
-                closing,
-                initial_angle,
-                toward_cam,
-                ..
-            } => (
-                -closing.sign() * crate::geometry::wrap_angle_near(q, toward_cam),
+            Joint::Rotating { initial_angle, .. } => (
+                self.oriented(q),
                 crate::geometry::wrap_angle_near(q, initial_angle),
             ),
         }
