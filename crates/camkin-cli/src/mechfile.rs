@@ -212,13 +212,13 @@ mod tests {
             "{e}"
         );
         let e = err(&PAPER_TOML.replace("kind = \"spline\"", "kind = \"blob\""));
-        assert!(e.contains("\"blob\"") && e.contains("m.toml:9:8:"), "{e}");
+        assert!(e.contains("\"blob\"") && e.contains("m.toml:11:8:"), "{e}");
         let e = err(&PAPER_TOML.replace("speed_rpm = 1000.0", "speed_rpm = -5.0"));
         assert!(
-            e.contains("cam.speed_rpm = -5") && e.contains("m.toml:4:"),
+            e.contains("cam.speed_rpm = -5") && e.contains("m.toml:6:"),
             "{e}"
         );
         let e = err(&PAPER_TOML.replace("speed_rpm = 1000.0", "speed_rpm = \"fast\""));
-        assert!(e.contains("line 4") && e.contains("speed_rpm"), "{e}");
+        assert!(e.contains("line 6") && e.contains("speed_rpm"), "{e}");
     }
 }

@@ -125,8 +125,8 @@ fn bad_input_exits_2_with_a_message_naming_the_problem() {
         (write("kind.toml", &paper.replace("kind = \"spline\"", "kind = \"blob\"")), "blob"),
         (write("speed.toml", &paper.replace("speed_rpm = 1000.0", "speed_rpm = -5.0")), "speed_rpm"),
         (write("few.toml", &paper.replace("points = [[5.0, 0.0], [3.4, 2.8], [0.6, 3.4], [-1.5, 2.6], [-2.8, 1.0],\n          [-2.8, -1.0], [-1.5, -2.6], [0.6, -3.4], [3.4, -2.8]]", "points = [[1.0, 0.0], [0.0, 1.0]]")), "at least 3"),
-        (write("radius.toml", "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = -1\n[follower]\nkind = \"translating-flat\"\n"), "radius"),
-        (write("pfile.toml", "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"points-file\"\npath = \"nope.csv\"\n[follower]\nkind = \"translating-flat\"\n"), "nope.csv"),
+        (write("radius.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = -1\n[follower]\nkind = \"translating-flat\"\n"), "radius"),
+        (write("pfile.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"points-file\"\npath = \"nope.csv\"\n[follower]\nkind = \"translating-flat\"\n"), "nope.csv"),
     ];
     for (path, needle) in cases {
         camkin()
@@ -144,7 +144,7 @@ fn bad_input_exits_2_with_a_message_naming_the_problem() {
 fn follower_that_never_touches_is_bad_input() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("far.toml");
-    std::fs::write(&p, "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 5.0\n").unwrap();
+    std::fs::write(&p, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 5.0\n").unwrap();
     camkin()
         .arg("analyze")
         .arg(&p)
@@ -161,7 +161,7 @@ fn rows_where_the_follower_misses_carry_the_error() {
     // while the cam's far side passes
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("some.toml");
-    std::fs::write(&p, "[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0.8, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 1.5\n").unwrap();
+    std::fs::write(&p, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0.8, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 1.5\n").unwrap();
     let out = camkin()
         .arg("analyze")
         .arg(&p)
@@ -259,7 +259,7 @@ fn congruent_angles_give_the_same_row() {
 fn dotted_keys_and_wordy_headers_are_valid() {
     let dir = tempfile::tempdir().unwrap();
     let m = dir.path().join("dotted.toml");
-    std::fs::write(&m, "cam.speed_rpm = 1000.0\ncam.profile.kind = \"points-file\"\ncam.profile.path = \"p.csv\"\nfollower.kind = \"translating-flat\"\n").unwrap();
+    std::fs::write(&m, "length_unit = \"mm\"\ncam.speed_rpm = 1000.0\ncam.profile.kind = \"points-file\"\ncam.profile.path = \"p.csv\"\nfollower.kind = \"translating-flat\"\n").unwrap();
     std::fs::write(
         dir.path().join("p.csv"),
         "x_info,y_info\n4,0\n0,4\n-4,0\n0,-4\n",
@@ -280,7 +280,7 @@ fn dotted_keys_and_wordy_headers_are_valid() {
 fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
     let dir = tempfile::tempdir().unwrap();
     let m = dir.path().join("peanut.toml");
-    std::fs::write(&m, "[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n").unwrap();
+    std::fs::write(&m, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n").unwrap();
     let out = dir.path().join("rows.csv");
     // 0.005° over a revolution: 72 000 rows, two chunks
     camkin()
@@ -393,7 +393,7 @@ fn uneven_points_under_uniform_parameterisation_warn_and_files_default_to_chord_
     let csv: String = pts.iter().map(|(x, y)| format!("{x},{y}\n")).collect();
     std::fs::write(dir.path().join("p.csv"), csv).unwrap();
     let inline: Vec<String> = pts.iter().map(|(x, y)| format!("[{x}, {y}]")).collect();
-    let head = "[cam]\nspeed_rpm = 60\n[cam.profile]\n";
+    let head = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 60\n[cam.profile]\n";
     let flat = "[follower]\nkind = \"translating-flat\"\n";
     let run = |name: &str, text: String| {
         let p = dir.path().join(name);
@@ -467,7 +467,7 @@ fn sweeps_of_minutes_on_a_large_non_convex_profile_ask_first() {
     let m = dir.path().join("m.toml");
     std::fs::write(
         &m,
-        "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"points-file\"\npath = \"p.csv\"\n[follower]\nkind = \"translating-roller\"\nroller_radius = 0.5\n",
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"points-file\"\npath = \"p.csv\"\n[follower]\nkind = \"translating-roller\"\nroller_radius = 0.5\n",
     )
     .unwrap();
     for args in [

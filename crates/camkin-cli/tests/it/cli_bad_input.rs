@@ -5,9 +5,10 @@ use crate::common::predicate;
 use crate::common::*;
 
 const CIRCLE: &str =
-    "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [0.5, 0]\nradius = 2\n";
+    "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [0.5, 0]\nradius = 2\n";
 const FLAT: &str = "[follower]\nkind = \"translating-flat\"\n";
-const SPLINE_HEAD: &str = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"spline\"\n";
+const SPLINE_HEAD: &str =
+    "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"spline\"\n";
 
 /// Runs `camkin analyze` on `toml` (with extra files) and checks exit code 2, every needle in
 /// stderr, no panic and no output file.
@@ -38,7 +39,7 @@ fn bad(name: &str, toml: &str, files: &[(&str, &str)], needles: &[&str]) {
 fn missing_and_unknown_fields() {
     bad(
         "missing speed",
-        &format!("[cam]\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n{FLAT}"),
+        &format!("length_unit = \"mm\"\n[cam]\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n{FLAT}"),
         &[],
         &["missing field `speed_rpm`"],
     );
@@ -46,7 +47,7 @@ fn missing_and_unknown_fields() {
         "missing radius",
         &format!("{}\n{FLAT}", CIRCLE.replace("radius = 2\n", "")),
         &[],
-        &["needs `radius`", "m.toml:4:"],
+        &["needs `radius`", "m.toml:5:"],
     );
     bad(
         "missing follower",
@@ -71,7 +72,7 @@ fn missing_and_unknown_fields() {
         "foreign field",
         &format!("{CIRCLE}points = [[0, 0]]\n{FLAT}"),
         &[],
-        &["takes no `points`", "m.toml:7:"],
+        &["takes no `points`", "m.toml:8:"],
     );
     bad(
         "foreign follower field",
@@ -83,7 +84,7 @@ fn missing_and_unknown_fields() {
         "unknown kind",
         &format!("{CIRCLE}[follower]\nkind = \"rocker\"\n"),
         &[],
-        &["follower.kind = \"rocker\"", "m.toml:8:"],
+        &["follower.kind = \"rocker\"", "m.toml:9:"],
     );
 }
 
@@ -96,13 +97,13 @@ fn wrong_types_and_non_finite_numbers() {
             CIRCLE.replace("speed_rpm = 100", "speed_rpm = \"fast\"")
         ),
         &[],
-        &["line 2", "speed_rpm", "\"fast\""],
+        &["line 3", "speed_rpm", "\"fast\""],
     );
     bad(
         "string radius",
         &format!("{}{FLAT}", CIRCLE.replace("radius = 2", "radius = \"big\"")),
         &[],
-        &["line 6", "\"big\""],
+        &["line 7", "\"big\""],
     );
     bad(
         "point arity",
@@ -111,13 +112,13 @@ fn wrong_types_and_non_finite_numbers() {
             CIRCLE.replace("center = [0.5, 0]", "center = [0.5]")
         ),
         &[],
-        &["line 5"],
+        &["line 6"],
     );
     bad(
         "nan radius",
         &format!("{}{FLAT}", CIRCLE.replace("radius = 2", "radius = nan")),
         &[],
-        &["cam.profile.radius = NaN", "m.toml:6:"],
+        &["cam.profile.radius = NaN", "m.toml:7:"],
     );
     bad(
         "inf speed",
@@ -171,7 +172,7 @@ fn out_of_range_values() {
         &[],
         &["cam.profile.radius = -1", "positive"],
     );
-    bad("zero semi-axis", &format!("[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = [2, 0]\n{FLAT}"), &[], &["cam.profile.semi_axes = [2, 0]"]);
+    bad("zero semi-axis", &format!("length_unit = \"mm\"\n[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = [2, 0]\n{FLAT}"), &[], &["cam.profile.semi_axes = [2, 0]"]);
     bad(
         "zero direction",
         &format!("{CIRCLE}{FLAT}direction = [0, 0]\n"),
@@ -199,7 +200,7 @@ fn bad_points_inline_and_in_files() {
         "repeated",
         &format!("{SPLINE_HEAD}points = [[1, 0], [0, 1], [0, 1], [-1, 0]]\n{FLAT}"),
         &[],
-        &["points 1 and 2 coincide at (0, 1)", "m.toml:5:"],
+        &["points 1 and 2 coincide at (0, 1)", "m.toml:6:"],
     );
     bad(
         "repeated across the seam",
@@ -207,7 +208,7 @@ fn bad_points_inline_and_in_files() {
         &[],
         &["points 3 and 0 coincide"],
     );
-    let pf = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"points-file\"\npath = \"p.csv\"\n[follower]\nkind = \"translating-flat\"\n";
+    let pf = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"points-file\"\npath = \"p.csv\"\n[follower]\nkind = \"translating-flat\"\n";
     bad(
         "missing file",
         pf,
@@ -300,7 +301,7 @@ fn huge_inputs_are_refused_quickly() {
     assert!(text.len() < 16 << 20);
     std::fs::write(dir.path().join("big.csv"), &text).unwrap();
     let mech = dir.path().join("m.toml");
-    std::fs::write(&mech, "[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"points-file\"\npath = \"big.csv\"\n[follower]\nkind = \"translating-flat\"\n").unwrap();
+    std::fs::write(&mech, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"points-file\"\npath = \"big.csv\"\n[follower]\nkind = \"translating-flat\"\n").unwrap();
     camkin()
         .arg("analyze")
         .arg(&mech)
@@ -354,7 +355,7 @@ fn degenerate_geometry_is_reported_not_hidden() {
     let mech = dir.path().join("peanut.toml");
     std::fs::write(
         &mech,
-        "[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n",
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n",
     )
     .unwrap();
     let a = camkin()
@@ -396,7 +397,7 @@ fn degenerate_geometry_is_reported_not_hidden() {
 
 #[test]
 fn bad_motion_profiles() {
-    let head = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 4\n";
+    let head = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 4\n";
     let foll = "[follower]\nkind = \"translating-flat\"\n";
     bad("unknown law", &format!("{head}segments = [{{ law = \"parabolic\", rise = 1, degrees = 180 }}, {{ law = \"dwell\", degrees = 180 }}]\n{foll}"), &[], &["law = \"parabolic\" is not a law", "cycloidal"]);
     bad(
@@ -417,7 +418,7 @@ fn bad_motion_profiles() {
         &[],
         &["takes no `radius`"],
     );
-    bad("no base radius", &format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nsegments = [{{ law = \"dwell\", degrees = 360 }}]\n{foll}"), &[], &["needs `base_radius`"]);
+    bad("no base radius", &format!("length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nsegments = [{{ law = \"dwell\", degrees = 360 }}]\n{foll}"), &[], &["needs `base_radius`"]);
 }
 
 /// Issue 12, class 1: data that was silently accepted. Every pair of the wrong length, in every
@@ -431,7 +432,7 @@ fn pairs_of_the_wrong_length_are_refused_everywhere() {
         ("empty direction", format!("{CIRCLE}[follower]\nkind = \"translating-flat\"\ndirection = []\n"), "found 0 numbers"),
         ("cam pivot", format!("{}{FLAT}", CIRCLE.replace("speed_rpm = 100\n", "speed_rpm = 100\npivot = [0, 0, 1]\n")), "found 3 numbers"),
         ("centre", format!("{}{FLAT}", CIRCLE.replace("center = [0.5, 0]", "center = [0.5, 0, 7]")), "[0.5, 0.0, 7.0]"),
-        ("semi-axes", format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = [3, 2, 1]\n{FLAT}"), "found 3 numbers"),
+        ("semi-axes", format!("length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = [3, 2, 1]\n{FLAT}"), "found 3 numbers"),
         ("a spline point", format!("{SPLINE_HEAD}points = [[5.0, 0.0, 1.0], [0, 5], [-5, 0], [0, -5]]\n{FLAT}"), "point 1: expected a pair"),
         ("a later spline point", format!("{SPLINE_HEAD}points = [[5.0, 0.0], [0, 5], [-5], [0, -5]]\n{FLAT}"), "point 3: expected a pair"),
         ("arm pivot", format!("{CIRCLE}[follower]\nkind = \"oscillating-roller\"\npivot = [-3, 7, 0]\narm_length = 8\nroller_radius = 1\n"), "found 3 numbers"),
@@ -459,7 +460,7 @@ fn empty_fields_and_rises_that_do_not_fit_the_law_are_refused() {
         bad(row, &pts, &[("p.csv", &csv)], &[line, "empty"]);
     }
     let motion = |segs: &str| {
-        format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40\nsegments = [{segs}]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n")
+        format!("length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40\nsegments = [{segs}]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n")
     };
     bad(
         "rise missing",

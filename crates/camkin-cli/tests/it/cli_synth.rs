@@ -73,7 +73,7 @@ fn motion_file(
     std::fs::write(
         &p,
         format!(
-            "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = {base}\nsegments = [{{ law = \"cycloidal\", rise = {rise}, degrees = {degrees} }}, {{ law = \"dwell\", degrees = {} }}, {{ law = \"cycloidal\", rise = {}, degrees = {degrees} }}, {{ law = \"dwell\", degrees = {} }}]\n{follower}",
+            "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = {base}\nsegments = [{{ law = \"cycloidal\", rise = {rise}, degrees = {degrees} }}, {{ law = \"dwell\", degrees = {} }}, {{ law = \"cycloidal\", rise = {}, degrees = {degrees} }}, {{ law = \"dwell\", degrees = {} }}]\n{follower}",
             180.0 - degrees,
             -rise,
             180.0 - degrees
@@ -207,7 +207,7 @@ fn round_trip_of_a_program_without_acceleration_is_not_failed() {
     let m = dir.path().join("cv.toml");
     std::fs::write(
         &m,
-        "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40.0\nsegments = [{ law = \"constant-velocity\", rise = 10.0, degrees = 180 }, { law = \"constant-velocity\", rise = -10.0, degrees = 180 }]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n",
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40.0\nsegments = [{ law = \"constant-velocity\", rise = 10.0, degrees = 180 }, { law = \"constant-velocity\", rise = -10.0, degrees = 180 }]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n",
     )
     .unwrap();
     camkin()

@@ -36,7 +36,7 @@ fn follower() -> impl Strategy<Value = String> {
 fn mechanism() -> impl Strategy<Value = String> {
     (1.0f64..5000.0, any::<bool>(), profile(), follower()).prop_map(|(rpm, ccw, p, f)| {
         format!(
-            "[cam]\nspeed_rpm = {rpm}\ndirection = \"{}\"\n\n[cam.profile]\n{p}\n[follower]\n{f}",
+            "length_unit = \"mm\"\n[cam]\nspeed_rpm = {rpm}\ndirection = \"{}\"\n\n[cam.profile]\n{p}\n[follower]\n{f}",
             if ccw { "ccw" } else { "cw" }
         )
     })
@@ -115,14 +115,14 @@ proptest! {
     ) {
         prop_assume!(values.len() != 2);
         let list = format!("[{}]", values.iter().map(|v| format!("{v:.3}")).collect::<Vec<_>>().join(", "));
-        let circle = "[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [0.5, 0]\nradius = 2\n";
+        let circle = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [0.5, 0]\nradius = 2\n";
         let (text, field) = match which {
             0 => (format!("{circle}[follower]\nkind = \"translating-flat\"\ndirection = {list}\n"), "follower.direction"),
             1 => (format!("{circle}[follower]\nkind = \"oscillating-flat\"\npivot = {list}\n"), "follower.pivot"),
             2 => (format!("{}[follower]\nkind = \"translating-flat\"\n", circle.replace("[0.5, 0]", &list)), "cam.profile.center"),
-            3 => (format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = {list}\n[follower]\nkind = \"translating-flat\"\n"), "cam.profile.semi_axes"),
-            4 => (format!("[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"spline\"\npoints = [[3, 0], [0, 3], {list}, [0, -3]]\n[follower]\nkind = \"translating-flat\"\n"), "cam.profile.points"),
-            _ => (format!("length_unit = \"mm\"\n{circle}[follower]\nkind = \"translating-flat\"\n[dynamics]\nmass = 1\nspring_stiffness = 100\nspring_preload = 10\ngravity = {list}\n"), "dynamics.gravity"),
+            3 => (format!("length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"ellipse\"\ncenter = [0, 0]\nsemi_axes = {list}\n[follower]\nkind = \"translating-flat\"\n"), "cam.profile.semi_axes"),
+            4 => (format!("length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"spline\"\npoints = [[3, 0], [0, 3], {list}, [0, -3]]\n[follower]\nkind = \"translating-flat\"\n"), "cam.profile.points"),
+            _ => (format!("{circle}[follower]\nkind = \"translating-flat\"\n[dynamics]\nmass = 1\nspring_stiffness = 100\nspring_preload = 10\ngravity = {list}\n"), "dynamics.gravity"),
         };
         let err = if which == 5 {
             camkin_cli::mechfile::parse_dynamics(&text, "m.toml", Path::new(".")).err()
@@ -149,7 +149,7 @@ proptest! {
             "kind = \"translating-flat\"\n".to_string()
         };
         let text = format!(
-            "[cam]\nspeed_rpm = {w:e}\n[cam.profile]\nkind = \"circle\"\ncenter = [{:e}, 0]\nradius = {:e}\n[follower]\n{follower}",
+            "length_unit = \"mm\"\n[cam]\nspeed_rpm = {w:e}\n[cam.profile]\nkind = \"circle\"\ncenter = [{:e}, 0]\nradius = {:e}\n[follower]\n{follower}",
             0.5 * k,
             2.0 * k
         );

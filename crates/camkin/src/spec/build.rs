@@ -11,21 +11,24 @@ use std::path::PathBuf;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[non_exhaustive]
 pub enum LengthUnit {
-    /// metres (the default)
+    /// metres
     #[default]
     M,
     /// centimetres
     Cm,
     /// millimetres
     Mm,
+    /// inches
+    In,
 }
 
 impl LengthUnit {
     /// All units with their names.
-    pub const ALL: [(LengthUnit, &'static str); 3] = [
+    pub const ALL: [(LengthUnit, &'static str); 4] = [
         (LengthUnit::Mm, "mm"),
         (LengthUnit::Cm, "cm"),
         (LengthUnit::M, "m"),
+        (LengthUnit::In, "in"),
     ];
     /// Metres per unit.
     pub fn metres(self) -> f64 {
@@ -33,6 +36,7 @@ impl LengthUnit {
             LengthUnit::M => 1.0,
             LengthUnit::Cm => 0.01,
             LengthUnit::Mm => 0.001,
+            LengthUnit::In => 0.0254,
         }
     }
     /// The unit's symbol.
@@ -319,7 +323,12 @@ impl MechanismSpec {
     /// Validates the spec and builds its mechanism (and dynamics). Every error names its field.
     pub fn build(&self, options: &BuildOptions) -> Result<Built, SpecError> {
         let unit = match &self.length_unit {
-            None => LengthUnit::M,
+            None => {
+                return Err(SpecError::Rule {
+                    field: Field::LengthUnit,
+                    reason: "missing: a mechanism says the unit of its lengths, e.g. length_unit = \"mm\" (mm, cm, m or in)".into(),
+                })
+            }
             Some(u) => LengthUnit::ALL
                 .iter()
                 .find(|(_, n)| n == u)
@@ -328,7 +337,7 @@ impl MechanismSpec {
                     field: Field::LengthUnit,
                     value: u.clone(),
                     what: "a unit",
-                    known: "mm, cm, m".into(),
+                    known: "mm, cm, m, in".into(),
                 })?,
         };
         let scale = if options.si { unit.metres() } else { 1.0 };

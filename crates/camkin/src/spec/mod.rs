@@ -19,6 +19,7 @@
 //! use camkin::spec::{Field, FollowerField, MechanismSpec, SpecError};
 //!
 //! let json = r#"{
+//!     "length_unit": "mm",
 //!     "cam": { "speed_rpm": 1000.0,
 //!              "profile": { "kind": "circle", "center": [0.5, 0.0], "radius": 2.0 } },
 //!     "follower": { "kind": "translating-roller", "roller_radius": 0.5 }
@@ -54,8 +55,8 @@ use crate::curve::Parameterization;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct MechanismSpec {
-    /// the unit of every length: "mm", "cm" or "m" (default "m"); converted to metres only for
-    /// simulations ([`BuildOptions::si`])
+    /// the unit of every length: "mm", "cm", "m" or "in" (required: a missing unit is an error);
+    /// converted to metres only for simulations ([`BuildOptions::si`])
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")

@@ -132,6 +132,7 @@ fn synthesis_with_the_cam_axis_off_the_origin_and_any_initial_angle_round_trips(
             ([-40.0, 7.0], -400.0f64),
         ] {
             let spec = MechanismSpec {
+                length_unit: Some("mm".into()),
                 cam: CamSpec {
                     speed_rpm: 600.0,
                     direction: Some(Sense::Ccw),

@@ -11,6 +11,7 @@ use camkin::Point2;
 
 fn circle_spec(follower: FollowerSpec) -> MechanismSpec {
     MechanismSpec {
+        length_unit: Some("mm".into()),
         cam: CamSpec {
             speed_rpm: 600.0,
             direction: Some(Sense::Cw),
@@ -37,6 +38,7 @@ fn flat() -> FollowerSpec {
 #[test]
 fn paper_spec_builds_the_papers_mechanism_bit_for_bit() {
     let spec = MechanismSpec {
+        length_unit: Some("mm".into()),
         cam: CamSpec {
             speed_rpm: 1000.0,
             profile: ProfileSpec {
@@ -227,6 +229,11 @@ fn invalid_specs_name_the_field_by_enum_and_carry_the_value() {
             |s| s.length_unit = Some("furlong".into()),
             Field::LengthUnit,
             "\"furlong\"",
+        ),
+        (
+            |s| s.length_unit = None,
+            Field::LengthUnit,
+            "length_unit: missing",
         ),
         (
             |s| {
