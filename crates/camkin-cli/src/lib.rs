@@ -1,13 +1,16 @@
 //! The `camkin` command line as a library: the mechanism-file format, the subcommands and their
 //! output. `main.rs` only parses the arguments and maps failures to exit codes (0 success,
-//! 1 internal failure, 2 bad input).
+//! 1 internal failure, 2 bad input, 3 a design check failed).
 
 pub mod args;
+pub mod columns;
 pub mod commands;
 pub mod draw;
+pub mod manufacture;
 pub mod mechfile;
 pub mod output;
 pub mod study;
+pub mod units;
 
 use std::path::PathBuf;
 
@@ -18,6 +21,8 @@ pub enum Failure {
     Input(anyhow::Error),
     /// internal failure: exit code 1
     Internal(anyhow::Error),
+    /// the run finished, but a design check failed (`synth`, `forces`): exit code 3
+    Check(anyhow::Error),
 }
 
 impl Failure {
@@ -55,14 +60,40 @@ pub fn check_sweep_time(
     Ok(())
 }
 
-pub fn load_mechanism(path: Option<&PathBuf>) -> Result<camkin::cam::Mechanism, Failure> {
+/// A mechanism as loaded, with what its file said about it.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    /// the mechanism, in the file's length unit
+    pub mech: camkin::cam::Mechanism,
+    /// the file's length unit
+    pub unit: camkin::spec::LengthUnit,
+    /// the file's name without its folder and extension (`paper` for the built-in cam), for
+    /// titles
+    pub name: String,
+}
+
+/// Loads the mechanism file, or the paper's built-in mechanism (in cm) when none is given.
+pub fn load_mechanism(path: Option<&PathBuf>) -> Result<Loaded, Failure> {
     match path {
-        Some(p) => mechfile::load(p).map_err(|e| Failure::Input(anyhow::anyhow!(e))),
+        Some(p) => {
+            let built = mechfile::load_built(p).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
+            Ok(Loaded {
+                mech: built.mechanism,
+                unit: built.length_unit,
+                name: p
+                    .file_stem()
+                    .map_or_else(|| p.display().to_string(), |s| s.to_string_lossy().into()),
+            })
+        }
         None => {
             eprintln!(
-                "camkin: no mechanism file given; using the paper's cam (examples/paper.toml)"
+                "camkin: no mechanism file given; using the paper's cam (examples/paper.toml, lengths in cm)"
             );
-            Ok(mechfile::paper())
+            Ok(Loaded {
+                mech: mechfile::paper(),
+                unit: camkin::spec::LengthUnit::Cm,
+                name: "paper".into(),
+            })
         }
     }
 }

@@ -1,6 +1,6 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
-use camkin_cli::commands::{analyze, bench, compare, plot, simulate, synth};
+use camkin_cli::commands::{analyze, bench, compare, forces, plot, profile, simulate, synth};
 use camkin_cli::Failure;
 
 use clap::{Parser, Subcommand};
@@ -8,7 +8,7 @@ use std::process::ExitCode;
 
 /// Exact cam-follower kinematics by the contact method of K. Lee (2005).
 #[derive(Debug, Parser)]
-#[command(name = "camkin", version, about, long_about = None, after_help = "Exit codes: 0 success, 1 internal failure, 2 bad input.")]
+#[command(name = "camkin", version, about, long_about = None, after_help = "Exit codes: 0 success, 1 internal failure, 2 bad input, 3 a design check failed (synth, forces).")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -51,6 +51,17 @@ enum Command {
         after_help = "Examples:\n  camkin synth examples/motion-roller.toml\n  camkin synth cam.toml --out design --step 0.25 --pressure-limit 25\n\nThe mechanism's profile must be kind = \"motion\". Exit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Synth(synth::SynthArgs),
+    /// Manufacturing output of any profile: polar table, pitch curve, cutter path, DXF of arcs.
+    #[command(
+        after_help = "Examples:\n  camkin profile examples/eccentric-roller.toml --out shop\n  camkin profile cam.toml --step 0.5 --tool-radius 8 --tolerance 0.0001\n\nWrites polar.csv, pitch.csv (rollers), cutter.csv (with --tool-radius), profile.dxf.\nExit codes: 0 success, 1 internal failure, 2 bad input, 3 the tool cannot cut the profile."
+    )]
+    Profile(profile::ProfileArgs),
+    /// Contact force, camshaft torque, jump speed, spring sizing and contact stress, with a
+    /// [dynamics] section in the file.
+    #[command(
+        after_help = "Examples:\n  camkin forces examples/eccentric-flat-dynamics.toml\n  camkin forces cam.toml --target-rpm 3000 --margin 20 --face-width 12 --materials steel,steel\n\nExit codes: 0 success, 1 internal failure, 2 bad input, 3 a check failed (contact lost below the target speed, stress over the allowable)."
+    )]
+    Forces(forces::ForcesArgs),
 }
 
 /// True when a failure is only the reader of our output going away (`camkin … | head -1`).
@@ -96,6 +107,8 @@ fn main() -> ExitCode {
         Command::Bench(args) => bench::run(&args),
         Command::Simulate(args) => simulate::run(&args),
         Command::Synth(args) => synth::run(&args),
+        Command::Profile(args) => profile::run(&args),
+        Command::Forces(args) => forces::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -107,6 +120,10 @@ fn main() -> ExitCode {
         Err(Failure::Internal(e)) => {
             eprintln!("internal error: {e:#}");
             ExitCode::from(1)
+        }
+        Err(Failure::Check(e)) => {
+            eprintln!("camkin: {e:#}");
+            ExitCode::from(3)
         }
     }
 }

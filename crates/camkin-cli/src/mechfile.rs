@@ -73,10 +73,20 @@ pub fn load(path: &Path) -> Result<Mechanism, InputError> {
     parse(&text, &name, path.parent().unwrap_or(Path::new(".")))
 }
 
-/// Reads a mechanism file for a simulation (see [`parse_dynamics`]).
-pub fn load_dynamics(path: &Path) -> Result<(Mechanism, FollowerDynamics), InputError> {
+/// Reads and builds a mechanism file in its own length unit, with its unit and warnings.
+pub fn load_built(path: &Path) -> Result<Built, InputError> {
     let (name, text) = read_text(path)?;
-    parse_dynamics(&text, &name, path.parent().unwrap_or(Path::new(".")))
+    build(&text, &name, path.parent().unwrap_or(Path::new(".")), false)
+}
+
+/// Reads a mechanism file for a simulation (see [`parse_dynamics`]).
+pub fn load_dynamics(
+    path: &Path,
+) -> Result<(Mechanism, FollowerDynamics, camkin::spec::LengthUnit), InputError> {
+    let (name, text) = read_text(path)?;
+    let b = build(&text, &name, path.parent().unwrap_or(Path::new(".")), true)?;
+    let unit = b.length_unit;
+    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError { message: format!("{name}: this command needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)") })?, unit))
 }
 
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);

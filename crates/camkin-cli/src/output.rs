@@ -183,6 +183,92 @@ pub fn write_rows<T: serde::Serialize>(
     Ok(())
 }
 
+/// One cell of a table whose column names are only known at run time (they carry units).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// a number (absent: an empty CSV cell, JSON `null`; non-finite: JSON `null`)
+    Num(Option<f64>),
+    /// a small whole number
+    Int(Option<u8>),
+    /// text
+    Text(Option<String>),
+}
+
+impl serde::Serialize for Cell {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        match self {
+            Cell::Num(Some(x)) => s.serialize_f64(*x),
+            Cell::Int(Some(x)) => s.serialize_u8(*x),
+            Cell::Text(Some(x)) => s.serialize_str(x),
+            _ => s.serialize_none(),
+        }
+    }
+}
+
+/// A row as a JSON object, keys in column order.
+#[derive(Debug)]
+pub struct Keyed<'a>(pub &'a [String], pub &'a [Cell]);
+
+impl serde::Serialize for Keyed<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(self.0.len()))?;
+        for (k, v) in self.0.iter().zip(self.1) {
+            m.serialize_entry(k, v)?;
+        }
+        m.end()
+    }
+}
+
+/// Writes rows of cells under `columns` chunk by chunk (until `next_chunk` returns `None`): CSV
+/// with the header, or a JSON array of objects keyed by the column names. Numbers keep
+/// round-trip precision.
+pub fn write_cells(
+    w: &mut dyn Write,
+    format: TableFormat,
+    columns: &[String],
+    mut next_chunk: impl FnMut() -> Option<Vec<Vec<Cell>>>,
+) -> Result<()> {
+    match format {
+        TableFormat::Csv => {
+            let mut c = csv::WriterBuilder::new().has_headers(false).from_writer(w);
+            c.write_record(columns)?;
+            while let Some(rows) = next_chunk() {
+                for r in &rows {
+                    c.serialize(r)?;
+                }
+            }
+            c.flush()?;
+        }
+        TableFormat::Json => {
+            write!(w, "[")?;
+            let mut first = true;
+            while let Some(rows) = next_chunk() {
+                for r in &rows {
+                    if !first {
+                        write!(w, ",")?;
+                    }
+                    first = false;
+                    serde_json::to_writer(&mut *w, &Keyed(columns, r))?;
+                }
+            }
+            writeln!(w, "]")?;
+        }
+    }
+    Ok(())
+}
+
+/// [`write_cells`] of rows all at once.
+pub fn write_cell_table(
+    w: &mut dyn Write,
+    format: TableFormat,
+    columns: &[String],
+    rows: Vec<Vec<Cell>>,
+) -> Result<()> {
+    let mut once = Some(rows);
+    write_cells(w, format, columns, || once.take())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -244,9 +330,9 @@ mod tests {
         let text = String::from_utf8(out).unwrap();
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines.len(), 3);
-        assert!(lines[0].starts_with("angle_deg,position,velocity,acceleration,"));
+        assert!(lines[0].starts_with("angle_deg,position,lift,velocity,acceleration,"));
         let n = lines[0].split(',').count();
-        assert_eq!(n, 24);
+        assert_eq!(n, 25);
         assert_eq!(lines[1].split(',').count(), n);
         let err: Vec<&str> = lines[2].split(',').collect();
         assert_eq!(err.len(), n);

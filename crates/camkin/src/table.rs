@@ -33,6 +33,9 @@ pub struct AnalysisRow {
     pub angle_deg: f64,
     /// follower position: distance from the cam axis (translating), arm angle in rad (oscillating)
     pub position: Option<f64>,
+    /// lift: how far the follower is from its rest position over the revolution, away from the
+    /// cam ([`AnalysisRow::with_lift`]; none until then)
+    pub lift: Option<f64>,
     /// its time derivative
     pub velocity: Option<f64>,
     /// its second time derivative
@@ -86,6 +89,7 @@ impl AnalysisRow {
             Ok(s) => Self {
                 angle_deg,
                 position: Some(s.position),
+                lift: None,
                 velocity: Some(s.velocity),
                 acceleration: Some(s.acceleration),
                 jerk: s.jerk,
@@ -120,6 +124,14 @@ impl AnalysisRow {
                 ..Self::default()
             },
         }
+    }
+}
+
+impl AnalysisRow {
+    /// The row with its lift from the follower's travel ([`Mechanism::travel`]).
+    pub fn with_lift(mut self, travel: &crate::cam::Travel) -> Self {
+        self.lift = self.position.map(|q| travel.lift(q));
+        self
     }
 }
 

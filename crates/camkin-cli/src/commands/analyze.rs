@@ -1,7 +1,9 @@
 //! `camkin analyze`: the one-instant analysis at a list or range of cam angles, as CSV.
 
 use crate::args::{AngleList, AngleRange};
-use crate::output::{write_atomic, write_rows, TableFormat};
+use crate::columns::{analysis_cells, analysis_columns};
+use crate::output::{write_atomic, write_cells, TableFormat};
+use crate::units::{AngleUnit, Per, Units};
 use crate::{load_mechanism, Failure};
 use anyhow::Result;
 use camkin::cam::{FollowerState, Mechanism};
@@ -26,6 +28,13 @@ pub struct Args {
     /// Output format.
     #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
     pub format: TableFormat,
+    /// Derivatives of the follower's motion per second of time, or per degree of cam angle
+    /// (ds/dθ, d²s/dθ², d³s/dθ³, as cam tools print them).
+    #[arg(long, value_enum, default_value_t = Per::S)]
+    pub per: Per,
+    /// Unit of an oscillating follower's arm angle and its derivatives.
+    #[arg(long, value_enum, default_value_t = AngleUnit::Deg)]
+    pub angle_unit: AngleUnit,
     /// Output file (written atomically); standard output without it.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
@@ -86,7 +95,10 @@ const BYTES_PER_ROW: f64 = 380.0;
 const LARGE_BYTES: f64 = 1024.0 * 1024.0 * 1024.0;
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    let mech = load_mechanism(args.mechanism.as_ref())?;
+    let loaded = load_mechanism(args.mechanism.as_ref())?;
+    let mech = &loaded.mech;
+    let units = Units::new(mech, loaded.unit, args.angle_unit, args.per);
+    let columns = analysis_columns(&units);
     let angles = match (&args.at, args.angles) {
         (Some(list), _) => list.0.clone(),
         (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
@@ -104,7 +116,15 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             angles.len() as f64 * 1e-6
         )));
     }
-    crate::check_sweep_time(&mech, angles.len(), 1, args.large)?;
+    crate::check_sweep_time(mech, angles.len(), 1, args.large)?;
+    // lift is measured from the lowest position over the revolution
+    let travel = match mech.travel() {
+        Ok(t) => Some(t),
+        Err(e) => {
+            eprintln!("camkin: warning: no lift column: the lowest position over the revolution could not be found ({e})");
+            None
+        }
+    };
     let contiguous = args.at.is_none();
     let stretches = mech.unfollowable_stretches();
     let mut sweep = mech.sweep();
@@ -130,8 +150,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
                 .iter()
                 .map(|&a| sweep.step(camkin::geometry::deg_to_rad(a))),
         );
-        let jumps = contact_jumps_with(&mech, &stretches, &results, contiguous);
-        let rows: Vec<AnalysisRow> = chunk
+        let jumps = contact_jumps_with(mech, &stretches, &results, contiguous);
+        let rows: Vec<_> = chunk
             .iter()
             .zip(&results[lead..])
             .zip(&jumps[lead..])
@@ -146,7 +166,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
                         jump_at.push(start + k);
                     }
                 }
-                AnalysisRow::new(a, r, j)
+                let row = AnalysisRow::new(a, r, j);
+                let row = match &travel {
+                    Some(t) => row.with_lift(t),
+                    None => row,
+                };
+                analysis_cells(&row, &units)
             })
             .collect();
         prev = results.pop();
@@ -155,7 +180,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         Some(rows)
     };
     write_atomic(args.output.as_deref(), |w| {
-        write_rows(w, args.format, &mut next_chunk)
+        write_cells(w, args.format, &columns, &mut next_chunk)
     })
     .map_err(|e| {
         if args.output.is_some() {
@@ -166,7 +191,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         }
     })?;
     pb.finish_and_clear();
-    report_degenerate(&mech, &stretches, &angles, &jump_at, jumps_total);
+    report_degenerate(mech, &stretches, &angles, &jump_at, jumps_total);
     if failed > 0 {
         eprintln!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",

@@ -61,7 +61,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
             args.repeats
         )));
     }
-    let mut mech = load_mechanism(args.mechanism.as_ref())?;
+    let mut mech = load_mechanism(args.mechanism.as_ref())?.mech;
     // the query measured is position, velocity and acceleration (no jerk)
     let mut opts = *mech.options();
     opts.jerk = false;

@@ -2,11 +2,12 @@
 
 use crate::args::{AngleWindow, NodeCounts, RevolutionStep};
 use crate::draw::chart::{self, Chart, Series};
-use crate::output::{write_atomic, write_table, TableFormat};
+use crate::output::{write_atomic, write_cell_table, write_table, Cell, TableFormat};
 use crate::study::{self, Study};
+use crate::units::Units;
 use crate::{load_mechanism, Failure};
 use anyhow::{Context, Result};
-use camkin::cam::Mechanism;
+use camkin::spec::LengthUnit;
 use serde_json::{json, Map, Value};
 use std::path::{Path, PathBuf};
 
@@ -66,70 +67,53 @@ pub struct CompareArgs {
     pub large: bool,
 }
 
-/// Units of the follower coordinate, for labels.
-struct Units {
-    pos: String,
-    acc: String,
-}
-
-fn units(mech: &Mechanism, length: &str) -> Units {
-    if mech.follower().is_oscillating() {
-        Units {
-            pos: "rad".into(),
-            acc: "rad/s²".into(),
-        }
-    } else {
-        Units {
-            pos: length.into(),
-            acc: format!("{length}/s²"),
-        }
-    }
-}
-
 /// Writes the study's CSV files and plots into `dir`.
 fn write_files(
     study: &Study,
-    mech: &Mechanism,
     dir: &Path,
     title: &str,
-    length: &str,
+    u: &Units,
     zoom: Option<(f64, f64)>,
 ) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let u = units(mech, length);
     let mut written = Vec::new();
     let p = dir.join("displacement.csv");
     write_atomic(Some(&p), |w| {
-        let rows: Vec<MotionRow> = study
+        let columns: Vec<String> = ["position", "velocity", "acceleration", "jerk"]
+            .iter()
+            .enumerate()
+            .map(|(k, n)| format!("{n}_{}", u.motion_key(k)))
+            .collect();
+        let columns = [vec!["angle_deg".to_string()], columns].concat();
+        let rows: Vec<Vec<Cell>> = study
             .grid_deg
             .iter()
             .zip(&study.exact)
-            .map(|(&angle_deg, s)| MotionRow {
-                angle_deg,
-                position: s.position,
-                velocity: s.velocity,
-                acceleration: s.acceleration,
-                jerk: s.jerk,
+            .map(|(&angle_deg, s)| {
+                let m = u.motion(s.position, s.velocity, s.acceleration, s.jerk);
+                [vec![Cell::Num(Some(angle_deg))], m.map(Cell::Num).to_vec()].concat()
             })
             .collect();
-        write_table(w, &rows, TableFormat::Csv)
+        write_cell_table(w, TableFormat::Csv, &columns, rows)
     })?;
     written.push(p);
     let p = dir.join("acceleration.csv");
     write_atomic(Some(&p), |w| {
         // one column per node count: a record type cannot name them, so the csv crate's records
         let mut c = csv::Writer::from_writer(w);
-        let mut head = vec!["angle_deg".to_string(), "contact_method".to_string()];
+        let key = u.motion_key(2);
+        let mut head = vec!["angle_deg".to_string(), format!("contact_method_{key}")];
         head.extend(
             study
                 .runs
                 .iter()
-                .map(|r| format!("interpolated_{}", r.nodes)),
+                .map(|r| format!("interpolated_{}_{key}", r.nodes)),
         );
         c.write_record(&head)?;
+        let acc = |a: f64| u.motion(0.0, 0.0, a, None)[2].unwrap_or(f64::NAN);
         for (k, (a, s)) in study.grid_deg.iter().zip(&study.exact).enumerate() {
-            let mut rec = vec![*a, s.acceleration];
-            rec.extend(study.runs.iter().map(|r| r.acceleration[k]));
+            let mut rec = vec![*a, acc(s.acceleration)];
+            rec.extend(study.runs.iter().map(|r| acc(r.acceleration[k])));
             c.serialize(&rec)?;
         }
         Ok(c.flush()?)
@@ -161,10 +145,10 @@ fn write_files(
     let displacement = Chart {
         title: format!("{title}: follower displacement"),
         x_label: "cam angle (°)".into(),
-        y_label: format!("displacement ({})", u.pos),
+        y_label: format!("displacement ({})", u.motion_symbol(0)),
         series: vec![Series {
             name: "displacement".into(),
-            points: xy(&|k| study.exact[k].position),
+            points: xy(&|k| u.coord_value(study.exact[k].position)),
             dashed: false,
         }],
         log_y: false,
@@ -179,16 +163,16 @@ fn write_files(
                 r.nodes
             ),
             x_label: "cam angle (°)".into(),
-            y_label: format!("acceleration ({})", u.acc),
+            y_label: format!("acceleration ({})", u.motion_symbol(2)),
             series: vec![
                 Series {
                     name: "contact method (exact)".into(),
-                    points: xy(&|k| study.exact[k].acceleration),
+                    points: xy(&|k| u.coord_value(study.exact[k].acceleration)),
                     dashed: false,
                 },
                 Series {
                     name: format!("interpolated, N = {}", r.nodes),
-                    points: xy(&|k| r.acceleration[k]),
+                    points: xy(&|k| u.coord_value(r.acceleration[k])),
                     dashed: true,
                 },
             ],
@@ -235,11 +219,12 @@ fn fmt_time(s: f64) -> String {
 }
 
 /// The summary as a markdown section.
-fn table(study: &Study, title: &str, acc_unit: &str) -> String {
+fn table(study: &Study, title: &str, u: &Units) -> String {
+    let acc_unit = u.motion_symbol(2);
     let mut t = format!("## {title}\n\n");
     t += &format!(
-        "Contact method: max |a| = {:.6} {acc_unit} over the revolution; {} angles at {}° in {} ({} per angle); one cold query {}.\n\n",
-        study.max_abs_acceleration,
+        "Contact method: max |a| = {} {acc_unit} over the revolution; {} angles at {}° in {} ({} per angle); one cold query {}.\n\n",
+        camkin::human::human(u.coord_value(study.max_abs_acceleration)),
         study.grid_deg.len(),
         study.grid_deg.get(1).copied().unwrap_or(360.0),
         fmt_time(study.contact_total_seconds),
@@ -285,16 +270,6 @@ fn summary_rows(study: &Study, cam: &str) -> Vec<SummaryRow> {
             contact_single_s: study.contact_single_seconds,
         })
         .collect()
-}
-
-/// The exact motion on the study's grid (`displacement.csv`).
-#[derive(Debug, serde::Serialize)]
-struct MotionRow {
-    angle_deg: f64,
-    position: f64,
-    velocity: f64,
-    acceleration: f64,
-    jerk: Option<f64>,
 }
 
 /// One node count of the study (the summary with `--format csv`).
@@ -356,9 +331,9 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
         let mech = camkin::reference::paper_mechanism(revised);
         let study = study::run(&mech, nodes, step, title).map_err(Failure::Internal)?;
         let zoom = if revised { Some((5.0, 10.0)) } else { None };
-        write_files(&study, &mech, &args.out.join(key), title, "cm", zoom)
-            .map_err(Failure::output)?;
-        md += &table(&study, title, "cm/s²");
+        let u = Units::plain(&mech, LengthUnit::Cm);
+        write_files(&study, &args.out.join(key), title, &u, zoom).map_err(Failure::output)?;
+        md += &table(&study, title, &u);
         md.push('\n');
         csv.extend(summary_rows(&study, key));
         js.insert(key.to_string(), json_summary(&study));
@@ -376,7 +351,9 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
     let (nodes, step) = (&args.nodes.0, args.step.deg());
     study::check_bounds(nodes, step, 1, args.out.is_some(), args.large).map_err(Failure::Input)?;
     let zoom = args.zoom.map(|w| (w.start, w.stop));
-    let mech = load_mechanism(Some(&args.mechanism))?;
+    let loaded = load_mechanism(Some(&args.mechanism))?;
+    let mech = loaded.mech;
+    let u = Units::plain(&mech, loaded.unit);
     let title = args
         .mechanism
         .file_stem()
@@ -387,10 +364,9 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
     crate::check_sweep_time(&mech, grid + 2 * nodes.iter().sum::<usize>(), 1, args.large)?;
     let study = study::run(&mech, nodes, step, &title).map_err(Failure::Input)?;
     if let Some(dir) = &args.out {
-        write_files(&study, &mech, dir, &title, "length", zoom).map_err(Failure::output)?;
+        write_files(&study, dir, &title, &u, zoom).map_err(Failure::output)?;
     }
-    let acc = units(&mech, "length").acc;
-    let md = table(&study, &title, &acc);
+    let md = table(&study, &title, &u);
     let csv = summary_rows(&study, &title);
     let mut js = json_summary(&study);
     if let Value::Object(m) = &mut js {

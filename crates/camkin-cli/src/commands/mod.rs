@@ -3,6 +3,8 @@
 pub mod analyze;
 pub mod bench;
 pub mod compare;
+pub mod forces;
 pub mod plot;
+pub mod profile;
 pub mod simulate;
 pub mod synth;

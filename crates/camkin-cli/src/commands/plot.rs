@@ -3,7 +3,9 @@
 use crate::args::{AngleList, RevolutionStep};
 use crate::draw::chart::{self, Chart, Series};
 use crate::draw::mechanism::{self as scene, Shape};
-use crate::{load_mechanism, Failure};
+use crate::draw::svaj;
+use crate::units::{AngleUnit, Per, Units};
+use crate::{load_mechanism, Failure, Loaded};
 use anyhow::{anyhow, Context, Result};
 use camkin::cam::{FollowerState, Mechanism};
 use camkin::Point2;
@@ -32,6 +34,12 @@ pub struct PlotArgs {
     /// Frames of the animation over one revolution.
     #[arg(long, value_name = "N", default_value_t = 72)]
     pub frames: usize,
+    /// Derivatives on the SVAJ page per second of time, or per degree of cam angle.
+    #[arg(long, value_enum, default_value_t = Per::S)]
+    pub per: Per,
+    /// Unit of an oscillating follower's arm angle.
+    #[arg(long, value_enum, default_value_t = AngleUnit::Deg)]
+    pub angle_unit: AngleUnit,
     /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
@@ -126,17 +134,21 @@ where
 }
 
 fn kinematics(
-    mech: &Mechanism,
+    loaded: &Loaded,
+    u: &Units,
     grid: &[f64],
     states: &[Option<FollowerState>],
     dir: &Path,
 ) -> Result<Vec<PathBuf>> {
-    let osc = mech.follower().is_oscillating();
-    let (pu, vu, au, ju) = if osc {
-        ("rad", "rad/s", "rad/s²", "rad/s³")
-    } else {
-        ("length", "length/s", "length/s²", "length/s³")
-    };
+    let mech = &loaded.mech;
+    let (pu, vu, au, ju) = (
+        format!("lift ({})", u.motion_symbol(0)),
+        format!("velocity ({})", u.motion_symbol(1)),
+        format!("acceleration ({})", u.motion_symbol(2)),
+        format!("jerk ({})", u.motion_symbol(3)),
+    );
+    let travel = mech.travel().ok();
+    let conv = |s: &FollowerState| u.motion(s.position, s.velocity, s.acceleration, s.jerk);
     let series = |f: &dyn Fn(&FollowerState) -> Option<f64>| -> Vec<(f64, f64)> {
         grid.iter()
             .zip(states)
@@ -166,25 +178,56 @@ fn kinematics(
                 jerk.push((a, f64::NAN));
             }
         }
-        jerk.push((a, s.as_ref().and_then(|s| s.jerk).unwrap_or(f64::NAN)));
+        jerk.push((a, s.as_ref().and_then(|s| conv(s)[3]).unwrap_or(f64::NAN)));
     }
+    let lift = series(&|s| travel.map(|t| u.coord_value(t.lift(s.position))));
+    let vel = series(&|s| conv(s)[1]);
+    let acc = series(&|s| conv(s)[2]);
+    let title = svaj_title(loaded, u);
+    let page = svaj::Page {
+        title,
+        panels: vec![
+            svaj::Panel {
+                label: pu.clone(),
+                unit: u.motion_symbol(0),
+                points: lift.clone(),
+            },
+            svaj::Panel {
+                label: vu.clone(),
+                unit: u.motion_symbol(1),
+                points: vel.clone(),
+            },
+            svaj::Panel {
+                label: au.clone(),
+                unit: u.motion_symbol(2),
+                points: acc.clone(),
+            },
+            svaj::Panel {
+                label: ju.clone(),
+                unit: u.motion_symbol(3),
+                points: jerk.clone(),
+            },
+        ],
+        marks: marks(mech, grid, states),
+    };
+    let mut written = svaj::save(&page, &dir.join("svaj"))?;
     let charts = vec![
-        chart("displacement", pu, series(&|s| Some(s.position))),
-        chart("velocity", vu, series(&|s| Some(s.velocity))),
-        chart("acceleration", au, series(&|s| Some(s.acceleration))),
+        chart("lift", &pu, lift),
+        chart("velocity", &vu, vel),
+        chart("acceleration", &au, acc),
         chart(
             "jerk (breaks where the contact passes a spline node)",
-            ju,
+            &ju,
             jerk,
         ),
         chart(
             "pressure angle",
-            "degrees",
+            "pressure angle (°)",
             series(&|s| Some(s.pressure_angle().to_degrees())),
         ),
         chart(
             "cam radius of curvature at contact",
-            "length",
+            &format!("radius of curvature ({})", u.len()),
             series(&|s| Some(s.radius_of_curvature).filter(|r| r.abs() < 1e3 * mech.size())),
         ),
     ];
@@ -194,7 +237,67 @@ fn kinematics(
     let png = dir.join("kinematics.png");
     chart::write_svg(&svg, size, |root| draw_panels(root, &charts))?;
     chart::write_png(&png, size, |root| draw_panels(root, &charts))?;
-    Ok(vec![svg, png])
+    written.extend([svg, png]);
+    Ok(written)
+}
+
+/// The SVAJ page's title: the mechanism, its follower and the cam's speed.
+pub fn svaj_title(loaded: &Loaded, u: &Units) -> String {
+    let mech = &loaded.mech;
+    let cam = mech.cam();
+    let rpm = cam.speed() * 60.0 / std::f64::consts::TAU;
+    let per = match u.per {
+        Per::S => "",
+        Per::Deg => ", derivatives per degree of cam angle",
+    };
+    format!(
+        "{}: SVAJ, {} follower, cam at {} rpm {}{per}",
+        loaded.name,
+        mech.follower().kind_name(),
+        camkin::human::human((rpm * 1e6).round() / 1e6),
+        match cam.direction() {
+            camkin::cam::Sense::Ccw => "ccw",
+            camkin::cam::Sense::Cw => "cw",
+        }
+    )
+}
+
+/// Where the motion is discontinuous on the grid: the contact jumps (position), the contact
+/// passes a node of the profile where the jerk jumps, or a motion program's junctions.
+fn marks(mech: &Mechanism, grid: &[f64], states: &[Option<FollowerState>]) -> Vec<svaj::Mark> {
+    let mut out = Vec::new();
+    if let Some(synth) = mech.cam().synthesis() {
+        for d in synth.discontinuities() {
+            out.push(svaj::Mark {
+                angle_deg: d.at.to_degrees().rem_euclid(360.0),
+                order: d.order,
+            });
+        }
+        return out;
+    }
+    let results: Vec<Result<FollowerState, camkin::cam::CamError>> = states
+        .iter()
+        .map(|s| s.ok_or(camkin::cam::CamError::OpenProfile))
+        .collect();
+    let jumps = camkin::table::contact_jumps(mech, &results, true);
+    let bps = mech.cam().profile().breakpoints();
+    let piece = |s: &FollowerState| bps.partition_point(|&b| b <= s.cam_param);
+    for k in 1..grid.len() {
+        if jumps[k] {
+            out.push(svaj::Mark {
+                angle_deg: grid[k],
+                order: 0,
+            });
+        } else if let (Some(p), Some(c)) = (&states[k - 1], &states[k]) {
+            if piece(p) != piece(c) && mech.cam().synthesis().is_none() && bps.len() > 1 {
+                out.push(svaj::Mark {
+                    angle_deg: 0.5 * (grid[k - 1] + grid[k]),
+                    order: 3,
+                });
+            }
+        }
+    }
+    out
 }
 
 pub fn run(args: &PlotArgs) -> Result<(), Failure> {
@@ -212,10 +315,12 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             args.frames
         )));
     }
-    let mech = load_mechanism(args.mechanism.as_ref())?;
+    let loaded = load_mechanism(args.mechanism.as_ref())?;
+    let mech = &loaded.mech;
+    let units = Units::new(mech, loaded.unit, args.angle_unit, args.per);
     let curve_angles = (360.0 / step).round() as usize;
     crate::check_sweep_time(
-        &mech,
+        mech,
         curve_angles + args.frames + angles.len(),
         1,
         args.large,
@@ -238,7 +343,8 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     if failed == states.len() {
         return Err(Failure::Input(anyhow!("the follower cannot be analysed at any cam angle (try `camkin analyze` for the reasons)")));
     }
-    let mut written = kinematics(&mech, &grid, &states, &args.out).map_err(Failure::output)?;
+    let mut written =
+        kinematics(&loaded, &units, &grid, &states, &args.out).map_err(Failure::output)?;
 
     // one box for every drawing and frame, so the scale does not jump
     let frame_angles: Vec<f64> = (0..args.frames)
@@ -249,7 +355,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         let st = mech.analyze_deg(a).ok();
         scenes.push((
             a,
-            scene::scene(&mech, camkin::geometry::deg_to_rad(a), st.as_ref()),
+            scene::scene(mech, camkin::geometry::deg_to_rad(a), st.as_ref()),
         ));
     }
     let (lo, hi) = scene::bounds(scenes.iter().flat_map(|(_, s)| s.iter()));

@@ -3,7 +3,8 @@
 use crate::args::RevolutionStep;
 use crate::draw::chart::{self, Chart, Series};
 use crate::mechfile;
-use crate::output::{write_atomic, write_table, TableFormat};
+use crate::output::{write_atomic, write_cell_table, Cell, Keyed, TableFormat};
+use crate::units::Units;
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, EventKind, Sample, Simulation};
@@ -96,8 +97,15 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             camkin::human::human((outputs as f64 * 200e-6).round())
         )));
     }
-    let (mech, params) =
+    let (mech, params, unit) =
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    let units = Units::plain(&mech, unit);
+    // the simulation computes in metres: lengths back to the file's unit
+    let k_len = if units.oscillating {
+        1.0
+    } else {
+        1.0 / unit.metres()
+    };
     // the jump scan at the start (every 0.25°) and the kinematic motion beside every row
     crate::check_sweep_time(&mech, 1441 + outputs, 1, args.large)?;
     if !args.start_angle.is_finite() {
@@ -155,23 +163,92 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         .map(|(s, k)| SampleRow::new(s, k.as_ref().ok()))
         .collect();
     let event_rows: Vec<EventRow> = events.iter().map(EventRow::from).collect();
+    let u = &units;
+    let sample_columns: Vec<String> = vec![
+        "time_s".into(),
+        "cam_angle_deg".into(),
+        format!("position_{}", u.motion_key(0)),
+        format!("velocity_{}", u.motion_key(1)),
+        format!("acceleration_{}", u.motion_key(2)),
+        "contact_force_N".into(),
+        "in_contact".into(),
+        format!("kinematic_position_{}", u.motion_key(0)),
+        format!("kinematic_acceleration_{}", u.motion_key(2)),
+    ];
+    let sample_cells: Vec<Vec<Cell>> = rows
+        .iter()
+        .map(|r| {
+            let m = u.motion(
+                k_len * r.position,
+                k_len * r.velocity,
+                k_len * r.acceleration,
+                None,
+            );
+            let km = u.motion(
+                k_len * r.kinematic_position,
+                0.0,
+                k_len * r.kinematic_acceleration,
+                None,
+            );
+            vec![
+                Cell::Num(Some(r.time)),
+                Cell::Num(Some(r.cam_angle_deg)),
+                Cell::Num(m[0]),
+                Cell::Num(m[1]),
+                Cell::Num(m[2]),
+                Cell::Num(Some(r.contact_force)),
+                Cell::Int(Some(r.in_contact)),
+                Cell::Num(km[0]),
+                Cell::Num(km[2]),
+            ]
+        })
+        .collect();
+    let event_columns: Vec<String> = vec![
+        "event".into(),
+        "time_s".into(),
+        "cam_angle_deg".into(),
+        format!("impact_velocity_{}_s", unit.name()),
+    ];
+    let event_cells: Vec<Vec<Cell>> = event_rows
+        .iter()
+        .map(|e| {
+            vec![
+                Cell::Text(Some(e.event.to_string())),
+                Cell::Num(Some(e.time)),
+                Cell::Num(Some(e.cam_angle_deg)),
+                Cell::Num(Some(e.impact_velocity / unit.metres())),
+            ]
+        })
+        .collect();
     let series = |w: &mut dyn Write| -> anyhow::Result<()> {
         match args.format {
             TableFormat::Json => {
+                let samples: Vec<Keyed<'_>> = sample_cells
+                    .iter()
+                    .map(|c| Keyed(&sample_columns, c))
+                    .collect();
+                let events: Vec<Keyed<'_>> = event_cells
+                    .iter()
+                    .map(|c| Keyed(&event_columns, c))
+                    .collect();
                 #[derive(serde::Serialize)]
                 struct Series<'a> {
-                    samples: &'a [SampleRow],
-                    events: &'a [EventRow],
+                    samples: &'a [Keyed<'a>],
+                    events: &'a [Keyed<'a>],
                 }
-                let all = Series {
-                    samples: &rows,
-                    events: &event_rows,
-                };
-                serde_json::to_writer(&mut *w, &all)?;
+                serde_json::to_writer(
+                    &mut *w,
+                    &Series {
+                        samples: &samples,
+                        events: &events,
+                    },
+                )?;
                 writeln!(w)?;
                 Ok(())
             }
-            TableFormat::Csv => write_table(w, &rows, TableFormat::Csv),
+            TableFormat::Csv => {
+                write_cell_table(w, TableFormat::Csv, &sample_columns, sample_cells.clone())
+            }
         }
     };
     match &args.out {
@@ -187,14 +264,13 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             write_atomic(Some(&dir.join(format!("time_series.{ext}"))), series)
                 .map_err(Failure::output)?;
             write_atomic(Some(&dir.join("events.csv")), |w| {
-                write_table(w, &event_rows, TableFormat::Csv)
+                write_cell_table(w, TableFormat::Csv, &event_columns, event_cells.clone())
             })
             .map_err(Failure::output)?;
-            plot(&samples, &rows, dir, mech.follower().is_oscillating())
-                .map_err(Failure::output)?;
+            plot(&samples, &rows, dir, u, k_len).map_err(Failure::output)?;
         }
     }
-    report(&events);
+    report(&events, unit);
     Ok(())
 }
 
@@ -206,14 +282,17 @@ fn kind(e: &Event) -> &'static str {
 }
 
 /// The events as a table on stderr.
-fn report(events: &[Event]) {
+fn report(events: &[Event], unit: camkin::spec::LengthUnit) {
     if events.is_empty() {
         eprintln!("camkin: no lift-off: the follower stays on the cam");
         return;
     }
     eprintln!(
         "{:>9} {:>14} {:>15} {:>18}",
-        "event", "time (s)", "cam angle (°)", "impact speed (m/s)"
+        "event",
+        "time (s)",
+        "cam angle (°)",
+        format!("impact speed ({}/s)", unit.name())
     );
     for e in events.iter().take(50) {
         eprintln!(
@@ -221,7 +300,7 @@ fn report(events: &[Event]) {
             kind(e),
             e.time,
             e.cam_angle.to_degrees(),
-            e.impact_velocity
+            e.impact_velocity / unit.metres()
         );
     }
     if events.len() > 50 {
@@ -236,13 +315,11 @@ fn plot(
     samples: &[Sample],
     rows: &[SampleRow],
     dir: &std::path::Path,
-    oscillating: bool,
+    u: &Units,
+    k_len: f64,
 ) -> anyhow::Result<()> {
-    let (pu, au) = if oscillating {
-        ("rad", "rad/s²")
-    } else {
-        ("m", "m/s²")
-    };
+    let (pu, au) = (u.motion_symbol(0), u.motion_symbol(2));
+    let c = |x: f64| u.coord_value(k_len * x);
     let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
         samples
             .iter()
@@ -257,12 +334,12 @@ fn plot(
         series: vec![
             Series {
                 name: "dynamic".into(),
-                points: pts(&|k| samples[k].position),
+                points: pts(&|k| c(samples[k].position)),
                 dashed: false,
             },
             Series {
                 name: "kinematic (contact method)".into(),
-                points: pts(&|k| rows[k].kinematic_position),
+                points: pts(&|k| c(rows[k].kinematic_position)),
                 dashed: true,
             },
         ],
@@ -277,12 +354,12 @@ fn plot(
         series: vec![
             Series {
                 name: "dynamic".into(),
-                points: pts(&|k| samples[k].acceleration),
+                points: pts(&|k| c(samples[k].acceleration)),
                 dashed: false,
             },
             Series {
                 name: "kinematic (contact method)".into(),
-                points: pts(&|k| rows[k].kinematic_acceleration),
+                points: pts(&|k| c(rows[k].kinematic_acceleration)),
                 dashed: true,
             },
         ],

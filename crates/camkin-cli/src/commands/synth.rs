@@ -2,8 +2,9 @@
 //! SVAJ curves; design checks; the round-trip error of the contact method.
 
 use crate::args::RevolutionStep;
-use crate::draw::chart::{self, Chart, Series};
-use crate::output::{write_atomic, write_table, TableFormat};
+use crate::draw::svaj;
+use crate::output::write_atomic;
+use crate::units::{AngleUnit, Per, Units};
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
 use camkin::cam::{FollowerCurve, FollowerState};
@@ -22,6 +23,16 @@ pub struct SynthArgs {
     /// Largest acceptable pressure angle, degrees.
     #[arg(long, value_name = "DEG", default_value_t = 30.0)]
     pub pressure_limit: f64,
+    /// Derivatives on the SVAJ page per second of time, or per degree of cam angle.
+    #[arg(long, value_enum, default_value_t = Per::S)]
+    pub per: Per,
+    /// Unit of an oscillating follower's arm angle.
+    #[arg(long, value_enum, default_value_t = AngleUnit::Deg)]
+    pub angle_unit: AngleUnit,
+    /// Radius of the cutter or grinding wheel whose centre path to write (cutter.csv and a
+    /// layer of profile.dxf), in the file's length unit.
+    #[arg(long, value_name = "R")]
+    pub tool_radius: Option<f64>,
     /// Allow files estimated at over 1 GB in all, or a run estimated at over 30 s (refused
     /// otherwise, with the estimate).
     #[arg(long)]
@@ -31,30 +42,6 @@ pub struct SynthArgs {
 /// Bytes written per profile point, about (CSV, DXF, SVG and the four SVAJ SVGs; measured:
 /// 5.9 MB for 36 000 points).
 const BYTES_PER_POINT: f64 = 165.0;
-
-/// A point of the synthesised profile in the cam's frame (`profile.csv`).
-#[derive(Debug, serde::Serialize)]
-struct ProfilePoint {
-    /// the cam angle whose follower position this point gives, degrees
-    cam_angle_deg: f64,
-    /// cam frame
-    x: f64,
-    /// cam frame
-    y: f64,
-}
-
-/// A DXF (R12, ASCII) drawing with one closed polyline through `pts` (cam frame).
-pub fn dxf_polyline(pts: &[(f64, f64)]) -> String {
-    let mut s = String::from(
-        "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n",
-    );
-    s.push_str("0\nPOLYLINE\n8\nCAM\n66\n1\n70\n1\n10\n0.0\n20\n0.0\n30\n0.0\n");
-    for (x, y) in pts {
-        s.push_str(&format!("0\nVERTEX\n8\nCAM\n10\n{x}\n20\n{y}\n30\n0.0\n"));
-    }
-    s.push_str("0\nSEQEND\n8\nCAM\n0\nENDSEC\n0\nEOF\n");
-    s
-}
 
 fn svg_profile(pts: &[(f64, f64)]) -> String {
     let (mut x0, mut x1, mut y0, mut y1) = (
@@ -99,8 +86,10 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             camkin::human::human((points * BYTES_PER_POINT / 1e8).ceil() / 10.0)
         )));
     }
-    let mech = load_mechanism(Some(&args.mechanism))?;
-    crate::check_sweep_time(&mech, points as usize, 1, args.large)?;
+    let loaded = load_mechanism(Some(&args.mechanism))?;
+    let mech = &loaded.mech;
+    let u = Units::new(mech, loaded.unit, args.angle_unit, args.per);
+    crate::check_sweep_time(mech, points as usize, 1, args.large)?;
     let profile = mech.cam().profile();
     let Some(synth) = mech.cam().synthesis() else {
         return Err(Failure::Input(anyhow!(
@@ -118,63 +107,73 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         .map(|p| (p.x, p.y))
         .collect();
     let out = |name: &str| args.out.join(name);
-    write_atomic(Some(&out("profile.csv")), |w| {
-        let rows: Vec<ProfilePoint> = thetas
-            .iter()
-            .zip(&pts)
-            .map(|(t, &(x, y))| ProfilePoint {
-                cam_angle_deg: t.to_degrees(),
-                x,
-                y,
-            })
-            .collect();
-        write_table(w, &rows, TableFormat::Csv)
-    })
-    .map_err(Failure::output)?;
-    write_atomic(Some(&out("profile.dxf")), |w| {
-        Ok(w.write_all(dxf_polyline(&pts).as_bytes())?)
-    })
-    .map_err(Failure::output)?;
+    let made = crate::manufacture::write(
+        mech,
+        loaded.unit,
+        &args.out,
+        &crate::manufacture::Options {
+            step_deg: step,
+            tool_radius: args.tool_radius,
+            tolerance: None,
+        },
+    )
+    .map_err(|e| match e {
+        crate::manufacture::Error::Input(e) => Failure::Input(e),
+        crate::manufacture::Error::Output(e) => Failure::output(e),
+    })?;
     write_atomic(Some(&out("profile.svg")), |w| {
         Ok(w.write_all(svg_profile(&pts).as_bytes())?)
     })
     .map_err(Failure::output)?;
 
-    // the program's SVAJ curves (derivatives in the cam angle)
-    let prog: Vec<[f64; 4]> = thetas
-        .iter()
-        .map(|&t| synth.program_derivatives(t))
-        .collect();
+    // the program's SVAJ page: lift is the program itself (zero on the base circle)
+    let (w, al) = (mech.cam().speed(), mech.cam().angular_acceleration());
     let deg: Vec<f64> = thetas.iter().map(|t| t.to_degrees()).collect();
-    let chart = |title: &str, k: usize| Chart {
-        title: title.into(),
-        x_label: "cam angle (°)".into(),
-        y_label: ["s", "ds/dθ", "d²s/dθ²", "d³s/dθ³"][k].into(),
-        series: vec![Series {
-            name: title.into(),
-            points: deg.iter().zip(&prog).map(|(a, p)| (*a, p[k])).collect(),
-            dashed: false,
-        }],
-        log_y: false,
-        x_range: Some((0.0, 360.0)),
-    };
-    for (k, name) in ["displacement", "velocity", "acceleration", "jerk"]
+    let prog: Vec<[Option<f64>; 4]> = thetas
         .iter()
-        .enumerate()
-    {
-        chart::save(
-            &chart(&format!("program: {name}"), k),
-            &out(&format!("svaj_{name}")),
-        )
-        .map_err(Failure::output)?;
-    }
+        .map(|&t| {
+            let p = synth.program_derivatives(t);
+            // time derivatives at the cam's speed (and constant angular acceleration)
+            u.motion(
+                p[0],
+                w * p[1],
+                w * w * p[2] + al * p[1],
+                Some(w * w * w * p[3] + 3.0 * w * al * p[2]),
+            )
+        })
+        .collect();
+    let names = ["lift", "velocity", "acceleration", "jerk"];
+    let page = svaj::Page {
+        title: crate::commands::plot::svaj_title(&loaded, &u)
+            .replace(": SVAJ,", ": SVAJ of the motion program,"),
+        panels: (0..4)
+            .map(|k| svaj::Panel {
+                label: format!("{} ({})", names[k], u.motion_symbol(k)),
+                unit: u.motion_symbol(k),
+                points: deg
+                    .iter()
+                    .zip(&prog)
+                    .map(|(a, p)| (*a, p[k].unwrap_or(f64::NAN)))
+                    .collect(),
+            })
+            .collect(),
+        marks: synth
+            .discontinuities()
+            .iter()
+            .map(|d| svaj::Mark {
+                angle_deg: d.at.to_degrees().rem_euclid(360.0),
+                order: d.order,
+            })
+            .collect(),
+    };
+    svaj::save(&page, &out("svaj")).map_err(Failure::output)?;
 
     // analysis of the synthesised profile: the round trip and the design checks
     let states: Vec<Result<FollowerState, _>> = mech.analyze_all(&thetas);
-    let w = mech.cam().speed();
     let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     let mut failed = 0;
     let mut over = Vec::new();
+    let mut pa_peak = (0.0f64, 0.0f64);
     // angles where the profile at the contact is concave more sharply than the follower can
     // follow (a flat face: any concave stretch, ρ ≤ 0; a roller of radius r: −r < ρ ≤ 0; a
     // knife follows any), or the follower rests on a cusp: undercut
@@ -212,8 +211,12 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         eq = eq.max((s.position - m[0]).abs());
         ev = ev.max((s.velocity - w * m[1]).abs());
         ea = ea.max((s.acceleration - w * w * m[2]).abs());
-        if s.pressure_angle().to_degrees().abs() > args.pressure_limit {
+        let pa = s.pressure_angle().to_degrees();
+        if pa.abs() > args.pressure_limit {
             over.push(t.to_degrees());
+        }
+        if pa.abs() > pa_peak.0.abs() {
+            pa_peak = (pa, t.to_degrees());
         }
         let rho = s.radius_of_curvature;
         if concave_limit > f64::NEG_INFINITY && !(rho > 0.0 || rho < concave_limit) {
@@ -247,14 +250,28 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             ea / scale
         )
     };
-    report += &format!("round trip (contact method against the motion law): |Δs| ≤ {eq:.2e}, |Δv| ≤ {ev:.2e}, |Δa| ≤ {ea:.2e} ({rel})\n");
+    let (su, vu, au) = (
+        Units::new(mech, loaded.unit, args.angle_unit, Per::S).motion_symbol(0),
+        Units::new(mech, loaded.unit, args.angle_unit, Per::S).motion_symbol(1),
+        Units::new(mech, loaded.unit, args.angle_unit, Per::S).motion_symbol(2),
+    );
+    let cv = |x: f64| u.coord_value(x);
+    report += &format!(
+        "round trip (contact method against the motion law): |Δs| ≤ {:.2e} {su}, |Δv| ≤ {:.2e} {vu}, |Δa| ≤ {:.2e} {au} ({rel})\n",
+        cv(eq),
+        cv(ev),
+        cv(ea)
+    );
+    let mut failures: Vec<&str> = Vec::new();
     if ea > 1e-6 * scale || failed > 0 {
         report += "round trip FAILED: the follower does not follow the synthesised profile (see the checks below)\n";
+        failures.push("round trip");
     }
     let h = camkin::human::human;
+    let len = loaded.unit.name();
     report += &if convex_min.is_finite() {
         format!(
-            "smallest convex radius of curvature of the profile: {} at {}°\n",
+            "smallest convex radius of curvature of the profile: {} {len} at {}°\n",
             h(convex_min),
             h(convex_at)
         )
@@ -263,7 +280,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     };
     report += &if concave_min.is_finite() {
         format!(
-            "sharpest concave radius of curvature of the profile: {} at {}° (negative: concave)\n",
+            "sharpest concave radius of curvature of the profile: {} {len} at {}° (negative: concave)\n",
             h(concave_min),
             h(concave_at)
         )
@@ -286,34 +303,57 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     let broken = !stretches.is_empty() || !folded.is_empty();
     match mech.follower_curve() {
         FollowerCurve::Circle(roller) => {
-            let roller_radius = roller.radius();
+            let r = roller.radius();
+            // the pitch curve (the roller centre's path) has radius of curvature ρ + r: where it
+            // is convex with a radius below r, the profile folds back (undercut)
+            let pitch_min = convex_min + r;
+            let pitch_concave =
+                (concave_min.is_finite() && concave_min + r < 0.0).then_some(concave_min + r);
+            report += &format!(
+                "pitch curve (roller centre path): smallest convex radius of curvature {} {len}{}\n",
+                if convex_min.is_finite() { h(pitch_min) } else { "∞".into() },
+                pitch_concave.map_or(String::new(), |c| format!(", sharpest concave {} {len}", h(c)))
+            );
             report += &if broken {
-                format!("undercut: the profile is concave more sharply than the roller (radius {roller_radius}){}\n", bad_span(&folded))
+                failures.push("undercut");
+                format!("undercut: the profile is concave more sharply than the roller (radius {} {len}){}\n", h(r), bad_span(&folded))
             } else {
-                format!("undercut: none (the roller's radius {roller_radius} fits everywhere)\n")
+                format!(
+                    "undercut: none (the roller's radius {} {len} fits everywhere)\n",
+                    h(r)
+                )
             };
         }
         FollowerCurve::Line(_) => {
             report += &if broken {
+                failures.push("concave stretch under the flat face");
                 format!("concave stretches under the flat face: the follower cannot follow the profile{}\n", bad_span(&folded))
             } else {
                 "concave stretches under the flat face: none\n".to_string()
             };
             report += &format!(
-                "face width needed: {:.6} (contact from {umin:.6} to {umax:.6} along the face)\n",
-                umax - umin
+                "face width needed: {} {len} (contact from {} to {} {len} along the face)\n",
+                h(umax - umin),
+                h(umin),
+                h(umax)
             );
         }
         _ => {}
     }
+    let peak = format!(
+        "peak {}° at {}°",
+        h((pa_peak.0 * 100.0).round() / 100.0),
+        h((pa_peak.1 * 100.0).round() / 100.0)
+    );
     report += &if over.is_empty() {
         format!(
-            "pressure angle: within ±{}° everywhere\n",
-            args.pressure_limit
+            "pressure angle: {peak}, within ±{}° everywhere\n",
+            h(args.pressure_limit)
         )
     } else {
+        failures.push("pressure angle");
         format!(
-            "pressure angle: beyond ±{}° at {} angles, from {}° to {}°\n",
+            "pressure angle: {peak}, beyond ±{}° at {} angles, from {}° to {}°\n",
             h(args.pressure_limit),
             over.len(),
             h(over[0]),
@@ -325,16 +365,24 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     }
     for j in synth.discontinuities() {
         report += &format!(
-            "program junction at {:.3}°: {} jumps\n",
-            j.at.to_degrees(),
+            "program junction at {}°: {} jumps\n",
+            h((j.at.to_degrees() * 1000.0).round() / 1000.0),
             ["position", "velocity", "acceleration", "jerk"][j.order]
         );
     }
     write_atomic(Some(&out("checks.txt")), |w| {
-        Ok(w.write_all(report.as_bytes())?)
+        Ok(w.write_all(format!("{report}{}", made.report).as_bytes())?)
     })
     .map_err(Failure::output)?;
-    print!("{report}");
+    print!("{report}{}", made.report);
     eprintln!("camkin: wrote {}", args.out.display());
-    Ok(())
+    if failures.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure::Check(anyhow!(
+            "design checks failed: {} (the files are written; see {})",
+            failures.join(", "),
+            out("checks.txt").display()
+        )))
+    }
 }

@@ -108,17 +108,41 @@ pub fn write_png(
     result
 }
 
-/// A tick label: a few significant digits, no rounding noise.
-pub fn tick(v: f64) -> String {
-    if v == 0.0 {
-        return "0".into();
+/// A tick or value label on an axis spanning `span`: enough digits to tell ticks apart, no
+/// rounding noise (a value within 1e-9 of the span from zero is `0`, never `-1.39e-17`), and
+/// scientific notation only for magnitudes from 10⁶ or below 10⁻³.
+pub fn tick(v: f64, span: f64) -> String {
+    let span = if span.is_finite() && span > 0.0 {
+        span
+    } else {
+        v.abs().max(f64::MIN_POSITIVE)
+    };
+    if v == 0.0 || v.abs() <= 1e-9 * span || !v.is_finite() {
+        return if v.is_finite() {
+            "0".into()
+        } else {
+            v.to_string()
+        };
     }
-    let a = v.abs();
+    let a = v.abs().max(span);
     if !(1e-3..1e6).contains(&a) {
-        return format!("{v:.2e}");
+        let digits = ((v.abs() / span).log10().ceil().max(0.0) as usize + 2).min(8);
+        let t = format!("{v:.digits$e}");
+        let (m, e) = t.split_once('e').unwrap_or((&t, "0"));
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
+        return format!("{m}e{e}");
     }
-    let t = format!("{v:.4}");
-    let t = t.trim_end_matches('0').trim_end_matches('.');
+    let decimals = (3 - span.log10().floor() as i32).clamp(0, 12) as usize;
+    let t = format!("{v:.decimals$}");
+    let t = if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        &t
+    };
     if t == "-0" {
         "0".into()
     } else {
@@ -187,7 +211,7 @@ where
             ch,
             chart,
             |y| if y.is_finite() { Some(y) } else { None },
-            |v| tick(*v),
+            move |v| tick(*v, y1 - y0 + 2.0 * pad),
         )
     }
 }
@@ -210,7 +234,7 @@ where
         .label_style(("sans-serif", 15))
         .axis_desc_style(("sans-serif", 17))
         .y_label_formatter(&y_fmt)
-        .x_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| tick(*v, x1 - x0))
         .light_line_style(RGBColor(235, 235, 235))
         .draw()
         .map_err(|e| anyhow!("{e}"))?;
@@ -274,10 +298,16 @@ mod tests {
 
     #[test]
     fn ticks_have_no_rounding_noise() {
-        assert_eq!(tick(4.2000000000001), "4.2");
-        assert_eq!(tick(-25000.0), "-25000");
-        assert_eq!(tick(0.0), "0");
-        assert_eq!(tick(1e7), "1.00e7");
-        assert_eq!(tick(0.5), "0.5");
+        assert_eq!(tick(4.2000000000001, 10.0), "4.2");
+        assert_eq!(tick(-25000.0, 1e5), "-25000");
+        assert_eq!(tick(0.0, 1.0), "0");
+        assert_eq!(tick(1e7, 2e7), "1e7");
+        assert_eq!(tick(1.5e7, 2e7), "1.5e7");
+        assert_eq!(tick(0.5, 2.0), "0.5");
+        // an axis crossing zero by accumulated steps
+        assert_eq!(tick(-1.3877787807814457e-17, 2.0), "0");
+        assert_eq!(tick(-1.3877787807814457e-17, 1e-12), "-1.39e-17");
+        assert_eq!(tick(0.0025, 0.01), "0.0025");
+        assert_eq!(tick(339.99999999999994, 360.0), "340");
     }
 }

@@ -28,6 +28,7 @@ mod summary;
 mod support;
 mod sweep;
 pub mod synthesis;
+mod travel;
 
 pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, Joint, Sense, LENGTH_RANGE};
@@ -37,6 +38,7 @@ pub use search::MAX_CANDIDATES;
 pub use state::{FollowerState, Motion};
 pub use support::IndependentCheck;
 pub use sweep::{Found, Sweep};
+pub use travel::Travel;
 
 pub(crate) use search::{bracket_params, bracket_samples, Touch};
 

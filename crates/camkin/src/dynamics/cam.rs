@@ -210,7 +210,10 @@ impl Simulation {
         let sign = cam.direction().sign();
         let (follower_joint, axis, axis_origin, spring) = match mech.follower_joint() {
             Joint::Translating { origin, direction } => {
-                let low = lowest(mech, 1.0);
+                let low = mech
+                    .travel()
+                    .map_err(|source| DynamicsError::Kinematics { source })?
+                    .rest;
                 (
                     Constraint::Translational {
                         body: 1,
@@ -234,7 +237,10 @@ impl Simulation {
             Joint::Rotating { pivot, closing, .. } => {
                 // the spring turns the arm onto the cam (sense `closing`); lowest = nearest the cam
                 let cs = closing.sign();
-                let low = lowest(mech, -cs);
+                let low = mech
+                    .travel()
+                    .map_err(|source| DynamicsError::Kinematics { source })?
+                    .rest;
                 (
                     Constraint::Revolute {
                         body: 1,
@@ -742,45 +748,4 @@ impl Simulation {
         self.in_contact = rebound <= REBOUND_TOLERANCE * self.speed * self.size;
         Ok(approach)
     }
-}
-
-/// The follower's extreme position over a revolution (`sense` +1: the smallest, −1: the
-/// largest), found on a 0.5° sweep and polished by the secant method on the velocity.
-fn lowest(mech: &Mechanism, sense: f64) -> f64 {
-    let thetas: Vec<f64> = (0..720).map(|k| (k as f64 * 0.5).to_radians()).collect();
-    let states: Vec<_> = mech.analyze_all(&thetas);
-    let mut best: Option<(f64, f64)> = None;
-    for (t, s) in thetas.iter().zip(&states) {
-        if let Ok(s) = s {
-            if best.is_none_or(|b| sense * s.position < sense * b.1) {
-                best = Some((*t, s.position));
-            }
-        }
-    }
-    let Some((t0, q0)) = best else { return 0.0 };
-    // secant on v(θ) = 0 around t0
-    let v = |t: f64| mech.analyze(t).map(|s| s.velocity).ok();
-    let (mut a, mut b) = (t0 - 0.005, t0 + 0.005);
-    let (mut fa, mut fb) = match (v(a), v(b)) {
-        (Some(x), Some(y)) => (x, y),
-        _ => return q0,
-    };
-    for _ in 0..30 {
-        if fb == fa {
-            break;
-        }
-        let c = b - fb * (b - a) / (fb - fa);
-        (a, fa) = (b, fb);
-        b = c;
-        fb = match v(b) {
-            Some(x) => x,
-            None => return q0,
-        };
-        if fb.abs() < 1e-14 * mech.cam().speed() * mech.size() {
-            break;
-        }
-    }
-    mech.position(b)
-        .map(|q| if sense * q <= sense * q0 { q } else { q0 })
-        .unwrap_or(q0)
 }

@@ -28,11 +28,13 @@
 //! acceleration of a follower in permanent contact equals the contact method's to 3e-14.
 
 mod cam;
+mod forces;
 mod model;
 mod projection;
 mod solver;
 
 pub use cam::{Event, EventKind, FollowerDynamics, Sample, Simulation, REBOUND_TOLERANCE};
+pub use forces::{effective_modulus, hertz_line_pressure, ForceState, Forces};
 pub use model::{Constraint, ForceElement, RigidBody, System};
 pub use solver::{AugmentedLagrangian, Evaluation};
 

@@ -126,7 +126,7 @@ impl Joint {
     /// +1 when `q` is a length (translating), the closing sign's opposite otherwise: the sign
     /// of `q` that moves the follower away from the cam.
     #[inline]
-    pub(crate) fn away(&self) -> f64 {
+    pub fn away(&self) -> f64 {
         match *self {
             Joint::Translating { .. } => 1.0,
             Joint::Rotating { closing, .. } => -closing.sign(),

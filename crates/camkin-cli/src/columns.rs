@@ -1,0 +1,86 @@
+//! The analysis table's columns with their units (`camkin analyze`): the library's
+//! [`AnalysisRow`] converted and named by [`Units`].
+
+use crate::output::Cell;
+use crate::units::Units;
+use camkin::table::{AnalysisRow, FoundBy};
+
+/// The column names of the analysis table, each with its unit.
+pub fn analysis_columns(u: &Units) -> Vec<String> {
+    let l = u.len();
+    let mut c = vec![
+        "angle_deg".to_string(),
+        format!("position_{}", u.motion_key(0)),
+        format!("lift_{}", u.motion_key(0)),
+        format!("velocity_{}", u.motion_key(1)),
+        format!("acceleration_{}", u.motion_key(2)),
+        format!("jerk_{}", u.motion_key(3)),
+    ];
+    for name in ["contact_x", "contact_y", "cam_x", "cam_y"] {
+        c.push(format!("{name}_{l}"));
+    }
+    c.push("cam_param".into());
+    c.push(format!("sliding_rate_cam_{l}_s"));
+    c.push(format!("sliding_rate_follower_{l}_s"));
+    for name in [
+        "normal_accel_cam",
+        "coriolis_cam",
+        "relative_cam",
+        "normal_accel_follower",
+    ] {
+        c.push(format!("{name}_{l}_s2"));
+    }
+    for name in ["normal_x", "normal_y", "sigma", "pressure_angle_deg"] {
+        c.push(name.into());
+    }
+    c.push(format!("radius_of_curvature_{l}"));
+    for name in ["at_node", "found", "error"] {
+        c.push(name.into());
+    }
+    c
+}
+
+/// One row's cells, in the order of [`analysis_columns`].
+pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
+    let n = Cell::Num;
+    let m = match (r.position, r.velocity, r.acceleration) {
+        (Some(q), Some(v), Some(a)) => u.motion(q, v, a, r.jerk),
+        _ => [None; 4],
+    };
+    let lift = r.lift.map(|l| u.coord_value(l));
+    vec![
+        n(Some(r.angle_deg)),
+        n(m[0]),
+        n(lift),
+        n(m[1]),
+        n(m[2]),
+        n(m[3]),
+        n(r.contact_x),
+        n(r.contact_y),
+        n(r.cam_x),
+        n(r.cam_y),
+        n(r.cam_param),
+        n(r.sliding_rate_cam),
+        n(r.sliding_rate_follower),
+        n(r.normal_accel_cam),
+        n(r.coriolis_cam),
+        n(r.relative_cam),
+        n(r.normal_accel_follower),
+        n(r.normal_x),
+        n(r.normal_y),
+        n(r.sigma),
+        n(r.pressure_angle_deg),
+        n(r.radius_of_curvature),
+        Cell::Int(r.at_node),
+        Cell::Text(r.found.map(|f| {
+            match f {
+                FoundBy::Global => "global",
+                FoundBy::Warm => "warm",
+                FoundBy::Jump => "jump",
+                _ => "other",
+            }
+            .to_string()
+        })),
+        Cell::Text(r.error.clone()),
+    ]
+}

@@ -1,0 +1,515 @@
+//! `camkin forces`: with a `[dynamics]` section, the contact force and the camshaft torque over a
+//! revolution under permanent contact, the speed at which the follower leaves the cam, the
+//! spring that keeps it on up to a target speed, and the Hertz contact stress.
+
+use crate::args::RevolutionStep;
+use crate::draw::chart::{self, Chart, Series};
+use crate::mechfile;
+use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
+use crate::Failure;
+use anyhow::anyhow;
+use camkin::cam::FollowerCurve;
+use camkin::dynamics::{effective_modulus, hertz_line_pressure, ForceState, Forces};
+use camkin::human::human;
+use std::f64::consts::TAU;
+use std::path::PathBuf;
+use std::str::FromStr;
+
+/// A material's elastic constants.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Material {
+    /// its name (a preset's, or `E=…,nu=…`)
+    pub name: String,
+    /// Young's modulus, Pa
+    pub e: f64,
+    /// Poisson's ratio
+    pub nu: f64,
+}
+
+/// Named materials (nominal values of handbooks: E in GPa, ν).
+pub const PRESETS: [(&str, f64, f64); 8] = [
+    ("steel", 206.0, 0.30),
+    ("aisi-52100", 210.0, 0.30),
+    ("aisi-4140", 205.0, 0.29),
+    ("aisi-1045", 206.0, 0.29),
+    ("stainless-440c", 200.0, 0.28),
+    ("ductile-iron", 169.0, 0.28),
+    ("cast-iron", 100.0, 0.26),
+    ("bronze", 110.0, 0.34),
+];
+
+impl FromStr for Material {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let t = s.trim();
+        if let Some(&(n, e, nu)) = PRESETS.iter().find(|p| p.0 == t) {
+            return Ok(Self {
+                name: n.into(),
+                e: e * 1e9,
+                nu,
+            });
+        }
+        // E=210e9:nu=0.3 (Pa)
+        let mut e = None;
+        let mut nu = None;
+        for part in t.split(':') {
+            match part.split_once('=') {
+                Some(("E", v)) => e = v.trim().parse::<f64>().ok(),
+                Some(("nu", v)) => nu = v.trim().parse::<f64>().ok(),
+                _ => {}
+            }
+        }
+        match (e, nu) {
+            (Some(e), Some(nu)) if e.is_finite() && e > 0.0 && (-1.0..0.5).contains(&nu) => {
+                Ok(Self {
+                    name: format!("E = {} GPa, ν = {nu}", human(e / 1e9)),
+                    e,
+                    nu,
+                })
+            }
+            _ => Err(format!(
+                "{t:?} is not a material: a preset ({}) or E=<Pa>:nu=<ratio> with E > 0 and −1 ≤ ν < 0.5, e.g. E=210e9:nu=0.3",
+                PRESETS.map(|p| p.0).join(", ")
+            )),
+        }
+    }
+}
+
+/// The cam's and the follower's materials: `CAM,FOLLOWER`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Materials(pub Material, pub Material);
+
+impl FromStr for Materials {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let (a, b) = s
+            .split_once(',')
+            .ok_or_else(|| format!("{s:?} is not CAM,FOLLOWER (e.g. steel,steel)"))?;
+        Ok(Self(a.parse()?, b.parse()?))
+    }
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ForcesArgs {
+    /// Mechanism file (TOML) with a `[dynamics]` section.
+    pub mechanism: PathBuf,
+    /// Cam-angle step, degrees.
+    #[arg(long, value_name = "DEG", default_value = "0.5")]
+    pub step: RevolutionStep,
+    /// The contact force that must remain, N.
+    #[arg(long, value_name = "N", default_value_t = 0.0)]
+    pub margin: f64,
+    /// The speed up to which the follower must stay on the cam, rpm [default: the file's].
+    #[arg(long, value_name = "RPM")]
+    pub target_rpm: Option<f64>,
+    /// Face width of the contact, in the file's length unit: the Hertz contact stress.
+    #[arg(long, value_name = "LENGTH")]
+    pub face_width: Option<f64>,
+    /// Cam and follower materials for the contact stress: presets (steel, aisi-52100,
+    /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or E=<Pa>:nu=<ν>.
+    #[arg(long, value_name = "CAM,FOLLOWER", default_value = "steel,steel")]
+    pub materials: Materials,
+    /// Allowable contact stress, MPa: exit 3 when the stress exceeds it.
+    #[arg(long, value_name = "MPA")]
+    pub allowable: Option<f64>,
+    /// Directory for forces.csv, force_speed.csv and their plots.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
+fn angle(t: f64) -> String {
+    format!(
+        "{}°",
+        human((t.to_degrees().rem_euclid(360.0) * 100.0).round() / 100.0)
+    )
+}
+
+fn num(x: f64) -> String {
+    human(if x == 0.0 {
+        0.0
+    } else {
+        let d = 10f64.powi(3 - x.abs().log10().floor() as i32);
+        (x * d).round() / d
+    })
+}
+
+pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
+    let bad = |m: String| Failure::Input(anyhow!(m));
+    if !(args.margin.is_finite() && args.margin >= 0.0) {
+        return Err(bad(format!(
+            "--margin: {} N must be finite and ≥ 0",
+            args.margin
+        )));
+    }
+    if let Some(r) = args.target_rpm {
+        if !(r.is_finite() && r > 0.0 && r <= 1e7) {
+            return Err(bad(format!("--target-rpm: {r} must be in (0, 1e7] rpm")));
+        }
+    }
+    if let Some(a) = args.allowable {
+        if !(a.is_finite() && a > 0.0) {
+            return Err(bad(format!("--allowable: {a} MPa must be positive")));
+        }
+    }
+    let (mech, params, unit) =
+        mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    let osc = mech.follower().is_oscillating();
+    let lu = unit.name();
+    let m_per = unit.metres();
+    if let Some(wd) = args.face_width {
+        if !(wd.is_finite() && wd > 0.0) {
+            return Err(bad(format!("--face-width: {wd} {lu} must be positive")));
+        }
+    }
+    // the follower's curve radius for Hertz (m): a roller's, a flat face's ∞; a knife has none
+    let follower_radius = match mech.follower_curve() {
+        FollowerCurve::Circle(c) => Some(c.radius()),
+        FollowerCurve::Line(_) => Some(f64::INFINITY),
+        _ => None,
+    };
+    if args.face_width.is_some() && follower_radius.is_none() {
+        return Err(bad(
+            "--face-width: a knife-edge follower has no line contact (its edge is a point in the plane): no Hertz stress".into(),
+        ));
+    }
+    let n = (360.0 / args.step.deg()).round() as usize;
+    crate::check_sweep_time(&mech, n * 2 + 720, 1, false)?;
+    let f = Forces::new(&mech, params).map_err(|e| Failure::Input(anyhow!(e)))?;
+    let thetas: Vec<f64> = (0..n).map(|k| k as f64 * TAU / n as f64).collect();
+    let states: Vec<ForceState> = thetas
+        .iter()
+        .map(|&t| f.at(t))
+        .collect::<Result<_, _>>()
+        .map_err(|e| Failure::Input(anyhow!("the forces cannot be computed: {e}")))?;
+    let w = mech.cam().speed();
+    let rpm = w * 60.0 / TAU;
+    let target_rpm = args.target_rpm.unwrap_or(rpm);
+    let target = target_rpm * TAU / 60.0;
+    let (fu, ku, tu) = if osc {
+        ("N·m", "N·m/rad", "N·m")
+    } else {
+        ("N", "N/m", "N·m")
+    };
+    let mut report = format!(
+        "forces on {} at {} rpm, permanent contact, friction neglected{}:\n",
+        args.mechanism.display(),
+        num(rpm),
+        if mech.cam().angular_acceleration() != 0.0 {
+            " (with the file's angular acceleration; speeds below assume a constant speed)"
+        } else {
+            ""
+        }
+    );
+    let extreme = |g: &dyn Fn(&ForceState) -> f64| {
+        let mut lo = &states[0];
+        let mut hi = &states[0];
+        for s in &states {
+            if g(s) < g(lo) {
+                lo = s;
+            }
+            if g(s) > g(hi) {
+                hi = s;
+            }
+        }
+        (lo, hi)
+    };
+    let (flo, fhi) = extreme(&|s| s.contact_force);
+    report += &format!(
+        "contact force: max {} N at {}, min {} N at {}\n",
+        num(fhi.contact_force),
+        angle(fhi.cam_angle),
+        num(flo.contact_force),
+        angle(flo.cam_angle)
+    );
+    let (tlo, thi) = extreme(&|s| s.camshaft_torque);
+    let rms = (states
+        .iter()
+        .map(|s| s.camshaft_torque.powi(2))
+        .sum::<f64>()
+        / n as f64)
+        .sqrt();
+    report += &format!(
+        "camshaft torque: max {} {tu} at {}, min {} {tu} at {}, RMS {} {tu}\n",
+        num(thi.camshaft_torque),
+        angle(thi.cam_angle),
+        num(tlo.camshaft_torque),
+        angle(tlo.cam_angle),
+        num(rms)
+    );
+    let pmax = states
+        .iter()
+        .map(|s| s.follower_power.abs())
+        .fold(0.0, f64::max);
+    let dmax = states
+        .iter()
+        .map(|s| (s.camshaft_torque * w - s.follower_power).abs())
+        .fold(0.0, f64::max);
+    report += &format!(
+        "power balance (torque × speed against the power into the follower): largest difference {:.1e} of the peak power {} W\n",
+        if pmax > 0.0 { dmax / pmax } else { dmax },
+        num(pmax)
+    );
+    let mut failures: Vec<String> = Vec::new();
+    if flo.contact_force < args.margin {
+        failures.push(format!(
+            "the contact force falls to {} N at {} at the file's speed (margin {} N)",
+            num(flo.contact_force),
+            angle(flo.cam_angle),
+            num(args.margin)
+        ));
+    }
+    // the speed at which the contact force first reaches the margin
+    let (mut jump, mut jump_at) = (f64::INFINITY, 0.0);
+    for s in &states {
+        let v = f.leave_speed(s, args.margin);
+        if v < jump {
+            (jump, jump_at) = (v, s.cam_angle);
+        }
+    }
+    report += &if jump.is_finite() {
+        format!(
+            "jump speed: {} rpm (the contact force reaches {} N first at {}, at constant speed)\n",
+            num(jump * 60.0 / TAU),
+            num(args.margin),
+            angle(jump_at)
+        )
+    } else {
+        format!(
+            "jump speed: none (the contact force stays above {} N at any constant speed)\n",
+            num(args.margin)
+        )
+    };
+    if jump < target {
+        failures.push(format!(
+            "the follower leaves the cam at {} rpm, below {} rpm",
+            num(jump * 60.0 / TAU),
+            num(target_rpm)
+        ));
+    }
+    // spring sizing for the target speed
+    let preload = states
+        .iter()
+        .map(|s| f.preload_needed(s, args.margin, target))
+        .fold(f64::NEG_INFINITY, f64::max);
+    let mut stiffness = f64::NEG_INFINITY;
+    let mut stiffness_possible = true;
+    for s in &states {
+        match f.stiffness_needed(s, args.margin, target) {
+            Some(k) => stiffness = stiffness.max(k),
+            None => {
+                if f.preload_needed(s, args.margin, target) > params.spring_preload {
+                    stiffness_possible = false;
+                }
+            }
+        }
+    }
+    report += &format!(
+        "spring for {} rpm with a margin of {} N: preload ≥ {} {fu} with the stiffness {} {ku} (file: preload {} {fu}); ",
+        num(target_rpm),
+        num(args.margin),
+        num(preload.max(0.0)),
+        num(params.spring_stiffness),
+        num(params.spring_preload)
+    );
+    report += &if stiffness_possible {
+        format!(
+            "or stiffness ≥ {} {ku} with the preload {} {fu}\n",
+            num(stiffness.max(0.0)),
+            num(params.spring_preload)
+        )
+    } else {
+        format!(
+            "no stiffness will do with the preload {} {fu} (the follower leaves the cam at rest position, where only the preload acts)\n",
+            num(params.spring_preload)
+        )
+    };
+    // Hertz contact stress
+    let mut stress: Vec<Option<f64>> = vec![None; n];
+    if let (Some(width), Some(rf)) = (args.face_width, follower_radius) {
+        let Materials(a, b) = &args.materials;
+        let es = effective_modulus(a.e, a.nu, b.e, b.nu);
+        let mut worst: Option<(f64, f64, f64)> = None;
+        let mut unclosed = 0;
+        for (k, s) in states.iter().enumerate() {
+            match hertz_line_pressure(
+                s.contact_force.max(0.0),
+                width * m_per,
+                s.cam_radius,
+                rf,
+                es,
+            ) {
+                Some(p) => {
+                    stress[k] = Some(p / 1e6);
+                    if worst.is_none_or(|w| p > w.0) {
+                        worst = Some((p, s.cam_angle, s.cam_radius));
+                    }
+                }
+                None if s.contact_force > 0.0 => unclosed += 1,
+                None => {}
+            }
+        }
+        if let Some((p, t, rho)) = worst {
+            let mpa = p / 1e6;
+            report += &format!(
+                "contact stress (Hertz line contact, face {} {lu}, {} cam on {} follower, E* = {} GPa): max {} MPa at {} (cam radius of curvature {} {lu})",
+                num(width),
+                a.name,
+                b.name,
+                num(es / 1e9),
+                num(mpa),
+                angle(t),
+                if rho.is_finite() { num(rho / m_per) } else { "∞".into() }
+            );
+            match args.allowable {
+                Some(al) if mpa > al => {
+                    report += &format!(", OVER the allowable {} MPa\n", num(al));
+                    failures.push(format!(
+                        "the contact stress {} MPa exceeds the allowable {} MPa",
+                        num(mpa),
+                        num(al)
+                    ));
+                }
+                Some(al) => report += &format!(", within the allowable {} MPa\n", num(al)),
+                None => report.push('\n'),
+            }
+        }
+        if unclosed > 0 {
+            report += &format!("contact stress: at {unclosed} angles the cam is concave as sharply as the roller: no Hertz solution (conformal contact)\n");
+        }
+    }
+    print!("{report}");
+    if let Some(dir) = &args.out {
+        write_files(dir, &f, &states, &stress, args.margin, target, jump, fu, tu)
+            .map_err(Failure::output)?;
+        eprintln!("camkin: wrote {}", dir.display());
+    }
+    if failures.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure::Check(anyhow!(
+            "check failed: {}",
+            failures.join("; ")
+        )))
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn write_files(
+    dir: &std::path::Path,
+    f: &Forces<'_>,
+    states: &[ForceState],
+    stress: &[Option<f64>],
+    margin: f64,
+    target: f64,
+    jump: f64,
+    fu: &str,
+    tu: &str,
+) -> anyhow::Result<()> {
+    std::fs::create_dir_all(dir).map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
+    let columns: Vec<String> = vec![
+        "angle_deg".into(),
+        "contact_force_N".into(),
+        format!("spring_force_{}", fu.replace('·', "_")),
+        format!("camshaft_torque_{}", tu.replace('·', "_")),
+        "pressure_angle_deg".into(),
+        "contact_stress_MPa".into(),
+    ];
+    let rows: Vec<Vec<Cell>> = states
+        .iter()
+        .zip(stress)
+        .map(|(s, p)| {
+            vec![
+                Cell::Num(Some(s.cam_angle.to_degrees())),
+                Cell::Num(Some(s.contact_force)),
+                Cell::Num(Some(s.spring_force)),
+                Cell::Num(Some(s.camshaft_torque)),
+                Cell::Num(Some(s.pressure_angle.to_degrees())),
+                Cell::Num(*p),
+            ]
+        })
+        .collect();
+    write_atomic(Some(&dir.join("forces.csv")), |w| {
+        write_cell_table(w, TableFormat::Csv, &columns, rows)
+    })?;
+    // the smallest contact force over the revolution against a constant speed
+    let top = 1.5 * target.max(if jump.is_finite() { jump } else { 0.0 });
+    let speeds: Vec<f64> = (0..=150).map(|k| top * k as f64 / 150.0).collect();
+    let min_force = |omega: f64| {
+        states
+            .iter()
+            .map(|s| f.force_at_speed(s, omega))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let curve: Vec<(f64, f64)> = speeds
+        .iter()
+        .map(|&w| (w * 60.0 / TAU, min_force(w)))
+        .collect();
+    write_atomic(Some(&dir.join("force_speed.csv")), |w| {
+        write_cell_table(
+            w,
+            TableFormat::Csv,
+            &["speed_rpm".into(), "min_contact_force_N".into()],
+            curve
+                .iter()
+                .map(|&(a, b)| vec![Cell::Num(Some(a)), Cell::Num(Some(b))])
+                .collect(),
+        )
+    })?;
+    let deg = |s: &ForceState| s.cam_angle.to_degrees();
+    chart::save(
+        &Chart {
+            title: "contact force under permanent contact".into(),
+            x_label: "cam angle (°)".into(),
+            y_label: "contact force (N)".into(),
+            series: vec![Series {
+                name: "contact force".into(),
+                points: states.iter().map(|s| (deg(s), s.contact_force)).collect(),
+                dashed: false,
+            }],
+            log_y: false,
+            x_range: Some((0.0, 360.0)),
+        },
+        &dir.join("contact_force"),
+    )?;
+    chart::save(
+        &Chart {
+            title: "camshaft torque".into(),
+            x_label: "cam angle (°)".into(),
+            y_label: format!("torque ({tu})"),
+            series: vec![Series {
+                name: "camshaft torque".into(),
+                points: states.iter().map(|s| (deg(s), s.camshaft_torque)).collect(),
+                dashed: false,
+            }],
+            log_y: false,
+            x_range: Some((0.0, 360.0)),
+        },
+        &dir.join("camshaft_torque"),
+    )?;
+    chart::save(
+        &Chart {
+            title: format!(
+                "smallest contact force over a revolution (margin {} N)",
+                num(margin)
+            ),
+            x_label: "cam speed (rpm)".into(),
+            y_label: "smallest contact force (N)".into(),
+            series: vec![
+                Series {
+                    name: "smallest contact force".into(),
+                    points: curve,
+                    dashed: false,
+                },
+                Series {
+                    name: "margin".into(),
+                    points: vec![(0.0, margin), (top * 60.0 / TAU, margin)],
+                    dashed: true,
+                },
+            ],
+            log_y: false,
+            x_range: None,
+        },
+        &dir.join("force_speed"),
+    )?;
+    Ok(())
+}

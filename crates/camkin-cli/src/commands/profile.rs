@@ -1,0 +1,69 @@
+//! `camkin profile`: manufacturing output from any cam profile — the polar table, the pitch
+//! curve, a cutter's centre path with its undercut check, and a DXF of arcs with its units.
+
+use crate::args::RevolutionStep;
+use crate::manufacture::{self, Error, Options};
+use crate::{load_mechanism, Failure};
+use anyhow::anyhow;
+use std::path::PathBuf;
+
+#[derive(Debug, clap::Args)]
+pub struct ProfileArgs {
+    /// Mechanism file (TOML); without it, the paper's built-in cam.
+    pub mechanism: Option<PathBuf>,
+    /// Directory for polar.csv, pitch.csv, cutter.csv and profile.dxf.
+    #[arg(long, value_name = "DIR", default_value = "camkin-profile")]
+    pub out: PathBuf,
+    /// Angle step of the polar table, degrees.
+    #[arg(long, value_name = "DEG", default_value = "1")]
+    pub step: RevolutionStep,
+    /// Radius of the cutter or grinding wheel, in the file's length unit: its centre path
+    /// (cutter.csv, layer CUTTER of profile.dxf) and where it cannot cut the profile.
+    #[arg(long, value_name = "R")]
+    pub tool_radius: Option<f64>,
+    /// Largest distance of the DXF's arcs from the exact curves, in the file's length unit
+    /// [default: 1e-6 of the cam's size].
+    #[arg(long, value_name = "LENGTH")]
+    pub tolerance: Option<f64>,
+}
+
+pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
+    let loaded = load_mechanism(args.mechanism.as_ref())?;
+    if let Some(t) = args.tolerance {
+        let size = loaded.mech.size();
+        if !(t.is_finite() && t >= 1e-12 * size && t <= 0.1 * size) {
+            return Err(Failure::Input(anyhow!(
+                "--tolerance: {t} {} must be from 1e-12 to 0.1 of the cam's size ({} {})",
+                loaded.unit.name(),
+                camkin::human::human(size),
+                loaded.unit.name()
+            )));
+        }
+    }
+    let made = manufacture::write(
+        &loaded.mech,
+        loaded.unit,
+        &args.out,
+        &Options {
+            step_deg: args.step.deg(),
+            tool_radius: args.tool_radius,
+            tolerance: args.tolerance,
+        },
+    )
+    .map_err(|e| match e {
+        Error::Input(e) => Failure::Input(e),
+        Error::Output(e) => Failure::output(e),
+    })?;
+    print!("{}", made.report);
+    eprintln!(
+        "camkin: wrote {} files to {}",
+        made.files.len(),
+        args.out.display()
+    );
+    if made.tool_undercut {
+        return Err(Failure::Check(anyhow!(
+            "design check failed: the cutter cannot cut the profile (see above)"
+        )));
+    }
+    Ok(())
+}
