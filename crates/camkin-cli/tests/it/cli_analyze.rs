@@ -4,15 +4,6 @@ use crate::common::predicate;
 use crate::common::*;
 use std::path::PathBuf;
 
-fn parse_csv(out: &[u8]) -> (Vec<String>, Vec<Vec<String>>) {
-    let text = String::from_utf8(out.to_vec()).unwrap();
-    let mut lines = text.lines();
-    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .map(|l| l.split(',').map(String::from).collect())
-        .collect();
-    (header, rows)
-}
 
 #[test]
 fn default_runs_the_paper_cam_over_a_revolution() {
@@ -24,9 +15,17 @@ fn default_runs_the_paper_cam_over_a_revolution() {
         .stdout
         .clone();
     let (header, rows) = parse_csv(&out);
+    // the paper's cam is in cm: every column says so
     assert_eq!(
-        &header[..4],
-        ["angle_deg", "position", "velocity", "acceleration"]
+        &header[..6],
+        [
+            "angle_deg",
+            "position_cm",
+            "lift_cm",
+            "velocity_cm_s",
+            "acceleration_cm_s2",
+            "jerk_cm_s3"
+        ]
     );
     assert_eq!(rows.len(), 360);
     for r in &rows {
@@ -34,7 +33,7 @@ fn default_runs_the_paper_cam_over_a_revolution() {
     }
     // θ = 0: s = 5 cm, a = −26 961.97 cm/s² (cam-follower.md)
     let s: f64 = rows[0][1].parse().unwrap();
-    let a: f64 = rows[0][3].parse().unwrap();
+    let a: f64 = rows[0][4].parse().unwrap();
     assert!(
         (s - 5.0).abs() < 1e-12 && (a + 26_961.97).abs() < 0.01,
         "{s} {a}"
@@ -212,10 +211,10 @@ fn json_format_has_the_csv_columns_as_keys() {
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 2);
-    assert_eq!(rows[0]["position"], 5.0);
-    assert!((rows[1]["acceleration"].as_f64().unwrap() + 6291.918).abs() < 1e-3);
-    assert!(rows[0]["jerk"].is_null()); // θ = 0 sits on a spline node
-    assert!(rows[1]["jerk"].is_number());
+    assert_eq!(rows[0]["position_cm"], 5.0);
+    assert!((rows[1]["acceleration_cm_s2"].as_f64().unwrap() + 6291.918).abs() < 1e-3);
+    assert!(rows[0]["jerk_cm_s3"].is_null()); // θ = 0 sits on a spline node
+    assert!(rows[1]["jerk_cm_s3"].is_number());
 }
 
 /// Regression (issue 12): angles are reduced modulo 360° in degrees before conversion, so an
@@ -298,9 +297,20 @@ fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
         .collect();
     let results = mech.analyze_all(&thetas);
     let rows = camkin::table::analysis_rows(&mech, &angles, &results, true);
+    let units = camkin_cli::units::Units::plain(&mech, camkin::spec::LengthUnit::Mm);
+    let travel = mech.travel().unwrap();
+    let cells = rows
+        .iter()
+        .map(|r| camkin_cli::columns::analysis_cells(&r.clone().with_lift(&travel), &units))
+        .collect();
     let mut expected = Vec::new();
-    camkin_cli::output::write_table(&mut expected, &rows, camkin_cli::output::TableFormat::Csv)
-        .unwrap();
+    camkin_cli::output::write_cell_table(
+        &mut expected,
+        camkin_cli::output::TableFormat::Csv,
+        &camkin_cli::columns::analysis_columns(&units),
+        cells,
+    )
+    .unwrap();
     let got = std::fs::read(&out).unwrap();
     assert!(
         got == expected,
@@ -337,10 +347,11 @@ fn any_initial_angle_and_a_small_roller_analyse_every_angle() {
         let a = camkin()
             .arg("analyze")
             .arg(&p)
-            .args(["--angles", "0:360:1"])
+            .args(["--angles", "0:360:1", "--angle-unit", "rad"])
             .assert()
             .success();
         let (header, rows) = parse_csv(&a.get_output().stdout);
+        assert!(["position_rad", "position_cm"].contains(&header[1].as_str()));
         let error = header.iter().position(|h| h == "error").unwrap();
         assert_eq!(rows.len(), 360);
         assert!(rows.iter().all(|r| r[error].is_empty()), "{text}");
@@ -441,7 +452,7 @@ fn uneven_points_under_uniform_parameterisation_warn_and_files_default_to_chord_
     let w = std::f64::consts::TAU;
     for r in &rows {
         let th = r[0].parse::<f64>().unwrap().to_radians();
-        let acc = r[3].parse::<f64>().unwrap();
+        let acc = r[4].parse::<f64>().unwrap();
         assert!(
             (acc + 0.5 * w * w * th.cos()).abs() < 0.2 * 0.5 * w * w,
             "{r:?}"

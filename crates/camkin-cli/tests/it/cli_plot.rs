@@ -57,8 +57,8 @@ fn plot_every_follower_type() {
         assert_eq!(png_size(&d.join("kinematics.png")), (1400, 1300));
         let k = assert_well_formed_svg(&d.join("kinematics.svg"));
         for title in [
-            "displacement",
-            "velocity",
+            "lift (",
+            "velocity (",
             "acceleration",
             "jerk",
             "pressure angle",
@@ -66,6 +66,26 @@ fn plot_every_follower_type() {
         ] {
             assert!(k.contains(title), "{name}: {title}");
         }
+        // the SVAJ page: four panels, each axis with its unit, peaks annotated
+        assert_eq!(png_size(&d.join("svaj.png")), (1200, 1500));
+        let svaj = assert_well_formed_svg(&d.join("svaj.svg"));
+        let (len, coord) = match name {
+            "oscillating-flat" | "oscillating-roller" => ("cm", "°"),
+            _ => ("cm", "cm"),
+        };
+        for label in [
+            format!("lift ({coord})"),
+            format!("velocity ({coord}/s)"),
+            format!("acceleration ({coord}/s²)"),
+            format!("jerk ({coord}/s³)"),
+            "cam angle (°)".into(),
+            "max ".into(),
+            "rpm".into(),
+        ] {
+            assert!(svaj.contains(&label), "{name}: {label}");
+        }
+        assert!(k.contains(&format!("radius of curvature ({len})")), "{name}");
+        assert!(!svaj.contains("e-1"), "{name}: a tick of rounding noise");
         for a in ["0", "45"] {
             let (w, h) = png_size(&d.join(format!("drawing_{a}.png")));
             assert_eq!(w, 800);
@@ -88,8 +108,8 @@ fn plot_defaults_to_the_paper_cam() {
         .assert()
         .success()
         .stderr(predicate::str::contains("paper"));
-    // four default drawings, kinematics (2), animation
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 11);
+    // four default drawings, kinematics (2), the SVAJ page (2), animation
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 13);
 }
 
 #[test]

@@ -66,7 +66,12 @@ fn paper_writes_data_plots_and_summary() {
         let (h, rows) = csv(&d.join("displacement.csv"));
         assert_eq!(
             h[..4],
-            ["angle_deg", "position", "velocity", "acceleration"]
+            [
+                "angle_deg",
+                "position_cm",
+                "velocity_cm_s",
+                "acceleration_cm_s2"
+            ]
         );
         assert_eq!(rows.len(), 7200); // 0.05° grid
         let (h, rows) = csv(&d.join("relative_error.csv"));
@@ -85,10 +90,10 @@ fn paper_writes_data_plots_and_summary() {
             h,
             [
                 "angle_deg",
-                "contact_method",
-                "interpolated_100",
-                "interpolated_1000",
-                "interpolated_10000"
+                "contact_method_cm_s2",
+                "interpolated_100_cm_s2",
+                "interpolated_1000_cm_s2",
+                "interpolated_10000_cm_s2"
             ]
         );
     }
@@ -182,9 +187,10 @@ fn compare_writes_plots_with_zoom() {
         assert_png(&dir.path().join(format!("{base}.png")));
         assert_svg(&dir.path().join(format!("{base}.svg")), "cam angle");
     }
+    // an arm's angle in degrees by default
     assert!(std::fs::read_to_string(dir.path().join("displacement.svg"))
         .unwrap()
-        .contains("rad"));
+        .contains("displacement (°)"));
 }
 
 #[test]

@@ -149,3 +149,114 @@ pub mod predicate {
         }
     }
 }
+
+/// A polyline of an ASCII DXF: its layer, closed flag (group 70, bit 1) and vertices
+/// `(x, y, bulge)` (groups 10, 20, 42).
+#[derive(Debug, Clone)]
+pub struct DxfPolyline {
+    pub layer: String,
+    pub closed: bool,
+    pub vertices: Vec<(f64, f64, f64)>,
+}
+
+/// An ASCII DXF read from the format's definition (group code / value line pairs), not with the
+/// writer's code: the header variables and the POLYLINE entities.
+#[derive(Debug, Clone, Default)]
+pub struct Dxf {
+    pub header: std::collections::HashMap<String, String>,
+    pub polylines: Vec<DxfPolyline>,
+}
+
+pub fn read_dxf(text: &str) -> Dxf {
+    let lines: Vec<&str> = text.lines().map(str::trim).collect();
+    assert!(lines.len() % 2 == 0, "DXF is pairs of lines");
+    let pairs: Vec<(i32, &str)> = lines
+        .chunks(2)
+        .map(|p| (p[0].parse().expect("a group code"), p[1]))
+        .collect();
+    let mut out = Dxf::default();
+    let mut k = 0;
+    while k < pairs.len() {
+        if pairs[k].0 == 9 {
+            // a header variable: its name, then its value's group
+            out.header
+                .insert(pairs[k].1.to_string(), pairs[k + 1].1.to_string());
+        }
+        if pairs[k] == (0, "POLYLINE") {
+            let mut p = DxfPolyline {
+                layer: String::new(),
+                closed: false,
+                vertices: Vec::new(),
+            };
+            k += 1;
+            while pairs[k].0 != 0 {
+                match pairs[k].0 {
+                    8 => p.layer = pairs[k].1.to_string(),
+                    70 => p.closed = pairs[k].1.parse::<i32>().unwrap() & 1 == 1,
+                    _ => {}
+                }
+                k += 1;
+            }
+            while pairs[k] == (0, "VERTEX") {
+                let (mut x, mut y, mut b) = (None, None, 0.0);
+                k += 1;
+                while pairs[k].0 != 0 {
+                    match pairs[k].0 {
+                        10 => x = Some(pairs[k].1.parse::<f64>().unwrap()),
+                        20 => y = Some(pairs[k].1.parse::<f64>().unwrap()),
+                        42 => b = pairs[k].1.parse::<f64>().unwrap(),
+                        _ => {}
+                    }
+                    k += 1;
+                }
+                p.vertices.push((x.expect("x"), y.expect("y"), b));
+            }
+            assert_eq!(pairs[k], (0, "SEQEND"), "a polyline ends with SEQEND");
+            out.polylines.push(p);
+        }
+        k += 1;
+    }
+    assert_eq!(pairs.last(), Some(&(0, "EOF")));
+    out
+}
+
+/// Points along a polyline's arcs: from each vertex to the next by its bulge (`tan(θ/4)`, the
+/// arc's angle θ counter-clockwise positive), `n` points per arc, from the DXF definition.
+pub fn polyline_points(p: &DxfPolyline, n: usize) -> Vec<(f64, f64)> {
+    let m = p.vertices.len();
+    let mut out = Vec::new();
+    for i in 0..m {
+        let (x0, y0, b) = p.vertices[i];
+        let (x1, y1, _) = p.vertices[(i + 1) % m];
+        let theta = 4.0 * b.atan();
+        let (cx, cy) = ((x1 - x0), (y1 - y0));
+        let c = cx.hypot(cy);
+        for j in 0..n {
+            let t = j as f64 / n as f64;
+            if theta.abs() < 1e-12 {
+                out.push((x0 + t * cx, y0 + t * cy));
+                continue;
+            }
+            // the centre lies off the chord's midpoint by (c/2)/tan(θ/2), on the left for θ > 0
+            let d = 0.5 * c / (0.5 * theta).tan();
+            let (mx, my) = (x0 + 0.5 * cx, y0 + 0.5 * cy);
+            let (ox, oy) = (mx - d * cy / c, my + d * cx / c);
+            let a0 = (y0 - oy).atan2(x0 - ox);
+            let r = (x0 - ox).hypot(y0 - oy);
+            let a = a0 + t * theta;
+            out.push((ox + r * a.cos(), oy + r * a.sin()));
+        }
+    }
+    out
+}
+
+/// A CSV table: its header and its rows as text.
+pub fn parse_csv(out: &[u8]) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = String::from_utf8(out.to_vec()).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    (header, rows)
+}
