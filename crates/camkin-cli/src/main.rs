@@ -1,6 +1,8 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
-use camkin_cli::commands::{analyze, bench, compare, forces, plot, profile, simulate, synth};
+use camkin_cli::commands::{
+    analyze, bench, compare, deviation, forces, plot, profile, simulate, synth,
+};
 use camkin_cli::Failure;
 
 use clap::{Parser, Subcommand};
@@ -62,6 +64,11 @@ enum Command {
         after_help = "Examples:\n  camkin forces examples/eccentric-flat-dynamics.toml\n  camkin forces cam.toml --target-rpm 3000 --margin 20 --face-width 12 --materials steel,steel\n\nExit codes: 0 success, 1 internal failure, 2 bad input, 3 a check failed (contact lost below the target speed, stress over the allowable)."
     )]
     Forces(forces::ForcesArgs),
+    /// A measured profile (CMM points) against the design: radius, lift, velocity, acceleration.
+    #[command(
+        after_help = "Examples:\n  camkin deviation measured.csv --against cam.toml\n  camkin deviation measured.csv --against cam.toml --tolerance 0.002 --out dev\n\nThe points are smoothed by a Fourier series of the radius within --tolerance (the measurement's noise).\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Deviation(deviation::DeviationArgs),
 }
 
 /// True when a failure is only the reader of our output going away (`camkin … | head -1`).
@@ -109,6 +116,7 @@ fn main() -> ExitCode {
         Command::Synth(args) => synth::run(&args),
         Command::Profile(args) => profile::run(&args),
         Command::Forces(args) => forces::run(&args),
+        Command::Deviation(args) => deviation::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -75,6 +75,7 @@ pub mod field;
 pub mod geometry;
 pub mod human;
 pub mod interp;
+pub mod measured;
 pub mod motion;
 pub(crate) mod periodic;
 pub mod reference;

@@ -4,7 +4,6 @@ use crate::common::predicate;
 use crate::common::*;
 use std::path::PathBuf;
 
-
 #[test]
 fn default_runs_the_paper_cam_over_a_revolution() {
     let out = camkin()

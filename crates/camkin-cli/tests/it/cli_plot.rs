@@ -84,7 +84,10 @@ fn plot_every_follower_type() {
         ] {
             assert!(svaj.contains(&label), "{name}: {label}");
         }
-        assert!(k.contains(&format!("radius of curvature ({len})")), "{name}");
+        assert!(
+            k.contains(&format!("radius of curvature ({len})")),
+            "{name}"
+        );
         assert!(!svaj.contains("e-1"), "{name}: a tick of rounding noise");
         for a in ["0", "45"] {
             let (w, h) = png_size(&d.join(format!("drawing_{a}.png")));

@@ -46,7 +46,13 @@ fn synth_writes_a_profile_a_dxf_reader_opens() {
     assert!(dxf.polylines.iter().all(|p| p.closed));
     let (_, polar) = parse_csv(&std::fs::read(dir.path().join("polar.csv")).unwrap());
     assert_eq!(polar.len(), 720);
-    for f in ["profile.svg", "svaj.png", "svaj.svg", "checks.txt", "pitch.csv"] {
+    for f in [
+        "profile.svg",
+        "svaj.png",
+        "svaj.svg",
+        "checks.txt",
+        "pitch.csv",
+    ] {
         assert!(dir.path().join(f).exists(), "{f}");
     }
     assert!(!dir.path().join("cutter.csv").exists());
@@ -130,7 +136,9 @@ fn design_checks_catch_cams_built_to_violate_them() {
         .arg(dir.path().join("b"))
         .assert()
         .code(3)
-        .stderr(predicate::str::contains("design checks failed: pressure angle"))
+        .stderr(predicate::str::contains(
+            "design checks failed: pressure angle",
+        ))
         .stdout(predicate::str::contains("pressure angle: peak "))
         .stdout(predicate::str::contains("beyond ±30°"));
 }
