@@ -11,6 +11,7 @@ mod dynamics_liftoff;
 mod dynamics_multibody;
 mod eccentric_circle;
 mod ellipse_flat;
+mod forces;
 mod hyperdual_selfcheck;
 mod interpolation_study;
 mod jerk;
