@@ -106,7 +106,7 @@ pub struct ForcesArgs {
     #[arg(long, value_name = "LENGTH")]
     pub face_width: Option<f64>,
     /// Cam and follower materials for the contact stress: presets (steel, aisi-52100,
-    /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or E=<Pa>:nu=<ν>.
+    /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or `E=<Pa>:nu=<ν>`.
     #[arg(long, value_name = "CAM,FOLLOWER", default_value = "steel,steel")]
     pub materials: Materials,
     /// Allowable contact stress, MPa: exit 3 when the stress exceeds it.

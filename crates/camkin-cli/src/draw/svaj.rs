@@ -116,7 +116,7 @@ where
             .map_err(e)?;
         let x_fmt = |v: &f64| {
             if last {
-                format!("{}", tick(*v, 360.0))
+                tick(*v, 360.0)
             } else {
                 String::new()
             }

@@ -97,7 +97,7 @@ fn lift_and_derivatives_per_degree() {
     let lo = rows.iter().map(|r| r[lift]).fold(f64::INFINITY, f64::min);
     let hi = rows.iter().map(|r| r[lift]).fold(0.0, f64::max);
     // the lowest sample, 0.25° at most from the exact lowest: e (1 − cos 0.25°) ≈ 1e-5
-    assert!(lo < 2e-5 && lo >= -1e-12, "{lo}");
+    assert!((-1e-12..2e-5).contains(&lo), "{lo}");
     // the roller's centre on a line offset 0.5 from the disc's axis: stroke = √((R+r)² − (x−e)²)…
     // between e = 1 above and below: about 2e = 2
     assert!((hi - 2.0).abs() < 0.05, "{hi}");
