@@ -452,3 +452,31 @@ fn measured_profiles_are_smoothed_within_the_noise() {
         assert!((d - 0.02 * (3.0 * ph).cos()).abs() < 1e-9, "{r:?}");
     }
 }
+
+/// Issue 13, item 9: the README's mechanism-file reference is a complete file that runs as it is
+/// (it used to fail with "takes no `offset`").
+#[test]
+fn the_readmes_mechanism_file_runs_as_pasted() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../README.md"))
+            .unwrap();
+    let blocks: Vec<&str> = readme
+        .split("```toml\n")
+        .skip(1)
+        .map(|b| b.split("```").next().unwrap())
+        .filter(|b| b.contains("[cam]") && b.contains("[follower]"))
+        .collect();
+    assert!(!blocks.is_empty());
+    let dir = tempfile::tempdir().unwrap();
+    for b in blocks {
+        let p = dir.path().join("cam.toml");
+        std::fs::write(&p, b).unwrap();
+        camkin()
+            .arg("analyze")
+            .arg(&p)
+            .arg("--at")
+            .arg("0")
+            .assert()
+            .success();
+    }
+}
