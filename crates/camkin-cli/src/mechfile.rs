@@ -75,8 +75,21 @@ pub fn load(path: &Path) -> Result<Mechanism, InputError> {
 
 /// Reads and builds a mechanism file in its own length unit, with its unit and warnings.
 pub fn load_built(path: &Path) -> Result<Built, InputError> {
+    load_with_spec(path).map(|(_, b)| b)
+}
+
+/// Reads a mechanism file once: its spec (to build variants of it) and the mechanism it builds.
+pub fn load_with_spec(path: &Path) -> Result<(MechanismSpec, Built), InputError> {
     let (name, text) = read_text(path)?;
-    build(&text, &name, path.parent().unwrap_or(Path::new(".")), false)
+    let spec = parse_spec(&text, &name)?;
+    let built = build_spec(
+        &spec,
+        &text,
+        &name,
+        path.parent().unwrap_or(Path::new(".")),
+        false,
+    )?;
+    Ok((spec, built))
 }
 
 /// Reads a mechanism file for a simulation (see [`parse_dynamics`]).
@@ -125,6 +138,17 @@ pub fn parse_spec(text: &str, name: &str) -> Result<MechanismSpec, InputError> {
 
 fn build(text: &str, name: &str, base: &Path, si: bool) -> Result<Built, InputError> {
     let spec = parse_spec(text, name)?;
+    build_spec(&spec, text, name, base, si)
+}
+
+/// Builds a parsed spec, placing errors and warnings in `text`.
+fn build_spec(
+    spec: &MechanismSpec,
+    text: &str,
+    name: &str,
+    base: &Path,
+    si: bool,
+) -> Result<Built, InputError> {
     let options = BuildOptions {
         base_dir: base.to_path_buf(),
         si,

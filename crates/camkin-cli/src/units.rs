@@ -150,11 +150,6 @@ impl Units {
     }
 }
 
-/// A length from a dynamics run (which computes in SI) in the file's unit.
-pub fn from_metres(unit: LengthUnit, metres: f64) -> f64 {
-    metres / unit.metres()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

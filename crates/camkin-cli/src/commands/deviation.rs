@@ -45,20 +45,15 @@ fn fail(m: String) -> Failure {
 }
 
 pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
-    let text = std::fs::read_to_string(&args.against)
-        .map_err(|e| fail(format!("cannot read {}: {e}", args.against.display())))?;
-    let name = args.against.display().to_string();
-    let spec = mechfile::parse_spec(&text, &name).map_err(|e| fail(e.message))?;
-    let base = args
-        .against
-        .parent()
-        .unwrap_or(std::path::Path::new("."))
-        .to_path_buf();
+    let (spec, design) = mechfile::load_with_spec(&args.against).map_err(|e| fail(e.message))?;
     let opts = BuildOptions {
-        base_dir: base.clone(),
+        base_dir: args
+            .against
+            .parent()
+            .unwrap_or(std::path::Path::new("."))
+            .to_path_buf(),
         si: false,
     };
-    let design = mechfile::load_built(&args.against).map_err(|e| fail(e.message))?;
     let unit = design.length_unit;
     let l = unit.name();
     let mech = &design.mechanism;

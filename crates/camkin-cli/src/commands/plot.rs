@@ -289,7 +289,7 @@ fn marks(mech: &Mechanism, grid: &[f64], states: &[Option<FollowerState>]) -> Ve
                 order: 0,
             });
         } else if let (Some(p), Some(c)) = (&states[k - 1], &states[k]) {
-            if piece(p) != piece(c) && mech.cam().synthesis().is_none() && bps.len() > 1 {
+            if piece(p) != piece(c) && bps.len() > 1 {
                 out.push(svaj::Mark {
                     angle_deg: 0.5 * (grid[k - 1] + grid[k]),
                     order: 3,

@@ -250,10 +250,12 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             ea / scale
         )
     };
+    // the round trip is in time derivatives whatever --per says
+    let ut = Units::new(mech, loaded.unit, args.angle_unit, Per::S);
     let (su, vu, au) = (
-        Units::new(mech, loaded.unit, args.angle_unit, Per::S).motion_symbol(0),
-        Units::new(mech, loaded.unit, args.angle_unit, Per::S).motion_symbol(1),
-        Units::new(mech, loaded.unit, args.angle_unit, Per::S).motion_symbol(2),
+        ut.motion_symbol(0),
+        ut.motion_symbol(1),
+        ut.motion_symbol(2),
     );
     let cv = |x: f64| u.coord_value(x);
     report += &format!(

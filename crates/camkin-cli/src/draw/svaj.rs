@@ -69,11 +69,6 @@ pub fn peaks(points: &[(f64, f64)]) -> Option<((f64, f64), (f64, f64))> {
     Some((lo, hi))
 }
 
-/// A value for people: four significant digits, no rounding noise.
-fn value(v: f64, span: f64) -> String {
-    tick(v, span)
-}
-
 fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, page: &Page) -> Result<()>
 where
     DB::ErrorType: 'static,
@@ -179,7 +174,7 @@ where
             for (what, (x, y), dy) in notes {
                 let text = format!(
                     "{what} {} {} at {}°",
-                    value(y, vspan),
+                    tick(y, vspan),
                     p.unit,
                     camkin::human::human((x * 100.0).round() / 100.0)
                 );
