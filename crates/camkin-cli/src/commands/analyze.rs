@@ -48,6 +48,7 @@ pub struct Args {
 /// (`jump_at`: the first rows that jumped, of `total`).
 fn report_degenerate(
     mech: &Mechanism,
+    unit: &str,
     stretches: &[(f64, f64)],
     angles: &[f64],
     jump_at: &[usize],
@@ -55,7 +56,8 @@ fn report_degenerate(
 ) {
     let what = match mech.roller_radius() {
         Some(roller_radius) => format!(
-            "concave more sharply than the roller (radius of curvature below {roller_radius}), or folds over itself"
+            "concave more sharply than the roller (radius of curvature below {} {unit}), or folds over itself",
+            camkin::human::human(roller_radius)
         ),
         None => "concave under the flat face, or folds over itself".to_string(),
     };
@@ -63,7 +65,7 @@ fn report_degenerate(
     for &(a, b) in stretches {
         let (pa, pb) = (p.position(a), p.position(b));
         eprintln!(
-            "camkin: warning: the cam profile from u = {a:.4} ({:.4}, {:.4}) to u = {b:.4} ({:.4}, {:.4}) is {what}: the follower cannot follow it, the contact jumps across and the acceleration is impulsive there",
+            "camkin: warning: the cam profile from u = {a:.4} ({:.4}, {:.4}) {unit} to u = {b:.4} ({:.4}, {:.4}) {unit} is {what}: the follower cannot follow it, the contact jumps across and the acceleration is impulsive there",
             pa.x, pa.y, pb.x, pb.y
         );
     }
@@ -191,7 +193,14 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         }
     })?;
     pb.finish_and_clear();
-    report_degenerate(mech, &stretches, &angles, &jump_at, jumps_total);
+    report_degenerate(
+        mech,
+        loaded.unit.name(),
+        &stretches,
+        &angles,
+        &jump_at,
+        jumps_total,
+    );
     if failed > 0 {
         eprintln!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",
