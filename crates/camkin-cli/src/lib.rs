@@ -3,14 +3,12 @@
 //! 1 internal failure, 2 bad input, 3 a design check failed).
 
 pub mod args;
-pub mod columns;
 pub mod commands;
 pub mod draw;
 pub mod manufacture;
 pub mod mechfile;
 pub mod output;
 pub mod study;
-pub mod units;
 
 use std::path::PathBuf;
 

@@ -183,27 +183,7 @@ pub fn write_rows<T: serde::Serialize>(
     Ok(())
 }
 
-/// One cell of a table whose column names are only known at run time (they carry units).
-#[derive(Debug, Clone, PartialEq)]
-pub enum Cell {
-    /// a number (absent: an empty CSV cell, JSON `null`; non-finite: JSON `null`)
-    Num(Option<f64>),
-    /// a small whole number
-    Int(Option<u8>),
-    /// text
-    Text(Option<String>),
-}
-
-impl serde::Serialize for Cell {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        match self {
-            Cell::Num(Some(x)) => s.serialize_f64(*x),
-            Cell::Int(Some(x)) => s.serialize_u8(*x),
-            Cell::Text(Some(x)) => s.serialize_str(x),
-            _ => s.serialize_none(),
-        }
-    }
-}
+pub use camkin::table::Cell;
 
 /// A row as a JSON object, keys in column order.
 #[derive(Debug)]

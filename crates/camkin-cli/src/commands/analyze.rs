@@ -1,13 +1,13 @@
 //! `camkin analyze`: the one-instant analysis at a list or range of cam angles, as CSV.
 
 use crate::args::{AngleList, AngleRange};
-use crate::columns::{analysis_cells, analysis_columns};
 use crate::output::{write_atomic, write_cells, TableFormat};
-use crate::units::{AngleUnit, Per, Units};
 use crate::{load_mechanism, Failure};
 use anyhow::Result;
-use camkin::cam::{FollowerState, Mechanism};
-use camkin::table::{contact_jumps_with, AnalysisRow};
+use camkin::cam::Mechanism;
+use camkin::table::AnalysisSweep;
+use camkin::table::{analysis_cells, analysis_columns};
+use camkin::table::{AngleUnit, Per, Units};
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -30,10 +30,10 @@ pub struct Args {
     pub format: TableFormat,
     /// Derivatives of the follower's motion per second of time, or per degree of cam angle
     /// (ds/dθ, d²s/dθ², d³s/dθ³, as cam tools print them).
-    #[arg(long, value_enum, default_value_t = Per::S)]
+    #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
     pub per: Per,
     /// Unit of an oscillating follower's arm angle and its derivatives.
-    #[arg(long, value_enum, default_value_t = AngleUnit::Deg)]
+    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
     pub angle_unit: AngleUnit,
     /// Output file (written atomically); standard output without it.
     #[arg(short = 'o', long, value_name = "FILE")]
@@ -119,67 +119,21 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         )));
     }
     crate::check_sweep_time(mech, angles.len(), 1, args.large)?;
-    // lift is measured from the lowest position over the revolution
-    let travel = match mech.travel() {
-        Ok(t) => Some(t),
-        Err(e) => {
-            eprintln!("camkin: warning: no lift column: the lowest position over the revolution could not be found ({e})");
-            None
-        }
-    };
     let contiguous = args.at.is_none();
-    let stretches = mech.unfollowable_stretches();
-    let mut sweep = mech.sweep();
-    let (mut failed, mut jump_at): (usize, Vec<usize>) = (0, Vec::new());
-    let mut jumps_total = 0usize;
+    let mut rows = AnalysisSweep::new(mech, &angles, contiguous, CHUNK);
+    // lift is measured from the lowest position over the revolution
+    if let Err(e) = rows.travel() {
+        eprintln!("camkin: warning: no lift column: the lowest position over the revolution could not be found ({e})");
+    }
     let pb = if angles.len() > 5 * CHUNK {
         indicatif::ProgressBar::new(angles.len() as u64)
     } else {
         indicatif::ProgressBar::hidden()
     };
-    let mut prev: Option<std::result::Result<FollowerState, camkin::cam::CamError>> = None;
-    let mut start = 0usize;
     let mut next_chunk = || {
-        if start >= angles.len() {
-            return None;
-        }
-        let chunk = &angles[start..(start + CHUNK).min(angles.len())];
-        // the previous chunk's last result leads, so that a jump across the seam is seen
-        let mut results: Vec<_> = prev.take().into_iter().collect();
-        let lead = results.len();
-        results.extend(
-            chunk
-                .iter()
-                .map(|&a| sweep.step(camkin::geometry::deg_to_rad(a))),
-        );
-        let jumps = contact_jumps_with(mech, &stretches, &results, contiguous);
-        let rows: Vec<_> = chunk
-            .iter()
-            .zip(&results[lead..])
-            .zip(&jumps[lead..])
-            .enumerate()
-            .map(|(k, ((&a, r), &j))| {
-                if r.is_err() {
-                    failed += 1;
-                }
-                if j {
-                    jumps_total += 1;
-                    if jump_at.len() < 50 {
-                        jump_at.push(start + k);
-                    }
-                }
-                let row = AnalysisRow::new(a, r, j);
-                let row = match &travel {
-                    Some(t) => row.with_lift(t),
-                    None => row,
-                };
-                analysis_cells(&row, &units)
-            })
-            .collect();
-        prev = results.pop();
-        start += chunk.len();
+        let chunk = rows.next()?;
         pb.inc(chunk.len() as u64);
-        Some(rows)
+        Some(chunk.iter().map(|r| analysis_cells(r, &units)).collect())
     };
     write_atomic(args.output.as_deref(), |w| {
         write_cells(w, args.format, &columns, &mut next_chunk)
@@ -196,11 +150,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     report_degenerate(
         mech,
         loaded.unit.name(),
-        &stretches,
+        rows.stretches(),
         &angles,
-        &jump_at,
-        jumps_total,
+        rows.jump_at(),
+        rows.jumps(),
     );
+    let failed = rows.failed();
     if failed > 0 {
         eprintln!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",

@@ -4,10 +4,10 @@ use crate::args::{AngleWindow, NodeCounts, RevolutionStep};
 use crate::draw::chart::{self, Chart, Series};
 use crate::output::{write_atomic, write_cell_table, write_table, Cell, TableFormat};
 use crate::study::{self, Study};
-use crate::units::Units;
 use crate::{load_mechanism, Failure};
 use anyhow::{Context, Result};
 use camkin::spec::LengthUnit;
+use camkin::table::Units;
 use serde_json::{json, Map, Value};
 use std::path::{Path, PathBuf};
 

@@ -10,13 +10,13 @@ use crate::args::RevolutionStep;
 use crate::manufacture::polar_params;
 use crate::mechfile;
 use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
-use crate::units::Units;
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::cam::Mechanism;
 use camkin::human::human;
 use camkin::measured::FourierRadius;
 use camkin::spec::{BuildOptions, ProfileSpec};
+use camkin::table::Units;
 use std::f64::consts::TAU;
 use std::path::PathBuf;
 

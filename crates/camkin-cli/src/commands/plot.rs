@@ -4,10 +4,10 @@ use crate::args::{AngleList, RevolutionStep};
 use crate::draw::chart::{self, Chart, Series};
 use crate::draw::mechanism::{self as scene, Shape};
 use crate::draw::svaj;
-use crate::units::{AngleUnit, Per, Units};
 use crate::{load_mechanism, Failure, Loaded};
 use anyhow::{anyhow, Context, Result};
 use camkin::cam::{FollowerState, Mechanism};
+use camkin::table::{AngleUnit, Per, Units};
 use camkin::Point2;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -35,10 +35,10 @@ pub struct PlotArgs {
     #[arg(long, value_name = "N", default_value_t = 72)]
     pub frames: usize,
     /// Derivatives on the SVAJ page per second of time, or per degree of cam angle.
-    #[arg(long, value_enum, default_value_t = Per::S)]
+    #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
     pub per: Per,
     /// Unit of an oscillating follower's arm angle.
-    #[arg(long, value_enum, default_value_t = AngleUnit::Deg)]
+    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
     pub angle_unit: AngleUnit,
     /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
     #[arg(long)]

@@ -4,10 +4,9 @@
 use crate::args::RevolutionStep;
 use crate::draw::svaj;
 use crate::output::write_atomic;
-use crate::units::{AngleUnit, Per, Units};
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
-use camkin::cam::{FollowerCurve, FollowerState};
+use camkin::table::{AngleUnit, Per, Units};
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -24,10 +23,10 @@ pub struct SynthArgs {
     #[arg(long, value_name = "DEG", default_value_t = 30.0)]
     pub pressure_limit: f64,
     /// Derivatives on the SVAJ page per second of time, or per degree of cam angle.
-    #[arg(long, value_enum, default_value_t = Per::S)]
+    #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
     pub per: Per,
     /// Unit of an oscillating follower's arm angle.
-    #[arg(long, value_enum, default_value_t = AngleUnit::Deg)]
+    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
     pub angle_unit: AngleUnit,
     /// Radius of the cutter or grinding wheel whose centre path to write (cutter.csv and a
     /// layer of profile.dxf), in the file's length unit.
@@ -169,85 +168,17 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     svaj::save(&page, &out("svaj")).map_err(Failure::output)?;
 
     // analysis of the synthesised profile: the round trip and the design checks
-    let states: Vec<Result<FollowerState, _>> = mech.analyze_all(&thetas);
-    let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    let mut failed = 0;
-    let mut over = Vec::new();
-    let mut pa_peak = (0.0f64, 0.0f64);
-    // angles where the profile at the contact is concave more sharply than the follower can
-    // follow (a flat face: any concave stretch, ρ ≤ 0; a roller of radius r: −r < ρ ≤ 0; a
-    // knife follows any), or the follower rests on a cusp: undercut
-    let mut folded: Vec<f64> = Vec::new();
-    let concave_limit = match mech.follower_curve() {
-        FollowerCurve::Circle(roller) => -roller.radius(),
-        FollowerCurve::Line(_) => 0.0,
-        _ => f64::NEG_INFINITY,
-    };
-    // the smallest convex radius and the sharpest concave one, with their cam angles
-    let (mut convex_min, mut convex_at) = (f64::INFINITY, 0.0);
-    let (mut concave_min, mut concave_at) = (f64::NEG_INFINITY, 0.0);
-    let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
-    for (t, s) in thetas.iter().zip(&states) {
-        // the program's peak over every angle, not only those analysed
-        let m = synth.follower_motion(*t);
-        amax = amax.max((w * w * m[2]).abs());
-        let s = match s {
-            Ok(s) => s,
-            Err(e) => {
-                failed += 1;
-                // resting on a cusp of the folded profile: the follower cannot follow it there
-                if matches!(
-                    e,
-                    camkin::cam::CamError::NoConvergence {
-                        reason: camkin::cam::StopReason::OnCusp,
-                        ..
-                    }
-                ) {
-                    folded.push(t.to_degrees());
-                }
-                continue;
-            }
-        };
-        eq = eq.max((s.position - m[0]).abs());
-        ev = ev.max((s.velocity - w * m[1]).abs());
-        ea = ea.max((s.acceleration - w * w * m[2]).abs());
-        let pa = s.pressure_angle().to_degrees();
-        if pa.abs() > args.pressure_limit {
-            over.push(t.to_degrees());
-        }
-        if pa.abs() > pa_peak.0.abs() {
-            pa_peak = (pa, t.to_degrees());
-        }
-        let rho = s.radius_of_curvature;
-        if concave_limit > f64::NEG_INFINITY && !(rho > 0.0 || rho < concave_limit) {
-            folded.push(t.to_degrees());
-        }
-        if rho > 0.0 && rho < convex_min {
-            (convex_min, convex_at) = (rho, t.to_degrees());
-        }
-        if rho < 0.0 && rho > concave_min {
-            (concave_min, concave_at) = (rho, t.to_degrees());
-        }
-        umin = umin.min(s.follower_param);
-        umax = umax.max(s.follower_param);
-    }
+    let checks = mech.design_checks(&thetas, args.pressure_limit);
     let mut report = String::new();
-    // relative to the program's peak acceleration, or to ω² times the cam's size (ω² × 1 rad for
-    // an arm) when the program has none (constant velocity and dwells)
-    let natural = if mech.follower().is_oscillating() {
-        w * w
-    } else {
-        w * w * mech.size()
-    };
-    // a program's "peak" below 1e-9 of the natural scale is rounding (constant velocity)
-    let has_peak = amax > 1e-9 * natural;
-    let scale = if has_peak { amax } else { natural };
-    let rel = if has_peak {
-        format!("{:.1e} of the peak", ea / amax)
+    let rt = checks
+        .round_trip
+        .ok_or_else(|| Failure::Internal(anyhow!("a motion profile without its round trip")))?;
+    let rel = if rt.has_peak {
+        format!("{:.1e} of the peak", rt.acceleration / rt.scale)
     } else {
         format!(
             "{:.1e} of ω² × the cam's size; the program has no acceleration",
-            ea / scale
+            rt.acceleration / rt.scale
         )
     };
     // the round trip is in time derivatives whatever --per says
@@ -260,36 +191,31 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     let cv = |x: f64| u.coord_value(x);
     report += &format!(
         "round trip (contact method against the motion law): |Δs| ≤ {:.2e} {su}, |Δv| ≤ {:.2e} {vu}, |Δa| ≤ {:.2e} {au} ({rel})\n",
-        cv(eq),
-        cv(ev),
-        cv(ea)
+        cv(rt.position),
+        cv(rt.velocity),
+        cv(rt.acceleration)
     );
-    let mut failures: Vec<&str> = Vec::new();
-    if ea > 1e-6 * scale || failed > 0 {
+    if !rt.passed {
         report += "round trip FAILED: the follower does not follow the synthesised profile (see the checks below)\n";
-        failures.push("round trip");
     }
     let h = camkin::human::human;
     let len = loaded.unit.name();
-    report += &if convex_min.is_finite() {
-        format!(
+    if let Some((rho, at)) = checks.convex_min {
+        report += &format!(
             "smallest convex radius of curvature of the profile: {} {len} at {}°\n",
-            h(convex_min),
-            h(convex_at)
-        )
-    } else {
-        String::new()
-    };
-    report += &if concave_min.is_finite() {
-        format!(
+            h(rho),
+            h(at)
+        );
+    }
+    report += &match checks.concave_sharpest {
+        Some((rho, at)) => format!(
             "sharpest concave radius of curvature of the profile: {} {len} at {}° (negative: concave)\n",
-            h(concave_min),
-            h(concave_at)
-        )
-    } else {
-        "the profile is convex at every contact\n".to_string()
+            h(rho),
+            h(at)
+        ),
+        None => "the profile is convex at every contact\n".to_string(),
     };
-    let stretches = mech.unfollowable_stretches();
+    let folded = &checks.undercut_deg;
     let bad_span = |v: &[f64]| {
         if v.is_empty() {
             String::new()
@@ -302,37 +228,37 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             )
         }
     };
-    let broken = !stretches.is_empty() || !folded.is_empty();
-    match mech.follower_curve() {
-        FollowerCurve::Circle(roller) => {
-            let r = roller.radius();
-            // the pitch curve (the roller centre's path) has radius of curvature ρ + r: where it
-            // is convex with a radius below r, the profile folds back (undercut)
-            let pitch_min = convex_min + r;
-            let pitch_concave =
-                (concave_min.is_finite() && concave_min + r < 0.0).then_some(concave_min + r);
-            report += &format!(
-                "pitch curve (roller centre path): smallest convex radius of curvature {} {len}{}\n",
-                if convex_min.is_finite() { h(pitch_min) } else { "∞".into() },
-                pitch_concave.map_or(String::new(), |c| format!(", sharpest concave {} {len}", h(c)))
-            );
-            report += &if broken {
-                failures.push("undercut");
-                format!("undercut: the profile is concave more sharply than the roller (radius {} {len}){}\n", h(r), bad_span(&folded))
-            } else {
-                format!(
-                    "undercut: none (the roller's radius {} {len} fits everywhere)\n",
-                    h(r)
-                )
-            };
-        }
-        FollowerCurve::Line(_) => {
-            report += &if broken {
-                failures.push("concave stretch under the flat face");
-                format!("concave stretches under the flat face: the follower cannot follow the profile{}\n", bad_span(&folded))
-            } else {
-                "concave stretches under the flat face: none\n".to_string()
-            };
+    let broken = checks.undercut();
+    if let (Some(r), Some(pitch_min)) = (checks.roller_radius, checks.pitch_convex_min()) {
+        // the pitch curve (the roller centre's path) has radius of curvature ρ + r: where it
+        // is convex with a radius below r, the profile folds back (undercut)
+        let pitch_concave = checks
+            .concave_sharpest
+            .and_then(|(c, _)| (c + r < 0.0).then_some(c + r));
+        report +=
+            &format!(
+            "pitch curve (roller centre path): smallest convex radius of curvature {} {len}{}\n",
+            if pitch_min.is_finite() { h(pitch_min) } else { "∞".into() },
+            pitch_concave.map_or(String::new(), |c| format!(", sharpest concave {} {len}", h(c)))
+        );
+        report += &if broken {
+            format!("undercut: the profile is concave more sharply than the roller (radius {} {len}){}\n", h(r), bad_span(folded))
+        } else {
+            format!(
+                "undercut: none (the roller's radius {} {len} fits everywhere)\n",
+                h(r)
+            )
+        };
+    } else if checks.flat_face {
+        report += &if broken {
+            format!(
+                "concave stretches under the flat face: the follower cannot follow the profile{}\n",
+                bad_span(folded)
+            )
+        } else {
+            "concave stretches under the flat face: none\n".to_string()
+        };
+        if let Some((umin, umax)) = checks.face_range {
             report += &format!(
                 "face width needed: {} {len} (contact from {} to {} {len} along the face)\n",
                 h(umax - umin),
@@ -340,8 +266,12 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
                 h(umax)
             );
         }
-        _ => {}
     }
+    let (pa_peak, over, failed) = (
+        checks.pressure_peak,
+        &checks.pressure_over_deg,
+        checks.failed,
+    );
     let peak = format!(
         "peak {}° at {}°",
         h((pa_peak.0 * 100.0).round() / 100.0),
@@ -353,7 +283,6 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             h(args.pressure_limit)
         )
     } else {
-        failures.push("pressure angle");
         format!(
             "pressure angle: {peak}, beyond ±{}° at {} angles, from {}° to {}°\n",
             h(args.pressure_limit),
@@ -378,6 +307,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     .map_err(Failure::output)?;
     print!("{report}{}", made.report);
     eprintln!("camkin: wrote {}", args.out.display());
+    let failures = checks.failures();
     if failures.is_empty() {
         Ok(())
     } else {

@@ -296,17 +296,17 @@ fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
         .collect();
     let results = mech.analyze_all(&thetas);
     let rows = camkin::table::analysis_rows(&mech, &angles, &results, true);
-    let units = camkin_cli::units::Units::plain(&mech, camkin::spec::LengthUnit::Mm);
+    let units = camkin::table::Units::plain(&mech, camkin::spec::LengthUnit::Mm);
     let travel = mech.travel().unwrap();
     let cells = rows
         .iter()
-        .map(|r| camkin_cli::columns::analysis_cells(&r.clone().with_lift(&travel), &units))
+        .map(|r| camkin::table::analysis_cells(&r.clone().with_lift(&travel), &units))
         .collect();
     let mut expected = Vec::new();
     camkin_cli::output::write_cell_table(
         &mut expected,
         camkin_cli::output::TableFormat::Csv,
-        &camkin_cli::columns::analysis_columns(&units),
+        &camkin::table::analysis_columns(&units),
         cells,
     )
     .unwrap();

@@ -13,6 +13,7 @@
 //! the world frame with its origin on the rotation axis. Other conventions: see the
 //! [crate docs](crate#sign-conventions).
 
+mod checks;
 mod derivatives;
 mod error;
 mod follower;
@@ -30,6 +31,7 @@ mod sweep;
 pub mod synthesis;
 mod travel;
 
+pub use checks::{DesignChecks, RoundTrip};
 pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, Joint, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};

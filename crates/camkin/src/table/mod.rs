@@ -5,9 +5,16 @@
 //! Rows keep the library's units: angles in degrees where the column name says `_deg`, lengths in
 //! the mechanism's length unit, time in seconds. Numbers are not rounded.
 
+mod columns;
+mod sweep;
+mod units;
+
 pub use crate::cam::{contact_jumps, contact_jumps_with};
 use crate::cam::{CamError, FollowerState, Found, Mechanism};
 use crate::dynamics::{Event, EventKind, Sample};
+pub use columns::{analysis_cells, analysis_columns, Cell};
+pub use sweep::{AnalysisSweep, JUMPS_KEPT};
+pub use units::{AngleUnit, Per, Units, UnknownUnit};
 
 /// How a row's contact was found.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

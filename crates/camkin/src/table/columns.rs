@@ -1,9 +1,31 @@
-//! The analysis table's columns with their units (`camkin analyze`): the library's
-//! [`AnalysisRow`] converted and named by [`Units`].
+//! The analysis table's columns with their units (`camkin analyze`, the Python package's
+//! `Mechanism.analyze`): [`AnalysisRow`] converted and named by [`Units`].
 
-use crate::output::Cell;
-use crate::units::Units;
-use camkin::table::{AnalysisRow, FoundBy};
+use super::units::Units;
+use super::{AnalysisRow, FoundBy};
+
+/// One cell of a table whose column names are only known at run time (they carry units).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// a number (absent: an empty CSV cell, JSON `null`, NaN in an array)
+    Num(Option<f64>),
+    /// a small whole number
+    Int(Option<u8>),
+    /// text
+    Text(Option<String>),
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Cell {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        match self {
+            Cell::Num(Some(x)) => s.serialize_f64(*x),
+            Cell::Int(Some(x)) => s.serialize_u8(*x),
+            Cell::Text(Some(x)) => s.serialize_str(x),
+            _ => s.serialize_none(),
+        }
+    }
+}
 
 /// The column names of the analysis table, each with its unit.
 pub fn analysis_columns(u: &Units) -> Vec<String> {
@@ -77,7 +99,6 @@ pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
                 FoundBy::Global => "global",
                 FoundBy::Warm => "warm",
                 FoundBy::Jump => "jump",
-                _ => "other",
             }
             .to_string()
         })),

@@ -1,15 +1,15 @@
 //! Units at the boundary: the library computes in the mechanism file's length unit, radians and
-//! seconds; every number the command writes or draws is converted here, once, and every column
-//! name, JSON key and axis label says its unit.
+//! seconds; every number a front end (the command, the Python package) writes or draws is
+//! converted here, once, and every column name, JSON key and axis label says its unit.
 //!
 //! Column names carry the unit as a suffix (`position_mm`, `velocity_mm_s`, `acceleration_mm_s2`,
 //! `velocity_deg_deg` per degree of cam angle); labels use symbols (`mm/s²`).
 
-use camkin::cam::Mechanism;
-use camkin::spec::LengthUnit;
+use crate::cam::Mechanism;
+use crate::spec::LengthUnit;
 
 /// The unit of an oscillating follower's arm angle in output.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum AngleUnit {
     /// degrees (the default)
     #[default]
@@ -19,7 +19,7 @@ pub enum AngleUnit {
 }
 
 /// What the follower's derivatives are taken with respect to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Per {
     /// time: velocity in mm/s, acceleration in mm/s², jerk in mm/s³ (the default)
     #[default]
@@ -27,6 +27,44 @@ pub enum Per {
     /// the cam angle in degrees: ds/dθ in mm/deg, d²s/dθ² in mm/deg², d³s/dθ³ in mm/deg³, as cam
     /// tools print them
     Deg,
+}
+
+/// A unit name that is not one of the choices.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{value:?} is not a choice here: {choices}")]
+pub struct UnknownUnit {
+    /// what was given
+    pub value: String,
+    /// the choices, comma-separated
+    pub choices: &'static str,
+}
+
+impl std::str::FromStr for AngleUnit {
+    type Err = UnknownUnit;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s {
+            "deg" => Ok(Self::Deg),
+            "rad" => Ok(Self::Rad),
+            _ => Err(UnknownUnit {
+                value: s.into(),
+                choices: "deg, rad",
+            }),
+        }
+    }
+}
+
+impl std::str::FromStr for Per {
+    type Err = UnknownUnit;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s {
+            "s" => Ok(Self::S),
+            "deg" => Ok(Self::Deg),
+            _ => Err(UnknownUnit {
+                value: s.into(),
+                choices: "s, deg",
+            }),
+        }
+    }
 }
 
 /// The units of one run's output.
@@ -156,7 +194,7 @@ mod tests {
 
     #[test]
     fn keys_and_symbols() {
-        let m = crate::mechfile::paper();
+        let m = crate::reference::paper_mechanism(false);
         let u = Units::new(&m, LengthUnit::Mm, AngleUnit::Deg, Per::S);
         assert_eq!(
             (0..4).map(|k| u.motion_key(k)).collect::<Vec<_>>(),

@@ -1,0 +1,210 @@
+//! Design checks of a cam over a revolution, as an engineer reviews a profile before it goes to
+//! the shop: the round trip of a synthesised profile (the contact method against its motion law),
+//! the profile's radii of curvature at the contact, undercut (a roller that does not fit a
+//! concave stretch, a concave stretch under a flat face), the pressure angle against a limit, the
+//! face width a flat follower needs.
+//!
+//! The checks are data; front ends word them (`camkin synth` prints and writes `checks.txt`, the
+//! Python package returns them as attributes).
+
+use super::{CamError, FollowerCurve, Mechanism, StopReason};
+
+/// The round trip of a synthesised profile: the follower's motion by the contact method against
+/// the motion law it was synthesised from, largest differences over the checked angles.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct RoundTrip {
+    /// largest |Δ position|, length (rad for an arm)
+    pub position: f64,
+    /// largest |Δ velocity|, length/s (rad/s)
+    pub velocity: f64,
+    /// largest |Δ acceleration|, length/s² (rad/s²)
+    pub acceleration: f64,
+    /// the program's peak acceleration, length/s² (rad/s²)
+    pub peak_acceleration: f64,
+    /// what `acceleration` is measured against: the program's peak acceleration, or ω² times the
+    /// cam's size (ω² × 1 rad for an arm) when the program has none (constant velocity, dwells)
+    pub scale: f64,
+    /// the program has an acceleration (its peak is more than 1e-9 of ω² × size)
+    pub has_peak: bool,
+    /// `acceleration ≤ 1e-6 scale` and every angle analysed
+    pub passed: bool,
+}
+
+/// The design checks of a mechanism at a list of cam angles ([`Mechanism::design_checks`]).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct DesignChecks {
+    /// the pressure-angle limit checked against, degrees
+    pub pressure_limit_deg: f64,
+    /// cam angles checked
+    pub angles: usize,
+    /// angles that could not be analysed
+    pub failed: usize,
+    /// the round trip, for a synthesised (`kind = "motion"`) profile
+    pub round_trip: Option<RoundTrip>,
+    /// the smallest convex radius of curvature of the profile at a contact (length) and its cam
+    /// angle (degrees)
+    pub convex_min: Option<(f64, f64)>,
+    /// the sharpest concave radius of curvature at a contact (negative, length) and its angle
+    pub concave_sharpest: Option<(f64, f64)>,
+    /// the roller's radius (a roller follower)
+    pub roller_radius: Option<f64>,
+    /// the follower is a flat face
+    pub flat_face: bool,
+    /// where the contact lies along a flat face, smallest and largest (length): the face width
+    /// needed is their difference
+    pub face_range: Option<(f64, f64)>,
+    /// the pressure angle of largest magnitude (degrees, signed) and its cam angle
+    pub pressure_peak: (f64, f64),
+    /// cam angles (degrees) where |pressure angle| exceeds the limit
+    pub pressure_over_deg: Vec<f64>,
+    /// cam angles (degrees) where the follower cannot follow the profile: concave more sharply
+    /// than the roller, concave under a flat face, or resting on a cusp of a folded profile
+    pub undercut_deg: Vec<f64>,
+    /// the profile's stretches (parameter intervals) the follower cannot follow
+    pub stretches: Vec<(f64, f64)>,
+}
+
+impl DesignChecks {
+    /// The follower cannot follow the profile somewhere (undercut, or a concave stretch under a
+    /// flat face).
+    pub fn undercut(&self) -> bool {
+        !self.stretches.is_empty() || !self.undercut_deg.is_empty()
+    }
+
+    /// The smallest convex radius of curvature of the pitch curve (the roller centre's path,
+    /// `ρ + r`), for a roller; `∞` when the profile has no convex contact.
+    pub fn pitch_convex_min(&self) -> Option<f64> {
+        self.roller_radius
+            .map(|r| self.convex_min.map_or(f64::INFINITY, |(rho, _)| rho + r))
+    }
+
+    /// The names of the checks that failed: `round trip`, `undercut`, `concave stretch under the
+    /// flat face`, `pressure angle`.
+    pub fn failures(&self) -> Vec<&'static str> {
+        let mut f = Vec::new();
+        if self.round_trip.is_some_and(|r| !r.passed) {
+            f.push("round trip");
+        }
+        if self.undercut() {
+            if self.roller_radius.is_some() {
+                f.push("undercut");
+            } else if self.flat_face {
+                f.push("concave stretch under the flat face");
+            }
+        }
+        if !self.pressure_over_deg.is_empty() {
+            f.push("pressure angle");
+        }
+        f
+    }
+}
+
+impl Mechanism {
+    /// The design checks at cam angles `thetas` (rad), the pressure angle against
+    /// `pressure_limit_deg`.
+    pub fn design_checks(&self, thetas: &[f64], pressure_limit_deg: f64) -> DesignChecks {
+        let states = self.analyze_all(thetas);
+        let synth = self.cam().synthesis();
+        let w = self.cam().speed();
+        let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        let mut failed = 0;
+        let mut over = Vec::new();
+        let mut pa_peak = (0.0f64, 0.0f64);
+        let mut folded = Vec::new();
+        // the profile at the contact concave more sharply than the follower can follow (a flat
+        // face: any concave stretch, ρ ≤ 0; a roller of radius r: −r < ρ ≤ 0; a knife any)
+        let (concave_limit, roller_radius, flat_face) = match self.follower_curve() {
+            FollowerCurve::Circle(roller) => (-roller.radius(), Some(roller.radius()), false),
+            FollowerCurve::Line(_) => (0.0, None, true),
+            _ => (f64::NEG_INFINITY, None, false),
+        };
+        let (mut convex_min, mut convex_at) = (f64::INFINITY, 0.0);
+        let (mut concave_min, mut concave_at) = (f64::NEG_INFINITY, 0.0);
+        let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
+        for (t, s) in thetas.iter().zip(&states) {
+            if let Some(synth) = synth {
+                // the program's peak over every angle, not only those analysed
+                let m = synth.follower_motion(*t);
+                amax = amax.max((w * w * m[2]).abs());
+            }
+            let s = match s {
+                Ok(s) => s,
+                Err(e) => {
+                    failed += 1;
+                    // resting on a cusp of a folded profile: the follower cannot follow it
+                    if matches!(
+                        e,
+                        CamError::NoConvergence {
+                            reason: StopReason::OnCusp,
+                            ..
+                        }
+                    ) {
+                        folded.push(t.to_degrees());
+                    }
+                    continue;
+                }
+            };
+            if let Some(synth) = synth {
+                let m = synth.follower_motion(*t);
+                eq = eq.max((s.position - m[0]).abs());
+                ev = ev.max((s.velocity - w * m[1]).abs());
+                ea = ea.max((s.acceleration - w * w * m[2]).abs());
+            }
+            let pa = s.pressure_angle().to_degrees();
+            if pa.abs() > pressure_limit_deg {
+                over.push(t.to_degrees());
+            }
+            if pa.abs() > pa_peak.0.abs() {
+                pa_peak = (pa, t.to_degrees());
+            }
+            let rho = s.radius_of_curvature;
+            if concave_limit > f64::NEG_INFINITY && !(rho > 0.0 || rho < concave_limit) {
+                folded.push(t.to_degrees());
+            }
+            if rho > 0.0 && rho < convex_min {
+                (convex_min, convex_at) = (rho, t.to_degrees());
+            }
+            if rho < 0.0 && rho > concave_min {
+                (concave_min, concave_at) = (rho, t.to_degrees());
+            }
+            umin = umin.min(s.follower_param);
+            umax = umax.max(s.follower_param);
+        }
+        let round_trip = synth.map(|_| {
+            let natural = if self.follower().is_oscillating() {
+                w * w
+            } else {
+                w * w * self.size()
+            };
+            // a program's "peak" below 1e-9 of the natural scale is rounding
+            let has_peak = amax > 1e-9 * natural;
+            let scale = if has_peak { amax } else { natural };
+            RoundTrip {
+                position: eq,
+                velocity: ev,
+                acceleration: ea,
+                peak_acceleration: amax,
+                scale,
+                has_peak,
+                passed: ea <= 1e-6 * scale && failed == 0,
+            }
+        });
+        DesignChecks {
+            pressure_limit_deg,
+            angles: thetas.len(),
+            failed,
+            round_trip,
+            convex_min: convex_min.is_finite().then_some((convex_min, convex_at)),
+            concave_sharpest: concave_min.is_finite().then_some((concave_min, concave_at)),
+            roller_radius,
+            flat_face,
+            face_range: (flat_face && umin <= umax).then_some((umin, umax)),
+            pressure_peak: pa_peak,
+            pressure_over_deg: over,
+            undercut_deg: folded,
+            stretches: self.unfollowable_stretches(),
+        }
+    }
+}
