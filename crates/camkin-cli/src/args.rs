@@ -194,6 +194,27 @@ impl FromStr for AngleWindow {
     }
 }
 
+/// `--per`: derivatives per second or per degree of cam angle.
+pub fn per_parser() -> impl clap::builder::TypedValueParser<Value = camkin::table::Per> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    PossibleValuesParser::new([
+        PossibleValue::new("s").help("time: velocity in mm/s, acceleration in mm/s², jerk in mm/s³"),
+        PossibleValue::new("deg").help("the cam angle in degrees: ds/dθ in mm/deg, d²s/dθ² in mm/deg², d³s/dθ³ in mm/deg³, as cam tools print them"),
+    ])
+    .try_map(|s| s.parse::<camkin::table::Per>())
+}
+
+/// `--angle-unit`: the unit of an oscillating follower's arm angle.
+pub fn angle_unit_parser() -> impl clap::builder::TypedValueParser<Value = camkin::table::AngleUnit>
+{
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    PossibleValuesParser::new([
+        PossibleValue::new("deg").help("degrees"),
+        PossibleValue::new("rad").help("radians"),
+    ])
+    .try_map(|s| s.parse::<camkin::table::AngleUnit>())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -246,25 +267,4 @@ mod tests {
             assert!(bad.parse::<AngleWindow>().is_err(), "{bad:?} accepted");
         }
     }
-}
-
-/// `--per`: derivatives per second or per degree of cam angle.
-pub fn per_parser() -> impl clap::builder::TypedValueParser<Value = camkin::table::Per> {
-    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
-    PossibleValuesParser::new([
-        PossibleValue::new("s").help("time: velocity in mm/s, acceleration in mm/s², jerk in mm/s³"),
-        PossibleValue::new("deg").help("the cam angle in degrees: ds/dθ in mm/deg, d²s/dθ² in mm/deg², d³s/dθ³ in mm/deg³, as cam tools print them"),
-    ])
-    .try_map(|s| s.parse::<camkin::table::Per>())
-}
-
-/// `--angle-unit`: the unit of an oscillating follower's arm angle.
-pub fn angle_unit_parser() -> impl clap::builder::TypedValueParser<Value = camkin::table::AngleUnit>
-{
-    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
-    PossibleValuesParser::new([
-        PossibleValue::new("deg").help("degrees"),
-        PossibleValue::new("rad").help("radians"),
-    ])
-    .try_map(|s| s.parse::<camkin::table::AngleUnit>())
 }
