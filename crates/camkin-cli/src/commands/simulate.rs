@@ -8,7 +8,9 @@ use crate::Failure;
 use anyhow::anyhow;
 use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, EventKind, Sample, Simulation};
 use camkin::table::Units;
-use camkin::table::{EventRow, SampleRow};
+use camkin::table::{
+    event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow,
+};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -142,17 +144,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         )));
     }
     let pb = indicatif::ProgressBar::new(outputs as u64);
-    let mut samples: Vec<Sample> = vec![sim.sample().map_err(dyn_err)?];
-    let mut events: Vec<Event> = Vec::new();
-    for k in 0..outputs {
-        for _ in 0..args.substeps {
-            events.extend(sim.advance(h).map_err(dyn_err)?);
-        }
-        samples.push(sim.sample().map_err(dyn_err)?);
-        if k % 1000 == 0 {
-            pb.set_position(k as u64);
-        }
-    }
+    let run = sim
+        .run(outputs, args.substeps, h, |k| pb.set_position(k as u64))
+        .map_err(dyn_err)?;
+    let (samples, events) = (run.samples, run.events);
     pb.finish_and_clear();
     // the kinematic motion at the same cam angles (the contact method)
     let thetas: Vec<f64> = samples.iter().map(|s| s.cam_angle).collect();
@@ -163,63 +158,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         .map(|(s, k)| SampleRow::new(s, k.as_ref().ok()))
         .collect();
     let event_rows: Vec<EventRow> = events.iter().map(EventRow::from).collect();
-    let u = &units;
-    let sample_columns: Vec<String> = vec![
-        "time_s".into(),
-        "cam_angle_deg".into(),
-        format!("position_{}", u.motion_key(0)),
-        format!("velocity_{}", u.motion_key(1)),
-        format!("acceleration_{}", u.motion_key(2)),
-        "contact_force_N".into(),
-        "in_contact".into(),
-        format!("kinematic_position_{}", u.motion_key(0)),
-        format!("kinematic_acceleration_{}", u.motion_key(2)),
-    ];
-    let sample_cells: Vec<Vec<Cell>> = rows
-        .iter()
-        .map(|r| {
-            let m = u.motion(
-                k_len * r.position,
-                k_len * r.velocity,
-                k_len * r.acceleration,
-                None,
-            );
-            let km = u.motion(
-                k_len * r.kinematic_position,
-                0.0,
-                k_len * r.kinematic_acceleration,
-                None,
-            );
-            vec![
-                Cell::Num(Some(r.time)),
-                Cell::Num(Some(r.cam_angle_deg)),
-                Cell::Num(m[0]),
-                Cell::Num(m[1]),
-                Cell::Num(m[2]),
-                Cell::Num(Some(r.contact_force)),
-                Cell::Int(Some(r.in_contact)),
-                Cell::Num(km[0]),
-                Cell::Num(km[2]),
-            ]
-        })
-        .collect();
-    let event_columns: Vec<String> = vec![
-        "event".into(),
-        "time_s".into(),
-        "cam_angle_deg".into(),
-        format!("impact_velocity_{}_s", unit.name()),
-    ];
-    let event_cells: Vec<Vec<Cell>> = event_rows
-        .iter()
-        .map(|e| {
-            vec![
-                Cell::Text(Some(e.event.to_string())),
-                Cell::Num(Some(e.time)),
-                Cell::Num(Some(e.cam_angle_deg)),
-                Cell::Num(Some(e.impact_velocity / unit.metres())),
-            ]
-        })
-        .collect();
+    let sample_columns = sample_columns(&units);
+    let sample_cells: Vec<Vec<Cell>> = rows.iter().map(|r| sample_cells(r, &units)).collect();
+    let event_columns = event_columns(&units);
+    let event_cells: Vec<Vec<Cell>> = event_rows.iter().map(|e| event_cells(e, &units)).collect();
     let series = |w: &mut dyn Write| -> anyhow::Result<()> {
         match args.format {
             TableFormat::Json => {
@@ -267,7 +209,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
                 write_cell_table(w, TableFormat::Csv, &event_columns, event_cells.clone())
             })
             .map_err(Failure::output)?;
-            plot(&samples, &rows, dir, u, k_len).map_err(Failure::output)?;
+            plot(&samples, &rows, dir, &units, k_len).map_err(Failure::output)?;
         }
     }
     report(&events, unit);

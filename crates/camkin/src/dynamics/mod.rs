@@ -31,11 +31,13 @@ mod cam;
 mod forces;
 mod model;
 mod projection;
+mod run;
 mod solver;
 
 pub use cam::{Event, EventKind, FollowerDynamics, Sample, Simulation, REBOUND_TOLERANCE};
 pub use forces::{effective_modulus, hertz_line_pressure, ForceState, Forces};
 pub use model::{Constraint, ForceElement, RigidBody, System};
+pub use run::Run;
 pub use solver::{AugmentedLagrangian, Evaluation};
 
 /// What went wrong in a dynamic simulation.

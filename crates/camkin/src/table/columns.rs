@@ -105,3 +105,71 @@ pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
         Cell::Text(r.error.clone()),
     ]
 }
+
+/// The column names of a simulation's time series (`camkin simulate`), each with its unit.
+pub fn sample_columns(u: &Units) -> Vec<String> {
+    vec![
+        "time_s".into(),
+        "cam_angle_deg".into(),
+        format!("position_{}", u.motion_key(0)),
+        format!("velocity_{}", u.motion_key(1)),
+        format!("acceleration_{}", u.motion_key(2)),
+        "contact_force_N".into(),
+        "in_contact".into(),
+        format!("kinematic_position_{}", u.motion_key(0)),
+        format!("kinematic_acceleration_{}", u.motion_key(2)),
+    ]
+}
+
+/// Lengths of a simulation (metres) in the mechanism file's unit: the factor.
+fn from_metres(u: &Units) -> f64 {
+    if u.oscillating {
+        1.0
+    } else {
+        1.0 / u.length.metres()
+    }
+}
+
+/// One sample's cells, in the order of [`sample_columns`] (the simulation ran in metres; lengths
+/// are written back in the file's unit).
+pub fn sample_cells(r: &super::SampleRow, u: &Units) -> Vec<Cell> {
+    let k = from_metres(u);
+    let m = u.motion(k * r.position, k * r.velocity, k * r.acceleration, None);
+    let km = u.motion(
+        k * r.kinematic_position,
+        0.0,
+        k * r.kinematic_acceleration,
+        None,
+    );
+    vec![
+        Cell::Num(Some(r.time)),
+        Cell::Num(Some(r.cam_angle_deg)),
+        Cell::Num(m[0]),
+        Cell::Num(m[1]),
+        Cell::Num(m[2]),
+        Cell::Num(Some(r.contact_force)),
+        Cell::Int(Some(r.in_contact)),
+        Cell::Num(km[0]),
+        Cell::Num(km[2]),
+    ]
+}
+
+/// The column names of a simulation's events.
+pub fn event_columns(u: &Units) -> Vec<String> {
+    vec![
+        "event".into(),
+        "time_s".into(),
+        "cam_angle_deg".into(),
+        format!("impact_velocity_{}_s", u.len()),
+    ]
+}
+
+/// One event's cells, in the order of [`event_columns`].
+pub fn event_cells(e: &super::EventRow, u: &Units) -> Vec<Cell> {
+    vec![
+        Cell::Text(Some(e.event.to_string())),
+        Cell::Num(Some(e.time)),
+        Cell::Num(Some(e.cam_angle_deg)),
+        Cell::Num(Some(e.impact_velocity / u.length.metres())),
+    ]
+}

@@ -12,7 +12,10 @@ mod units;
 pub use crate::cam::{contact_jumps, contact_jumps_with};
 use crate::cam::{CamError, FollowerState, Found, Mechanism};
 use crate::dynamics::{Event, EventKind, Sample};
-pub use columns::{analysis_cells, analysis_columns, Cell};
+pub use columns::{
+    analysis_cells, analysis_columns, event_cells, event_columns, sample_cells, sample_columns,
+    Cell,
+};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
 pub use units::{AngleUnit, Per, Units, UnknownUnit};
 

@@ -1,0 +1,39 @@
+//! A simulation run at a fixed output interval: the one loop every front end uses (the
+//! command's `simulate`, the Python package's `Mechanism.simulate`), so they agree to the bit.
+
+use super::{DynamicsError, Event, Sample, Simulation};
+
+/// The time series and the events of a run.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Run {
+    /// the state at time 0 and after every output interval (`outputs + 1` samples)
+    pub samples: Vec<Sample>,
+    /// lift-offs and impacts, in time order
+    pub events: Vec<Event>,
+}
+
+impl Simulation {
+    /// Samples the state now and after each of `outputs` intervals of `substeps` steps of `h`
+    /// seconds; `progress` is told how many intervals are done, every 1000 of them.
+    pub fn run(
+        &mut self,
+        outputs: usize,
+        substeps: usize,
+        h: f64,
+        mut progress: impl FnMut(usize),
+    ) -> Result<Run, DynamicsError> {
+        let mut samples = Vec::with_capacity(outputs + 1);
+        samples.push(self.sample()?);
+        let mut events = Vec::new();
+        for k in 0..outputs {
+            for _ in 0..substeps {
+                events.extend(self.advance(h)?);
+            }
+            samples.push(self.sample()?);
+            if k % 1000 == 0 {
+                progress(k);
+            }
+        }
+        Ok(Run { samples, events })
+    }
+}
