@@ -1,0 +1,57 @@
+"""camkin's exceptions and warnings.
+
+Every error camkin raises is a ``CamkinError``:
+
+- ``InputError`` (also a ``ValueError``): bad input. ``.field`` names it as the mechanism file does
+  (``"follower.roller_radius"``, ``"cam.profile.points[3]"``) or by the argument's name
+  (``"angles_deg"``); ``.value`` is the value given, as text (``None`` when it is missing).
+- ``ContactError`` (also an ``ArithmeticError``): the numerics stopped, and the message says why
+  (conformal contact, no convergence, a follower that cannot follow the profile).
+- ``ResourceError``: work refused up front, with the estimate; pass ``large=True`` to run it.
+"""
+
+__all__ = ["CamkinError", "InputError", "ContactError", "ResourceError", "CamkinWarning"]
+
+
+class CamkinError(Exception):
+    """Base class of camkin's errors."""
+
+
+class InputError(CamkinError, ValueError):
+    """Bad input: ``.field`` names the field, ``.value`` the value given (text, or None)."""
+
+    def __init__(self, message, field=None, value=None):
+        super().__init__(message, field, value)
+        self.message = message
+        self.field = field
+        self.value = value
+
+    def __str__(self):
+        return self.message
+
+
+class ContactError(CamkinError, ArithmeticError):
+    """The contact could not be computed; the message says why the solver stopped."""
+
+    def __init__(self, message):
+        super().__init__(message)
+        self.message = message
+
+    def __str__(self):
+        return self.message
+
+
+class ResourceError(CamkinError):
+    """Work refused up front (hours or gigabytes), with the estimate."""
+
+    def __init__(self, message):
+        super().__init__(message)
+        self.message = message
+
+    def __str__(self):
+        return self.message
+
+
+class CamkinWarning(UserWarning):
+    """A valid input that is probably not what was meant, or a result to read with care (a
+    contact that jumps)."""

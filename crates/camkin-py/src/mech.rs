@@ -1,0 +1,550 @@
+//! `camkin.Mechanism`: a cam-follower mechanism from the mechanism-file schema (TOML text or file,
+//! or a dict), analysed, checked, compared and simulated by the library. Immutable; pickles as
+//! its spec.
+
+use crate::columns::{angles_from, Columns};
+use crate::errors;
+use camkin::cam::Mechanism;
+use camkin::spec::{BuildOptions, Built, MechanismSpec};
+use camkin::table::{AnalysisSweep, AngleUnit, Per, Units};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use std::path::{Path, PathBuf};
+
+/// Largest mechanism file or text read, bytes (as the command).
+const MAX_TEXT_BYTES: usize = 8 << 20;
+/// Rows of an analysis computed per chunk (the GIL is released for the whole computation).
+const CHUNK: usize = 65_536;
+/// Most angles in one call without `large=True` (about 200 bytes each in the result).
+pub const MAX_ANGLES: usize = 20_000_000;
+/// Seconds of estimated work refused without `large=True`.
+pub const MAX_SECONDS: f64 = 30.0;
+
+/// A cam-follower mechanism: a cam turning at constant speed (or constant angular acceleration)
+/// and a follower, as a mechanism file describes them. Lengths are in the file's
+/// ``length_unit``, angles in degrees, speeds in rpm; every result names its unit.
+///
+/// Build one with ``Mechanism.from_toml(path_or_text)``, ``Mechanism.from_dict(d)`` or
+/// ``camkin.paper_cam()``. Immutable; pickles (for multiprocessing, Dask, Ray).
+#[pyclass(frozen, module = "camkin", name = "Mechanism")]
+#[derive(Debug, Clone)]
+pub struct PyMechanism {
+    pub spec: MechanismSpec,
+    /// the folder a relative points-file path is read from
+    pub base_dir: PathBuf,
+    pub built: Built,
+    /// a name for titles (the file's stem, or `paper`)
+    pub name: String,
+}
+
+impl PyMechanism {
+    /// Builds a spec in its own units.
+    pub fn build(spec: MechanismSpec, base_dir: PathBuf, name: String) -> PyResult<Self> {
+        let built = spec
+            .build(&BuildOptions {
+                base_dir: base_dir.clone(),
+                si: false,
+            })
+            .map_err(|e| errors::spec(&e))?;
+        Ok(Self {
+            spec,
+            base_dir,
+            built,
+            name,
+        })
+    }
+
+    pub fn mech(&self) -> &Mechanism {
+        &self.built.mechanism
+    }
+
+    fn units(&self, per: &str, angle_unit: &str) -> PyResult<Units> {
+        let per: Per = per.parse().map_err(|e: camkin::table::UnknownUnit| {
+            errors::input("per", Some(per.into()), e.to_string())
+        })?;
+        let angle: AngleUnit = angle_unit
+            .parse()
+            .map_err(|e: camkin::table::UnknownUnit| {
+                errors::input("angle_unit", Some(angle_unit.into()), e.to_string())
+            })?;
+        Ok(Units::new(self.mech(), self.built.length_unit, angle, per))
+    }
+
+    /// Refuses a sweep of `angles` estimated at over [`MAX_SECONDS`] (a large non-convex
+    /// profile scans its samples at every step) or over [`MAX_ANGLES`] angles.
+    pub fn check_work(&self, angles: usize, large: bool) -> PyResult<()> {
+        let seconds = self.mech().sweep_seconds_estimate(angles);
+        if large {
+            return Ok(());
+        }
+        if angles > MAX_ANGLES {
+            return Err(errors::resource(format!(
+                "{angles} angles would hold about {} GB of results; pass large=True to run it anyway, or use fewer angles",
+                camkin::human::human((angles as f64 * 200.0 / 1e8).ceil() / 10.0)
+            )));
+        }
+        if seconds > MAX_SECONDS {
+            return Err(errors::resource(format!(
+                "{angles} cam angles on this profile would take about {} s (it is not convex, so every angle scans its {} samples for a contact elsewhere); pass large=True to run it anyway, or use fewer angles",
+                camkin::human::human(seconds.ceil()),
+                self.mech().sample_count()
+            )));
+        }
+        Ok(())
+    }
+
+    /// Warns (Python's `warnings`, category `camkin.errors.CamkinWarning`).
+    pub fn warn(py: Python<'_>, message: &str) -> PyResult<()> {
+        let cat = py.import("camkin.errors")?.getattr("CamkinWarning")?;
+        PyErr::warn(
+            py,
+            &cat,
+            &std::ffi::CString::new(message).unwrap_or_default(),
+            2,
+        )
+    }
+}
+
+/// Parses TOML text into a spec; errors name the key path and carry toml's line and column.
+pub fn parse_toml(text: &str, name: &str) -> PyResult<MechanismSpec> {
+    if text.len() > MAX_TEXT_BYTES {
+        return Err(errors::input(
+            "source",
+            Some(format!("{} bytes", text.len())),
+            format!("{name}: more than {MAX_TEXT_BYTES} bytes, the most a mechanism file may have"),
+        ));
+    }
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    serde_path_to_error::deserialize(toml::Deserializer::new(text)).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        let path = if path == "." { String::new() } else { path };
+        let message = if path.is_empty() {
+            format!("{name}: {inner}")
+        } else {
+            format!("{name}: {path}: {inner}")
+        };
+        errors::input(&path, None, message)
+    })
+}
+
+/// Parses JSON text (a dict dumped by Python's json) into a spec.
+pub fn parse_json(text: &str) -> PyResult<MechanismSpec> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    serde_path_to_error::deserialize(&mut de).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        let path = if path == "." { String::new() } else { path };
+        errors::input(&path, None, format!("mechanism dict: {path}: {inner}"))
+    })
+}
+
+/// Reads a mechanism file (at most [`MAX_TEXT_BYTES`]).
+fn read_file(path: &Path) -> PyResult<String> {
+    let name = path.display().to_string();
+    let cannot = |m: String| errors::input("source", Some(name.clone()), m);
+    let meta = std::fs::metadata(path)
+        .map_err(|e| cannot(format!("cannot read mechanism file {name}: {e}")))?;
+    if meta.len() > MAX_TEXT_BYTES as u64 {
+        return Err(cannot(format!(
+            "{name}: more than {MAX_TEXT_BYTES} bytes, the most a mechanism file may have"
+        )));
+    }
+    let bytes = std::fs::read(path)
+        .map_err(|e| cannot(format!("cannot read mechanism file {name}: {e}")))?;
+    String::from_utf8(bytes).map_err(|e| {
+        cannot(format!(
+            "{name}: not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
+
+fn json_module(py: Python<'_>) -> PyResult<Bound<'_, PyModule>> {
+    py.import("json")
+}
+
+/// The built-in paper cam's file.
+pub const PAPER_TOML: &str = include_str!("../../../examples/paper.toml");
+
+#[pymethods]
+impl PyMechanism {
+    /// Mechanism.from_toml(source) -> Mechanism
+    ///
+    /// A mechanism from a mechanism file (a path, ``str`` or ``os.PathLike``) or from TOML text
+    /// (a ``str`` holding ``=``). A relative points-file path is read from the file's folder (the
+    /// current folder for text). Bad input raises ``camkin.InputError`` naming the field.
+    #[staticmethod]
+    fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let is_text = source
+            .extract::<String>()
+            .map(|s| s.contains('=') || s.contains('\n'))
+            .unwrap_or(false);
+        if is_text {
+            let text: String = source.extract()?;
+            let spec = parse_toml(&text, "<text>")?;
+            let m = Self::build(spec, PathBuf::from("."), "mechanism".into())?;
+            m.warn_spec(py)?;
+            return Ok(m);
+        }
+        let path: PathBuf = py
+            .import("os")?
+            .call_method1("fspath", (source,))
+            .and_then(|p| p.extract())
+            .map_err(|_| {
+                errors::input(
+                    "source",
+                    source.repr().ok().map(|r| r.to_string()),
+                    "Mechanism.from_toml takes a path (str or os.PathLike) or TOML text".into(),
+                )
+            })?;
+        let text = read_file(&path)?;
+        let spec = parse_toml(&text, &path.display().to_string())?;
+        let base = path
+            .parent()
+            .map(Path::to_path_buf)
+            .unwrap_or_else(|| PathBuf::from("."));
+        let base = std::fs::canonicalize(&base).unwrap_or(base);
+        let name = path
+            .file_stem()
+            .map_or_else(|| "mechanism".into(), |s| s.to_string_lossy().into_owned());
+        let m = Self::build(spec, base, name)?;
+        m.warn_spec(py)?;
+        Ok(m)
+    }
+
+    /// Mechanism.from_dict(d, base_dir=".") -> Mechanism
+    ///
+    /// A mechanism from a dict with the mechanism file's schema (``length_unit``, ``cam``,
+    /// ``follower``, optional ``dynamics``). ``base_dir`` resolves a relative points-file path.
+    #[staticmethod]
+    #[pyo3(signature = (d, base_dir = None))]
+    fn from_dict(
+        py: Python<'_>,
+        d: &Bound<'_, PyAny>,
+        base_dir: Option<PathBuf>,
+    ) -> PyResult<Self> {
+        if !d.is_instance_of::<PyDict>() {
+            return Err(errors::input(
+                "",
+                d.repr().ok().map(|r| r.to_string()),
+                "Mechanism.from_dict takes a dict with the mechanism file's schema".into(),
+            ));
+        }
+        let text: String = json_module(py)?
+            .call_method1("dumps", (d,))
+            .map_err(|e| {
+                errors::input(
+                    "",
+                    None,
+                    format!(
+                        "the dict holds a value that is not a number, string, list or dict: {e}"
+                    ),
+                )
+            })?
+            .extract()?;
+        let spec = parse_json(&text)?;
+        let m = Self::build(
+            spec,
+            base_dir.unwrap_or_else(|| PathBuf::from(".")),
+            "mechanism".into(),
+        )?;
+        m.warn_spec(py)?;
+        Ok(m)
+    }
+
+    /// to_dict() -> dict: the mechanism's spec, as ``from_dict`` takes it.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let text = serde_json::to_string(&self.spec)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+        json_module(py)?.call_method1("loads", (text,))
+    }
+
+    /// to_toml() -> str: the mechanism file's text.
+    fn to_toml(&self) -> PyResult<String> {
+        toml::to_string(&self.spec)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
+    }
+
+    /// For pickle: rebuilt from its spec (and the folder its points file is read from).
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, (String, String, String))> {
+        let f = py
+            .import("camkin._camkin")?
+            .getattr("_mechanism_from_json")?;
+        let text = serde_json::to_string(&self.spec)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+        Ok((
+            f,
+            (text, self.base_dir.display().to_string(), self.name.clone()),
+        ))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<camkin.Mechanism {:?}: {} cam at {} rpm, {} follower, lengths in {}>",
+            self.name,
+            self.spec.cam.profile.kind,
+            camkin::human::human(self.spec.cam.speed_rpm),
+            self.spec.follower.kind,
+            self.built.length_unit.name()
+        )
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .extract::<PyRef<'_, PyMechanism>>()
+            .map(|o| o.spec == self.spec && o.base_dir == self.base_dir)
+            .unwrap_or(false)
+    }
+
+    /// The length unit of every length in and out: ``"mm"``, ``"cm"``, ``"m"`` or ``"in"``.
+    #[getter]
+    fn length_unit(&self) -> &'static str {
+        self.built.length_unit.name()
+    }
+
+    /// The cam's speed, rpm.
+    #[getter]
+    fn speed_rpm(&self) -> f64 {
+        self.spec.cam.speed_rpm
+    }
+
+    /// The follower's kind (``"translating-flat"``, ``"oscillating-roller"``, …).
+    #[getter]
+    fn follower_kind(&self) -> String {
+        self.spec.follower.kind.clone()
+    }
+
+    /// The follower coordinate is an arm angle (its position in degrees).
+    #[getter]
+    fn oscillating(&self) -> bool {
+        self.mech().follower().is_oscillating()
+    }
+
+    /// The name used in titles (the file's stem).
+    #[getter]
+    fn name(&self) -> String {
+        self.name.clone()
+    }
+
+    /// The file has a ``[dynamics]`` section (``simulate`` needs one).
+    #[getter]
+    fn has_dynamics(&self) -> bool {
+        self.spec.dynamics.is_some()
+    }
+
+    /// analyze(angles_deg, *, per="s", angle_unit="deg", contiguous=None, strict=False,
+    /// large=False) -> dict
+    ///
+    /// The follower's motion and the contact at each cam angle (degrees; a number or a 1-D
+    /// array), by the exact contact method, warm-started from angle to angle, with the GIL
+    /// released. Returns a dict of NumPy arrays keyed by the columns of ``camkin analyze``, each
+    /// name carrying its unit (``position_mm``, ``acceleration_mm_s2``, ``pressure_angle_deg``,
+    /// …); for a number, a dict of numbers. A row that could not be computed has NaN in every
+    /// number column and its reason in ``error`` (``None`` elsewhere); ``strict=True`` raises
+    /// ``camkin.ContactError`` instead. ``per="deg"`` gives derivatives per degree of cam angle;
+    /// ``angle_unit`` is an arm's. ``contiguous`` (default: the angles increase) says the angles
+    /// trace the motion, so that a contact jump between rows is marked ``jump`` in ``found``.
+    #[pyo3(signature = (angles_deg, *, per = "s", angle_unit = "deg", contiguous = None, strict = false, large = false))]
+    #[allow(clippy::too_many_arguments)]
+    fn analyze<'py>(
+        &self,
+        py: Python<'py>,
+        angles_deg: &Bound<'py, PyAny>,
+        per: &str,
+        angle_unit: &str,
+        contiguous: Option<bool>,
+        strict: bool,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let units = self.units(per, angle_unit)?;
+        let (angles, scalar) = angles_from(py, angles_deg, "angles_deg")?;
+        self.check_work(angles.len(), large)?;
+        let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
+        let mech = self.mech();
+        let (cols, jumps, jump_at, first_error) = py.detach(|| {
+            let names = camkin::table::analysis_columns(&units);
+            let mut cols = Columns::new(names, angles.len());
+            let mut rows = AnalysisSweep::new(mech, &angles, contiguous, CHUNK);
+            let mut first_error = None;
+            for chunk in rows.by_ref() {
+                for r in &chunk {
+                    if first_error.is_none() {
+                        if let Some(e) = &r.error {
+                            first_error = Some((r.angle_deg, e.clone()));
+                        }
+                    }
+                    cols.push(camkin::table::analysis_cells(r, &units));
+                }
+            }
+            (cols, rows.jumps(), rows.jump_at().to_vec(), first_error)
+        });
+        if strict {
+            if let Some((a, e)) = first_error {
+                return Err(errors::contact(format!(
+                    "at cam angle {}°: {e}",
+                    camkin::human::human(a)
+                )));
+            }
+        }
+        if jumps > 0 {
+            let at: Vec<String> = jump_at
+                .iter()
+                .take(5)
+                .map(|&k| format!("{}°", camkin::human::human(angles[k])))
+                .collect();
+            Self::warn(
+                py,
+                &format!(
+                    "the contact jumps at {jumps} of the angles (at {}{}; rows marked \"jump\" in found): the follower cannot follow the profile there and the acceleration is impulsive",
+                    at.join(", "),
+                    if jumps > at.len() { ", …" } else { "" }
+                ),
+            )?;
+        }
+        cols.into_dict(py, scalar)
+    }
+
+    /// travel() -> dict: the follower's rest (nearest the cam) and farthest positions over a
+    /// revolution, their cam angles (degrees) and the stroke; positions in the file's length
+    /// unit, an arm's in degrees. Keys carry the units.
+    fn travel<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let t = self
+            .mech()
+            .travel()
+            .map_err(|e| errors::contact(format!("the follower's travel: {e}")))?;
+        let u = Units::plain(self.mech(), self.built.length_unit);
+        let k = u.motion_key(0);
+        let d = PyDict::new(py);
+        d.set_item(format!("rest_{k}"), u.coord_value(t.rest))?;
+        d.set_item("rest_angle_deg", t.rest_angle.to_degrees())?;
+        d.set_item(format!("peak_{k}"), u.coord_value(t.peak))?;
+        d.set_item("peak_angle_deg", t.peak_angle.to_degrees())?;
+        d.set_item(format!("stroke_{k}"), u.coord_value(t.stroke()))?;
+        Ok(d)
+    }
+
+    /// checks(*, step_deg=0.5, pressure_limit_deg=30.0) -> dict
+    ///
+    /// The design checks of ``camkin synth`` at every ``step_deg`` of a revolution: ``passed``
+    /// and ``failures`` (names of the failed checks), the round trip of a synthesised profile
+    /// (contact method against its motion law), radii of curvature at the contact (smallest
+    /// convex, sharpest concave, with their cam angles), undercut angles, the pressure angle's
+    /// peak and the angles beyond the limit, the face width a flat face needs. Lengths in the
+    /// file's unit (an arm's motion in rad), angles in degrees.
+    #[pyo3(signature = (*, step_deg = 0.5, pressure_limit_deg = 30.0))]
+    fn checks<'py>(
+        &self,
+        py: Python<'py>,
+        step_deg: f64,
+        pressure_limit_deg: f64,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let n = revolution_steps(step_deg, "step_deg")?;
+        if !(pressure_limit_deg.is_finite()
+            && pressure_limit_deg > 0.0
+            && pressure_limit_deg < 90.0)
+        {
+            return Err(errors::input(
+                "pressure_limit_deg",
+                Some(camkin::human::human(pressure_limit_deg)),
+                format!("pressure_limit_deg = {pressure_limit_deg}: must be in (0, 90) degrees"),
+            ));
+        }
+        self.check_work(n, false)?;
+        let thetas: Vec<f64> = (0..n).map(|k| (k as f64 * step_deg).to_radians()).collect();
+        let mech = self.mech();
+        let checks = py.detach(|| mech.design_checks(&thetas, pressure_limit_deg));
+        let text = serde_json::to_string(&checks)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+        let d = json_module(py)?.call_method1("loads", (text,))?;
+        let failures = checks.failures();
+        d.set_item("passed", failures.is_empty())?;
+        d.set_item("failures", PyList::new(py, failures)?)?;
+        d.set_item("undercut", checks.undercut())?;
+        d.set_item("length_unit", self.built.length_unit.name())?;
+        Ok(d)
+    }
+
+    /// profile(n=720) -> numpy.ndarray, shape (n, 2): points of the cam profile in the cam's
+    /// frame (file's length unit), evenly spaced in the profile parameter.
+    #[pyo3(signature = (n = 720))]
+    fn profile<'py>(
+        &self,
+        py: Python<'py>,
+        n: usize,
+    ) -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
+        if !(3..=10_000_000).contains(&n) {
+            return Err(errors::input(
+                "n",
+                Some(n.to_string()),
+                format!("n = {n}: must be from 3 to 10000000"),
+            ));
+        }
+        let p = self.mech().cam().profile();
+        let (a, b) = match p.domain() {
+            camkin::curve::Domain::Periodic { period } => (0.0, period),
+            camkin::curve::Domain::Interval { min, max } => (min, max),
+            _ => (0.0, 1.0),
+        };
+        let rows: Vec<Vec<f64>> = (0..n)
+            .map(|k| {
+                let x = p.position(a + (b - a) * k as f64 / n as f64);
+                vec![x.x, x.y]
+            })
+            .collect();
+        numpy::PyArray2::from_vec2(py, &rows)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
+    }
+
+    /// with_nodes(points) -> Mechanism: the same mechanism with the spline profile's nodes
+    /// replaced (an (N, 2) array in the file's length unit); validated as a file would be.
+    fn with_nodes(&self, points: numpy::PyReadonlyArray2<'_, f64>) -> PyResult<Self> {
+        let spec = crate::study::spec_with_nodes(&self.spec, points.as_array())?;
+        Self::build(spec, self.base_dir.clone(), self.name.clone())
+    }
+}
+
+impl PyMechanism {
+    fn warn_spec(&self, py: Python<'_>) -> PyResult<()> {
+        for w in &self.built.warnings {
+            Self::warn(py, &w.to_string())?;
+        }
+        Ok(())
+    }
+}
+
+/// The number of steps of `step_deg` in a revolution; `step_deg` must divide it evenly enough.
+pub fn revolution_steps(step_deg: f64, field: &str) -> PyResult<usize> {
+    if !(step_deg.is_finite() && step_deg > 0.0 && step_deg <= 360.0) {
+        return Err(errors::input(
+            field,
+            Some(camkin::human::human(step_deg)),
+            format!("{field} = {step_deg}: must be in (0, 360] degrees"),
+        ));
+    }
+    let n = (360.0 / step_deg).round();
+    if n > 1e8 {
+        return Err(errors::resource(format!(
+            "{field} = {step_deg}: {n} angles per revolution is more than 100000000"
+        )));
+    }
+    Ok(n as usize)
+}
+
+/// For pickle: a mechanism rebuilt from its spec's JSON.
+#[pyfunction]
+pub fn _mechanism_from_json(text: &str, base_dir: &str, name: &str) -> PyResult<PyMechanism> {
+    let spec = parse_json(text)?;
+    PyMechanism::build(spec, PathBuf::from(base_dir), name.into())
+}
+
+/// paper_cam() -> Mechanism: the paper's cam (section 3; ``examples/paper.toml``): a 9-node
+/// closed spline cam at 1000 rpm under a translating flat-faced follower, lengths in cm.
+#[pyfunction]
+pub fn paper_cam() -> PyResult<PyMechanism> {
+    let spec = parse_toml(PAPER_TOML, "paper.toml")?;
+    PyMechanism::build(spec, PathBuf::from("."), "paper".into())
+}

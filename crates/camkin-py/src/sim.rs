@@ -1,0 +1,141 @@
+//! `Mechanism.simulate`: the follower's dynamics with lift-off and impacts, the command's
+//! `simulate` as arrays.
+
+use crate::columns::Columns;
+use crate::errors;
+use crate::mech::PyMechanism;
+use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Simulation};
+use camkin::spec::BuildOptions;
+use camkin::table::{
+    event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow, Units,
+};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+fn dyn_err(e: DynamicsError) -> PyErr {
+    match e {
+        DynamicsError::Invalid { .. } | DynamicsError::StepTooLong { .. } => {
+            errors::input("dynamics", None, e.to_string())
+        }
+        _ => errors::contact(e.to_string()),
+    }
+}
+
+#[pymethods]
+impl PyMechanism {
+    /// simulate(*, revolutions=1.0, step_deg=1.0, substeps=1, start_angle_deg=0.0, large=False)
+    /// -> dict
+    ///
+    /// The follower's motion under its spring, damping and the cam (the file's ``[dynamics]``,
+    /// SI units), with lift-off and impacts, from ``start_angle_deg`` for ``revolutions`` turns,
+    /// sampled every ``step_deg`` of cam angle (``substeps`` integration steps each). Returns
+    /// ``{"samples": dict of arrays, "events": list of dicts}`` with the columns of
+    /// ``camkin simulate`` (lengths in the file's unit, force in N, time in s).
+    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, substeps = 1, start_angle_deg = 0.0, large = false))]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        revolutions: f64,
+        step_deg: f64,
+        substeps: usize,
+        start_angle_deg: f64,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let bad = |field: &str, v: f64, what: &str| {
+            errors::input(
+                field,
+                Some(camkin::human::human(v)),
+                format!("{field} = {v}: {what}"),
+            )
+        };
+        if !(revolutions.is_finite() && revolutions > 0.0 && revolutions <= 1e4) {
+            return Err(bad("revolutions", revolutions, "must be in (0, 10000]"));
+        }
+        if !(step_deg.is_finite() && step_deg > 0.0 && step_deg <= 360.0) {
+            return Err(bad("step_deg", step_deg, "must be in (0, 360] degrees"));
+        }
+        if !(1..=1000).contains(&substeps) {
+            return Err(bad("substeps", substeps as f64, "must be from 1 to 1000"));
+        }
+        if !start_angle_deg.is_finite() {
+            return Err(bad("start_angle_deg", start_angle_deg, "must be finite"));
+        }
+        let outputs = (revolutions * 360.0 / step_deg).round() as usize;
+        let seconds = outputs as f64 * substeps as f64 * 2e-5;
+        if (seconds > 60.0 || outputs > 1_000_000) && !large {
+            return Err(errors::resource(format!(
+                "{} steps ({outputs} samples) would take about {} s; pass large=True to run it",
+                camkin::human::human(outputs as f64 * substeps as f64),
+                camkin::human::human(seconds.round())
+            )));
+        }
+        let built = self
+            .spec
+            .build(&BuildOptions {
+                base_dir: self.base_dir.clone(),
+                si: true,
+            })
+            .map_err(|e| errors::spec(&e))?;
+        let params = built.dynamics.ok_or_else(|| {
+            errors::input(
+                "dynamics",
+                None,
+                "simulate needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)".into(),
+            )
+        })?;
+        let mech = built.mechanism;
+        self.check_work(1441 + outputs, large)?;
+        let units = Units::plain(&mech, built.length_unit);
+        let mut sim = Simulation::starting_at(
+            &mech,
+            params,
+            AugmentedLagrangian::default(),
+            camkin::geometry::deg_to_rad(start_angle_deg),
+        )
+        .map_err(dyn_err)?;
+        let h = step_deg.to_radians() / mech.cam().speed() / substeps as f64;
+        if h > sim.max_step() {
+            let (rate, field, value) = sim.fastest_rate();
+            let need = (h / sim.max_step() * substeps as f64).ceil();
+            return Err(errors::input(
+                &field.to_string(),
+                Some(camkin::human::human(value)),
+                format!(
+                    "{field} = {}: too stiff for the time step {} s; the follower's fastest rate is {} /s: use substeps={need} or more, or a finer step_deg",
+                    camkin::human::human(value),
+                    camkin::human::human(h),
+                    camkin::human::human(rate)
+                ),
+            ));
+        }
+        let (samples, events) = py
+            .detach(|| -> Result<_, DynamicsError> {
+                let run = sim.run(outputs, substeps, h, |_| {})?;
+                let thetas: Vec<f64> = run.samples.iter().map(|s| s.cam_angle).collect();
+                let kin = mech.analyze_all(&thetas);
+                let mut cols = Columns::new(sample_columns(&units), run.samples.len());
+                for (s, k) in run.samples.iter().zip(&kin) {
+                    cols.push(sample_cells(&SampleRow::new(s, k.as_ref().ok()), &units));
+                }
+                Ok((cols, run.events))
+            })
+            .map_err(dyn_err)?;
+        let names = event_columns(&units);
+        let ev = PyList::empty(py);
+        for e in &events {
+            let d = PyDict::new(py);
+            for (name, cell) in names.iter().zip(event_cells(&EventRow::from(e), &units)) {
+                match cell {
+                    camkin::table::Cell::Num(x) => d.set_item(name, x)?,
+                    camkin::table::Cell::Int(x) => d.set_item(name, x)?,
+                    camkin::table::Cell::Text(x) => d.set_item(name, x)?,
+                }
+            }
+            ev.append(d)?;
+        }
+        let out = PyDict::new(py);
+        out.set_item("samples", samples.into_dict(py, false)?)?;
+        out.set_item("events", ev)?;
+        Ok(out)
+    }
+}
