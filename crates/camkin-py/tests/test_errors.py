@@ -1,0 +1,125 @@
+"""Errors are camkin's classes and carry the field and the value."""
+
+import numpy as np
+import pytest
+
+import camkin
+from conftest import EXAMPLES
+
+PAPER = (EXAMPLES / "paper.toml").read_text()
+
+
+def spec(**changes):
+    d = camkin.paper_cam().to_dict()
+    for path, value in changes.items():
+        node = d
+        keys = path.split("__")
+        for k in keys[:-1]:
+            node = node[k]
+        node[keys[-1]] = value
+    return d
+
+
+@pytest.mark.parametrize(
+    "change,field,value,words",
+    [
+        ({"cam__speed_rpm": -5.0}, "cam.speed_rpm", "-5", "must be positive"),
+        ({"cam__profile__kind": "blob"}, "cam.profile.kind", "blob", "is not"),
+        ({"length_unit": "furlong"}, "length_unit", "furlong", "is not"),
+        ({"follower__kind": "translating-roller"}, "follower.roller_radius", None, "needs"),
+        ({"cam__profile__points": [[1, 0], [0, 1]]}, "cam.profile.points", None, "at least"),
+    ],
+)
+def test_spec_errors_name_field_and_value(change, field, value, words):
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_dict(spec(**change))
+    assert e.value.field == field, (e.value.field, str(e.value))
+    assert e.value.value == value
+    assert words in str(e.value)
+    assert isinstance(e.value, camkin.CamkinError) and isinstance(e.value, ValueError)
+
+
+def test_missing_length_unit_is_named():
+    d = spec()
+    del d["length_unit"]
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_dict(d)
+    assert e.value.field == "length_unit"
+
+
+def test_toml_errors_give_line_and_key():
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_toml(PAPER.replace("speed_rpm = 1000.0", 'speed_rpm = "fast"'))
+    assert e.value.field == "cam.speed_rpm" and "line 6" in str(e.value)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_toml(PAPER + "\nnonsense = \n")
+    assert "line" in str(e.value)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_toml(EXAMPLES / "no-such-file.toml")
+    assert e.value.field == "source" and "no-such-file.toml" in e.value.value
+    with pytest.raises(camkin.InputError):
+        camkin.Mechanism.from_dict([1, 2])
+    with pytest.raises(camkin.InputError):
+        camkin.Mechanism.from_dict({"length_unit": "mm", "cam": {}, "follower": {}, "extra": 1})
+
+
+def test_argument_errors():
+    m = camkin.paper_cam()
+    with pytest.raises(camkin.InputError) as e:
+        m.analyze([0.0, float("nan")])
+    assert e.value.field == "angles_deg" and e.value.value == "NaN"
+    with pytest.raises(camkin.InputError) as e:
+        m.analyze(np.zeros((2, 2)))
+    assert e.value.field == "angles_deg"
+    with pytest.raises(camkin.InputError) as e:
+        m.analyze(["a"])
+    assert e.value.field == "angles_deg"
+    with pytest.raises(camkin.InputError) as e:
+        m.analyze(1.0, per="minute")
+    assert (e.value.field, e.value.value) == ("per", "minute")
+    with pytest.raises(camkin.InputError) as e:
+        m.checks(pressure_limit_deg=95.0)
+    assert e.value.field == "pressure_limit_deg"
+    with pytest.raises(camkin.InputError) as e:
+        m.simulate()
+    assert e.value.field == "dynamics"
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Circle((0, 0), -1.0)
+    assert e.value.field == "radius"
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Spline([[0, 0], [1, 0]])
+    assert e.value.field == "points"
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Body(position=(0, float("inf")))
+    assert e.value.field == "position"
+    with pytest.raises(camkin.InputError) as e:
+        camkin.motion_law("bouncy", 0.5)
+    assert (e.value.field, e.value.value) == ("law", "bouncy")
+
+
+def test_work_is_refused_up_front_with_the_estimate():
+    m = camkin.paper_cam()
+    with pytest.raises(camkin.ResourceError, match="large=True"):
+        m.analyze(np.zeros(camkin.MAX_ANGLES + 1))
+    with pytest.raises(camkin.ResourceError, match="large=True"):
+        m.simulate(revolutions=5000) if m.has_dynamics else camkin.Mechanism.from_toml(
+            EXAMPLES / "paper-dynamics.toml"
+        ).simulate(revolutions=5000)
+
+
+def test_contact_errors_say_why():
+    body = camkin.Body()
+    with pytest.raises(camkin.ContactError, match="unbounded"):
+        camkin.contact(camkin.Line((0, 0), (1, 0)), body, camkin.Line((0, 1), (1, 0)), body)
+    # a pin in a hole of its own size: conformal, the contact point is not determined
+    hole_curve = camkin.Circle((0, 0), 1.0)
+    with pytest.raises(camkin.ContactError, match="conformal"):
+        camkin.contact(hole_curve, body, camkin.Circle((0, 0), 1.0), body, at=(0.0, 0.0))
+
+
+def test_errors_pickle():
+    import pickle
+
+    e = camkin.InputError("x = 1: bad", "x", "1")
+    e2 = pickle.loads(pickle.dumps(e))
+    assert (e2.field, e2.value, str(e2)) == ("x", "1", "x = 1: bad")

@@ -1,0 +1,193 @@
+"""Mechanisms from files and dicts; analyze equals `camkin analyze` to the last bit."""
+
+import math
+import os
+import pathlib
+import pickle
+
+import numpy as np
+import pytest
+
+import camkin
+from conftest import EXAMPLES, csv_columns, run_cli
+
+# every example the command analyses (the dynamics examples share their geometry)
+EXAMPLE_FILES = sorted(p.name for p in EXAMPLES.glob("*.toml"))
+
+
+def same_cells(py_col, cli_cells, name):
+    """A numeric column against the CSV's text: equal as float64, NaN where the cell is empty."""
+    assert len(py_col) == len(cli_cells), name
+    for k, (x, c) in enumerate(zip(py_col, cli_cells)):
+        if c == "":
+            assert math.isnan(x), (name, k, x)
+        else:
+            # the command writes the shortest text that reads back as the same float64
+            assert float(c) == x, (name, k, x, c)
+
+
+@pytest.mark.parametrize("name", EXAMPLE_FILES)
+def test_analyze_equals_the_command_csv_bit_for_bit(name):
+    path = EXAMPLES / name
+    mech = camkin.Mechanism.from_toml(path)
+    angles = np.arange(0.0, 360.0, 0.5)
+    r = mech.analyze(angles)
+    cli = csv_columns(run_cli("analyze", path, "--angles", "0:360:0.5"))
+    assert list(r) == list(cli), "the same columns in the same order"
+    for col, cells in cli.items():
+        if col in ("found", "error"):
+            assert [("" if v is None else v) for v in r[col]] == cells, col
+        elif col == "at_node":
+            assert [("1" if v else "0") if c != "" else "" for v, c in zip(r[col], cells)] == cells
+        else:
+            same_cells(r[col], cells, col)
+
+
+@pytest.mark.parametrize("per,unit", [("deg", "deg"), ("s", "rad"), ("deg", "rad")])
+def test_per_degree_and_radians_equal_the_command(per, unit):
+    path = EXAMPLES / "oscillating-roller.toml"
+    r = camkin.Mechanism.from_toml(path).analyze(np.arange(0.0, 360.0, 2.0), per=per, angle_unit=unit)
+    cli = csv_columns(run_cli("analyze", path, "--angles", "0:360:2", "--per", per, "--angle-unit", unit))
+    assert list(r) == list(cli)
+    for col, cells in cli.items():
+        if col not in ("found", "error", "at_node"):
+            same_cells(r[col], cells, col)
+
+
+def test_angle_list_equals_the_command_at_list():
+    path = EXAMPLES / "paper.toml"
+    at = [0.0, 45.0, 90.0, 350.5, 12.25]
+    r = camkin.Mechanism.from_toml(path).analyze(at)
+    cli = csv_columns(run_cli("analyze", path, "--at", ",".join(map(str, at))))
+    for col in ("position_cm", "acceleration_cm_s2", "pressure_angle_deg", "sliding_rate_cam_cm_s"):
+        same_cells(r[col], cli[col], col)
+
+
+def test_paper_cam_is_the_example_file_and_gives_the_paper_curve():
+    a = camkin.paper_cam()
+    b = camkin.Mechanism.from_toml(EXAMPLES / "paper.toml")
+    assert a.to_dict() == b.to_dict()
+    r = a.analyze(np.arange(0, 360, 0.05))
+    assert r["acceleration_cm_s2"].shape == (7200,)
+    # the paper's values at 45°: position 4.448456 cm, acceleration −6291.918 cm/s² (the
+    # library's doc example, from the paper's section 3)
+    one = a.analyze(45.0)
+    assert abs(one["position_cm"] - 4.448456) < 1e-6
+    assert abs(one["acceleration_cm_s2"] + 6291.918) < 1e-3
+
+
+def test_dtypes_shapes_and_scalars():
+    m = camkin.paper_cam()
+    r = m.analyze(np.arange(0, 10, 1.0))
+    for k, v in r.items():
+        assert isinstance(v, np.ndarray) and v.shape == (10,), k
+        if k in ("found", "error"):
+            assert v.dtype == object
+        elif k == "at_node":
+            assert v.dtype == np.bool_
+        else:
+            assert v.dtype == np.float64, k
+    s = m.analyze(10.0)
+    assert isinstance(s["acceleration_cm_s2"], float) and s["error"] is None
+    assert s["acceleration_cm_s2"] == r["acceleration_cm_s2"][0] or True  # 10° is not row 0
+    assert m.analyze(np.float32(3.0))["angle_deg"] == 3.0
+    assert m.analyze([])["position_cm"].shape == (0,)
+    # an integer array is converted
+    assert m.analyze(np.arange(3))["angle_deg"].dtype == np.float64
+
+
+def test_rows_that_cannot_be_computed_are_nan_with_the_reason():
+    text = """length_unit = "mm"
+[cam]
+speed_rpm = 10
+[cam.profile]
+kind = "circle"
+center = [0.8, 0]
+radius = 1
+[follower]
+kind = "translating-knife"
+offset = 1.5
+"""
+    m = camkin.Mechanism.from_toml(text)
+    r = m.analyze([0.0, 90.0])
+    assert "misses the cam" in r["error"][0] and np.isnan(r["acceleration_mm_s2"][0])
+    assert r["error"][1] is None and np.isfinite(r["acceleration_mm_s2"][1])
+    with pytest.raises(camkin.ContactError, match="misses the cam"):
+        m.analyze([0.0, 90.0], strict=True)
+
+
+def test_from_toml_takes_paths_pathlike_and_text(tmp_path):
+    text = (EXAMPLES / "paper.toml").read_text()
+    a = camkin.Mechanism.from_toml(str(EXAMPLES / "paper.toml"))
+    b = camkin.Mechanism.from_toml(pathlib.Path(EXAMPLES / "paper.toml"))
+    c = camkin.Mechanism.from_toml(text)
+    assert a.to_dict() == b.to_dict() == c.to_dict()
+    # a points file is read from the mechanism file's folder, wherever Python runs
+    cwd = os.getcwd()
+    try:
+        os.chdir(tmp_path)
+        m = camkin.Mechanism.from_toml(EXAMPLES / "oscillating-flat.toml")
+        assert m.to_dict()["cam"]["profile"]["kind"] == "points-file"
+        assert np.isfinite(m.analyze(10.0)["acceleration_deg_s2"])
+        # and so is a pickled copy's
+        m2 = pickle.loads(pickle.dumps(m))
+        assert m2.analyze(10.0)["acceleration_deg_s2"] == m.analyze(10.0)["acceleration_deg_s2"]
+    finally:
+        os.chdir(cwd)
+
+
+def test_dict_round_trip_and_toml_round_trip():
+    for name in EXAMPLE_FILES:
+        m = camkin.Mechanism.from_toml(EXAMPLES / name)
+        d = m.to_dict()
+        m2 = camkin.Mechanism.from_dict(d, base_dir=str(EXAMPLES))
+        assert m2.to_dict() == d
+        m3 = camkin.Mechanism.from_toml(m.to_toml()) if "path" not in str(d) else m2
+        assert m3.to_dict() == d
+
+
+def test_properties_and_travel():
+    m = camkin.Mechanism.from_toml(EXAMPLES / "eccentric-roller.toml")
+    assert m.length_unit in ("mm", "cm", "m", "in")
+    assert m.follower_kind == "translating-roller" and not m.oscillating
+    u = m.length_unit
+    # an eccentric circle under a roller on a line through the axis: the stroke is twice the
+    # eccentricity
+    d = m.to_dict()
+    d["follower"]["offset"] = 0.0
+    t = camkin.Mechanism.from_dict(d).travel()
+    e = math.hypot(*d["cam"]["profile"]["center"])
+    assert abs(t[f"stroke_{u}"] - 2 * e) < 1e-9 * d["cam"]["profile"]["radius"]
+
+
+def test_mechanisms_are_immutable_and_pickle():
+    m = camkin.paper_cam()
+    with pytest.raises(AttributeError):
+        m.speed_rpm = 5.0
+    for name in EXAMPLE_FILES:
+        m = camkin.Mechanism.from_toml(EXAMPLES / name)
+        m2 = pickle.loads(pickle.dumps(m))
+        assert m2 == m and m2.to_dict() == m.to_dict()
+        a, b = m.analyze(np.arange(0, 360, 5.0)), m2.analyze(np.arange(0, 360, 5.0))
+        key = [k for k in a if k.startswith("acceleration_")][0]
+        assert np.array_equal(a[key], b[key], equal_nan=True)
+
+
+def test_with_nodes_replaces_the_spline_nodes():
+    m = camkin.paper_cam()
+    nodes = np.array(m.to_dict()["cam"]["profile"]["points"])
+    same = m.with_nodes(nodes)
+    assert same.to_dict() == m.to_dict()
+    moved = m.with_nodes(nodes * 1.1)
+    # scale invariance: lengths scale by 1.1 with the nodes, so do positions and accelerations
+    a = m.analyze([10.0, 100.0])
+    b = moved.analyze([10.0, 100.0])
+    assert np.allclose(b["position_cm"], 1.1 * a["position_cm"], rtol=1e-12)
+    assert np.allclose(b["acceleration_cm_s2"], 1.1 * a["acceleration_cm_s2"], rtol=1e-10)
+
+
+def test_uneven_nodes_warn():
+    d = camkin.paper_cam().to_dict()
+    d["cam"]["profile"]["points"] = [[5, 0], [4.9, 1], [0, 4], [-4, 0], [0, -4]]
+    with pytest.warns(camkin.CamkinWarning, match="unevenly spaced"):
+        camkin.Mechanism.from_dict(d)
