@@ -78,7 +78,22 @@ impl Columns {
                 Column::Text(v) => {
                     let kwargs = PyDict::new(py);
                     kwargs.set_item("dtype", np.getattr("object_")?)?;
-                    let list = pyo3::types::PyList::new(py, v)?;
+                    // one Python string per distinct text (`warm` repeats on every row)
+                    let mut seen: std::collections::HashMap<String, Py<PyAny>> =
+                        std::collections::HashMap::new();
+                    let items: Vec<Py<PyAny>> = v
+                        .into_iter()
+                        .map(|t| match t {
+                            None => py.None(),
+                            Some(t) => seen
+                                .entry(t)
+                                .or_insert_with_key(|t| {
+                                    pyo3::types::PyString::new(py, t).into_any().unbind()
+                                })
+                                .clone_ref(py),
+                        })
+                        .collect();
+                    let list = pyo3::types::PyList::new(py, items)?;
                     d.set_item(name, np.call_method("array", (list,), Some(&kwargs))?)?
                 }
             }

@@ -35,7 +35,15 @@ pub struct PyMechanism {
     pub built: Built,
     /// a name for titles (the file's stem, or `paper`)
     pub name: String,
+    /// the follower's travel and the profile's unfollowable stretches, found at the first sweep
+    /// (a search that costs about a thousand warm steps) and kept
+    parts: std::sync::OnceLock<SweepParts>,
 }
+
+type SweepParts = (
+    Result<camkin::cam::Travel, camkin::cam::CamError>,
+    Vec<(f64, f64)>,
+);
 
 impl PyMechanism {
     /// Builds a spec in its own units.
@@ -51,6 +59,7 @@ impl PyMechanism {
             base_dir,
             built,
             name,
+            parts: std::sync::OnceLock::new(),
         })
     }
 
@@ -365,10 +374,15 @@ impl PyMechanism {
         self.check_work(angles.len(), large)?;
         let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
         let mech = self.mech();
+        let parts = &self.parts;
         let (cols, jumps, jump_at, first_error) = py.detach(|| {
+            let (travel, stretches) = parts
+                .get_or_init(|| (mech.travel(), mech.unfollowable_stretches()))
+                .clone();
             let names = camkin::table::analysis_columns(&units);
             let mut cols = Columns::new(names, angles.len());
-            let mut rows = AnalysisSweep::new(mech, &angles, contiguous, CHUNK);
+            let mut rows =
+                AnalysisSweep::with_parts(mech, &angles, contiguous, CHUNK, travel, stretches);
             let mut first_error = None;
             for chunk in rows.by_ref() {
                 for r in &chunk {

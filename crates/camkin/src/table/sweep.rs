@@ -33,14 +33,36 @@ impl<'a> AnalysisSweep<'a> {
     /// range in order: then a contact that passed over a stretch the follower cannot follow
     /// between two rows has jumped, and its row says so even when the warm start held.
     pub fn new(mech: &'a Mechanism, angles_deg: &'a [f64], contiguous: bool, chunk: usize) -> Self {
+        Self::with_parts(
+            mech,
+            angles_deg,
+            contiguous,
+            chunk,
+            mech.travel(),
+            mech.unfollowable_stretches(),
+        )
+    }
+
+    /// As [`AnalysisSweep::new`] with the mechanism's travel ([`Mechanism::travel`]) and
+    /// unfollowable stretches ([`Mechanism::unfollowable_stretches`]) computed before (they
+    /// depend on the mechanism alone, and the travel's search costs about as much as a thousand
+    /// warm steps: a front end that sweeps one mechanism many times keeps them).
+    pub fn with_parts(
+        mech: &'a Mechanism,
+        angles_deg: &'a [f64],
+        contiguous: bool,
+        chunk: usize,
+        travel: Result<Travel, CamError>,
+        stretches: Vec<(f64, f64)>,
+    ) -> Self {
         Self {
             mech,
             angles: angles_deg,
             contiguous,
             chunk: chunk.max(1),
             sweep: mech.sweep(),
-            stretches: mech.unfollowable_stretches(),
-            travel: mech.travel(),
+            stretches,
+            travel,
             prev: None,
             start: 0,
             failed: 0,
