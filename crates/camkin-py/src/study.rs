@@ -17,11 +17,8 @@ use rayon::prelude::*;
 /// Work refused without `large=True`, estimated seconds on one core.
 const MAX_STUDY_SECONDS: f64 = 3600.0;
 
-/// The spec with its spline profile's nodes replaced (a points file becomes inline points).
-pub fn spec_with_nodes(
-    spec: &MechanismSpec,
-    points: ArrayView2<'_, f64>,
-) -> PyResult<MechanismSpec> {
+/// Refuses a spec whose profile has no nodes to replace.
+fn check_spline_kind(spec: &MechanismSpec) -> PyResult<()> {
     let kind = spec.cam.profile.kind.as_str();
     if kind != "spline" && kind != "points-file" {
         return Err(errors::input(
@@ -30,6 +27,24 @@ pub fn spec_with_nodes(
             format!("cam.profile.kind = {kind:?}: nodes can only be replaced on a spline profile (\"spline\" or \"points-file\")"),
         ));
     }
+    Ok(())
+}
+
+/// The spec with its profile's nodes replaced by `points` (a points file becomes inline points).
+fn with_points(spec: &MechanismSpec, points: Vec<[f64; 2]>) -> MechanismSpec {
+    let mut s = spec.clone();
+    s.cam.profile.kind = "spline".into();
+    s.cam.profile.path = None;
+    s.cam.profile.points = Some(points);
+    s
+}
+
+/// The spec with its spline profile's nodes replaced by an (N, 2) array.
+pub fn spec_with_nodes(
+    spec: &MechanismSpec,
+    points: ArrayView2<'_, f64>,
+) -> PyResult<MechanismSpec> {
+    check_spline_kind(spec)?;
     if points.ncols() != 2 {
         return Err(errors::input(
             "points",
@@ -40,11 +55,10 @@ pub fn spec_with_nodes(
             ),
         ));
     }
-    let mut s = spec.clone();
-    s.cam.profile.kind = "spline".into();
-    s.cam.profile.path = None;
-    s.cam.profile.points = Some(points.rows().into_iter().map(|r| [r[0], r[1]]).collect());
-    Ok(s)
+    Ok(with_points(
+        spec,
+        points.rows().into_iter().map(|r| [r[0], r[1]]).collect(),
+    ))
 }
 
 /// One design's summary over the angles.
@@ -234,10 +248,8 @@ pub fn spline_variants<'py>(
             format!("nodes: a (D, N, 2) array is needed, not one of shape {shape:?}"),
         ));
     }
-    // validated here, under the GIL, so that a bad kind is one error rather than D of them
-    spec_with_nodes(&base.spec, nodes.index_axis(numpy::ndarray::Axis(0), 0))
-        .map(|_| ())
-        .or_else(|e| if shape[0] == 0 { Ok(()) } else { Err(e) })?;
+    // checked here, under the GIL, so that a bad kind is one error rather than D of them
+    check_spline_kind(&base.spec)?;
     check_study(base.mech(), shape[0], angles.len(), large)?;
     let u = Units::plain(base.mech(), base.built.length_unit);
     let pool = pool(threads)?;
@@ -251,10 +263,7 @@ pub fn spline_variants<'py>(
             owned
                 .par_iter()
                 .map(|pts| {
-                    let mut s = spec.clone();
-                    s.cam.profile.kind = "spline".into();
-                    s.cam.profile.path = None;
-                    s.cam.profile.points = Some(pts.clone());
+                    let s = with_points(spec, pts.clone());
                     let opts = camkin::spec::BuildOptions {
                         base_dir: dir.clone(),
                         si: false,

@@ -183,3 +183,11 @@ def test_simulate_equals_the_command_csv():
         else:
             assert [float(c) for c in cells] == list(v), col
     assert isinstance(s["events"], list)
+
+
+def test_no_designs_is_an_empty_study_not_a_crash():
+    r = camkin.spline_variants(camkin.paper_cam(), np.zeros((0, 9, 2)))
+    assert r["peak_acceleration_cm_s2"].shape == (0,)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.spline_variants(camkin.Mechanism.from_toml(EXAMPLES / "motion-roller.toml"), np.zeros((0, 9, 2)))
+    assert e.value.field == "cam.profile.kind"
