@@ -8,6 +8,7 @@ pub mod draw;
 pub mod manufacture;
 pub mod mechfile;
 pub mod output;
+pub mod studio;
 pub mod study;
 
 use std::path::PathBuf;

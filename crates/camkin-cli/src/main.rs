@@ -1,7 +1,7 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
 use camkin_cli::commands::{
-    analyze, bench, compare, deviation, forces, plot, profile, simulate, synth,
+    analyze, bench, compare, deviation, forces, plot, profile, serve, simulate, synth,
 };
 use camkin_cli::Failure;
 
@@ -69,6 +69,18 @@ enum Command {
         after_help = "Examples:\n  camkin deviation measured.csv --against cam.toml\n  camkin deviation measured.csv --against cam.toml --tolerance 0.002 --out dev\n\nThe points are smoothed by a Fourier series of the radius within --tolerance (the measurement's noise).\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Deviation(deviation::DeviationArgs),
+    /// The cam studio in the browser: drag the profile's nodes or edit the file, watch the exact
+    /// lift, velocity, acceleration, jerk, pressure angle and curvature react.
+    #[command(
+        after_help = "Examples:\n  camkin serve                          # the paper's cam at http://127.0.0.1:8765/\n  camkin serve examples/oscillating-roller.toml --port 9000\n\nPrints the URL on stdout; opens no browser by itself. Listens on 127.0.0.1 only unless --host says otherwise.\nExit codes: 0 stopped, 1 internal failure, 2 bad input (a file that cannot be read, a port in use)."
+    )]
+    Serve(serve::ServeArgs),
+    /// A self-contained HTML report of a mechanism (drawing, animation, plots, checks, inputs)
+    /// for a design review: no network and no server needed to open it.
+    #[command(
+        after_help = "Examples:\n  camkin report examples/paper.toml -o report.html\n  camkin report cam.toml -o review.html --step 0.25 --pressure-limit 25\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Report(serve::ReportArgs),
 }
 
 /// True when a failure is only the reader of our output going away (`camkin … | head -1`).
@@ -117,6 +129,8 @@ fn main() -> ExitCode {
         Command::Profile(args) => profile::run(&args),
         Command::Forces(args) => forces::run(&args),
         Command::Deviation(args) => deviation::run(&args),
+        Command::Serve(args) => serve::run_serve(&args),
+        Command::Report(args) => serve::run_report(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -21,6 +21,34 @@ pub const MAX_POINTS: usize = camkin::curve::MAX_POINTS;
 pub struct InputError {
     /// the message, starting with `file:line:column:` when the place is known
     pub message: String,
+    /// the place in the text, 1-based `(line, column)` (column in characters), when known
+    pub at: Option<(usize, usize)>,
+}
+
+impl InputError {
+    fn new(message: String) -> Self {
+        Self { message, at: None }
+    }
+}
+
+/// A warning about a valid mechanism (uneven nodes, say), placed in the text where it can be.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Warning {
+    /// `file:line:column: message`
+    pub message: String,
+    /// 1-based `(line, column)`, when known
+    pub at: Option<(usize, usize)>,
+}
+
+/// A mechanism built from a file's text (see [`build_text`]).
+#[derive(Debug, Clone)]
+pub struct FromText {
+    /// the spec as read
+    pub spec: MechanismSpec,
+    /// what it builds
+    pub built: Built,
+    /// warnings, placed
+    pub warnings: Vec<Warning>,
 }
 
 impl std::fmt::Display for InputError {
@@ -33,11 +61,10 @@ impl std::error::Error for InputError {}
 
 /// Reads a mechanism file's text (at most [`MAX_FILE_BYTES`], a byte-order mark dropped):
 /// `(name for messages, text)`.
-fn read_text(path: &Path) -> Result<(String, String), InputError> {
+pub fn read_text(path: &Path) -> Result<(String, String), InputError> {
     let name = path.display().to_string();
-    let cannot = |e: std::io::Error| InputError {
-        message: format!("cannot read mechanism file {name}: {e}"),
-    };
+    let cannot =
+        |e: std::io::Error| InputError::new(format!("cannot read mechanism file {name}: {e}"));
     // counted while reading: a device or a pipe has no length in its metadata
     let mut bytes = Vec::new();
     std::fs::File::open(path)
@@ -47,18 +74,16 @@ fn read_text(path: &Path) -> Result<(String, String), InputError> {
         })
         .map_err(cannot)?;
     if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(InputError {
-            message: format!(
-                "{name}: more than {MAX_FILE_BYTES} bytes ({} MiB), the most a mechanism file may have",
-                MAX_FILE_BYTES >> 20
-            ),
-        });
+        return Err(InputError::new(format!(
+            "{name}: more than {MAX_FILE_BYTES} bytes ({} MiB), the most a mechanism file may have",
+            MAX_FILE_BYTES >> 20
+        )));
     }
-    let text = String::from_utf8(bytes).map_err(|e| InputError {
-        message: format!(
+    let text = String::from_utf8(bytes).map_err(|e| {
+        InputError::new(format!(
             "{name}: not UTF-8 text (invalid byte at offset {})",
             e.utf8_error().valid_up_to()
-        ),
+        ))
     })?;
     let text = text
         .strip_prefix('\u{feff}')
@@ -99,7 +124,7 @@ pub fn load_dynamics(
     let (name, text) = read_text(path)?;
     let b = build(&text, &name, path.parent().unwrap_or(Path::new(".")), true)?;
     let unit = b.length_unit;
-    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError { message: format!("{name}: this command needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)") })?, unit))
+    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: this command needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)")))?, unit))
 }
 
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);
@@ -116,7 +141,7 @@ pub fn parse_dynamics(
     base: &Path,
 ) -> Result<(Mechanism, FollowerDynamics), InputError> {
     let b = build(text, name, base, true)?;
-    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError { message: format!("{name}: a simulation needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)") })?))
+    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: a simulation needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)")))?))
 }
 
 /// The spec in a mechanism file's text.
@@ -132,6 +157,7 @@ pub fn parse_spec(text: &str, name: &str) -> Result<MechanismSpec, InputError> {
             } else {
                 format!("{name}: {path}: {inner}")
             },
+            at: inner.span().map(|s| line_column(text, s.start)),
         }
     })
 }
@@ -141,7 +167,7 @@ fn build(text: &str, name: &str, base: &Path, si: bool) -> Result<Built, InputEr
     build_spec(&spec, text, name, base, si)
 }
 
-/// Builds a parsed spec, placing errors and warnings in `text`.
+/// Builds a parsed spec, placing errors in `text`; warnings are printed.
 fn build_spec(
     spec: &MechanismSpec,
     text: &str,
@@ -152,29 +178,76 @@ fn build_spec(
     let options = BuildOptions {
         base_dir: base.to_path_buf(),
         si,
+        confine: false,
     };
-    let built = spec.build(&options).map_err(|e| place(text, name, &e))?;
-    for w in &built.warnings {
-        let field = match w {
-            SpecWarning::UnevenNodes { field, .. } => Some(*field),
-            _ => None,
-        };
-        eprintln!("camkin: warning: {}: {w}", located(text, name, field));
+    let (built, warnings) = build_placed(spec, text, name, &options)?;
+    for w in warnings {
+        eprintln!("camkin: warning: {}", w.message);
     }
     Ok(built)
 }
 
-/// `file:line:column` of `field`'s key (or `file` alone).
-fn located(text: &str, name: &str, field: Option<Field>) -> String {
+/// Builds a parsed spec with `options`, placing errors and warnings in `text`.
+fn build_placed(
+    spec: &MechanismSpec,
+    text: &str,
+    name: &str,
+    options: &BuildOptions,
+) -> Result<(Built, Vec<Warning>), InputError> {
+    let built = spec.build(options).map_err(|e| place(text, name, &e))?;
+    let warnings = built
+        .warnings
+        .iter()
+        .map(|w| {
+            let field = match w {
+                SpecWarning::UnevenNodes { field, .. } => Some(*field),
+                _ => None,
+            };
+            let (prefix, at) = located(text, name, field);
+            Warning {
+                message: format!("{prefix}: {w}"),
+                at,
+            }
+        })
+        .collect();
+    Ok((built, warnings))
+}
+
+/// Parses and builds a mechanism file's text with `options` (a server's confined folder, SI
+/// units), with its spec and its warnings placed in the text (nothing is printed).
+pub fn build_text(text: &str, name: &str, options: &BuildOptions) -> Result<FromText, InputError> {
+    let spec = parse_spec(text, name)?;
+    let (built, warnings) = build_placed(&spec, text, name, options)?;
+    Ok(FromText {
+        spec,
+        built,
+        warnings,
+    })
+}
+
+/// 1-based `(line, column)` of byte offset `at` in `text` (column in characters).
+pub fn line_column(text: &str, at: usize) -> (usize, usize) {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    let before = &text[..at];
+    let line = before.matches('\n').count() + 1;
+    let col = before[before.rfind('\n').map_or(0, |i| i + 1)..]
+        .chars()
+        .count()
+        + 1;
+    (line, col)
+}
+
+/// `file:line:column` of `field`'s key (or `file` alone), and the line and column.
+fn located(text: &str, name: &str, field: Option<Field>) -> (String, Option<(usize, usize)>) {
     match field.and_then(|f| span_of(text, f)) {
         Some(span) => {
-            let start = span.start.min(text.len());
-            let before = &text[..start];
-            let line = before.matches('\n').count() + 1;
-            let col = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
-            format!("{name}:{line}:{col}")
+            let (line, col) = line_column(text, span.start);
+            (format!("{name}:{line}:{col}"), Some((line, col)))
         }
-        None => name.to_string(),
+        None => (name.to_string(), None),
     }
 }
 
@@ -182,12 +255,12 @@ fn located(text: &str, name: &str, field: Option<Field>) -> String {
 /// enclosing key when that one is absent: the kind's, for a field the kind needs).
 fn place(text: &str, name: &str, e: &SpecError) -> InputError {
     if let SpecError::PointsFile { .. } = e {
-        return InputError {
-            message: e.to_string(),
-        };
+        return InputError::new(e.to_string());
     }
+    let (prefix, at) = located(text, name, Some(e.field()));
     InputError {
-        message: format!("{}: {e}", located(text, name, Some(e.field()))),
+        message: format!("{prefix}: {e}"),
+        at,
     }
 }
 

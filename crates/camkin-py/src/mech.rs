@@ -52,6 +52,7 @@ impl PyMechanism {
             .build(&BuildOptions {
                 base_dir: base_dir.clone(),
                 si: false,
+                confine: false,
             })
             .map_err(|e| errors::spec(&e))?;
         Ok(Self {

@@ -74,6 +74,7 @@ impl PyMechanism {
             .build(&BuildOptions {
                 base_dir: self.base_dir.clone(),
                 si: true,
+                confine: false,
             })
             .map_err(|e| errors::spec(&e))?;
         let params = built.dynamics.ok_or_else(|| {

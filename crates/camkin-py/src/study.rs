@@ -267,6 +267,7 @@ pub fn spline_variants<'py>(
                     let opts = camkin::spec::BuildOptions {
                         base_dir: dir.clone(),
                         si: false,
+                        confine: false,
                     };
                     match s.build(&opts) {
                         Ok(b) => (summarize_one(&b.mechanism, &u, &angles), None),

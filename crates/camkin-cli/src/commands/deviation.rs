@@ -53,6 +53,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
             .unwrap_or(std::path::Path::new("."))
             .to_path_buf(),
         si: false,
+        confine: false,
     };
     let unit = design.length_unit;
     let l = unit.name();

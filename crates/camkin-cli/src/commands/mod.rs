@@ -7,5 +7,6 @@ pub mod deviation;
 pub mod forces;
 pub mod plot;
 pub mod profile;
+pub mod serve;
 pub mod simulate;
 pub mod synth;

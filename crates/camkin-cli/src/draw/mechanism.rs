@@ -106,7 +106,7 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
 /// The follower at position `q` touching at `c`, drawn from its model: the contact curve in its
 /// frame (a face, a roller, a knife's tip) and the joint that carries it (a stem along the
 /// direction of travel, or an arm from the pivot).
-fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &mut Vec<Shape>) {
+pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &mut Vec<Shape>) {
     let (pose, _) = mech.follower_body(q);
     let rot = Rotation::new(pose.angle);
     let joint = mech.follower_joint();

@@ -135,12 +135,20 @@ impl<'a> Forces<'a> {
     /// `F |J|` at cam speed ω (rad/s, constant) from a state's geometry: `(c2, c1, c0)` of
     /// `c2 ω² + c1 ω + c0`.
     fn quadratic(&self, s: &ForceState) -> (f64, f64, f64) {
+        let [c2, c1, c0] = self.force_coefficients(s);
+        (c2, c1, c0)
+    }
+
+    /// `[c2, c1, c0]` with `F |J| = c2 ω² + c1 ω + c0` at this angle, at any constant cam speed
+    /// ω (rad/s): the contact force at any speed is `(c2 ω² + c1 ω + c0) / lever` (a front end
+    /// with a speed slider evaluates it without asking again).
+    pub fn force_coefficients(&self, s: &ForceState) -> [f64; 3] {
         let a = self.travel.away;
-        (
+        [
             a * self.m * s.dq[1],
             a * self.params.damping * s.dq[0],
             s.spring_force - a * self.g,
-        )
+        ]
     }
 
     /// The contact force (N) at this angle at the constant cam speed `omega` (rad/s).

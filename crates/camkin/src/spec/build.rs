@@ -56,6 +56,10 @@ pub struct BuildOptions {
     /// convert lengths to metres with `length_unit` (for a dynamic simulation); otherwise the
     /// mechanism is built in the file's units
     pub si: bool,
+    /// read points files only from inside `base_dir` (a server that opened one mechanism's
+    /// folder): an absolute path, a `..` component, or a path that resolves (through symbolic
+    /// links) outside the folder is refused
+    pub confine: bool,
 }
 
 /// A built mechanism with what else its spec said.
@@ -356,6 +360,7 @@ impl MechanismSpec {
         let (profile, synthesis) = cam.profile.build(
             scale,
             &options.base_dir,
+            options.confine,
             &follower.relative_to(pivot),
             sense,
             &mut warnings,

@@ -131,6 +131,7 @@ impl ProfileSpec {
         &self,
         scale: f64,
         base: &Path,
+        confine: bool,
         follower: &Follower,
         sense: Sense,
         warnings: &mut Vec<SpecWarning>,
@@ -316,6 +317,13 @@ impl ProfileSpec {
                     missing: "path",
                 })?;
                 let full = base.join(path);
+                if confine {
+                    confined(base, path).map_err(|reason| SpecError::Invalid {
+                        field: f(P::Path),
+                        value: format!("{path:?}"),
+                        reason,
+                    })?;
+                }
                 let file = full.display().to_string();
                 let (nodes, lines) = read_points_file(&full).map_err(|e| match e {
                     CurveError::PointsFileIo { message, .. } => SpecError::Invalid {
@@ -363,4 +371,36 @@ impl ProfileSpec {
         };
         Ok((curve, None))
     }
+}
+
+/// Checks that the points file `path` lies inside the folder `base` (see
+/// [`super::BuildOptions::confine`]): why not, when it does not.
+fn confined(base: &Path, path: &str) -> Result<(), String> {
+    use std::path::Component;
+    let p = Path::new(path);
+    if p.is_absolute() || p.has_root() {
+        return Err(
+            "an absolute path: only files in the mechanism's folder can be read here".into(),
+        );
+    }
+    if p.components()
+        .any(|c| !matches!(c, Component::Normal(_) | Component::CurDir))
+    {
+        return Err(
+            "leaves the mechanism's folder (`..`): only files in it can be read here".into(),
+        );
+    }
+    let folder = base
+        .canonicalize()
+        .map_err(|e| format!("the mechanism's folder cannot be read: {e}"))?;
+    // a missing file is reported by the read that follows; a symbolic link out is refused here
+    if let Ok(real) = base.join(p).canonicalize() {
+        if !real.starts_with(&folder) {
+            return Err(
+                "a symbolic link out of the mechanism's folder: only files in it can be read here"
+                    .into(),
+            );
+        }
+    }
+    Ok(())
 }

@@ -1,0 +1,148 @@
+//! `camkin serve`: the cam studio in the browser, and `camkin report`: its self-contained HTML
+//! report.
+
+use crate::args::RevolutionStep;
+use crate::output::write_atomic;
+use crate::studio::model::Source;
+use crate::studio::server::{serve, Session};
+use crate::studio::{report, Limits, StudioError};
+use crate::{mechfile, Failure};
+use anyhow::anyhow;
+use std::net::{IpAddr, Ipv4Addr, SocketAddr, TcpListener};
+use std::path::PathBuf;
+
+#[derive(Debug, clap::Args)]
+pub struct ServeArgs {
+    /// Mechanism file (TOML); without it, the paper's built-in cam. Points files are read from
+    /// its folder only.
+    pub mechanism: Option<PathBuf>,
+    /// Port to listen on (0: any free port).
+    #[arg(long, short = 'p', value_name = "PORT", default_value_t = 8765)]
+    pub port: u16,
+    /// Address to listen on. The studio has no login: keep it on this machine unless the network
+    /// is yours.
+    #[arg(long, value_name = "IP", default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
+    pub host: IpAddr,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ReportArgs {
+    /// Mechanism file (TOML); without it, the paper's built-in cam.
+    pub mechanism: Option<PathBuf>,
+    /// The HTML file to write (replaced only once it is complete).
+    #[arg(long, short = 'o', value_name = "FILE", default_value = "report.html")]
+    pub output: PathBuf,
+    /// Cam-angle step of the plots, degrees (at least 0.05).
+    #[arg(long, value_name = "DEG", default_value = "0.5")]
+    pub step: RevolutionStep,
+    /// Pressure-angle limit of the checks, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 30.0)]
+    pub pressure_limit: f64,
+}
+
+/// The text and source of the mechanism to open.
+fn open(path: Option<&PathBuf>) -> Result<Session, Failure> {
+    match path {
+        Some(p) => {
+            let (_, text) = mechfile::read_text(p).map_err(|e| Failure::Input(anyhow!(e)))?;
+            let folder = p
+                .parent()
+                .map(|d| {
+                    if d.as_os_str().is_empty() {
+                        ".".into()
+                    } else {
+                        d.to_path_buf()
+                    }
+                })
+                .unwrap_or_else(|| PathBuf::from("."));
+            Ok(Session {
+                text,
+                source: Source {
+                    name: p
+                        .file_name()
+                        .map_or_else(|| p.display().to_string(), |s| s.to_string_lossy().into()),
+                    folder: Some(folder),
+                },
+            })
+        }
+        None => Ok(Session {
+            text: mechfile::PAPER_TOML.to_string(),
+            source: Source {
+                name: "paper.toml".into(),
+                folder: None,
+            },
+        }),
+    }
+}
+
+pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
+    let session = open(args.mechanism.as_ref())?;
+    if let Err(e) = crate::studio::model::build(&session.text, &session.source, false) {
+        let e = match e {
+            StudioError::Input { message, .. } => message,
+            other => format!("{other:?}"),
+        };
+        eprintln!(
+            "camkin: warning: the mechanism has an error; the studio opens it to be mended: {e}"
+        );
+    }
+    let addr = SocketAddr::new(args.host, args.port);
+    let listener = TcpListener::bind(addr).map_err(|e| {
+        Failure::Input(anyhow!(
+            "cannot listen on {addr}: {e}{}",
+            if e.kind() == std::io::ErrorKind::AddrInUse {
+                " (another program uses it: pass --port with another number, or 0 for any free port)"
+            } else {
+                ""
+            }
+        ))
+    })?;
+    let local = listener
+        .local_addr()
+        .map_err(|e| Failure::Internal(anyhow!(e)))?;
+    let shown = match local.ip() {
+        IpAddr::V4(ip) if ip.is_unspecified() => {
+            SocketAddr::new(Ipv4Addr::LOCALHOST.into(), local.port())
+        }
+        _ => local,
+    };
+    // the URL on stdout (scripts read it); the rest on stderr
+    println!("http://{shown}/");
+    eprintln!(
+        "camkin studio: {} at http://{shown}/ — open it in a browser; Ctrl-C stops the server",
+        session.source.name
+    );
+    serve(listener, session, Limits::default())
+        .map_err(|e| Failure::Internal(anyhow!("the server stopped: {e}")))
+}
+
+pub fn run_report(args: &ReportArgs) -> Result<(), Failure> {
+    let session = open(args.mechanism.as_ref())?;
+    let limit = crate::studio::pressure_limit(Some(args.pressure_limit)).map_err(|_| {
+        Failure::Input(anyhow!(
+            "--pressure-limit: {} must be in (0, 90) degrees",
+            args.pressure_limit
+        ))
+    })?;
+    let limits = Limits {
+        // a report is made once, on purpose: allow it longer than a click in the studio
+        max_seconds: 60.0,
+        ..Limits::default()
+    };
+    let step_deg = crate::studio::step(Some(args.step.deg()), &limits)
+        .map_err(|e| Failure::Input(anyhow!("--step: {}", e.body().error.message)))?;
+    let html = report::html(&session.text, &session.source, step_deg, limit, &limits).map_err(
+        |e| match e {
+            StudioError::Input { message, .. } => Failure::Input(anyhow!(message)),
+            other => Failure::Input(anyhow!(other.body().error.message)),
+        },
+    )?;
+    write_atomic(Some(&args.output), |w| Ok(w.write_all(html.as_bytes())?))
+        .map_err(Failure::output)?;
+    eprintln!(
+        "camkin: wrote {} ({} kB): open it in any browser, no network needed",
+        args.output.display(),
+        html.len() / 1000
+    );
+    Ok(())
+}

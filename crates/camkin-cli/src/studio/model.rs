@@ -1,0 +1,681 @@
+//! What the studio shows, computed from a mechanism file's text: the analysis over a revolution
+//! (the plotted series with their units, the mechanism's drawing at every angle), the design
+//! checks placed at their cam angles, the interpolation study, the forces. All numbers come from
+//! the library; the page only draws them.
+
+use super::{Limits, StudioError};
+use crate::draw::mechanism::{follower_shapes, Shape};
+use crate::mechfile::{self, FromText};
+use camkin::cam::Mechanism;
+use camkin::curve::Domain;
+use camkin::dynamics::Forces;
+use camkin::geometry::deg_to_rad;
+use camkin::interp::{max_and_mean, relative_errors, Interpolated};
+use camkin::spec::{BuildOptions, MechanismSpec};
+use camkin::table::{AnalysisRow, AnalysisSweep, AngleUnit, Per, Units};
+use serde::Serialize;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Where a mechanism's text comes from: its name for messages and the folder its points files
+/// may be read from (none for the built-in paper cam).
+#[derive(Debug, Clone)]
+pub struct Source {
+    /// the file's name (`paper.toml`)
+    pub name: String,
+    /// the folder of the file, the only one read from
+    pub folder: Option<PathBuf>,
+}
+
+/// Builds the mechanism in `text` (in its own units, or SI), points files confined to the
+/// source's folder.
+pub fn build(text: &str, source: &Source, si: bool) -> Result<FromText, StudioError> {
+    let base_dir = match &source.folder {
+        Some(f) => f.clone(),
+        None => {
+            // the built-in cam has no folder: nothing may be read
+            let spec = mechfile::parse_spec(text, &source.name)?;
+            if spec.cam.profile.path.is_some() {
+                return Err(StudioError::Input {
+                    message: "cam.profile.path: no folder is open, so no points file can be read; start `camkin serve FILE.toml` to read points files beside FILE.toml".into(),
+                    at: None,
+                });
+            }
+            PathBuf::from(".")
+        }
+    };
+    let options = BuildOptions {
+        base_dir,
+        si,
+        confine: true,
+    };
+    Ok(mechfile::build_text(text, &source.name, &options)?)
+}
+
+/// A number series over the cam angles, with its name and unit.
+#[derive(Debug, Serialize)]
+pub struct Series {
+    /// short key (`acceleration`)
+    pub key: &'static str,
+    /// what a person reads (`acceleration`)
+    pub label: &'static str,
+    /// its unit (`cm/s²`)
+    pub unit: String,
+    /// one value per angle; `null` where it could not be computed (or is infinite)
+    pub values: Vec<Option<f64>>,
+}
+
+/// A shape of the drawing in world coordinates.
+#[derive(Debug, Serialize)]
+#[serde(tag = "t", rename_all = "lowercase")]
+pub enum ShapeOut {
+    /// a polyline
+    Line {
+        pts: Vec<[f64; 2]>,
+        color: String,
+        width: u32,
+        closed: bool,
+    },
+    /// a circle
+    Circle {
+        c: [f64; 2],
+        r: f64,
+        color: String,
+        width: u32,
+    },
+    /// a dot of a size in pixels
+    Dot { p: [f64; 2], color: String, px: u32 },
+}
+
+fn rgb(c: (u8, u8, u8)) -> String {
+    format!("rgb({},{},{})", c.0, c.1, c.2)
+}
+
+impl From<Shape> for ShapeOut {
+    fn from(s: Shape) -> Self {
+        match s {
+            Shape::Polyline {
+                pts,
+                color,
+                width,
+                closed,
+            } => ShapeOut::Line {
+                pts: pts.iter().map(|p| [p.x, p.y]).collect(),
+                color: rgb(color),
+                width,
+                closed,
+            },
+            Shape::Circle { c, r, color, width } => ShapeOut::Circle {
+                c: [c.x, c.y],
+                r,
+                color: rgb(color),
+                width,
+            },
+            Shape::Dot { p, color, px } => ShapeOut::Dot {
+                p: [p.x, p.y],
+                color: rgb(color),
+                px,
+            },
+        }
+    }
+}
+
+/// The mechanism at one cam angle.
+#[derive(Debug, Serialize)]
+pub struct Frame {
+    /// the cam frame's pose: origin and angle (rad): a cam point `r` is at `origin + R(angle) r`
+    pub cam: [f64; 3],
+    /// the contact point, world frame (absent where the angle failed)
+    pub contact: Option<[f64; 2]>,
+    /// the common normal, world frame
+    pub normal: Option<[f64; 2]>,
+    /// the follower drawn from its model
+    pub follower: Vec<ShapeOut>,
+}
+
+/// A design check, marked at its cam angles.
+#[derive(Debug, Serialize)]
+pub struct Check {
+    /// `pressure`, `undercut`, `jump`, `failed`, `round-trip`, `curvature`
+    pub kind: &'static str,
+    /// the check passed (a statement of a value) or failed
+    pub ok: bool,
+    /// what a person reads
+    pub message: String,
+    /// cam angles (degrees) to mark
+    pub angles_deg: Vec<f64>,
+    /// stretches of the profile to mark, cam frame
+    pub stretches: Vec<Vec<[f64; 2]>>,
+}
+
+/// A warning from the file (uneven nodes), placed.
+#[derive(Debug, Serialize)]
+pub struct Placed {
+    /// the message
+    pub message: String,
+    /// 1-based line and column
+    pub line: Option<usize>,
+    /// 1-based column
+    pub column: Option<usize>,
+}
+
+/// Forces under permanent contact at any constant speed: the page evaluates
+/// `F = (c2 ω² + c1 ω + c0) / lever` for its speed slider (see
+/// [`Forces::force_coefficients`]).
+#[derive(Debug, Serialize)]
+pub struct DynamicsOut {
+    /// the file's cam speed, rpm
+    pub rpm: f64,
+    /// per angle `[c2, c1, c0, lever]` (SI; `null` where the angle failed)
+    pub coefficients: Vec<Option<[f64; 4]>>,
+    /// the lowest constant speed at which the contact force reaches zero somewhere, rpm (`null`:
+    /// never)
+    pub jump_rpm: Option<f64>,
+    /// the cam angle where it happens first, degrees
+    pub jump_angle_deg: Option<f64>,
+    /// the force's unit (`N`)
+    pub unit: &'static str,
+}
+
+/// The analysis the studio shows.
+#[derive(Debug, Serialize)]
+pub struct Analysis {
+    /// the file's name
+    pub name: String,
+    /// the file's length unit
+    pub length_unit: &'static str,
+    /// the follower swings on an arm (its coordinate is an angle)
+    pub oscillating: bool,
+    /// cam speed, rpm
+    pub rpm: f64,
+    /// the cam angle step, degrees
+    pub step_deg: f64,
+    /// the cam angles, degrees
+    pub angles_deg: Vec<f64>,
+    /// lift, velocity, acceleration, jerk, pressure angle, radius of curvature
+    pub series: Vec<Series>,
+    /// the drawing at every angle
+    pub frames: Vec<Frame>,
+    /// the cam profile in the cam frame, closed polyline
+    pub profile: Vec<[f64; 2]>,
+    /// the spline's nodes (cam frame): draggable when `nodes_editable`
+    pub nodes: Vec<[f64; 2]>,
+    /// the nodes are the file's inline `cam.profile.points`
+    pub nodes_editable: bool,
+    /// the cam's axis, world frame
+    pub pivot: [f64; 2],
+    /// the drawing's extent over the revolution, `[xmin, ymin, xmax, ymax]`
+    pub extent: [f64; 4],
+    /// design checks
+    pub checks: Vec<Check>,
+    /// warnings from the file
+    pub warnings: Vec<Placed>,
+    /// angles that could not be analysed, and the first reason
+    pub failed: usize,
+    /// the first failure's message
+    pub first_error: Option<String>,
+    /// forces, when the file has `[dynamics]`
+    pub dynamics: Option<DynamicsOut>,
+    /// server time for this analysis, ms
+    pub server_ms: f64,
+}
+
+/// Cam angles of one revolution in steps of `step_deg`.
+pub fn revolution(step_deg: f64) -> Vec<f64> {
+    let n = (360.0 / step_deg).round() as usize;
+    (0..n).map(|k| k as f64 * step_deg).collect()
+}
+
+/// Refuses work over the limits: too many angles, a sweep estimated over the time allowed.
+fn check_work(mech: &Mechanism, angles: usize, limits: &Limits) -> Result<(), StudioError> {
+    let seconds = mech.sweep_seconds_estimate(angles);
+    if seconds > limits.max_seconds {
+        return Err(StudioError::TooMuch {
+            message: format!(
+                "{angles} cam angles on this profile would take about {} s here (it is not convex: every angle scans its {} samples), more than the {} s one request may take; use `camkin analyze` for it",
+                camkin::human::human(seconds.ceil()),
+                mech.sample_count(),
+                limits.max_seconds
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// The analysis of the mechanism in `text` at `step_deg`, checks against `pressure_limit_deg`.
+pub fn analyze(
+    text: &str,
+    source: &Source,
+    step_deg: f64,
+    pressure_limit_deg: f64,
+    limits: &Limits,
+) -> Result<Analysis, StudioError> {
+    let t0 = Instant::now();
+    let parsed = build(text, source, false)?;
+    let mech = &parsed.built.mechanism;
+    let unit = parsed.built.length_unit;
+    let angles = revolution(step_deg);
+    check_work(mech, 2 * angles.len(), limits)?;
+    let units = Units::new(mech, unit, AngleUnit::Deg, Per::S);
+    let mut sweep = AnalysisSweep::new(mech, &angles, true, angles.len());
+    let rows: Vec<AnalysisRow> = sweep.by_ref().flatten().collect();
+    let oscillating = units.oscillating;
+    let motion: Vec<[Option<f64>; 4]> = rows
+        .iter()
+        .map(|r| match (r.position, r.velocity, r.acceleration) {
+            (Some(q), Some(v), Some(a)) => units.motion(q, v, a, r.jerk),
+            _ => [None; 4],
+        })
+        .collect();
+    let finite = |x: Option<f64>| x.filter(|v| v.is_finite());
+    let lift: Vec<Option<f64>> = rows
+        .iter()
+        .map(|r| finite(r.lift.map(|l| units.coord_value(l))))
+        .collect();
+    let series = vec![
+        Series {
+            key: "lift",
+            label: "lift",
+            unit: units.motion_symbol(0),
+            values: lift,
+        },
+        Series {
+            key: "velocity",
+            label: "velocity",
+            unit: units.motion_symbol(1),
+            values: motion.iter().map(|m| finite(m[1])).collect(),
+        },
+        Series {
+            key: "acceleration",
+            label: "acceleration",
+            unit: units.motion_symbol(2),
+            values: motion.iter().map(|m| finite(m[2])).collect(),
+        },
+        Series {
+            key: "jerk",
+            label: "jerk",
+            unit: units.motion_symbol(3),
+            values: motion.iter().map(|m| finite(m[3])).collect(),
+        },
+        Series {
+            key: "pressure_angle",
+            label: "pressure angle",
+            unit: "°".into(),
+            values: rows.iter().map(|r| finite(r.pressure_angle_deg)).collect(),
+        },
+        Series {
+            key: "radius_of_curvature",
+            label: "radius of curvature",
+            unit: unit.name().into(),
+            values: rows.iter().map(|r| finite(r.radius_of_curvature)).collect(),
+        },
+    ];
+    // the drawing: the cam's pose and the follower at each angle
+    let cam = mech.cam();
+    let size = mech.size();
+    let mut frames = Vec::with_capacity(rows.len());
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    let mut grow = |p: [f64; 2], r: f64| {
+        lo = [lo[0].min(p[0] - r), lo[1].min(p[1] - r)];
+        hi = [hi[0].max(p[0] + r), hi[1].max(p[1] + r)];
+    };
+    for (r, &a) in rows.iter().zip(&angles) {
+        let pose = cam.state(deg_to_rad(a)).pose;
+        let mut shapes = Vec::new();
+        if let (Some(q), Some(x), Some(y)) = (r.position, r.contact_x, r.contact_y) {
+            follower_shapes(mech, q, camkin::Point2::new(x, y), size, &mut shapes);
+        }
+        let follower: Vec<ShapeOut> = shapes.into_iter().map(ShapeOut::from).collect();
+        for s in &follower {
+            match s {
+                ShapeOut::Line { pts, .. } => pts.iter().for_each(|p| grow(*p, 0.0)),
+                ShapeOut::Circle { c, r, .. } => grow(*c, *r),
+                ShapeOut::Dot { p, .. } => grow(*p, 0.0),
+            }
+        }
+        frames.push(Frame {
+            cam: [pose.origin.x, pose.origin.y, pose.angle],
+            contact: r.contact_x.zip(r.contact_y).map(|(x, y)| [x, y]),
+            normal: r.normal_x.zip(r.normal_y).map(|(x, y)| [x, y]),
+            follower,
+        });
+    }
+    let profile_curve = cam.profile();
+    let (u0, span) = match profile_curve.domain() {
+        Domain::Periodic { period } => (0.0, period),
+        Domain::Interval { min, max } => (min, max - min),
+        _ => (0.0, 0.0),
+    };
+    let profile: Vec<[f64; 2]> = (0..1440)
+        .map(|k| {
+            let p = profile_curve.position(u0 + span * k as f64 / 1440.0);
+            [p.x, p.y]
+        })
+        .collect();
+    // the cam sweeps a disc about its axis of the profile's largest radius
+    let pivot = cam.pivot();
+    let reach = profile
+        .iter()
+        .map(|p| p[0].hypot(p[1]))
+        .fold(0.0f64, f64::max);
+    grow([pivot.x, pivot.y], reach);
+    let (nodes, nodes_editable) = match (
+        &parsed.spec.cam.profile.points,
+        parsed.spec.cam.profile.kind.as_str(),
+    ) {
+        (Some(points), "spline") => (points.clone(), true),
+        _ => (
+            profile_curve
+                .breakpoints()
+                .into_iter()
+                .map(|u| {
+                    let p = profile_curve.position(u);
+                    [p.x, p.y]
+                })
+                .collect(),
+            false,
+        ),
+    };
+    let checks = checks(
+        mech,
+        &angles,
+        &rows,
+        &sweep,
+        pressure_limit_deg,
+        unit.name(),
+    );
+    let dynamics = dynamics(text, source, &parsed.spec, &angles)?;
+    let first_error = rows.iter().find_map(|r| r.error.clone());
+    Ok(Analysis {
+        name: source.name.clone(),
+        length_unit: unit.name(),
+        oscillating,
+        rpm: cam.speed() * 30.0 / std::f64::consts::PI,
+        step_deg,
+        angles_deg: angles.clone(),
+        series,
+        frames,
+        profile,
+        nodes,
+        nodes_editable,
+        pivot: [pivot.x, pivot.y],
+        extent: [lo[0], lo[1], hi[0], hi[1]],
+        checks,
+        warnings: parsed
+            .warnings
+            .into_iter()
+            .map(|w| Placed {
+                message: w.message,
+                line: w.at.map(|a| a.0),
+                column: w.at.map(|a| a.1),
+            })
+            .collect(),
+        failed: sweep.failed(),
+        first_error,
+        dynamics,
+        server_ms: t0.elapsed().as_secs_f64() * 1e3,
+    })
+}
+
+/// The design checks, each with the cam angles (and profile stretches) to mark.
+fn checks(
+    mech: &Mechanism,
+    angles: &[f64],
+    rows: &[AnalysisRow],
+    sweep: &AnalysisSweep<'_>,
+    pressure_limit_deg: f64,
+    unit: &str,
+) -> Vec<Check> {
+    let h = camkin::human::human;
+    // angles for people: hundredths of a degree (no rounding noise such as -6e-14°)
+    let deg = |x: f64| {
+        let r = (x * 100.0).round() / 100.0;
+        h(if r == 0.0 { 0.0 } else { r })
+    };
+    let thetas: Vec<f64> = angles.iter().map(|&a| deg_to_rad(a)).collect();
+    let c = mech.design_checks(&thetas, pressure_limit_deg);
+    let mut out = Vec::new();
+    let (peak, peak_at) = c.pressure_peak;
+    out.push(Check {
+        kind: "pressure",
+        ok: c.pressure_over_deg.is_empty(),
+        message: if c.pressure_over_deg.is_empty() {
+            format!(
+                "pressure angle within ±{}°: peak {}° at {}°",
+                h(pressure_limit_deg),
+                deg(peak),
+                deg(peak_at)
+            )
+        } else {
+            format!(
+                "pressure angle over ±{}° at {} angles: peak {}° at {}°",
+                h(pressure_limit_deg),
+                c.pressure_over_deg.len(),
+                deg(peak),
+                deg(peak_at)
+            )
+        },
+        angles_deg: c.pressure_over_deg.clone(),
+        stretches: Vec::new(),
+    });
+    let profile = mech.cam().profile();
+    let stretches: Vec<Vec<[f64; 2]>> = c
+        .stretches
+        .iter()
+        .map(|&(a, b)| {
+            (0..=32)
+                .map(|k| {
+                    let p = profile.position(a + (b - a) * k as f64 / 32.0);
+                    [p.x, p.y]
+                })
+                .collect()
+        })
+        .collect();
+    let what = if c.roller_radius.is_some() {
+        "undercut: the roller does not fit a concave stretch"
+    } else if c.flat_face {
+        "a concave stretch under the flat face"
+    } else {
+        "the follower cannot follow the profile"
+    };
+    out.push(Check {
+        kind: "undercut",
+        ok: !c.undercut(),
+        message: if c.undercut() {
+            format!(
+                "{what} ({} stretches, {} angles)",
+                c.stretches.len(),
+                c.undercut_deg.len()
+            )
+        } else {
+            match (c.convex_min, c.concave_sharpest) {
+                (Some((r, at)), None) => format!(
+                    "no undercut: smallest radius of curvature {} {unit} at {}°",
+                    h(r),
+                    deg(at)
+                ),
+                (_, Some((r, at))) => format!(
+                    "no undercut: sharpest concave radius {} {unit} at {}°",
+                    h(r),
+                    deg(at)
+                ),
+                _ => "no undercut".into(),
+            }
+        },
+        angles_deg: c.undercut_deg.clone(),
+        stretches,
+    });
+    let jumps: Vec<f64> = sweep.jump_at().iter().map(|&k| angles[k]).collect();
+    out.push(Check {
+        kind: "jump",
+        ok: sweep.jumps() == 0,
+        message: if sweep.jumps() == 0 {
+            "the contact moves continuously (no jumps)".into()
+        } else {
+            format!(
+                "the contact jumps at {} angles (the acceleration is impulsive there)",
+                sweep.jumps()
+            )
+        },
+        angles_deg: jumps,
+        stretches: Vec::new(),
+    });
+    if let Some(rt) = c.round_trip {
+        out.push(Check {
+            kind: "round-trip",
+            ok: rt.passed,
+            message: format!(
+                "round trip against the motion law: largest acceleration difference {} of the peak",
+                camkin::human::human(rt.acceleration / rt.scale)
+            ),
+            angles_deg: Vec::new(),
+            stretches: Vec::new(),
+        });
+    }
+    if sweep.failed() > 0 {
+        let failed: Vec<f64> = rows
+            .iter()
+            .filter(|r| r.error.is_some())
+            .map(|r| r.angle_deg)
+            .collect();
+        out.push(Check {
+            kind: "failed",
+            ok: false,
+            message: format!(
+                "{} angles could not be analysed: {}",
+                failed.len(),
+                rows.iter()
+                    .find_map(|r| r.error.clone())
+                    .unwrap_or_default()
+            ),
+            angles_deg: failed,
+            stretches: Vec::new(),
+        });
+    }
+    out
+}
+
+/// The forces over the revolution when the file has `[dynamics]`.
+fn dynamics(
+    text: &str,
+    source: &Source,
+    spec: &MechanismSpec,
+    angles: &[f64],
+) -> Result<Option<DynamicsOut>, StudioError> {
+    if spec.dynamics.is_none() {
+        return Ok(None);
+    }
+    let si = build(text, source, true)?;
+    let (Some(params), mech) = (si.built.dynamics, &si.built.mechanism) else {
+        return Ok(None);
+    };
+    let forces = match Forces::new(mech, params) {
+        Ok(f) => f,
+        Err(_) => return Ok(None),
+    };
+    let mut coefficients = Vec::with_capacity(angles.len());
+    let (mut jump, mut jump_at) = (f64::INFINITY, None);
+    for &a in angles {
+        match forces.at(deg_to_rad(a)) {
+            Ok(s) => {
+                let [c2, c1, c0] = forces.force_coefficients(&s);
+                coefficients.push(Some([c2, c1, c0, s.lever]));
+                let w = forces.leave_speed(&s, 0.0);
+                if w < jump {
+                    jump = w;
+                    jump_at = Some(a);
+                }
+            }
+            Err(_) => coefficients.push(None),
+        }
+    }
+    let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
+    Ok(Some(DynamicsOut {
+        rpm: rpm(mech.cam().speed()),
+        coefficients,
+        jump_rpm: jump.is_finite().then(|| rpm(jump)),
+        jump_angle_deg: jump_at.filter(|_| jump.is_finite()),
+        unit: "N",
+    }))
+}
+
+/// The interpolation study (the paper's section 3) at `step_deg` for node counts `nodes`.
+#[derive(Debug, Serialize)]
+pub struct Compare {
+    /// cam angles, degrees
+    pub angles_deg: Vec<f64>,
+    /// the acceleration's unit
+    pub unit: String,
+    /// the exact acceleration
+    pub exact: Vec<Option<f64>>,
+    /// one run per node count
+    pub runs: Vec<CompareRun>,
+    /// server time, ms
+    pub server_ms: f64,
+}
+
+/// One node count of the study.
+#[derive(Debug, Serialize)]
+pub struct CompareRun {
+    /// nodal points per revolution
+    pub nodes: usize,
+    /// the interpolated acceleration
+    pub acceleration: Vec<Option<f64>>,
+    /// |a_N − a| / max |a|
+    pub rel_error: Vec<Option<f64>>,
+    /// largest relative error
+    pub max_rel_error: f64,
+    /// mean relative error
+    pub mean_rel_error: f64,
+}
+
+/// The interpolation study of the mechanism in `text`.
+pub fn compare(
+    text: &str,
+    source: &Source,
+    nodes: &[usize],
+    step_deg: f64,
+    limits: &Limits,
+) -> Result<Compare, StudioError> {
+    let t0 = Instant::now();
+    let parsed = build(text, source, false)?;
+    let mech = &parsed.built.mechanism;
+    let angles = revolution(step_deg);
+    let total_nodes: usize = nodes.iter().sum();
+    check_work(mech, angles.len() + total_nodes, limits)?;
+    let units = Units::new(mech, parsed.built.length_unit, AngleUnit::Deg, Per::S);
+    let thetas: Vec<f64> = angles.iter().map(|&a| deg_to_rad(a)).collect();
+    let exact_raw: Vec<f64> = mech
+        .analyze_all(&thetas)
+        .into_iter()
+        .map(|r| r.map_or(f64::NAN, |s| s.acceleration))
+        .collect();
+    let conv = |a: f64| units.motion(0.0, 0.0, a, None)[2].filter(|v| v.is_finite());
+    let mut runs = Vec::new();
+    for &n in nodes {
+        let it = Interpolated::new(mech, n).map_err(|e| StudioError::Input {
+            message: format!("the interpolation with {n} nodes failed: {e}"),
+            at: None,
+        })?;
+        let approx: Vec<f64> = thetas.iter().map(|&t| it.acceleration(t)).collect();
+        let rel = relative_errors(&exact_raw, &approx);
+        let (max_rel_error, mean_rel_error) = max_and_mean(&rel);
+        runs.push(CompareRun {
+            nodes: n,
+            acceleration: approx.iter().map(|&a| conv(a)).collect(),
+            rel_error: rel
+                .iter()
+                .map(|&e| Some(e).filter(|v| v.is_finite()))
+                .collect(),
+            max_rel_error,
+            mean_rel_error,
+        });
+    }
+    Ok(Compare {
+        angles_deg: angles,
+        unit: units.motion_symbol(2),
+        exact: exact_raw.iter().map(|&a| conv(a)).collect(),
+        runs,
+        server_ms: t0.elapsed().as_secs_f64() * 1e3,
+    })
+}

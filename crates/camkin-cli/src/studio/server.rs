@@ -1,0 +1,336 @@
+//! The studio's HTTP server: the page and its JSON API, on 127.0.0.1 by default.
+//!
+//! | route | answer |
+//! |---|---|
+//! | `GET /` `GET /studio.js` `GET /studio.css` | the page (embedded) |
+//! | `GET /api/session` | `{name, toml, folder}`: the mechanism opened |
+//! | `POST /api/analyze` | [`AnalyzeRequest`] → `{toml, result}` ([`model::Analysis`]); `toml` is the text with dragged nodes written in |
+//! | `POST /api/compare` | [`CompareRequest`] → [`model::Compare`] |
+//! | `POST /api/csv` | [`AnalyzeRequest`] → the analysis table as `camkin analyze` writes it |
+//! | `POST /api/report` | [`AnalyzeRequest`] → the report's HTML |
+//!
+//! Every refusal is JSON `{"error": {kind, message, line, column}}` with a 4xx status (503 when
+//! busy beyond the wait allowed). Bodies are limited in size; each computation is estimated and
+//! refused over its time limit; at most [`Limits::workers`] computations run at once and the
+//! others wait their turn, so no request is dropped while the server keeps up.
+
+use super::model::{self, Source};
+use super::{
+    assets, patch_nodes, pressure_limit, step, AnalyzeRequest, CompareRequest, Limits, StudioError,
+};
+use axum::body::Bytes;
+use axum::extract::rejection::BytesRejection;
+use axum::extract::{DefaultBodyLimit, State};
+use axum::http::{header, StatusCode};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
+use axum::Router;
+use serde::Serialize;
+use std::sync::Arc;
+use std::time::Duration;
+use tokio::sync::Semaphore;
+
+/// The mechanism a server opened.
+#[derive(Debug, Clone)]
+pub struct Session {
+    /// its text
+    pub text: String,
+    /// its name and folder
+    pub source: Source,
+}
+
+#[derive(Debug)]
+struct AppState {
+    session: Session,
+    limits: Limits,
+    turns: Semaphore,
+}
+
+impl IntoResponse for StudioError {
+    fn into_response(self) -> Response {
+        let status = StatusCode::from_u16(self.status()).unwrap_or(StatusCode::BAD_REQUEST);
+        json(status, &self.body())
+    }
+}
+
+fn json<T: Serialize>(status: StatusCode, value: &T) -> Response {
+    match serde_json::to_vec(value) {
+        Ok(body) => (status, [(header::CONTENT_TYPE, "application/json")], body).into_response(),
+        Err(e) => (
+            StatusCode::INTERNAL_SERVER_ERROR,
+            [(header::CONTENT_TYPE, "application/json")],
+            format!(
+                "{{\"error\":{{\"kind\":\"internal\",\"message\":{:?}}}}}",
+                e.to_string()
+            ),
+        )
+            .into_response(),
+    }
+}
+
+/// The router of the studio for `session` within `limits`.
+pub fn router(session: Session, limits: Limits) -> Router {
+    let state = Arc::new(AppState {
+        session,
+        limits,
+        turns: Semaphore::new(limits.workers.max(1)),
+    });
+    Router::new()
+        .route("/", get(index))
+        .route("/index.html", get(index))
+        .route("/studio.js", get(script))
+        .route("/studio.css", get(style))
+        .route("/api/session", get(session_info))
+        .route("/api/analyze", post(analyze))
+        .route("/api/compare", post(compare))
+        .route("/api/csv", post(csv))
+        .route("/api/report", post(report))
+        .fallback(not_found)
+        .method_not_allowed_fallback(not_allowed)
+        .layer(DefaultBodyLimit::max(limits.max_body_bytes))
+        .with_state(state)
+}
+
+/// Serves the studio on `listener` until the process ends (a runtime of as many threads as
+/// computations run at once).
+pub fn serve(
+    listener: std::net::TcpListener,
+    session: Session,
+    limits: Limits,
+) -> std::io::Result<()> {
+    listener.set_nonblocking(true)?;
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(limits.workers.max(1))
+        .enable_all()
+        .build()?;
+    runtime.block_on(async move {
+        let listener = tokio::net::TcpListener::from_std(listener)?;
+        axum::serve(listener, router(session, limits)).await
+    })
+}
+
+async fn index() -> Response {
+    (
+        [
+            (header::CONTENT_TYPE, "text/html; charset=utf-8"),
+            (header::CACHE_CONTROL, "no-store"),
+        ],
+        assets::INDEX_HTML,
+    )
+        .into_response()
+}
+
+async fn script() -> Response {
+    (
+        [
+            (header::CONTENT_TYPE, "text/javascript; charset=utf-8"),
+            (header::CACHE_CONTROL, "no-store"),
+        ],
+        assets::STUDIO_JS,
+    )
+        .into_response()
+}
+
+async fn style() -> Response {
+    (
+        [
+            (header::CONTENT_TYPE, "text/css; charset=utf-8"),
+            (header::CACHE_CONTROL, "no-store"),
+        ],
+        assets::STYLE_CSS,
+    )
+        .into_response()
+}
+
+async fn not_found(uri: axum::http::Uri) -> StudioError {
+    StudioError::NotFound {
+        message: format!("no such page or API: {}", uri.path()),
+    }
+}
+
+async fn not_allowed(method: axum::http::Method, uri: axum::http::Uri) -> Response {
+    let e = StudioError::BadRequest {
+        message: format!("{method} is not allowed on {}", uri.path()),
+    };
+    json(StatusCode::METHOD_NOT_ALLOWED, &e.body())
+}
+
+#[derive(Serialize)]
+struct SessionInfo<'a> {
+    name: &'a str,
+    toml: &'a str,
+    folder: bool,
+}
+
+async fn session_info(State(state): State<Arc<AppState>>) -> Response {
+    let s = &state.session;
+    json(
+        StatusCode::OK,
+        &SessionInfo {
+            name: &s.source.name,
+            toml: &s.text,
+            folder: s.source.folder.is_some(),
+        },
+    )
+}
+
+/// The body as a request of type `T`, or why not.
+fn parse<T: serde::de::DeserializeOwned>(
+    body: Result<Bytes, BytesRejection>,
+    limits: &Limits,
+) -> Result<T, StudioError> {
+    let bytes = body.map_err(|r| {
+        if r.status() == StatusCode::PAYLOAD_TOO_LARGE {
+            StudioError::TooLarge {
+                message: format!(
+                    "the request is larger than {} MiB",
+                    limits.max_body_bytes >> 20
+                ),
+            }
+        } else {
+            StudioError::BadRequest {
+                message: format!("cannot read the request: {}", r.body_text()),
+            }
+        }
+    })?;
+    serde_json::from_slice(&bytes).map_err(|e| StudioError::BadRequest {
+        message: format!("the request is not the JSON expected: {e}"),
+    })
+}
+
+/// Runs `work` on the blocking pool when its turn comes.
+async fn run<T: Send + 'static>(
+    state: &AppState,
+    work: impl FnOnce() -> Result<T, StudioError> + Send + 'static,
+) -> Result<T, StudioError> {
+    let wait = state.limits.max_wait_seconds;
+    let _turn = tokio::time::timeout(Duration::from_secs_f64(wait), state.turns.acquire())
+        .await
+        .map_err(|_| StudioError::Busy {
+            message: format!("the server is busy: no turn within {wait} s; try again"),
+        })?
+        .map_err(|_| StudioError::Busy {
+            message: "the server is stopping".into(),
+        })?;
+    tokio::task::spawn_blocking(work)
+        .await
+        .map_err(|e| StudioError::BadRequest {
+            message: format!("the computation failed: {e}"),
+        })?
+}
+
+#[derive(Serialize)]
+struct AnalyzeAnswer {
+    /// the text analysed (with dragged nodes written in)
+    toml: String,
+    result: model::Analysis,
+}
+
+/// The text a request asks for: its own, with its nodes written in.
+fn request_text(req: &AnalyzeRequest) -> Result<String, StudioError> {
+    match &req.nodes {
+        Some(nodes) => patch_nodes(&req.toml, nodes),
+        None => Ok(req.toml.clone()),
+    }
+}
+
+async fn analyze(
+    State(state): State<Arc<AppState>>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Response, StudioError> {
+    let req: AnalyzeRequest = parse(body, &state.limits)?;
+    let step_deg = step(req.step_deg, &state.limits)?;
+    let limit = pressure_limit(req.pressure_limit_deg)?;
+    let (source, limits) = (state.session.source.clone(), state.limits);
+    let answer = run(&state, move || {
+        let toml = request_text(&req)?;
+        let result = model::analyze(&toml, &source, step_deg, limit, &limits)?;
+        Ok(AnalyzeAnswer { toml, result })
+    })
+    .await?;
+    Ok(json(StatusCode::OK, &answer))
+}
+
+async fn compare(
+    State(state): State<Arc<AppState>>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Response, StudioError> {
+    let req: CompareRequest = parse(body, &state.limits)?;
+    let step_deg = step(req.step_deg, &state.limits)?;
+    let nodes = req.nodes.clone().unwrap_or_else(|| vec![36]);
+    let l = state.limits;
+    if nodes.is_empty() || nodes.len() > l.max_compare_runs {
+        return Err(StudioError::BadRequest {
+            message: format!(
+                "nodes: {} node counts; give 1 to {}",
+                nodes.len(),
+                l.max_compare_runs
+            ),
+        });
+    }
+    if let Some(n) = nodes
+        .iter()
+        .find(|&&n| !(3..=l.max_compare_nodes).contains(&n))
+    {
+        return Err(StudioError::BadRequest {
+            message: format!("nodes: {n} is out of range (3 to {})", l.max_compare_nodes),
+        });
+    }
+    let source = state.session.source.clone();
+    let out = run(&state, move || {
+        model::compare(&req.toml, &source, &nodes, step_deg, &l)
+    })
+    .await?;
+    Ok(json(StatusCode::OK, &out))
+}
+
+async fn csv(
+    State(state): State<Arc<AppState>>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Response, StudioError> {
+    let req: AnalyzeRequest = parse(body, &state.limits)?;
+    let step_deg = step(req.step_deg, &state.limits)?;
+    let (source, limits) = (state.session.source.clone(), state.limits);
+    let text = run(&state, move || {
+        let toml = request_text(&req)?;
+        super::report::csv(&toml, &source, step_deg, &limits)
+    })
+    .await?;
+    Ok((
+        [
+            (header::CONTENT_TYPE, "text/csv; charset=utf-8"),
+            (
+                header::CONTENT_DISPOSITION,
+                "attachment; filename=\"analysis.csv\"",
+            ),
+        ],
+        text,
+    )
+        .into_response())
+}
+
+async fn report(
+    State(state): State<Arc<AppState>>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Response, StudioError> {
+    let req: AnalyzeRequest = parse(body, &state.limits)?;
+    let step_deg = step(req.step_deg, &state.limits)?;
+    let limit = pressure_limit(req.pressure_limit_deg)?;
+    let (source, limits) = (state.session.source.clone(), state.limits);
+    let html = run(&state, move || {
+        let toml = request_text(&req)?;
+        super::report::html(&toml, &source, step_deg, limit, &limits)
+    })
+    .await?;
+    Ok((
+        [
+            (header::CONTENT_TYPE, "text/html; charset=utf-8"),
+            (
+                header::CONTENT_DISPOSITION,
+                "attachment; filename=\"report.html\"",
+            ),
+        ],
+        html,
+    )
+        .into_response())
+}

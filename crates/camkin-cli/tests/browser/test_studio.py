@@ -1,0 +1,157 @@
+"""The studio in a real browser (headless Chromium): it loads without console errors, draws,
+follows the slider, reacts to a dragged node with the numbers `camkin analyze` gives for the
+edited file, shows a bad edit's line and column while keeping the last good result, and its
+report renders offline."""
+
+import csv
+import shutil
+
+from conftest import ROOT, camkin
+
+EXAMPLES = ROOT / "examples"
+
+
+def loaded(page, url):
+    page.goto(url)
+    page.wait_for_function("window.studio && window.studio.result && window.studio.compare && window.studio.idle()")
+    return page
+
+
+def inked(page, selector):
+    """How many pixels of the canvas are not white."""
+    return page.evaluate(
+        """(sel) => { const c = document.querySelector(sel);
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 240 || d[i+1] < 240 || d[i+2] < 240) n++;
+            return n; }""",
+        selector,
+    )
+
+
+def series(page, key):
+    return page.evaluate(f"window.studio.result.series.find(s => s.key === '{key}').values")
+
+
+def test_page_loads_without_errors_and_draws_everything(serve, page):
+    loaded(page, serve())
+    assert page.errors == []
+    for sel in ["#drawing", "#compare-acc", "#compare-err"] + [
+        f'#plots canvas[data-key="{k}"]'
+        for k in ["lift", "velocity", "acceleration", "jerk", "pressure_angle", "radius_of_curvature"]
+    ]:
+        assert inked(page, sel) > 2000, sel
+    checks = page.locator("#checks li")
+    assert checks.count() >= 3
+    assert "paper.toml" in page.title() or "paper.toml" in page.locator("#title").inner_text()
+
+
+def test_the_slider_moves_the_contact_point(serve, page):
+    loaded(page, serve())
+    before = page.evaluate("window.studio.result.frames[window.studio.index].contact")
+    shot = page.locator("#drawing").screenshot()
+    page.locator("#angle").fill("180")
+    assert page.evaluate("window.studio.index") == 180
+    assert page.locator("#angle-readout").inner_text() == "90°"
+    after = page.evaluate("window.studio.result.frames[window.studio.index].contact")
+    assert abs(after[0] - before[0]) + abs(after[1] - before[1]) > 0.5  # cm, on a 5 cm cam
+    assert page.locator("#drawing").screenshot() != shot
+    assert page.errors == []
+
+
+def drag_node(page, i, dx, dy):
+    x, y = page.evaluate(f"window.studio.nodeScreen({i})")
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, 11):
+        page.mouse.move(x + dx * k / 10, y + dy * k / 10)
+    page.mouse.up()
+    page.wait_for_function("window.studio.idle()")
+
+
+def test_dragging_a_node_gives_the_numbers_of_camkin_analyze_on_the_edited_file(serve, page, tmp_path):
+    shutil.copy(EXAMPLES / "paper.toml", tmp_path / "cam.toml")
+    loaded(page, serve(tmp_path / "cam.toml"))
+    acc0 = series(page, "acceleration")
+    drag_node(page, 1, 25, -18)
+    acc1 = series(page, "acceleration")
+    assert acc1 != acc0
+    assert max(abs(a - b) for a, b in zip(acc0, acc1)) > 1000  # cm/s², of a 27 000 cm/s² peak
+    text = page.locator("#editor").input_value()
+    assert text == page.evaluate("window.studio.toml")
+    assert "[3.4, 2.8]" not in text  # the dragged node was written into the file
+    (tmp_path / "edited.toml").write_text(text)
+    out = tmp_path / "out.csv"
+    camkin("analyze", tmp_path / "edited.toml", "--angles", "0:360:0.5", "-o", out)
+    rows = list(csv.DictReader(out.open()))
+    assert len(rows) == 720
+    for key, col in [
+        ("lift", "lift_cm"),
+        ("velocity", "velocity_cm_s"),
+        ("acceleration", "acceleration_cm_s2"),
+        ("jerk", "jerk_cm_s3"),
+        ("pressure_angle", "pressure_angle_deg"),
+        ("radius_of_curvature", "radius_of_curvature_cm"),
+    ]:
+        page_values = series(page, key)
+        file_values = [float(r[col]) if r[col] not in ("", "inf", "-inf") else None for r in rows]
+        assert page_values == file_values, key  # to the bit
+    assert page.errors == []
+
+
+def test_a_bad_edit_shows_line_and_column_and_keeps_the_last_result(serve, page):
+    loaded(page, serve())
+    acc = series(page, "acceleration")
+    good = page.locator("#editor").input_value()
+    page.locator("#editor").fill(good.replace("speed_rpm = 1000.0", "speed_rpm = -5.0"))
+    page.wait_for_selector("#error:not([hidden])")
+    msg = page.locator("#error").inner_text()
+    assert "line 6, column 13" in msg and "speed_rpm" in msg, msg
+    assert series(page, "acceleration") == acc
+    # a syntax error, placed by the TOML parser
+    page.locator("#editor").fill(good.replace("[follower]", "[follower"))
+    page.wait_for_function("document.querySelector('#error').innerText.includes('line 15, column')")
+    assert series(page, "acceleration") == acc
+    # mended: the error goes, the result is the file's again
+    page.locator("#editor").fill(good)
+    page.wait_for_selector("#error", state="hidden")
+    page.wait_for_function("window.studio.idle()")
+    assert series(page, "acceleration") == acc
+    # the console reports the refused requests (422) and nothing else
+    assert all("422" in e for e in page.errors), page.errors
+
+
+def test_the_report_opens_offline_and_renders(page, tmp_path):
+    report = tmp_path / "report.html"
+    camkin("report", EXAMPLES / "paper-dynamics.toml", "-o", report)
+    requests = []
+
+    def offline(route):
+        requests.append(route.request.url)
+        if route.request.url.startswith("file:"):
+            route.continue_()
+        else:
+            route.abort()
+
+    page.context.route("**/*", offline)
+    page.goto(report.as_uri())
+    page.wait_for_function("window.studio && window.studio.result")
+    assert [u for u in requests if not u.startswith("file:")] == []
+    assert page.errors == []
+    assert inked(page, "#drawing") > 2000
+    assert inked(page, '#plots canvas[data-key="acceleration"]') > 2000
+    assert inked(page, "#force") > 2000
+    assert page.locator("#dynamics-panel").is_visible()
+    page.locator("#angle").fill("90")
+    assert page.evaluate("window.studio.index") == 90
+    assert page.locator("#editor").input_value().startswith("#")
+
+
+def test_the_speed_slider_shows_where_the_follower_jumps(serve, page):
+    loaded(page, serve(EXAMPLES / "paper-dynamics.toml"))
+    jump = page.evaluate("window.studio.result.dynamics.jump_rpm")
+    assert jump and jump > 0
+    page.locator("#rpm").fill(str(int(jump * 0.9)))
+    assert "holds" in page.locator("#dynamics-summary").inner_text()
+    page.locator("#rpm").fill(str(int(jump * 1.1) + 1))
+    assert "jumps" in page.locator("#dynamics-summary").inner_text()
+    assert page.errors == []

@@ -1,0 +1,708 @@
+// camkin studio: draws what the server (or a report's inlined data) computed. No numerics of
+// its own beyond placing points on the screen and evaluating the force quadratic the server
+// states (see model.rs, DynamicsOut).
+"use strict";
+(function () {
+  const REPORT = window.CAMKIN_REPORT || null;
+  const $ = (id) => document.getElementById(id);
+  const PLOTS = [
+    ["lift", "#1f77b4"], ["velocity", "#ff7f0e"], ["acceleration", "#2ca02c"],
+    ["jerk", "#9467bd"], ["pressure_angle", "#8c564b"], ["radius_of_curvature", "#17becf"],
+  ];
+  const S = {
+    result: null, toml: "", name: "", index: 0, playing: false, compare: null,
+    rpm: null, inflight: false, pending: null, timings: [], lastError: null,
+    drag: null, nodes: null, hoverPlot: null, view: null,
+  };
+  window.studio = S; // for tests and the curious: the state on screen
+  // where node i is on the screen (client pixels), for a test's mouse
+  S.nodeScreen = (i) => {
+    const r = S.result, f = r.frames[S.index];
+    const q = S.view.tx(camToWorld(f, (S.nodes || r.nodes)[i]));
+    const rect = $("drawing").getBoundingClientRect();
+    return [rect.left + q[0], rect.top + q[1]];
+  };
+  S.idle = () => !S.inflight && !S.pending && !S.drag;
+
+  // ---------- numbers for people ----------
+  function fmt(x, digits) {
+    if (x === null || x === undefined || !isFinite(x)) return "—";
+    const a = Math.abs(x);
+    if (a !== 0 && (a >= 1e6 || a < 1e-3)) return x.toExponential((digits || 4) - 1);
+    return Number(x.toPrecision(digits || 5)).toString();
+  }
+  function angleAt(i) { return S.result.angles_deg[i]; }
+
+  // ---------- network ----------
+  async function post(path, body) {
+    const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
+    const ct = r.headers.get("Content-Type") || "";
+    if (!r.ok) {
+      const e = ct.includes("json") ? (await r.json()).error : { message: await r.text() };
+      e.status = r.status;
+      throw e;
+    }
+    return r;
+  }
+
+  function setStatus(text, bad) {
+    const s = $("status");
+    s.textContent = text;
+    s.className = bad ? "bad" : "";
+  }
+
+  // Analysis requests are coalesced: while one is in flight, only the newest edit waits.
+  function requestAnalysis(body) {
+    if (REPORT) return;
+    if (S.inflight) { S.pending = body; return; }
+    S.inflight = true;
+    const t0 = performance.now();
+    post("api/analyze", body)
+      .then((r) => r.json())
+      .then((ans) => {
+        const t1 = performance.now();
+        show(ans.result, ans.toml, body.nodes !== undefined);
+        const t2 = performance.now();
+        const timing = { server_ms: ans.result.server_ms, network_ms: t1 - t0, total_ms: t2 - t0 };
+        S.timings.push(timing);
+        if (S.timings.length > 200) S.timings.shift();
+        setStatus(`exact analysis of ${ans.result.angles_deg.length} angles: ${fmt(timing.server_ms, 3)} ms on the server, ${fmt(timing.total_ms, 3)} ms from the edit to the screen`);
+        clearError();
+      })
+      .catch((e) => showError(e))
+      .finally(() => {
+        S.inflight = false;
+        if (S.pending) { const b = S.pending; S.pending = null; requestAnalysis(b); }
+      });
+  }
+
+  function clearError() {
+    S.lastError = null;
+    $("error").hidden = true;
+    $("editor").classList.remove("bad");
+  }
+
+  function showError(e) {
+    S.lastError = e;
+    const box = $("error");
+    box.hidden = false;
+    box.textContent = "";
+    if (e.line) {
+      const where = document.createElement("span");
+      where.className = "where";
+      where.textContent = `line ${e.line}, column ${e.column}`;
+      where.title = "go there";
+      where.onclick = () => goTo(e.line, e.column);
+      box.appendChild(where);
+      box.appendChild(document.createTextNode(": "));
+    }
+    box.appendChild(document.createTextNode(e.message || String(e)));
+    $("editor").classList.add("bad");
+    setStatus(S.result ? "the last valid result stays on screen until the error is mended" : "error", true);
+  }
+
+  function goTo(line, col) {
+    const ed = $("editor");
+    const lines = ed.value.split("\n");
+    let at = 0;
+    for (let i = 0; i < line - 1 && i < lines.length; i++) at += lines[i].length + 1;
+    at += Math.max(0, col - 1);
+    ed.focus();
+    ed.setSelectionRange(at, at + 1);
+  }
+
+  // ---------- showing a result ----------
+  function show(result, toml, fromDrag) {
+    S.result = result;
+    S.toml = toml;
+    if (!S.drag) S.nodes = result.nodes.map((p) => p.slice());
+    if ($("editor").value !== toml && (fromDrag || document.activeElement !== $("editor"))) {
+      $("editor").value = toml;
+    }
+    const n = result.angles_deg.length;
+    const slider = $("angle");
+    if (+slider.max !== n - 1) {
+      const a = S.index * (+slider.max + 1 > 0 ? 360 / (+slider.max + 1) : 0);
+      slider.max = n - 1;
+      S.index = Math.round(a / result.step_deg) % n;
+      slider.value = S.index;
+    }
+    S.index = Math.min(S.index, n - 1);
+    $("title").textContent = `studio — ${result.name}`;
+    $("file-name").textContent = `${result.name}, lengths in ${result.length_unit}`;
+    $("drag-hint").textContent = result.nodes_editable
+      ? "Drag a blue node to reshape the cam; the plots follow at once."
+      : "This profile is not a spline with inline points: edit the file to change it.";
+    buildPlots();
+    drawChecks();
+    setupDynamics();
+    redraw();
+  }
+
+  function redraw() {
+    if (!S.result) return;
+    drawMechanism();
+    drawValues();
+    for (const p of S.plots || []) drawPlot(p);
+    drawCompare();
+    drawForce();
+    $("angle-readout").textContent = `${fmt(angleAt(S.index), 4)}°`;
+  }
+
+  // ---------- the drawing ----------
+  function fitCanvas(c) {
+    const dpr = window.devicePixelRatio || 1;
+    const w = c.clientWidth || c.width, h = c.clientHeight || c.height;
+    if (c.width !== Math.round(w * dpr) || c.height !== Math.round(h * dpr)) {
+      c.width = Math.round(w * dpr);
+      c.height = Math.round(h * dpr);
+    }
+    const g = c.getContext("2d");
+    g.setTransform(dpr, 0, 0, dpr, 0, 0);
+    return { g, w, h };
+  }
+
+  function camToWorld(frame, p) {
+    const [ox, oy, a] = frame.cam, c = Math.cos(a), s = Math.sin(a);
+    return [ox + c * p[0] - s * p[1], oy + s * p[0] + c * p[1]];
+  }
+  function worldToCam(frame, p) {
+    const [ox, oy, a] = frame.cam, c = Math.cos(a), s = Math.sin(a);
+    const dx = p[0] - ox, dy = p[1] - oy;
+    return [c * dx + s * dy, -s * dx + c * dy];
+  }
+
+  function drawMechanism() {
+    const c = $("drawing");
+    c.style.height = Math.round(c.clientWidth * 440 / 520) + "px";
+    const { g, w, h } = fitCanvas(c);
+    const r = S.result, f = r.frames[S.index];
+    const [x0, y0, x1, y1] = r.extent;
+    const pad = 0.06 * Math.max(x1 - x0, y1 - y0);
+    const k = Math.min(w / (x1 - x0 + 2 * pad), h / (y1 - y0 + 2 * pad));
+    const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    const view = { k, tx: (p) => [w / 2 + (p[0] - cx) * k, h / 2 - (p[1] - cy) * k] };
+    view.back = (sx, sy) => [cx + (sx - w / 2) / k, cy - (sy - h / 2) / k];
+    S.view = view;
+    g.clearRect(0, 0, w, h);
+    g.fillStyle = "#fff";
+    g.fillRect(0, 0, w, h);
+    g.lineJoin = "round";
+    // the profile, turned with the cam
+    g.beginPath();
+    r.profile.forEach((p, i) => {
+      const [sx, sy] = view.tx(camToWorld(f, p));
+      if (i === 0) g.moveTo(sx, sy); else g.lineTo(sx, sy);
+    });
+    g.closePath();
+    g.fillStyle = "rgba(31,119,180,0.07)";
+    g.fill();
+    g.strokeStyle = "#1f77b4";
+    g.lineWidth = 2;
+    g.stroke();
+    // stretches the follower cannot follow
+    for (const ch of r.checks) {
+      for (const st of ch.stretches) {
+        g.beginPath();
+        st.forEach((p, i) => {
+          const [sx, sy] = view.tx(camToWorld(f, p));
+          if (i === 0) g.moveTo(sx, sy); else g.lineTo(sx, sy);
+        });
+        g.strokeStyle = "#d62728";
+        g.lineWidth = 5;
+        g.stroke();
+      }
+    }
+    // the cam's axis and its frame's x axis
+    const [px, py] = view.tx(r.pivot);
+    const size = Math.max(x1 - x0, y1 - y0);
+    const ax = view.tx(camToWorld(f, [0.12 * size, 0]));
+    g.strokeStyle = "#1f77b4";
+    g.lineWidth = 1;
+    g.beginPath(); g.moveTo(px, py); g.lineTo(ax[0], ax[1]); g.stroke();
+    g.strokeStyle = "#3c3c3c";
+    g.beginPath(); g.arc(px, py, 4, 0, 2 * Math.PI); g.stroke();
+    // nodes
+    const nodes = S.nodes || r.nodes;
+    nodes.forEach((p, i) => {
+      const [sx, sy] = view.tx(camToWorld(f, p));
+      g.beginPath();
+      g.arc(sx, sy, r.nodes_editable ? 5 : 3, 0, 2 * Math.PI);
+      g.fillStyle = S.drag && S.drag.i === i ? "#ff7f0e" : "#1f77b4";
+      g.fill();
+      if (r.nodes_editable) { g.strokeStyle = "#fff"; g.lineWidth = 1.5; g.stroke(); }
+    });
+    // the follower, from the server's model of it
+    for (const s of f.follower) {
+      g.strokeStyle = s.color;
+      g.fillStyle = s.color;
+      g.lineWidth = s.width || 1;
+      if (s.t === "line") {
+        g.beginPath();
+        s.pts.forEach((p, i) => { const q = view.tx(p); if (i === 0) g.moveTo(q[0], q[1]); else g.lineTo(q[0], q[1]); });
+        if (s.closed) g.closePath();
+        g.stroke();
+      } else if (s.t === "circle") {
+        const q = view.tx(s.c);
+        g.beginPath(); g.arc(q[0], q[1], s.r * k, 0, 2 * Math.PI); g.stroke();
+      } else if (s.t === "dot") {
+        const q = view.tx(s.p);
+        g.beginPath(); g.arc(q[0], q[1], s.px, 0, 2 * Math.PI); g.fill();
+      }
+    }
+    // marks of failed checks at this angle's neighbourhood: contacts where a check fails
+    for (const ch of r.checks) {
+      if (ch.ok) continue;
+      for (const a of ch.angles_deg) {
+        const i = Math.round(a / r.step_deg) % r.frames.length;
+        const ct = r.frames[i] && r.frames[i].contact;
+        if (!ct) continue;
+        const q = view.tx(camToWorld(f, worldToCam(r.frames[i], ct)));
+        g.fillStyle = "rgba(214,39,40,0.6)";
+        g.fillRect(q[0] - 2, q[1] - 2, 4, 4);
+      }
+    }
+    // the contact point and the common normal
+    if (f.contact) {
+      const q = view.tx(f.contact);
+      if (f.normal) {
+        const L = 0.3 * size;
+        const a = view.tx([f.contact[0] - L * f.normal[0], f.contact[1] - L * f.normal[1]]);
+        const b = view.tx([f.contact[0] + L * f.normal[0], f.contact[1] + L * f.normal[1]]);
+        g.strokeStyle = "#2ca02c"; g.lineWidth = 1; g.setLineDash([5, 4]);
+        g.beginPath(); g.moveTo(a[0], a[1]); g.lineTo(b[0], b[1]); g.stroke();
+        g.setLineDash([]);
+      }
+      g.fillStyle = "#d62728";
+      g.beginPath(); g.arc(q[0], q[1], 5, 0, 2 * Math.PI); g.fill();
+    }
+    // a scale bar
+    const bar = Math.pow(10, Math.floor(Math.log10(size / 4)));
+    g.strokeStyle = "#444"; g.lineWidth = 2;
+    g.beginPath(); g.moveTo(12, h - 14); g.lineTo(12 + bar * k, h - 14); g.stroke();
+    g.fillStyle = "#444"; g.font = "12px DejaVu Sans, sans-serif";
+    g.fillText(`${fmt(bar)} ${r.length_unit}`, 16 + bar * k, h - 10);
+    g.fillText(`cam angle ${fmt(angleAt(S.index), 4)}°`, 12, 18);
+  }
+
+  function drawValues() {
+    const r = S.result, i = S.index;
+    const rows = r.series.map((s) => `<tr><td>${s.label}</td><td class="num">${fmt(s.values[i], 6)}</td><td>${s.unit}</td></tr>`);
+    const f = r.frames[i];
+    if (f.contact) rows.push(`<tr><td>contact point</td><td class="num">(${fmt(f.contact[0], 5)}, ${fmt(f.contact[1], 5)})</td><td>${r.length_unit}</td></tr>`);
+    $("values").innerHTML = rows.join("");
+  }
+
+  function drawChecks() {
+    const r = S.result;
+    $("checks").innerHTML = "";
+    for (const ch of r.checks) {
+      const li = document.createElement("li");
+      li.className = ch.ok ? "ok" : "bad";
+      li.dataset.kind = ch.kind;
+      let text = ch.message;
+      if (!ch.ok && ch.angles_deg.length) {
+        const shown = ch.angles_deg.slice(0, 6).map((a) => `${fmt(a, 4)}°`).join(", ");
+        text += ` — at ${shown}${ch.angles_deg.length > 6 ? ", …" : ""}`;
+        li.title = "click to go to the first angle";
+        li.style.cursor = "pointer";
+        li.onclick = () => setIndex(Math.round(ch.angles_deg[0] / r.step_deg) % r.frames.length);
+      }
+      li.textContent = text;
+      $("checks").appendChild(li);
+    }
+    $("warnings").innerHTML = "";
+    for (const w of r.warnings) {
+      const li = document.createElement("li");
+      li.textContent = w.message;
+      $("warnings").appendChild(li);
+    }
+  }
+
+  // ---------- plots ----------
+  function buildPlots() {
+    const box = $("plots");
+    if (!S.plots) {
+      S.plots = PLOTS.map(([key, color]) => {
+        const c = document.createElement("canvas");
+        c.height = 118;
+        c.dataset.key = key;
+        box.appendChild(c);
+        const p = { canvas: c, key, color };
+        attachHover(p);
+        return p;
+      });
+    }
+    for (const p of S.plots) {
+      const s = S.result.series.find((x) => x.key === p.key);
+      p.series = [{ values: s.values, color: p.color, label: s.label }];
+      p.title = s.label;
+      p.unit = s.unit;
+      p.clip = p.key === "radius_of_curvature" || p.key === "jerk";
+      p.minSpan = p.key === "pressure_angle" ? 2 : 0;
+    }
+  }
+
+  function niceTicks(lo, hi, n) {
+    const span = hi - lo;
+    if (!(span > 0)) return [lo];
+    const raw = span / n, mag = Math.pow(10, Math.floor(Math.log10(raw)));
+    const step = [1, 2, 5, 10].map((m) => m * mag).find((s) => s >= raw) || 10 * mag;
+    const out = [];
+    for (let t = Math.ceil(lo / step) * step; t <= hi + 1e-9 * span; t += step) out.push(Math.abs(t) < 1e-12 * span ? 0 : t);
+    return out;
+  }
+
+  function quantile(sorted, q) { return sorted[Math.min(sorted.length - 1, Math.max(0, Math.floor(q * (sorted.length - 1))))]; }
+
+  function yRange(p) {
+    const vals = [];
+    for (const s of p.series) for (const v of s.values) if (v !== null && isFinite(v) && (!p.log || v > 0)) vals.push(p.log ? Math.log10(v) : v);
+    if (!vals.length) return [0, 1];
+    vals.sort((a, b) => a - b);
+    let lo = vals[0], hi = vals[vals.length - 1];
+    if (p.clip && vals.length > 20) {
+      // a radius of curvature near a straight stretch, or jerk at nodes, would flatten the rest
+      const q1 = quantile(vals, 0.02), q3 = quantile(vals, 0.98), w = q3 - q1;
+      lo = Math.max(lo, q1 - 0.5 * w); hi = Math.min(hi, q3 + 0.5 * w);
+    }
+    // a quantity that is zero but for rounding (the pressure angle under a flat face) is drawn
+    // on a span that shows it as zero, not its rounding noise
+    const minSpan = p.minSpan || 0;
+    if (hi - lo < minSpan) { const m = (hi + lo) / 2; lo = m - minSpan / 2; hi = m + minSpan / 2; }
+    if (lo === hi) { lo -= 1; hi += 1; }
+    const pad = 0.06 * (hi - lo);
+    return [lo - pad, hi + pad];
+  }
+
+  function drawPlot(p) {
+    const { g, w, h } = fitCanvas(p.canvas);
+    const L = 64, R = 10, T = 16, B = 18;
+    const x = p.x || S.result.angles_deg;
+    const xmax = 360;
+    const [ylo, yhi] = yRange(p);
+    const X = (a) => L + (a / xmax) * (w - L - R);
+    const Y = (v) => T + (1 - (v - ylo) / (yhi - ylo)) * (h - T - B);
+    p.geom = { L, R, T, B, w, h, X, Y, ylo, yhi, x };
+    g.clearRect(0, 0, w, h);
+    g.fillStyle = "#fff"; g.fillRect(0, 0, w, h);
+    g.font = "11px DejaVu Sans, sans-serif";
+    // grid and axes
+    g.strokeStyle = "#eee"; g.lineWidth = 1; g.fillStyle = "#555";
+    for (const t of niceTicks(ylo, yhi, 3)) {
+      const yy = Y(t);
+      g.beginPath(); g.moveTo(L, yy); g.lineTo(w - R, yy); g.stroke();
+      g.textAlign = "right";
+      g.fillText(p.log ? `1e${Math.round(t)}` : fmt(t, 3), L - 4, yy + 4);
+    }
+    for (let a = 0; a <= 360; a += 45) {
+      const xx = X(a);
+      g.beginPath(); g.moveTo(xx, T); g.lineTo(xx, h - B); g.stroke();
+      g.textAlign = "center";
+      g.fillText(`${a}°`, xx, h - 5);
+    }
+    if (!p.log && ylo < 0 && yhi > 0) {
+      g.strokeStyle = "#bbb"; g.beginPath(); g.moveTo(L, Y(0)); g.lineTo(w - R, Y(0)); g.stroke();
+    }
+    g.textAlign = "left"; g.fillStyle = "#222"; g.font = "12px DejaVu Sans, sans-serif";
+    g.fillText(`${p.title} (${p.unit})`, L + 4, 12);
+    // failed checks at their angles
+    if (S.result && !p.noMarks) {
+      for (const ch of S.result.checks) {
+        if (ch.ok) continue;
+        g.fillStyle = "rgba(214,39,40,0.35)";
+        for (const a of ch.angles_deg) g.fillRect(X(a) - 1, T, 2, h - T - B);
+      }
+    }
+    if (p.shade) p.shade(g, X, Y, T, h - B);
+    // the curves
+    g.save();
+    g.beginPath(); g.rect(L, T, w - L - R, h - T - B); g.clip();
+    for (const s of p.series) {
+      g.strokeStyle = s.color; g.lineWidth = s.width || 1.5;
+      if (s.dash) g.setLineDash(s.dash);
+      g.beginPath();
+      let on = false;
+      s.values.forEach((v, i) => {
+        const ok = v !== null && isFinite(v) && (!p.log || v > 0);
+        if (!ok) { on = false; return; }
+        const xx = X(x[i]), yy = Y(p.log ? Math.log10(v) : v);
+        if (on) g.lineTo(xx, yy); else g.moveTo(xx, yy);
+        on = true;
+      });
+      g.stroke();
+      g.setLineDash([]);
+    }
+    g.restore();
+    // the cursor at the current angle
+    const xc = X(angleAt(S.index));
+    g.strokeStyle = "#d62728"; g.lineWidth = 1;
+    g.beginPath(); g.moveTo(xc, T); g.lineTo(xc, h - B); g.stroke();
+    if (p.legend) {
+      let lx = w - R - 6;
+      g.textAlign = "right"; g.font = "11px DejaVu Sans, sans-serif";
+      for (const s of p.series.slice().reverse()) {
+        g.fillStyle = s.color;
+        g.fillText(s.label, lx, 12);
+        lx -= g.measureText(s.label).width + 14;
+      }
+    }
+  }
+
+  function attachHover(p) {
+    const tip = $("tooltip");
+    const at = (ev) => {
+      if (!p.geom || !S.result) return null;
+      const rect = p.canvas.getBoundingClientRect();
+      const mx = ev.clientX - rect.left;
+      const { L, R, w, x } = p.geom;
+      const a = ((mx - L) / (w - L - R)) * 360;
+      if (a < 0 || a > 360) return null;
+      let best = 0;
+      for (let i = 1; i < x.length; i++) if (Math.abs(x[i] - a) < Math.abs(x[best] - a)) best = i;
+      return best;
+    };
+    p.canvas.addEventListener("mousemove", (ev) => {
+      const i = at(ev);
+      if (i === null) { tip.hidden = true; return; }
+      const lines = [`cam angle ${fmt(p.geom.x[i], 5)}°`];
+      for (const s of p.series) lines.push(`${s.label}: ${fmt(s.values[i], 6)} ${p.unit}`);
+      tip.textContent = lines.join("\n");
+      tip.hidden = false;
+      tip.style.left = ev.clientX + 14 + "px";
+      tip.style.top = ev.clientY + 10 + "px";
+    });
+    p.canvas.addEventListener("mouseleave", () => { tip.hidden = true; });
+    p.canvas.addEventListener("click", (ev) => {
+      const i = at(ev);
+      if (i === null || !S.result) return;
+      setIndex(Math.round(p.geom.x[i] / S.result.step_deg) % S.result.frames.length);
+    });
+  }
+
+  // ---------- compare ----------
+  function runCompare() {
+    const n = Math.round(+$("compare-n").value);
+    $("compare-summary").textContent = "computing…";
+    post("api/compare", { toml: S.toml, nodes: [n], step_deg: S.result ? S.result.step_deg : 0.5 })
+      .then((r) => r.json())
+      .then((c) => { S.compare = c; drawCompare(); })
+      .catch((e) => { $("compare-summary").textContent = e.message; });
+  }
+
+  function drawCompare() {
+    const c = S.compare;
+    if (!c) return;
+    const run = c.runs[0];
+    $("compare-summary").textContent = `N = ${run.nodes}: largest error ${fmt(100 * run.max_rel_error, 3)} % of the peak acceleration, mean ${fmt(100 * run.mean_rel_error, 3)} %`;
+    if (!S.cmpPlots) {
+      S.cmpPlots = [{ canvas: $("compare-acc") }, { canvas: $("compare-err") }];
+      S.cmpPlots.forEach(attachHover);
+    }
+    const [pa, pe] = S.cmpPlots;
+    Object.assign(pa, {
+      x: c.angles_deg, title: "acceleration", unit: c.unit, legend: true, noMarks: true,
+      series: [{ values: c.exact, color: "#2ca02c", label: "exact" }, { values: run.acceleration, color: "#ff7f0e", label: `interpolated, N = ${run.nodes}`, dash: [4, 3] }],
+    });
+    Object.assign(pe, {
+      x: c.angles_deg, title: "relative error |a_N − a| / max|a|", unit: "1", log: true, noMarks: true,
+      series: [{ values: run.rel_error, color: "#d62728", label: "error" }],
+    });
+    drawPlot(pa);
+    drawPlot(pe);
+  }
+
+  // ---------- dynamics ----------
+  function setupDynamics() {
+    const d = S.result.dynamics;
+    $("dynamics-panel").hidden = !d;
+    if (!d) return;
+    const top = Math.max(2 * d.rpm, d.jump_rpm ? 1.5 * d.jump_rpm : 0);
+    const slider = $("rpm");
+    slider.max = Math.ceil(top);
+    if (S.rpm === null) S.rpm = d.rpm;
+    slider.value = S.rpm;
+    if (!S.forcePlot) {
+      S.forcePlot = { canvas: $("force") };
+      attachHover(S.forcePlot);
+    }
+  }
+
+  function forceAt(rpm) {
+    const w = (rpm * Math.PI) / 30;
+    return S.result.dynamics.coefficients.map((c) => (c ? (c[0] * w * w + c[1] * w + c[2]) / c[3] : null));
+  }
+
+  function drawForce() {
+    const d = S.result && S.result.dynamics;
+    if (!d || !S.forcePlot) return;
+    const rpm = S.rpm;
+    const f = forceAt(rpm);
+    let min = Infinity, at = 0;
+    f.forEach((v, i) => { if (v !== null && v < min) { min = v; at = i; } });
+    $("rpm-readout").textContent = `${fmt(rpm, 4)} rpm (the file: ${fmt(d.rpm, 4)} rpm)`;
+    const sum = $("dynamics-summary");
+    const jump = d.jump_rpm ? `the follower first leaves the cam at ${fmt(d.jump_rpm, 4)} rpm, at ${fmt(d.jump_angle_deg, 4)}°` : "the contact holds at every speed";
+    if (min < 0) {
+      sum.textContent = `At ${fmt(rpm, 4)} rpm the contact force falls below zero (lowest ${fmt(min, 4)} N at ${fmt(angleAt(at), 4)}°): the follower jumps. ${jump}.`;
+      sum.className = "bad";
+    } else {
+      sum.textContent = `At ${fmt(rpm, 4)} rpm the contact holds: lowest force ${fmt(min, 4)} N at ${fmt(angleAt(at), 4)}°. ${jump}.`;
+      sum.className = "";
+    }
+    Object.assign(S.forcePlot, {
+      title: `contact force at ${fmt(rpm, 4)} rpm`, unit: d.unit, noMarks: true,
+      series: [{ values: f, color: "#1f77b4", label: "contact force" }],
+      shade: (g, X, Y, t, b) => {
+        g.fillStyle = "rgba(214,39,40,0.18)";
+        const x = S.result.angles_deg, step = S.result.step_deg;
+        f.forEach((v, i) => { if (v !== null && v < 0) g.fillRect(X(x[i] - step / 2), t, Math.max(1, X(step) - X(0)), b - t); });
+      },
+    });
+    drawPlot(S.forcePlot);
+  }
+
+  // ---------- interaction ----------
+  function setIndex(i) {
+    S.index = i;
+    $("angle").value = i;
+    redraw();
+  }
+
+  function nodeAt(sx, sy) {
+    const r = S.result;
+    if (!r || !r.nodes_editable || !S.view) return -1;
+    const f = r.frames[S.index];
+    let best = -1, bd = 10;
+    (S.nodes || r.nodes).forEach((p, i) => {
+      const q = S.view.tx(camToWorld(f, p));
+      const d = Math.hypot(q[0] - sx, q[1] - sy);
+      if (d < bd) { bd = d; best = i; }
+    });
+    return best;
+  }
+
+  function canvasXY(ev) {
+    const rect = $("drawing").getBoundingClientRect();
+    return [ev.clientX - rect.left, ev.clientY - rect.top];
+  }
+
+  function roundTo(x, size) {
+    // four significant places of the cam's size: a node to 1e-4 of it, as a drawing is read
+    const d = Math.max(0, 4 - Math.floor(Math.log10(size)));
+    return Number(x.toFixed(Math.min(d, 10)));
+  }
+
+  function setupDrawing() {
+    const c = $("drawing");
+    c.addEventListener("pointerdown", (ev) => {
+      if (REPORT) return;
+      const [sx, sy] = canvasXY(ev);
+      const i = nodeAt(sx, sy);
+      if (i < 0) return;
+      S.drag = { i };
+      S.playing = false; $("play").textContent = "▶";
+      c.setPointerCapture(ev.pointerId);
+      c.className = "grabbing";
+      ev.preventDefault();
+    });
+    c.addEventListener("pointermove", (ev) => {
+      const [sx, sy] = canvasXY(ev);
+      if (!S.drag) { c.className = !REPORT && nodeAt(sx, sy) >= 0 ? "grab" : ""; return; }
+      const r = S.result, f = r.frames[S.index];
+      const [x0, y0, x1, y1] = r.extent, size = Math.max(x1 - x0, y1 - y0);
+      const p = worldToCam(f, S.view.back(sx, sy));
+      S.nodes[S.drag.i] = [roundTo(p[0], size), roundTo(p[1], size)];
+      drawMechanism();
+      requestAnalysis({ toml: S.toml, nodes: S.nodes.map((q) => q.slice()), step_deg: r.step_deg });
+    });
+    const end = () => {
+      if (!S.drag) return;
+      S.drag = null;
+      c.className = "";
+      drawMechanism();
+    };
+    c.addEventListener("pointerup", end);
+    c.addEventListener("pointercancel", end);
+  }
+
+  function setupControls() {
+    $("angle").addEventListener("input", (e) => setIndex(+e.target.value));
+    $("play").addEventListener("click", () => {
+      S.playing = !S.playing;
+      $("play").textContent = S.playing ? "❚❚" : "▶";
+      if (S.playing) requestAnimationFrame(tick);
+    });
+    document.addEventListener("keydown", (e) => {
+      if (e.target === $("editor") || e.target.tagName === "INPUT") return;
+      if (e.key === " ") { e.preventDefault(); $("play").click(); }
+    });
+    $("rpm").addEventListener("input", (e) => { S.rpm = +e.target.value; drawForce(); });
+    $("compare-run").addEventListener("click", runCompare);
+    let timer = null;
+    $("editor").addEventListener("input", () => {
+      if (REPORT) return;
+      clearTimeout(timer);
+      timer = setTimeout(() => requestAnalysis({ toml: $("editor").value, step_deg: S.result ? S.result.step_deg : 0.5 }), 120);
+    });
+    $("download-toml").addEventListener("click", () => save(new Blob([$("editor").value], { type: "application/toml" }), S.name || "mechanism.toml"));
+    $("download-csv").addEventListener("click", () => download("api/csv", "analysis.csv"));
+    $("download-report").addEventListener("click", () => download("api/report", "report.html"));
+    window.addEventListener("resize", redraw);
+  }
+
+  function tick() {
+    if (!S.playing || !S.result) return;
+    setIndex((S.index + 1) % S.result.frames.length);
+    requestAnimationFrame(tick);
+  }
+
+  function save(blob, name) {
+    const a = document.createElement("a");
+    a.href = URL.createObjectURL(blob);
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
+  }
+
+  function download(path, name) {
+    post(path, { toml: $("editor").value, step_deg: S.result ? S.result.step_deg : 0.5 })
+      .then((r) => r.blob())
+      .then((b) => save(b, name))
+      .catch(showError);
+  }
+
+  // ---------- start ----------
+  function start() {
+    setupControls();
+    setupDrawing();
+    if (REPORT) {
+      document.body.classList.add("report");
+      $("editor").readOnly = true;
+      $("editor").value = REPORT.toml;
+      S.name = REPORT.result.name;
+      S.compare = REPORT.compare;
+      show(REPORT.result, REPORT.toml, false);
+      setStatus(`report of ${REPORT.result.name}, made by ${REPORT.generated_by}: everything below is in this file`);
+      $("footer").textContent = `Exact kinematics by the contact method (K. Lee, 2005). ${REPORT.generated_by}.`;
+      if (!REPORT.compare) $("compare-panel").hidden = true;
+      $("compare-n").disabled = true;
+      return;
+    }
+    fetch("api/session")
+      .then((r) => r.json())
+      .then((s) => {
+        S.name = s.name;
+        S.toml = s.toml;
+        $("editor").value = s.toml;
+        requestAnalysis({ toml: s.toml });
+        // the paper's study at N = 36 once the first result is in
+        const wait = setInterval(() => { if (S.result) { clearInterval(wait); runCompare(); } }, 50);
+      })
+      .catch((e) => setStatus(`cannot reach the server: ${e}`, true));
+    $("footer").textContent = "Exact kinematics by the contact method (K. Lee, 2005). The server runs on this machine only; closing the page loses unsaved edits: download the mechanism file.";
+  }
+
+  start();
+})();
