@@ -11,3 +11,4 @@ mod cli_study;
 mod cli_synth;
 mod common;
 mod properties;
+mod studio_server;

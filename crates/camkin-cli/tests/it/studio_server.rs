@@ -1,0 +1,341 @@
+//! The studio's server without a browser: JSON errors with 4xx statuses, size and work limits,
+//! reads confined to the opened folder, malformed requests, many clients at once, and the CSV
+//! download equal to `camkin analyze`.
+
+use crate::common::{camkin, examples};
+use camkin_cli::studio::model::Source;
+use camkin_cli::studio::server::{serve, Session};
+use camkin_cli::studio::Limits;
+use serde_json::{json, Value};
+use std::io::{Read, Write};
+use std::net::{SocketAddr, TcpListener, TcpStream};
+use std::path::Path;
+use std::time::Duration;
+
+/// A server on a free port of 127.0.0.1 for the file at `path` (the paper's cam when `None`).
+fn start(path: Option<&Path>, limits: Limits) -> SocketAddr {
+    let (text, source) = match path {
+        Some(p) => (
+            std::fs::read_to_string(p).unwrap(),
+            Source {
+                name: p.file_name().unwrap().to_string_lossy().into(),
+                folder: Some(p.parent().unwrap().to_path_buf()),
+            },
+        ),
+        None => (
+            camkin_cli::mechfile::PAPER_TOML.to_string(),
+            Source {
+                name: "paper.toml".into(),
+                folder: None,
+            },
+        ),
+    };
+    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+    let addr = listener.local_addr().unwrap();
+    std::thread::spawn(move || serve(listener, Session { text, source }, limits));
+    addr
+}
+
+/// Sends raw bytes, returns (status, body).
+fn raw(addr: SocketAddr, request: &[u8]) -> (u16, String) {
+    let mut s = TcpStream::connect(addr).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(60))).unwrap();
+    s.write_all(request).unwrap();
+    let mut out = Vec::new();
+    let _ = s.read_to_end(&mut out);
+    let text = String::from_utf8_lossy(&out).to_string();
+    let status = text
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(0);
+    let body = text
+        .split_once("\r\n\r\n")
+        .map(|(_, b)| b.to_string())
+        .unwrap_or_default();
+    (status, body)
+}
+
+fn request(addr: SocketAddr, method: &str, path: &str, body: &str) -> (u16, String) {
+    raw(
+        addr,
+        format!(
+            "{method} {path} HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}",
+            body.len()
+        )
+        .as_bytes(),
+    )
+}
+
+fn post(addr: SocketAddr, path: &str, body: &Value) -> (u16, Value) {
+    let (status, text) = request(addr, "POST", path, &body.to_string());
+    (
+        status,
+        serde_json::from_str(&text).unwrap_or(Value::String(text)),
+    )
+}
+
+/// The error of a refused request, checked to be the JSON form.
+fn error(status: u16, v: &Value) -> (u16, String, Value, Value) {
+    let e = &v["error"];
+    assert!(e["message"].is_string(), "not a JSON error: {v}");
+    (
+        status,
+        e["kind"].as_str().unwrap().to_string(),
+        e["line"].clone(),
+        e["column"].clone(),
+    )
+}
+
+fn paper() -> String {
+    camkin_cli::mechfile::PAPER_TOML.to_string()
+}
+
+#[test]
+fn every_refusal_is_json_with_a_4xx_status() {
+    let addr = start(None, Limits::default());
+    let (s, b) = request(addr, "GET", "/nope", "");
+    let v: Value = serde_json::from_str(&b).unwrap();
+    assert_eq!((s, v["error"]["kind"].as_str()), (404, Some("not-found")));
+    let (s, b) = request(addr, "GET", "/api/analyze", "");
+    assert_eq!(s, 405);
+    assert!(b.contains("\"error\""), "{b}");
+    let (s, b) = request(addr, "POST", "/api/analyze", "not json");
+    assert_eq!(s, 400, "{b}");
+    assert!(b.contains("bad-request"));
+    let (s, v) = post(addr, "/api/analyze", &json!({"toml": paper(), "colour": 1}));
+    assert_eq!(error(s, &v).0, 400, "an unknown field: {v}");
+    let (s, v) = post(addr, "/api/analyze", &json!({"toml": 5}));
+    assert_eq!(error(s, &v).0, 400);
+    // the mechanism's errors carry their line and column
+    let bad = paper().replace("speed_rpm = 1000.0", "speed_rpm = -5.0");
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": bad }));
+    assert_eq!(error(s, &v), (422, "input".into(), json!(6), json!(13)));
+    let (s, v) = post(
+        addr,
+        "/api/analyze",
+        &json!({"toml": paper().replace("[follower]", "[follower")}),
+    );
+    assert_eq!(error(s, &v).0, 422);
+    assert_eq!(error(s, &v).2, json!(15));
+    // arguments out of range
+    for body in [
+        json!({"toml": paper(), "step_deg": 0.001}),
+        json!({"toml": paper(), "step_deg": 7.0}),
+        json!({"toml": paper(), "pressure_limit_deg": 95.0}),
+        json!({"toml": paper(), "nodes": [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]], "step_deg": -1}),
+    ] {
+        let (s, v) = post(addr, "/api/analyze", &body);
+        assert_eq!(error(s, &v).0, 400, "{body}: {v}");
+    }
+    for body in [
+        json!({"toml": paper(), "nodes": [0]}),
+        json!({"toml": paper(), "nodes": [3, 1_000_000]}),
+        json!({"toml": paper(), "nodes": [3, 4, 5, 6, 7]}),
+    ] {
+        let (s, v) = post(addr, "/api/compare", &body);
+        assert_eq!(error(s, &v).0, 400, "{body}: {v}");
+    }
+    // nodes can be moved only on an inline spline
+    let circle = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"circle\"\ncenter = [1.0, 0.0]\nradius = 20.0\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5.0\n";
+    let (s, v) = post(
+        addr,
+        "/api/analyze",
+        &json!({"toml": circle, "nodes": [[1.0, 2.0]]}),
+    );
+    assert_eq!(error(s, &v).0, 400);
+    // and the server still answers
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": circle }));
+    assert_eq!(s, 200, "{v}");
+}
+
+#[test]
+fn malformed_http_and_cut_requests_leave_the_server_serving() {
+    let addr = start(None, Limits::default());
+    let (s, _) = raw(addr, b"GARBAGE\r\n\r\n");
+    assert!(s == 400 || s == 0, "{s}");
+    // a body shorter than its length, then the connection dropped
+    {
+        let mut c = TcpStream::connect(addr).unwrap();
+        c.write_all(
+            b"POST /api/analyze HTTP/1.1\r\nHost: x\r\nContent-Length: 100000\r\n\r\n{\"toml\": ",
+        )
+        .unwrap();
+    }
+    let (s, _) = raw(addr, b"\x00\x01\x02\xff\r\n\r\n");
+    assert!(s == 400 || s == 0);
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": paper() }));
+    assert_eq!(s, 200, "{v}");
+}
+
+#[test]
+fn a_body_over_the_limit_is_refused_before_it_is_read() {
+    let limits = Limits {
+        max_body_bytes: 4096,
+        ..Limits::default()
+    };
+    let addr = start(None, limits);
+    let big = format!("{}\n# {}\n", paper(), "x".repeat(10_000));
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": big }));
+    assert_eq!(error(s, &v).1, "too-large");
+    assert_eq!(s, 413);
+}
+
+#[test]
+fn work_over_the_time_limit_is_refused_with_the_estimate() {
+    let addr = start(None, Limits::default());
+    // a wavy (not convex) profile of 20 000 nodes: every angle scans its samples
+    let pts: Vec<String> = (0..20_000)
+        .map(|k| {
+            let t = k as f64 * std::f64::consts::TAU / 20_000.0;
+            let r = 40.0 + 3.0 * (9.0 * t).sin();
+            format!("[{:.6}, {:.6}]", r * t.cos(), r * t.sin())
+        })
+        .collect();
+    let text = format!(
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"spline\"\npoints = [{}]\n[follower]\nkind = \"translating-knife\"\n",
+        pts.join(", ")
+    );
+    let t = std::time::Instant::now();
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": text }));
+    assert_eq!(error(s, &v).1, "too-much-work", "{v}");
+    let msg = v["error"]["message"].as_str().unwrap();
+    assert!(
+        msg.contains("would take about") && msg.contains(" s"),
+        "{msg}"
+    );
+    // refused up front, not after the work (a bound, not a timing: the work is minutes)
+    assert!(t.elapsed() < Duration::from_secs(30));
+}
+
+#[test]
+fn points_files_are_read_only_inside_the_opened_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let folder = dir.path().join("cams");
+    std::fs::create_dir(&folder).unwrap();
+    std::fs::copy(examples().join("profile.csv"), folder.join("inside.csv")).unwrap();
+    std::fs::copy(
+        examples().join("profile.csv"),
+        dir.path().join("secret.csv"),
+    )
+    .unwrap();
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(dir.path().join("secret.csv"), folder.join("link.csv")).unwrap();
+    let mech = |path: &str| {
+        format!("length_unit = \"cm\"\n[cam]\nspeed_rpm = 1000.0\n[cam.profile]\nkind = \"points-file\"\npath = {path:?}\n[follower]\nkind = \"translating-flat\"\n")
+    };
+    std::fs::write(folder.join("cam.toml"), mech("inside.csv")).unwrap();
+    let addr = start(Some(&folder.join("cam.toml")), Limits::default());
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": mech("inside.csv") }));
+    assert_eq!(s, 200, "{v}");
+    let secret = dir.path().join("secret.csv").display().to_string();
+    for path in [
+        "../secret.csv",
+        "./../secret.csv",
+        "sub/../../secret.csv",
+        secret.as_str(),
+        "/etc/passwd",
+        "link.csv",
+    ] {
+        let (s, v) = post(addr, "/api/analyze", &json!({ "toml": mech(path) }));
+        assert_eq!(error(s, &v).1, "input", "{path}: {v}");
+        let msg = v["error"]["message"].as_str().unwrap();
+        assert!(
+            msg.contains("cam.profile.path") && msg.contains("folder"),
+            "{path}: {msg}"
+        );
+        assert!(v["error"]["line"].is_number(), "{v}");
+    }
+    // the built-in cam has no folder: no file at all
+    let addr = start(None, Limits::default());
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": mech("inside.csv") }));
+    assert_eq!(error(s, &v).1, "input");
+    assert!(v["error"]["message"]
+        .as_str()
+        .unwrap()
+        .contains("no folder is open"));
+}
+
+#[test]
+fn many_clients_at_once_all_get_the_same_answer() {
+    let addr = start(None, Limits::default());
+    let body = json!({ "toml": paper() });
+    let strip = |mut v: Value| {
+        v["result"]["server_ms"] = Value::Null;
+        v
+    };
+    let (s, first) = post(addr, "/api/analyze", &body);
+    assert_eq!(s, 200);
+    let first = strip(first);
+    let threads: Vec<_> = (0..16)
+        .map(|_| {
+            let body = body.clone();
+            std::thread::spawn(move || {
+                (0..8)
+                    .map(|_| post(addr, "/api/analyze", &body))
+                    .collect::<Vec<_>>()
+            })
+        })
+        .collect();
+    let mut answered = 0;
+    for t in threads {
+        for (s, v) in t.join().unwrap() {
+            assert_eq!(s, 200);
+            assert!(strip(v) == first, "an answer differs");
+            answered += 1;
+        }
+    }
+    assert_eq!(answered, 128);
+}
+
+#[test]
+fn the_csv_download_is_what_camkin_analyze_writes() {
+    let addr = start(None, Limits::default());
+    let (s, csv) = request(
+        addr,
+        "POST",
+        "/api/csv",
+        &json!({"toml": paper(), "step_deg": 0.5}).to_string(),
+    );
+    assert_eq!(s, 200);
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("a.csv");
+    camkin()
+        .arg("analyze")
+        .arg(examples().join("paper.toml"))
+        .args(["--angles", "0:360:0.5", "-o"])
+        .arg(&out)
+        .assert();
+    let expected = std::fs::read_to_string(&out).unwrap_or_default();
+    assert_eq!(csv, expected);
+}
+
+#[test]
+fn a_dragged_node_is_written_into_the_text_analysed() {
+    let addr = start(None, Limits::default());
+    let mut nodes = vec![
+        [5.0, 0.0],
+        [3.4, 2.8],
+        [0.6, 3.4],
+        [-1.5, 2.6],
+        [-2.8, 1.0],
+        [-2.8, -1.0],
+        [-1.5, -2.6],
+        [0.6, -3.4],
+        [3.4, -2.8],
+    ];
+    nodes[1] = [3.6, 3.0];
+    let (s, v) = post(
+        addr,
+        "/api/analyze",
+        &json!({"toml": paper(), "nodes": nodes}),
+    );
+    assert_eq!(s, 200, "{v}");
+    let text = v["toml"].as_str().unwrap();
+    assert!(text.contains("[3.6, 3.0]") && !text.contains("[3.4, 2.8]"));
+    assert!(text.starts_with("# The paper's cam"), "comments kept");
+    // the answer is the analysis of that text
+    let (_, again) = post(addr, "/api/analyze", &json!({ "toml": text }));
+    assert_eq!(again["result"]["series"], v["result"]["series"]);
+    assert_eq!(v["result"]["nodes"], json!(nodes));
+}
