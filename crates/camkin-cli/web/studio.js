@@ -22,7 +22,7 @@
     const rect = $("drawing").getBoundingClientRect();
     return [rect.left + q[0], rect.top + q[1]];
   };
-  S.idle = () => !S.inflight && !S.pending && !S.drag;
+  S.idle = () => !S.inflight && !S.pending && !S.drag && !S.comparing && (REPORT || !S.result || S.compareFor === S.toml);
 
   // ---------- numbers for people ----------
   function fmt(x, digits) {
@@ -68,6 +68,7 @@
         if (S.timings.length > 200) S.timings.shift();
         setStatus(`exact analysis of ${ans.result.angles_deg.length} angles: ${fmt(timing.server_ms, 3)} ms on the server, ${fmt(timing.total_ms, 3)} ms from the edit to the screen`);
         clearError();
+        if (S.compareFor !== undefined && S.compareFor !== ans.toml) runCompare();
       })
       .catch((e) => showError(e))
       .finally(() => {
@@ -293,6 +294,16 @@
     $("values").innerHTML = rows.join("");
   }
 
+  // angles in runs of consecutive steps: [[first, last], …]
+  function ranges(angles, step) {
+    const out = [];
+    for (const a of angles) {
+      const last = out[out.length - 1];
+      if (last && Math.abs(a - last[1] - step) < 1e-6 * step) last[1] = a; else out.push([a, a]);
+    }
+    return out;
+  }
+
   function drawChecks() {
     const r = S.result;
     $("checks").innerHTML = "";
@@ -302,8 +313,9 @@
       li.dataset.kind = ch.kind;
       let text = ch.message;
       if (!ch.ok && ch.angles_deg.length) {
-        const shown = ch.angles_deg.slice(0, 6).map((a) => `${fmt(a, 4)}°`).join(", ");
-        text += ` — at ${shown}${ch.angles_deg.length > 6 ? ", …" : ""}`;
+        const runs = ranges(ch.angles_deg, r.step_deg);
+        const shown = runs.slice(0, 4).map(([a, b]) => (a === b ? `${fmt(a, 4)}°` : `${fmt(a, 4)}°–${fmt(b, 4)}°`)).join(", ");
+        text += ` — at ${shown}${runs.length > 4 ? ", …" : ""}`;
         li.title = "click to go to the first angle";
         li.style.cursor = "pointer";
         li.onclick = () => setIndex(Math.round(ch.angles_deg[0] / r.step_deg) % r.frames.length);
@@ -347,7 +359,7 @@
     const span = hi - lo;
     if (!(span > 0)) return [lo];
     const raw = span / n, mag = Math.pow(10, Math.floor(Math.log10(raw)));
-    const step = [1, 2, 5, 10].map((m) => m * mag).find((s) => s >= raw) || 10 * mag;
+    const step = [1, 2, 2.5, 5, 10].map((m) => m * mag).find((s) => s >= raw) || 10 * mag;
     const out = [];
     for (let t = Math.ceil(lo / step) * step; t <= hi + 1e-9 * span; t += step) out.push(Math.abs(t) < 1e-12 * span ? 0 : t);
     return out;
@@ -389,7 +401,7 @@
     g.font = "11px DejaVu Sans, sans-serif";
     // grid and axes
     g.strokeStyle = "#eee"; g.lineWidth = 1; g.fillStyle = "#555";
-    for (const t of niceTicks(ylo, yhi, 3)) {
+    for (const t of niceTicks(ylo, yhi, 4)) {
       const yy = Y(t);
       g.beginPath(); g.moveTo(L, yy); g.lineTo(w - R, yy); g.stroke();
       g.textAlign = "right";
@@ -408,10 +420,16 @@
     g.fillText(`${p.title} (${p.unit})`, L + 4, 12);
     // failed checks at their angles
     if (S.result && !p.noMarks) {
+      // a light band over the plot and a solid strip under it, so the curve stays readable
+      const cell = Math.max(2, X(S.result.step_deg) - X(0));
       for (const ch of S.result.checks) {
         if (ch.ok) continue;
-        g.fillStyle = "rgba(214,39,40,0.35)";
-        for (const a of ch.angles_deg) g.fillRect(X(a) - 1, T, 2, h - T - B);
+        for (const a of ch.angles_deg) {
+          g.fillStyle = "rgba(214,39,40,0.08)";
+          g.fillRect(X(a) - cell / 2, T, cell, h - T - B);
+          g.fillStyle = "rgba(214,39,40,0.9)";
+          g.fillRect(X(a) - cell / 2, h - B - 4, cell, 4);
+        }
       }
     }
     if (p.shade) p.shade(g, X, Y, T, h - B);
@@ -481,18 +499,30 @@
   }
 
   // ---------- compare ----------
+  // The study follows every edit: a study of another text is never shown as this one's.
   function runCompare() {
+    if (REPORT) return;
+    if (S.comparing) { S.compareAgain = true; return; }
+    S.comparing = true;
     const n = Math.round(+$("compare-n").value);
-    $("compare-summary").textContent = "computing…";
-    post("api/compare", { toml: S.toml, nodes: [n], step_deg: S.result ? S.result.step_deg : 0.5 })
+    const toml = S.toml;
+    post("api/compare", { toml, nodes: [n], step_deg: S.result ? S.result.step_deg : 0.5 })
       .then((r) => r.json())
-      .then((c) => { S.compare = c; drawCompare(); })
-      .catch((e) => { $("compare-summary").textContent = e.message; });
+      .then((c) => { S.compare = c; S.compareFor = toml; drawCompare(); })
+      .catch((e) => { S.compare = null; S.compareFor = toml; $("compare-summary").textContent = e.message; drawCompare(); })
+      .finally(() => {
+        S.comparing = false;
+        if (S.compareAgain || S.compareFor !== S.toml) { S.compareAgain = false; if (S.compareFor !== S.toml) runCompare(); }
+      });
   }
 
   function drawCompare() {
     const c = S.compare;
     if (!c) return;
+    if (!REPORT && S.compareFor !== S.toml) {
+      $("compare-summary").textContent = "updating for the edited mechanism…";
+      return;
+    }
     const run = c.runs[0];
     $("compare-summary").textContent = `N = ${run.nodes}: largest error ${fmt(100 * run.max_rel_error, 3)} % of the peak acceleration, mean ${fmt(100 * run.mean_rel_error, 3)} %`;
     if (!S.cmpPlots) {

@@ -75,6 +75,8 @@ def test_dragging_a_node_gives_the_numbers_of_camkin_analyze_on_the_edited_file(
     drag_node(page, 1, 25, -18)
     acc1 = series(page, "acceleration")
     assert acc1 != acc0
+    # the comparison follows the edit: its exact curve is the new one
+    assert page.evaluate("window.studio.compare.exact") == acc1
     assert max(abs(a - b) for a, b in zip(acc0, acc1)) > 1000  # cm/s², of a 27 000 cm/s² peak
     text = page.locator("#editor").input_value()
     assert text == page.evaluate("window.studio.toml")
@@ -155,3 +157,20 @@ def test_the_speed_slider_shows_where_the_follower_jumps(serve, page):
     page.locator("#rpm").fill(str(int(jump * 1.1) + 1))
     assert "jumps" in page.locator("#dynamics-summary").inner_text()
     assert page.errors == []
+
+
+import pytest  # noqa: E402
+
+
+@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
+def test_every_example_opens_and_draws(serve, page, example, tmp_path):
+    shutil.copytree(EXAMPLES, tmp_path / "ex")
+    loaded(page, serve(tmp_path / "ex" / example))
+    assert page.errors == []
+    assert page.evaluate("window.studio.lastError") is None
+    assert inked(page, "#drawing") > 2000
+    assert inked(page, '#plots canvas[data-key="acceleration"]') > 2000
+    n = page.evaluate("window.studio.result.frames.length")
+    page.locator("#angle").fill(str(n // 3))
+    assert page.evaluate("window.studio.result.frames[window.studio.index].contact") is not None
+    page.screenshot(path=str(ROOT / "target" / f"studio-{example}.png"))
