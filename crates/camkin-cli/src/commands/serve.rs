@@ -129,8 +129,13 @@ pub fn run_report(args: &ReportArgs) -> Result<(), Failure> {
         max_seconds: 60.0,
         ..Limits::default()
     };
-    let step_deg = crate::studio::step(Some(args.step.deg()), &limits)
-        .map_err(|e| Failure::Input(anyhow!("--step: {}", e.body().error.message)))?;
+    let step_deg = crate::studio::step(Some(args.step.deg()), &limits).map_err(|_| {
+        Failure::Input(anyhow!(
+            "--step: {}° must be from {}° to 10° and divide 360°",
+            args.step.deg(),
+            limits.min_step_deg
+        ))
+    })?;
     let html = report::html(&session.text, &session.source, step_deg, limit, &limits).map_err(
         |e| match e {
             StudioError::Input { message, .. } => Failure::Input(anyhow!(message)),

@@ -7,6 +7,7 @@ mod cli_engineer;
 mod cli_output;
 mod cli_plot;
 mod cli_simulate;
+mod cli_studio;
 mod cli_study;
 mod cli_synth;
 mod common;

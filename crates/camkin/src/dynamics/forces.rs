@@ -239,3 +239,55 @@ pub fn hertz_line_pressure(force: f64, width: f64, r1: f64, r2: f64, e_star: f64
 pub fn effective_modulus(e1: f64, nu1: f64, e2: f64, nu2: f64) -> f64 {
     1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cam::{Cam, Follower, Sense};
+    use crate::curve::Circle;
+    use crate::{Point2, Vec2};
+    use std::sync::Arc;
+
+    /// An eccentric disc (R = 40 mm, e = 5 mm) under a flat face: `s = R + e cos θ`, so at any
+    /// constant speed ω the contact force is `−m e ω² cos θ − c e ω sin θ + F₀ + k e (1 + cos θ)`
+    /// (the lever is 1: the pressure angle is 0).
+    #[test]
+    fn force_coefficients_give_the_closed_form_force_at_any_speed() {
+        let (r, e) = (0.04, 0.005);
+        let disc = Arc::new(Circle::new(Point2::new(e, 0.0), r).unwrap());
+        let cam = Cam::from_rpm(disc, Point2::origin(), Sense::Ccw, 300.0).unwrap();
+        let m = Mechanism::new(
+            cam,
+            Follower::TranslatingFlat {
+                direction: Vec2::x(),
+            },
+        )
+        .unwrap();
+        let p = FollowerDynamics {
+            mass: 0.5,
+            inertia: 0.0,
+            spring_stiffness: 2.0e4,
+            spring_preload: 200.0,
+            damping: 3.0,
+            restitution: 0.0,
+            gravity: Vec2::zeros(),
+        };
+        let f = Forces::new(&m, p).unwrap();
+        let w0 = m.cam().speed();
+        for k in 0..24 {
+            let th = k as f64 * 0.27;
+            let s = f.at(th).unwrap();
+            let [c2, c1, c0] = f.force_coefficients(&s);
+            for w in [0.0, w0, 3.0 * w0] {
+                let exact = -p.mass * e * w * w * th.cos() - p.damping * e * w * th.sin()
+                    + p.spring_preload
+                    + p.spring_stiffness * e * (1.0 + th.cos());
+                let got = (c2 * w * w + c1 * w + c0) / s.lever;
+                assert!(
+                    (got - exact).abs() < 1e-9 * exact.abs().max(1.0),
+                    "θ = {th}, ω = {w}: {got} vs {exact}"
+                );
+            }
+        }
+    }
+}
