@@ -174,3 +174,34 @@ def test_every_example_opens_and_draws(serve, page, example, tmp_path):
     page.locator("#angle").fill(str(n // 3))
     assert page.evaluate("window.studio.result.frames[window.studio.index].contact") is not None
     page.screenshot(path=str(ROOT / "target" / f"studio-{example}.png"))
+
+
+def test_hover_shows_values_with_units_and_play_turns_the_cam(serve, page):
+    loaded(page, serve())
+    box = page.locator('#plots canvas[data-key="acceleration"]').bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    tip = page.locator("#tooltip")
+    assert tip.is_visible()
+    assert "cam angle" in tip.inner_text() and "cm/s²" in tip.inner_text()
+    page.locator("#play").click()
+    page.wait_for_function("window.studio.index > 10")
+    page.locator("#play").click()
+    stopped = page.evaluate("window.studio.index")
+    page.wait_for_timeout(200)
+    assert page.evaluate("window.studio.index") == stopped
+    assert page.errors == []
+
+
+def test_a_file_with_an_error_opens_to_be_mended(serve, page, tmp_path):
+    good = (EXAMPLES / "paper.toml").read_text()
+    (tmp_path / "cam.toml").write_text(good.replace('kind = "spline"', 'kind = "splin"'))
+    page.goto(serve(tmp_path / "cam.toml"))
+    page.wait_for_selector("#error:not([hidden])")
+    assert "line 11, column 8" in page.locator("#error").inner_text()
+    page.evaluate(
+        "t => { const e = document.querySelector('#editor'); e.value = t; e.dispatchEvent(new Event('input')); }",
+        good,
+    )
+    page.wait_for_function("window.studio.result && window.studio.idle()")
+    assert page.locator("#error").is_hidden()
+    assert [e for e in page.errors if "422" not in e] == []
