@@ -255,7 +255,9 @@ pub fn analyze(
     let mech = &parsed.built.mechanism;
     let unit = parsed.built.length_unit;
     let angles = revolution(step_deg);
-    check_work(mech, 2 * angles.len(), limits)?;
+    // three sweeps: the table, the design checks and, with [dynamics], the forces
+    let sweeps = if parsed.spec.dynamics.is_some() { 3 } else { 2 };
+    check_work(mech, sweeps * angles.len(), limits)?;
     let units = Units::new(mech, unit, AngleUnit::Deg, Per::S);
     let mut sweep = AnalysisSweep::new(mech, &angles, true, angles.len());
     let rows: Vec<AnalysisRow> = sweep.by_ref().flatten().collect();
@@ -575,8 +577,10 @@ fn dynamics(
     };
     let mut coefficients = Vec::with_capacity(angles.len());
     let (mut jump, mut jump_at) = (f64::INFINITY, None);
+    // a warm sweep: a cold search at every angle would scan a large profile 720 times
+    let mut sweep = mech.sweep();
     for &a in angles {
-        match forces.at(deg_to_rad(a)) {
+        match sweep.step(deg_to_rad(a)).map(|s| forces.from_state(&s)) {
             Ok(s) => {
                 let [c2, c1, c0] = forces.force_coefficients(&s);
                 coefficients.push(Some([c2, c1, c0, s.lever]));

@@ -25,7 +25,7 @@
 //! on up to a target speed is a maximum over the revolution of a linear bound.
 
 use super::{DynamicsError, FollowerDynamics};
-use crate::cam::{CamError, Mechanism, Travel};
+use crate::cam::{CamError, FollowerState, Mechanism, Travel};
 use crate::geometry::cross;
 
 /// The forces at one cam angle under permanent contact (SI units).
@@ -102,7 +102,14 @@ impl<'a> Forces<'a> {
 
     /// The forces at cam angle `theta` (rad) at the cam's own speed.
     pub fn at(&self, theta: f64) -> Result<ForceState, CamError> {
-        let s = self.mech.analyze(theta)?;
+        Ok(self.from_state(&self.mech.analyze(theta)?))
+    }
+
+    /// The forces at the cam's own speed from the follower's state `s` (of this mechanism, at
+    /// its cam angle): a sweep's states ([`Mechanism::sweep`]) give the forces over a revolution
+    /// without a cold search at every angle.
+    pub fn from_state(&self, s: &FollowerState) -> ForceState {
+        let theta = s.cam_angle;
         let cam = self.mech.cam();
         let (w, al) = (cam.speed(), cam.angular_acceleration());
         let orient = self.mech.orientation();
@@ -118,7 +125,7 @@ impl<'a> Forces<'a> {
         let torque = cam.direction().sign() * f * cross(r, n);
         let q1 = s.velocity / w;
         let q2 = (s.acceleration - q1 * al) / (w * w);
-        Ok(ForceState {
+        ForceState {
             cam_angle: theta,
             lift,
             contact_force: f,
@@ -129,7 +136,7 @@ impl<'a> Forces<'a> {
             cam_radius: s.radius_of_curvature,
             pressure_angle: s.pressure_angle(),
             dq: [q1, q2],
-        })
+        }
     }
 
     /// `F |J|` at cam speed ω (rad/s, constant) from a state's geometry: `(c2, c1, c0)` of
