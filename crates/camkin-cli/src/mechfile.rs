@@ -40,7 +40,7 @@ pub struct Warning {
     pub at: Option<(usize, usize)>,
 }
 
-/// A mechanism built from a file's text (see [`build_text`]).
+/// A mechanism built from a file's text, with its spec and placed warnings.
 #[derive(Debug, Clone)]
 pub struct FromText {
     /// the spec as read
@@ -187,8 +187,9 @@ fn build_spec(
     Ok(built)
 }
 
-/// Builds a parsed spec with `options`, placing errors and warnings in `text`.
-fn build_placed(
+/// Builds a spec parsed from `text` with `options` (a server's confined folder, SI units),
+/// placing errors and warnings in the text (nothing is printed).
+pub fn build_placed(
     spec: &MechanismSpec,
     text: &str,
     name: &str,
@@ -211,18 +212,6 @@ fn build_placed(
         })
         .collect();
     Ok((built, warnings))
-}
-
-/// Parses and builds a mechanism file's text with `options` (a server's confined folder, SI
-/// units), with its spec and its warnings placed in the text (nothing is printed).
-pub fn build_text(text: &str, name: &str, options: &BuildOptions) -> Result<FromText, InputError> {
-    let spec = parse_spec(text, name)?;
-    let (built, warnings) = build_placed(&spec, text, name, options)?;
-    Ok(FromText {
-        spec,
-        built,
-        warnings,
-    })
 }
 
 /// 1-based `(line, column)` of byte offset `at` in `text` (column in characters).

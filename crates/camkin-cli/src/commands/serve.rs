@@ -77,7 +77,7 @@ fn open(path: Option<&PathBuf>) -> Result<Session, Failure> {
 
 pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
     let session = open(args.mechanism.as_ref())?;
-    if let Err(e) = crate::studio::model::build(&session.text, &session.source, false) {
+    if let Err(e) = crate::studio::model::build(&session.text, &session.source) {
         let e = match e {
             StudioError::Input { message, .. } => message,
             other => format!("{other:?}"),

@@ -27,29 +27,36 @@ pub struct Source {
     pub folder: Option<PathBuf>,
 }
 
-/// Builds the mechanism in `text` (in its own units, or SI), points files confined to the
-/// source's folder.
-pub fn build(text: &str, source: &Source, si: bool) -> Result<FromText, StudioError> {
+/// How a spec from `source` is built: points files confined to the source's folder (the
+/// built-in cam has none, so it may read no file at all).
+fn options(spec: &MechanismSpec, source: &Source, si: bool) -> Result<BuildOptions, StudioError> {
     let base_dir = match &source.folder {
         Some(f) => f.clone(),
-        None => {
-            // the built-in cam has no folder: nothing may be read
-            let spec = mechfile::parse_spec(text, &source.name)?;
-            if spec.cam.profile.path.is_some() {
-                return Err(StudioError::Input {
-                    message: "cam.profile.path: no folder is open, so no points file can be read; start `camkin serve FILE.toml` to read points files beside FILE.toml".into(),
-                    at: None,
-                });
-            }
-            PathBuf::from(".")
+        None if spec.cam.profile.path.is_some() => {
+            return Err(StudioError::Input {
+                message: "cam.profile.path: no folder is open, so no points file can be read; start `camkin serve FILE.toml` to read points files beside FILE.toml".into(),
+                at: None,
+            });
         }
+        None => PathBuf::from("."),
     };
-    let options = BuildOptions {
+    Ok(BuildOptions {
         base_dir,
         si,
         confine: true,
-    };
-    Ok(mechfile::build_text(text, &source.name, &options)?)
+    })
+}
+
+/// Builds the mechanism in `text` (in its own units), errors and warnings placed in the text.
+pub fn build(text: &str, source: &Source) -> Result<FromText, StudioError> {
+    let spec = mechfile::parse_spec(text, &source.name)?;
+    let (built, warnings) =
+        mechfile::build_placed(&spec, text, &source.name, &options(&spec, source, false)?)?;
+    Ok(FromText {
+        spec,
+        built,
+        warnings,
+    })
 }
 
 /// A number series over the cam angles, with its name and unit.
@@ -227,7 +234,11 @@ pub fn revolution(step_deg: f64) -> Vec<f64> {
 }
 
 /// Refuses work over the limits: too many angles, a sweep estimated over the time allowed.
-fn check_work(mech: &Mechanism, angles: usize, limits: &Limits) -> Result<(), StudioError> {
+pub(super) fn check_work(
+    mech: &Mechanism,
+    angles: usize,
+    limits: &Limits,
+) -> Result<(), StudioError> {
     let seconds = mech.sweep_seconds_estimate(angles);
     if seconds > limits.max_seconds {
         return Err(StudioError::TooMuch {
@@ -251,7 +262,7 @@ pub fn analyze(
     limits: &Limits,
 ) -> Result<Analysis, StudioError> {
     let t0 = Instant::now();
-    let parsed = build(text, source, false)?;
+    let parsed = build(text, source)?;
     let mech = &parsed.built.mechanism;
     let unit = parsed.built.length_unit;
     let angles = revolution(step_deg);
@@ -567,8 +578,9 @@ fn dynamics(
     if spec.dynamics.is_none() {
         return Ok(None);
     }
-    let si = build(text, source, true)?;
-    let (Some(params), mech) = (si.built.dynamics, &si.built.mechanism) else {
+    // the spec already read, built again in SI units
+    let (si, _) = mechfile::build_placed(spec, text, &source.name, &options(spec, source, true)?)?;
+    let (Some(params), mech) = (si.dynamics, &si.mechanism) else {
         return Ok(None);
     };
     let forces = match Forces::new(mech, params) {
@@ -642,7 +654,7 @@ pub fn compare(
     limits: &Limits,
 ) -> Result<Compare, StudioError> {
     let t0 = Instant::now();
-    let parsed = build(text, source, false)?;
+    let parsed = build(text, source)?;
     let mech = &parsed.built.mechanism;
     let angles = revolution(step_deg);
     let total_nodes: usize = nodes.iter().sum();

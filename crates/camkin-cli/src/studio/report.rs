@@ -20,18 +20,10 @@ pub fn csv(
     step_deg: f64,
     limits: &Limits,
 ) -> Result<String, StudioError> {
-    let parsed = model::build(text, source, false)?;
+    let parsed = model::build(text, source)?;
     let mech = &parsed.built.mechanism;
     let angles = model::revolution(step_deg);
-    if mech.sweep_seconds_estimate(angles.len()) > limits.max_seconds {
-        return Err(StudioError::TooMuch {
-            message: format!(
-                "{} cam angles on this profile would take more than {} s; use `camkin analyze`",
-                angles.len(),
-                limits.max_seconds
-            ),
-        });
-    }
+    model::check_work(mech, angles.len(), limits)?;
     let units = Units::new(mech, parsed.built.length_unit, AngleUnit::Deg, Per::S);
     let columns = analysis_columns(&units);
     let mut rows = AnalysisSweep::new(mech, &angles, true, angles.len());

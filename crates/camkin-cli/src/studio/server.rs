@@ -109,37 +109,28 @@ pub fn serve(
     })
 }
 
-async fn index() -> Response {
+/// A response that is `body` of type `content_type`, never cached (the page follows the binary).
+fn asset(content_type: &'static str, body: &'static str) -> Response {
     (
         [
-            (header::CONTENT_TYPE, "text/html; charset=utf-8"),
+            (header::CONTENT_TYPE, content_type),
             (header::CACHE_CONTROL, "no-store"),
         ],
-        assets::INDEX_HTML,
+        body,
     )
         .into_response()
+}
+
+async fn index() -> Response {
+    asset("text/html; charset=utf-8", assets::INDEX_HTML)
 }
 
 async fn script() -> Response {
-    (
-        [
-            (header::CONTENT_TYPE, "text/javascript; charset=utf-8"),
-            (header::CACHE_CONTROL, "no-store"),
-        ],
-        assets::STUDIO_JS,
-    )
-        .into_response()
+    asset("text/javascript; charset=utf-8", assets::STUDIO_JS)
 }
 
 async fn style() -> Response {
-    (
-        [
-            (header::CONTENT_TYPE, "text/css; charset=utf-8"),
-            (header::CACHE_CONTROL, "no-store"),
-        ],
-        assets::STYLE_CSS,
-    )
-        .into_response()
+    asset("text/css; charset=utf-8", assets::STYLE_CSS)
 }
 
 async fn not_found(uri: axum::http::Uri) -> StudioError {
@@ -234,17 +225,45 @@ fn request_text(req: &AnalyzeRequest) -> Result<String, StudioError> {
     }
 }
 
-async fn analyze(
-    State(state): State<Arc<AppState>>,
+/// Runs `work` on an analysis request's text (with its dragged nodes written in), step and
+/// pressure-angle limit, all checked first.
+async fn with_analysis_request<T: Send + 'static>(
+    state: &AppState,
     body: Result<Bytes, BytesRejection>,
-) -> Result<Response, StudioError> {
+    work: impl FnOnce(String, &Source, f64, f64, &Limits) -> Result<T, StudioError> + Send + 'static,
+) -> Result<T, StudioError> {
     let req: AnalyzeRequest = parse(body, &state.limits)?;
     let step_deg = step(req.step_deg, &state.limits)?;
     let limit = pressure_limit(req.pressure_limit_deg)?;
     let (source, limits) = (state.session.source.clone(), state.limits);
-    let answer = run(&state, move || {
+    run(state, move || {
         let toml = request_text(&req)?;
-        let result = model::analyze(&toml, &source, step_deg, limit, &limits)?;
+        work(toml, &source, step_deg, limit, &limits)
+    })
+    .await
+}
+
+/// A download: `body` of `content_type`, saved as `filename`.
+fn attachment(content_type: &'static str, filename: &'static str, body: String) -> Response {
+    (
+        [
+            (header::CONTENT_TYPE, content_type.to_string()),
+            (
+                header::CONTENT_DISPOSITION,
+                format!("attachment; filename=\"{filename}\""),
+            ),
+        ],
+        body,
+    )
+        .into_response()
+}
+
+async fn analyze(
+    State(state): State<Arc<AppState>>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Response, StudioError> {
+    let answer = with_analysis_request(&state, body, |toml, source, step_deg, limit, limits| {
+        let result = model::analyze(&toml, source, step_deg, limit, limits)?;
         Ok(AnalyzeAnswer { toml, result })
     })
     .await?;
@@ -288,49 +307,20 @@ async fn csv(
     State(state): State<Arc<AppState>>,
     body: Result<Bytes, BytesRejection>,
 ) -> Result<Response, StudioError> {
-    let req: AnalyzeRequest = parse(body, &state.limits)?;
-    let step_deg = step(req.step_deg, &state.limits)?;
-    let (source, limits) = (state.session.source.clone(), state.limits);
-    let text = run(&state, move || {
-        let toml = request_text(&req)?;
-        super::report::csv(&toml, &source, step_deg, &limits)
+    let text = with_analysis_request(&state, body, |toml, source, step_deg, _, limits| {
+        super::report::csv(&toml, source, step_deg, limits)
     })
     .await?;
-    Ok((
-        [
-            (header::CONTENT_TYPE, "text/csv; charset=utf-8"),
-            (
-                header::CONTENT_DISPOSITION,
-                "attachment; filename=\"analysis.csv\"",
-            ),
-        ],
-        text,
-    )
-        .into_response())
+    Ok(attachment("text/csv; charset=utf-8", "analysis.csv", text))
 }
 
 async fn report(
     State(state): State<Arc<AppState>>,
     body: Result<Bytes, BytesRejection>,
 ) -> Result<Response, StudioError> {
-    let req: AnalyzeRequest = parse(body, &state.limits)?;
-    let step_deg = step(req.step_deg, &state.limits)?;
-    let limit = pressure_limit(req.pressure_limit_deg)?;
-    let (source, limits) = (state.session.source.clone(), state.limits);
-    let html = run(&state, move || {
-        let toml = request_text(&req)?;
-        super::report::html(&toml, &source, step_deg, limit, &limits)
+    let html = with_analysis_request(&state, body, |toml, source, step_deg, limit, limits| {
+        super::report::html(&toml, source, step_deg, limit, limits)
     })
     .await?;
-    Ok((
-        [
-            (header::CONTENT_TYPE, "text/html; charset=utf-8"),
-            (
-                header::CONTENT_DISPOSITION,
-                "attachment; filename=\"report.html\"",
-            ),
-        ],
-        html,
-    )
-        .into_response())
+    Ok(attachment("text/html; charset=utf-8", "report.html", html))
 }
