@@ -572,7 +572,7 @@
     f.forEach((v, i) => { if (v !== null && v < min) { min = v; at = i; } });
     $("rpm-readout").textContent = `${fmt(rpm, 4)} rpm (the file: ${fmt(d.rpm, 4)} rpm)`;
     const sum = $("dynamics-summary");
-    const jump = d.jump_rpm ? `the follower first leaves the cam at ${fmt(d.jump_rpm, 4)} rpm, at ${fmt(d.jump_angle_deg, 4)}°` : "the contact holds at every speed";
+    const jump = d.jump_rpm ? `The follower first leaves the cam at ${fmt(d.jump_rpm, 4)} rpm, at ${fmt(d.jump_angle_deg, 4)}°` : "The contact holds at every speed";
     if (min < 0) {
       sum.textContent = `At ${fmt(rpm, 4)} rpm the contact force falls below zero (lowest ${fmt(min, 4)} N at ${fmt(angleAt(at), 4)}°): the follower jumps. ${jump}.`;
       sum.className = "bad";
