@@ -9,11 +9,13 @@
 //! | [`ClosedSpline`] | periodic C² cubic spline through nodes (the paper's cam) | node i at `u = i` (or cumulative chord length) |
 //! | [`Circle`] | circle | angle from the +x axis, rad |
 //! | [`Ellipse`] | ellipse with semi-axes and rotation | eccentric anomaly, rad |
+//! | [`InvoluteGear`] | external involute spur gear: flanks, tip, root fillet, tip relief | arc length along each piece |
 //! | [`Line`] | infinite straight line | arc length from its anchor point |
 //! | [`PointCurve`] | a single point (knife edge) | none |
 
 mod circle;
 mod ellipse;
+mod involute_gear;
 mod line;
 mod point;
 mod points_file;
@@ -21,6 +23,9 @@ mod spline;
 
 pub use circle::Circle;
 pub use ellipse::Ellipse;
+pub use involute_gear::{
+    involute_function, InvoluteGear, InvoluteGearSpec, ReliefShape, TipRelief,
+};
 pub use line::Line;
 pub use point::PointCurve;
 pub use points_file::{
@@ -113,6 +118,12 @@ pub trait Curve: std::fmt::Debug + Send + Sync + std::any::Any {
     /// derivative jumps): a cubic spline's nodes. Empty for analytic curves.
     fn breakpoints(&self) -> Vec<f64> {
         Vec::new()
+    }
+
+    /// The order of the curve's rotational symmetry about its frame's origin: `z` for a gear of
+    /// `z` teeth (it looks the same turned by `2π/z`), 1 for a curve without such symmetry.
+    fn symmetry(&self) -> u32 {
+        1
     }
 
     /// `r(u)`.
@@ -208,6 +219,16 @@ pub enum CurveError {
         message: String,
         /// the line's text
         content: String,
+    },
+    /// A gear that cannot be made from the data given.
+    #[error("{field} = {}: {reason}", crate::human::human(*.value))]
+    Gear {
+        /// the field, as in mechanism files
+        field: &'static str,
+        /// the value given
+        value: f64,
+        /// why not
+        reason: String,
     },
 }
 
