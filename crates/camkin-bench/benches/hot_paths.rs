@@ -104,8 +104,8 @@ fn contact(c: &mut Criterion) {
 fn followers_bench(c: &mut Criterion) {
     let _ = paper_mechanism(false);
     for f in followers() {
-        let m = mechanism(f);
         let name = f.kind_name();
+        let m = mechanism(f);
         let mut k = 0u64;
         c.bench_function(&format!("cold/{name}"), |b| {
             b.iter(|| {
@@ -124,7 +124,7 @@ fn followers_bench(c: &mut Criterion) {
         });
     }
     // the full analysis (every output but the jerk), flat face
-    let m = mechanism(followers()[0]);
+    let m = mechanism(followers()[0].clone());
     let mut sweep = m.sweep();
     let mut th = 0.0f64;
     c.bench_function("sweep_full_state/translating-flat", |b| {

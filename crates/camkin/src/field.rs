@@ -16,6 +16,8 @@ pub enum Field {
     Profile(ProfileField),
     /// a field of `[follower]`
     Follower(FollowerField),
+    /// a field of `[follower.profile]` (the curve a general follower carries)
+    FollowerProfile(ProfileField),
     /// a field of `[dynamics]`
     Dynamics(DynamicsField),
 }
@@ -68,6 +70,32 @@ pub enum ProfileField {
     Segments,
     /// `segments[i].law`, `.rise` or `.degrees`
     Segment(usize, SegmentField),
+    /// `module` (a gear's)
+    Module,
+    /// `teeth`
+    Teeth,
+    /// `pressure_angle_deg`
+    PressureAngle,
+    /// `addendum` (factor)
+    Addendum,
+    /// `dedendum` (factor)
+    Dedendum,
+    /// `profile_shift` (coefficient)
+    ProfileShift,
+    /// `backlash` (thinning on the pitch circle, length)
+    Backlash,
+    /// `fillet_radius`
+    FilletRadius,
+    /// `tip_relief` (amount at the tip, length)
+    TipRelief,
+    /// `tip_relief_length` (along the line of action)
+    TipReliefLength,
+    /// `tip_relief_shape`
+    TipReliefShape,
+    /// `anchor` (a line's point)
+    Anchor,
+    /// `direction` (a line's)
+    Direction,
 }
 
 /// Fields of one motion segment.
@@ -104,6 +132,8 @@ pub enum FollowerField {
     Closing,
     /// `initial_angle_deg`
     InitialAngle,
+    /// `[follower.profile]`: the curve a general follower carries
+    Profile,
 }
 
 /// Fields of `[dynamics]`.
@@ -136,6 +166,7 @@ impl Field {
             Field::Cam(_) => Field::Cam(CamField::Table),
             Field::Profile(_) => Field::Profile(ProfileField::Table),
             Field::Follower(_) => Field::Follower(FollowerField::Table),
+            Field::FollowerProfile(_) => Field::FollowerProfile(ProfileField::Table),
             Field::Dynamics(_) => Field::Dynamics(DynamicsField::Table),
         }
     }
@@ -152,8 +183,12 @@ impl Field {
                     p.push(Name(n));
                 }
             }
-            Field::Profile(f) => {
-                p.extend([Name("cam"), Name("profile")]);
+            Field::Profile(f) | Field::FollowerProfile(f) => {
+                p.extend(if matches!(self, Field::Profile(_)) {
+                    [Name("cam"), Name("profile")]
+                } else {
+                    [Name("follower"), Name("profile")]
+                });
                 match f {
                     ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),
                     ProfileField::Segment(i, s) => {
@@ -214,6 +249,19 @@ impl ProfileField {
             ProfileField::Path => "path",
             ProfileField::BaseRadius => "base_radius",
             ProfileField::Segments => "segments",
+            ProfileField::Module => "module",
+            ProfileField::Teeth => "teeth",
+            ProfileField::PressureAngle => "pressure_angle_deg",
+            ProfileField::Addendum => "addendum",
+            ProfileField::Dedendum => "dedendum",
+            ProfileField::ProfileShift => "profile_shift",
+            ProfileField::Backlash => "backlash",
+            ProfileField::FilletRadius => "fillet_radius",
+            ProfileField::TipRelief => "tip_relief",
+            ProfileField::TipReliefLength => "tip_relief_length",
+            ProfileField::TipReliefShape => "tip_relief_shape",
+            ProfileField::Anchor => "anchor",
+            ProfileField::Direction => "direction",
         })
     }
 }
@@ -241,6 +289,7 @@ impl FollowerField {
             FollowerField::ArmLength => "arm_length",
             FollowerField::Closing => "closing",
             FollowerField::InitialAngle => "initial_angle_deg",
+            FollowerField::Profile => "profile",
         })
     }
 }

@@ -145,6 +145,42 @@ pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &
             });
             (back, 0.0)
         }
+        FollowerCurve::Carried(curve) => {
+            // the carried curve itself: a closed one whole, an open one (a line) near the contact
+            use camkin::curve::Domain;
+            let (lo, hi, closed) = match curve.domain() {
+                Domain::Periodic { period } => (0.0, period, true),
+                Domain::Interval { min, max } => {
+                    let local = pose.to_body(c);
+                    // the parameter nearest the contact, by samples of a generous stretch
+                    let (a, b) = (min.max(-1e3 * size), max.min(1e3 * size));
+                    let near = (0..=2000)
+                        .map(|k| a + (b - a) * f64::from(k) / 2000.0)
+                        .min_by(|x, y| {
+                            let dx = (curve.position(*x) - local).norm();
+                            let dy = (curve.position(*y) - local).norm();
+                            dx.total_cmp(&dy)
+                        })
+                        .unwrap_or(0.0);
+                    let span = 0.6 * size / curve.eval(near).metric().max(f64::MIN_POSITIVE);
+                    ((near - span).max(min), (near + span).min(max), false)
+                }
+                Domain::Point => (0.0, 0.0, false),
+            };
+            let n = 4000;
+            let pts: Vec<Point2> = (0..=n)
+                .map(|k| {
+                    pose.to_world(curve.position(lo + (hi - lo) * f64::from(k) / f64::from(n)))
+                })
+                .collect();
+            shapes.push(Shape::Polyline {
+                pts,
+                color: FOLLOWER,
+                width: 2,
+                closed,
+            });
+            (pose.origin, 0.0)
+        }
         _ => (pose.origin, 0.0),
     };
     match joint {

@@ -71,7 +71,7 @@ impl Mechanism {
         }
         let qd = nu.dot(&cam.velocity_at(c)) / den;
         let body_b = g.joint.body(touch.q, qd, 0.0);
-        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c);
+        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c, touch.v);
         let pairing = Pairing {
             u_a: touch.u,
             u_b,
@@ -131,7 +131,8 @@ impl Mechanism {
         let body_b = g.joint.body(touch.q, qd, qdd);
         let kappa_conv = self.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
-        let jerk = if at_breakpoint || !self.options.jerk {
+        // a carried curve's jerk would need its fourth derivative: not computed
+        let jerk = if at_breakpoint || !self.options.jerk || g.carried.is_some() {
             None
         } else {
             let dq = self.jet_derivatives(theta, cam, touch)?;

@@ -14,7 +14,6 @@ use std::sync::Arc;
 impl Mechanism {
     /// Validates and prepares a mechanism.
     pub fn new(cam: Cam, follower: Follower) -> Result<Self, CamError> {
-        let geometry = Geometry::new(follower, cam.pivot)?;
         let profile = cam.profile.as_ref();
         let period = match profile.domain() {
             Domain::Periodic { period } => period,
@@ -37,6 +36,7 @@ impl Mechanism {
                 reason: "the cam's size (its greatest reach from its axis) must be from 1e-100 to 1e100 length units",
             });
         }
+        let geometry = Geometry::new(follower, cam.pivot, size)?;
         geometry.model.check_reach(size)?;
         cam.check_magnitudes(size)?;
         let mut options = AnalysisOptions::for_size(size);
@@ -47,6 +47,7 @@ impl Mechanism {
             .min(min_radius)
             .min(geometry.model.roller_radius().unwrap_or(f64::INFINITY));
         options.newton_contraction = 1e3 / sharpest;
+        let roller = geometry.model.roller_radius().is_some();
         let mut m = Self {
             cam,
             geometry,
@@ -57,7 +58,7 @@ impl Mechanism {
             size,
             orientation,
             convex,
-            roller: geometry.model.roller_radius().is_some(),
+            roller,
             mean_speed,
             cusps,
             breakpoints,
@@ -105,7 +106,7 @@ impl Mechanism {
 
     /// The follower's contact curve in its own frame (see [`Mechanism::follower_body`]).
     pub fn follower_curve(&self) -> FollowerCurve {
-        self.geometry.curve
+        self.geometry.curve.clone()
     }
 
     /// The radius of a roller follower.
@@ -204,7 +205,10 @@ impl Mechanism {
     /// q·d`, angle 0; oscillating: origin at the arm pivot, angle `q`) and its contact curve in that
     /// frame (face: a line, roller: a circle, knife: a point; oriented material-on-the-left).
     pub fn follower_body(&self, q: f64) -> (crate::body::Pose, Arc<dyn Curve>) {
-        (self.geometry.joint.pose(q), self.geometry.curve.to_arc())
+        (
+            self.geometry.joint.pose(q),
+            self.geometry.curve.clone().to_arc(),
+        )
     }
 
     /// The shared profile.

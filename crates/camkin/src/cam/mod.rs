@@ -13,6 +13,7 @@
 //! the world frame with its origin on the rotation axis. Other conventions: see the
 //! [crate docs](crate#sign-conventions).
 
+mod carried;
 mod checks;
 mod derivatives;
 mod error;
@@ -33,7 +34,7 @@ mod travel;
 
 pub use checks::{DesignChecks, RoundTrip};
 pub use error::{CamError, StopReason};
-pub use follower::{Follower, FollowerCurve, Joint, Sense, LENGTH_RANGE};
+pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};
 pub use options::AnalysisOptions;
 pub use search::MAX_CANDIDATES;

@@ -13,6 +13,9 @@ use crate::geometry::{rot90, Frame, Point2};
 pub(crate) struct Touch {
     pub(crate) u: f64,
     pub(crate) q: f64,
+    /// the follower curve's parameter at the contact (a carried curve's; 0 for the named kinds,
+    /// whose contact curve gives it in closed form)
+    pub(crate) v: f64,
 }
 
 impl Mechanism {
@@ -78,7 +81,7 @@ impl Mechanism {
                 } else {
                     u.rem_euclid(self.period)
                 };
-                return Ok((Touch { u, q }, e));
+                return Ok((Touch { u, q, v: 0.0 }, e));
             }
         }
         Err(CamError::NoConvergence {
@@ -331,6 +334,9 @@ impl Mechanism {
     /// function (the crossings, for a knife edge) are refined and the best first touch among them
     /// is kept.
     pub(crate) fn global_touch(&self, theta: f64, frame: &Frame) -> Result<Touch, CamError> {
+        if let Some(c) = self.carried() {
+            return self.carried_global(c, theta, frame);
+        }
         let knife = self.geometry.is_knife();
         let on_path = self.geometry.model.centre_path().is_some();
         if self.convex {

@@ -52,6 +52,8 @@ pub enum Found {
 pub struct Sweep<'a> {
     mech: &'a Mechanism,
     prev: Option<Prev>,
+    /// the last contact found, and `dv/dθ` of a carried curve's parameter
+    last: Option<(Touch, f64)>,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -72,14 +74,19 @@ pub const MAX_WARM_STEP: f64 = 0.2;
 
 impl<'a> Sweep<'a> {
     pub(crate) fn new(mech: &'a Mechanism) -> Self {
-        Self { mech, prev: None }
+        Self {
+            mech,
+            prev: None,
+            last: None,
+        }
     }
 
     /// Analyses the next cam angle `theta` (rad).
     pub fn step(&mut self, theta: f64) -> Result<FollowerState, CamError> {
-        let r = self
-            .locate(theta)
-            .and_then(|(cam, frame, t, f)| self.mech.kinematics(theta, &cam, &frame, t, f));
+        let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
+            self.note(theta, t, f);
+            self.mech.kinematics(theta, &cam, &frame, t, f)
+        });
         self.remember(
             theta,
             r.as_ref().ok().map(|s| {
@@ -99,9 +106,10 @@ impl<'a> Sweep<'a> {
     /// The follower's position, velocity and acceleration only at the next cam angle `theta`
     /// (rad): the fast path ([`Mechanism::motion`]).
     pub fn step_motion(&mut self, theta: f64) -> Result<Motion, CamError> {
-        let r = self
-            .locate(theta)
-            .and_then(|(cam, frame, t, f)| self.mech.motion_at(theta, &cam, &frame, t, f));
+        let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
+            self.note(theta, t, f);
+            self.mech.motion_at(theta, &cam, &frame, t, f)
+        });
         self.remember(
             theta,
             r.as_ref().ok().map(|s| {
@@ -116,6 +124,22 @@ impl<'a> Sweep<'a> {
             }),
         );
         r
+    }
+
+    /// Keeps a carried curve's contact parameter and its rate (a difference quotient over the last
+    /// step when it was a continuation).
+    #[inline(always)]
+    fn note(&mut self, theta: f64, t: Touch, found: Found) {
+        if self.mech.geometry.carried.is_none() {
+            return;
+        }
+        let rate = match (self.prev, self.last) {
+            (Some(p), Some((l, _))) if matches!(found, Found::WarmStart) && theta != p.theta => {
+                (t.v - l.v) / (theta - p.theta)
+            }
+            _ => 0.0,
+        };
+        self.last = Some((t, rate));
     }
 
     /// The contact at `theta`: warm-started from the previous angle when there is one.
@@ -164,6 +188,10 @@ impl<'a> Sweep<'a> {
         // second-order extrapolation: the start is off by O(Δθ³)
         let u0 = p.u + dt * (p.du_dtheta + 0.5 * dt * p.d2u_dtheta2);
         let q0 = p.q + dt * (p.dq_dtheta + 0.5 * dt * p.d2q_dtheta2);
+        if let (Some(c), Some((last, rate))) = (m.carried(), self.last) {
+            let v0 = last.v + dt * rate;
+            return m.carried_warm(c, theta, frame, (u0, v0, q0), (p.theta, last));
+        }
         // on a non-convex profile a knife's crossing can vanish (it merges with its partner where
         // the line of travel grazes the profile) and the tip falls to another crossing: a
         // contact is a continuation only if Newton at the previous angle, started from it, comes

@@ -346,7 +346,10 @@ impl MechanismSpec {
         };
         let scale = if options.si { unit.metres() } else { 1.0 };
         let cam = &self.cam;
-        let follower = self.follower.build(scale)?;
+        let mut warnings = Vec::new();
+        let follower =
+            self.follower
+                .build(scale, &options.base_dir, options.confine, &mut warnings)?;
         let sense = cam.direction.unwrap_or(Sense::Ccw);
         let pivot = match cam.pivot {
             Some(p) => {
@@ -356,13 +359,12 @@ impl MechanismSpec {
             None => Point2::origin(),
         };
         // a synthesis places the follower relative to the cam's axis
-        let mut warnings = Vec::new();
+        let relative = follower.relative_to(pivot);
         let (profile, synthesis) = cam.profile.build(
             scale,
             &options.base_dir,
             options.confine,
-            &follower.relative_to(pivot),
-            sense,
+            super::profile::Place::Cam(&relative, sense),
             &mut warnings,
         )?;
         let speed = positive(Field::Cam(CamField::SpeedRpm), cam.speed_rpm)?;
@@ -393,7 +395,13 @@ impl MechanismSpec {
 }
 
 impl FollowerSpec {
-    fn build(&self, scale: f64) -> Result<Follower, SpecError> {
+    fn build(
+        &self,
+        scale: f64,
+        base: &std::path::Path,
+        confine: bool,
+        warnings: &mut Vec<SpecWarning>,
+    ) -> Result<Follower, SpecError> {
         use FollowerField as F;
         let f = |x| Field::Follower(x);
         let kind_field = f(F::Kind);
@@ -414,7 +422,23 @@ impl FollowerSpec {
                 self.initial_angle_deg.is_some(),
                 f(F::InitialAngle),
             ),
+            ("profile", self.profile.is_some(), f(F::Profile)),
         ];
+        let mut carried = || -> Result<crate::cam::FollowerProfile, SpecError> {
+            let p = self.profile.as_ref().ok_or_else(|| SpecError::Missing {
+                field: kind_field,
+                kind: kind.to_string(),
+                missing: "profile",
+            })?;
+            let (curve, _) = p.build(
+                scale,
+                base,
+                confine,
+                super::profile::Place::Follower,
+                warnings,
+            )?;
+            Ok(crate::cam::FollowerProfile(curve))
+        };
         let dir = || -> Result<Vec2, SpecError> {
             self.direction
                 .map_or(Ok(Vec2::x()), |d| direction(f(F::Direction), d))
@@ -440,6 +464,27 @@ impl FollowerSpec {
             Ok(scale * positive(f(field), need(kind_field, kind, name, v)?)?)
         };
         Ok(match kind {
+            "translating" => {
+                check_kind(kind, present, &["direction", "offset", "profile"])?;
+                Follower::Translating {
+                    direction: dir()?,
+                    offset: offset()?,
+                    profile: carried()?,
+                }
+            }
+            "rotating" => {
+                check_kind(
+                    kind,
+                    present,
+                    &["pivot", "closing", "initial_angle_deg", "profile"],
+                )?;
+                Follower::Rotating {
+                    pivot: pivot()?,
+                    closing,
+                    initial_angle: initial()?,
+                    profile: carried()?,
+                }
+            }
             "translating-flat" => {
                 check_kind(kind, present, &["direction"])?;
                 Follower::TranslatingFlat { direction: dir()? }

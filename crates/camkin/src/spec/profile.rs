@@ -7,8 +7,8 @@ use super::ProfileSpec;
 use crate::cam::synthesis::synthesize;
 use crate::cam::{Follower, Sense};
 use crate::curve::{
-    read_points_file, Circle, ClosedSpline, Curve, CurveError, Ellipse, Parameterization,
-    MAX_POINTS,
+    read_points_file, Circle, ClosedSpline, Curve, CurveError, Ellipse, InvoluteGear,
+    InvoluteGearSpec, Line, Parameterization, TipRelief, MAX_POINTS,
 };
 use crate::field::{Field, ProfileField, SegmentField};
 use crate::motion::{Law, Program, Segment};
@@ -18,15 +18,15 @@ use std::sync::Arc;
 
 /// Where a spline's nodes came from, to place an error at a node.
 enum Nodes<'a> {
-    Inline,
+    Inline(fn(ProfileField) -> Field),
     File { path: &'a str, lines: &'a [usize] },
 }
 
 impl Nodes<'_> {
     fn error(&self, node: usize, message: String) -> SpecError {
         match self {
-            Nodes::Inline => SpecError::Rule {
-                field: Field::Profile(ProfileField::Point(node)),
+            Nodes::Inline(place) => SpecError::Rule {
+                field: place(ProfileField::Point(node)),
                 reason: message,
             },
             Nodes::File { path, lines } => SpecError::PointsFile {
@@ -38,8 +38,8 @@ impl Nodes<'_> {
     }
     fn whole(&self, message: String) -> SpecError {
         match self {
-            Nodes::Inline => SpecError::Rule {
-                field: Field::Profile(ProfileField::Points),
+            Nodes::Inline(place) => SpecError::Rule {
+                field: place(ProfileField::Points),
                 reason: message,
             },
             Nodes::File { path, .. } => SpecError::PointsFile {
@@ -102,10 +102,10 @@ fn spline(
         });
         if hi > UNEVEN_RATIO * lo {
             warnings.push(SpecWarning::UnevenNodes {
-                field: Field::Profile(match from {
-                    Nodes::Inline => ProfileField::Points,
-                    Nodes::File { .. } => ProfileField::Path,
-                }),
+                field: match from {
+                    Nodes::Inline(place) => place(ProfileField::Points),
+                    Nodes::File { .. } => Field::Profile(ProfileField::Path),
+                },
                 ratio: hi / lo,
             });
         }
@@ -126,18 +126,27 @@ type BuiltProfile = (
     Option<Arc<crate::cam::synthesis::SynthesizedProfile>>,
 );
 
+/// Where a profile is: the cam's (with the follower and sense a motion program is synthesised
+/// for) or a general follower's.
+pub(super) enum Place<'a> {
+    Cam(&'a Follower, Sense),
+    Follower,
+}
+
 impl ProfileSpec {
     pub(super) fn build(
         &self,
         scale: f64,
         base: &Path,
         confine: bool,
-        follower: &Follower,
-        sense: Sense,
+        place: Place<'_>,
         warnings: &mut Vec<SpecWarning>,
     ) -> Result<BuiltProfile, SpecError> {
         use ProfileField as P;
-        let f = |x| Field::Profile(x);
+        let f: fn(ProfileField) -> Field = match place {
+            Place::Cam(..) => Field::Profile,
+            Place::Follower => Field::FollowerProfile,
+        };
         let kind_field = f(P::Kind);
         let kind = self.kind.as_str();
         let present: &Present = &[
@@ -158,6 +167,39 @@ impl ProfileSpec {
                 f(P::RotationDeg),
             ),
             ("path", self.path.is_some(), f(P::Path)),
+            ("module", self.module.is_some(), f(P::Module)),
+            ("teeth", self.teeth.is_some(), f(P::Teeth)),
+            (
+                "pressure_angle_deg",
+                self.pressure_angle_deg.is_some(),
+                f(P::PressureAngle),
+            ),
+            ("addendum", self.addendum.is_some(), f(P::Addendum)),
+            ("dedendum", self.dedendum.is_some(), f(P::Dedendum)),
+            (
+                "profile_shift",
+                self.profile_shift.is_some(),
+                f(P::ProfileShift),
+            ),
+            ("backlash", self.backlash.is_some(), f(P::Backlash)),
+            (
+                "fillet_radius",
+                self.fillet_radius.is_some(),
+                f(P::FilletRadius),
+            ),
+            ("tip_relief", self.tip_relief.is_some(), f(P::TipRelief)),
+            (
+                "tip_relief_length",
+                self.tip_relief_length.is_some(),
+                f(P::TipReliefLength),
+            ),
+            (
+                "tip_relief_shape",
+                self.tip_relief_shape.is_some(),
+                f(P::TipReliefShape),
+            ),
+            ("anchor", self.anchor.is_some(), f(P::Anchor)),
+            ("direction", self.direction.is_some(), f(P::Direction)),
         ];
         let param = self.parameterization.unwrap_or_default();
         let scaled = |p: Point2| Point2::new(scale * p.x, scale * p.y);
@@ -189,7 +231,7 @@ impl ProfileSpec {
                     .enumerate()
                     .map(|(i, &q)| point(f(P::Point(i)), q).map(scaled))
                     .collect::<Result<Vec<_>, _>>()?;
-                spline(&nodes, param, &Nodes::Inline, warnings)?
+                spline(&nodes, param, &Nodes::Inline(f), warnings)?
             }
             "circle" => {
                 check_kind(kind, present, &["center", "radius"])?;
@@ -227,7 +269,51 @@ impl ProfileSpec {
                     })?,
                 )
             }
+            "involute-gear" => {
+                check_kind(
+                    kind,
+                    present,
+                    &[
+                        "module",
+                        "teeth",
+                        "pressure_angle_deg",
+                        "addendum",
+                        "dedendum",
+                        "profile_shift",
+                        "backlash",
+                        "fillet_radius",
+                        "tip_relief",
+                        "tip_relief_length",
+                        "tip_relief_shape",
+                    ],
+                )?;
+                Arc::new(self.gear(scale, f)?)
+            }
+            "line" => {
+                let Place::Follower = place else {
+                    return Err(SpecError::Rule {
+                        field: kind_field,
+                        reason: "a cam's profile is a closed curve: a line can only be carried by a follower".into(),
+                    });
+                };
+                check_kind(kind, present, &["anchor", "direction"])?;
+                let a = point(f(P::Anchor), self.anchor.unwrap_or([0.0, 0.0]))?;
+                let d = need(kind_field, kind, "direction", self.direction)?;
+                let line = Line::new(Point2::new(scale * a.x, scale * a.y), crate::Vec2::new(d[0], d[1]))
+                    .map_err(|e| SpecError::Invalid {
+                        field: f(P::Direction),
+                        value: vector(d),
+                        reason: e.to_string(),
+                    })?;
+                Arc::new(line)
+            }
             "motion" => {
+                let Place::Cam(follower, sense) = place else {
+                    return Err(SpecError::Rule {
+                        field: kind_field,
+                        reason: "a motion program is synthesised into a cam's profile: a follower cannot carry one".into(),
+                    });
+                };
                 check_kind(kind, present, &["base_radius", "segments"])?;
                 let rb = scale
                     * positive(
@@ -365,11 +451,95 @@ impl ProfileSpec {
                     field: kind_field,
                     value: other.to_string(),
                     what: "a profile kind",
-                    known: "spline, circle, ellipse, points-file, motion".into(),
+                    known: "spline, circle, ellipse, points-file, motion, involute-gear, line (a follower's)".into(),
                 })
             }
         };
         Ok((curve, None))
+    }
+}
+
+impl ProfileSpec {
+    /// `kind = "involute-gear"`: lengths scaled, errors placed at the field that caused them.
+    fn gear(&self, scale: f64, f: fn(ProfileField) -> Field) -> Result<InvoluteGear, SpecError> {
+        use ProfileField as P;
+        let kind_field = f(P::Kind);
+        let kind = "involute-gear";
+        let module =
+            scale * positive(f(P::Module), need(kind_field, kind, "module", self.module)?)?;
+        let teeth = need(kind_field, kind, "teeth", self.teeth)?;
+        let alpha = finite(
+            f(P::PressureAngle),
+            need(
+                kind_field,
+                kind,
+                "pressure_angle_deg",
+                self.pressure_angle_deg,
+            )?,
+        )?;
+        let mut g = InvoluteGearSpec::new(module, teeth, alpha.to_radians());
+        if let Some(v) = self.addendum {
+            g.addendum = v;
+        }
+        if let Some(v) = self.dedendum {
+            g.dedendum = v;
+        }
+        if let Some(v) = self.profile_shift {
+            g.profile_shift = v;
+        }
+        if let Some(v) = self.backlash {
+            g.backlash = scale * v;
+        }
+        g.fillet_radius = self.fillet_radius.map(|v| scale * v);
+        match (self.tip_relief, self.tip_relief_length) {
+            (Some(amount), Some(length)) => {
+                g.tip_relief = Some(TipRelief {
+                    amount: scale * amount,
+                    length: scale * length,
+                    shape: self.tip_relief_shape.unwrap_or(crate::curve::ReliefShape::Linear),
+                });
+            }
+            (None, None) if self.tip_relief_shape.is_none() => {}
+            _ => {
+                return Err(SpecError::Rule {
+                    field: f(if self.tip_relief.is_none() {
+                        P::TipRelief
+                    } else {
+                        P::TipReliefLength
+                    }),
+                    reason: "tip relief needs both `tip_relief` (the amount at the tip) and `tip_relief_length` (along the line of action)".into(),
+                })
+            }
+        }
+        InvoluteGear::new(g).map_err(|e| match e {
+            CurveError::Gear {
+                field,
+                value,
+                reason,
+            } => {
+                let at = match field {
+                    "teeth" => P::Teeth,
+                    "pressure_angle_deg" => P::PressureAngle,
+                    "addendum" => P::Addendum,
+                    "dedendum" => P::Dedendum,
+                    "profile_shift" => P::ProfileShift,
+                    "backlash" => P::Backlash,
+                    "fillet_radius" => P::FilletRadius,
+                    "tip_relief.length" => P::TipReliefLength,
+                    "tip_relief.amount" => P::TipRelief,
+                    _ => P::Kind,
+                };
+                SpecError::Invalid {
+                    field: f(at),
+                    value: crate::human::human(value),
+                    reason,
+                }
+            }
+            other => SpecError::Rule {
+                field: kind_field,
+                reason: other.to_string(),
+            },
+        })
     }
 }
 

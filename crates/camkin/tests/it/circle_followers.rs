@@ -64,6 +64,7 @@ fn closed_form(f: &Follower, theta: HD, pivot: Point2, c0: Vec2, s: f64) -> HD {
             let c = (rho2 + (l * l - (RC + r) * (RC + r))) / (2.0 * l * rho);
             HD::atan2(wy, wx) + k * c.acos()
         }
+        _ => unreachable!("the named kinds only"),
     }
 }
 
@@ -94,7 +95,7 @@ fn check(pivot: Point2, dir: Sense, c0: Vec2) {
             pivot,
             dir,
             1000.0,
-            f,
+            f.clone(),
         );
         let w = m.cam().speed();
         let mut checked = 0;
@@ -177,7 +178,7 @@ fn tiny_and_huge_rollers_on_an_eccentric_circle_match_the_closed_form() {
                     pivot,
                     dir,
                     1000.0,
-                    f,
+                    f.clone(),
                 );
                 let w = m.cam().speed();
                 let name = format!("{} r = {r} {dir:?}", f.kind_name());

@@ -185,7 +185,7 @@ fn jumps_are_flagged_where_the_support_function_switches_branch_for_every_follow
     let mut jumping = Vec::new();
     for f in followers() {
         for sense in [Sense::Ccw, Sense::Cw] {
-            let m = mechanism(peanut(), Point2::origin(), sense, 600.0, f);
+            let m = mechanism(peanut(), Point2::origin(), sense, 600.0, f.clone());
             assert!(!m.is_convex());
             let angles = support_jumps(&m);
             let what = format!("{} {sense:?}", f.kind_name());
@@ -241,7 +241,13 @@ fn a_flat_face_jumps_where_it_lies_along_a_hull_edge_bridging_a_dent() {
 /// a warm start, so the fall was not flagged.
 #[test]
 fn knife_falling_off_a_lobe_is_flagged_as_a_jump() {
-    let m = mechanism(peanut(), Point2::origin(), Sense::Cw, 600.0, followers()[2]);
+    let m = mechanism(
+        peanut(),
+        Point2::origin(),
+        Sense::Cw,
+        600.0,
+        followers()[2].clone(),
+    );
     let thetas: Vec<f64> = [31.01f64, 32.01, 33.01].map(f64::to_radians).to_vec();
     let rows = m.analyze_all(&thetas);
     let jumps = contact_jumps(&m, &rows, true);
@@ -255,7 +261,13 @@ fn knife_falling_off_a_lobe_is_flagged_as_a_jump() {
 /// both, answering a lower crossing: it must agree with the support function.
 #[test]
 fn knife_global_search_finds_crossings_near_tangency() {
-    let m = mechanism(peanut(), Point2::origin(), Sense::Cw, 600.0, followers()[2]);
+    let m = mechanism(
+        peanut(),
+        Point2::origin(),
+        Sense::Cw,
+        600.0,
+        followers()[2].clone(),
+    );
     // the top crossing pair vanishes at about 32.1516°
     for k in 0..40 {
         let th = (32.10 + k as f64 * 0.0013).to_radians();
@@ -279,7 +291,7 @@ fn simulation_across_a_contact_jump_is_refused_with_the_jump_angles() {
     use camkin::dynamics::{AugmentedLagrangian, DynamicsError, FollowerDynamics, Simulation};
     for f in followers() {
         for sense in [Sense::Ccw, Sense::Cw] {
-            let m = mechanism(peanut(), Point2::origin(), sense, 600.0, f);
+            let m = mechanism(peanut(), Point2::origin(), sense, 600.0, f.clone());
             let located: Vec<f64> = support_jumps(&m)
                 .iter()
                 .map(|t| t.to_degrees().rem_euclid(360.0))

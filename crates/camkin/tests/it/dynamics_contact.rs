@@ -26,7 +26,13 @@ fn permanent_contact_reproduces_kinematics_for_every_follower() {
             .map(move |f| (d, f))
     }) {
         let osc = f.is_oscillating();
-        let m = mechanism(paper_profile(false), Point2::origin(), dir, 100.0, f);
+        let m = mechanism(
+            paper_profile(false),
+            Point2::origin(),
+            dir,
+            100.0,
+            f.clone(),
+        );
         let p = params(osc);
         let mut sim = Simulation::new(&m, p, AugmentedLagrangian::default()).unwrap();
         let sign = match *m.follower() {

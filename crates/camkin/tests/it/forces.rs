@@ -135,7 +135,13 @@ fn kinetostatic_force_equals_the_simulated_one_at_steady_contact() {
     for sense in [Sense::Ccw, Sense::Cw] {
         for (follower, p) in &cases {
             let w = 60.0;
-            let mech = mechanism(disc(), Point2::origin(), sense, w * 60.0 / TAU, *follower);
+            let mech = mechanism(
+                disc(),
+                Point2::origin(),
+                sense,
+                w * 60.0 / TAU,
+                follower.clone(),
+            );
             let f = Forces::new(&mech, *p).unwrap();
             let mut sim =
                 Simulation::starting_at(&mech, *p, AugmentedLagrangian::default(), 0.0).unwrap();

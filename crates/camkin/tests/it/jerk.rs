@@ -14,7 +14,7 @@ fn implicit_differentiation_agrees_with_contact_method_for_every_follower() {
         (true, Sense::Cw, Point2::new(-1.0, 2.0)),
     ] {
         for f in all_followers(pivot) {
-            let m = mechanism(paper_profile(revised), pivot, dir, 1000.0, f);
+            let m = mechanism(paper_profile(revised), pivot, dir, 1000.0, f.clone());
             let w = m.cam().speed();
             for k in 0..72 {
                 let th = (k as f64 * 5.0 + 0.3).to_radians();
@@ -109,7 +109,7 @@ fn jerk_agrees_with_differences_of_acceleration_for_every_follower() {
             Point2::origin(),
             Sense::Ccw,
             1000.0,
-            f,
+            f.clone(),
         );
         assert!(check_jerk_by_differences(&m, f.kind_name(), true) >= 30);
         let m = mechanism(
@@ -117,7 +117,7 @@ fn jerk_agrees_with_differences_of_acceleration_for_every_follower() {
             Point2::origin(),
             Sense::Cw,
             700.0,
-            f,
+            f.clone(),
         );
         assert_eq!(check_jerk_by_differences(&m, f.kind_name(), false), 60);
     }
@@ -143,7 +143,7 @@ fn angular_acceleration_for_every_follower() {
                     .unwrap()
                     .with_angular_acceleration(-900.0)
                     .unwrap();
-            let m = Mechanism::new(cam, f).unwrap();
+            let m = Mechanism::new(cam, f.clone()).unwrap();
             let (w, al): (f64, f64) = (m.cam().speed(), -900.0);
             for k in 0..36 {
                 let th = (k as f64 * 10.0 + 0.4).to_radians();
@@ -179,7 +179,7 @@ fn angular_acceleration_terms_agree_with_time_differences_for_every_follower() {
                         .unwrap()
                         .with_angular_acceleration(al)
                         .unwrap();
-                let m = Mechanism::new(cam, f).unwrap();
+                let m = Mechanism::new(cam, f.clone()).unwrap();
                 let th = 0.7 + w0 * t + 0.5 * al * t * t;
                 m.analyze(th).unwrap()
             };

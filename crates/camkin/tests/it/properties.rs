@@ -67,6 +67,7 @@ fn rotate_follower(f: &Follower, r: &Rotation, beta: f64) -> Follower {
             closing,
             initial_angle: initial_angle + beta,
         },
+        _ => unreachable!("the named kinds only"),
     }
 }
 
@@ -123,6 +124,7 @@ fn mirror_follower(f: &Follower) -> Follower {
             closing: flip(closing),
             initial_angle: -initial_angle,
         },
+        _ => unreachable!("the named kinds only"),
     }
 }
 
@@ -168,6 +170,7 @@ fn scale_follower(f: &Follower, k: f64) -> Follower {
             closing,
             initial_angle,
         },
+        _ => unreachable!("the named kinds only"),
     }
 }
 
@@ -230,8 +233,8 @@ proptest! {
     ) {
         let pivot = Point2::new(0.7, -0.4);
         let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = all_followers(pivot)[kind];
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        let f = all_followers(pivot)[kind].clone();
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
         prop_assume!(m.is_convex());
         let r = Rotation::new(beta);
         let nodes_r: Vec<Point2> = nodes.iter().map(|p| r * p).collect();
@@ -266,8 +269,8 @@ proptest! {
     ) {
         let pivot = Point2::new(0.7, -0.4);
         let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = seven_followers(pivot)[kind];
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        let f = seven_followers(pivot)[kind].clone();
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
         prop_assume!(m.is_convex());
         let nodes_m: Vec<Point2> = nodes.iter().map(|p| Point2::new(p.x, -p.y)).collect();
         let other = if ccw { Sense::Cw } else { Sense::Ccw };
@@ -301,8 +304,8 @@ proptest! {
     ) {
         let pivot = Point2::new(0.7, -0.4);
         let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = seven_followers(pivot)[kind];
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        let f = seven_followers(pivot)[kind].clone();
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
         prop_assume!(m.is_convex());
         let th = theta.to_radians();
         let a = m.analyze(th);
@@ -333,8 +336,8 @@ proptest! {
         let k = 10f64.powf(exponent);
         let pivot = Point2::new(0.7, -0.4);
         let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = seven_followers(pivot)[kind];
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f);
+        let f = seven_followers(pivot)[kind].clone();
+        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
         prop_assume!(m.is_convex());
         let scaled: Vec<Point2> = nodes.iter().map(|p| Point2::from(p.coords * k)).collect();
         let ms = Mechanism::new(

@@ -56,7 +56,7 @@ fn every_follower_on_paper_cams_both_directions() {
             (Sense::Cw, Point2::new(1.5, -2.0)),
         ] {
             for f in all_followers(pivot) {
-                let m = mechanism(paper_profile(revised), pivot, dir, 1000.0, f);
+                let m = mechanism(paper_profile(revised), pivot, dir, 1000.0, f.clone());
                 let name = format!("{} revised={revised} {dir:?}", f.kind_name());
                 let n = check(&m, &name);
                 assert!(n >= 45, "{name}: only {n} angles away from nodes");

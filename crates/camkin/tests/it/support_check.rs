@@ -34,7 +34,13 @@ fn every_follower_on_the_paper_cam_agrees_with_the_support_function() {
     for revised in [false, true] {
         for f in all_followers(Point2::origin()) {
             for sense in [Sense::Ccw, Sense::Cw] {
-                let m = mechanism(paper_profile(revised), Point2::origin(), sense, 60.0, f);
+                let m = mechanism(
+                    paper_profile(revised),
+                    Point2::origin(),
+                    sense,
+                    60.0,
+                    f.clone(),
+                );
                 let c = check(
                     &m,
                     &format!("{} {sense:?} revised={revised}", f.kind_name()),
@@ -66,7 +72,13 @@ fn oscillating_followers_closing_either_way_agree_with_the_support_function() {
                 },
             ];
             for f in fs {
-                let m = mechanism(profile.clone(), Point2::new(0.2, 0.1), Sense::Cw, 90.0, f);
+                let m = mechanism(
+                    profile.clone(),
+                    Point2::new(0.2, 0.1),
+                    Sense::Cw,
+                    90.0,
+                    f.clone(),
+                );
                 check(
                     &m,
                     &format!("{} closing {closing:?} at {phi0}°", f.kind_name()),
@@ -88,7 +100,7 @@ fn a_cam_with_angular_acceleration_agrees_with_the_support_function() {
         .unwrap()
         .with_angular_acceleration(-30.0)
         .unwrap();
-        let m = camkin::cam::Mechanism::new(cam, f).unwrap();
+        let m = camkin::cam::Mechanism::new(cam, f.clone()).unwrap();
         check(&m, &format!("{} with α", f.kind_name()));
     }
 }

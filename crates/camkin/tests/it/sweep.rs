@@ -54,7 +54,7 @@ fn sweep_matches_global_for_every_follower_on_paper_cam() {
             Point2::origin(),
             Sense::Ccw,
             1000.0,
-            f,
+            f.clone(),
         );
         let (warm, jumps, _) = compare_with_global(&m, 1.0);
         assert_eq!(jumps, 0, "{}", f.kind_name());
@@ -120,7 +120,13 @@ fn roller_on_non_convex_cam_jumps_too() {
 #[test]
 fn motion_fast_path_equals_full_analysis() {
     for f in all_followers(Point2::origin()) {
-        let m = mechanism(paper_profile(true), Point2::origin(), Sense::Cw, 800.0, f);
+        let m = mechanism(
+            paper_profile(true),
+            Point2::origin(),
+            Sense::Cw,
+            800.0,
+            f.clone(),
+        );
         let mut full = m.sweep();
         let mut fast = m.sweep();
         for k in 0..720 {

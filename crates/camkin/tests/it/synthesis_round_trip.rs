@@ -142,7 +142,7 @@ fn every_law_and_translating_follower_round_trips() {
     for law in Law::ALL {
         for f in translating() {
             for dir in [Sense::Ccw, Sense::Cw] {
-                round_trip(f, law, 1.0, dir, 5.0);
+                round_trip(f.clone(), law, 1.0, dir, 5.0);
             }
         }
     }
@@ -153,7 +153,7 @@ fn every_law_and_oscillating_follower_round_trips() {
     for law in Law::ALL {
         for f in oscillating() {
             for dir in [Sense::Ccw, Sense::Cw] {
-                round_trip(f, law, 0.25, dir, 1.0);
+                round_trip(f.clone(), law, 0.25, dir, 1.0);
             }
         }
     }

@@ -15,6 +15,7 @@
 //! axis along the unit direction `d`; oscillating followers give the absolute arm angle `φ`
 //! (rad, counter-clockwise from the world x axis).
 
+pub(crate) mod carried;
 mod joint;
 mod oscillating_flat;
 mod oscillating_roller;
@@ -60,9 +61,46 @@ impl Sense {
     }
 }
 
+/// The curve a general follower carries, in its own frame (compared by identity).
+#[derive(Debug, Clone)]
+pub struct FollowerProfile(pub std::sync::Arc<dyn crate::curve::Curve>);
+
+impl PartialEq for FollowerProfile {
+    fn eq(&self, other: &Self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
 /// A follower and its geometry. Build a [`crate::cam::Mechanism`] to validate it.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// A follower is a joint carrying a curve: [`Follower::Translating`] and [`Follower::Rotating`]
+/// carry any curve; the five named kinds are presets of them with closed forms (a flat face is a
+/// line, a roller a circle, a knife a point) — see `general-follower-and-gears.md`.
+#[derive(Debug, Clone, PartialEq)]
 pub enum Follower {
+    /// A slide carrying any curve: the follower frame's origin is at `e·rot90(d) + s·d` from
+    /// the cam axis, its x axis along `d`; `profile` is given in that frame.
+    Translating {
+        /// direction of travel `d`, from the cam towards the follower
+        direction: Vec2,
+        /// offset `e` of the line of travel, length
+        offset: f64,
+        /// the curve, with the follower's material on its left
+        profile: FollowerProfile,
+    },
+    /// An arm carrying any curve: the follower frame's origin is the pivot, turned by the arm
+    /// angle `φ` (at `φ = 0` aligned with the world); `profile` is given in that frame.
+    Rotating {
+        /// the pivot `O`, world
+        pivot: Point2,
+        /// sense in which the load turns the follower onto the cam
+        closing: Sense,
+        /// the angle at cam angle 0 is reported within ±180° of it (for a gear-like curve, the
+        /// angle continued from it by the nominal ratio), rad
+        initial_angle: f64,
+        /// the curve, with the follower's material on its left
+        profile: FollowerProfile,
+    },
     /// Translating flat-faced: the face is the line `x·d = s` (positions from the cam axis).
     TranslatingFlat {
         /// direction of travel `d`, from the cam towards the follower (normalised on use)
@@ -132,11 +170,29 @@ impl Follower {
                 })
             }
         };
-        Ok(match *self {
-            Follower::TranslatingFlat { direction } => {
+        Ok(match self {
+            Follower::Translating {
+                direction, offset, ..
+            } => carried::CarriedJoint::translating(
+                cam_pivot,
+                unit(*direction)?,
+                finite(Field::Follower(FollowerField::Offset), *offset)?,
+            ),
+            Follower::Rotating {
+                pivot,
+                closing,
+                initial_angle,
+                ..
+            } => carried::CarriedJoint::rotating(
+                cam_pivot,
+                point(Field::Follower(FollowerField::Pivot), *pivot)?,
+                *closing,
+                arm_angle(Field::Follower(FollowerField::InitialAngle), *initial_angle)?,
+            ),
+            &Follower::TranslatingFlat { direction } => {
                 TranslatingFlat::model(cam_pivot, unit(direction)?)
             }
-            Follower::TranslatingRoller {
+            &Follower::TranslatingRoller {
                 direction,
                 offset,
                 roller_radius,
@@ -149,7 +205,7 @@ impl Follower {
                     positive(Field::Follower(FollowerField::RollerRadius), roller_radius)?,
                 )
             }
-            Follower::TranslatingKnife { direction, offset } => {
+            &Follower::TranslatingKnife { direction, offset } => {
                 let d = unit(direction)?;
                 TranslatingKnife::model(
                     cam_pivot,
@@ -157,7 +213,7 @@ impl Follower {
                     finite(Field::Follower(FollowerField::Offset), offset)?,
                 )
             }
-            Follower::OscillatingFlat {
+            &Follower::OscillatingFlat {
                 pivot,
                 face_offset,
                 closing,
@@ -169,7 +225,7 @@ impl Follower {
                 closing,
                 arm_angle(Field::Follower(FollowerField::InitialAngle), initial_angle)?,
             ),
-            Follower::OscillatingRoller {
+            &Follower::OscillatingRoller {
                 pivot,
                 arm_length,
                 roller_radius,
@@ -190,7 +246,9 @@ impl Follower {
     }
 
     /// The kinds' names, as in mechanism files.
-    pub const KIND_NAMES: [&'static str; 5] = [
+    pub const KIND_NAMES: [&'static str; 7] = [
+        "translating",
+        "rotating",
         "translating-flat",
         "translating-roller",
         "translating-knife",
@@ -202,9 +260,11 @@ impl Follower {
     /// by `−cam_pivot` (translating followers are already placed relative to the cam's axis).
     /// [`crate::cam::synthesis::synthesize`] takes its follower this way.
     pub fn relative_to(&self, cam_pivot: Point2) -> Follower {
-        let mut f = *self;
+        let mut f = self.clone();
         match &mut f {
-            Follower::OscillatingFlat { pivot, .. } | Follower::OscillatingRoller { pivot, .. } => {
+            Follower::OscillatingFlat { pivot, .. }
+            | Follower::OscillatingRoller { pivot, .. }
+            | Follower::Rotating { pivot, .. } => {
                 *pivot -= cam_pivot.coords;
             }
             _ => {}
@@ -215,6 +275,8 @@ impl Follower {
     /// Human-readable kind, as in mechanism files.
     pub fn kind_name(&self) -> &'static str {
         match self {
+            Follower::Translating { .. } => "translating",
+            Follower::Rotating { .. } => "rotating",
             Follower::TranslatingFlat { .. } => "translating-flat",
             Follower::TranslatingRoller { .. } => "translating-roller",
             Follower::TranslatingKnife { .. } => "translating-knife",
@@ -227,8 +289,20 @@ impl Follower {
     pub fn is_oscillating(&self) -> bool {
         matches!(
             self,
-            Follower::OscillatingFlat { .. } | Follower::OscillatingRoller { .. }
+            Follower::OscillatingFlat { .. }
+                | Follower::OscillatingRoller { .. }
+                | Follower::Rotating { .. }
         )
+    }
+
+    /// The curve a general follower carries (`None` for the five named kinds).
+    pub fn carried_profile(&self) -> Option<&std::sync::Arc<dyn crate::curve::Curve>> {
+        match self {
+            Follower::Translating { profile, .. } | Follower::Rotating { profile, .. } => {
+                Some(&profile.0)
+            }
+            _ => None,
+        }
     }
 }
 
@@ -420,6 +494,7 @@ pub(crate) enum Model {
     TranslatingKnife(TranslatingKnife),
     OscillatingFlat(OscillatingFlat),
     OscillatingRoller(OscillatingRoller),
+    Carried(carried::CarriedJoint),
 }
 
 /// Calls `$body` with `$k` bound to the kind inside a `Model`.
@@ -431,6 +506,7 @@ macro_rules! dispatch {
             Model::TranslatingKnife($k) => $body,
             Model::OscillatingFlat($k) => $body,
             Model::OscillatingRoller($k) => $body,
+            Model::Carried($k) => $body,
         }
     };
 }
@@ -480,7 +556,7 @@ impl Kind for Model {
 }
 
 /// The follower's contact curve in its own body frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 #[non_exhaustive]
 pub enum FollowerCurve {
     /// a flat face
@@ -489,12 +565,16 @@ pub enum FollowerCurve {
     Circle(Circle),
     /// a knife edge
     Point(PointCurve),
+    /// any curve carried by a general follower (a translating follower's turned into the
+    /// world-aligned follower frame)
+    Carried(std::sync::Arc<dyn crate::curve::Curve>),
 }
 
 impl FollowerCurve {
     /// The curve as a shared trait object (for the dynamics).
     pub fn to_arc(self) -> std::sync::Arc<dyn crate::curve::Curve> {
         match self {
+            FollowerCurve::Carried(c) => c,
             FollowerCurve::Line(c) => std::sync::Arc::new(c),
             FollowerCurve::Circle(c) => std::sync::Arc::new(c),
             FollowerCurve::Point(c) => std::sync::Arc::new(c),
@@ -503,10 +583,14 @@ impl FollowerCurve {
 
     /// The parameter of the world contact point `c` on this curve (the follower frame is
     /// `frame`) and the curve's world derivatives there, without a virtual call; a roller's come
-    /// from its radial unit vector.
+    /// from its radial unit vector; a carried curve's at the parameter `v` found with the contact.
     #[inline]
-    pub(crate) fn world_at(&self, frame: &Frame, c: Point2) -> (f64, WorldDerivs) {
+    pub(crate) fn world_at(&self, frame: &Frame, c: Point2, v: f64) -> (f64, WorldDerivs) {
         match self {
+            FollowerCurve::Carried(k) => {
+                use crate::body::CurveInFrame as _;
+                (v, frame.curve_at(k.as_ref(), v))
+            }
             FollowerCurve::Line(l) => {
                 let d = frame.rotation * l.direction();
                 let a = frame * l.anchor();
@@ -552,7 +636,7 @@ impl FollowerCurve {
 }
 
 /// A validated follower: its model, with the joint and the curve cached from it.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub(crate) struct Geometry {
     pub(crate) follower: Follower,
     /// cam axis (world)
@@ -560,17 +644,37 @@ pub(crate) struct Geometry {
     pub(crate) model: Model,
     pub(crate) joint: Joint,
     pub(crate) curve: FollowerCurve,
+    /// a general follower's curve with its polyline index
+    pub(crate) carried: Option<std::sync::Arc<carried::Carried>>,
 }
 
 impl Geometry {
-    pub(crate) fn new(follower: Follower, cam_pivot: Point2) -> Result<Self, CamError> {
+    /// `reach`: how far the cam reaches from its axis (bounds the sampled stretch of an
+    /// unbounded carried curve).
+    pub(crate) fn new(follower: Follower, cam_pivot: Point2, reach: f64) -> Result<Self, CamError> {
         let model = follower.model(cam_pivot)?;
+        let joint = model.joint();
+        let (curve, carried) = match follower.carried_profile() {
+            Some(profile) => {
+                let far = match joint {
+                    Joint::Rotating { pivot, .. } => (pivot - cam_pivot).norm(),
+                    Joint::Translating { origin, .. } => (origin - cam_pivot).norm(),
+                };
+                let c = carried::Carried::new(profile.clone(), &joint, 4.0 * (reach + far))?;
+                (
+                    FollowerCurve::Carried(c.curve.clone()),
+                    Some(std::sync::Arc::new(c)),
+                )
+            }
+            None => (model.curve(), None),
+        };
         Ok(Self {
             follower,
             cam_pivot,
             model,
-            joint: model.joint(),
-            curve: model.curve(),
+            joint,
+            curve,
+            carried,
         })
     }
 

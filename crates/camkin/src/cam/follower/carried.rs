@@ -1,0 +1,408 @@
+//! A follower that carries any curve: a joint (slide or pivot) and a curve in the follower's frame.
+//!
+//! The five named kinds have closed forms of their first touch; a carried curve does not. Its
+//! first touch is found from **coverage**: for every sampled cam point, the follower positions at
+//! which that point lies inside the follower's material (from the crossings of a dense polyline
+//! of the follower's curve with the line, or circle about the pivot, on which the cam point moves
+//! relative to the follower). The follower rests at the end, in its closing sense, of the free
+//! gap between covered positions: the gap beyond every covered position for a slide (it comes
+//! from `s = +∞`), the gap that holds the arm pointing away from the cam for a pivot, or for a
+//! gear-like curve (rotational symmetry `z > 1`) the gap nearest the angle predicted by the
+//! nominal ratio. Newton on the exact tangency (`x_A(u) = x_B(v, q)`, tangents parallel) refines
+//! it; a contact is accepted when no sampled cam point lies inside the follower there by more than
+//! the polyline's chord error (see `crate::cam::carried`).
+//!
+//! The polyline's frame is the follower frame; a translating follower's curve is given with its
+//! x axis along the direction of travel and turned here into the world-aligned follower frame the
+//! joint moves.
+
+use super::{Joint, Kind, Model, Sense};
+use crate::body::WorldDerivs;
+use crate::cam::jet::{Num, V2};
+use crate::cam::synthesis::Envelope;
+use crate::cam::CamError;
+use crate::curve::{Curve, Derivs, Domain};
+use crate::field::{Field, FollowerField};
+use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
+use std::sync::Arc;
+
+/// A carried curve's joint: the `Kind` of a follower carrying any curve. Its first touch is not
+/// found through `Kind` (see `crate::cam::carried`): only the joint is used from here.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CarriedJoint {
+    pub(crate) joint: Joint,
+}
+
+impl Kind for CarriedJoint {
+    fn joint(&self) -> Joint {
+        self.joint
+    }
+    fn curve(&self) -> super::FollowerCurve {
+        // never used: `Geometry::new` takes the carried curve itself
+        super::FollowerCurve::Point(
+            crate::curve::PointCurve::new(Point2::origin()).expect("the origin is finite"),
+        )
+    }
+    fn score(&self, _x: Point2) -> Option<(f64, f64)> {
+        None
+    }
+    fn residual_value<T: Num>(&self, _x: V2<T>, _x1: V2<T>, _q: T) -> [T; 2] {
+        [T::c(f64::NAN), T::c(f64::NAN)]
+    }
+    fn jacobian(&self, _e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
+        [[f64::NAN; 2]; 2]
+    }
+    fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {
+        Vec2::zeros()
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        None
+    }
+    fn synthesis_start(&self, _base_radius: f64) -> Result<f64, CamError> {
+        Err(CamError::Invalid {
+            field: Field::Follower(FollowerField::Kind),
+            value: f64::NAN,
+            reason: "a profile can be synthesised for the five named follower kinds only",
+        })
+    }
+    fn envelope(&self, _s: &[f64; 5], _s0: f64, _u: f64, _sigma: f64, _rot: &Rotation) -> Envelope {
+        Envelope::Derivs(Derivs {
+            p: Point2::origin(),
+            d1: Vec2::zeros(),
+            d2: Vec2::zeros(),
+            d3: Vec2::zeros(),
+        })
+    }
+}
+
+impl CarriedJoint {
+    pub(super) fn translating(cam_pivot: Point2, d: UnitVec2, offset: f64) -> Model {
+        Model::Carried(Self {
+            joint: Joint::Translating {
+                origin: cam_pivot + offset * rot90(*d),
+                direction: d,
+            },
+        })
+    }
+    pub(super) fn rotating(cam_pivot: Point2, o: Point2, closing: Sense, phi0: f64) -> Model {
+        Model::Carried(Self {
+            joint: Joint::Rotating {
+                pivot: o,
+                closing,
+                initial_angle: phi0,
+                toward_cam: super::toward(cam_pivot, o),
+            },
+        })
+    }
+}
+
+/// A curve turned by a fixed rotation (a translating follower's curve, given along its
+/// direction of travel, in the world-aligned follower frame).
+#[derive(Debug)]
+pub(crate) struct Turned {
+    curve: Arc<dyn Curve>,
+    rot: Rotation,
+}
+
+impl Curve for Turned {
+    fn eval(&self, u: f64) -> Derivs {
+        let d = self.curve.eval(u);
+        let r = &self.rot;
+        Derivs {
+            p: Point2::from(r * d.p.coords),
+            d1: r * d.d1,
+            d2: r * d.d2,
+            d3: r * d.d3,
+        }
+    }
+    fn domain(&self) -> Domain {
+        self.curve.domain()
+    }
+    fn breakpoints(&self) -> Vec<f64> {
+        self.curve.breakpoints()
+    }
+    fn symmetry(&self) -> u32 {
+        self.curve.symmetry()
+    }
+}
+
+/// How a cam point moves relative to the follower: along the slide's direction at a fixed lateral
+/// level, or round the pivot at a fixed radius.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Track {
+    /// `along = y·d`, `level = y·rot90(d)`
+    Slide { d: Vec2, p: Vec2 },
+    /// `along` = polar angle, `level` = radius
+    Pivot,
+}
+
+impl Track {
+    /// `(along, level)` of a point `y` in the follower frame.
+    #[inline]
+    pub(crate) fn coords(&self, y: Vec2) -> (f64, f64) {
+        match *self {
+            Track::Slide { d, p } => (y.dot(&d), y.dot(&p)),
+            Track::Pivot => (y.y.atan2(y.x), y.norm()),
+        }
+    }
+}
+
+/// A crossing of the follower's polyline with a level: where along, the curve's parameter there
+/// and whether moving in `+along` enters the follower's material.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Crossing {
+    pub(crate) along: f64,
+    pub(crate) v: f64,
+    pub(crate) entering: bool,
+}
+
+/// A stretch `[(from, v_from), (to, v_to)]` of `along` inside the follower's material.
+pub(crate) type Stretch = ((f64, f64), (f64, f64));
+
+/// The carried curve with its polyline and an index of the polyline's segments by level.
+#[derive(Debug)]
+pub(crate) struct Carried {
+    /// the curve in the follower frame
+    pub(crate) curve: Arc<dyn Curve>,
+    pub(crate) track: Track,
+    /// the curve's period (closed curves)
+    pub(crate) period: Option<f64>,
+    /// parameter bounds of an open curve (the sampled stretch of an unbounded one)
+    pub(crate) bounds: (f64, f64),
+    /// the rotational symmetry `z` (a gear's teeth)
+    pub(crate) symmetry: u32,
+    /// polyline vertices: point (follower frame), parameter, `(along, level)`
+    verts: Vec<(Vec2, f64, (f64, f64))>,
+    closed: bool,
+    buckets: Vec<Vec<u32>>,
+    level_lo: f64,
+    bucket_width: f64,
+    /// the largest distance between the curve and its polyline (midpoints of the segments)
+    pub(crate) chord_error: f64,
+    /// the smallest and largest level of the polyline
+    pub(crate) level_range: (f64, f64),
+}
+
+/// Polyline vertices per smooth piece, and over a curve without breakpoints.
+const PER_PIECE: usize = 48;
+const PER_CURVE: usize = 1024;
+
+impl Carried {
+    /// Samples `curve` (given in the follower frame of `joint`; a translating follower's is turned
+    /// first) and indexes it. `reach` bounds the stretch of an unbounded curve that is sampled.
+    pub(crate) fn new(curve: Arc<dyn Curve>, joint: &Joint, reach: f64) -> Result<Self, CamError> {
+        let (curve, track): (Arc<dyn Curve>, Track) = match *joint {
+            Joint::Translating { direction, .. } => {
+                let d = *direction;
+                let angle = d.y.atan2(d.x);
+                let c: Arc<dyn Curve> = if angle == 0.0 {
+                    curve
+                } else {
+                    Arc::new(Turned {
+                        curve,
+                        rot: Rotation::new(angle),
+                    })
+                };
+                (c, Track::Slide { d, p: rot90(d) })
+            }
+            Joint::Rotating { .. } => (curve, Track::Pivot),
+        };
+        let bad = |reason: &'static str| CamError::Invalid {
+            field: Field::Follower(FollowerField::Profile),
+            value: f64::NAN,
+            reason,
+        };
+        let (period, bounds, params): (Option<f64>, (f64, f64), Vec<f64>) = match curve.domain() {
+            Domain::Periodic { period } => {
+                let bp = curve.breakpoints();
+                (
+                    Some(period),
+                    (0.0, period),
+                    crate::curve::piece_samples(&bp, period, PER_PIECE, PER_CURVE).collect(),
+                )
+            }
+            Domain::Interval { min, max } => {
+                // an unbounded curve (a line) is sampled over the stretch that can meet the cam
+                let (lo, hi) = (min.max(-reach), max.min(reach));
+                if !(lo < hi) {
+                    return Err(bad("the follower's curve does not come near the cam"));
+                }
+                let n = PER_CURVE;
+                (
+                    None,
+                    (lo, hi),
+                    (0..=n)
+                        .map(|k| lo + (hi - lo) * k as f64 / n as f64)
+                        .collect(),
+                )
+            }
+            Domain::Point => return Err(bad(
+                "a point carried by a follower is a knife edge: use kind = \"translating-knife\"",
+            )),
+        };
+        let verts: Vec<(Vec2, f64, (f64, f64))> = params
+            .iter()
+            .map(|&v| {
+                let y = curve.position(v).coords;
+                (y, v, track.coords(y))
+            })
+            .collect();
+        if verts
+            .iter()
+            .any(|(y, ..)| !(y.x.is_finite() && y.y.is_finite()))
+        {
+            return Err(bad("the follower's curve has a point that is not finite"));
+        }
+        let closed = period.is_some();
+        let nseg = if closed { verts.len() } else { verts.len() - 1 };
+        let seg = |i: usize| (i, (i + 1) % verts.len());
+        let mut chord_error: f64 = 0.0;
+        for i in 0..nseg {
+            let (a, b) = seg(i);
+            let vb = if b == 0 {
+                period.unwrap_or(0.0) + verts[0].1
+            } else {
+                verts[b].1
+            };
+            let mid = curve.position(0.5 * (verts[a].1 + vb)).coords;
+            let (pa, pb) = (verts[a].0, verts[b].0);
+            let t = pb - pa;
+            let len = t.norm();
+            let dist = if len > 0.0 {
+                crate::geometry::cross(t, mid - pa).abs() / len
+            } else {
+                (mid - pa).norm()
+            };
+            chord_error = chord_error.max(dist);
+        }
+        let lo = verts.iter().map(|v| v.2 .1).fold(f64::INFINITY, f64::min);
+        let hi = verts
+            .iter()
+            .map(|v| v.2 .1)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let nb = nseg.clamp(1, 1 << 16);
+        let width = ((hi - lo) / nb as f64).max(f64::MIN_POSITIVE);
+        let mut buckets = vec![Vec::new(); nb];
+        let bucket = |l: f64| (((l - lo) / width) as usize).min(nb - 1);
+        for i in 0..nseg {
+            let (a, b) = seg(i);
+            let (la, lb) = (verts[a].2 .1, verts[b].2 .1);
+            for b in &mut buckets[bucket(la.min(lb))..=bucket(la.max(lb))] {
+                b.push(i as u32);
+            }
+        }
+        let symmetry = match track {
+            Track::Pivot => curve.symmetry().max(1),
+            Track::Slide { .. } => 1,
+        };
+        Ok(Self {
+            curve,
+            track,
+            period,
+            bounds,
+            symmetry,
+            verts,
+            closed,
+            buckets,
+            level_lo: lo,
+            bucket_width: width,
+            chord_error,
+            level_range: (lo, hi),
+        })
+    }
+
+    /// The crossings of the polyline with `level`, appended to `out` (unsorted).
+    pub(crate) fn crossings(&self, level: f64, out: &mut Vec<Crossing>) {
+        let (lo, hi) = self.level_range;
+        if !(level >= lo && level <= hi) {
+            return;
+        }
+        let nb = self.buckets.len();
+        let k = (((level - self.level_lo) / self.bucket_width) as usize).min(nb - 1);
+        let n = self.verts.len();
+        for &i in &self.buckets[k] {
+            let i = i as usize;
+            let j = (i + 1) % n;
+            let (a, b) = (&self.verts[i], &self.verts[j]);
+            let (la, lb) = (a.2 .1, b.2 .1);
+            if (la < level) == (lb < level) {
+                continue;
+            }
+            let f = (level - la) / (lb - la);
+            let y = a.0 + f * (b.0 - a.0);
+            let vb = if j == 0 && self.closed {
+                b.1 + self.period.unwrap_or(0.0)
+            } else {
+                b.1
+            };
+            let entering = match self.track {
+                Track::Slide { .. } => lb < la,
+                Track::Pivot => lb > la,
+            };
+            out.push(Crossing {
+                along: self.track.coords(y).0,
+                v: a.1 + f * (vb - a.1),
+                entering,
+            });
+        }
+    }
+
+    /// The stretches `[(from, v_from), (to, v_to)]` of `along` inside the follower's material at
+    /// `level` (`±∞` for the open ends of an open curve), from the crossings in `buf`.
+    pub(crate) fn inside(&self, level: f64, buf: &mut Vec<Crossing>, out: &mut Vec<Stretch>) {
+        buf.clear();
+        self.crossings(level, buf);
+        if buf.is_empty() {
+            return;
+        }
+        buf.sort_by(|a, b| a.along.total_cmp(&b.along));
+        match self.track {
+            Track::Slide { .. } => {
+                let mut open: Option<(f64, f64)> = if buf[0].entering {
+                    None
+                } else {
+                    Some((f64::NEG_INFINITY, f64::NAN))
+                };
+                for c in buf.iter() {
+                    match (open, c.entering) {
+                        (None, true) => open = Some((c.along, c.v)),
+                        (Some(s), false) => {
+                            out.push((s, (c.along, c.v)));
+                            open = None;
+                        }
+                        // two entries in a row (an open curve seen from its end): the later holds
+                        (Some(_), true) => open = Some((c.along, c.v)),
+                        (None, false) => {}
+                    }
+                }
+                if let Some(s) = open {
+                    out.push((s, (f64::INFINITY, f64::NAN)));
+                }
+            }
+            Track::Pivot => {
+                // cyclic: start at an entry, pair each with the next exit going round
+                let Some(first) = buf.iter().position(|c| c.entering) else {
+                    return;
+                };
+                let n = buf.len();
+                let mut open: Option<(f64, f64)> = None;
+                for k in 0..n {
+                    let c = buf[(first + k) % n];
+                    let along = if first + k >= n {
+                        c.along + std::f64::consts::TAU
+                    } else {
+                        c.along
+                    };
+                    match (open, c.entering) {
+                        (None, true) | (Some(_), true) => open = Some((along, c.v)),
+                        (Some(s), false) => {
+                            out.push((s, (along, c.v)));
+                            open = None;
+                        }
+                        (None, false) => {}
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,275 @@
+//! A follower carrying any curve: the five named kinds through the general path, and an ideal
+//! involute gear pair (constant ratio `z1/z2`, zero angular acceleration, contact on the line of
+//! action).
+
+use crate::common::{ellipse, mechanism, paper_profile};
+use camkin::cam::{Cam, Follower, FollowerCurve, FollowerProfile, Found, Mechanism, Sense};
+use camkin::curve::{Curve, InvoluteGear, InvoluteGearSpec, Line};
+use camkin::{Point2, Vec2};
+use std::sync::Arc;
+
+/// The general follower equivalent to a named one: the named kind's contact curve on the same
+/// joint (a translating follower's curve turned into the frame along its direction).
+fn general_of(m: &Mechanism) -> Follower {
+    let arc = |c: FollowerCurve| -> Arc<dyn Curve> { c.to_arc() };
+    match m.follower().clone() {
+        // the face x·d = s: the line through the origin along −y of the frame along d
+        Follower::TranslatingFlat { direction } => Follower::Translating {
+            direction,
+            offset: 0.0,
+            profile: FollowerProfile(Arc::new(
+                Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
+            )),
+        },
+        Follower::TranslatingRoller {
+            direction,
+            offset,
+            roller_radius,
+        } => Follower::Translating {
+            direction,
+            offset,
+            profile: FollowerProfile(Arc::new(
+                camkin::curve::Circle::new(Point2::origin(), roller_radius).unwrap(),
+            )),
+        },
+        Follower::OscillatingFlat {
+            pivot,
+            closing,
+            initial_angle,
+            ..
+        }
+        | Follower::OscillatingRoller {
+            pivot,
+            closing,
+            initial_angle,
+            ..
+        } => Follower::Rotating {
+            pivot,
+            closing,
+            initial_angle,
+            profile: FollowerProfile(arc(m.follower_curve())),
+        },
+        other => panic!("no general equivalent written for {other:?}"),
+    }
+}
+
+fn presets() -> Vec<Mechanism> {
+    let paper = paper_profile(false);
+    let egg = ellipse(4.0, 2.5, Point2::new(0.6, -0.3), 0.4);
+    let mut out = Vec::new();
+    for profile in [paper, egg] {
+        for f in [
+            Follower::TranslatingFlat {
+                direction: Vec2::x(),
+            },
+            Follower::TranslatingFlat {
+                direction: Vec2::new(0.6, 0.8),
+            },
+            Follower::TranslatingRoller {
+                direction: Vec2::new(0.0, 1.0),
+                offset: 0.7,
+                roller_radius: 1.2,
+            },
+            Follower::OscillatingRoller {
+                pivot: Point2::new(3.0, 8.0),
+                arm_length: 7.0,
+                roller_radius: 1.0,
+                closing: Sense::Cw,
+                initial_angle: -1.5,
+            },
+            Follower::OscillatingFlat {
+                pivot: Point2::new(-8.0, 6.0),
+                face_offset: 1.0,
+                closing: Sense::Cw,
+                initial_angle: 0.0,
+            },
+        ] {
+            out.push(mechanism(
+                profile.clone(),
+                Point2::new(0.2, -0.1),
+                Sense::Ccw,
+                600.0,
+                f,
+            ));
+        }
+    }
+    out
+}
+
+#[test]
+fn named_kinds_through_the_general_path_agree() {
+    for named in presets() {
+        let general = Mechanism::new(named.cam().clone(), general_of(&named)).unwrap();
+        let w = named.cam().speed();
+        let scale = named.size();
+        let thetas: Vec<f64> = (0..144)
+            .map(|k| f64::from(k) * 2.5f64.to_radians())
+            .collect();
+        let (mut a, mut b) = (named.sweep(), general.sweep());
+        for (i, &t) in thetas.iter().enumerate() {
+            let (x, y) = (a.step(t).unwrap(), b.step(t).unwrap());
+            let what = format!("{} at {:.1}°", named.follower().kind_name(), t.to_degrees());
+            let q_scale = if named.follower().is_oscillating() {
+                1.0
+            } else {
+                scale
+            };
+            assert!(
+                (x.position - y.position).abs() <= 1e-12 * q_scale,
+                "{what}: q {} vs {}",
+                x.position,
+                y.position
+            );
+            assert!(
+                (x.velocity - y.velocity).abs() <= 1e-10 * q_scale * w,
+                "{what}: v {} vs {}",
+                x.velocity,
+                y.velocity
+            );
+            assert!(
+                (x.acceleration - y.acceleration).abs() <= 1e-9 * q_scale * w * w,
+                "{what}: a {} vs {}",
+                x.acceleration,
+                y.acceleration
+            );
+            assert!(
+                (x.contact_world - y.contact_world).norm() <= 1e-10 * scale,
+                "{what}: contact"
+            );
+            // a cold query agrees with the sweep
+            if i % 24 == 5 {
+                let cold = general.analyze(t).unwrap();
+                assert!(
+                    (cold.position - y.position).abs() <= 1e-12 * q_scale,
+                    "{what}: cold"
+                );
+            }
+        }
+    }
+}
+
+/// The ideal 20/42 pair at the standard centre distance: gear 1 (the cam) on the origin turning
+/// counter-clockwise, gear 2 on `(a, 0)`, its load turning it counter-clockwise onto gear 1.
+fn gear_pair(z1: u32, z2: u32) -> (Mechanism, f64) {
+    let (m, alpha) = (2.0, 20f64.to_radians());
+    let g1 = InvoluteGear::new(InvoluteGearSpec::new(m, z1, alpha)).unwrap();
+    let g2 = InvoluteGear::new(InvoluteGearSpec::new(m, z2, alpha)).unwrap();
+    let a = m * f64::from(z1 + z2) / 2.0;
+    let cam = Cam::from_rpm(Arc::new(g1), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
+    // a space of gear 2 faces gear 1's tooth 0 on the line of centres
+    let phi0 = std::f64::consts::PI + std::f64::consts::PI / f64::from(z2);
+    let follower = Follower::Rotating {
+        pivot: Point2::new(a, 0.0),
+        closing: Sense::Ccw,
+        initial_angle: phi0,
+        profile: FollowerProfile(Arc::new(g2)),
+    };
+    (Mechanism::new(cam, follower).unwrap(), phi0)
+}
+
+#[test]
+fn ideal_involute_pair_transmits_a_constant_ratio() {
+    let (z1, z2) = (20, 42);
+    let (mech, phi0) = gear_pair(z1, z2);
+    let w = mech.cam().speed();
+    let ratio = f64::from(z1) / f64::from(z2);
+    let (rb1, rb2) = (
+        2.0 * f64::from(z1) / 2.0 * 20f64.to_radians().cos(),
+        2.0 * f64::from(z2) / 2.0 * 20f64.to_radians().cos(),
+    );
+    let a = 62.0;
+    let alpha = 20f64.to_radians();
+    let mut sweep = mech.sweep();
+    let mut jumps = Vec::new();
+    // three mesh cycles of gear 1 (18° each) at 0.1°
+    for k in 0..=540 {
+        let theta = f64::from(k) * 0.1f64.to_radians();
+        let s = sweep.step(theta).unwrap();
+        let what = format!("θ = {:.1}°", theta.to_degrees());
+        assert!(
+            (s.velocity + ratio * w).abs() <= 1e-10 * ratio * w,
+            "{what}: ratio {}",
+            -s.velocity / w
+        );
+        assert!(
+            s.acceleration.abs() <= 1e-10 * ratio * w * w,
+            "{what}: acceleration {}",
+            s.acceleration
+        );
+        // the driven angle follows −(z1/z2) θ exactly (no transmission error)
+        assert!(
+            (s.position - (phi0 - ratio * theta)).abs() <= 1e-12,
+            "{what}: angle {}",
+            s.position
+        );
+        // the contact lies on the line of action: tangent to both base circles, through the
+        // pitch point, inclined at the pressure angle
+        let c = s.contact_world;
+        let pitch_point = Point2::new(a * rb1 / (rb1 + rb2), 0.0);
+        let along = Vec2::new(alpha.sin(), alpha.cos());
+        let off_line = camkin::geometry::cross(along, c - pitch_point);
+        assert!(
+            off_line.abs() <= 1e-10 * a,
+            "{what}: {off_line} off the line of action"
+        );
+        if let Found::Jump { .. } = s.found {
+            jumps.push(theta.to_degrees());
+        }
+    }
+    // handovers once per tooth of gear 1
+    assert!(jumps.len() >= 2, "handovers at {jumps:?}");
+    for w in jumps.windows(2) {
+        assert!(
+            (w[1] - w[0] - 18.0).abs() <= 0.1 + 1e-9,
+            "handovers at {jumps:?}"
+        );
+    }
+    // cold queries give the angle continued from θ = 0
+    for deg in [3.3, 17.9, 40.0, 123.4, 359.0] {
+        let theta = f64::to_radians(deg);
+        let s = mech.analyze(theta).unwrap();
+        assert!(
+            (s.position - (phi0 - ratio * theta)).abs() <= 1e-12,
+            "{deg}°: {}",
+            s.position
+        );
+    }
+}
+
+/// Regression: steps of 3° crossed a handover and the warm start landed on the next tooth pair
+/// with the driven angle two teeth round (187.1° for 170.0°), not marked as a jump.
+#[test]
+fn gear_sweep_with_large_steps_stays_on_the_branch_and_marks_handovers() {
+    let (z1, z2) = (20, 42);
+    let (mech, phi0) = gear_pair(z1, z2);
+    let ratio = f64::from(z1) / f64::from(z2);
+    for step_deg in [3.0, 7.0, 11.0] {
+        let mut sweep = mech.sweep();
+        let mut last_tooth = None;
+        for k in 0..40 {
+            let theta = (f64::from(k) * step_deg).to_radians();
+            let s = sweep.step(theta).unwrap();
+            assert!(
+                (s.position - (phi0 - ratio * theta)).abs() <= 1e-12,
+                "step {step_deg}° at {:.1}°: angle {}",
+                theta.to_degrees(),
+                s.position.to_degrees()
+            );
+            // a change of the driver's tooth in contact is reported as a jump
+            let camkin::curve::Domain::Periodic { period } = mech.profile_arc().domain() else {
+                unreachable!()
+            };
+            let tooth = (s.cam_param / (period / f64::from(z1))).floor();
+            if let Some(t) = last_tooth {
+                if t != tooth {
+                    assert!(
+                        matches!(s.found, Found::Jump { .. }),
+                        "handover at {:.1}° not marked",
+                        theta.to_degrees()
+                    );
+                }
+            }
+            last_tooth = Some(tooth);
+        }
+    }
+}
