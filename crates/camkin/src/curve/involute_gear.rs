@@ -146,7 +146,42 @@ struct Piece {
     shape: Shape,
 }
 
-/// An external involute spur gear's outline (see the [module docs](self)).
+/// An external involute spur gear's outline.
+//////
+/// Symbols (`general-follower-and-gears.md`): module `m`, teeth `z`, pressure angle `α`, addendum
+/// and dedendum factors `h_a`, `h_f`, profile shift coefficient `x`.
+///
+/// ```text
+/// pitch radius  r   = m z / 2           base radius r_b = r cos α
+/// tip radius    r_a = r + m (h_a + x)   root radius r_f = r − m (h_f − x)
+/// tooth thickness on the pitch circle   s = m (π/2 + 2 x tan α) − j     (j: backlash allowance)
+/// involute      p(t) = r_b (cos t + t sin t, sin t − t cos t),  inv(α) = tan α − α
+/// ```
+///
+/// Each tooth is symmetric about its centre line; tooth `k` is centred at the frame angle
+/// `2πk/z` (tooth 0 on the +x axis); the gear centre is the frame origin. Going counter-clockwise
+/// (material on the left), one tooth is: the root circle from the middle of the space before it,
+/// the root fillet, the radial line from the fillet up to the base circle (where the involute is
+/// radial), the involute flank, the tip relief, the tip circle, then the same mirrored. The
+/// parameter `u` is the arc length along each piece (of the unrelieved involute on a relieved
+/// stretch), so `|r'| = 1` except on the relief where it differs from 1 by about the relief's
+/// slope; `u = 0` is the middle of the space before tooth 0, at the angle `−π/z`; the period is
+/// `z` times one tooth's length.
+///
+/// - **Root fillet**: a circular arc tangent to the root circle and to the radial line below the
+///   base circle, of the radius given (0: a corner) — not the trochoid a rack cutter leaves, which
+///   no contact between correct gears reaches. When the root circle is at or above the base circle
+///   (many teeth) the involute meets the root circle at a corner and there is no fillet.
+/// - **Tip relief**: material removed along the flank's normal near the tip, `C_a` at the tip,
+///   growing from zero over a roll length `ℓ` (the length along the line of action) linearly or as
+///   a parabola. On an involute a normal offset `δ` is a rotation by `δ/r_b` about the gear
+///   centre, so the relieved flank is the involute turned by `δ(L)/r_b`, `L = r_b t`, in closed form.
+/// - **Backlash** is an allowance `j` (length on the pitch circle) by which this gear's teeth are
+///   thinned; a pair's circumferential backlash is the sum of the two gears' allowances.
+///
+/// Pieces meet with a continuous position (C⁰); the tangent turns at the corners (tip, and the
+/// root where there is no fillet) and the curvature jumps at every joint: all joints are
+/// [`Curve::breakpoints`](crate::curve::Curve::breakpoints). The involute's curvature is infinite at the base circle (`1/(r_b t)`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct InvoluteGear {
     spec: InvoluteGearSpec,
