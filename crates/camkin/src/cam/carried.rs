@@ -417,39 +417,19 @@ fn free_gap(covers: &[Cover], reference: f64, period: f64, periodic: bool) -> Op
     Some((reference + best.0 + shift, reference + best.1 + shift))
 }
 
-/// `J⁻¹ (−f)` for a 3×3 `J` by Gaussian elimination with partial pivoting, each equation first
-/// scaled by its largest coefficient (they mix lengths and lengths squared); `None` when singular.
-fn solve3(mut a: [[f64; 3]; 3], f: [f64; 3]) -> Option<[f64; 3]> {
-    let mut b = [-f[0], -f[1], -f[2]];
+/// `J⁻¹ (−f)` for a 3×3 `J` (nalgebra's LU with partial pivoting), each equation first scaled by
+/// its largest coefficient (they mix lengths and lengths squared); `None` when singular.
+fn solve3(a: [[f64; 3]; 3], f: [f64; 3]) -> Option<[f64; 3]> {
+    let mut m = nalgebra::Matrix3::from_fn(|r, c| a[r][c]);
+    let mut b = nalgebra::Vector3::new(-f[0], -f[1], -f[2]);
     for k in 0..3 {
-        let m = a[k].iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        if !(m > 0.0 && m.is_finite()) {
+        let s = m.row(k).amax();
+        if !(s > 0.0 && s.is_finite()) {
             return None;
         }
-        let inv = 1.0 / m;
-        a[k].iter_mut().for_each(|x| *x *= inv);
-        b[k] *= inv;
+        m.row_mut(k).scale_mut(1.0 / s);
+        b[k] /= s;
     }
-    for col in 0..3 {
-        let piv = (col..3).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
-        if !(a[piv][col].abs() > 1e-300) {
-            return None;
-        }
-        a.swap(col, piv);
-        b.swap(col, piv);
-        for r in col + 1..3 {
-            let m = a[r][col] / a[col][col];
-            let pivot_row = a[col];
-            for (x, p) in a[r].iter_mut().zip(pivot_row).skip(col) {
-                *x -= m * p;
-            }
-            b[r] -= m * b[col];
-        }
-    }
-    let mut x = [0.0; 3];
-    for r in (0..3).rev() {
-        let s: f64 = (r + 1..3).map(|cc| a[r][cc] * x[cc]).sum();
-        x[r] = (b[r] - s) / a[r][r];
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
+    let x = m.lu().solve(&b)?;
+    x.iter().all(|v| v.is_finite()).then(|| [x[0], x[1], x[2]])
 }
