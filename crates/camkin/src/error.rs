@@ -5,6 +5,7 @@ use crate::cam::CamError;
 use crate::contact::ContactError;
 use crate::curve::CurveError;
 use crate::dynamics::DynamicsError;
+use crate::gears::GearError;
 use crate::motion::MotionError;
 use crate::spec::SpecError;
 
@@ -27,6 +28,9 @@ pub enum Error {
     /// a dynamic simulation
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
+    /// a gear pair
+    #[error(transparent)]
+    Gear(#[from] GearError),
     /// a mechanism specification
     #[error(transparent)]
     Spec(#[from] SpecError),

@@ -72,6 +72,7 @@ pub mod curve;
 pub mod dynamics;
 mod error;
 pub mod field;
+pub mod gears;
 pub mod geometry;
 pub mod human;
 pub mod interp;

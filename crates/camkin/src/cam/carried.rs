@@ -157,13 +157,50 @@ impl Mechanism {
         }
         starts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut last = None;
+        let corner = |e: &CamError| {
+            matches!(
+                e,
+                CamError::NoConvergence {
+                    reason: StopReason::OnCorner,
+                    ..
+                }
+            )
+        };
         for &(_, u0, v0, q0) in starts.iter().take(STARTS) {
-            match self.carried_newton(c, theta, frame, u0, v0, q0) {
-                Ok(t) => match self.carried_accept(c, theta, frame, &t, Some(&covers)) {
-                    Ok(()) => return Ok(self.carried_report(c, theta, t)),
-                    Err(e) => last = Some(e),
+            let e = match self.carried_newton(c, theta, frame, u0, v0, q0) {
+                Ok(t) => match self.carried_settle(c, theta, frame, t, Some(&covers)) {
+                    Ok(t) => return Ok(self.carried_report(c, theta, t)),
+                    Err(e) => e,
                 },
-                Err(e) => last = Some(e),
+                Err(e) => e,
+            };
+            // a corner found in the way is the reason to give
+            if !last.as_ref().is_some_and(corner) {
+                last = Some(e);
+            }
+        }
+        // no tangency near a corner: the resting contact is at the corner
+        if !last.as_ref().is_some_and(corner) {
+            if let Some(&(_, u0, v0, q0)) = starts.first() {
+                let near = 3.0 * self.corners.spacing.max(c.corners.spacing);
+                let xa = frame * profile_point(self, u0);
+                let xb = self.geometry.joint.pose(q0).frame() * c.curve.position(v0);
+                let fb = self.geometry.joint.pose(q0).frame();
+                if self
+                    .corners
+                    .at
+                    .iter()
+                    .any(|&(_, y)| (frame * y - xa).norm() <= near)
+                    || c.corners
+                        .at
+                        .iter()
+                        .any(|&(_, y)| (fb * y - xb).norm() <= near)
+                {
+                    last = Some(CamError::NoConvergence {
+                        angle_deg,
+                        reason: StopReason::OnCorner,
+                    });
+                }
             }
         }
         Err(last.unwrap_or(CamError::NoConvergence {
@@ -255,8 +292,10 @@ impl Mechanism {
     }
 
     /// Accepts a converged tangency as the follower's resting contact: on the curve, the two
-    /// bodies' material on opposite sides, and no sampled cam point inside the follower by more
-    /// than the polyline's chord error (`covers`: the coverage at this angle when known).
+    /// bodies' material on opposite sides, no corner inside the other body, and no sampled cam
+    /// point inside the follower by more than the polyline's chord error (`covers`: the coverage
+    /// at this angle when known). `Ok(Some(t2))`: a tangency elsewhere, within the samples'
+    /// resolution of this one, stops the follower first.
     fn carried_accept(
         &self,
         c: &Carried,
@@ -264,7 +303,7 @@ impl Mechanism {
         frame: &Frame,
         t: &Touch,
         covers: Option<&Vec<Cover>>,
-    ) -> Result<(), CamError> {
+    ) -> Result<Option<Touch>, CamError> {
         let angle_deg = theta.to_degrees();
         let not_first = CamError::NoConvergence {
             angle_deg,
@@ -295,9 +334,20 @@ impl Mechanism {
                 &own
             }
         };
+        self.corners_outside(c, theta, frame, t)?;
         let slack = 2.0 * c.chord_error + self.options.touch_tolerance;
         let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
         let pitch = TAU / f64::from(c.symmetry);
+        let closing = match self.geometry.joint {
+            super::Joint::Rotating { closing, .. } => closing.sign(),
+            // a slide closes towards the cam: decreasing q
+            super::Joint::Translating { .. } => -1.0,
+        };
+        let contact = a.p;
+        let spacing = self.corners.spacing.max(c.chord_error);
+        let mut tried: Vec<Point2> = Vec::new();
+        let window = slack.max(spacing);
+        let mut ties: Vec<(f64, f64, &Cover)> = Vec::new();
         for k in covers {
             let q = if periodic {
                 // the cover's angle brought next to the contact's, modulo the pitch
@@ -314,6 +364,132 @@ impl Mechanism {
                     angle_deg,
                     reason: StopReason::BehindSample,
                 });
+            }
+            // a near tie elsewhere on the cam: the samples cannot tell which touches first (a
+            // sample can miss an overlap shallower than its spacing's sagitta), the exact
+            // tangency there can (a gear's next tooth pair, by a fraction of a micron)
+            if depth > -window {
+                ties.push((depth, q, k));
+            }
+        }
+        // the nearest ties first, one Newton per place
+        ties.sort_by(|a, b| b.0.total_cmp(&a.0));
+        for &(_, q, k) in &ties {
+            if tried.len() >= 8 {
+                break;
+            }
+            let x = frame * self.cam.profile.position(k.u);
+            if (x - contact).norm() <= 4.0 * spacing
+                || tried.iter().any(|y| (x - y).norm() <= 4.0 * spacing)
+            {
+                continue;
+            }
+            tried.push(x);
+            let (edge, v) = if closing > 0.0 {
+                (k.lo, k.v_lo)
+            } else {
+                (k.hi, k.v_hi)
+            };
+            let q0 = t.q + (edge - q);
+            if let Ok(mut t2) = self.carried_newton(c, theta, frame, k.u, v, q0) {
+                // the same configuration modulo the curve's symmetry (an arm: a turn)
+                // (the contact moved to the tooth that is there, as `carried_report` does)
+                let n = if periodic {
+                    ((t2.q - t.q) / pitch).round()
+                } else {
+                    0.0
+                };
+                let d = t2.q - t.q - n * pitch;
+                let gain = -closing * d * k.scale;
+                if gain > self.options.touch_tolerance && gain <= 2.0 * window {
+                    t2.q = t.q + d;
+                    if let (Some(period), true) = (c.period, n != 0.0) {
+                        t2.v = (t2.v + n * period / f64::from(c.symmetry)).rem_euclid(period);
+                    }
+                    if self.carried_proper(c, frame, &t2) {
+                        return Ok(Some(t2));
+                    }
+                }
+            }
+        }
+        Ok(None)
+    }
+
+    /// The accepted touch from `t`: moved to an earlier tangency while one is found (a few
+    /// times at most).
+    fn carried_settle(
+        &self,
+        c: &Carried,
+        theta: f64,
+        frame: &Frame,
+        mut t: Touch,
+        covers: Option<&Vec<Cover>>,
+    ) -> Result<Touch, CamError> {
+        for _ in 0..4 {
+            match self.carried_accept(c, theta, frame, &t, covers)? {
+                None => return Ok(t),
+                Some(t2) => t = t2,
+            }
+        }
+        Err(CamError::NoConvergence {
+            angle_deg: theta.to_degrees(),
+            reason: StopReason::NotFirstTouch,
+        })
+    }
+
+    /// A tangency with the bodies' material on opposite sides, on the curve.
+    fn carried_proper(&self, c: &Carried, frame: &Frame, t: &Touch) -> bool {
+        if c.period.is_none() && !(t.v >= c.bounds.0 && t.v <= c.bounds.1) {
+            return false;
+        }
+        let a = frame.curve_at(self.cam.profile.as_ref(), t.u);
+        let b = self
+            .geometry
+            .joint
+            .pose(t.q)
+            .frame()
+            .curve_at(c.curve.as_ref(), t.v);
+        let outward = -self.orientation * rot90(a.d1);
+        // the follower moving in its closing sense moves its point at the contact into the cam
+        let (dx, closing) = match self.geometry.joint {
+            super::Joint::Translating { direction, .. } => (*direction, -1.0),
+            super::Joint::Rotating { pivot, closing, .. } => (rot90(b.p - pivot), closing.sign()),
+        };
+        outward.dot(&rot90(b.d1)) > 0.0 && closing * dx.dot(&outward) < 0.0
+    }
+
+    /// Refuses a touch where a corner of either curve lies inside the other body (deeper than the
+    /// touch tolerance): the corner touches first, and a contact at a corner is not computed.
+    fn corners_outside(
+        &self,
+        c: &Carried,
+        theta: f64,
+        frame: &Frame,
+        t: &Touch,
+    ) -> Result<(), CamError> {
+        let tol = self.options.touch_tolerance;
+        let on_corner = CamError::NoConvergence {
+            angle_deg: theta.to_degrees(),
+            reason: StopReason::OnCorner,
+        };
+        let fb = self.geometry.joint.pose(t.q).frame();
+        let profile = self.cam.profile.as_ref();
+        // the follower's corners within the cam's reach, inside the cam
+        for &(_, y) in &c.corners.at {
+            let x = fb * y;
+            if (x - self.cam.pivot).norm() > self.size + tol {
+                continue;
+            }
+            let local = frame.inverse_transform_point(&x);
+            if self.corners.depth(profile, local, self.orientation) > tol {
+                return Err(on_corner);
+            }
+        }
+        // the cam's corners inside the follower
+        for &(_, y) in &self.corners.at {
+            let local = fb.inverse_transform_point(&(frame * y));
+            if c.corners.depth(c.curve.as_ref(), local, 1.0) > tol {
+                return Err(on_corner);
             }
         }
         Ok(())
@@ -345,8 +521,10 @@ impl Mechanism {
                 })
         };
         if let Ok(t) = self.carried_newton(c, theta, frame, u0, v0, q0) {
-            if self.carried_accept(c, theta, frame, &t, None).is_ok() && continues(&t) {
-                return Ok((t, Found::WarmStart));
+            if let Ok(t) = self.carried_settle(c, theta, frame, t, None) {
+                if continues(&t) {
+                    return Ok((t, Found::WarmStart));
+                }
             }
         }
         let g = self.carried_global(c, theta, frame)?;
@@ -356,6 +534,10 @@ impl Mechanism {
             (g, Found::Jump { from_cam_param: u0 })
         })
     }
+}
+
+fn profile_point(m: &Mechanism, u: f64) -> Point2 {
+    m.cam.profile.position(u)
 }
 
 /// The free gap (between covered stretches) to rest in, as `(from, to)` angles with

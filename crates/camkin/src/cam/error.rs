@@ -123,6 +123,9 @@ pub enum StopReason {
     /// the follower rests on a cusp of a folded profile (a corner: no tangency, no contact
     /// kinematics); the profile folds where the follower cannot follow its motion program
     OnCusp,
+    /// the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts),
+    /// where there is no tangency: not computed
+    OnCorner,
 }
 
 impl std::fmt::Display for StopReason {
@@ -133,6 +136,9 @@ impl std::fmt::Display for StopReason {
             StopReason::NotFirstTouch => "Newton reached a tangency that is not the first touch",
             StopReason::NoCandidate => "no candidate",
             StopReason::BehindSample => "refined contact is behind a sampled one",
+            StopReason::OnCorner => {
+                "the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts), which camkin does not compute yet"
+            }
             StopReason::OnCusp => {
                 "the follower rests on a cusp of the profile, which folds over itself there (the follower cannot follow the motion program)"
             }

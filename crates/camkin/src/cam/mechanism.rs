@@ -48,6 +48,7 @@ impl Mechanism {
             .min(geometry.model.roller_radius().unwrap_or(f64::INFINITY));
         options.newton_contraction = 1e3 / sharpest;
         let roller = geometry.model.roller_radius().is_some();
+        let corners = std::sync::Arc::new(super::corners::Corners::of(profile, &samples));
         let mut m = Self {
             cam,
             geometry,
@@ -62,6 +63,7 @@ impl Mechanism {
             mean_speed,
             cusps,
             breakpoints,
+            corners,
         };
         m.set_options(options);
         Ok(m)

@@ -15,6 +15,7 @@
 
 mod carried;
 mod checks;
+mod corners;
 mod derivatives;
 mod error;
 mod follower;
@@ -250,4 +251,6 @@ pub struct Mechanism {
     /// the cusps of a folded profile (parameters)
     cusps: Vec<f64>,
     breakpoints: Vec<f64>,
+    /// the profile's corners and the samples to measure a depth inside the cam from
+    corners: std::sync::Arc<corners::Corners>,
 }

@@ -62,6 +62,39 @@ pub struct TipRelief {
     pub shape: ReliefShape,
 }
 
+/// Which way a tooth's flank faces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+pub enum FlankSide {
+    /// facing clockwise (tooth 0's flank below the x axis): its involute unwinds
+    /// counter-clockwise from the base circle
+    Clockwise,
+    /// facing counter-clockwise: its involute unwinds clockwise
+    CounterClockwise,
+}
+
+impl FlankSide {
+    /// `+1` for a flank whose involute unwinds counter-clockwise (facing clockwise), else `−1`.
+    pub fn unwinding(self) -> f64 {
+        match self {
+            FlankSide::Clockwise => 1.0,
+            FlankSide::CounterClockwise => -1.0,
+        }
+    }
+}
+
+/// Where a parameter lies on a gear: see [`InvoluteGear::flank_at`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlankPoint {
+    /// the tooth, `0..z`
+    pub tooth: u32,
+    /// the side of the tooth
+    pub side: FlankSide,
+    /// the roll length when on the involute (relieved or not), else `None` (root, fillet, tip)
+    pub roll_length: Option<f64>,
+}
+
 /// What an involute gear is made from. Build with [`InvoluteGearSpec::new`] and change the
 /// defaults by the fields.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -189,6 +222,9 @@ pub struct InvoluteGear {
     ra: f64,
     rf: f64,
     fillet: f64,
+    /// half the tooth's angle at the base circle: tooth 0's flanks start at `∓γ`
+    gamma: f64,
+    relief: Option<Relief>,
     half: Vec<Piece>,
     /// length of a half tooth
     half_len: f64,
@@ -464,6 +500,8 @@ impl InvoluteGear {
             ra,
             rf,
             fillet,
+            gamma,
+            relief,
             half,
             half_len,
             turns,
@@ -519,6 +557,57 @@ impl InvoluteGear {
             Shape::Involute { s0, .. } => Some((2.0 * self.rb * (s0 + local)).sqrt()),
             _ => None,
         }
+    }
+
+    /// Half the tooth's angle at the base circle, `γ = s/(2r) + inv α` (`s`: the tooth thickness
+    /// on the pitch circle): tooth `k`'s flank facing clockwise starts on the base circle at the
+    /// frame angle `2πk/z − γ` and unwinds counter-clockwise, the other starts at `2πk/z + γ`
+    /// and unwinds clockwise.
+    pub fn base_half_angle(&self) -> f64 {
+        self.gamma
+    }
+
+    /// The tip relief `δ` (length, along the flank's normal) at roll length `roll` (0 below the
+    /// relief's start or without relief).
+    pub fn relief_at(&self, roll: f64) -> f64 {
+        match self.relief {
+            Some(r) if roll > r.start => r.amount * ((roll - r.start) / r.length).powi(r.power),
+            _ => 0.0,
+        }
+    }
+
+    /// Where the parameter `u` lies: its tooth, the side of the tooth (the flank facing clockwise
+    /// is the first half of the tooth's parameter), and its roll length when on a flank.
+    pub fn flank_at(&self, u: f64) -> FlankPoint {
+        let (tooth, _, mirrored) = self.locate(u);
+        FlankPoint {
+            tooth: tooth as u32,
+            side: if mirrored {
+                FlankSide::CounterClockwise
+            } else {
+                FlankSide::Clockwise
+            },
+            roll_length: self.roll_length(u),
+        }
+    }
+
+    /// The parameter of tooth `tooth`'s flank on `side` at roll length `roll` (the inverse of
+    /// [`InvoluteGear::roll_length`]); `None` when the flank does not reach that roll length.
+    pub fn param_at_roll(&self, tooth: u32, side: FlankSide, roll: f64) -> Option<f64> {
+        let s = roll * roll / (2.0 * self.rb);
+        let w = self.half.iter().enumerate().find_map(|(i, p)| {
+            let Shape::Involute { s0, .. } = p.shape else {
+                return None;
+            };
+            let end = self.half.get(i + 1).map_or(self.half_len, |n| n.start);
+            let w = p.start + (s - s0);
+            (roll >= 0.0 && w >= p.start && w <= end).then_some(w)
+        })?;
+        let base = f64::from(tooth % self.spec.teeth) * self.tooth_length();
+        Some(match side {
+            FlankSide::Clockwise => base + w,
+            FlankSide::CounterClockwise => base + self.tooth_length() - w,
+        })
     }
 
     /// `(tooth, w, mirrored)`: the tooth and the parameter within its half tooth.

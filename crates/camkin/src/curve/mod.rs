@@ -24,7 +24,8 @@ mod spline;
 pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use involute_gear::{
-    involute_function, InvoluteGear, InvoluteGearSpec, ReliefShape, TipRelief,
+    involute_function, FlankPoint, FlankSide, InvoluteGear, InvoluteGearSpec, ReliefShape,
+    TipRelief,
 };
 pub use line::Line;
 pub use point::PointCurve;

@@ -12,6 +12,7 @@ mod dynamics_multibody;
 mod eccentric_circle;
 mod ellipse_flat;
 mod forces;
+mod gear_mesh;
 mod general_follower;
 mod hyperdual_selfcheck;
 mod interpolation_study;

@@ -179,6 +179,8 @@ pub(crate) struct Carried {
     bucket_width: f64,
     /// the largest distance between the curve and its polyline (midpoints of the segments)
     pub(crate) chord_error: f64,
+    /// the curve's corners and the samples to measure a depth inside the follower from
+    pub(crate) corners: crate::cam::corners::Corners,
     /// the smallest and largest level of the polyline
     pub(crate) level_range: (f64, f64),
 }
@@ -295,6 +297,7 @@ impl Carried {
             Track::Pivot => curve.symmetry().max(1),
             Track::Slide { .. } => 1,
         };
+        let corners = crate::cam::corners::Corners::of(curve.as_ref(), &params);
         Ok(Self {
             curve,
             track,
@@ -308,6 +311,7 @@ impl Carried {
             bucket_width: width,
             chord_error,
             level_range: (lo, hi),
+            corners,
         })
     }
 
