@@ -21,6 +21,16 @@ struct Cover {
     scale: f64,
 }
 
+/// How the bodies meet at a touch.
+struct Sides {
+    /// the contact point (world)
+    contact: Point2,
+    /// the cam's outward normal points into the follower's material (on its left)
+    opposite: bool,
+    /// the follower moving in its closing sense moves its point at the contact into the cam
+    approaching: bool,
+}
+
 /// Most starts tried by Newton in one global search.
 const STARTS: usize = 8;
 
@@ -309,19 +319,10 @@ impl Mechanism {
             angle_deg,
             reason: StopReason::NotFirstTouch,
         };
-        if c.period.is_none() && !(t.v >= c.bounds.0 && t.v <= c.bounds.1) {
+        let Some(sides) = self.carried_sides(c, frame, t) else {
             return Err(not_first);
-        }
-        let a = frame.curve_at(self.cam.profile.as_ref(), t.u);
-        let b = self
-            .geometry
-            .joint
-            .pose(t.q)
-            .frame()
-            .curve_at(c.curve.as_ref(), t.v);
-        // the cam's outward normal points into the follower's material (on its left)
-        let outward = -self.orientation * rot90(a.d1);
-        if !(outward.dot(&rot90(b.d1)) > 0.0) {
+        };
+        if !sides.opposite {
             return Err(not_first);
         }
         let own;
@@ -343,7 +344,7 @@ impl Mechanism {
             // a slide closes towards the cam: decreasing q
             super::Joint::Translating { .. } => -1.0,
         };
-        let contact = a.p;
+        let contact = sides.contact;
         let spacing = self.corners.spacing.max(c.chord_error);
         let mut tried: Vec<Point2> = Vec::new();
         let window = slack.max(spacing);
@@ -437,10 +438,17 @@ impl Mechanism {
         })
     }
 
-    /// A tangency with the bodies' material on opposite sides, on the curve.
+    /// A tangency with the bodies' material on opposite sides, on the curve, that the follower
+    /// moving in its closing sense runs into.
     fn carried_proper(&self, c: &Carried, frame: &Frame, t: &Touch) -> bool {
+        self.carried_sides(c, frame, t)
+            .is_some_and(|s| s.opposite && s.approaching)
+    }
+
+    /// How the bodies meet at a touch; `None` when it is off an open curve's bounds.
+    fn carried_sides(&self, c: &Carried, frame: &Frame, t: &Touch) -> Option<Sides> {
         if c.period.is_none() && !(t.v >= c.bounds.0 && t.v <= c.bounds.1) {
-            return false;
+            return None;
         }
         let a = frame.curve_at(self.cam.profile.as_ref(), t.u);
         let b = self
@@ -450,12 +458,15 @@ impl Mechanism {
             .frame()
             .curve_at(c.curve.as_ref(), t.v);
         let outward = -self.orientation * rot90(a.d1);
-        // the follower moving in its closing sense moves its point at the contact into the cam
         let (dx, closing) = match self.geometry.joint {
             super::Joint::Translating { direction, .. } => (*direction, -1.0),
             super::Joint::Rotating { pivot, closing, .. } => (rot90(b.p - pivot), closing.sign()),
         };
-        outward.dot(&rot90(b.d1)) > 0.0 && closing * dx.dot(&outward) < 0.0
+        Some(Sides {
+            contact: a.p,
+            opposite: outward.dot(&rot90(b.d1)) > 0.0,
+            approaching: closing * dx.dot(&outward) < 0.0,
+        })
     }
 
     /// Refuses a touch where a corner of either curve lies inside the other body (deeper than the
@@ -485,9 +496,18 @@ impl Mechanism {
                 return Err(on_corner);
             }
         }
-        // the cam's corners inside the follower
+        // the cam's corners inside the follower (an arm's curve reaches no further from its
+        // pivot than its sampled levels)
+        let reach = match (c.track, self.geometry.joint) {
+            (Track::Pivot, super::Joint::Rotating { pivot, .. }) => Some((pivot, c.level_range.1)),
+            _ => None,
+        };
         for &(_, y) in &self.corners.at {
-            let local = fb.inverse_transform_point(&(frame * y));
+            let x = frame * y;
+            if reach.is_some_and(|(o, r)| (x - o).norm() > r + c.chord_error + tol) {
+                continue;
+            }
+            let local = fb.inverse_transform_point(&x);
             if c.corners.depth(c.curve.as_ref(), local, 1.0) > tol {
                 return Err(on_corner);
             }

@@ -4,7 +4,7 @@
 //! A first touch found as a tangency of smooth pieces is accepted on sampled points (see
 //! `carried`); a corner of one curve can press into the other between samples (a gear tooth's
 //! tip corner entering mesh, by microns). Each corner near the other body is projected onto the
-//! other curve (nearest sample, then Newton on the foot point) and its depth inside the material
+//! other curve (nearest sample, then golden sections on the foot point) and its depth inside the material
 //! measured exactly. A contact *at* a corner has no tangency; it is refused with
 //! [`StopReason::OnCorner`](super::StopReason::OnCorner), not answered wrongly.
 
@@ -73,7 +73,7 @@ impl Corners {
         };
         // the foot point between the nearest sample's neighbours, by golden sections on the
         // distance (no derivatives: robust where the curvature is large)
-        let (mut lo, mut hi) = match self.period {
+        let (lo, hi) = match self.period {
             Some(p) => (
                 if i == 0 {
                     self.samples[n - 1].0 - p
@@ -92,25 +92,7 @@ impl Corners {
             ),
         };
         let dist = |u: f64| (curve.position(u) - x).norm_squared();
-        let g = (5f64.sqrt() - 1.0) / 2.0;
-        let (mut a, mut b) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        let (mut fa, mut fb) = (dist(a), dist(b));
-        for _ in 0..80 {
-            if fa < fb {
-                hi = b;
-                b = a;
-                fb = fa;
-                a = hi - g * (hi - lo);
-                fa = dist(a);
-            } else {
-                lo = a;
-                a = b;
-                fa = fb;
-                b = lo + g * (hi - lo);
-                fb = dist(b);
-            }
-        }
-        let u = 0.5 * (lo + hi);
+        let (u, _) = super::golden::golden_min(dist, lo, hi, 80, |_| false);
         let u = match self.period {
             Some(p) => u.rem_euclid(p),
             None => u.clamp(self.bounds.0, self.bounds.1),
