@@ -351,11 +351,10 @@ impl Mechanism {
         let mut ties: Vec<(f64, f64, &Cover)> = Vec::new();
         for k in covers {
             let q = if periodic {
-                // the cover's angle brought next to the contact's, modulo the pitch
+                // the cover's angle brought next to the contact's, modulo a turn (not modulo a
+                // gear's pitch: every tooth has its own covers, and its own parameter `v`)
                 let mid = 0.5 * (k.lo + k.hi);
-                let m = wrap_angle_near(mid, t.q);
-                let m = m - ((m - t.q) / pitch).round() * pitch;
-                t.q + (mid - m)
+                t.q + (mid - wrap_angle_near(mid, t.q))
             } else {
                 t.q
             };

@@ -344,20 +344,39 @@ fn resting_angle(
     eps: f64,
     relieved: bool,
 ) -> (f64, f64) {
+    // the driven flank (relieved: turned towards its tooth's centre by δ₂/r_b2, as the driver's)
+    // holds the point at radius r when the polar angle is the phase plus ε inv(acos(r_b2/r)); it
+    // reaches from its base circle to its tip
+    let r_tip2 = f2.rb.hypot(f2.l_tip);
     let phase = |l: f64| {
         let p = f1.point(Point2::origin(), theta, k1, eps, l, relieved);
         let d = p - o2;
         let r = d.norm();
-        d.y.atan2(d.x) - eps * involute_function((f2.rb / r).acos())
-    };
-    // the phase wrapped next to its value at the flank's middle
-    let mid = phase(0.5 * (f1.l_from + f1.l_tip));
-    let ph = |l: f64| {
-        let v = phase(l);
-        mid + (v - mid + PI).rem_euclid(TAU) - PI
+        if r > r_tip2 {
+            return f64::INFINITY;
+        }
+        let turn2 = if relieved {
+            f2.delta((r * r - f2.rb * f2.rb).sqrt()) / f2.rb
+        } else {
+            0.0
+        };
+        d.y.atan2(d.x) - eps * (involute_function((f2.rb / r).acos()) + turn2)
     };
     let n = 4000;
     let step = (f1.l_tip - f1.l_from) / f64::from(n);
+    // the phase wrapped next to its value at the first flank point within the driven tip circle
+    let mid = (0..=n)
+        .map(|i| phase(f1.l_from + f64::from(i) * step))
+        .find(|v| v.is_finite())
+        .unwrap_or(0.0);
+    let ph = |l: f64| {
+        let v = phase(l);
+        if v.is_finite() {
+            mid + (v - mid + PI).rem_euclid(TAU) - PI
+        } else {
+            v
+        }
+    };
     let (mut best, mut at) = (f64::INFINITY, 0);
     for i in 0..=n {
         let v = ph(f1.l_from + f64::from(i) * step);
@@ -392,68 +411,123 @@ fn resting_angle(
 /// sits on that corner are refused, not answered wrongly.
 #[test]
 fn tip_relief_gives_the_transmission_error_its_closed_form_shape() {
-    relief_cases(&[
-        (Some(ReliefShape::Parabolic), None),
-        (Some(ReliefShape::Linear), None),
-    ]);
+    for shape in [ReliefShape::Parabolic, ReliefShape::Linear] {
+        ReliefCase::new(20, 42, Some(shape), None).run();
+    }
 }
 
-/// Known defect (open): with relief on both gears, a warm step keeps the tooth pair it had when
-/// the other pair touches first by 0.2 µm (θ = 3.85°), and the global search reports a driven
-/// tooth that does not match the pair touching (θ = 3.70°).
+/// Regression (issue 16): with relief on both gears the two pairs near a handover touch within
+/// a fraction of a micron of each other, closer than the samples can tell; the near-tie check
+/// took every gear tooth's cover for the one facing the contact (modulo the pitch) and started
+/// Newton on the wrong tooth, so the pair leaving mesh was missed by 0.1 µm (θ = 3.75°–3.80°,
+/// 20/42) on cold queries and warm steps alike. Other tooth counts, amounts and lengths, and
+/// cold queries, exercise the same class.
 #[test]
-#[ignore = "known defect: relief on both gears picks the wrong pair near 3.7°–3.9°"]
 fn tip_relief_on_both_gears_picks_the_pair_that_touches_first() {
-    relief_cases(&[(Some(ReliefShape::Parabolic), Some(ReliefShape::Parabolic))]);
+    let p = Some(ReliefShape::Parabolic);
+    ReliefCase::new(20, 42, p, p).run();
+    let mut c = ReliefCase::new(20, 42, p, p);
+    c.cold = true;
+    c.run();
+    let mut c = ReliefCase::new(17, 31, p, p);
+    (c.amount, c.length) = (0.012, 3.0);
+    c.run();
+    let mut c = ReliefCase::new(26, 26, p, Some(ReliefShape::Linear));
+    (c.amount, c.length, c.cold) = (0.008, 2.5, true);
+    c.run();
 }
 
-fn relief_cases(cases: &[(Option<ReliefShape>, Option<ReliefShape>)]) {
-    for &(shape1, shape2) in cases {
+/// A pair with tip relief, swept over 18° at 0.05° (warm steps, or cold queries).
+struct ReliefCase {
+    z1: u32,
+    z2: u32,
+    shape1: Option<ReliefShape>,
+    shape2: Option<ReliefShape>,
+    amount: f64,
+    length: f64,
+    cold: bool,
+}
+
+impl ReliefCase {
+    fn new(z1: u32, z2: u32, shape1: Option<ReliefShape>, shape2: Option<ReliefShape>) -> Self {
+        Self {
+            z1,
+            z2,
+            shape1,
+            shape2,
+            amount: 0.02,
+            length: 5.0,
+            cold: false,
+        }
+    }
+}
+
+impl ReliefCase {
+    fn run(&self) {
+        let &Self {
+            z1,
+            z2,
+            shape1,
+            shape2,
+            amount,
+            length,
+            cold,
+        } = self;
         let relief = |s: Option<ReliefShape>| {
             s.map(|shape| TipRelief {
-                amount: 0.02,
-                length: 5.0,
+                amount,
+                length,
                 shape,
             })
         };
-        let mut s1 = InvoluteGearSpec::new(M, 20, alpha());
+        let mut s1 = InvoluteGearSpec::new(M, z1, alpha());
         s1.tip_relief = relief(shape1);
-        let mut s2 = InvoluteGearSpec::new(M, 42, alpha());
+        let mut s2 = InvoluteGearSpec::new(M, z2, alpha());
         s2.tip_relief = relief(shape2);
         let (f1, f2) = (Flank::new(&s1), Flank::new(&s2));
-        let o2 = Point2::new(62.0, 0.0);
-        let (mech, gp) = pair(gear(s1), gear(s2), 62.0, Sense::Ccw, Sense::Ccw);
-        let rb2 = f2.rb;
+        let centres = M * f64::from(z1 + z2) / 2.0;
+        let o2 = Point2::new(centres, 0.0);
+        let (mech, gp) = pair(gear(s1), gear(s2), centres, Sense::Ccw, Sense::Ccw);
         let t1_to_pitch = f1.rb * alpha().tan();
-        let g_len = 62.0 * alpha().sin();
-        let pb = TAU * f1.rb / 20.0;
+        let g_len = centres * alpha().sin();
+        let pb = TAU * f1.rb / f64::from(z1);
         let mut sweep = mech.sweep();
         let mut seen_relief = 0;
         let mut refused = 0;
         let mut worst_first: f64 = 0.0;
         let start = g_len - f2.l_tip - t1_to_pitch;
         let mut last = (f64::NAN, f64::NAN);
-        for k in 0..360 {
+        // a mesh cycle and a fifth, at 0.05°
+        let n = (1.2 * 360.0 / f64::from(z1) / 0.05).ceil() as u32;
+        for k in 0..n {
             let theta = f64::from(k) * 0.05f64.to_radians();
-            let s = match sweep.step(theta) {
+            let s = match if cold {
+                mech.analyze(theta)
+            } else {
+                sweep.step(theta)
+            } {
                 Ok(s) => s,
                 Err(e) => {
-                    // only where the contact is at a corner: the driver's relief corner (linear
-                    // relief), or the driven gear's tip corner entering mesh ahead of the line of
-                    // action (the driven gear advanced by the relief of the pair leaving)
-                    let l_corner = f1.l_tip - 5.0;
-                    let on_relief_corner = (0..20).any(|k1| {
+                    // only where the contact is at a corner: a linear relief's corner, or the
+                    // driven gear's tip corner entering mesh ahead of the line of action (the
+                    // driven gear advanced by the relief of the pair leaving)
+                    let on_relief_corner = (0..z1).any(|k1| {
                         [1.0, -1.0].iter().any(|&eps| {
                             let (_, l) = resting_angle(&f1, &f2, o2, theta, k1, 0, eps, true);
-                            (l - l_corner).abs() <= 1e-6
+                            // the driven flank's roll length there, from the contact's radius
+                            let p = f1.point(Point2::origin(), theta, k1, eps, l, true);
+                            let l2 = ((p - o2).norm_squared() - f2.rb * f2.rb).sqrt();
+                            (shape1 == Some(ReliefShape::Linear)
+                                && (l - (f1.l_tip - length)).abs() <= 1e-6)
+                                || (shape2 == Some(ReliefShape::Linear)
+                                    && (l2 - (f2.l_tip - length)).abs() <= 1e-6)
                         })
                     });
                     // the leaving pair's place on the line of action, moving at r_b1 per radian
                     let x = last.0 + (theta - last.1) * f1.rb;
                     let entering = (x - pb - start).abs() <= 0.3;
                     assert!(
-                        (shape1 == Some(ReliefShape::Linear) && on_relief_corner)
-                            || (shape2.is_none() && entering),
+                        on_relief_corner || (shape2.is_none() && entering),
                         "{shape1:?}/{shape2:?} at θ = {:.2}°: {e}",
                         theta.to_degrees()
                     );
@@ -465,7 +539,10 @@ fn relief_cases(cases: &[(Option<ReliefShape>, Option<ReliefShape>)]) {
             if g.pairs_in_contact == 1 {
                 last = (g.line_of_action_position, theta);
             }
-            let what = format!("{shape1:?}/{shape2:?} at θ = {:.2}°", theta.to_degrees());
+            let what = format!(
+                "{z1}/{z2} {shape1:?}/{shape2:?} at θ = {:.2}°",
+                theta.to_degrees()
+            );
             let eps = g.driver_flank.unwinding();
             // the same tooth pair, by the phase function: relieved minus exact
             let (q_rel, _) = resting_angle(
@@ -494,6 +571,22 @@ fn relief_cases(cases: &[(Option<ReliefShape>, Option<ReliefShape>)]) {
                 "{what}: angle {} against {q_rel}",
                 s.position
             );
+            // no other pair touches first: the neighbouring pairs (driver tooth k1 + j meets
+            // driven tooth k2 − j: the gears turn in opposite senses), each by its own
+            // independent first touch, come no earlier in the closing sense (ccw: larger angles)
+            let pitch2 = TAU / f64::from(z2);
+            for j in [-2i32, -1, 1, 2] {
+                let k1 = (g.driver_tooth as i32 + j).rem_euclid(z1 as i32) as u32;
+                let k2 = (g.driven_tooth as i32 - j).rem_euclid(z2 as i32) as u32;
+                let (q, _) = resting_angle(&f1, &f2, o2, theta, k1, k2, eps, true);
+                let ahead = wrap(q - s.position);
+                if q.is_finite() && ahead.abs() < 0.5 * pitch2 {
+                    assert!(
+                        ahead >= -1e-11,
+                        "{what}: teeth {k1}/{k2} touch first, {ahead:e} rad earlier"
+                    );
+                }
+            }
             let te = wrap(q_rel - q_ideal);
             assert!(
                 (g.transmission_error - te).abs() <= 1e-11,
@@ -542,7 +635,8 @@ fn relief_cases(cases: &[(Option<ReliefShape>, Option<ReliefShape>)]) {
             // about C_a/ℓ over the flanks' relative curvature): the model drops the change of
             // the flanks' curvature over that shift (κ' = r_b/ρ³, largest near the driver's
             // root); the first-order textbook figure is 3–6 % off, so the test tells them apart
-            let rel = if shape1 == Some(ReliefShape::Linear) {
+            let rel = if shape1 == Some(ReliefShape::Linear) || shape2 == Some(ReliefShape::Linear)
+            {
                 2e-2
             } else {
                 5e-3
@@ -557,16 +651,18 @@ fn relief_cases(cases: &[(Option<ReliefShape>, Option<ReliefShape>)]) {
             if te_len > 1e-4 {
                 seen_relief += 1;
             }
-            let _ = rb2;
         }
         assert!(
             seen_relief > 10,
-            "{shape1:?}: TE seen at {seen_relief} angles"
+            "{z1}/{z2} {shape1:?}/{shape2:?}: TE seen at {seen_relief} angles"
         );
-        assert!(refused <= 40, "{shape1:?}: {refused} angles refused");
+        assert!(
+            refused <= 40,
+            "{z1}/{z2} {shape1:?}/{shape2:?}: {refused} angles refused"
+        );
         assert!(
             worst_first > 0.02,
-            "{shape1:?}: first order off by {worst_first} at most"
+            "{z1}/{z2} {shape1:?}/{shape2:?}: first order off by {worst_first} at most"
         );
     }
 }
