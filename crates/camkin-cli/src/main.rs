@@ -1,7 +1,7 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
 use camkin_cli::commands::{
-    analyze, bench, compare, deviation, forces, plot, profile, serve, simulate, synth,
+    analyze, bench, compare, deviation, forces, mesh, plot, profile, serve, simulate, synth,
 };
 use camkin_cli::Failure;
 
@@ -23,6 +23,12 @@ enum Command {
         after_help = "Examples:\n  camkin analyze                              # the paper's cam, one revolution in 1° steps\n  camkin analyze examples/paper.toml --at 0,45\n  camkin analyze cam.toml --angles 0:90:0.5 -o out.csv\n\nColumns: see the README. Exit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Analyze(analyze::Args),
+    /// A gear pair read as gears: transmission error and its rates, tooth pairs in contact,
+    /// line of action, sliding and specific sliding at driver angles, as CSV.
+    #[command(
+        after_help = "Examples:\n  camkin mesh                                  # the built-in 20/42 pair, two mesh cycles\n  camkin mesh examples/gear-pair-tip-relief.toml --plot fig\n  camkin mesh pair.toml --angles 0:36:0.05 -o mesh.csv --format json\n\nThe contact ratio and the transmission error's range go to stderr. Columns: see the README.\nExit codes: 0 success, 1 internal failure, 2 bad input (not a gear pair, among others)."
+    )]
+    Mesh(mesh::MeshArgs),
     /// The paper's study on its two built-in cams: CSV data, plots (SVG, PNG) and a summary.
     #[command(
         after_help = "Examples:\n  camkin paper                       # writes ./camkin-paper/{original,revised}/… and summary.md\n  camkin paper --out study --format json\n  camkin paper --step 0.1 --nodes 100,1000\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
@@ -120,6 +126,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Analyze(args) => analyze::run(&args),
+        Command::Mesh(args) => mesh::run(&args),
         Command::Paper(args) => compare::run_paper(&args),
         Command::Compare(args) => compare::run_compare(&args),
         Command::Plot(args) => plot::run(&args),

@@ -41,13 +41,15 @@ impl Columns {
         let cap = self.capacity;
         for (slot, cell) in self.cols.iter_mut().zip(row) {
             let col = slot.get_or_insert_with(|| match cell {
-                Cell::Num(_) => Column::Num(Vec::with_capacity(cap)),
-                Cell::Int(_) => Column::Flag(Vec::with_capacity(cap)),
+                Cell::Num(_) | Cell::Count(_) => Column::Num(Vec::with_capacity(cap)),
+                Cell::Int(_) | Cell::Flag(_) => Column::Flag(Vec::with_capacity(cap)),
                 Cell::Text(_) => Column::Text(Vec::with_capacity(cap)),
             });
             match (col, cell) {
                 (Column::Num(v), Cell::Num(x)) => v.push(x.unwrap_or(f64::NAN)),
+                (Column::Num(v), Cell::Count(x)) => v.push(x.map_or(f64::NAN, f64::from)),
                 (Column::Flag(v), Cell::Int(x)) => v.push(x.is_some_and(|x| x != 0)),
+                (Column::Flag(v), Cell::Flag(x)) => v.push(x.unwrap_or(false)),
                 (Column::Text(v), Cell::Text(x)) => v.push(x),
                 // a column's cells are of one kind (the library's definition)
                 (Column::Num(v), _) => v.push(f64::NAN),

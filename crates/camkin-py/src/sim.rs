@@ -129,6 +129,8 @@ impl PyMechanism {
                 match cell {
                     camkin::table::Cell::Num(x) => d.set_item(name, x)?,
                     camkin::table::Cell::Int(x) => d.set_item(name, x)?,
+                    camkin::table::Cell::Count(x) => d.set_item(name, x)?,
+                    camkin::table::Cell::Flag(x) => d.set_item(name, x)?,
                     camkin::table::Cell::Text(x) => d.set_item(name, x)?,
                 }
             }

@@ -5,6 +5,7 @@ pub mod bench;
 pub mod compare;
 pub mod deviation;
 pub mod forces;
+pub mod mesh;
 pub mod plot;
 pub mod profile;
 pub mod serve;

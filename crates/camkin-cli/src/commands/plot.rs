@@ -191,24 +191,30 @@ fn kinematics(
                 label: pu.clone(),
                 unit: u.motion_symbol(0),
                 points: lift.clone(),
+                resolution: 0.0,
             },
             svaj::Panel {
                 label: vu.clone(),
                 unit: u.motion_symbol(1),
                 points: vel.clone(),
+                resolution: 0.0,
             },
             svaj::Panel {
                 label: au.clone(),
                 unit: u.motion_symbol(2),
                 points: acc.clone(),
+                resolution: 0.0,
             },
             svaj::Panel {
                 label: ju.clone(),
                 unit: u.motion_symbol(3),
                 points: jerk.clone(),
+                resolution: 0.0,
             },
         ],
         marks: marks(mech, grid, states),
+        x: svaj::Page::REVOLUTION,
+        x_label: "cam angle (°)".into(),
     };
     let mut written = svaj::save(&page, &dir.join("svaj"))?;
     let charts = vec![

@@ -154,6 +154,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
                     .zip(&prog)
                     .map(|(a, p)| (*a, p[k].unwrap_or(f64::NAN)))
                     .collect(),
+                resolution: 0.0,
             })
             .collect(),
         marks: synth
@@ -164,6 +165,8 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
                 order: d.order,
             })
             .collect(),
+        x: svaj::Page::REVOLUTION,
+        x_label: "cam angle (°)".into(),
     };
     svaj::save(&page, &out("svaj")).map_err(Failure::output)?;
 

@@ -8,15 +8,18 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
-/// One panel: a quantity over the cam angle.
+/// One panel: a quantity over the page's angle axis.
 #[derive(Debug, Clone)]
 pub struct Panel {
     /// the axis label with its unit, `acceleration (mm/s²)`
     pub label: String,
     /// the unit's symbol, for the peak annotations
     pub unit: String,
-    /// `(cam angle in degrees, value)`; a NaN breaks the line
+    /// `(angle in degrees, value)`; a NaN breaks the line
     pub points: Vec<(f64, f64)>,
+    /// values within this of zero are drawn as zero: the computation's rounding, not a signal
+    /// (0: every value as it is)
+    pub resolution: f64,
 }
 
 /// Where the motion is discontinuous: a vertical mark on the panel of the quantity that jumps
@@ -38,6 +41,14 @@ pub struct Page {
     pub panels: Vec<Panel>,
     /// discontinuities
     pub marks: Vec<Mark>,
+    /// the angle axis: its range, degrees, and its label with the unit
+    pub x: (f64, f64),
+    pub x_label: String,
+}
+
+impl Page {
+    /// The axis of a revolution of the cam.
+    pub const REVOLUTION: (f64, f64) = (0.0, 360.0);
 }
 
 /// Pixel size of the page.
@@ -78,9 +89,23 @@ where
     let root = root.margin(14, 0, 0, 0);
     let body = root.titled(&page.title, ("sans-serif", 24)).map_err(e)?;
     let n = page.panels.len();
+    let (x0, x1) = page.x;
     let areas = body.split_evenly((n, 1));
     for (i, (area, p)) in areas.into_iter().zip(&page.panels).enumerate() {
         let last = i + 1 == n;
+        let cleaned;
+        let p = if p.resolution > 0.0 {
+            let mut q = p.clone();
+            for pt in &mut q.points {
+                if pt.1.abs() <= p.resolution {
+                    pt.1 = 0.0;
+                }
+            }
+            cleaned = q;
+            &cleaned
+        } else {
+            p
+        };
         let finite = p.points.iter().filter(|q| q.1.is_finite());
         let (mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY);
         for &(_, y) in finite {
@@ -107,11 +132,11 @@ where
             .margin_bottom(if last { 8 } else { 2 })
             .x_label_area_size(if last { 50 } else { 18 })
             .y_label_area_size(110)
-            .build_cartesian_2d(0.0..360.0, lo..hi)
+            .build_cartesian_2d(x0..x1, lo..hi)
             .map_err(e)?;
         let x_fmt = |v: &f64| {
             if last {
-                tick(*v, 360.0)
+                tick(*v, x1 - x0)
             } else {
                 String::new()
             }
@@ -126,13 +151,13 @@ where
             .x_labels(19)
             .light_line_style(RGBColor(235, 235, 235));
         if last {
-            mesh.x_desc("cam angle (°)");
+            mesh.x_desc(&page.x_label);
         }
         mesh.draw().map_err(e)?;
         // the zero line
         if lo < 0.0 && hi > 0.0 {
             ch.draw_series(std::iter::once(PathElement::new(
-                vec![(0.0, 0.0), (360.0, 0.0)],
+                vec![(x0, 0.0), (x1, 0.0)],
                 BLACK.mix(0.35).stroke_width(1),
             )))
             .map_err(e)?;
@@ -152,7 +177,7 @@ where
         let color = COLORS[i % COLORS.len()];
         let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
         for &(x, y) in &p.points {
-            if y.is_finite() && (0.0..=360.0).contains(&x) {
+            if y.is_finite() && (x0..=x1).contains(&x) {
                 if let Some(r) = runs.last_mut() {
                     r.push((x, y));
                 }
@@ -179,7 +204,7 @@ where
                     camkin::human::human((x * 100.0).round() / 100.0)
                 );
                 // keep the label inside the panel: to the left of points near the right edge
-                let dx = if x > 250.0 {
+                let dx = if x > x0 + 0.7 * (x1 - x0) {
                     -(8 * text.chars().count() as i32) - 6
                 } else {
                     8

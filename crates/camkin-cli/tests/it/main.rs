@@ -4,6 +4,7 @@
 mod cli_analyze;
 mod cli_bad_input;
 mod cli_engineer;
+mod cli_mesh;
 mod cli_output;
 mod cli_plot;
 mod cli_simulate;

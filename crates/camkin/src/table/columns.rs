@@ -2,7 +2,7 @@
 //! `Mechanism.analyze`): [`AnalysisRow`] converted and named by [`Units`].
 
 use super::units::Units;
-use super::{AnalysisRow, FoundBy};
+use super::AnalysisRow;
 
 /// One cell of a table whose column names are only known at run time (they carry units).
 #[derive(Debug, Clone, PartialEq)]
@@ -11,6 +11,10 @@ pub enum Cell {
     Num(Option<f64>),
     /// a small whole number
     Int(Option<u8>),
+    /// a count or an index
+    Count(Option<u32>),
+    /// yes or no (CSV `true`/`false`, JSON a boolean)
+    Flag(Option<bool>),
     /// text
     Text(Option<String>),
 }
@@ -21,6 +25,8 @@ impl serde::Serialize for Cell {
         match self {
             Cell::Num(Some(x)) => s.serialize_f64(*x),
             Cell::Int(Some(x)) => s.serialize_u8(*x),
+            Cell::Count(Some(x)) => s.serialize_u32(*x),
+            Cell::Flag(Some(x)) => s.serialize_bool(*x),
             Cell::Text(Some(x)) => s.serialize_str(x),
             _ => s.serialize_none(),
         }
@@ -94,14 +100,7 @@ pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
         n(r.pressure_angle_deg),
         n(r.radius_of_curvature),
         Cell::Int(r.at_node),
-        Cell::Text(r.found.map(|f| {
-            match f {
-                FoundBy::Global => "global",
-                FoundBy::Warm => "warm",
-                FoundBy::Jump => "jump",
-            }
-            .to_string()
-        })),
+        Cell::Text(r.found.map(|f| f.name().to_string())),
         Cell::Text(r.error.clone()),
     ]
 }

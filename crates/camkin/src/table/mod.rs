@@ -6,6 +6,7 @@
 //! the mechanism's length unit, time in seconds. Numbers are not rounded.
 
 mod columns;
+mod mesh;
 mod sweep;
 mod units;
 
@@ -16,6 +17,7 @@ pub use columns::{
     analysis_cells, analysis_columns, event_cells, event_columns, sample_cells, sample_columns,
     Cell,
 };
+pub use mesh::{mesh_cells, mesh_columns, MeshRow};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
 pub use units::{AngleUnit, Per, Units, UnknownUnit};
 
@@ -32,6 +34,17 @@ pub enum FoundBy {
     /// the contact jumped since the previous row (a global search found a different contact,
     /// or the contact passed over a stretch the follower cannot follow)
     Jump,
+}
+
+impl FoundBy {
+    /// The name the tables print: `global`, `warm`, `jump`.
+    pub fn name(self) -> &'static str {
+        match self {
+            FoundBy::Global => "global",
+            FoundBy::Warm => "warm",
+            FoundBy::Jump => "jump",
+        }
+    }
 }
 
 /// One row of the analysis (`camkin analyze`): the follower's motion and the contact at one cam

@@ -1,0 +1,299 @@
+//! `camkin mesh`: a gear pair read as gears, at a list or range of driver angles: driven angle,
+//! transmission error and its rates, tooth pairs, line of action, sliding; CSV or JSON, and a
+//! page of plots over the angles.
+
+use crate::args::{AngleList, AngleRange};
+use crate::draw::svaj;
+use crate::mechfile;
+use crate::output::{write_atomic, write_cells, TableFormat};
+use crate::{load_mechanism, Failure, Loaded};
+use anyhow::{anyhow, Context};
+use camkin::cam::{CamError, FollowerState};
+use camkin::gears::GearPair;
+use camkin::human::human;
+use camkin::spec::LengthUnit;
+use camkin::table::{contact_jumps, mesh_cells, mesh_columns, MeshRow, Units};
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, clap::Args)]
+pub struct MeshArgs {
+    /// Mechanism file (TOML) whose cam and follower profiles are involute gears; without it, the
+    /// built-in 20/42 pair (examples/gear-pair-20-42.toml).
+    pub mechanism: Option<PathBuf>,
+    /// Driver angles in degrees, comma-separated (each a cold query).
+    #[arg(
+        long,
+        value_name = "A1,A2,...",
+        conflicts_with = "angles",
+        allow_hyphen_values = true
+    )]
+    pub at: Option<AngleList>,
+    /// Range of driver angles in degrees: START:STOP:STEP, STOP excluded [default: two mesh
+    /// cycles, 0:720/z1, 360 steps each: a tooth pair's whole time in mesh and a handover].
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
+    pub angles: Option<AngleRange>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+    pub format: TableFormat,
+    /// Output file (written atomically); standard output without it.
+    #[arg(short = 'o', long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+    /// Also draw the transmission error, the driven gear's acceleration, the sliding velocity
+    /// and both flanks' specific sliding over the angles into DIR/mesh.{svg,png}.
+    #[arg(long, value_name = "DIR")]
+    pub plot: Option<PathBuf>,
+    /// Allow more than 2 million angles or a run estimated at over 30 s (refused otherwise,
+    /// with the estimate).
+    #[arg(long)]
+    pub large: bool,
+}
+
+/// The built-in pair.
+pub const GEAR_PAIR_TOML: &str = include_str!("../../../../examples/gear-pair-20-42.toml");
+
+/// Rows held in memory at most without `--large` (about 250 bytes each).
+const MAX_ROWS: usize = 2_000_000;
+
+fn load(path: Option<&PathBuf>) -> Result<Loaded, Failure> {
+    match path {
+        Some(_) => load_mechanism(path),
+        None => {
+            eprintln!("camkin: no mechanism file given; using the built-in 20/42 gear pair (examples/gear-pair-20-42.toml, lengths in mm)");
+            let mech = mechfile::parse(GEAR_PAIR_TOML, "gear-pair-20-42.toml", Path::new("."))
+                .map_err(|e| Failure::Internal(anyhow!(e)))?;
+            Ok(Loaded {
+                mech,
+                unit: LengthUnit::Mm,
+                name: "gear-pair-20-42".into(),
+            })
+        }
+    }
+}
+
+/// A small length for people: µm (or µin) from the mechanism's unit, with the factor.
+fn micro_length(unit: LengthUnit) -> (&'static str, f64) {
+    match unit {
+        LengthUnit::In => ("µin", 1e6),
+        u => ("µm", 1e6 * u.metres()),
+    }
+}
+
+pub fn run(args: &MeshArgs) -> Result<(), Failure> {
+    let loaded = load(args.mechanism.as_ref())?;
+    let mech = &loaded.mech;
+    let pair = GearPair::new(mech).map_err(|e| {
+        Failure::Input(anyhow!(
+            "{}: not a gear pair: {e}",
+            args.mechanism
+                .as_ref()
+                .map_or_else(|| "the built-in pair".into(), |p| p.display().to_string())
+        ))
+    })?;
+    let z1 = pair.driver().teeth();
+    let angles = match (&args.at, args.angles) {
+        (Some(list), _) => list.0.clone(),
+        (None, Some(range)) => range.angles(),
+        (None, None) => {
+            let cycle = 360.0 / f64::from(z1);
+            (0..720).map(|k| f64::from(k) * cycle / 360.0).collect()
+        }
+    };
+    if angles.len() > MAX_ROWS && !args.large {
+        return Err(Failure::Input(anyhow!(
+            "{} angles would hold about {} MB of rows in memory; pass --large to run it anyway, or use fewer angles",
+            angles.len(),
+            human((angles.len() as f64 * 250.0 / 1e6).ceil())
+        )));
+    }
+    crate::check_sweep_time(mech, angles.len(), 1, args.large)?;
+    let contiguous = args.at.is_none();
+    let results: Vec<Result<FollowerState, CamError>> = if contiguous {
+        let mut sweep = mech.sweep();
+        angles.iter().map(|a| sweep.step(a.to_radians())).collect()
+    } else {
+        angles
+            .iter()
+            .map(|a| mech.analyze(a.to_radians()))
+            .collect()
+    };
+    let jumps = contact_jumps(mech, &results, contiguous);
+    let rows: Vec<MeshRow> = angles
+        .iter()
+        .zip(&results)
+        .zip(&jumps)
+        .map(|((&a, r), &j)| MeshRow::new(&pair, mech, a, r, j))
+        .collect();
+    let units = Units::plain(mech, loaded.unit);
+    let columns = mesh_columns(&units);
+    let mut chunk = Some(rows.iter().map(mesh_cells).collect::<Vec<_>>());
+    write_atomic(args.output.as_deref(), |w| {
+        write_cells(w, args.format, &columns, &mut || chunk.take())
+    })
+    .map_err(|e| {
+        if args.output.is_some() {
+            Failure::output(e)
+        } else {
+            Failure::Internal(e)
+        }
+    })?;
+    summary(&pair, &loaded, &rows);
+    if let Some(dir) = &args.plot {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("cannot create {}", dir.display()))
+            .map_err(Failure::Input)?;
+        let written = plot(&pair, &loaded, &rows, dir).map_err(Failure::output)?;
+        for p in written {
+            eprintln!("camkin: wrote {}", p.display());
+        }
+    }
+    let failed = rows.iter().filter(|r| r.error.is_some()).count();
+    if failed > 0 {
+        eprintln!(
+            "camkin: {failed} of {} angles could not be analysed; see the error column",
+            rows.len()
+        );
+    }
+    Ok(())
+}
+
+/// The pair and what the rows show, on stderr, rounded for people.
+fn summary(pair: &GearPair, loaded: &Loaded, rows: &[MeshRow]) {
+    let l = loaded.unit.name();
+    let (z1, z2) = (pair.driver().teeth(), pair.driven().teeth());
+    eprintln!(
+        "camkin: {z1}/{z2} teeth, centre distance {} {l}, operating pressure angle {}°, contact ratio {}, base pitch {} {l}",
+        human((pair.centre_distance() * 1e6).round() / 1e6),
+        human((pair.operating_pressure_angle().to_degrees() * 1e4).round() / 1e4),
+        human((pair.contact_ratio() * 1e4).round() / 1e4),
+        human((pair.base_pitch() * 1e4).round() / 1e4),
+    );
+    let (mu, k) = micro_length(loaded.unit);
+    let te: Vec<f64> = rows
+        .iter()
+        .filter_map(|r| r.transmission_error_length)
+        .collect();
+    if let (Some(lo), Some(hi)) = (
+        te.iter().copied().reduce(f64::min),
+        te.iter().copied().reduce(f64::max),
+    ) {
+        let handovers = rows
+            .iter()
+            .filter(|r| r.found == Some(camkin::table::FoundBy::Jump))
+            .count();
+        let most = rows.iter().filter_map(|r| r.pairs_in_contact).max();
+        eprintln!(
+            "camkin: over these angles the transmission error along the line of action is {} to {} {mu} (peak to peak {} {mu}); {handovers} handover{} to another tooth pair (rows marked jump); at most {} tooth pair{} in contact",
+            human((lo * k * 1e4).round() / 1e4),
+            human((hi * k * 1e4).round() / 1e4),
+            human(((hi - lo) * k * 1e4).round() / 1e4),
+            if handovers == 1 { "" } else { "s" },
+            most.unwrap_or(0),
+            if most == Some(1) { "" } else { "s" }
+        );
+    }
+}
+
+/// The mesh page: transmission error, the driven gear's angular acceleration, the sliding
+/// velocity and both flanks' specific sliding over the driver angle; handovers marked.
+fn plot(
+    pair: &GearPair,
+    loaded: &Loaded,
+    rows: &[MeshRow],
+    dir: &Path,
+) -> anyhow::Result<Vec<PathBuf>> {
+    let l = loaded.unit.name();
+    let (mu, k) = micro_length(loaded.unit);
+    // a handover: the transmission error has a kink, its rates and the sliding jump
+    let handover = |w: &[MeshRow]| {
+        w[1].found == Some(camkin::table::FoundBy::Jump)
+            || w[0].driver_tooth != w[1].driver_tooth
+            || w[0].driven_tooth != w[1].driven_tooth
+    };
+    // the curve of one quantity; `broken`: a line break at each handover (the quantity jumps)
+    let series = |f: &dyn Fn(&MeshRow) -> Option<f64>, broken: bool| -> Vec<(f64, f64)> {
+        let mut out = Vec::with_capacity(rows.len() + 8);
+        for (k, r) in rows.iter().enumerate() {
+            if broken && k > 0 && handover(&rows[k - 1..=k]) {
+                out.push((r.angle_deg, f64::NAN));
+            }
+            out.push((r.angle_deg, f(r).unwrap_or(f64::NAN)));
+        }
+        out
+    };
+    let panel = |label: String, unit: &str, points, resolution| svaj::Panel {
+        label,
+        unit: unit.into(),
+        points,
+        resolution,
+    };
+    // an ideal pair's transmission error and acceleration are zero to rounding (1e-12 rad,
+    // 1e-15 ω²): drawn as zero, not as noise magnified to fill the panel
+    let omega = loaded.mech.cam().speed();
+    let size = pair.centre_distance();
+    let x0 = rows
+        .iter()
+        .map(|r| r.angle_deg)
+        .fold(f64::INFINITY, f64::min);
+    let x1 = rows
+        .iter()
+        .map(|r| r.angle_deg)
+        .fold(f64::NEG_INFINITY, f64::max);
+    if !(x0 < x1) {
+        return Err(anyhow!("a plot needs at least two different angles"));
+    }
+    let marks = rows
+        .windows(2)
+        .filter(|w| handover(w))
+        .map(|w| svaj::Mark {
+            angle_deg: w[1].angle_deg,
+            order: 1,
+        })
+        .collect();
+    let rpm = loaded.mech.cam().speed() * 60.0 / std::f64::consts::TAU;
+    let page = svaj::Page {
+        title: format!(
+            "{}: {}/{} teeth, contact ratio {}, driver at {} rpm; dashed: handover to the next tooth pair",
+            loaded.name,
+            pair.driver().teeth(),
+            pair.driven().teeth(),
+            human((pair.contact_ratio() * 1e3).round() / 1e3),
+            human((rpm * 1e3).round() / 1e3),
+        ),
+        panels: vec![
+            panel(
+                format!("transmission error ({mu})"),
+                mu,
+                series(&|r| r.transmission_error_length.map(|t| t * k), false),
+                1e-10 * size * k,
+            ),
+            panel(
+                "driven acceleration (rad/s²)".into(),
+                "rad/s²",
+                series(&|r| r.driven_acceleration, true),
+                1e-10 * omega * omega,
+            ),
+            panel(
+                format!("sliding velocity ({l}/s)"),
+                &format!("{l}/s"),
+                series(&|r| r.sliding_velocity, true),
+                0.0,
+            ),
+            panel(
+                "specific sliding, driver".into(),
+                "",
+                series(&|r| r.specific_sliding_driver, true),
+                0.0,
+            ),
+            panel(
+                "specific sliding, driven".into(),
+                "",
+                series(&|r| r.specific_sliding_driven, true),
+                0.0,
+            ),
+        ],
+        marks,
+        x: (x0, x1),
+        x_label: "driver angle (°)".into(),
+    };
+    svaj::save(&page, &dir.join("mesh"))
+}
