@@ -502,3 +502,47 @@ fn sweeps_of_minutes_on_a_large_non_convex_profile_ask_first() {
         assert!(!out.exists());
     }
 }
+
+/// The mushroom example (a translating follower carrying a circle of radius R through its origin)
+/// is a roller of radius R whose centre is R further along the line of travel: the same motion,
+/// its position R less — the general follower against a named kind's closed form.
+#[test]
+fn mushroom_follower_is_a_roller_shifted_by_its_radius() {
+    let file = examples().join("mushroom-follower.toml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let cut = text.find("[follower.profile]").unwrap();
+    let roller = text[..cut].replace(
+        "kind = \"translating\"\n",
+        "kind = \"translating-roller\"\nroller_radius = 60.0\n",
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let rfile = dir.path().join("roller.toml");
+    std::fs::write(&rfile, roller).unwrap();
+    let run = |f: &std::path::Path| {
+        let out = camkin()
+            .arg("analyze")
+            .arg(f)
+            .args(["--angles", "0:360:5"])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        parse_csv(&out).1
+    };
+    let (m, r) = (run(&file), run(&rfile));
+    assert_eq!(m.len(), 72);
+    for (a, b) in m.iter().zip(&r) {
+        let x = |row: &Vec<String>, i: usize| row[i].parse::<f64>().unwrap();
+        assert!(
+            (x(a, 1) + 60.0 - x(b, 1)).abs() <= 1e-10 * 110.0,
+            "{a:?} {b:?}"
+        );
+        for i in [3, 4] {
+            assert!(
+                (x(a, i) - x(b, i)).abs() <= 1e-9 * (1.0 + x(b, i).abs()),
+                "{i}: {a:?} {b:?}"
+            );
+        }
+    }
+}

@@ -39,33 +39,29 @@ impl Mechanism {
         self.geometry.carried.as_deref()
     }
 
-    /// `(along, level)` of a world point `x` relative to the follower's joint at `q = 0`, and the
-    /// length per unit of `q` there.
-    #[inline]
-    fn track_of(&self, c: &Carried, x: Point2) -> (f64, f64, f64) {
-        match (c.track, self.geometry.joint) {
-            (Track::Slide { d, p }, super::Joint::Translating { origin, .. }) => {
-                let y = x - origin;
-                (y.dot(&d), y.dot(&p), 1.0)
-            }
-            (_, super::Joint::Rotating { pivot, .. }) => {
-                let y = x - pivot;
-                let rho = y.norm();
-                (y.y.atan2(y.x), rho, rho)
-            }
-            _ => (f64::NAN, f64::NAN, 1.0),
-        }
-    }
-
     /// Every covered stretch of follower positions by the cam's sampled points at `frame`.
     fn covers(&self, c: &Carried, frame: &Frame, out: &mut Vec<Cover>) {
-        let profile = self.cam.profile.as_ref();
         let (lo, hi) = c.level_range;
         let mut buf: Vec<Crossing> = Vec::new();
         let mut inside = Vec::new();
-        for &u in &self.samples {
-            let x = frame.curve_position(profile, u);
-            let (along, level, scale) = self.track_of(c, x);
+        for (&u, &y) in self.samples.iter().zip(&self.sample_points) {
+            let x = frame * y;
+            // the level first: most points of a large driver are beyond an arm's reach
+            let (along, level, scale) = match (c.track, self.geometry.joint) {
+                (Track::Slide { d, p }, super::Joint::Translating { origin, .. }) => {
+                    let y = x - origin;
+                    (y.dot(&d), y.dot(&p), 1.0)
+                }
+                (_, super::Joint::Rotating { pivot, .. }) => {
+                    let y = x - pivot;
+                    let rho = y.norm();
+                    if !(rho >= lo && rho <= hi) {
+                        continue;
+                    }
+                    (y.y.atan2(y.x), rho, rho)
+                }
+                _ => continue,
+            };
             if !(level >= lo && level <= hi) {
                 continue;
             }

@@ -55,6 +55,7 @@ impl Mechanism {
             options,
             coarse: samples.clone(),
             samples,
+            sample_points: Vec::new(),
             period,
             size,
             orientation,
@@ -77,6 +78,12 @@ impl Mechanism {
             options.samples_per_piece.max(2),
             options.samples_per_curve.max(8),
         );
+        self.sample_points = if self.geometry.carried.is_some() {
+            let profile = self.cam.profile.as_ref();
+            self.samples.iter().map(|&u| profile.position(u)).collect()
+        } else {
+            Vec::new()
+        };
         self.coarse = bracket_samples(
             &self.breakpoints,
             self.period,

@@ -239,6 +239,8 @@ pub struct Mechanism {
     geometry: Geometry,
     options: AnalysisOptions,
     samples: Vec<f64>,
+    /// the profile's points at `samples` (cam frame), for the coverage of a carried curve
+    sample_points: Vec<Point2>,
     coarse: Vec<f64>,
     period: f64,
     size: f64,

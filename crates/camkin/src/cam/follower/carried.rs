@@ -343,8 +343,27 @@ impl Carried {
                 Track::Slide { .. } => lb < la,
                 Track::Pivot => lb > la,
             };
+            let along = match self.track {
+                Track::Slide { d, .. } => y.dot(&d),
+                // the polar angle interpolated between the vertices' (no atan2 per crossing,
+                // which the coverage of a gear makes for every tooth): off the chord's own by
+                // the cube of its angular extent, a hundredth of the chord error
+                Track::Pivot => {
+                    let (pa, pb) = (a.2 .0, b.2 .0);
+                    let d = (pb - pa + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+                        - std::f64::consts::PI;
+                    let x = pa + f * d;
+                    if x > std::f64::consts::PI {
+                        x - std::f64::consts::TAU
+                    } else if x <= -std::f64::consts::PI {
+                        x + std::f64::consts::TAU
+                    } else {
+                        x
+                    }
+                }
+            };
             out.push(Crossing {
-                along: self.track.coords(y).0,
+                along,
                 v: a.1 + f * (vb - a.1),
                 entering,
             });
