@@ -2,6 +2,8 @@
 //!
 //! - `spline/eval`: one evaluation of the paper's cam profile (position and three derivatives);
 //! - `contact/find_contact`: the general pairing-point search between a spline and an ellipse;
+//! - `contact/find_contact_1000`, `contact/find_contact_indexed_1000`: the same between two closed
+//!   splines of 1000 nodes each (16 000 samples each), the indexes built at each query or once;
 //! - `contact/kinematics`: sliding rates, constraint row and right-hand side at a given pairing;
 //! - `cold/<follower>`: one query at an arbitrary cam angle (global search, velocity,
 //!   acceleration: `Mechanism::motion`) for each follower type on the paper's cam;
@@ -10,8 +12,10 @@
 //! - `dynamics/revolution_1deg`: one simulated revolution of the paper's cam, 1° steps.
 use camkin::body::{BodyState, Pose};
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
-use camkin::contact::{find_contact, ContactKinematics, SearchOptions, Surface};
-use camkin::curve::{Curve, Ellipse};
+use camkin::contact::{
+    find_contact, find_contact_indexed, ContactKinematics, CurveIndex, SearchOptions, Surface,
+};
+use camkin::curve::{ClosedSpline, Curve, Ellipse};
 use camkin::reference::{paper_mechanism, paper_profile};
 use camkin::{Point2, Vec2};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -96,6 +100,37 @@ fn contact(c: &mut Criterion) {
         bch.iter(|| black_box(find_contact(&sa, &sb, &opts)))
     });
     let p = find_contact(&sa, &sb, &opts).expect("pair").pairing();
+    // two wavy closed splines of 1000 nodes, 8 mm apart
+    let star = |r: f64, wobble: f64, lobes: f64| {
+        let pts: Vec<Point2> = (0..1000)
+            .map(|i| {
+                let t = std::f64::consts::TAU * f64::from(i) / 1000.0;
+                let rr = r * (1.0 + wobble * (lobes * t).sin());
+                Point2::new(rr * t.cos(), rr * t.sin())
+            })
+            .collect();
+        ClosedSpline::new(&pts).expect("star")
+    };
+    let (s1, s2) = (star(50.0, 0.1, 3.0), star(20.0, 0.15, 2.0));
+    let b1 = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
+    let b2 = BodyState::at_rest(Pose::new(Point2::new(78.0, 3.0), 0.0));
+    let (t1, t2) = (Surface::new(&s1, &b1), Surface::new(&s2, &b2));
+    let o50 = SearchOptions::for_length_scale(50.0);
+    c.bench_function("contact/find_contact_1000", |bch| {
+        bch.iter(|| black_box(find_contact(&t1, &t2, &o50)))
+    });
+    let (i1, i2) = (CurveIndex::new(&s1, &o50), CurveIndex::new(&s2, &o50));
+    c.bench_function("contact/find_contact_indexed_1000", |bch| {
+        bch.iter(|| {
+            black_box(find_contact_indexed(
+                &t1,
+                i1.as_ref(),
+                &t2,
+                i2.as_ref(),
+                &o50,
+            ))
+        })
+    });
     c.bench_function("contact/kinematics", |bch| {
         bch.iter(|| black_box(ContactKinematics::new(&sa, &sb, black_box(&p), 1e-9)))
     });

@@ -36,6 +36,9 @@ use crate::curve::{Curve, Domain};
 use crate::geometry::Frame;
 use crate::geometry::{cross, rot90, Point2, UnitVec2, Vec2};
 
+mod tree;
+pub use tree::CurveIndex;
+
 /// A curve carried by a body at one instant.
 #[derive(Debug, Clone, Copy)]
 pub struct Surface<'a> {
@@ -248,6 +251,9 @@ pub fn refine(
     })
 }
 
+/// Starting pairs refined by Newton in a global search.
+const STARTS: usize = 6;
+
 /// Sample parameters for the global bracketing of one curve; `None` for an unbounded curve.
 fn sample_params(c: &dyn Curve, opts: &SearchOptions) -> Option<Vec<f64>> {
     match c.domain() {
@@ -346,36 +352,42 @@ pub fn find_contact(
     b: &Surface<'_>,
     opts: &SearchOptions,
 ) -> Result<Proximity, ContactError> {
-    let sa = sample_params(a.curve, opts);
-    let sb = sample_params(b.curve, opts);
+    let ia = CurveIndex::new(a.curve, opts);
+    let ib = CurveIndex::new(b.curve, opts);
+    find_contact_indexed(a, ia.as_ref(), b, ib.as_ref(), opts)
+}
+
+/// [`find_contact`] with the curves' indexes built once ([`CurveIndex::new`] with the same
+/// options; `None` for an unbounded curve): the search at many poses of the same curves.
+pub fn find_contact_indexed(
+    a: &Surface<'_>,
+    ia: Option<&CurveIndex>,
+    b: &Surface<'_>,
+    ib: Option<&CurveIndex>,
+    opts: &SearchOptions,
+) -> Result<Proximity, ContactError> {
+    let ia = ia.filter(|_| tree::bounded(a.curve));
+    let ib = ib.filter(|_| tree::bounded(b.curve));
     // Candidate starting pairs: (distance², u_a, u_b).
-    let mut starts: Vec<(f64, f64, f64)> = match (&sa, &sb) {
+    let mut starts: Vec<(f64, f64, f64)> = match (ia, ib) {
         (None, None) => return Err(ContactError::Unsupported("two unbounded curves")),
-        (Some(sa), Some(sb)) => {
-            let pa: Vec<Point2> = sa.iter().map(|&u| a.eval(u).p).collect();
-            let pb: Vec<Point2> = sb.iter().map(|&u| b.eval(u).p).collect();
-            let mut best = Vec::with_capacity(sa.len());
-            for (i, xa) in pa.iter().enumerate() {
-                let (j, d2) = pb
-                    .iter()
-                    .enumerate()
-                    .map(|(j, xb)| (j, (xa - xb).norm_squared()))
-                    .fold((0, f64::INFINITY), |m, x| if x.1 < m.1 { x } else { m });
-                best.push((d2, sa[i], sb[j]));
-            }
-            best
-        }
-        (Some(sa), None) => sa
-            .iter()
-            .map(|&ua| {
+        // each sample of A with its nearest sample of B, the nearest few (a tree of bounding
+        // circles prunes the pairs that cannot be among them)
+        (Some(ia), Some(ib)) => tree::nearest_pairs(ia, &a.frame, ib, &b.frame, STARTS)
+            .into_iter()
+            .map(|(d2, i, j)| (d2, ia.param(i), ib.param(j)))
+            .collect(),
+        (Some(ia), None) => (0..ia.len())
+            .map(|i| {
+                let ua = ia.param(i);
                 let x = a.eval(ua).p;
                 let ub = project_onto(b, x, 0.0, opts);
                 ((x - b.eval(ub).p).norm_squared(), ua, ub)
             })
             .collect(),
-        (None, Some(sb)) => sb
-            .iter()
-            .map(|&ub| {
+        (None, Some(ib)) => (0..ib.len())
+            .map(|j| {
+                let ub = ib.param(j);
                 let x = b.eval(ub).p;
                 let ua = project_onto(a, x, 0.0, opts);
                 ((a.eval(ua).p - x).norm_squared(), ua, ub)
@@ -386,7 +398,7 @@ pub fn find_contact(
     let mut best: Option<Pairing> = None;
     let mut deepest: Option<Pairing> = None;
     let mut last_err = None;
-    for &(_, ua, ub) in starts.iter().take(6) {
+    for &(_, ua, ub) in starts.iter().take(STARTS) {
         match refine(a, b, ua, ub, opts) {
             Ok(p) => {
                 if p.gap < -opts.contact_tolerance {
