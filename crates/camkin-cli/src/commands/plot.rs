@@ -184,6 +184,15 @@ fn kinematics(
     let vel = series(&|s| conv(s)[1]);
     let acc = series(&|s| conv(s)[2]);
     let title = svaj_title(loaded, u);
+    // rounding, drawn as zero: 1e-9 of the next lower derivative's largest value times the rate
+    // of the axis (a gear pair's constant speed has an acceleration of 1e-10 °/s², not a signal)
+    let rate = match u.per {
+        Per::S => mech.cam().speed(),
+        Per::Deg => 1.0,
+    };
+    let largest = |p: &[(f64, f64)]| p.iter().fold(0.0, |a: f64, q| a.max(q.1.abs()));
+    let res = |lower: &[(f64, f64)]| 1e-9 * largest(lower) * rate;
+    let (res_v, res_a, res_j) = (res(&lift), res(&vel), res(&acc));
     let page = svaj::Page {
         title,
         panels: vec![
@@ -197,19 +206,19 @@ fn kinematics(
                 label: vu.clone(),
                 unit: u.motion_symbol(1),
                 points: vel.clone(),
-                resolution: 0.0,
+                resolution: res_v,
             },
             svaj::Panel {
                 label: au.clone(),
                 unit: u.motion_symbol(2),
                 points: acc.clone(),
-                resolution: 0.0,
+                resolution: res_a,
             },
             svaj::Panel {
                 label: ju.clone(),
                 unit: u.motion_symbol(3),
                 points: jerk.clone(),
-                resolution: 0.0,
+                resolution: res_j,
             },
         ],
         marks: marks(mech, grid, states),
@@ -286,16 +295,29 @@ fn marks(mech: &Mechanism, grid: &[f64], states: &[Option<FollowerState>]) -> Ve
         .map(|s| s.ok_or(camkin::cam::CamError::OpenProfile))
         .collect();
     let jumps = camkin::table::contact_jumps(mech, &results, true);
+    let motion: [Vec<Option<f64>>; 4] = [
+        states.iter().map(|s| s.map(|s| s.position)).collect(),
+        states.iter().map(|s| s.map(|s| s.velocity)).collect(),
+        states.iter().map(|s| s.map(|s| s.acceleration)).collect(),
+        states.iter().map(|s| s.and_then(|s| s.jerk)).collect(),
+    ];
     let bps = mech.cam().profile().breakpoints();
     let piece = |s: &FollowerState| bps.partition_point(|&b| b <= s.cam_param);
     for k in 1..grid.len() {
         if jumps[k] {
-            out.push(svaj::Mark {
-                angle_deg: grid[k],
-                order: 0,
-            });
+            // the contact jumped: mark the lowest derivative of the motion that jumps with it (a
+            // follower's position is continuous, its velocity jumps where the contact crosses a
+            // stretch it cannot follow); none when the motion goes on smoothly (a gear's next
+            // tooth pair taking over)
+            if let Some(order) = jump_order(&motion, k) {
+                out.push(svaj::Mark {
+                    angle_deg: grid[k],
+                    order,
+                });
+            }
         } else if let (Some(p), Some(c)) = (&states[k - 1], &states[k]) {
-            if piece(p) != piece(c) && bps.len() > 1 {
+            // (the jerk jumps at a node; a carried curve's jerk is not computed)
+            if piece(p) != piece(c) && bps.len() > 1 && p.jerk.is_some() && c.jerk.is_some() {
                 out.push(svaj::Mark {
                     angle_deg: 0.5 * (grid[k - 1] + grid[k]),
                     order: 3,
@@ -304,6 +326,24 @@ fn marks(mech: &Mechanism, grid: &[f64], states: &[Option<FollowerState>]) -> Ve
         }
     }
     out
+}
+
+/// The lowest derivative of the motion (0 position … 3 jerk) that jumps between rows `k − 1` and
+/// `k`: its change there is more than four times the changes on either side (plus rounding,
+/// 1e-9 of its largest value); `None` when none does. `motion[m][i]`: derivative `m` at row `i`.
+fn jump_order(motion: &[Vec<Option<f64>>; 4], k: usize) -> Option<usize> {
+    (0..4).find(|&m| {
+        let x = &motion[m];
+        let at = |i: usize| x.get(i).copied().flatten();
+        let scale = x.iter().flatten().fold(0.0, |a: f64, v| a.max(v.abs()));
+        let (Some(a), Some(b)) = (k.checked_sub(1).and_then(at), at(k)) else {
+            return false;
+        };
+        let before = k.checked_sub(2).and_then(|i| Some((a - at(i)?).abs()));
+        let after = at(k + 1).map(|c| (c - b).abs());
+        let side = before.into_iter().chain(after).fold(0.0, f64::max);
+        (b - a).abs() > 4.0 * side + 1e-9 * scale
+    })
 }
 
 pub fn run(args: &PlotArgs) -> Result<(), Failure> {
@@ -424,4 +464,41 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         args.out.display()
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::jump_order;
+
+    /// Where the contact jumped, the mark goes on the derivative that jumps: the velocity of a
+    /// follower whose contact crossed a stretch it cannot follow, nothing for a gear's next tooth
+    /// pair taking over smoothly (it was marked as a jump of the position on every panel).
+    #[test]
+    fn contact_jump_marks_the_derivative_that_jumps() {
+        let n = 40;
+        let smooth = |f: &dyn Fn(f64) -> f64| -> Vec<Option<f64>> {
+            (0..n).map(|i| Some(f(f64::from(i) * 0.01))).collect()
+        };
+        // constant speed: nothing jumps
+        let steady = [
+            smooth(&|t| 3.0 * t),
+            smooth(&|_| 3.0),
+            smooth(&|_| 0.0),
+            vec![None; n as usize],
+        ];
+        assert_eq!(jump_order(&steady, 20), None);
+        // a kink of the position at row 20: the velocity jumps
+        let kink = |t: f64| if t < 0.2 { t } else { 0.2 - 2.0 * (t - 0.2) };
+        let kinked = [
+            smooth(&kink),
+            smooth(&|t| if t < 0.2 { 1.0 } else { -2.0 }),
+            smooth(&|_| 0.0),
+            vec![None; n as usize],
+        ];
+        assert_eq!(jump_order(&kinked, 20), Some(1));
+        // a step of the position
+        let mut stepped = steady.clone();
+        stepped[0] = smooth(&|t| 3.0 * t + if t < 0.2 { 0.0 } else { 1.0 });
+        assert_eq!(jump_order(&stepped, 20), Some(0));
+    }
 }
