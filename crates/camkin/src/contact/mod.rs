@@ -366,8 +366,29 @@ pub fn find_contact_indexed(
     ib: Option<&CurveIndex>,
     opts: &SearchOptions,
 ) -> Result<Proximity, ContactError> {
-    let ia = ia.filter(|_| tree::bounded(a.curve));
-    let ib = ib.filter(|_| tree::bounded(b.curve));
+    // an index missing for a bounded curve is built here; one that is not of its curve refused
+    let (own_a, own_b);
+    let ia = match ia {
+        Some(i) => Some(i),
+        None => {
+            own_a = CurveIndex::new(a.curve, opts);
+            own_a.as_ref()
+        }
+    };
+    let ib = match ib {
+        Some(i) => Some(i),
+        None => {
+            own_b = CurveIndex::new(b.curve, opts);
+            own_b.as_ref()
+        }
+    };
+    for (i, s) in [(ia, a), (ib, b)] {
+        if i.is_some_and(|i| !i.samples(s.curve)) {
+            return Err(ContactError::Unsupported(
+                "an index built for another curve (build it with CurveIndex::new from this curve)",
+            ));
+        }
+    }
     // Candidate starting pairs: (distance², u_a, u_b).
     let mut starts: Vec<(f64, f64, f64)> = match (ia, ib) {
         (None, None) => return Err(ContactError::Unsupported("two unbounded curves")),

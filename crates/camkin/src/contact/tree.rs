@@ -66,6 +66,15 @@ impl CurveIndex {
         self.points.is_empty()
     }
 
+    /// Whether this is an index of `curve`: bounded, and its first and last samples on it.
+    pub(crate) fn samples(&self, curve: &dyn Curve) -> bool {
+        bounded(curve)
+            && [0, self.points.len() - 1].iter().all(|&i| {
+                let (p, q) = (curve.position(self.params[i]), self.points[i]);
+                (p - q).norm() <= 1e-12 * (1.0 + q.coords.norm())
+            })
+    }
+
     pub(crate) fn param(&self, i: usize) -> f64 {
         self.params[i]
     }

@@ -360,3 +360,33 @@ fn regression_point_as_a_constraint_sign() {
     );
     assert_eq!(*k.normal, Vec2::new(1.0, 0.0)); // −ν_B of a ccw circle at angle 0 (ν_B = (−1, 0))
 }
+
+/// Indexes built once answer as the search that builds them (two discs, closed form: the gap is
+/// the centres' distance minus the radii at every pose), a missing index is built, and an index
+/// of another curve is refused rather than searched with.
+#[test]
+fn indexed_search_answers_as_the_plain_one_and_refuses_a_foreign_index() {
+    use camkin::contact::{find_contact_indexed, CurveIndex};
+    let (c1, c2) = (
+        Circle::new(Point2::new(0.3, 0.0), 2.0).unwrap(),
+        Circle::new(Point2::origin(), 1.0).unwrap(),
+    );
+    let opts = SearchOptions::for_length_scale(2.0);
+    let (i1, i2) = (CurveIndex::new(&c1, &opts), CurveIndex::new(&c2, &opts));
+    for k in 0..20 {
+        let t = f64::from(k) * 0.31;
+        let a = BodyState::at_rest(Pose::new(Point2::new(0.1, -0.2), t));
+        let b = BodyState::at_rest(Pose::new(Point2::new(3.5 + 0.1 * t, 0.4), -t));
+        let (sa, sb) = (Surface::new(&c1, &a), Surface::new(&c2, &b));
+        let want = (a.pose.to_world(Point2::new(0.3, 0.0)) - b.pose.origin).norm() - 3.0;
+        for p in [
+            find_contact(&sa, &sb, &opts).unwrap(),
+            find_contact_indexed(&sa, i1.as_ref(), &sb, i2.as_ref(), &opts).unwrap(),
+            find_contact_indexed(&sa, None, &sb, i2.as_ref(), &opts).unwrap(),
+        ] {
+            assert!((p.gap() - want).abs() <= 1e-12, "{} {want}", p.gap());
+        }
+        let e = find_contact_indexed(&sa, i2.as_ref(), &sb, i1.as_ref(), &opts).unwrap_err();
+        assert!(matches!(e, ContactError::Unsupported(_)), "{e}");
+    }
+}
