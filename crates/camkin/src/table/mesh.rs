@@ -4,7 +4,7 @@
 use super::columns::Cell;
 use super::units::Units;
 use super::FoundBy;
-use crate::cam::{CamError, FollowerState, Found, Mechanism};
+use crate::cam::{CamError, FollowerState, Mechanism};
 use crate::curve::FlankSide;
 use crate::gears::GearPair;
 
@@ -89,12 +89,7 @@ impl MeshRow {
                     sliding_velocity: Some(g.sliding_velocity),
                     specific_sliding_driver: g.specific_sliding_driver,
                     specific_sliding_driven: g.specific_sliding_driven,
-                    found: Some(match s.found {
-                        _ if jump => FoundBy::Jump,
-                        Found::Global => FoundBy::Global,
-                        Found::WarmStart => FoundBy::Warm,
-                        Found::Jump { .. } => FoundBy::Jump,
-                    }),
+                    found: Some(FoundBy::of(s.found, jump)),
                     error: None,
                 }
             }

@@ -37,6 +37,17 @@ pub enum FoundBy {
 }
 
 impl FoundBy {
+    /// How a sweep found a row's contact; `jump`: the row's contact jumped since the previous
+    /// row, whatever the sweep said.
+    pub fn of(found: Found, jump: bool) -> Self {
+        match found {
+            _ if jump => FoundBy::Jump,
+            Found::Global => FoundBy::Global,
+            Found::WarmStart => FoundBy::Warm,
+            Found::Jump { .. } => FoundBy::Jump,
+        }
+    }
+
     /// The name the tables print: `global`, `warm`, `jump`.
     pub fn name(self) -> &'static str {
         match self {
@@ -133,12 +144,7 @@ impl AnalysisRow {
                 pressure_angle_deg: Some(s.pressure_angle().to_degrees()),
                 radius_of_curvature: Some(s.radius_of_curvature),
                 at_node: Some(u8::from(s.at_breakpoint)),
-                found: Some(match s.found {
-                    _ if jump => FoundBy::Jump,
-                    Found::Global => FoundBy::Global,
-                    Found::WarmStart => FoundBy::Warm,
-                    Found::Jump { .. } => FoundBy::Jump,
-                }),
+                found: Some(FoundBy::of(s.found, jump)),
                 error: None,
             },
             Err(e) => Self {
