@@ -39,7 +39,7 @@ impl Failure {
 
 /// Loads the mechanism file, or the paper's built-in mechanism when none is given.
 /// Refuses, with the estimate and the flag that allows it, a sweep of `angles` cam angles
-/// (`sweeps` of them) estimated at over 30 s on this profile (a large non-convex profile scans
+/// (`sweeps` of them) estimated at over 30 s on this profile (a large non-convex profile searches
 /// its samples at every step).
 pub fn check_sweep_time(
     mech: &camkin::cam::Mechanism,
@@ -50,7 +50,7 @@ pub fn check_sweep_time(
     let seconds = mech.sweep_seconds_estimate(angles) * sweeps as f64;
     if seconds > 30.0 && !large {
         return Err(Failure::Input(anyhow::anyhow!(
-            "{} cam angles on this profile would take about {} s (it is not convex, so every angle scans its {} samples for a contact elsewhere); pass --large to run it anyway, or use fewer angles",
+            "{} cam angles on this profile would take about {} s (it is not convex, so every angle searches its {} samples for a contact elsewhere); pass --large to run it anyway, or use fewer angles",
             angles * sweeps,
             camkin::human::human(seconds.ceil()),
             mech.sample_count()

@@ -81,7 +81,7 @@ impl PyMechanism {
     }
 
     /// Refuses a sweep of `angles` estimated at over [`MAX_SECONDS`] (a large non-convex
-    /// profile scans its samples at every step) or over [`MAX_ANGLES`] angles.
+    /// profile searches its samples at every step) or over [`MAX_ANGLES`] angles.
     pub fn check_work(&self, angles: usize, large: bool) -> PyResult<()> {
         let seconds = self.mech().sweep_seconds_estimate(angles);
         if large {
@@ -95,7 +95,7 @@ impl PyMechanism {
         }
         if seconds > MAX_SECONDS {
             return Err(errors::resource(format!(
-                "{angles} cam angles on this profile would take about {} s (it is not convex, so every angle scans its {} samples for a contact elsewhere); pass large=True to run it anyway, or use fewer angles",
+                "{angles} cam angles on this profile would take about {} s (it is not convex, so every angle searches its {} samples for a contact elsewhere); pass large=True to run it anyway, or use fewer angles",
                 camkin::human::human(seconds.ceil()),
                 self.mech().sample_count()
             )));

@@ -67,6 +67,7 @@
 
 pub mod body;
 pub mod cam;
+pub(crate) mod circle_tree;
 pub mod contact;
 pub mod curve;
 pub mod dynamics;

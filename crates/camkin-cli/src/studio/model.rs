@@ -243,7 +243,7 @@ pub(super) fn check_work(
     if seconds > limits.max_seconds {
         return Err(StudioError::TooMuch {
             message: format!(
-                "{angles} cam angles on this profile would take about {} s here (it is not convex: every angle scans its {} samples), more than the {} s one request may take; use `camkin analyze` for it",
+                "{angles} cam angles on this profile would take about {} s here (it is not convex: every angle searches its {} samples), more than the {} s one request may take; use `camkin analyze` for it",
                 camkin::human::human(seconds.ceil()),
                 mech.sample_count(),
                 limits.max_seconds

@@ -183,8 +183,15 @@ fn a_body_over_the_limit_is_refused_before_it_is_read() {
 
 #[test]
 fn work_over_the_time_limit_is_refused_with_the_estimate() {
-    let addr = start(None, Limits::default());
-    // a wavy (not convex) profile of 20 000 nodes: every angle scans its samples
+    // a budget of 0.1 s, for a wavy (not convex) profile of 20 000 nodes: every angle searches
+    // its samples (about 38 µs a step estimated) and the request asks for 0.05° steps (0.27 s)
+    let addr = start(
+        None,
+        Limits {
+            max_seconds: 0.1,
+            ..Limits::default()
+        },
+    );
     let pts: Vec<String> = (0..20_000)
         .map(|k| {
             let t = k as f64 * std::f64::consts::TAU / 20_000.0;
@@ -197,14 +204,18 @@ fn work_over_the_time_limit_is_refused_with_the_estimate() {
         pts.join(", ")
     );
     let t = std::time::Instant::now();
-    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": text }));
+    let (s, v) = post(
+        addr,
+        "/api/analyze",
+        &json!({ "toml": text, "step_deg": 0.05 }),
+    );
     assert_eq!(error(s, &v).1, "too-much-work", "{v}");
     let msg = v["error"]["message"].as_str().unwrap();
     assert!(
         msg.contains("would take about") && msg.contains(" s"),
         "{msg}"
     );
-    // refused up front, not after the work (a bound, not a timing: the work is minutes)
+    // refused up front, before the work (a bound, not a timing)
     assert!(t.elapsed() < Duration::from_secs(30));
 }
 

@@ -44,7 +44,7 @@ impl Mechanism {
         let (lo, hi) = c.level_range;
         let mut buf: Vec<Crossing> = Vec::new();
         let mut inside = Vec::new();
-        for (&u, &y) in self.samples.iter().zip(&self.sample_points) {
+        for (&u, &y) in self.index.dense.params.iter().zip(&self.sample_points) {
             let x = frame * y;
             // the level first: most points of a large driver are beyond an arm's reach
             let (along, level, scale) = match (c.track, self.geometry.joint) {

@@ -26,6 +26,7 @@ mod kinematics;
 mod mechanism;
 mod options;
 mod search;
+mod starts;
 mod state;
 mod summary;
 mod support;
@@ -38,7 +39,7 @@ pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};
 pub use options::AnalysisOptions;
-pub use search::MAX_CANDIDATES;
+pub use starts::MAX_CANDIDATES;
 pub use state::{FollowerState, Motion};
 pub use support::IndependentCheck;
 pub use sweep::{Found, Sweep};
@@ -238,10 +239,10 @@ pub struct Mechanism {
     cam: Cam,
     geometry: Geometry,
     options: AnalysisOptions,
-    samples: Vec<f64>,
-    /// the profile's points at `samples` (cam frame), for the coverage of a carried curve
+    /// the profile's samples and their trees for the first-touch search
+    index: Arc<starts::SearchIndex>,
+    /// the profile's points at the dense samples (cam frame), for the coverage of a carried curve
     sample_points: Vec<Point2>,
-    coarse: Vec<f64>,
     period: f64,
     size: f64,
     orientation: f64,

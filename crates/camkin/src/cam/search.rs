@@ -2,11 +2,11 @@
 //! first touch, and the global search (bracketing samples of the first-touch function, the best
 //! local maxima refined by Newton).
 
-use super::follower::CentrePath;
 use super::follower::Kind as _;
+use super::starts::Candidates;
 use super::{CamError, Mechanism, StopReason};
 use crate::body::{CurveInFrame, WorldDerivs};
-use crate::geometry::{rot90, Frame, Point2};
+use crate::geometry::Frame;
 
 /// A converged first touch: cam parameter and follower position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -147,155 +147,6 @@ impl Mechanism {
         self.geometry.joint.oriented(q)
     }
 
-    /// Start candidates for a knife edge or a roller: the crossings of the path of its tip or
-    /// centre with the profile's offset curve at its distance (the profile itself for a knife,
-    /// the pitch curve for a roller), sampled at `s` (linear interpolation between samples),
-    /// best first. Sign changes find a crossing however thin the roller's reach is beside the
-    /// path (a small roller, a long thin cam). Two crossings between neighbouring samples (the
-    /// path nearly tangent to the offset curve) show no sign change: where the sampled distance
-    /// from the path has a local minimum, its true minimum is located and, when it crosses the
-    /// path, both crossings become candidates.
-    ///
-    /// With `bound`, returns the best exact first-touch score of the sampled profile points (a
-    /// lower bound of the first touch; `−∞` for a knife, whose samples are not touches, and
-    /// without `bound`).
-    fn path_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates, bound: bool) -> f64 {
-        let Some((path, r)) = self.geometry.model.centre_path() else {
-            return f64::NEG_INFINITY;
-        };
-        let model = &self.geometry.model;
-        let best = std::cell::Cell::new(f64::NEG_INFINITY);
-        let profile = self.cam.profile.as_ref();
-        let n = s.len();
-        let pivot = self.cam.pivot;
-        let joint = self.geometry.joint;
-        // the offset curve's point at u: outward normal −orientation·rot90(r')/|r'|
-        let shift = -self.orientation * r;
-        let at = |u: f64| -> Point2 {
-            if r == 0.0 {
-                frame.curve_position(profile, u)
-            } else {
-                let d = profile.eval(u);
-                if bound {
-                    if let Some((sc, _)) = model.score(frame * d.p) {
-                        best.set(best.get().max(sc));
-                    }
-                }
-                let len = d.d1.norm();
-                let local = if len > 0.0 {
-                    d.p + (shift / len) * rot90(d.d1)
-                } else {
-                    d.p
-                };
-                frame * local
-            }
-        };
-        let lateral_of = |x: Point2| match path {
-            CentrePath::Line { p, e, .. } => (x - pivot).dot(&p) - e,
-            CentrePath::Circle { o, l } => (x - o).norm() - l,
-        };
-        let coord = |x: Point2| -> (f64, f64) {
-            match path {
-                CentrePath::Line { d, .. } => {
-                    let q = (x - pivot).dot(&d);
-                    (q, q)
-                }
-                CentrePath::Circle { o, .. } => {
-                    let y = x - o;
-                    joint.branch(y.y.atan2(y.x))
-                }
-            }
-        };
-        let lateral = |u: f64| lateral_of(at(u));
-        // a roller's start must put its centre within a fraction of its radius of the pitch
-        // curve, or Newton can settle on the roller's far side (the two are a diameter apart):
-        // linear interpolation between samples is not that close for a small roller
-        let root = |lo: f64, hi: f64| {
-            if r == 0.0 {
-                bisect_sign(&lateral, lo, hi)
-            } else {
-                falsi(&lateral, lo, hi, lateral(lo), lateral(hi), 0.1 * r)
-            }
-        };
-        let mut push = |u: f64, x: Point2| {
-            let (score, q) = coord(x);
-            out.push((score, u.rem_euclid(self.period), q));
-        };
-        let (x0, mut xa) = (at(s[0]), at(s[0]));
-        let mut la = lateral_of(xa);
-        let mut l_before = lateral(s[n - 1]);
-        for k in 0..n {
-            let (xb, ub) = if k + 1 < n {
-                (at(s[k + 1]), s[k + 1])
-            } else {
-                (x0, self.period)
-            };
-            let lb = lateral_of(xb);
-            let ua = if k == 0 {
-                s[n - 1] - self.period
-            } else {
-                s[k - 1]
-            };
-            if (la > 0.0) != (lb > 0.0) && (l_before > 0.0) != (la > 0.0) {
-                // two crossings on either side of sample k: the path is nearly tangent there and
-                // interpolated starts can both lead Newton to one of them; start from each root
-                for (lo, hi) in [(ua, s[k]), (s[k], ub)] {
-                    let u0 = root(lo, hi);
-                    push(u0, at(u0));
-                }
-            } else if la == 0.0 || (la > 0.0) != (lb > 0.0) {
-                let f = if la == lb { 0.0 } else { la / (la - lb) };
-                if r == 0.0 {
-                    push(s[k] + f * (ub - s[k]), xa + f * (xb - xa));
-                } else {
-                    let u0 = falsi(&lateral, s[k], ub, la, lb, 0.1 * r);
-                    push(u0, at(u0));
-                }
-            } else if (l_before > 0.0) == (la > 0.0)
-                && la.abs() < l_before.abs()
-                && la.abs() <= lb.abs()
-            {
-                // a local minimum of |distance| at sample k: does the curve cross in between?
-                let sign = la.signum();
-                // stopping once it crosses: that is all that is needed
-                let (um, lm) =
-                    super::golden::golden_min(|u| sign * lateral(u), ua, ub, 60, |v| v < 0.0);
-                if lm < 0.0 {
-                    for (lo, hi) in [(ua, um), (um, ub)] {
-                        let u0 = root(lo, hi);
-                        push(u0, at(u0));
-                    }
-                }
-            }
-            l_before = la;
-            (xa, la) = (xb, lb);
-        }
-        best.get()
-    }
-
-    /// Start candidates: the local maxima of the first-touch function sampled at `s`, best
-    /// first; returns the best sampled score (a lower bound of the true first touch).
-    fn score_starts(&self, frame: &Frame, s: &[f64], out: &mut Candidates) -> f64 {
-        let profile = self.cam.profile.as_ref();
-        let n = s.len();
-        let score = |u: f64| self.geometry.model.score(frame.curve_position(profile, u));
-        let val = |x: Option<(f64, f64)>| x.map_or(f64::NEG_INFINITY, |x| x.0);
-        let first = score(s[0]);
-        let (mut prev, mut cur) = (score(s[n - 1]), first);
-        let mut best = f64::NEG_INFINITY;
-        for (k, &u) in s.iter().enumerate() {
-            let next = s.get(k + 1).map_or(first, |&v| score(v));
-            if let Some((sc, q)) = cur {
-                best = best.max(sc);
-                if sc >= val(prev) && sc >= val(next) {
-                    out.push((sc, u, q));
-                }
-            }
-            (prev, cur) = (cur, next);
-        }
-        best
-    }
-
     /// The peak of the first-touch function on `[a, b]` by golden-section search: `(u, q)`.
     fn score_peak(&self, frame: &Frame, a: f64, b: f64) -> Option<(f64, f64)> {
         let profile = self.cam.profile.as_ref();
@@ -311,21 +162,6 @@ impl Mechanism {
             .model
             .score(frame.curve_position(profile, u))?;
         Some((u.rem_euclid(self.period), q))
-    }
-
-    /// The single best sample of the first-touch function at `s` (a convex profile has one
-    /// maximum).
-    fn best_sample(&self, frame: &Frame, s: &[f64]) -> Option<(f64, f64, f64)> {
-        let profile = self.cam.profile.as_ref();
-        let mut best: Option<(f64, f64, f64)> = None;
-        for &u in s {
-            if let Some((sc, q)) = self.geometry.model.score(frame.curve_position(profile, u)) {
-                if best.is_none_or(|b| sc > b.0) {
-                    best = Some((sc, u, q));
-                }
-            }
-        }
-        best
     }
 
     /// Global first touch. A convex profile's first-touch function has one maximum: its best
@@ -344,10 +180,10 @@ impl Mechanism {
             // scan finds the outer crossing unless the path only grazes it (then the dense scan)
             let start = if on_path {
                 let mut c = Candidates::new(1);
-                self.path_starts(frame, &self.coarse, &mut c, false);
+                self.path_starts(frame, &self.index.coarse, &mut c);
                 c.as_slice().first().copied()
             } else {
-                self.best_sample(frame, &self.coarse)
+                self.best_sample(frame, &self.index.coarse)
             };
             if let Some((_, u0, q0)) = start {
                 if let Ok(t) = self.newton(theta, frame, u0, q0) {
@@ -361,9 +197,15 @@ impl Mechanism {
         let best_sample = if on_path {
             // starts from the crossings; a roller's sampled scores (exact first touches of the
             // points it reaches) still bound the result from below
-            self.path_starts(frame, &self.samples, &mut starts, true)
+            self.path_starts(frame, &self.index.dense, &mut starts);
+            if self.roller {
+                self.best_sample(frame, &self.index.dense)
+                    .map_or(f64::NEG_INFINITY, |b| b.0)
+            } else {
+                f64::NEG_INFINITY
+            }
         } else {
-            self.score_starts(frame, &self.samples, &mut starts)
+            self.score_starts(frame, &self.index.dense, &mut starts)
         };
         if starts.is_empty() {
             let reason = if knife {
@@ -380,7 +222,7 @@ impl Mechanism {
         }
         let mut best: Option<Touch> = None;
         let mut last_err = None;
-        let spacing = self.period / self.samples.len().max(1) as f64;
+        let spacing = self.period / self.index.dense.params.len().max(1) as f64;
         for &(_, u0, q0) in starts.as_slice() {
             // a start from which Newton wanders (the profile turning sharply near it) is first
             // moved to the sampled maximum's peak by golden-section search on the score
@@ -428,12 +270,6 @@ impl Mechanism {
         }
         Ok(best)
     }
-
-    /// The best sampled first-touch score over the dense samples (the sweep's jump guard).
-    pub(crate) fn best_sampled_score(&self, frame: &Frame) -> f64 {
-        self.best_sample(frame, &self.samples)
-            .map_or(f64::NEG_INFINITY, |b| b.0)
-    }
 }
 
 /// `J⁻¹ (−f)` for a 2×2 `J`, each equation first scaled by its largest coefficient: the
@@ -459,48 +295,6 @@ pub(crate) fn solve2(j: &[[f64; 2]; 2], f: [f64; 2]) -> [f64; 2] {
     ]
 }
 
-/// Most start candidates refined by the global search.
-pub const MAX_CANDIDATES: usize = 8;
-
-/// The best few start candidates `(oriented score, u, q)`, best first, kept without allocating.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Candidates {
-    items: [(f64, f64, f64); MAX_CANDIDATES],
-    len: usize,
-    cap: usize,
-}
-
-impl Candidates {
-    pub(crate) fn new(cap: usize) -> Self {
-        Self {
-            items: [(0.0, 0.0, 0.0); MAX_CANDIDATES],
-            len: 0,
-            cap: cap.clamp(1, MAX_CANDIDATES),
-        }
-    }
-    pub(crate) fn push(&mut self, c: (f64, f64, f64)) {
-        if self.len == self.cap {
-            if !(c.0 > self.items[self.len - 1].0) {
-                return;
-            }
-            self.len -= 1;
-        }
-        let mut i = self.len;
-        while i > 0 && self.items[i - 1].0 < c.0 {
-            self.items[i] = self.items[i - 1];
-            i -= 1;
-        }
-        self.items[i] = c;
-        self.len += 1;
-    }
-    pub(crate) fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-    pub(crate) fn as_slice(&self) -> &[(f64, f64, f64)] {
-        &self.items[..self.len]
-    }
-}
-
 /// The same parameters as [`bracket_samples`], without storing them.
 pub(crate) use crate::curve::piece_samples as bracket_params;
 
@@ -512,66 +306,6 @@ pub(crate) fn bracket_samples(
     per_curve: usize,
 ) -> Vec<f64> {
     bracket_params(breakpoints, period, per_piece, per_curve).collect()
-}
-
-/// A root of `f` in `[a, b]` (`fa = f(a)`, `fb = f(b)` of opposite signs, or one zero) by the
-/// Illinois variant of regula falsi, stopping once `|f| ≤ tol`: the first step is the linear
-/// interpolation, so a root the samples already pin down costs one evaluation.
-fn falsi(
-    f: &impl Fn(f64) -> f64,
-    mut a: f64,
-    mut b: f64,
-    mut fa: f64,
-    mut fb: f64,
-    tol: f64,
-) -> f64 {
-    if fa == 0.0 {
-        return a;
-    }
-    let mut side = 0;
-    let mut x = a;
-    for _ in 0..100 {
-        if fb == 0.0 {
-            return b;
-        }
-        x = (a * fb - b * fa) / (fb - fa);
-        if !(x > a.min(b) && x < a.max(b)) {
-            x = 0.5 * (a + b);
-        }
-        let fx = f(x);
-        if fx.abs() <= tol || x == a || x == b {
-            return x;
-        }
-        if (fx > 0.0) == (fb > 0.0) {
-            (b, fb) = (x, fx);
-            if side == -1 {
-                fa *= 0.5;
-            }
-            side = -1;
-        } else {
-            (a, fa) = (x, fx);
-            if side == 1 {
-                fb *= 0.5;
-            }
-            side = 1;
-        }
-    }
-    x
-}
-
-/// A point near the sign change of `f` in `[a, b]` (the ends have opposite signs), by 30
-/// bisections: a start for Newton.
-fn bisect_sign(f: &impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let fa = f(a);
-    for _ in 0..30 {
-        let m = 0.5 * (a + b);
-        if (f(m) > 0.0) == (fa > 0.0) {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    0.5 * (a + b)
 }
 
 #[cfg(test)]

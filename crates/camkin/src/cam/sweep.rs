@@ -226,7 +226,7 @@ impl<'a> Sweep<'a> {
                 let ahead = if m.geometry.model.centre_path().is_some() {
                     true
                 } else {
-                    m.best_sampled_score(frame) > m.oriented(t.q) + m.touch_slack()
+                    m.sample_above(frame, m.oriented(t.q) + m.touch_slack())
                 };
                 if !ahead {
                     m.check_cusps(theta, frame, t.q)?;

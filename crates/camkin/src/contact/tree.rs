@@ -8,21 +8,9 @@
 //! stable sort of the brute force's list would). A circle tree is rigid: it moves with its body
 //! by moving its centres, so it is built once per curve ([`CurveIndex`]) and queried at any pose.
 
+use crate::circle_tree::{CircleTree, Node, LEAF};
 use crate::curve::{Curve, Domain};
 use crate::geometry::{Frame, Point2};
-
-/// Samples per leaf of the tree.
-const LEAF: usize = 8;
-
-/// A bounding circle over the samples `lo..hi`; `kids`: the two halves (none for a leaf).
-#[derive(Debug, Clone, Copy)]
-struct Node {
-    c: Point2,
-    r: f64,
-    lo: u32,
-    hi: u32,
-    kids: Option<(u32, u32)>,
-}
 
 /// A curve's samples (parameters and points in the curve's own frame) with a tree of bounding
 /// circles over them: built once, queried at any pose of the body that carries the curve.
@@ -30,7 +18,7 @@ struct Node {
 pub struct CurveIndex {
     params: Vec<f64>,
     points: Vec<Point2>,
-    nodes: Vec<Node>,
+    tree: CircleTree,
 }
 
 impl CurveIndex {
@@ -41,12 +29,11 @@ impl CurveIndex {
             return None;
         }
         let points: Vec<Point2> = params.iter().map(|&u| curve.position(u)).collect();
-        let mut nodes = Vec::with_capacity(2 * points.len() / LEAF + 2);
-        build(&points, 0, points.len(), &mut nodes);
+        let tree = CircleTree::new(&points, None);
         Some(Self {
             params,
             points,
-            nodes,
+            tree,
         })
     }
 
@@ -84,52 +71,6 @@ impl CurveIndex {
     pub(crate) fn world_points(&self, frame: &Frame) -> Vec<Point2> {
         self.points.iter().map(|p| frame * p).collect()
     }
-}
-
-/// Builds the node of samples `lo..hi` (and its subtree) and returns its index.
-fn build(points: &[Point2], lo: usize, hi: usize, nodes: &mut Vec<Node>) -> u32 {
-    let at = nodes.len();
-    nodes.push(Node {
-        c: Point2::origin(),
-        r: 0.0,
-        lo: lo as u32,
-        hi: hi as u32,
-        kids: None,
-    });
-    let (c, r, kids) = if hi - lo <= LEAF {
-        let (mut a, mut b) = (points[lo], points[lo]);
-        for p in &points[lo..hi] {
-            a = a.inf(p);
-            b = b.sup(p);
-        }
-        let c = nalgebra::center(&a, &b);
-        let r = points[lo..hi]
-            .iter()
-            .map(|p| (p - c).norm())
-            .fold(0.0, f64::max);
-        (c, r, None)
-    } else {
-        let mid = lo + (hi - lo) / 2;
-        let k0 = build(points, lo, mid, nodes);
-        let k1 = build(points, mid, hi, nodes);
-        let (n0, n1) = (nodes[k0 as usize], nodes[k1 as usize]);
-        // the smallest circle holding both circles
-        let d = (n1.c - n0.c).norm();
-        let (c, r) = if d + n1.r <= n0.r {
-            (n0.c, n0.r)
-        } else if d + n0.r <= n1.r {
-            (n1.c, n1.r)
-        } else {
-            let r = 0.5 * (d + n0.r + n1.r);
-            (n0.c + (n1.c - n0.c) * ((r - n0.r) / d), r)
-        };
-        (c, r, Some((k0, k1)))
-    };
-    // rounding: every sample inside by a margin (a pruned pair is never one at the bound)
-    nodes[at].c = c;
-    nodes[at].r = r * (1.0 + 1e-12) + 1e-300;
-    nodes[at].kids = kids;
-    at as u32
 }
 
 /// The `k` samples of A nearest to B's samples, each with its nearest sample of B, as
@@ -183,7 +124,10 @@ impl Query<'_> {
     /// The distance between the circles of nodes `i` (A) and `j` (B): negative where they
     /// overlap (then no bound, but still an order: the deeper overlap first).
     fn gap(&self, i: u32, j: u32) -> f64 {
-        let (ni, nj) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
+        let (ni, nj) = (
+            &self.a.tree.nodes[i as usize],
+            &self.b.tree.nodes[j as usize],
+        );
         (self.fa * ni.c - self.fb * nj.c).norm() - ni.r - nj.r
     }
 
@@ -196,7 +140,7 @@ impl Query<'_> {
         if self.pruned(g) {
             return;
         }
-        let (ni, nj) = (self.a.nodes[i as usize], self.b.nodes[j as usize]);
+        let (ni, nj) = (self.a.tree.nodes[i as usize], self.b.tree.nodes[j as usize]);
         match (ni.kids, nj.kids) {
             (None, None) => self.leaves(&ni, &nj),
             // split the larger circle; the nearer half first, so the bound tightens early

@@ -123,6 +123,27 @@ impl Joint {
         }
     }
 
+    /// An upper bound of the oriented score ([`Joint::oriented`]) of every position within the
+    /// interval `(mid, half width)`; +∞ when the interval may cross a rotating joint's branch cut.
+    #[inline]
+    pub(crate) fn oriented_bound(&self, (mid, half): (f64, f64)) -> f64 {
+        match *self {
+            Joint::Translating { .. } => mid + half,
+            Joint::Rotating {
+                closing,
+                toward_cam,
+                ..
+            } => {
+                let w = crate::geometry::wrap_angle_near(mid, toward_cam);
+                if (w - toward_cam).abs() + half >= std::f64::consts::PI {
+                    f64::INFINITY
+                } else {
+                    -closing.sign() * w + half
+                }
+            }
+        }
+    }
+
     /// +1 when `q` is a length (translating), the closing sign's opposite otherwise: the sign
     /// of `q` that moves the follower away from the cam.
     #[inline]

@@ -423,6 +423,27 @@ fn first_touch_root(
     best.1.is_finite().then_some(best.1)
 }
 
+/// Relative rounding allowed for in [`Kind::score_interval`].
+const ROUNDING: f64 = 1e-12;
+
+/// The interval of the along-travel coordinate `(x − cam axis)·d` over the disc of radius `r` about
+/// `c`: `(mid, half width)`.
+fn along_interval(cam_pivot: Point2, d: Vec2, c: Point2, r: f64) -> (f64, f64) {
+    let y = c - cam_pivot;
+    (y.dot(&d), r + ROUNDING * (y.norm() + r))
+}
+
+/// The interval of the polar angle about `o` over the disc of radius `r` about `c`: `(mid, half
+/// width)` (half a turn when the disc holds `o`).
+fn polar_interval(o: Point2, c: Point2, r: f64) -> (f64, f64) {
+    let y = c - o;
+    let rho = y.norm();
+    if rho <= r * (1.0 + ROUNDING) {
+        return (0.0, std::f64::consts::PI);
+    }
+    (y.y.atan2(y.x), (r / rho).asin() + ROUNDING)
+}
+
 /// The direction (rad) from an arm's pivot `o` to the cam's axis.
 fn toward(cam_pivot: Point2, o: Point2) -> f64 {
     let d = cam_pivot - o;
@@ -439,6 +460,19 @@ pub(crate) trait Kind {
     /// `x`, oriented so that larger is "touches earlier" (the first touch is the maximum), or
     /// `None` when the follower never touches `x`. Returns `(oriented score, q)`.
     fn score(&self, x: Point2) -> Option<(f64, f64)>;
+    /// An interval `(mid, half width)` of positions holding the `q` of [`Kind::score`] at every
+    /// world point within `r` of `c` (rounding included), for pruning the first-touch search;
+    /// `None` when the follower touches none of them. The default bounds nothing.
+    fn score_interval(&self, _c: Point2, _r: f64) -> Option<(f64, f64)> {
+        Some((0.0, f64::INFINITY))
+    }
+    /// The world tangent directions `(mid, half width)`, rad, modulo a half turn, at which the
+    /// score of a curve passing within `r` of `c` can be stationary (the follower's contact
+    /// tangent there): along a piece of curve whose tangent avoids them the score is monotone.
+    /// `None` when any direction can be.
+    fn stationary_tangents(&self, _c: Point2, _r: f64) -> Option<(f64, f64)> {
+        None
+    }
     /// Residual of the tangency conditions at world cam point `x` (with `x1 = ∂x/∂u`) and
     /// position `q`: two equations, zero at a touch. Generic so that the jerk can be computed by
     /// differentiating it with jets.
@@ -486,6 +520,39 @@ pub(crate) enum CentrePath {
     Circle { o: Point2, l: f64 },
 }
 
+impl CentrePath {
+    /// The interval `(mid, half width)` of the path coordinate (a length along the line, or the
+    /// arm angle) of every point within `r` of `c` that lies on the path; `None` when none does.
+    pub(crate) fn interval(&self, cam_pivot: Point2, c: Point2, r: f64) -> Option<(f64, f64)> {
+        match *self {
+            CentrePath::Line { d, p, e } => {
+                let (along, half) = along_interval(cam_pivot, d, c, r);
+                let lateral = (c - cam_pivot).dot(&p) - e;
+                (lateral.abs() <= half).then_some((along, half))
+            }
+            CentrePath::Circle { o, l } => {
+                let rho = (c - o).norm();
+                ((rho - l).abs() <= r + ROUNDING * (rho + r)).then(|| polar_interval(o, c, r))
+            }
+        }
+    }
+}
+
+impl CentrePath {
+    /// The tangent directions `(mid, half width)`, rad, modulo a half turn, of the path near the
+    /// points within `r` of `c`: a piece of curve whose tangent avoids them crosses the path at
+    /// most once.
+    pub(crate) fn tangents(&self, c: Point2, r: f64) -> (f64, f64) {
+        match *self {
+            CentrePath::Line { d, .. } => (d.y.atan2(d.x), ROUNDING),
+            CentrePath::Circle { o, .. } => {
+                let (psi, half) = polar_interval(o, c, r);
+                (psi + std::f64::consts::FRAC_PI_2, half)
+            }
+        }
+    }
+}
+
 /// A follower kind with its derived data: one variant per kind.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Model {
@@ -523,6 +590,12 @@ impl Kind for Model {
         dispatch!(self, k => k.score(x))
     }
     #[inline]
+    fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        dispatch!(self, k => k.score_interval(c, r))
+    }
+    fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        dispatch!(self, k => k.stationary_tangents(c, r))
+    }
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         dispatch!(self, k => k.residual_value(x, x1, q))
     }

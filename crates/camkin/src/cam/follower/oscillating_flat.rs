@@ -70,6 +70,30 @@ impl Kind for OscillatingFlat {
             self.closing,
         ))
     }
+    fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        // φ = ψ − asin(e/ρ): ψ within the disc's polar interval, ρ within ρ(c) ± r and ≥ |e|
+        let (psi, dpsi) = super::polar_interval(self.o, c, r);
+        let rho = (c - self.o).norm();
+        let (lo, hi) = ((rho - r).max(self.e.abs()), rho + r);
+        if hi < self.e.abs() {
+            return None;
+        }
+        let a = |x: f64| (self.e / x).clamp(-1.0, 1.0).asin();
+        let (a0, a1) = (a(lo), a(hi));
+        let (amin, amax) = (a0.min(a1), a0.max(a1));
+        Some((
+            psi - 0.5 * (amin + amax),
+            dpsi + 0.5 * (amax - amin) + super::ROUNDING,
+        ))
+    }
+    fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        // the face's direction (cos φ, sin φ) at the arm angles that touch the disc, where the
+        // face reaches all of it (the score has no edge there)
+        if (c - self.o).norm() - r < self.e.abs() {
+            return None;
+        }
+        self.score_interval(c, r)
+    }
     #[inline]
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         let (s, c) = q.sin_cos();

@@ -96,6 +96,54 @@ impl Kind for OscillatingRoller {
             self.r,
         ))
     }
+    fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        // φ = ψ − closing·β: ψ within the disc's polar interval, β (the angle at the pivot
+        // between the point and the roller's centre) over the ρ the roller reaches
+        // (|ρ − L| ≤ R) within ρ(c) ± r: β(ρ) rises to its peak at √(L² − R²) and falls, so
+        // its least value is at an end and its greatest at the ρ nearest the peak
+        let (psi, dpsi) = super::polar_interval(self.o, c, r);
+        let (l, rr) = (self.l, self.r);
+        let rho = (c - self.o).norm();
+        let (lo, hi) = ((rho - r).max(l - rr), (rho + r).min(l + rr));
+        if lo > hi {
+            return None;
+        }
+        if l <= rr {
+            return Some((psi, std::f64::consts::PI));
+        }
+        let beta = |x: f64| {
+            let d = x - l;
+            2.0 * ((rr - d) * (rr + d) / ((x + l - rr) * (x + l + rr)))
+                .max(0.0)
+                .sqrt()
+                .atan()
+        };
+        let top = beta((l * l - rr * rr).sqrt().clamp(lo, hi));
+        let least = beta(lo).min(beta(hi));
+        Some((
+            psi - self.closing * 0.5 * (top + least),
+            dpsi + 0.5 * (top - least) + super::ROUNDING,
+        ))
+    }
+    fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        // the roller's tangent at the point it first touches: normal to x − C, C the roller's
+        // centre, found at the disc's centre; over the disc x moves by r and C by L·Δφ
+        let rho = (c - self.o).norm();
+        if !(rho - r > self.l - self.r && rho + r < self.l + self.r) {
+            return None;
+        }
+        let (_, half) = self.score_interval(c, r)?;
+        let (_, phi) = self.score(c)?;
+        let centre = self.o + self.l * Vec2::new(phi.cos(), phi.sin());
+        let n = c - centre;
+        let spread = (r + 2.0 * self.l * half) / self.r;
+        (spread < 0.5).then(|| {
+            (
+                n.y.atan2(n.x) + std::f64::consts::FRAC_PI_2,
+                spread.asin() + super::ROUNDING,
+            )
+        })
+    }
     #[inline]
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         let (s, c) = q.sin_cos();

@@ -43,6 +43,13 @@ impl Kind for TranslatingFlat {
         let q = (x - self.cam_pivot).dot(&self.d);
         Some((q, q))
     }
+    fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        Some(super::along_interval(self.cam_pivot, self.d, c, r))
+    }
+    fn stationary_tangents(&self, _c: Point2, _r: f64) -> Option<(f64, f64)> {
+        // the face's direction
+        Some((self.p.y.atan2(self.p.x), super::ROUNDING))
+    }
     #[inline]
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         let y = x - V2::c(self.cam_pivot.coords);

@@ -56,6 +56,36 @@ impl Kind for TranslatingRoller {
             Some((q, q))
         }
     }
+    fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        // q = along + √(R² − l²) over the disc: along ∈ along(c) ± r, and |l| at least the
+        // lateral offset of the disc's nearest point
+        let (along, half) = super::along_interval(self.cam_pivot, self.d, c, r);
+        let l = (c - self.cam_pivot).dot(&self.p) - self.e;
+        let near = (l.abs() - half).max(0.0);
+        if near > self.r {
+            return None;
+        }
+        let rise = (self.r - near).sqrt() * (self.r + near).sqrt();
+        Some((
+            along + 0.5 * rise,
+            half + 0.5 * rise + super::ROUNDING * self.r,
+        ))
+    }
+    fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
+        // the roller's tangent at the point x it first touches: normal to x − C =
+        // l p − √(R² − l²) d, at the angle π − asin(l/R) from d, for the lateral offsets l of
+        // the disc (all within the roller's reach)
+        let l = (c - self.cam_pivot).dot(&self.p) - self.e;
+        let (l0, l1) = (l - r, l + r);
+        if !(l0 > -self.r && l1 < self.r) {
+            return None;
+        }
+        let (a0, a1) = ((l0 / self.r).asin(), (l1 / self.r).asin());
+        Some((
+            self.d.y.atan2(self.d.x) + std::f64::consts::FRAC_PI_2 - 0.5 * (a0 + a1),
+            0.5 * (a1 - a0) + super::ROUNDING,
+        ))
+    }
     fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
         Some((
             super::CentrePath::Line {

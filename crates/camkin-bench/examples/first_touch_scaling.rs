@@ -1,0 +1,93 @@
+//! The first-touch search of the five named follower kinds on a non-convex cam of `N` spline
+//! nodes, for counting its cost against `N` (`scripts/first-touch-scaling` runs it under
+//! callgrind).
+//!
+//! `first_touch_scaling N KIND MODE REPS`: KIND one of `translating-flat`, `translating-roller`,
+//! `translating-knife`, `oscillating-flat`, `oscillating-roller`; MODE `cold` (a query at an
+//! arbitrary cam angle, `Mechanism::motion`) or `warm` (a step of a 0.05° sweep,
+//! `Sweep::step_motion`). Prints the mean wall time per query and a checksum of the positions.
+
+use camkin::cam::{Cam, Follower, Mechanism, Sense};
+use camkin::curve::ClosedSpline;
+use camkin::{Point2, Vec2};
+use std::hint::black_box;
+use std::sync::Arc;
+use std::time::Instant;
+
+/// A three-lobed cam of radius 40 (±15 %): concave between the lobes (radius of curvature about
+/// 58), sampled at `n` nodes.
+pub fn lobed(n: usize) -> ClosedSpline {
+    let pts: Vec<Point2> = (0..n)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / n as f64;
+            let r = 40.0 * (1.0 + 0.15 * (3.0 * t).sin());
+            Point2::new(r * t.cos(), r * t.sin())
+        })
+        .collect();
+    ClosedSpline::new(&pts).expect("a star-shaped polygon")
+}
+
+/// The follower of each kind used for the count.
+pub fn follower(kind: &str) -> Follower {
+    match kind {
+        "translating-flat" => Follower::TranslatingFlat {
+            direction: Vec2::y(),
+        },
+        "translating-roller" => Follower::TranslatingRoller {
+            direction: Vec2::y(),
+            offset: 5.0,
+            roller_radius: 8.0,
+        },
+        "translating-knife" => Follower::TranslatingKnife {
+            direction: Vec2::y(),
+            offset: 3.0,
+        },
+        "oscillating-flat" => Follower::OscillatingFlat {
+            pivot: Point2::new(-30.0, 80.0),
+            face_offset: 5.0,
+            closing: Sense::Cw,
+            initial_angle: (-20f64).to_radians(),
+        },
+        "oscillating-roller" => Follower::OscillatingRoller {
+            pivot: Point2::new(-60.0, 60.0),
+            arm_length: 75.0,
+            roller_radius: 8.0,
+            closing: Sense::Cw,
+            initial_angle: (-20f64).to_radians(),
+        },
+        other => panic!("unknown follower kind {other}"),
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let n: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1000);
+    let kind = args.get(2).map_or("translating-flat", String::as_str);
+    let mode = args.get(3).map_or("cold", String::as_str);
+    let reps: usize = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(100);
+    let cam = Cam::from_rpm(Arc::new(lobed(n)), Point2::origin(), Sense::Ccw, 100.0).expect("cam");
+    let mut m = Mechanism::new(cam, follower(kind)).expect("mechanism");
+    let mut o = *m.options();
+    o.jerk = false;
+    m.set_options(o);
+    let mut sweep = m.sweep();
+    // the warm sweep starts with one cold query, not counted per step
+    if mode == "warm" {
+        let _ = black_box(sweep.step_motion(0.0));
+    }
+    let start = Instant::now();
+    let mut acc = 0.0;
+    for k in 0..reps {
+        let q = match mode {
+            "warm" => sweep.step_motion(((k + 1) as f64 * 0.05).to_radians()),
+            _ => m.motion(0.1 + k as f64 * 0.37),
+        };
+        acc += q.map_or(f64::NAN, |q| q.position);
+    }
+    let dt = start.elapsed().as_secs_f64() / reps.max(1) as f64;
+    println!(
+        "N {n} {kind} {mode}: {:.2} µs per query (sum of positions {})",
+        dt * 1e6,
+        black_box(acc)
+    );
+}
