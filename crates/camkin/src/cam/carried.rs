@@ -31,23 +31,41 @@ struct Sides {
     approaching: bool,
 }
 
-/// Most starts tried by Newton in one global search.
-const STARTS: usize = 8;
+/// [`Mechanism::covers`]' walk over the cam's samples.
+struct CoverSamples<'a> {
+    m: &'a Mechanism,
+    c: &'a Carried,
+    frame: &'a Frame,
+    out: &'a mut Vec<Cover>,
+    buf: Vec<Crossing>,
+    inside: Vec<((f64, f64), (f64, f64))>,
+}
 
-impl Mechanism {
-    pub(crate) fn carried(&self) -> Option<&Carried> {
-        self.geometry.carried.as_deref()
+impl crate::circle_tree::Visit for CoverSamples<'_> {
+    fn bound(&self, _i: usize, x: Point2, r: f64) -> Option<f64> {
+        // whether the circle meets the band of levels (a slab, or an annulus about the pivot)
+        let (lo, hi) = self.c.level_range;
+        let level = match (self.c.track, self.m.geometry.joint) {
+            (Track::Slide { p, .. }, super::Joint::Translating { origin, .. }) => {
+                (x - origin).dot(&p)
+            }
+            (_, super::Joint::Rotating { pivot, .. }) => (x - pivot).norm(),
+            _ => return None,
+        };
+        let slack = r * (1.0 + 1e-12);
+        (level + slack >= lo && level - slack <= hi).then_some(0.0)
     }
-
-    /// Every covered stretch of follower positions by the cam's sampled points at `frame`.
-    fn covers(&self, c: &Carried, frame: &Frame, out: &mut Vec<Cover>) {
+    fn floor(&self) -> f64 {
+        f64::NEG_INFINITY
+    }
+    fn leaf(&mut self, first: usize, last: usize) {
+        let (m, c) = (self.m, self.c);
         let (lo, hi) = c.level_range;
-        let mut buf: Vec<Crossing> = Vec::new();
-        let mut inside = Vec::new();
-        for (&u, &y) in self.index.dense.params.iter().zip(&self.sample_points) {
-            let x = frame * y;
+        let params = &m.index.dense.params[first..last];
+        for (&u, &y) in params.iter().zip(&m.sample_points[first..last]) {
+            let x = self.frame * y;
             // the level first: most points of a large driver are beyond an arm's reach
-            let (along, level, scale) = match (c.track, self.geometry.joint) {
+            let (along, level, scale) = match (c.track, m.geometry.joint) {
                 (Track::Slide { d, p }, super::Joint::Translating { origin, .. }) => {
                     let y = x - origin;
                     (y.dot(&d), y.dot(&p), 1.0)
@@ -65,11 +83,11 @@ impl Mechanism {
             if !(level >= lo && level <= hi) {
                 continue;
             }
-            inside.clear();
-            c.inside(level, &mut buf, &mut inside);
-            for &((a0, v0), (a1, v1)) in &inside {
+            self.inside.clear();
+            c.inside(level, &mut self.buf, &mut self.inside);
+            for &((a0, v0), (a1, v1)) in &self.inside {
                 // x is inside while along(x) − q ∈ [a0, a1] (slide), ψ − q ∈ [a0, a1] (pivot)
-                out.push(Cover {
+                self.out.push(Cover {
                     lo: along - a1,
                     hi: along - a0,
                     u,
@@ -79,6 +97,30 @@ impl Mechanism {
                 });
             }
         }
+    }
+}
+
+/// Most starts tried by Newton in one global search.
+const STARTS: usize = 8;
+
+impl Mechanism {
+    pub(crate) fn carried(&self) -> Option<&Carried> {
+        self.geometry.carried.as_deref()
+    }
+
+    /// Every covered stretch of follower positions by the cam's sampled points at `frame`, in
+    /// the samples' order. Only the samples whose tree circles meet the band of levels the
+    /// follower's curve spans are looked at (a large driver has most points beyond its reach).
+    fn covers(&self, c: &Carried, frame: &Frame, out: &mut Vec<Cover>) {
+        let mut v = CoverSamples {
+            m: self,
+            c,
+            frame,
+            out,
+            buf: Vec::new(),
+            inside: Vec::new(),
+        };
+        self.index.dense.points().branch_and_bound(frame, &mut v);
     }
 
     /// The predicted angle of a gear-like follower at cam angle `theta`: the initial angle

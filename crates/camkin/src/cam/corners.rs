@@ -8,6 +8,7 @@
 //! measured exactly. A contact *at* a corner has no tangency; it is refused with
 //! [`StopReason::OnCorner`](super::StopReason::OnCorner), not answered wrongly.
 
+use crate::circle_tree::{CircleTree, Visit};
 use crate::curve::{Curve, Domain};
 use crate::geometry::{rot90, Point2};
 
@@ -18,6 +19,8 @@ pub(crate) struct Corners {
     pub(crate) at: Vec<(f64, Point2)>,
     /// parameter and position of the samples the foot-point search starts from
     samples: Vec<(f64, Point2)>,
+    /// bounding circles over the samples, for their nearest to a point
+    tree: CircleTree,
     period: Option<f64>,
     bounds: (f64, f64),
     /// the longest distance between neighbouring samples
@@ -47,6 +50,7 @@ impl Corners {
             .map(|b| (b, curve.position(b)))
             .collect();
         let samples: Vec<(f64, Point2)> = samples.iter().map(|&u| (u, curve.position(u))).collect();
+        let tree = CircleTree::new(&samples.iter().map(|s| s.1).collect::<Vec<_>>(), None);
         let spacing = samples
             .windows(2)
             .map(|w| (w[1].1 - w[0].1).norm())
@@ -54,6 +58,7 @@ impl Corners {
         Self {
             at,
             samples,
+            tree,
             period,
             bounds,
             spacing,
@@ -64,11 +69,14 @@ impl Corners {
     /// `side` (+1: its left, −1: its right): positive inside, by the distance to the foot point.
     pub(crate) fn depth(&self, curve: &dyn Curve, x: Point2, side: f64) -> f64 {
         let n = self.samples.len();
-        let Some(i) = (0..n).min_by(|&a, &b| {
-            (self.samples[a].1 - x)
-                .norm_squared()
-                .total_cmp(&(self.samples[b].1 - x).norm_squared())
-        }) else {
+        let mut near = Nearest {
+            samples: &self.samples,
+            x,
+            best: None,
+        };
+        self.tree
+            .branch_and_bound(&crate::geometry::Frame::identity(), &mut near);
+        let Some((_, i)) = near.best else {
             return f64::NEG_INFINITY;
         };
         // the foot point between the nearest sample's neighbours, by golden sections on the
@@ -100,4 +108,66 @@ impl Corners {
         let d = curve.eval(u);
         side * (x - d.p).dot(&rot90(d.d1.normalize()))
     }
+}
+
+/// The sample nearest `x` (the first of equals): `(distance², index)`.
+struct Nearest<'a> {
+    samples: &'a [(f64, Point2)],
+    x: Point2,
+    best: Option<(f64, usize)>,
+}
+
+impl Visit for Nearest<'_> {
+    fn bound(&self, _i: usize, c: Point2, r: f64) -> Option<f64> {
+        Some(-((c - self.x).norm() - r).max(0.0))
+    }
+    fn floor(&self) -> f64 {
+        self.best.map_or(f64::NEG_INFINITY, |b| -b.0.sqrt())
+    }
+    fn leaf(&mut self, lo: usize, hi: usize) {
+        for i in lo..hi {
+            let d = (self.samples[i].1 - self.x).norm_squared();
+            if self.best.is_none_or(|b| d < b.0 || (d == b.0 && i < b.1)) {
+                self.best = Some((d, i));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The tree's nearest sample is the scan's (the first of equals), far and near the curve.
+    #[test]
+    fn nearest_sample_is_the_scans() {
+        use crate::curve::{InvoluteGear, InvoluteGearSpec};
+        let gear = InvoluteGear::new(InvoluteGearSpec::new(2.0, 20, 20f64.to_radians())).unwrap();
+        let params: Vec<f64> =
+            crate::curve::piece_samples(&gear.breakpoints(), TAU_OF, 16, 256).collect();
+        let c = Corners::of(&gear, &params);
+        for k in 0..500 {
+            let t = f64::from(k) * 0.7;
+            let x = Point2::new((5.0 + 0.1 * t) * t.cos(), (5.0 + 0.1 * t) * t.sin());
+            let mut near = Nearest {
+                samples: &c.samples,
+                x,
+                best: None,
+            };
+            c.tree
+                .branch_and_bound(&crate::geometry::Frame::identity(), &mut near);
+            let scan = (0..c.samples.len())
+                .map(|i| ((c.samples[i].1 - x).norm_squared(), i))
+                .fold(None, |m: Option<(f64, usize)>, e| {
+                    if m.is_none_or(|m| e.0 < m.0) {
+                        Some(e)
+                    } else {
+                        m
+                    }
+                });
+            assert_eq!(near.best, scan, "point {k}");
+        }
+    }
+
+    const TAU_OF: f64 = std::f64::consts::TAU;
 }

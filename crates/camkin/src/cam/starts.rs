@@ -97,6 +97,11 @@ pub(crate) struct SearchIndex {
 }
 
 impl Sampled {
+    /// The tree over the profile's points at the samples.
+    pub(crate) fn points(&self) -> &CircleTree {
+        &self.points
+    }
+
     pub(crate) fn new(m: &Mechanism, params: Vec<f64>) -> Self {
         let profile = m.cam.profile.as_ref();
         let derivs: Vec<_> = params.iter().map(|&u| profile.eval(u)).collect();
