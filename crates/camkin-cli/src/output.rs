@@ -165,21 +165,29 @@ pub fn write_rows<T: serde::Serialize>(
             }
             c.flush()?;
         }
-        TableFormat::Json => {
-            write!(w, "[")?;
-            let mut first = true;
-            while let Some(rows) = next_chunk() {
-                for r in &rows {
-                    if !first {
-                        write!(w, ",")?;
-                    }
-                    first = false;
-                    serde_json::to_writer(&mut *w, r)?;
-                }
+        TableFormat::Json => json_array(w, next_chunk, |w, r| serde_json::to_writer(w, r))?,
+    }
+    Ok(())
+}
+
+/// Writes the rows `next_chunk` yields, chunk by chunk, as one JSON array, each row by `row`.
+fn json_array<T>(
+    w: &mut dyn Write,
+    mut next_chunk: impl FnMut() -> Option<Vec<T>>,
+    row: impl Fn(&mut dyn Write, &T) -> serde_json::Result<()>,
+) -> Result<()> {
+    write!(w, "[")?;
+    let mut first = true;
+    while let Some(rows) = next_chunk() {
+        for r in &rows {
+            if !first {
+                write!(w, ",")?;
             }
-            writeln!(w, "]")?;
+            first = false;
+            row(&mut *w, r)?;
         }
     }
+    writeln!(w, "]")?;
     Ok(())
 }
 
@@ -220,20 +228,9 @@ pub fn write_cells(
             }
             c.flush()?;
         }
-        TableFormat::Json => {
-            write!(w, "[")?;
-            let mut first = true;
-            while let Some(rows) = next_chunk() {
-                for r in &rows {
-                    if !first {
-                        write!(w, ",")?;
-                    }
-                    first = false;
-                    serde_json::to_writer(&mut *w, &Keyed(columns, r))?;
-                }
-            }
-            writeln!(w, "]")?;
-        }
+        TableFormat::Json => json_array(w, next_chunk, |w, r| {
+            serde_json::to_writer(w, &Keyed(columns, r))
+        })?,
     }
     Ok(())
 }
