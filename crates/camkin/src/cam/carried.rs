@@ -374,29 +374,9 @@ impl Mechanism {
             }
         };
         self.corners_outside(c, theta, frame, t)?;
-        let slack = 2.0 * c.chord_error + self.options.touch_tolerance;
-        let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
-        let pitch = TAU / f64::from(c.symmetry);
-        let closing = match self.geometry.joint {
-            super::Joint::Rotating { closing, .. } => closing.sign(),
-            // a slide closes towards the cam: decreasing q
-            super::Joint::Translating { .. } => -1.0,
-        };
-        let contact = sides.contact;
-        let spacing = self.corners.spacing.max(c.chord_error);
-        let mut tried: Vec<Point2> = Vec::new();
-        let window = slack.max(spacing);
+        let (slack, window) = self.tie_window(c);
         let mut ties: Vec<(f64, f64, &Cover)> = Vec::new();
-        for k in covers {
-            let q = if periodic {
-                // the cover's angle brought next to the contact's, modulo a turn (not modulo a
-                // gear's pitch: every tooth has its own covers, and its own parameter `v`)
-                let mid = 0.5 * (k.lo + k.hi);
-                t.q + (mid - wrap_angle_near(mid, t.q))
-            } else {
-                t.q
-            };
-            let depth = (q - k.lo).min(k.hi - q) * k.scale;
+        for (depth, q, k) in self.cover_depths(t, covers) {
             if depth > slack {
                 return Err(CamError::NoConvergence {
                     angle_deg,
@@ -410,10 +390,92 @@ impl Mechanism {
                 ties.push((depth, q, k));
             }
         }
-        // the nearest ties first, one Newton per place
+        let tol = self.options.touch_tolerance;
+        let mut earlier = None;
+        let once = (8, false);
+        self.near_tangencies(
+            c,
+            theta,
+            frame,
+            t,
+            sides.contact,
+            &mut ties,
+            once,
+            |t2, gain| {
+                if gain > tol && gain <= 2.0 * window && self.carried_proper(c, frame, &t2) {
+                    earlier = Some(t2);
+                    Some(true)
+                } else {
+                    None
+                }
+            },
+        );
+        Ok(earlier)
+    }
+
+    /// How deep a sampled cam point may lie inside the follower at an accepted touch (the
+    /// polyline's chord error, both ways, and the touch tolerance), and how near to touching a
+    /// cover must be to be looked at as a possible tangency (that, or the samples' spacing).
+    fn tie_window(&self, c: &Carried) -> (f64, f64) {
+        let slack = 2.0 * c.chord_error + self.options.touch_tolerance;
+        (slack, slack.max(self.corners.spacing.max(c.chord_error)))
+    }
+
+    /// How deep each cover's cam point is inside the follower at `t`'s position, length
+    /// (negative: outside), with the cover's position brought next to `t`'s (modulo a turn for
+    /// an arm: every tooth of a gear has its own covers, and its own parameter `v`).
+    fn cover_depths<'a>(
+        &self,
+        t: &Touch,
+        covers: &'a [Cover],
+    ) -> impl Iterator<Item = (f64, f64, &'a Cover)> + 'a {
+        let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
+        let tq = t.q;
+        covers.iter().map(move |k| {
+            let q = if periodic {
+                let mid = 0.5 * (k.lo + k.hi);
+                tq + (mid - wrap_angle_near(mid, tq))
+            } else {
+                tq
+            };
+            ((q - k.lo).min(k.hi - q) * k.scale, q, k)
+        })
+    }
+
+    /// Newton on the tangency near each of `ties` (`(depth, q, cover)`, sorted here deepest
+    /// first), one per place at least four sample spacings from `contact` and from the places
+    /// tried before, `places` at most, started at the cover's edge the closing sense reaches
+    /// (with `both_edges`, also at its other edge, and when neither gives a tangency, from the
+    /// cam point deepest inside the follower near the sample). Each tangency found is brought to `t`'s configuration
+    /// modulo the curve's symmetry (the contact moved to the tooth that is there, as
+    /// `carried_report` does) and handed to `f` with its gain: how far before `t`, in the closing
+    /// sense, it stops the follower (length; negative: after). `f` returns `None` when it does not
+    /// take the tangency, else whether to stop.
+    #[allow(clippy::too_many_arguments)]
+    fn near_tangencies(
+        &self,
+        c: &Carried,
+        theta: f64,
+        frame: &Frame,
+        t: &Touch,
+        contact: Point2,
+        ties: &mut [(f64, f64, &Cover)],
+        (places, both_edges): (usize, bool),
+        mut f: impl FnMut(Touch, f64) -> Option<bool>,
+    ) {
+        let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
+        let pitch = TAU / f64::from(c.symmetry);
+        let closing = match self.geometry.joint {
+            super::Joint::Rotating { closing, .. } => closing.sign(),
+            // a slide closes towards the cam: decreasing q
+            super::Joint::Translating { .. } => -1.0,
+        };
+        let spacing = self.corners.spacing.max(c.chord_error);
+        let joint = self.geometry.joint;
+        let mut tried: Vec<Point2> = Vec::new();
         ties.sort_by(|a, b| b.0.total_cmp(&a.0));
-        for &(_, q, k) in &ties {
-            if tried.len() >= 8 {
+        for &(_, q, k) in ties.iter() {
+            if tried.len() >= places {
                 break;
             }
             let x = frame * self.cam.profile.position(k.u);
@@ -423,34 +485,144 @@ impl Mechanism {
                 continue;
             }
             tried.push(x);
-            let (edge, v) = if closing > 0.0 {
+            let closing_edge = if closing > 0.0 {
                 (k.lo, k.v_lo)
             } else {
                 (k.hi, k.v_hi)
             };
-            let q0 = t.q + (edge - q);
-            if let Ok(mut t2) = self.carried_newton(c, theta, frame, k.u, v, q0) {
-                // the same configuration modulo the curve's symmetry (an arm: a turn)
-                // (the contact moved to the tooth that is there, as `carried_report` does)
+            let other_edge = if closing > 0.0 {
+                (k.hi, k.v_hi)
+            } else {
+                (k.lo, k.v_lo)
+            };
+            // a tangency from a start, handed to `f`: `Some((stop, here))` when `f` took it,
+            // `here` when it is at this place (Newton may go to another)
+            let mut attempt = |u0: f64, edge: f64, v: f64| -> Option<(bool, bool)> {
+                let mut t2 = self
+                    .carried_newton(c, theta, frame, u0, v, t.q + (edge - q))
+                    .ok()?;
                 let n = if periodic {
                     ((t2.q - t.q) / pitch).round()
                 } else {
                     0.0
                 };
                 let d = t2.q - t.q - n * pitch;
-                let gain = -closing * d * k.scale;
-                if gain > self.options.touch_tolerance && gain <= 2.0 * window {
-                    t2.q = t.q + d;
-                    if let (Some(period), true) = (c.period, n != 0.0) {
-                        t2.v = (t2.v + n * period / f64::from(c.symmetry)).rem_euclid(period);
+                t2.q = t.q + d;
+                if let (Some(period), true) = (c.period, n != 0.0) {
+                    t2.v = (t2.v + n * period / f64::from(c.symmetry)).rem_euclid(period);
+                }
+                let here = (frame * self.cam.profile.position(t2.u) - x).norm() <= 4.0 * spacing;
+                f(t2, -closing * d * k.scale).map(|stop| (stop, here))
+            };
+            let edges = [Some(closing_edge), both_edges.then_some(other_edge)];
+            let mut taken = false;
+            for (edge, v) in edges.into_iter().flatten() {
+                match attempt(k.u, edge, v) {
+                    Some((true, _)) => return,
+                    Some((false, true)) => {
+                        taken = true;
+                        break;
                     }
-                    if self.carried_proper(c, frame, &t2) {
-                        return Ok(Some(t2));
+                    _ => {}
+                }
+            }
+            // a contact that closes either way and was not found from the edges: from the cam
+            // point deepest into the follower near the sample and its foot point, with the
+            // follower where it is (a tangency close to where a flank begins or ends is missed
+            // from the edges: a sample on the radial flank below a gear's base circle, an edge
+            // beyond the tooth's tip corner)
+            if both_edges && !taken {
+                if let Some((u0, v)) = self.deepest_near(c, frame, &joint.pose(t.q).frame(), k.u) {
+                    if attempt(u0, q, v).is_some_and(|(stop, _)| stop) {
+                        return;
                     }
                 }
             }
         }
-        Ok(None)
+    }
+
+    /// The cam point between the dense samples either side of `u` that lies deepest inside the
+    /// follower (at `fb`), by golden sections on its depth, and its foot point on the
+    /// follower's curve: `(u, v)`. A start for Newton, so found to a few digits.
+    fn deepest_near(&self, c: &Carried, frame: &Frame, fb: &Frame, u: f64) -> Option<(f64, f64)> {
+        let params = &self.index.dense.params;
+        let n = params.len();
+        if n < 2 {
+            return None;
+        }
+        let i = params.partition_point(|&p| p < u);
+        let lo = if i >= 1 {
+            params[i - 1]
+        } else {
+            params[n - 1] - self.period
+        };
+        let hi = if i + 1 < n {
+            params[i + 1]
+        } else {
+            params[i + 1 - n] + self.period
+        };
+        let local = |u: f64| fb.inverse_transform_point(&(frame * profile_point(self, u)));
+        let curve = c.curve.as_ref();
+        let (u, _) = super::golden::golden_min(
+            |u| -c.corners.depth_within(curve, local(u), 1.0, 30),
+            lo,
+            hi,
+            30,
+            |_| false,
+        );
+        Some((
+            u.rem_euclid(self.period),
+            c.corners.foot(curve, local(u), 60)?,
+        ))
+    }
+
+    /// The other tangencies that touch the cam with the follower at `t` (within the touch
+    /// tolerance, the bodies' material on opposite sides), appended to `out` (one per place).
+    pub(crate) fn carried_touching(
+        &self,
+        c: &Carried,
+        theta: f64,
+        frame: &Frame,
+        t: &Touch,
+        out: &mut Vec<Touch>,
+    ) {
+        let mut covers = Vec::new();
+        self.covers(c, frame, &mut covers);
+        let (_, window) = self.tie_window(c);
+        let mut ties: Vec<_> = self
+            .cover_depths(t, &covers)
+            .filter(|d| d.0 > -window)
+            .collect();
+        let Some(sides) = self.carried_sides(c, frame, t) else {
+            return;
+        };
+        let tol = self.options.touch_tolerance;
+        let close = 1e-6 * self.size;
+        let at = |t: &Touch| frame * profile_point(self, t.u);
+        // a contact may close either way (gears without backlash touch on both flanks); one
+        // found again from another place does not count as found there
+        let every = (8, true);
+        self.near_tangencies(
+            c,
+            theta,
+            frame,
+            t,
+            sides.contact,
+            &mut ties,
+            every,
+            |t2, gain| {
+                let new = !out.iter().any(|o| (at(o) - at(&t2)).norm() <= close);
+                let opposite = self
+                    .carried_sides(c, frame, &t2)
+                    .is_some_and(|s| s.opposite);
+                if new && gain.abs() <= tol && opposite {
+                    out.push(t2);
+                    Some(false)
+                } else {
+                    None
+                }
+            },
+        );
     }
 
     /// The accepted touch from `t`: moved to an earlier tangency while one is found (a few

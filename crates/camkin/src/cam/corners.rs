@@ -68,6 +68,27 @@ impl Corners {
     /// How deep the point `x` (this curve's frame) lies inside the material on the curve's
     /// `side` (+1: its left, −1: its right): positive inside, by the distance to the foot point.
     pub(crate) fn depth(&self, curve: &dyn Curve, x: Point2, side: f64) -> f64 {
+        self.depth_within(curve, x, side, 80)
+    }
+
+    /// [`Corners::depth`] with its foot point found in `sections` golden sections.
+    pub(crate) fn depth_within(
+        &self,
+        curve: &dyn Curve,
+        x: Point2,
+        side: f64,
+        sections: usize,
+    ) -> f64 {
+        let Some(u) = self.foot(curve, x, sections) else {
+            return f64::NEG_INFINITY;
+        };
+        let d = curve.eval(u);
+        side * (x - d.p).dot(&rot90(d.d1.normalize()))
+    }
+
+    /// The parameter of the foot point of `x` (this curve's frame) on the curve: the point
+    /// nearest `x` between the nearest sample's neighbours, in `sections` golden sections.
+    pub(crate) fn foot(&self, curve: &dyn Curve, x: Point2, sections: usize) -> Option<f64> {
         let n = self.samples.len();
         let mut near = Nearest {
             samples: &self.samples,
@@ -76,11 +97,9 @@ impl Corners {
         };
         self.tree
             .branch_and_bound(&crate::geometry::Frame::identity(), &mut near);
-        let Some((_, i)) = near.best else {
-            return f64::NEG_INFINITY;
-        };
-        // the foot point between the nearest sample's neighbours, by golden sections on the
-        // distance (no derivatives: robust where the curvature is large)
+        let (_, i) = near.best?;
+        // between the nearest sample's neighbours, by golden sections on the distance (no
+        // derivatives: robust where the curvature is large)
         let (lo, hi) = match self.period {
             Some(p) => (
                 if i == 0 {
@@ -100,13 +119,11 @@ impl Corners {
             ),
         };
         let dist = |u: f64| (curve.position(u) - x).norm_squared();
-        let (u, _) = super::golden::golden_min(dist, lo, hi, 80, |_| false);
-        let u = match self.period {
+        let (u, _) = super::golden::golden_min(dist, lo, hi, sections, |_| false);
+        Some(match self.period {
             Some(p) => u.rem_euclid(p),
             None => u.clamp(self.bounds.0, self.bounds.1),
-        };
-        let d = curve.eval(u);
-        side * (x - d.p).dot(&rot90(d.d1.normalize()))
+        })
     }
 }
 

@@ -15,6 +15,7 @@
 
 mod carried;
 mod checks;
+mod contacts;
 mod corners;
 mod derivatives;
 mod error;
@@ -35,6 +36,7 @@ pub mod synthesis;
 mod travel;
 
 pub use checks::{DesignChecks, RoundTrip};
+pub use contacts::Contact;
 pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};

@@ -20,6 +20,7 @@ mod jerk;
 mod oscillating_branch;
 mod paper_cam;
 mod properties;
+mod several_contacts;
 mod spec;
 mod spline_finite_differences;
 mod support_check;

@@ -1,0 +1,193 @@
+//! Every contact at an instant. The follower rests at its first touch; wherever else its curve
+//! touches the cam at that position (the next tooth pair of two gears while the contact ratio
+//! is above one, a roller bridging a notch, a flat face on two equal lobes) is a contact too,
+//! with its own sliding rates, normal accelerations and acceleration constraint row.
+//!
+//! Each [`Contact`]'s row is eq. 11 in the mechanism's two coordinates, the cam angle `θ` (in
+//! the cam's own direction, as everywhere in [`crate::cam`]) and the follower's `q`:
+//!
+//! ```text
+//! Φ_θ θ̈ + Φ_q q̈ = γ        Φ_θ = ±Φ_θA,  Φ_q = Φ_pB·d (slide) or Φ_θB (pivot)
+//! ```
+//!
+//! with `Φ_θA`, `Φ_pB`, `Φ_θB` the entries of [`ContactKinematics::phi_q`] for the cam's and the
+//! follower's body coordinates. The first contact's row is the one the follower's acceleration
+//! is solved from; another contact's row holds at the same motion only if the two contacts agree
+//! (ideal involutes do; a worn tooth would not): its [`Contact::residual`] says by how much, and
+//! its [`Contact::normal_velocity`] whether the motion opens or closes it.
+
+use super::follower::Kind as _;
+use super::{CamError, FollowerState, Joint, Mechanism, Touch};
+use crate::body::{BodyState, CurveInFrame};
+use crate::contact::{ContactKinematics, NormalAcceleration, Pairing};
+use crate::geometry::{wrap_angle_near, Frame, Point2, UnitVec2};
+
+/// One contact between the cam and the follower at an instant. World frame; lengths in the
+/// mechanism's unit, time in s; `q` in length (slide) or rad (pivot).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Contact {
+    /// the cam angle `θ`, rad
+    pub cam_angle: f64,
+    /// the cam-profile parameter at the contact
+    pub cam_param: f64,
+    /// the follower curve's parameter at the contact
+    pub follower_param: f64,
+    /// the contact point (on the cam), world frame
+    pub point: Point2,
+    /// the common normal `ν_A` (the cam profile's left normal), world frame
+    pub normal: UnitVec2,
+    /// how far the follower would move in its closing sense before this contact alone touches,
+    /// length (zero within the touch tolerance: 0 for the first contact)
+    pub gap: f64,
+    /// `ν_A·(v_A^P − v_B^P)` with the follower's velocity, length/s: zero where the motion keeps
+    /// this contact closed
+    pub normal_velocity: f64,
+    /// `ṡ_A`: sliding rate along the cam profile, relative to the cam, length/s (eq. 5)
+    pub sliding_rate_cam: f64,
+    /// `ṡ_B`: sliding rate along the follower's curve, relative to the follower, length/s (eq. 6)
+    pub sliding_rate_follower: f64,
+    /// normal acceleration seen from the cam (eq. 1), along `normal`, length/s²
+    pub normal_acceleration_cam: NormalAcceleration,
+    /// normal acceleration seen from the follower (eq. 2), with the follower's acceleration,
+    /// along `normal`, length/s²
+    pub normal_acceleration_follower: NormalAcceleration,
+    /// `Φ_θ`, the row's coefficient of the cam's angular acceleration, length/rad
+    pub row_cam: f64,
+    /// `Φ_q`, the row's coefficient of the follower's acceleration, length per unit of `q`
+    pub row_follower: f64,
+    /// `γ`, the row's right-hand side, length/s²
+    pub gamma: f64,
+    /// `Φ_θ θ̈ + Φ_q q̈ − γ` at the motion of the state, length/s² (zero for the first contact;
+    /// for another, zero where the contacts agree)
+    pub residual: f64,
+}
+
+impl Mechanism {
+    /// Every contact at cam angle `theta` (rad): the first touch of [`Mechanism::analyze`]
+    /// first, then each other place where the follower's curve touches the cam at that position
+    /// (see [`Mechanism::contacts_at`]).
+    pub fn contacts(&self, theta: f64) -> Result<Vec<Contact>, CamError> {
+        self.contacts_at(&self.analyze(theta)?)
+    }
+
+    /// Every contact with the follower at the state `s` (from [`Mechanism::analyze`] or a
+    /// [`Sweep`](super::Sweep)): its own contact first, then the other tangencies within the
+    /// touch tolerance of its position, found from the same starts as the first-touch search (the
+    /// local maxima of the sampled first-touch function; a carried curve's covered cam samples)
+    /// and refined by Newton. Each has its kinematics at the state's velocity and acceleration.
+    pub fn contacts_at(&self, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
+        let theta = s.cam_angle;
+        let cam = self.cam.state(theta);
+        let frame = cam.frame();
+        let first = Touch {
+            u: s.cam_param,
+            q: s.position,
+            v: s.follower_param,
+        };
+        let mut touches = vec![first];
+        match self.carried() {
+            Some(c) => self.carried_touching(c, theta, &frame, &first, &mut touches),
+            None => self.named_touching(theta, &frame, &first, &mut touches),
+        }
+        // one contact per place
+        let close = 1e-6 * self.size;
+        let mut places: Vec<Point2> = Vec::new();
+        let mut out = Vec::with_capacity(touches.len());
+        for t in &touches {
+            let x = frame.curve_position(self.cam.profile.as_ref(), t.u);
+            if places.iter().any(|y| (x - y).norm() <= close) {
+                continue;
+            }
+            places.push(x);
+            out.push(self.contact(theta, &cam, &frame, t, s)?);
+        }
+        Ok(out)
+    }
+
+    /// The named kinds' other tangencies at `t`'s position: Newton from each start of the
+    /// global search, kept when it is a first touch within the touch tolerance of `t`.
+    fn named_touching(&self, theta: f64, frame: &Frame, t: &Touch, out: &mut Vec<Touch>) {
+        let mut starts = super::starts::Candidates::new(super::MAX_CANDIDATES);
+        if self.geometry.model.centre_path().is_some() {
+            self.path_starts(frame, &self.index.dense, &mut starts);
+        } else {
+            self.score_starts(frame, &self.index.dense, &mut starts);
+        }
+        let slack = self.touch_slack();
+        for &(_, u0, q0) in starts.as_slice() {
+            if let Ok(t2) = self.newton(theta, frame, u0, q0) {
+                if self.ahead(t.q, t2.q).abs() <= slack && self.is_first_touch(frame, &t2) {
+                    out.push(t2);
+                }
+            }
+        }
+    }
+
+    /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
+    fn ahead(&self, q: f64, other: f64) -> f64 {
+        let d = self.oriented(q) - self.oriented(other);
+        match self.geometry.joint {
+            Joint::Rotating { .. } => wrap_angle_near(d, 0.0),
+            Joint::Translating { .. } => d,
+        }
+    }
+
+    /// The kinematics of the contact `t` with the follower at the state `s`'s position,
+    /// velocity and acceleration.
+    fn contact(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        frame: &Frame,
+        t: &Touch,
+        s: &FollowerState,
+    ) -> Result<Contact, CamError> {
+        let g = &self.geometry;
+        let angle_deg = theta.to_degrees();
+        let ea = frame.derivs_to_world(&self.cam.profile.eval(t.u));
+        let c = ea.p;
+        let nu = ea.as_derivs().normal();
+        let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
+        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c, t.v);
+        let pairing = Pairing {
+            u_a: t.u,
+            u_b,
+            point_a: c,
+            point_b: eb.p,
+            normal: UnitVec2::new_unchecked(nu),
+            gap: nu.dot(&(c - eb.p)),
+            iterations: 0,
+        };
+        let k = ContactKinematics::from_geometry(
+            cam,
+            &ea,
+            &body_b,
+            &eb,
+            g.is_knife(),
+            &pairing,
+            self.options.conformal_tolerance,
+        )
+        .map_err(|source| CamError::Contact { angle_deg, source })?;
+        let row_cam = k.phi_q[2] * self.cam.direction.sign();
+        let row_follower = g.joint.coordinate_coefficient(&k.phi_q);
+        Ok(Contact {
+            cam_angle: theta,
+            cam_param: t.u,
+            follower_param: u_b,
+            point: c,
+            normal: UnitVec2::new_unchecked(nu),
+            gap: self.ahead(s.position, t.q) * g.q_length_scale(self.size),
+            normal_velocity: k.normal_velocity,
+            sliding_rate_cam: k.sliding_rate_a,
+            sliding_rate_follower: k.sliding_rate_b,
+            normal_acceleration_cam: k.normal_acceleration_a(cam),
+            normal_acceleration_follower: k.normal_acceleration_b(&body_b),
+            row_cam,
+            row_follower,
+            gamma: k.gamma,
+            residual: row_cam * self.cam.angular_acceleration + row_follower * s.acceleration
+                - k.gamma,
+        })
+    }
+}

@@ -1,0 +1,234 @@
+//! Every contact at an instant (`Mechanism::contacts`): two gear tooth pairs while the contact
+//! ratio is above one, and a roller bridging a notch, checked against closed forms the contact
+//! method does not use (the line of action, the involute's roll lengths, the constant ratio of
+//! ideal involutes, mirror symmetry).
+
+use camkin::cam::{Cam, Contact, Follower, FollowerProfile, Mechanism, Sense};
+use camkin::curve::{Circle, ClosedSpline, InvoluteGear, InvoluteGearSpec};
+use camkin::{Point2, Vec2};
+use std::f64::consts::{PI, TAU};
+use std::sync::Arc;
+
+const M: f64 = 2.0;
+
+/// The standard 20/42 pair, 20°, module 2, the driver at 1000 rpm speeding up at `alpha`; each
+/// tooth thinned by `backlash` on its pitch circle.
+fn gears(alpha: f64, backlash: f64) -> Mechanism {
+    let spec = |z| InvoluteGearSpec {
+        backlash,
+        ..InvoluteGearSpec::new(M, z, 20f64.to_radians())
+    };
+    let (g1, g2) = (
+        InvoluteGear::new(spec(20)).unwrap(),
+        InvoluteGear::new(spec(42)).unwrap(),
+    );
+    let cam = Cam::from_rpm(Arc::new(g1), Point2::origin(), Sense::Ccw, 1000.0)
+        .unwrap()
+        .with_angular_acceleration(alpha)
+        .unwrap();
+    let follower = Follower::Rotating {
+        pivot: Point2::new(62.0, 0.0),
+        closing: Sense::Ccw,
+        initial_angle: PI + PI / 42.0,
+        profile: FollowerProfile(Arc::new(g2)),
+    };
+    Mechanism::new(cam, follower).unwrap()
+}
+
+/// Three mesh cycles of the 20/42 pair under angular acceleration, without and with backlash.
+/// Every contact lies on a line of action: the driving one (through the pitch point, tangent to
+/// the base circles below the line of centres) and, without backlash, the coast one (its mirror
+/// image in the line of centres: the back flanks touch too). On each line there are as many
+/// contacts as the line holds (the first one's place moved by whole base pitches, inside the
+/// line's ends). Each slides along its flanks at the rates the involute's roll lengths give
+/// (`ṡ₁ = ρ₁ ω₁`, `ṡ₂ = ρ₂ ω₂`), and each row holds at the ideal motion `q̈ = −(z1/z2) θ̈`
+/// written here, not the one the method solved.
+#[test]
+fn ideal_gears_report_every_tooth_pair_in_contact() {
+    for backlash in [0.0, 0.1] {
+        mesh_cycles(backlash);
+    }
+}
+
+fn mesh_cycles(backlash: f64) {
+    let alpha = 2000.0;
+    let mech = gears(alpha, backlash);
+    let (z1, z2) = (20.0, 42.0);
+    let a_w = 20f64.to_radians();
+    let (r1, r2) = (M * z1 / 2.0, M * z2 / 2.0);
+    let (rb1, rb2) = (r1 * a_w.cos(), r2 * a_w.cos());
+    let (ra1, ra2) = (r1 + M, r2 + M);
+    let a = r1 + r2;
+    let pb = TAU * rb1 / z1;
+    let pitch = Point2::new(r1, 0.0);
+    // the lines of action: T₁ on the driver's base circle, the unit vector along the line, its
+    // ends measured from the pitch point where the tip circles cross it
+    let lines = [-1.0, 1.0].map(|side: f64| {
+        let t1 = Point2::new(rb1 * a_w.cos(), side * rb1 * a_w.sin());
+        (t1, (pitch - t1).normalize())
+    });
+    let (start, end) = (
+        a * a_w.sin() - (ra2 * ra2 - rb2 * rb2).sqrt() - rb1 * a_w.tan(),
+        (ra1 * ra1 - rb1 * rb1).sqrt() - rb1 * a_w.tan(),
+    );
+    let w1 = mech.cam().speed();
+    let w2 = w1 * z1 / z2;
+    let qdd = -z1 / z2 * alpha;
+    let mut sweep = mech.sweep();
+    let mut double = 0usize;
+    let n = 540;
+    for k in 0..n {
+        let theta = f64::from(k) * 0.1f64.to_radians();
+        let s = sweep.step(theta).unwrap();
+        let cs = mech.contacts_at(&s).unwrap();
+        let what = format!("backlash {backlash} mm, θ = {:.1}°", theta.to_degrees());
+        // the first contact is the state's own
+        assert_eq!(cs[0].point, s.contact_world, "{what}");
+        let mut on_line = [Vec::new(), Vec::new()];
+        for c in &cs {
+            // on the line, the normal along it (both lines pass through the pitch point)
+            let which = lines.iter().position(|(t1, e)| {
+                let across = Vec2::new(-e.y, e.x);
+                (c.point - t1).dot(&across).abs() <= 1e-10 * a
+                    && c.normal.dot(&across).abs() <= 1e-10
+            });
+            let Some(i) = which else {
+                panic!("{what}: {} on no line of action", c.point);
+            };
+            on_line[i].push(c);
+            assert!(c.gap.abs() <= 1e-10 * a, "{what}: gap {}", c.gap);
+            assert!(c.normal_velocity.abs() <= 1e-10 * w1 * a, "{what}");
+            // sliding rates from the roll lengths
+            let (t1, e) = lines[i];
+            let rho1 = (c.point - t1).dot(&e);
+            let rho2 = a * a_w.sin() - rho1;
+            assert!(
+                (c.sliding_rate_cam.abs() - rho1 * w1).abs() <= 1e-9 * w1 * a,
+                "{what}: ṡ₁ {} against {}",
+                c.sliding_rate_cam,
+                rho1 * w1
+            );
+            assert!(
+                (c.sliding_rate_follower.abs() - rho2 * w2).abs() <= 1e-9 * w1 * a,
+                "{what}: ṡ₂ {} against {}",
+                c.sliding_rate_follower,
+                rho2 * w2
+            );
+            // the row, with the ideal accelerations
+            let lhs = c.row_cam * alpha + c.row_follower * qdd;
+            let scale = c.gamma.abs() + (c.row_cam * alpha).abs();
+            assert!(
+                (lhs - c.gamma).abs() <= 1e-9 * scale,
+                "{what}: row gives {lhs} against γ = {}",
+                c.gamma
+            );
+            assert!(c.residual.abs() <= 1e-9 * scale, "{what}");
+        }
+        assert!(on_line[0].iter().any(|c| c.point == s.contact_world));
+        // the coast flanks touch when there is no backlash, and only then
+        assert_eq!(on_line[1].is_empty(), backlash > 0.0, "{what}");
+        for (i, line) in on_line.iter().enumerate() {
+            let Some(first) = line.first() else { continue };
+            let x = |c: &Contact| (c.point - pitch).dot(&lines[i].1);
+            for c in line {
+                let j = (x(c) - x(first)) / pb;
+                assert!((j - j.round()).abs() <= 1e-10, "{what}: {j} base pitches");
+            }
+            let inside: Vec<f64> = (-2..=2)
+                .map(|j| x(first) + f64::from(j) * pb)
+                .filter(|y| *y >= start - 1e-7 && *y <= end + 1e-7)
+                .collect();
+            let near_end = inside
+                .iter()
+                .any(|y| (y - start).abs() < 1e-7 || (y - end).abs() < 1e-7);
+            if !near_end {
+                assert_eq!(line.len(), inside.len(), "{what}: line {i}, at {inside:?}");
+            }
+        }
+        double += usize::from(on_line[0].len() == 2);
+    }
+    // the fraction of time with two pairs driving is ε − 1 (ε = 1.6398 for 20/42)
+    let eps =
+        ((ra1 * ra1 - rb1 * rb1).sqrt() + (ra2 * ra2 - rb2 * rb2).sqrt() - a * a_w.sin()) / pb;
+    let frac = double as f64 / f64::from(n);
+    assert!(
+        (frac - (eps - 1.0)).abs() <= 2.0 / 180.0,
+        "two pairs {frac} of the time, ε = {eps}"
+    );
+}
+
+/// A cam mirror-symmetric about the y axis with a notch at the top, narrower than the roller:
+/// `r(φ) = 40 − 4 exp(−((φ − 90°)/8°)²)` through nodes every 5°.
+fn notched() -> Arc<ClosedSpline> {
+    let nodes: Vec<Point2> = (0..72)
+        .map(|i| {
+            let phi = (90.0 + 5.0 * f64::from(i)).to_radians();
+            let d = (phi - PI / 2.0 + PI).rem_euclid(TAU) - PI;
+            let r = 40.0 - 4.0 * (-(d / 8f64.to_radians()).powi(2)).exp();
+            Point2::new(r * phi.cos(), r * phi.sin())
+        })
+        .collect();
+    Arc::new(ClosedSpline::new(&nodes).unwrap())
+}
+
+fn on_notch(follower: Follower) -> Mechanism {
+    let cam = Cam::from_rpm(notched(), Point2::origin(), Sense::Ccw, 600.0).unwrap();
+    Mechanism::new(cam, follower).unwrap()
+}
+
+/// A roller over the notch rests on both shoulders at θ = 0: two contacts, mirror images of each
+/// other; at the mirror the second contact's own motion is the first's reversed, so the motion
+/// (set by the first) opens it at `ν·(v_A − v_B) = −2 q̇ (ν·d)`. The same through the named
+/// roller and through a circle carried by the general follower.
+#[test]
+fn roller_bridging_a_notch_touches_both_shoulders() {
+    let d = Vec2::new(0.0, 1.0);
+    let named = on_notch(Follower::TranslatingRoller {
+        direction: d,
+        offset: 0.0,
+        roller_radius: 10.0,
+    });
+    let general = on_notch(Follower::Translating {
+        direction: d,
+        offset: 0.0,
+        profile: FollowerProfile(Arc::new(Circle::new(Point2::origin(), 10.0).unwrap())),
+    });
+    let mut found: Vec<Vec<Contact>> = Vec::new();
+    for m in [&named, &general] {
+        let s = m.analyze(0.0).unwrap();
+        let cs = m.contacts_at(&s).unwrap();
+        assert_eq!(cs.len(), 2, "{cs:?}");
+        let (p, q) = (cs[0].point, cs[1].point);
+        assert!(
+            p.x.abs() > 1.0,
+            "on a shoulder, not the notch's bottom: {p}"
+        );
+        assert!((p.x + q.x).abs() <= 1e-9 * 40.0, "{p} and {q}");
+        assert!((p.y - q.y).abs() <= 1e-9 * 40.0, "{p} and {q}");
+        assert!((cs[0].normal.x + cs[1].normal.x).abs() <= 1e-9);
+        assert!(cs[1].gap.abs() <= 1e-9 * 40.0);
+        assert!(
+            s.velocity.abs() > 1.0,
+            "the shoulders move: q̇ = {}",
+            s.velocity
+        );
+        assert!(cs[0].normal_velocity.abs() <= 1e-9 * s.velocity.abs());
+        let want = -2.0 * s.velocity * cs[1].normal.dot(&d);
+        assert!(
+            (cs[1].normal_velocity - want).abs() <= 1e-9 * want.abs(),
+            "{} against {want}",
+            cs[1].normal_velocity
+        );
+        found.push(cs);
+    }
+    // the named roller and the carried circle: the same two contacts
+    for (a, b) in found[0].iter().zip(&found[1]) {
+        assert!((a.point - b.point).norm() <= 1e-9 * 40.0);
+        assert!((a.row_follower - b.row_follower).abs() <= 1e-9 * a.row_follower.abs());
+        assert!((a.gamma - b.gamma).abs() <= 1e-9 * a.gamma.abs().max(1.0));
+    }
+    // off the mirror the roller rests on one shoulder
+    for m in [&named, &general] {
+        assert_eq!(m.contacts(0.05).unwrap().len(), 1);
+    }
+}
