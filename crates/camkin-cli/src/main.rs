@@ -1,7 +1,8 @@
 //! The `camkin` command. Exit codes: 0 success, 1 internal failure, 2 bad input.
 
 use camkin_cli::commands::{
-    analyze, bench, compare, deviation, forces, mesh, plot, profile, serve, simulate, synth,
+    analyze, bench, compare, contacts, deviation, forces, mesh, plot, profile, serve, simulate,
+    synth,
 };
 use camkin_cli::Failure;
 
@@ -29,6 +30,12 @@ enum Command {
         after_help = "Examples:\n  camkin mesh                                  # the built-in 20/42 pair, two mesh cycles\n  camkin mesh examples/gear-pair-tip-relief.toml --plot fig\n  camkin mesh pair.toml --angles 0:36:0.05 -o mesh.csv --format json\n\nThe contact ratio and the transmission error's range go to stderr. Columns: see the README.\nExit codes: 0 success, 1 internal failure, 2 bad input (not a gear pair, among others)."
     )]
     Mesh(mesh::MeshArgs),
+    /// Every contact between cam and follower at cam angles, one row each, with its sliding
+    /// rates, normal accelerations and acceleration constraint row, as CSV.
+    #[command(
+        after_help = "Examples:\n  camkin contacts examples/gear-pair-20-42.toml --angles 0:18:0.5   # two or three tooth pairs at once\n  camkin contacts cam.toml --at 0,90 --format json\n\nThe first contact at each angle (contact = 0) is the follower's first touch; the others touch at\nthe same position within the touch tolerance. Each row holds row_cam·θ̈ + row_follower·q̈ = gamma.\nExit codes: 0 success, 1 internal failure, 2 bad input."
+    )]
+    Contacts(contacts::ContactsArgs),
     /// The paper's study on its two built-in cams: CSV data, plots (SVG, PNG) and a summary.
     #[command(
         after_help = "Examples:\n  camkin paper                       # writes ./camkin-paper/{original,revised}/… and summary.md\n  camkin paper --out study --format json\n  camkin paper --step 0.1 --nodes 100,1000\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
@@ -127,6 +134,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Analyze(args) => analyze::run(&args),
         Command::Mesh(args) => mesh::run(&args),
+        Command::Contacts(args) => contacts::run(&args),
         Command::Paper(args) => compare::run_paper(&args),
         Command::Compare(args) => compare::run_compare(&args),
         Command::Plot(args) => plot::run(&args),

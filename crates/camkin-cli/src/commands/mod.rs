@@ -3,6 +3,7 @@
 pub mod analyze;
 pub mod bench;
 pub mod compare;
+pub mod contacts;
 pub mod deviation;
 pub mod forces;
 pub mod mesh;

@@ -6,6 +6,7 @@
 //! the mechanism's length unit, time in seconds. Numbers are not rounded.
 
 mod columns;
+mod contacts;
 mod mesh;
 mod sweep;
 mod units;
@@ -17,6 +18,7 @@ pub use columns::{
     analysis_cells, analysis_columns, event_cells, event_columns, sample_cells, sample_columns,
     Cell,
 };
+pub use contacts::{contact_cells, contact_columns, ContactRow};
 pub use mesh::{mesh_cells, mesh_columns, MeshRow};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
 pub use units::{AngleUnit, Per, Units, UnknownUnit};

@@ -4,38 +4,38 @@
 //! ideal involutes, mirror symmetry).
 
 use camkin::cam::{Cam, Contact, Follower, FollowerProfile, Mechanism, Sense};
-use camkin::curve::{Circle, ClosedSpline, InvoluteGear, InvoluteGearSpec};
+use camkin::curve::{Circle, ClosedSpline, Curve, InvoluteGear, InvoluteGearSpec, Line};
 use camkin::{Point2, Vec2};
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
 const M: f64 = 2.0;
 
-/// The standard 20/42 pair, 20°, module 2, the driver at 1000 rpm speeding up at `alpha`; each
-/// tooth thinned by `backlash` on its pitch circle.
-fn gears(alpha: f64, backlash: f64) -> Mechanism {
+/// A standard `z1`/`z2` pair, 20°, module 2, at the standard centre distance, the driver at
+/// 1000 rpm speeding up at `alpha`; each tooth thinned by `backlash` on its pitch circle.
+fn gears(z1: u32, z2: u32, alpha: f64, backlash: f64) -> Mechanism {
     let spec = |z| InvoluteGearSpec {
         backlash,
         ..InvoluteGearSpec::new(M, z, 20f64.to_radians())
     };
     let (g1, g2) = (
-        InvoluteGear::new(spec(20)).unwrap(),
-        InvoluteGear::new(spec(42)).unwrap(),
+        InvoluteGear::new(spec(z1)).unwrap(),
+        InvoluteGear::new(spec(z2)).unwrap(),
     );
     let cam = Cam::from_rpm(Arc::new(g1), Point2::origin(), Sense::Ccw, 1000.0)
         .unwrap()
         .with_angular_acceleration(alpha)
         .unwrap();
     let follower = Follower::Rotating {
-        pivot: Point2::new(62.0, 0.0),
+        pivot: Point2::new(M * f64::from(z1 + z2) / 2.0, 0.0),
         closing: Sense::Ccw,
-        initial_angle: PI + PI / 42.0,
+        initial_angle: PI + PI / f64::from(z2),
         profile: FollowerProfile(Arc::new(g2)),
     };
     Mechanism::new(cam, follower).unwrap()
 }
 
-/// Three mesh cycles of the 20/42 pair under angular acceleration, without and with backlash.
+/// Three mesh cycles of three pairs under angular acceleration, without and with backlash.
 /// Every contact lies on a line of action: the driving one (through the pitch point, tangent to
 /// the base circles below the line of centres) and, without backlash, the coast one (its mirror
 /// image in the line of centres: the back flanks touch too). On each line there are as many
@@ -45,15 +45,17 @@ fn gears(alpha: f64, backlash: f64) -> Mechanism {
 /// written here, not the one the method solved.
 #[test]
 fn ideal_gears_report_every_tooth_pair_in_contact() {
-    for backlash in [0.0, 0.1] {
-        mesh_cycles(backlash);
+    for (z1, z2) in [(20, 42), (17, 60), (25, 31)] {
+        for backlash in [0.0, 0.1] {
+            mesh_cycles(z1, z2, backlash);
+        }
     }
 }
 
-fn mesh_cycles(backlash: f64) {
+fn mesh_cycles(teeth1: u32, teeth2: u32, backlash: f64) {
     let alpha = 2000.0;
-    let mech = gears(alpha, backlash);
-    let (z1, z2) = (20.0, 42.0);
+    let mech = gears(teeth1, teeth2, alpha, backlash);
+    let (z1, z2) = (f64::from(teeth1), f64::from(teeth2));
     let a_w = 20f64.to_radians();
     let (r1, r2) = (M * z1 / 2.0, M * z2 / 2.0);
     let (rb1, rb2) = (r1 * a_w.cos(), r2 * a_w.cos());
@@ -76,12 +78,16 @@ fn mesh_cycles(backlash: f64) {
     let qdd = -z1 / z2 * alpha;
     let mut sweep = mech.sweep();
     let mut double = 0usize;
-    let n = 540;
+    // three mesh cycles
+    let n = 360;
     for k in 0..n {
-        let theta = f64::from(k) * 0.1f64.to_radians();
+        let theta = f64::from(k) / f64::from(n) * 3.0 * TAU / z1;
         let s = sweep.step(theta).unwrap();
         let cs = mech.contacts_at(&s).unwrap();
-        let what = format!("backlash {backlash} mm, θ = {:.1}°", theta.to_degrees());
+        let what = format!(
+            "{teeth1}/{teeth2}, backlash {backlash} mm, θ = {:.2}°",
+            theta.to_degrees()
+        );
         // the first contact is the state's own
         assert_eq!(cs[0].point, s.contact_world, "{what}");
         let mut on_line = [Vec::new(), Vec::new()];
@@ -152,7 +158,7 @@ fn mesh_cycles(backlash: f64) {
         ((ra1 * ra1 - rb1 * rb1).sqrt() + (ra2 * ra2 - rb2 * rb2).sqrt() - a * a_w.sin()) / pb;
     let frac = double as f64 / f64::from(n);
     assert!(
-        (frac - (eps - 1.0)).abs() <= 2.0 / 180.0,
+        (frac - (eps - 1.0)).abs() <= 2.0 / f64::from(n),
         "two pairs {frac} of the time, ε = {eps}"
     );
 }
@@ -176,25 +182,39 @@ fn on_notch(follower: Follower) -> Mechanism {
     Mechanism::new(cam, follower).unwrap()
 }
 
-/// A roller over the notch rests on both shoulders at θ = 0: two contacts, mirror images of each
-/// other; at the mirror the second contact's own motion is the first's reversed, so the motion
-/// (set by the first) opens it at `ν·(v_A − v_B) = −2 q̇ (ν·d)`. The same through the named
-/// roller and through a circle carried by the general follower.
+/// A roller over the notch, or a flat face on it, rests on both shoulders at θ = 0: two contacts,
+/// mirror images of each other; at the mirror the second contact's own motion is the first's
+/// reversed, so the motion (set by the first) opens it at `ν·(v_A − v_B) = −2 q̇ (ν·d)`. The same
+/// through the named kinds and through their curves carried by the general follower.
 #[test]
-fn roller_bridging_a_notch_touches_both_shoulders() {
+fn roller_or_face_on_a_notch_touches_both_shoulders() {
     let d = Vec2::new(0.0, 1.0);
-    let named = on_notch(Follower::TranslatingRoller {
-        direction: d,
-        offset: 0.0,
-        roller_radius: 10.0,
-    });
-    let general = on_notch(Follower::Translating {
-        direction: d,
-        offset: 0.0,
-        profile: FollowerProfile(Arc::new(Circle::new(Point2::origin(), 10.0).unwrap())),
-    });
+    let roller = (
+        Follower::TranslatingRoller {
+            direction: d,
+            offset: 0.0,
+            roller_radius: 10.0,
+        },
+        Arc::new(Circle::new(Point2::origin(), 10.0).unwrap()) as Arc<dyn Curve>,
+    );
+    // the face x·d = s: in the frame along d, the line through the origin along −y
+    let face = (
+        Follower::TranslatingFlat { direction: d },
+        Arc::new(Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap()) as Arc<dyn Curve>,
+    );
+    for (named, curve) in [roller, face] {
+        let general = Follower::Translating {
+            direction: d,
+            offset: 0.0,
+            profile: FollowerProfile(curve),
+        };
+        on_both_shoulders(&on_notch(named), &on_notch(general), d);
+    }
+}
+
+fn on_both_shoulders(named: &Mechanism, general: &Mechanism, d: Vec2) {
     let mut found: Vec<Vec<Contact>> = Vec::new();
-    for m in [&named, &general] {
+    for m in [named, general] {
         let s = m.analyze(0.0).unwrap();
         let cs = m.contacts_at(&s).unwrap();
         assert_eq!(cs.len(), 2, "{cs:?}");
@@ -228,7 +248,7 @@ fn roller_bridging_a_notch_touches_both_shoulders() {
         assert!((a.gamma - b.gamma).abs() <= 1e-9 * a.gamma.abs().max(1.0));
     }
     // off the mirror the roller rests on one shoulder
-    for m in [&named, &general] {
+    for m in [named, general] {
         assert_eq!(m.contacts(0.05).unwrap().len(), 1);
     }
 }

@@ -1,0 +1,146 @@
+//! The contacts table (`camkin contacts`, the Python package's `Mechanism.contacts`): one
+//! [`ContactRow`] per contact per cam angle, from [`Mechanism::contacts_at`](crate::cam::Mechanism::contacts_at),
+//! with its columns named and converted by [`Units`].
+
+use super::columns::Cell;
+use super::units::Units;
+use crate::cam::{CamError, Contact};
+
+/// One contact at one cam angle. A row for an angle that could not be analysed has only
+/// `angle_deg` and `error`. Lengths in the mechanism's unit, time in s; the constraint row is
+/// in rad for angles (the cam's and an arm's).
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ContactRow {
+    /// the cam angle, degrees, as asked for
+    pub angle_deg: f64,
+    /// the contact's number at this angle: 0 for the follower's first touch
+    pub contact: Option<u32>,
+    /// the cam-profile parameter at the contact
+    pub cam_param: Option<f64>,
+    /// the follower curve's parameter at the contact
+    pub follower_param: Option<f64>,
+    /// the contact point, world frame, length
+    pub x: Option<f64>,
+    /// the contact point, world frame, length
+    pub y: Option<f64>,
+    /// the common normal (the cam profile's left normal), world frame
+    pub normal_x: Option<f64>,
+    /// the common normal's y component
+    pub normal_y: Option<f64>,
+    /// how far the follower would move in its closing sense before this contact alone
+    /// touches, length (zero within the touch tolerance)
+    pub gap: Option<f64>,
+    /// `ν·(v_A − v_B)` at the follower's motion, length/s (zero where the motion keeps the
+    /// contact closed)
+    pub normal_velocity: Option<f64>,
+    /// sliding rate along the cam profile, length/s
+    pub sliding_rate_cam: Option<f64>,
+    /// sliding rate along the follower's curve, length/s
+    pub sliding_rate_follower: Option<f64>,
+    /// normal acceleration of the contact point seen from the cam (eq. 1), length/s²
+    pub normal_acceleration_cam: Option<f64>,
+    /// seen from the follower (eq. 2), length/s²
+    pub normal_acceleration_follower: Option<f64>,
+    /// `Φ_θ`, length/rad
+    pub row_cam: Option<f64>,
+    /// `Φ_q`, length per unit of the follower's coordinate (length or rad)
+    pub row_follower: Option<f64>,
+    /// `γ`, length/s²
+    pub gamma: Option<f64>,
+    /// `Φ_θ θ̈ + Φ_q q̈ − γ` at the state's motion, length/s²
+    pub residual: Option<f64>,
+    /// why the angle could not be analysed
+    pub error: Option<String>,
+}
+
+impl ContactRow {
+    /// The rows of one angle's contacts (one row with the error when there are none).
+    pub fn of(angle_deg: f64, result: &Result<Vec<Contact>, CamError>) -> Vec<Self> {
+        match result {
+            Ok(cs) => cs
+                .iter()
+                .enumerate()
+                .map(|(i, c)| Self {
+                    angle_deg,
+                    contact: u32::try_from(i).ok(),
+                    cam_param: Some(c.cam_param),
+                    follower_param: Some(c.follower_param),
+                    x: Some(c.point.x),
+                    y: Some(c.point.y),
+                    normal_x: Some(c.normal.x),
+                    normal_y: Some(c.normal.y),
+                    gap: Some(c.gap),
+                    normal_velocity: Some(c.normal_velocity),
+                    sliding_rate_cam: Some(c.sliding_rate_cam),
+                    sliding_rate_follower: Some(c.sliding_rate_follower),
+                    normal_acceleration_cam: Some(c.normal_acceleration_cam.total()),
+                    normal_acceleration_follower: Some(c.normal_acceleration_follower.total()),
+                    row_cam: Some(c.row_cam),
+                    row_follower: Some(c.row_follower),
+                    gamma: Some(c.gamma),
+                    residual: Some(c.residual),
+                    error: None,
+                })
+                .collect(),
+            Err(e) => vec![Self {
+                angle_deg,
+                error: Some(e.to_string()),
+                ..Self::default()
+            }],
+        }
+    }
+}
+
+/// The column names of the contacts table, each with its unit.
+pub fn contact_columns(u: &Units) -> Vec<String> {
+    let l = u.len();
+    let q = if u.oscillating { "rad" } else { l };
+    vec![
+        "angle_deg".into(),
+        "contact".into(),
+        "cam_param".into(),
+        "follower_param".into(),
+        format!("x_{l}"),
+        format!("y_{l}"),
+        "normal_x".into(),
+        "normal_y".into(),
+        format!("gap_{l}"),
+        format!("normal_velocity_{l}_s"),
+        format!("sliding_rate_cam_{l}_s"),
+        format!("sliding_rate_follower_{l}_s"),
+        format!("normal_acceleration_cam_{l}_s2"),
+        format!("normal_acceleration_follower_{l}_s2"),
+        format!("row_cam_{l}_per_rad"),
+        format!("row_follower_{l}_per_{q}"),
+        format!("gamma_{l}_s2"),
+        format!("residual_{l}_s2"),
+        "error".into(),
+    ]
+}
+
+/// One row's cells, in the order of [`contact_columns`].
+pub fn contact_cells(r: &ContactRow) -> Vec<Cell> {
+    let n = Cell::Num;
+    vec![
+        n(Some(r.angle_deg)),
+        Cell::Count(r.contact),
+        n(r.cam_param),
+        n(r.follower_param),
+        n(r.x),
+        n(r.y),
+        n(r.normal_x),
+        n(r.normal_y),
+        n(r.gap),
+        n(r.normal_velocity),
+        n(r.sliding_rate_cam),
+        n(r.sliding_rate_follower),
+        n(r.normal_acceleration_cam),
+        n(r.normal_acceleration_follower),
+        n(r.row_cam),
+        n(r.row_follower),
+        n(r.gamma),
+        n(r.residual),
+        Cell::Text(r.error.clone()),
+    ]
+}
