@@ -423,6 +423,73 @@ impl PyMechanism {
         cols.into_dict(py, scalar)
     }
 
+    /// contacts(angles_deg, *, contiguous=None, strict=False, large=False) -> dict
+    ///
+    /// Every contact between cam and follower at each cam angle (degrees; a number or a 1-D
+    /// array): the follower's first touch (``contact`` 0) and each other place its curve touches
+    /// the cam at that position (a second tooth pair, a gear's back flank without backlash, a
+    /// roller bridging a notch). One row per contact, as a dict of NumPy arrays keyed by the
+    /// columns of ``camkin contacts`` (``angle_deg`` repeats for each contact at an angle): the
+    /// point, normal, gap, normal velocity, sliding rates, normal accelerations and the
+    /// acceleration constraint row ``row_cam·θ̈ + row_follower·q̈ = gamma`` with its
+    /// ``residual`` at the follower's motion. An angle that could not be analysed has one row
+    /// with NaN and its reason in ``error``; ``strict=True`` raises ``camkin.ContactError``.
+    #[pyo3(signature = (angles_deg, *, contiguous = None, strict = false, large = false))]
+    fn contacts<'py>(
+        &self,
+        py: Python<'py>,
+        angles_deg: &Bound<'py, PyAny>,
+        contiguous: Option<bool>,
+        strict: bool,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let (angles, _) = angles_from(py, angles_deg, "angles_deg")?;
+        self.check_work(angles.len(), large)?;
+        let seconds = self.mech().contacts_seconds_estimate(angles.len());
+        if seconds > MAX_SECONDS && !large {
+            return Err(errors::resource(format!(
+                "{} cam angles would take about {} s to search for every contact; pass large=True to run it anyway, or use fewer angles",
+                angles.len(),
+                camkin::human::human(seconds.ceil())
+            )));
+        }
+        let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
+        let mech = self.mech();
+        let units = Units::plain(mech, self.built.length_unit);
+        let (cols, first_error) = py.detach(|| {
+            let mut sweep = mech.sweep();
+            let mut cols = Columns::new(camkin::table::contact_columns(&units), angles.len());
+            let mut first_error = None;
+            for &a in &angles {
+                let theta = a.to_radians();
+                let state = if contiguous {
+                    sweep.step(theta)
+                } else {
+                    mech.analyze(theta)
+                };
+                let found = state.and_then(|s| mech.contacts_at(&s));
+                for r in camkin::table::ContactRow::of(a, &found) {
+                    if first_error.is_none() {
+                        if let Some(e) = &r.error {
+                            first_error = Some((a, e.clone()));
+                        }
+                    }
+                    cols.push(camkin::table::contact_cells(&r));
+                }
+            }
+            (cols, first_error)
+        });
+        if strict {
+            if let Some((a, e)) = first_error {
+                return Err(errors::contact(format!(
+                    "at cam angle {}°: {e}",
+                    camkin::human::human(a)
+                )));
+            }
+        }
+        cols.into_dict(py, false)
+    }
+
     /// travel() -> dict: the follower's rest (nearest the cam) and farthest positions over a
     /// revolution, their cam angles (degrees) and the stroke; positions in the file's length
     /// unit, an arm's in degrees. Keys carry the units.

@@ -192,3 +192,38 @@ def test_uneven_nodes_warn():
     d["cam"]["profile"]["points"] = [[5, 0], [4.9, 1], [0, 4], [-4, 0], [0, -4]]
     with pytest.warns(camkin.CamkinWarning, match="unevenly spaced"):
         camkin.Mechanism.from_dict(d)
+
+
+def test_contacts_equal_the_command_csv_bit_for_bit():
+    """Every contact of the 20/42 pair over a mesh cycle: the same rows as `camkin contacts`."""
+    path = EXAMPLES / "gear-pair-20-42.toml"
+    mech = camkin.Mechanism.from_toml(path)
+    r = mech.contacts(np.arange(0.0, 18.0, 0.5))
+    cli = csv_columns(run_cli("contacts", path, "--angles", "0:18:0.5"))
+    assert list(r) == list(cli), "the same columns in the same order"
+    for col, cells in cli.items():
+        if col == "error":
+            assert [("" if v is None else v) for v in r[col]] == cells, col
+        else:
+            same_cells(r[col], cells, col)
+    # two to four contacts at every angle, and each row holds at the ideal motion (no
+    # acceleration of either gear: gamma is zero)
+    _, counts = np.unique(r["angle_deg"], return_counts=True)
+    assert counts.min() >= 2 and counts.max() <= 4
+    assert np.all(np.abs(r["gamma_mm_s2"]) <= 1e-6)
+
+
+def test_contacts_of_a_one_contact_cam_and_a_refusal():
+    mech = camkin.Mechanism.from_toml(EXAMPLES / "paper.toml")
+    r = mech.contacts(10.0)
+    assert list(r["contact"]) == [0.0]
+    # the first contact's row gives the follower's acceleration: row_follower q̈ = gamma (the cam
+    # at constant speed)
+    a = mech.analyze(10.0)
+    q_dd = a["acceleration_cm_s2"]
+    assert abs(r["row_follower_cm_per_cm"][0] * q_dd - r["gamma_cm_s2"][0]) <= 1e-9 * abs(q_dd)
+    # 3.6 million angles of a gear pair: refused up front with the estimate
+    with pytest.raises(camkin.ResourceError, match="would take about"):
+        camkin.Mechanism.from_toml(EXAMPLES / "gear-pair-20-42.toml").contacts(
+            np.arange(0.0, 360.0, 1e-4)
+        )

@@ -6,7 +6,7 @@ use crate::args::{AngleList, AngleRange};
 use crate::output::{write_atomic, write_cells, TableFormat};
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
-use camkin::cam::{CamError, FollowerState, Mechanism};
+use camkin::cam::{CamError, FollowerState};
 use camkin::human::human;
 use camkin::table::{contact_cells, contact_columns, ContactRow, Units};
 use std::path::PathBuf;
@@ -37,17 +37,6 @@ pub struct ContactsArgs {
     pub large: bool,
 }
 
-/// Seconds per angle to look for the other contacts of a follower carrying a curve (measured:
-/// about 1 ms for the 20/42 gear pair on this project's 2-core machines), and of a named kind
-/// (one more global search).
-fn search_seconds(mech: &Mechanism) -> f64 {
-    if mech.follower().carried_profile().is_some() {
-        3e-3
-    } else {
-        mech.sweep_seconds_estimate(1).max(2e-6)
-    }
-}
-
 pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
     let loaded = load_mechanism(args.mechanism.as_ref())?;
     let mech = &loaded.mech;
@@ -55,8 +44,7 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
         (Some(list), _) => list.0.clone(),
         (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
     };
-    let seconds =
-        mech.sweep_seconds_estimate(angles.len()) + angles.len() as f64 * search_seconds(mech);
+    let seconds = mech.contacts_seconds_estimate(angles.len());
     if seconds > 30.0 && !args.large {
         return Err(Failure::Input(anyhow!(
             "{} cam angles would take about {} s to search for every contact; pass --large to run it anyway, or use fewer angles",
