@@ -490,6 +490,75 @@ impl PyMechanism {
         cols.into_dict(py, false)
     }
 
+    /// mesh(angles_deg, *, contiguous=None, strict=False, large=False) -> dict
+    ///
+    /// A gear pair (the cam's profile and the rotating follower's both ``involute-gear``) read as
+    /// gears at each driver angle (degrees; a number or a 1-D array): the columns of ``camkin
+    /// mesh`` as NumPy arrays (``driven_angle_deg``, ``speed_ratio``,
+    /// ``transmission_error_urad`` and its rates, ``driver_tooth``, ``pairs_in_contact``,
+    /// ``line_of_action_mm``, ``sliding_velocity_mm_s``, ``specific_sliding_driver``, …; for a
+    /// number, a dict of numbers), ``found`` = ``"jump"`` where another tooth pair takes over.
+    /// Not a gear pair: ``camkin.InputError``. A row that could not be computed has NaN and its
+    /// reason in ``error``; ``strict=True`` raises ``camkin.ContactError``.
+    #[pyo3(signature = (angles_deg, *, contiguous = None, strict = false, large = false))]
+    fn mesh<'py>(
+        &self,
+        py: Python<'py>,
+        angles_deg: &Bound<'py, PyAny>,
+        contiguous: Option<bool>,
+        strict: bool,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let mech = self.mech();
+        let pair = camkin::gears::GearPair::new(mech).map_err(|e| {
+            use camkin::gears::GearError;
+            let field = match e {
+                GearError::DriverNotGear => "cam.profile.kind",
+                GearError::TooClose { .. } => "follower.pivot",
+                GearError::BasePitch { .. } => "follower.profile.module",
+                _ => "follower.profile.kind",
+            };
+            errors::input(field, None, format!("not a gear pair: {e}"))
+        })?;
+        let (angles, scalar) = angles_from(py, angles_deg, "angles_deg")?;
+        self.check_work(angles.len(), large)?;
+        let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
+        let units = Units::plain(mech, self.built.length_unit);
+        let (cols, first_error) = py.detach(|| {
+            let results: Vec<_> = if contiguous {
+                let mut sweep = mech.sweep();
+                angles.iter().map(|a| sweep.step(a.to_radians())).collect()
+            } else {
+                angles
+                    .iter()
+                    .map(|a| mech.analyze(a.to_radians()))
+                    .collect()
+            };
+            let jumps = camkin::table::contact_jumps(mech, &results, contiguous);
+            let mut cols = Columns::new(camkin::table::mesh_columns(&units), angles.len());
+            let mut first_error = None;
+            for ((&a, r), &j) in angles.iter().zip(&results).zip(&jumps) {
+                let row = camkin::table::MeshRow::new(&pair, mech, a, r, j);
+                if first_error.is_none() {
+                    if let Some(e) = &row.error {
+                        first_error = Some((a, e.clone()));
+                    }
+                }
+                cols.push(camkin::table::mesh_cells(&row));
+            }
+            (cols, first_error)
+        });
+        if strict {
+            if let Some((a, e)) = first_error {
+                return Err(errors::contact(format!(
+                    "at driver angle {}°: {e}",
+                    camkin::human::human(a)
+                )));
+            }
+        }
+        cols.into_dict(py, scalar)
+    }
+
     /// travel() -> dict: the follower's rest (nearest the cam) and farthest positions over a
     /// revolution, their cam angles (degrees) and the stroke; positions in the file's length
     /// unit, an arm's in degrees. Keys carry the units.

@@ -227,3 +227,29 @@ def test_contacts_of_a_one_contact_cam_and_a_refusal():
         camkin.Mechanism.from_toml(EXAMPLES / "gear-pair-20-42.toml").contacts(
             np.arange(0.0, 360.0, 1e-4)
         )
+
+
+def test_mesh_equals_the_command_csv_bit_for_bit():
+    """A gear pair read as gears from Python: the rows of `camkin mesh`, to the last bit."""
+    for name in ("gear-pair-20-42.toml", "gear-pair-tip-relief.toml"):
+        path = EXAMPLES / name
+        mech = camkin.Mechanism.from_toml(path)
+        r = mech.mesh(np.arange(0.0, 36.0, 0.25))
+        cli = csv_columns(run_cli("mesh", path, "--angles", "0:36:0.25"))
+        assert list(r) == list(cli), "the same columns in the same order"
+        for col, cells in cli.items():
+            if col in ("driver_flank", "found", "error"):
+                assert [("" if v is None else v) for v in r[col]] == cells, col
+            elif col == "on_flanks":
+                assert [str(v).lower() for v in r[col]] == cells, col
+            else:
+                same_cells(r[col], cells, col)
+    # the ideal pair's ratio, z1/z2, at a single angle
+    one = camkin.Mechanism.from_toml(EXAMPLES / "gear-pair-20-42.toml").mesh(7.0)
+    assert abs(one["speed_ratio"] + 20 / 42) <= 1e-12
+
+
+def test_mesh_of_a_cam_is_refused_naming_the_field():
+    with pytest.raises(camkin.InputError) as e:
+        camkin.paper_cam().mesh(0.0)
+    assert e.value.field == "cam.profile.kind"
