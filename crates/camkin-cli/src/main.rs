@@ -33,7 +33,7 @@ enum Command {
     /// Every contact between cam and follower at cam angles, one row each, with its sliding
     /// rates, normal accelerations and acceleration constraint row, as CSV.
     #[command(
-        after_help = "Examples:\n  camkin contacts examples/gear-pair-20-42.toml --angles 0:18:0.5   # two or three tooth pairs at once\n  camkin contacts cam.toml --at 0,90 --format json\n\nThe first contact at each angle (contact = 0) is the follower's first touch; the others touch at\nthe same position within the touch tolerance. Each row holds row_cam·θ̈ + row_follower·q̈ = gamma.\nExit codes: 0 success, 1 internal failure, 2 bad input."
+        after_help = "Examples:\n  camkin contacts examples/gear-pair-20-42.toml --angles 0:18:0.5   # 3 or 4 contacts: both flanks touch without backlash\n  camkin contacts cam.toml --at 0,90 --format json\n\nThe first contact at each angle (contact = 0) is the follower's first touch; the others touch at\nthe same position within the touch tolerance. Each row holds row_cam·θ̈ + row_follower·q̈ = gamma.\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Contacts(contacts::ContactsArgs),
     /// The paper's study on its two built-in cams: CSV data, plots (SVG, PNG) and a summary.

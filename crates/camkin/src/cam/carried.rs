@@ -445,12 +445,12 @@ impl Mechanism {
     /// Newton on the tangency near each of `ties` (`(depth, q, cover)`, sorted here deepest
     /// first), one per place at least four sample spacings from `contact` and from the places
     /// tried before, `places` at most, started at the cover's edge the closing sense reaches
-    /// (with `both_edges`, also at its other edge, and when neither gives a tangency, from the
-    /// cam point deepest inside the follower near the sample). Each tangency found is brought to `t`'s configuration
-    /// modulo the curve's symmetry (the contact moved to the tooth that is there, as
-    /// `carried_report` does) and handed to `f` with its gain: how far before `t`, in the closing
-    /// sense, it stops the follower (length; negative: after). `f` returns `None` when it does not
-    /// take the tangency, else whether to stop.
+    /// (with `both_edges`, also at its other edge, and when neither gives a tangency there, from
+    /// the cam point deepest inside the follower near the sample). Each tangency found is
+    /// brought to `t`'s configuration modulo the curve's symmetry (the contact moved to the
+    /// tooth that is there, as `carried_report` does) and handed to `f` with its gain: how far
+    /// before `t`, in the closing sense, it stops the follower (length; negative: after). `f`
+    /// returns `None` when it does not take the tangency, else whether to stop.
     #[allow(clippy::too_many_arguments)]
     fn near_tangencies(
         &self,
