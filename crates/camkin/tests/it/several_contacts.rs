@@ -252,3 +252,74 @@ fn on_both_shoulders(named: &Mechanism, general: &Mechanism, d: Vec2) {
         assert_eq!(m.contacts(0.05).unwrap().len(), 1);
     }
 }
+
+/// Wherever the first touch passes from one shoulder of the notch to the other (found by
+/// bisection on which side the contact is), the follower touches both: two contacts there, one
+/// on each shoulder, both touching. For an offset roller, an oscillating roller, a flat face and
+/// a circle carried by an arm: the named kinds' search and the carried curve's.
+#[test]
+fn every_kind_touches_both_shoulders_where_its_contact_crosses_the_notch() {
+    let pivot = Point2::new(60.0, 60.0);
+    // the arm from the pivot to above the notch, turned counter-clockwise onto the cam
+    let (arm, phi0) = (
+        (Point2::new(0.0, 50.0) - pivot).norm(),
+        (-10.0f64).atan2(-60.0).rem_euclid(TAU),
+    );
+    let followers = [
+        Follower::TranslatingRoller {
+            direction: Vec2::new(0.0, 1.0),
+            offset: 3.0,
+            roller_radius: 10.0,
+        },
+        Follower::TranslatingFlat {
+            direction: Vec2::new(0.2, 1.0),
+        },
+        Follower::OscillatingRoller {
+            pivot,
+            arm_length: arm,
+            roller_radius: 10.0,
+            closing: Sense::Ccw,
+            initial_angle: phi0,
+        },
+        Follower::Rotating {
+            pivot,
+            closing: Sense::Ccw,
+            initial_angle: phi0,
+            profile: FollowerProfile(Arc::new(Circle::new(Point2::new(arm, 0.0), 10.0).unwrap())),
+        },
+    ];
+    for f in followers {
+        let what = format!("{f:?}");
+        let m = on_notch(f);
+        let period = 72.0;
+        let side = |theta: f64| {
+            let u = m.analyze(theta).unwrap().cam_param;
+            (u + period / 2.0).rem_euclid(period) > period / 2.0
+        };
+        // the crossing: a change of side between neighbouring angles, then bisection
+        let steps: Vec<f64> = (0..=120).map(|k| -0.6 + 0.01 * f64::from(k)).collect();
+        let k = steps
+            .windows(2)
+            .position(|w| side(w[0]) != side(w[1]))
+            .unwrap_or_else(|| panic!("{what}: the contact never crosses the notch"));
+        let (mut a, mut b) = (steps[k], steps[k + 1]);
+        let sa = side(a);
+        for _ in 0..60 {
+            let mid = 0.5 * (a + b);
+            if side(mid) == sa {
+                a = mid;
+            } else {
+                b = mid;
+            }
+        }
+        let s = m.analyze(a).unwrap();
+        let cs = m.contacts_at(&s).unwrap();
+        assert_eq!(cs.len(), 2, "{what} at θ = {a}: {cs:?}");
+        let sides: Vec<bool> = cs
+            .iter()
+            .map(|c| (c.cam_param + period / 2.0).rem_euclid(period) > period / 2.0)
+            .collect();
+        assert_ne!(sides[0], sides[1], "{what}: both on one shoulder");
+        assert!(cs.iter().all(|c| c.gap.abs() <= 1e-9 * 40.0), "{what}");
+    }
+}
