@@ -71,6 +71,21 @@ fn an_output_path_that_cannot_be_written_is_exit_2_in_every_command() {
             "--out".into(),
             bad.display().to_string(),
         ],
+        vec![
+            "mesh".into(),
+            "--at".into(),
+            "0".into(),
+            "-o".into(),
+            bad.join("x.csv").display().to_string(),
+        ],
+        vec![
+            "contacts".into(),
+            ex.join("gear-pair-20-42.toml").display().to_string(),
+            "--at".into(),
+            "0".into(),
+            "-o".into(),
+            bad.join("x.csv").display().to_string(),
+        ],
     ];
     for args in runs {
         camkin()
