@@ -398,12 +398,7 @@ impl PyMechanism {
             (cols, rows.jumps(), rows.jump_at().to_vec(), first_error)
         });
         if strict {
-            if let Some((a, e)) = first_error {
-                return Err(errors::contact(format!(
-                    "at cam angle {}°: {e}",
-                    camkin::human::human(a)
-                )));
-            }
+            raise_first(first_error, "cam")?;
         }
         if jumps > 0 {
             let at: Vec<String> = jump_at
@@ -457,16 +452,12 @@ impl PyMechanism {
         let mech = self.mech();
         let units = Units::plain(mech, self.built.length_unit);
         let (cols, first_error) = py.detach(|| {
-            let mut sweep = mech.sweep();
             let mut cols = Columns::new(camkin::table::contact_columns(&units), angles.len());
             let mut first_error = None;
-            for &a in &angles {
-                let theta = a.to_radians();
-                let state = if contiguous {
-                    sweep.step(theta)
-                } else {
-                    mech.analyze(theta)
-                };
+            for (&a, state) in angles
+                .iter()
+                .zip(mech.analyze_deg_each(&angles, contiguous))
+            {
                 let found = state.and_then(|s| mech.contacts_at(&s));
                 for r in camkin::table::ContactRow::of(a, &found) {
                     if first_error.is_none() {
@@ -480,12 +471,7 @@ impl PyMechanism {
             (cols, first_error)
         });
         if strict {
-            if let Some((a, e)) = first_error {
-                return Err(errors::contact(format!(
-                    "at cam angle {}°: {e}",
-                    camkin::human::human(a)
-                )));
-            }
+            raise_first(first_error, "cam")?;
         }
         cols.into_dict(py, false)
     }
@@ -525,15 +511,7 @@ impl PyMechanism {
         let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
         let units = Units::plain(mech, self.built.length_unit);
         let (cols, first_error) = py.detach(|| {
-            let results: Vec<_> = if contiguous {
-                let mut sweep = mech.sweep();
-                angles.iter().map(|a| sweep.step(a.to_radians())).collect()
-            } else {
-                angles
-                    .iter()
-                    .map(|a| mech.analyze(a.to_radians()))
-                    .collect()
-            };
+            let results = mech.analyze_deg_each(&angles, contiguous);
             let jumps = camkin::table::contact_jumps(mech, &results, contiguous);
             let mut cols = Columns::new(camkin::table::mesh_columns(&units), angles.len());
             let mut first_error = None;
@@ -549,12 +527,7 @@ impl PyMechanism {
             (cols, first_error)
         });
         if strict {
-            if let Some((a, e)) = first_error {
-                return Err(errors::contact(format!(
-                    "at driver angle {}°: {e}",
-                    camkin::human::human(a)
-                )));
-            }
+            raise_first(first_error, "driver")?;
         }
         cols.into_dict(py, scalar)
     }
@@ -698,4 +671,16 @@ pub fn _mechanism_from_json(text: &str, base_dir: &str, name: &str) -> PyResult<
 pub fn paper_cam() -> PyResult<PyMechanism> {
     let spec = parse_toml(PAPER_TOML, "paper.toml")?;
     PyMechanism::build(spec, PathBuf::from("."), "paper".into())
+}
+
+/// `camkin.ContactError` for the first row that could not be computed, `(angle, reason)`, if any
+/// (`what`: whose angle, "cam" or "driver").
+fn raise_first(first_error: Option<(f64, String)>, what: &str) -> PyResult<()> {
+    match first_error {
+        Some((a, e)) => Err(errors::contact(format!(
+            "at {what} angle {}°: {e}",
+            camkin::human::human(a)
+        ))),
+        None => Ok(()),
+    }
 }

@@ -6,7 +6,6 @@ use crate::args::{AngleList, AngleRange};
 use crate::output::{write_atomic, write_cells, TableFormat};
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
-use camkin::cam::{CamError, FollowerState};
 use camkin::human::human;
 use camkin::table::{contact_cells, contact_columns, ContactRow, Units};
 use std::path::PathBuf;
@@ -53,15 +52,7 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
         )));
     }
     let contiguous = args.at.is_none();
-    let states: Vec<Result<FollowerState, CamError>> = if contiguous {
-        let mut sweep = mech.sweep();
-        angles.iter().map(|a| sweep.step(a.to_radians())).collect()
-    } else {
-        angles
-            .iter()
-            .map(|a| mech.analyze(a.to_radians()))
-            .collect()
-    };
+    let states = mech.analyze_deg_each(&angles, contiguous);
     let rows: Vec<ContactRow> = angles
         .iter()
         .zip(&states)

@@ -8,7 +8,6 @@ use crate::mechfile;
 use crate::output::{write_atomic, write_cells, TableFormat};
 use crate::{load_mechanism, Failure, Loaded};
 use anyhow::{anyhow, Context};
-use camkin::cam::{CamError, FollowerState};
 use camkin::gears::GearPair;
 use camkin::human::human;
 use camkin::spec::LengthUnit;
@@ -107,15 +106,7 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
     }
     crate::check_sweep_time(mech, angles.len(), 1, args.large)?;
     let contiguous = args.at.is_none();
-    let results: Vec<Result<FollowerState, CamError>> = if contiguous {
-        let mut sweep = mech.sweep();
-        angles.iter().map(|a| sweep.step(a.to_radians())).collect()
-    } else {
-        angles
-            .iter()
-            .map(|a| mech.analyze(a.to_radians()))
-            .collect()
-    };
+    let results = mech.analyze_deg_each(&angles, contiguous);
     let jumps = contact_jumps(mech, &results, contiguous);
     let rows: Vec<MeshRow> = angles
         .iter()

@@ -10,7 +10,7 @@
 //! Φ_θ θ̈ + Φ_q q̈ = γ        Φ_θ = ±Φ_θA,  Φ_q = Φ_pB·d (slide) or Φ_θB (pivot)
 //! ```
 //!
-//! with `Φ_θA`, `Φ_pB`, `Φ_θB` the entries of [`ContactKinematics::phi_q`] for the cam's and the
+//! with `Φ_θA`, `Φ_pB`, `Φ_θB` the entries of [`ContactKinematics::phi_q`](crate::contact::ContactKinematics::phi_q) for the cam's and the
 //! follower's body coordinates. The first contact's row is the one the follower's acceleration
 //! is solved from; another contact's row holds at the same motion only if the two contacts agree
 //! (ideal involutes do; a worn tooth would not): its [`Contact::residual`] says by how much, and
@@ -19,7 +19,7 @@
 use super::follower::Kind as _;
 use super::{CamError, FollowerState, Joint, Mechanism, Touch};
 use crate::body::{BodyState, CurveInFrame};
-use crate::contact::{ContactKinematics, NormalAcceleration, Pairing};
+use crate::contact::NormalAcceleration;
 use crate::geometry::{wrap_angle_near, Frame, Point2, UnitVec2};
 
 /// One contact between the cam and the follower at an instant. World frame; lengths in the
@@ -152,31 +152,10 @@ impl Mechanism {
         s: &FollowerState,
     ) -> Result<Contact, CamError> {
         let g = &self.geometry;
-        let angle_deg = theta.to_degrees();
         let ea = frame.derivs_to_world(&self.cam.profile.eval(t.u));
-        let c = ea.p;
-        let nu = ea.as_derivs().normal();
+        let (c, nu) = (ea.p, ea.as_derivs().normal());
         let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
-        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c, t.v);
-        let pairing = Pairing {
-            u_a: t.u,
-            u_b,
-            point_a: c,
-            point_b: eb.p,
-            normal: UnitVec2::new_unchecked(nu),
-            gap: nu.dot(&(c - eb.p)),
-            iterations: 0,
-        };
-        let k = ContactKinematics::from_geometry(
-            cam,
-            &ea,
-            &body_b,
-            &eb,
-            g.is_knife(),
-            &pairing,
-            self.options.conformal_tolerance,
-        )
-        .map_err(|source| CamError::Contact { angle_deg, source })?;
+        let (u_b, k) = self.pair_kinematics(theta, cam, &ea, &body_b, *t)?;
         let row_cam = k.phi_q[2] * self.cam.direction.sign();
         let row_follower = g.joint.coordinate_coefficient(&k.phi_q);
         Ok(Contact {

@@ -71,26 +71,7 @@ impl Mechanism {
         }
         let qd = nu.dot(&cam.velocity_at(c)) / den;
         let body_b = g.joint.body(touch.q, qd, 0.0);
-        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c, touch.v);
-        let pairing = Pairing {
-            u_a: touch.u,
-            u_b,
-            point_a: c,
-            point_b: eb.p,
-            normal: UnitVec2::new_unchecked(nu),
-            gap: nu.dot(&(c - eb.p)),
-            iterations: 0,
-        };
-        let k = ContactKinematics::from_geometry(
-            cam,
-            &ea,
-            &body_b,
-            &eb,
-            g.is_knife(),
-            &pairing,
-            self.options.conformal_tolerance,
-        )
-        .map_err(|source| CamError::Contact { angle_deg, source })?;
+        let (u_b, k) = self.pair_kinematics(theta, cam, &ea, &body_b, touch)?;
         // acceleration constraint Φ_q q̈ = γ (eq. 11), cam accelerations known
         let phi = &k.phi_q;
         let known = phi[2] * cam.alpha;
@@ -106,6 +87,47 @@ impl Mechanism {
             u_b,
             k,
         })
+    }
+
+    /// The contact method's kinematics (eqs. 5, 6, 1, 2, 11) at the touch `t`, the cam point
+    /// `ea` (world) paired with the follower's curve on `body_b`: the follower curve's parameter
+    /// there and the kinematics.
+    #[inline]
+    pub(crate) fn pair_kinematics(
+        &self,
+        theta: f64,
+        cam: &BodyState,
+        ea: &WorldDerivs,
+        body_b: &BodyState,
+        t: Touch,
+    ) -> Result<(f64, ContactKinematics), CamError> {
+        let g = &self.geometry;
+        let c = ea.p;
+        let nu = ea.as_derivs().normal();
+        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c, t.v);
+        let pairing = Pairing {
+            u_a: t.u,
+            u_b,
+            point_a: c,
+            point_b: eb.p,
+            normal: UnitVec2::new_unchecked(nu),
+            gap: nu.dot(&(c - eb.p)),
+            iterations: 0,
+        };
+        let k = ContactKinematics::from_geometry(
+            cam,
+            ea,
+            body_b,
+            &eb,
+            g.is_knife(),
+            &pairing,
+            self.options.conformal_tolerance,
+        )
+        .map_err(|source| CamError::Contact {
+            angle_deg: theta.to_degrees(),
+            source,
+        })?;
+        Ok((u_b, k))
     }
 
     pub(crate) fn kinematics(

@@ -282,6 +282,27 @@ impl Mechanism {
         Sweep::new(self)
     }
 
+    /// The states at the cam angles `angles_deg` (degrees): a warm-started [`Sweep`] when
+    /// `contiguous` (the angles trace the motion), else a cold query at each.
+    pub fn analyze_deg_each(
+        &self,
+        angles_deg: &[f64],
+        contiguous: bool,
+    ) -> Vec<Result<FollowerState, CamError>> {
+        if contiguous {
+            let mut sweep = self.sweep();
+            angles_deg
+                .iter()
+                .map(|a| sweep.step(a.to_radians()))
+                .collect()
+        } else {
+            angles_deg
+                .iter()
+                .map(|a| self.analyze(a.to_radians()))
+                .collect()
+        }
+    }
+
     /// Analyses every angle of `thetas` (rad) in order with a warm-started [`Sweep`].
     pub fn analyze_all(&self, thetas: &[f64]) -> Vec<Result<FollowerState, CamError>> {
         let mut s = self.sweep();
