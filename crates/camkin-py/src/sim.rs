@@ -17,6 +17,7 @@ fn dyn_err(e: DynamicsError) -> PyErr {
         DynamicsError::Invalid { .. } | DynamicsError::StepTooLong { .. } => {
             errors::input("dynamics", None, e.to_string())
         }
+        DynamicsError::FormClosed => errors::input("follower.conjugate", None, e.to_string()),
         _ => errors::contact(e.to_string()),
     }
 }

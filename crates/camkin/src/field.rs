@@ -18,6 +18,8 @@ pub enum Field {
     Follower(FollowerField),
     /// a field of `[follower.profile]` (the curve a general follower carries)
     FollowerProfile(ProfileField),
+    /// a field of `[follower.conjugate]` (the second curve of a form-closed follower)
+    FollowerConjugate(ProfileField),
     /// a field of `[dynamics]`
     Dynamics(DynamicsField),
 }
@@ -167,6 +169,7 @@ impl Field {
             Field::Profile(_) => Field::Profile(ProfileField::Table),
             Field::Follower(_) => Field::Follower(FollowerField::Table),
             Field::FollowerProfile(_) => Field::FollowerProfile(ProfileField::Table),
+            Field::FollowerConjugate(_) => Field::FollowerConjugate(ProfileField::Table),
             Field::Dynamics(_) => Field::Dynamics(DynamicsField::Table),
         }
     }
@@ -183,11 +186,11 @@ impl Field {
                     p.push(Name(n));
                 }
             }
-            Field::Profile(f) | Field::FollowerProfile(f) => {
-                p.extend(if matches!(self, Field::Profile(_)) {
-                    [Name("cam"), Name("profile")]
-                } else {
-                    [Name("follower"), Name("profile")]
+            Field::Profile(f) | Field::FollowerProfile(f) | Field::FollowerConjugate(f) => {
+                p.extend(match self {
+                    Field::Profile(_) => [Name("cam"), Name("profile")],
+                    Field::FollowerProfile(_) => [Name("follower"), Name("profile")],
+                    _ => [Name("follower"), Name("conjugate")],
                 });
                 match f {
                     ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),

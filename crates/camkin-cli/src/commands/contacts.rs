@@ -96,10 +96,13 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
                 > 1
         })
         .count();
+    let plural = |n: usize| if n == 1 { "" } else { "s" };
+    let (found, n) = (rows.len() - failed, angles.len());
     eprintln!(
-        "camkin: {} contacts at {} cam angles; {several} angles with more than one contact, at most {most} at once",
-        rows.len() - failed,
-        angles.len()
+        "camkin: {found} contact{} at {n} cam angle{}; {several} angle{} with more than one contact, at most {most} at once",
+        plural(found),
+        plural(n),
+        plural(several),
     );
     if failed > 0 {
         eprintln!(

@@ -53,6 +53,7 @@ fn dyn_err(e: DynamicsError) -> Failure {
         DynamicsError::Invalid { .. }
         | DynamicsError::Kinematics { .. }
         | DynamicsError::ContactJumps { .. }
+        | DynamicsError::FormClosed
         | DynamicsError::StepTooLong { .. } => Failure::Input(anyhow!("{e}")),
         _ => Failure::Internal(anyhow!("{e}")),
     }

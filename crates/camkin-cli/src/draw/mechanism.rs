@@ -98,13 +98,19 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
     let Some(s) = state else { return shapes };
     let c = s.contact_world;
     follower_shapes(mech, s.position, c, size, &mut shapes);
+    // every contact: the first touch, the next tooth pair, a conjugate's second curve
+    let others = mech.contacts_at(s).unwrap_or_default();
     let nl = 0.35 * size;
-    shapes.push(segment(c - nl * *s.normal, c + nl * *s.normal, NORMAL, 1));
-    shapes.push(Shape::Dot {
-        p: c,
-        color: CONTACT,
-        px: 5,
-    });
+    let points =
+        std::iter::once((c, s.normal)).chain(others.iter().skip(1).map(|k| (k.point, k.normal)));
+    for (p, n) in points {
+        shapes.push(segment(p - nl * *n, p + nl * *n, NORMAL, 1));
+        shapes.push(Shape::Dot {
+            p,
+            color: CONTACT,
+            px: 5,
+        });
+    }
     shapes
 }
 
@@ -151,33 +157,7 @@ pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &
             (back, 0.0)
         }
         FollowerCurve::Carried(curve) => {
-            // the carried curve itself: a closed one whole, an open one (a line) near the contact
-            use camkin::curve::Domain;
-            let (lo, hi, closed) = match curve.domain() {
-                Domain::Periodic { period } => (0.0, period, true),
-                Domain::Interval { min, max } => {
-                    let local = pose.to_body(c);
-                    // the parameter nearest the contact, by samples of a generous stretch
-                    let (a, b) = (min.max(-1e3 * size), max.min(1e3 * size));
-                    let near = (0..=2000)
-                        .map(|k| a + (b - a) * f64::from(k) / 2000.0)
-                        .min_by(|x, y| {
-                            let dx = (curve.position(*x) - local).norm();
-                            let dy = (curve.position(*y) - local).norm();
-                            dx.total_cmp(&dy)
-                        })
-                        .unwrap_or(0.0);
-                    let span = 0.6 * size / curve.eval(near).metric().max(f64::MIN_POSITIVE);
-                    ((near - span).max(min), (near + span).min(max), false)
-                }
-                Domain::Point => (0.0, 0.0, false),
-            };
-            let n = 4000;
-            let pts: Vec<Point2> = (0..=n)
-                .map(|k| {
-                    pose.to_world(curve.position(lo + (hi - lo) * f64::from(k) / f64::from(n)))
-                })
-                .collect();
+            let (pts, closed) = curve_points(curve.as_ref(), &pose, c, size);
             shapes.push(Shape::Polyline {
                 pts,
                 color: FOLLOWER,
@@ -206,6 +186,94 @@ pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &
                 width: 2,
             });
         }
+        _ => {}
+    }
+    if let Some(curve) = mech.conjugate_curve() {
+        conjugate_shapes(mech, curve.as_ref(), &pose, attach, size, shapes);
+    }
+}
+
+/// A curve of the follower at `pose`: a closed one whole, an open one (a line) over a stretch
+/// either side of its point nearest `near` (world); the points and whether they close.
+fn curve_points(
+    curve: &dyn camkin::curve::Curve,
+    pose: &camkin::body::Pose,
+    near: Point2,
+    size: f64,
+) -> (Vec<Point2>, bool) {
+    use camkin::curve::Domain;
+    let (lo, hi, closed) = match curve.domain() {
+        Domain::Periodic { period } => (0.0, period, true),
+        Domain::Interval { min, max } => {
+            let local = pose.to_body(near);
+            // the parameter nearest the point, by samples of a generous stretch
+            let (a, b) = (min.max(-1e3 * size), max.min(1e3 * size));
+            let near = (0..=2000)
+                .map(|k| a + (b - a) * f64::from(k) / 2000.0)
+                .min_by(|x, y| {
+                    let dx = (curve.position(*x) - local).norm();
+                    let dy = (curve.position(*y) - local).norm();
+                    dx.total_cmp(&dy)
+                })
+                .unwrap_or(0.0);
+            let span = 0.6 * size / curve.eval(near).metric().max(f64::MIN_POSITIVE);
+            ((near - span).max(min), (near + span).min(max), false)
+        }
+        Domain::Point => (0.0, 0.0, false),
+    };
+    let n = 4000;
+    let pts = (0..=n)
+        .map(|k| pose.to_world(curve.position(lo + (hi - lo) * f64::from(k) / f64::from(n))))
+        .collect();
+    (pts, closed)
+}
+
+/// A conjugate follower's second curve at `pose` and what ties it to the first, attached at
+/// `attach`: for a slide, a yoke beside the cam; for an arm, a second arm from the pivot.
+fn conjugate_shapes(
+    mech: &Mechanism,
+    curve: &dyn camkin::curve::Curve,
+    pose: &camkin::body::Pose,
+    attach: Point2,
+    size: f64,
+    shapes: &mut Vec<Shape>,
+) {
+    let axis = mech.cam().pivot();
+    let (pts, closed) = curve_points(curve, pose, axis, size);
+    // a closed curve (a roller) is held at its middle, an open one at its point nearest the cam
+    let hold = if closed {
+        let sum = pts.iter().fold(Vec2::zeros(), |acc, p| acc + p.coords);
+        Point2::from(sum / pts.len() as f64)
+    } else {
+        pts.iter()
+            .copied()
+            .min_by(|a, b| (a - axis).norm().total_cmp(&(b - axis).norm()))
+            .unwrap_or(pose.origin)
+    };
+    shapes.push(Shape::Polyline {
+        pts,
+        color: FOLLOWER,
+        width: 2,
+        closed,
+    });
+    match mech.follower_joint() {
+        Joint::Translating { direction, .. } => {
+            // out to the side, past the cam, and back in
+            let side = rot90(*direction);
+            let out = (axis - attach).dot(&side) + 1.3 * size;
+            shapes.push(Shape::Polyline {
+                pts: vec![
+                    attach,
+                    attach + out * side,
+                    hold + ((attach - hold).dot(&side) + out) * side,
+                    hold,
+                ],
+                color: FOLLOWER,
+                width: 3,
+                closed: false,
+            });
+        }
+        Joint::Rotating { pivot, .. } => shapes.push(segment(pivot, hold, FOLLOWER, 3)),
         _ => {}
     }
 }

@@ -38,7 +38,8 @@ pub struct Contact {
     /// the common normal `ν_A` (the cam profile's left normal), world frame
     pub normal: UnitVec2,
     /// how far the follower would move in its closing sense before this contact alone touches,
-    /// length (zero within the touch tolerance: 0 for the first contact)
+    /// length (zero within the touch tolerance: 0 for the first contact); for the second curve
+    /// of a conjugate follower, its play (negative: it cuts into the cam)
     pub gap: f64,
     /// `ν_A·(v_A^P − v_B^P)` with the follower's velocity, length/s: zero where the motion keeps
     /// this contact closed
@@ -61,6 +62,9 @@ pub struct Contact {
     /// `Φ_θ θ̈ + Φ_q q̈ − γ` at the motion of the state, length/s² (zero for the first contact;
     /// for another, zero where the contacts agree)
     pub residual: f64,
+    /// the contact is the second curve's of a conjugate follower ([`Mechanism::with_conjugate`]);
+    /// `follower_param` is then that curve's parameter
+    pub conjugate: bool,
 }
 
 impl Mechanism {
@@ -83,7 +87,9 @@ impl Mechanism {
     /// [`Sweep`](super::Sweep)): its own contact first, then the other tangencies within the
     /// touch tolerance of its position, found from the same starts as the first-touch search (the
     /// local maxima of the sampled first-touch function; a carried curve's covered cam samples)
-    /// and refined by Newton. Each has its kinematics at the state's velocity and acceleration.
+    /// and refined by Newton, then a conjugate follower's second curve where its play is within
+    /// the touch tolerance or negative. Each has its kinematics at the state's velocity and
+    /// acceleration.
     pub fn contacts_at(&self, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
         let theta = s.cam_angle;
         let cam = self.cam.state(theta);
@@ -110,6 +116,9 @@ impl Mechanism {
             places.push(x);
             out.push(self.contact(theta, &cam, &frame, t, s)?);
         }
+        if let Some(c) = self.conjugate_contact(s)? {
+            out.push(c);
+        }
         Ok(out)
     }
 
@@ -133,7 +142,7 @@ impl Mechanism {
     }
 
     /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
-    fn ahead(&self, q: f64, other: f64) -> f64 {
+    pub(super) fn ahead(&self, q: f64, other: f64) -> f64 {
         let d = self.oriented(q) - self.oriented(other);
         match self.geometry.joint {
             Joint::Rotating { .. } => wrap_angle_near(d, 0.0),
@@ -143,7 +152,7 @@ impl Mechanism {
 
     /// The kinematics of the contact `t` with the follower at the state `s`'s position,
     /// velocity and acceleration.
-    fn contact(
+    pub(super) fn contact(
         &self,
         theta: f64,
         cam: &BodyState,
@@ -175,6 +184,7 @@ impl Mechanism {
             gamma: k.gamma,
             residual: row_cam * self.cam.angular_acceleration + row_follower * s.acceleration
                 - k.gamma,
+            conjugate: false,
         })
     }
 }

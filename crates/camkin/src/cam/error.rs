@@ -103,6 +103,14 @@ pub enum CamError {
         /// the contact error
         source: ContactError,
     },
+    /// A conjugate follower's second curve cannot be used.
+    #[error("{field}: {reason}")]
+    Conjugate {
+        /// `follower.conjugate`
+        field: Field,
+        /// why not
+        reason: String,
+    },
 }
 
 /// Why the first-touch search stopped without an answer.

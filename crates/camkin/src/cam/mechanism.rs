@@ -64,6 +64,7 @@ impl Mechanism {
             cusps,
             breakpoints,
             corners,
+            conjugate: None,
         };
         m.set_options(options);
         Ok(m)

@@ -15,6 +15,7 @@
 
 mod carried;
 mod checks;
+mod conjugate;
 mod contacts;
 mod corners;
 mod derivatives;
@@ -36,6 +37,7 @@ pub mod synthesis;
 mod travel;
 
 pub use checks::{DesignChecks, RoundTrip};
+pub use conjugate::ConjugateSweep;
 pub use contacts::Contact;
 pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGTH_RANGE};
@@ -258,4 +260,6 @@ pub struct Mechanism {
     breakpoints: Vec<f64>,
     /// the profile's corners and the samples to measure a depth inside the cam from
     corners: std::sync::Arc<corners::Corners>,
+    /// a form-closed follower's second curve
+    conjugate: Option<Arc<conjugate::Conjugate>>,
 }

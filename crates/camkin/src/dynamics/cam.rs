@@ -198,6 +198,9 @@ impl Simulation {
                 reason: "must be from 0 to 1",
             });
         }
+        if mech.is_conjugate() {
+            return Err(DynamicsError::FormClosed);
+        }
         let jumps = mech.jump_angles(0.25);
         if !jumps.is_empty() {
             return Err(DynamicsError::ContactJumps { angles_deg: jumps });

@@ -71,6 +71,9 @@ pub struct Forces<'a> {
 impl<'a> Forces<'a> {
     /// The kinetostatics of `mech` (lengths in metres) with `params`.
     pub fn new(mech: &'a Mechanism, params: FollowerDynamics) -> Result<Self, DynamicsError> {
+        if mech.is_conjugate() {
+            return Err(DynamicsError::FormClosed);
+        }
         let travel = mech
             .travel()
             .map_err(|source| DynamicsError::Kinematics { source })?;

@@ -83,6 +83,11 @@ pub enum DynamicsError {
         /// cam angles (degrees, in [0, 360)) of the jumps, sampled every 0.25°
         angles_deg: Vec<f64>,
     },
+    /// The follower is conjugate (form-closed, [`crate::cam::Mechanism::with_conjugate`]): its
+    /// second curve takes the load where the first would lift off, which the dynamics (one
+    /// contact, held on by a spring) does not model.
+    #[error("follower.conjugate: the follower is form-closed (its second curve takes the load where the first would lift off) and the dynamics models one contact held on by a spring: not modelled; `camkin analyze` and `camkin contacts` give its kinematics")]
+    FormClosed,
     /// A time step too long for the follower's fastest rate (the damping's `c/m` or the spring's
     /// `√(k/m)`): the explicit integration would be unstable.
     #[error("{field} = {}: too stiff for the time step {} s: the follower's fastest rate is {} /s, so the step must be at most {} s", crate::human::human(*.value), crate::human::human(*.step), crate::human::human(*.rate), crate::human::human(*.max_step))]

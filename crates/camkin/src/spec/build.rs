@@ -211,6 +211,7 @@ impl From<CamError> for SpecError {
                 value: crate::human::human(value),
                 reason,
             },
+            CamError::Conjugate { field, reason } => SpecError::Rule { field, reason },
             CamError::Cusp { .. } | CamError::NoArea { .. } => SpecError::Rule {
                 field: Field::Profile(ProfileField::Table),
                 reason: e.to_string(),
@@ -379,7 +380,17 @@ impl MechanismSpec {
             cam_obj.set_synthesis(s);
         }
         let oscillating = follower.is_oscillating();
-        let mechanism = Mechanism::new(cam_obj, follower)?;
+        let mut mechanism = Mechanism::new(cam_obj, follower)?;
+        if let Some(c) = &self.follower.conjugate {
+            let (curve, _) = c.build(
+                scale,
+                &options.base_dir,
+                options.confine,
+                super::profile::Place::Conjugate,
+                &mut warnings,
+            )?;
+            mechanism = mechanism.with_conjugate(curve)?;
+        }
         let dynamics = self
             .dynamics
             .as_ref()

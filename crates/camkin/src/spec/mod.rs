@@ -332,6 +332,14 @@ pub struct FollowerSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub profile: Option<Box<ProfileSpec>>,
+    /// a second curve on the follower, in the same frame, that touches the cam from the other
+    /// side (a conjugate, form-closed follower: the second roller of a yoke or a bell crank);
+    /// the first curve sets the position, this one's play is reported
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub conjugate: Option<Box<ProfileSpec>>,
 }
 
 /// `[dynamics]`: the follower's mass properties, spring and damper, SI units.

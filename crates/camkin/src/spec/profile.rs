@@ -131,6 +131,8 @@ type BuiltProfile = (
 pub(super) enum Place<'a> {
     Cam(&'a Follower, Sense),
     Follower,
+    /// a form-closed follower's second curve
+    Conjugate,
 }
 
 impl ProfileSpec {
@@ -146,6 +148,7 @@ impl ProfileSpec {
         let f: fn(ProfileField) -> Field = match place {
             Place::Cam(..) => Field::Profile,
             Place::Follower => Field::FollowerProfile,
+            Place::Conjugate => Field::FollowerConjugate,
         };
         let kind_field = f(P::Kind);
         let kind = self.kind.as_str();
@@ -290,7 +293,7 @@ impl ProfileSpec {
                 Arc::new(self.gear(scale, f)?)
             }
             "line" => {
-                let Place::Follower = place else {
+                let (Place::Follower | Place::Conjugate) = place else {
                     return Err(SpecError::Rule {
                         field: kind_field,
                         reason: "a cam's profile is a closed curve: a line can only be carried by a follower".into(),

@@ -62,6 +62,9 @@ pub fn analysis_columns(u: &Units) -> Vec<String> {
         c.push(name.into());
     }
     c.push(format!("radius_of_curvature_{l}"));
+    if u.conjugate {
+        c.push(format!("conjugate_play_{}", u.motion_key(0)));
+    }
     for name in ["at_node", "found", "error"] {
         c.push(name.into());
     }
@@ -76,7 +79,7 @@ pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
         _ => [None; 4],
     };
     let lift = r.lift.map(|l| u.coord_value(l));
-    vec![
+    let mut cells = vec![
         n(Some(r.angle_deg)),
         n(m[0]),
         n(lift),
@@ -99,10 +102,16 @@ pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
         n(r.sigma),
         n(r.pressure_angle_deg),
         n(r.radius_of_curvature),
+    ];
+    if u.conjugate {
+        cells.push(n(r.conjugate_play.map(|p| u.coord_value(p))));
+    }
+    cells.extend([
         Cell::Int(r.at_node),
         Cell::Text(r.found.map(|f| f.name().to_string())),
         Cell::Text(r.error.clone()),
-    ]
+    ]);
+    cells
 }
 
 /// The column names of a simulation's time series (`camkin simulate`), each with its unit.

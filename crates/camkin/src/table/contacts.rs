@@ -16,6 +16,9 @@ pub struct ContactRow {
     pub angle_deg: f64,
     /// the contact's number at this angle: 0 for the follower's first touch
     pub contact: Option<u32>,
+    /// which curve of the follower touches: `follower` (its own), `conjugate` (a form-closed
+    /// follower's second curve)
+    pub curve: Option<&'static str>,
     /// the cam-profile parameter at the contact
     pub cam_param: Option<f64>,
     /// the follower curve's parameter at the contact
@@ -29,7 +32,8 @@ pub struct ContactRow {
     /// the common normal's y component
     pub normal_y: Option<f64>,
     /// how far the follower would move in its closing sense before this contact alone
-    /// touches, length (zero within the touch tolerance)
+    /// touches, length (zero within the touch tolerance); a conjugate curve's play (negative:
+    /// interference)
     pub gap: Option<f64>,
     /// `ν·(v_A − v_B)` at the follower's motion, length/s (zero where the motion keeps the
     /// contact closed)
@@ -64,6 +68,7 @@ impl ContactRow {
                 .map(|(i, c)| Self {
                     angle_deg,
                     contact: u32::try_from(i).ok(),
+                    curve: Some(if c.conjugate { "conjugate" } else { "follower" }),
                     cam_param: Some(c.cam_param),
                     follower_param: Some(c.follower_param),
                     x: Some(c.point.x),
@@ -99,6 +104,7 @@ pub fn contact_columns(u: &Units) -> Vec<String> {
     vec![
         "angle_deg".into(),
         "contact".into(),
+        "curve".into(),
         "cam_param".into(),
         "follower_param".into(),
         format!("x_{l}"),
@@ -125,6 +131,7 @@ pub fn contact_cells(r: &ContactRow) -> Vec<Cell> {
     vec![
         n(Some(r.angle_deg)),
         Cell::Count(r.contact),
+        Cell::Text(r.curve.map(str::to_string)),
         n(r.cam_param),
         n(r.follower_param),
         n(r.x),

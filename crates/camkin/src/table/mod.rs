@@ -110,6 +110,9 @@ pub struct AnalysisRow {
     pub pressure_angle_deg: Option<f64>,
     /// the cam profile's radius of curvature at the contact, length (∞ on a straight stretch)
     pub radius_of_curvature: Option<f64>,
+    /// a conjugate follower's play: how far it can move against its closing sense before its
+    /// second curve touches (negative: interference), as `position` ([`Mechanism::conjugate_play`])
+    pub conjugate_play: Option<f64>,
     /// 1 when the contact is at a profile node (where the jerk jumps), else 0
     pub at_node: Option<u8>,
     /// how the contact was found
@@ -145,6 +148,7 @@ impl AnalysisRow {
                 sigma: Some(s.sigma),
                 pressure_angle_deg: Some(s.pressure_angle().to_degrees()),
                 radius_of_curvature: Some(s.radius_of_curvature),
+                conjugate_play: None,
                 at_node: Some(u8::from(s.at_breakpoint)),
                 found: Some(FoundBy::of(s.found, jump)),
                 error: None,

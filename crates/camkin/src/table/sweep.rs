@@ -19,6 +19,7 @@ pub struct AnalysisSweep<'a> {
     contiguous: bool,
     chunk: usize,
     sweep: Sweep<'a>,
+    conjugate: Option<crate::cam::ConjugateSweep<'a>>,
     stretches: Vec<(f64, f64)>,
     travel: Result<Travel, CamError>,
     prev: Option<Result<FollowerState, CamError>>,
@@ -61,6 +62,7 @@ impl<'a> AnalysisSweep<'a> {
             contiguous,
             chunk: chunk.max(1),
             sweep: mech.sweep(),
+            conjugate: mech.conjugate_sweep(),
             stretches,
             travel,
             prev: None,
@@ -128,7 +130,16 @@ impl Iterator for AnalysisSweep<'_> {
                     self.jump_at.push(self.start + k);
                 }
             }
-            let row = AnalysisRow::new(a, r, j);
+            let mut row = AnalysisRow::new(a, r, j);
+            if let (Some(c), Ok(s)) = (self.conjugate.as_mut(), r) {
+                match c.play(s) {
+                    Ok(p) => row.conjugate_play = Some(p),
+                    Err(e) => {
+                        row.error = Some(format!("the conjugate curve: {e}"));
+                        self.failed += 1;
+                    }
+                }
+            }
             rows.push(match &self.travel {
                 Ok(t) => row.with_lift(t),
                 Err(_) => row,

@@ -78,6 +78,8 @@ pub struct Units {
     pub per: Per,
     /// the follower coordinate is an angle
     pub oscillating: bool,
+    /// the follower is conjugate (form-closed): the analysis has a play column
+    pub conjugate: bool,
     /// cam speed, rad/s (for derivatives per degree)
     omega: f64,
     /// cam angular acceleration, rad/s²
@@ -95,6 +97,7 @@ impl Units {
             angle,
             per,
             oscillating: mech.follower().is_oscillating(),
+            conjugate: mech.is_conjugate(),
             omega: mech.cam().speed(),
             alpha: mech.cam().angular_acceleration(),
         }
