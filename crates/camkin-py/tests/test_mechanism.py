@@ -253,3 +253,21 @@ def test_mesh_of_a_cam_is_refused_naming_the_field():
     with pytest.raises(camkin.InputError) as e:
         camkin.paper_cam().mesh(0.0)
     assert e.value.field == "cam.profile.kind"
+
+
+def test_a_conjugate_follower_from_python():
+    """The constant-diameter cam: the second roller's play column is zero, both rollers are
+    contacts (named in the `curve` column), and the simulation refuses a form-closed follower
+    naming the table."""
+    path = EXAMPLES / "conjugate-yoke.toml"
+    mech = camkin.Mechanism.from_toml(path)
+    a = mech.analyze(np.arange(0.0, 360.0, 2.5))
+    assert np.all(np.abs(a["conjugate_play_mm"]) <= 1e-9)
+    c = mech.contacts([10.0, 200.0])
+    assert list(c["curve"]) == ["follower", "conjugate"] * 2
+    d = mech.to_dict()
+    assert d["follower"]["conjugate"]["kind"] == "circle"
+    d["dynamics"] = {"mass": 0.5, "spring_stiffness": 1000.0, "spring_preload": 10.0}
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_dict(d).simulate()
+    assert e.value.field == "follower.conjugate"

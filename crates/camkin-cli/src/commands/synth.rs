@@ -294,6 +294,9 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             h(over[over.len() - 1])
         )
     };
+    if let Some(c) = checks.conjugate_play {
+        report += &conjugate_line(&c, mech.follower().is_oscillating(), len);
+    }
     if failed > 0 {
         report += &format!("{failed} angles could not be analysed\n");
     }
@@ -320,4 +323,41 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             out("checks.txt").display()
         )))
     }
+}
+
+/// The conjugate check's line: the play's range (an arm's in degrees) and what it means.
+fn conjugate_line(c: &camkin::cam::ConjugatePlay, arm: bool, len: &str) -> String {
+    let h = camkin::human::human;
+    let (k, unit) = if arm {
+        (1f64.to_degrees(), "°")
+    } else {
+        (1.0, len)
+    };
+    let v = |x: f64| format!("{} {unit}", h(k * x)).replace(" °", "°");
+    let at = |x: f64| h((x * 100.0).round() / 100.0);
+    let (lo, hi) = (c.min, c.max);
+    let range = format!(
+        "from {} at {}° to {} at {}°",
+        v(lo.0),
+        at(lo.1),
+        v(hi.0),
+        at(hi.1)
+    );
+    let line = if c.failed > 0 {
+        format!("{range}; {} angles could not be computed", c.failed)
+    } else if lo.0 < -c.tolerance && hi.0 - lo.0 <= c.tolerance {
+        format!("the second curve cuts {} into the cam everywhere", v(-lo.0))
+    } else if lo.0 < -c.tolerance {
+        format!("{range}: the second curve cuts into the cam")
+    } else if hi.0 - lo.0 > c.tolerance {
+        format!("{range}: it varies, so the second curve loses touch (the program does not suit the conjugate)")
+    } else if hi.0 > c.tolerance {
+        format!("a constant clearance of {}", v(hi.0))
+    } else {
+        format!(
+            "none: both curves touch everywhere (|play| ≤ {})",
+            v(lo.0.abs().max(hi.0.abs()))
+        )
+    };
+    format!("conjugate play: {line}\n")
 }

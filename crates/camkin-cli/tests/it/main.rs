@@ -3,6 +3,7 @@
 
 mod cli_analyze;
 mod cli_bad_input;
+mod cli_conjugate;
 mod cli_contacts;
 mod cli_engineer;
 mod cli_mesh;

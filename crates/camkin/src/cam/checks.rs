@@ -64,6 +64,27 @@ pub struct DesignChecks {
     pub undercut_deg: Vec<f64>,
     /// the profile's stretches (parameter intervals) the follower cannot follow
     pub stretches: Vec<(f64, f64)>,
+    /// a conjugate follower's play over the checked angles
+    pub conjugate_play: Option<ConjugatePlay>,
+}
+
+/// A conjugate follower's play over the checked angles ([`Mechanism::conjugate_play`]): in
+/// units of the follower's position (length, or rad for an arm), angles in degrees.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ConjugatePlay {
+    /// the smallest play (negative: interference) and its cam angle
+    pub min: (f64, f64),
+    /// the largest play and its cam angle
+    pub max: (f64, f64),
+    /// angles where the play could not be computed
+    pub failed: usize,
+    /// what the play is measured against: 1e-6 of the cam's size (of 1 rad for an arm)
+    pub tolerance: f64,
+    /// the second curve neither cuts into the cam (`min ≥ −tolerance`) nor loses touch with it
+    /// (`max − min ≤ tolerance`: a constant clearance passes, a varying one does not: the
+    /// program does not suit the conjugate), and every angle was computed
+    pub passed: bool,
 }
 
 impl DesignChecks {
@@ -81,7 +102,7 @@ impl DesignChecks {
     }
 
     /// The names of the checks that failed: `round trip`, `undercut`, `concave stretch under the
-    /// flat face`, `pressure angle`.
+    /// flat face`, `pressure angle`, `conjugate play`.
     pub fn failures(&self) -> Vec<&'static str> {
         let mut f = Vec::new();
         if self.round_trip.is_some_and(|r| !r.passed) {
@@ -96,6 +117,9 @@ impl DesignChecks {
         }
         if !self.pressure_over_deg.is_empty() {
             f.push("pressure angle");
+        }
+        if self.conjugate_play.is_some_and(|c| !c.passed) {
+            f.push("conjugate play");
         }
         f
     }
@@ -205,6 +229,44 @@ impl Mechanism {
             pressure_over_deg: over,
             undercut_deg: folded,
             stretches: self.unfollowable_stretches(),
+            conjugate_play: self.conjugate_play_over(&states),
         }
+    }
+
+    /// The play of a conjugate follower's second curve at the analysed states.
+    fn conjugate_play_over(
+        &self,
+        states: &[Result<super::FollowerState, CamError>],
+    ) -> Option<ConjugatePlay> {
+        let mut sweep = self.conjugate_sweep()?;
+        let (mut min, mut max) = ((f64::INFINITY, 0.0), (f64::NEG_INFINITY, 0.0));
+        let mut failed = 0;
+        for s in states.iter().flatten() {
+            match sweep.play(s) {
+                Ok(p) => {
+                    let at = s.cam_angle.to_degrees();
+                    if p < min.0 {
+                        min = (p, at);
+                    }
+                    if p > max.0 {
+                        max = (p, at);
+                    }
+                }
+                Err(_) => failed += 1,
+            }
+        }
+        let tolerance = 1e-6
+            * if self.follower().is_oscillating() {
+                1.0
+            } else {
+                self.size()
+            };
+        Some(ConjugatePlay {
+            min,
+            max,
+            failed,
+            tolerance,
+            passed: failed == 0 && min.0 >= -tolerance && max.0 - min.0 <= tolerance,
+        })
     }
 }

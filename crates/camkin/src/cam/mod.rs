@@ -36,7 +36,7 @@ mod sweep;
 pub mod synthesis;
 mod travel;
 
-pub use checks::{DesignChecks, RoundTrip};
+pub use checks::{ConjugatePlay, DesignChecks, RoundTrip};
 pub use conjugate::ConjugateSweep;
 pub use contacts::Contact;
 pub use error::{CamError, StopReason};

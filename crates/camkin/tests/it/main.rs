@@ -4,6 +4,7 @@
 
 mod circle_followers;
 mod common;
+mod conjugate;
 mod contact_general;
 mod contact_jumps;
 mod dynamics_contact;

@@ -1,0 +1,167 @@
+//! A conjugate (form-closed) follower from the command line: the example's constant-diameter cam
+//! drives both rollers (its play column is zero, two contacts at every angle), a second curve's
+//! bad field is placed in the file, and the dynamics commands refuse it with exit code 2.
+#![allow(clippy::unwrap_used)]
+use crate::common::predicate;
+use crate::common::*;
+use std::collections::HashMap;
+
+fn columns(header: &[String]) -> HashMap<&str, usize> {
+    header
+        .iter()
+        .enumerate()
+        .map(|(i, h)| (h.as_str(), i))
+        .collect()
+}
+
+/// The example's rollers are 2 × (40 + 10) + 20 mm apart, the cam's constant diameter across
+/// the pitch curve for a motion with `s(θ + 180°) = 20 − s(θ)`: the play is zero at every angle.
+#[test]
+fn the_examples_second_roller_has_no_play() {
+    let out = camkin()
+        .arg("analyze")
+        .arg(examples().join("conjugate-yoke.toml"))
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let (header, rows) = parse_csv(&out);
+    let col = columns(&header);
+    assert_eq!(rows.len(), 360);
+    for r in &rows {
+        let play: f64 = r[col["conjugate_play_mm"]].parse().unwrap();
+        assert!(play.abs() < 1e-9, "{r:?}");
+        assert!(r[col["error"]].is_empty(), "{r:?}");
+    }
+}
+
+/// Every angle has the first roller's contact and the second's, named in the `curve` column,
+/// each with its row satisfied by the motion (γ and the residual in mm/s²).
+#[test]
+fn contacts_lists_both_rollers() {
+    let out = camkin()
+        .arg("contacts")
+        .arg(examples().join("conjugate-yoke.toml"))
+        .args(["--angles", "0:360:5"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("144 contacts at 72 cam angles"))
+        .get_output()
+        .stdout
+        .clone();
+    let (header, rows) = parse_csv(&out);
+    let col = columns(&header);
+    assert_eq!(rows.len(), 144);
+    for pair in rows.chunks(2) {
+        assert_eq!(pair[0][col["curve"]], "follower");
+        assert_eq!(pair[1][col["curve"]], "conjugate");
+        assert_eq!(pair[0][col["angle_deg"]], pair[1][col["angle_deg"]]);
+        for r in pair {
+            let gamma: f64 = r[col["gamma_mm_s2"]].parse().unwrap();
+            let residual: f64 = r[col["residual_mm_s2"]].parse().unwrap();
+            assert!(residual.abs() <= 1e-9 * gamma.abs().max(1.0), "{r:?}");
+        }
+    }
+}
+
+fn with_dynamics() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(examples().join("conjugate-yoke.toml")).unwrap();
+    std::fs::write(
+        dir.path().join("m.toml"),
+        format!(
+            "{text}\n[dynamics]\nmass = 0.5\nspring_stiffness = 1000.0\nspring_preload = 10.0\n"
+        ),
+    )
+    .unwrap();
+    dir
+}
+
+/// `forces` and `simulate` model a follower held on by a spring: a form-closed one is refused,
+/// naming the table, and nothing is written.
+#[test]
+fn dynamics_commands_refuse_a_form_closed_follower() {
+    let dir = with_dynamics();
+    let mech = dir.path().join("m.toml");
+    for (cmd, out) in [("forces", "f"), ("simulate", "s")] {
+        let out = dir.path().join(out);
+        camkin()
+            .arg(cmd)
+            .arg(&mech)
+            .arg("--out")
+            .arg(&out)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(
+                "follower.conjugate: the follower is form-closed",
+            ));
+        assert!(!out.exists(), "{cmd} wrote {out:?}");
+    }
+}
+
+/// A second curve's bad field is named with its line in the file; one that cannot touch the cam
+/// from the other side is refused up front.
+#[test]
+fn a_bad_second_curve_is_placed_in_the_file() {
+    let base = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [5, 0]\nradius = 30\n[follower]\nkind = \"translating-roller\"\nroller_radius = 10\n[follower.conjugate]\nkind = \"circle\"\n";
+    for (tail, needles) in [
+        (
+            "center = [-80, 0]\nradius = -1\n",
+            vec!["follower.conjugate.radius = -1", "m.toml:14:"],
+        ),
+        (
+            "center = [-80, 500]\nradius = 10\n",
+            vec!["follower.conjugate: the second curve must touch the cam from the other side"],
+        ),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let mech = dir.path().join("m.toml");
+        std::fs::write(&mech, format!("{base}{tail}")).unwrap();
+        let a = camkin().arg("analyze").arg(&mech).assert().code(2);
+        let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
+        for n in needles {
+            assert!(err.contains(n), "{n:?} not in {err}");
+        }
+    }
+}
+
+/// `camkin synth` checks the second curve: the example's rollers both touch everywhere; a
+/// program whose return is not the rise mirrored (rise over 120°, dwell, return over 180°) loses
+/// touch and cuts in, which fails the check with exit code 3 (the files are still written).
+#[test]
+fn synth_checks_the_conjugate_play() {
+    let dir = tempfile::tempdir().unwrap();
+    camkin()
+        .arg("synth")
+        .arg(examples().join("conjugate-yoke.toml"))
+        .arg("--out")
+        .arg(dir.path().join("ok"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "conjugate play: none: both curves touch everywhere",
+        ));
+    let text = std::fs::read_to_string(examples().join("conjugate-yoke.toml")).unwrap();
+    let uneven = text.replace(
+        "{ law = \"cycloidal\", rise = 20.0, degrees = 180 },",
+        "{ law = \"cycloidal\", rise = 20.0, degrees = 120 },\n    { law = \"dwell\", degrees = 60 },",
+    );
+    assert_ne!(uneven, text);
+    let mech = dir.path().join("uneven.toml");
+    std::fs::write(&mech, uneven).unwrap();
+    camkin()
+        .arg("synth")
+        .arg(&mech)
+        .arg("--out")
+        .arg(dir.path().join("bad"))
+        .assert()
+        .code(3)
+        .stdout(predicate::str::contains(
+            "the second curve cuts into the cam",
+        ))
+        .stderr(predicate::str::contains(
+            "design checks failed: conjugate play",
+        ));
+    assert!(dir.path().join("bad").join("checks.txt").exists());
+}
