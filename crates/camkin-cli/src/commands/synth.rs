@@ -295,7 +295,10 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         )
     };
     if let Some(c) = checks.conjugate_play {
-        report += &conjugate_line(&c, mech.follower().is_oscillating(), len);
+        report += &format!(
+            "conjugate play: {}\n",
+            conjugate_line(&c, mech.follower().is_oscillating(), len)
+        );
     }
     if failed > 0 {
         report += &format!("{failed} angles could not be analysed\n");
@@ -325,8 +328,9 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     }
 }
 
-/// The conjugate check's line: the play's range (an arm's in degrees) and what it means.
-fn conjugate_line(c: &camkin::cam::ConjugatePlay, arm: bool, len: &str) -> String {
+/// The conjugate check's words (`camkin synth`, the studio): the play's range (an arm's in
+/// degrees) and what it means.
+pub(crate) fn conjugate_line(c: &camkin::cam::ConjugatePlay, arm: bool, len: &str) -> String {
     let h = camkin::human::human;
     let (k, unit) = if arm {
         (1f64.to_degrees(), "°")
@@ -359,5 +363,5 @@ fn conjugate_line(c: &camkin::cam::ConjugatePlay, arm: bool, len: &str) -> Strin
             v(lo.0.abs().max(hi.0.abs()))
         )
     };
-    format!("conjugate play: {line}\n")
+    line
 }

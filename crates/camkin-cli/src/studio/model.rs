@@ -533,6 +533,23 @@ fn checks(
         angles_deg: jumps,
         stretches: Vec::new(),
     });
+    if let Some(p) = c.conjugate_play {
+        let arm = mech.follower().is_oscillating();
+        out.push(Check {
+            kind: "conjugate",
+            ok: p.passed,
+            message: format!(
+                "conjugate play: {}",
+                crate::commands::synth::conjugate_line(&p, arm, unit)
+            ),
+            angles_deg: if p.passed {
+                Vec::new()
+            } else {
+                vec![p.min.1, p.max.1]
+            },
+            stretches: Vec::new(),
+        });
+    }
     if let Some(rt) = c.round_trip {
         out.push(Check {
             kind: "round-trip",

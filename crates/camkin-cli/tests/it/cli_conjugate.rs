@@ -165,3 +165,19 @@ fn synth_checks_the_conjugate_play() {
         ));
     assert!(dir.path().join("bad").join("checks.txt").exists());
 }
+
+/// The studio's checks (here through its one-file report) carry the same words as synth's.
+#[test]
+fn the_report_checks_the_conjugate_play() {
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("report.html");
+    camkin()
+        .arg("report")
+        .arg(examples().join("conjugate-yoke.toml"))
+        .arg("-o")
+        .arg(&page)
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(html.contains("conjugate play: none: both curves touch everywhere"));
+}
