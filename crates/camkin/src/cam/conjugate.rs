@@ -104,6 +104,13 @@ impl Mechanism {
     /// (the error names `follower.conjugate` and says why). The second curve's search uses the
     /// default analysis options for the cam's size.
     pub fn with_conjugate(mut self, curve: Arc<dyn Curve>) -> Result<Self, CamError> {
+        let table = Field::FollowerConjugate(ProfileField::Table);
+        if matches!(curve.domain(), Domain::Point) {
+            return Err(CamError::Conjugate {
+                field: table,
+                reason: "a point (a knife edge) cannot be a follower's second curve: give a circle of small radius".into(),
+            });
+        }
         let pivot = self.cam.pivot;
         let (follower, flip) = match self.geometry.joint {
             Joint::Translating { origin, direction } => (
@@ -133,7 +140,6 @@ impl Mechanism {
                 false,
             ),
         };
-        let table = Field::FollowerConjugate(ProfileField::Table);
         let mech = Mechanism::new(self.cam.clone(), follower).map_err(|e| CamError::Conjugate {
             field: table,
             reason: e.to_string(),
@@ -273,7 +279,13 @@ mod tests {
     fn a_second_curve_that_cannot_touch_is_refused_naming_the_field() {
         let m = yoke(0.0);
         let far = Circle::new(Point2::new(0.0, 500.0), 10.0).unwrap();
-        let e = m.with_conjugate(Arc::new(far)).unwrap_err();
+        let e = m.clone().with_conjugate(Arc::new(far)).unwrap_err();
         assert!(e.to_string().starts_with("follower.conjugate"), "{e}");
+        let knife = crate::curve::PointCurve::new(Point2::new(-80.0, 0.0)).unwrap();
+        let e = m.with_conjugate(Arc::new(knife)).unwrap_err();
+        assert!(
+            e.to_string().contains("a point (a knife edge) cannot be"),
+            "{e}"
+        );
     }
 }

@@ -118,6 +118,40 @@ fn a_flat_faced_yoke_on_a_circle_has_constant_play() {
     }
 }
 
+/// The same on an arm: an oscillating flat face and a second face `2R` below it in the arm's
+/// frame, facing the other way, on a cam turning clockwise. Whatever the arm's angle, the two
+/// parallel faces span the circle's breadth, its diameter: the play is 0 at every angle
+/// (1e-9 rad), and both faces are reported as contacts.
+#[test]
+fn a_flat_faced_arm_yoke_on_a_circle_has_no_play_at_its_breadth() {
+    let cam = Cam::from_rpm(
+        Arc::new(Circle::new(Point2::new(ECC, 0.0), R).unwrap()),
+        Point2::origin(),
+        Sense::Cw,
+        600.0,
+    )
+    .unwrap();
+    let face: Arc<dyn Curve> =
+        Arc::new(Line::new(Point2::new(0.0, -2.0 * R), Vec2::new(-1.0, 0.0)).unwrap());
+    let m = Mechanism::new(
+        cam,
+        Follower::OscillatingFlat {
+            pivot: Point2::new(-100.0, 40.0),
+            face_offset: 0.0,
+            closing: Sense::Cw,
+            initial_angle: 0.0,
+        },
+    )
+    .unwrap()
+    .with_conjugate(face)
+    .unwrap();
+    for (t, play) in angles().zip(plays(&m)) {
+        assert!(play.abs() < 1e-9, "θ {t}: {play}");
+        let cs = m.contacts_at(&m.analyze(t).unwrap()).unwrap();
+        assert_eq!(cs.iter().filter(|c| c.conjugate).count(), 1, "θ {t}");
+    }
+}
+
 /// A bell crank: two arms from one pivot, a roller on each, one riding on top of the cam and one
 /// underneath. Each roller touches where its centre is `R + r` from the circle's centre: by the
 /// law of cosines about the pivot, the arm angles are `atan2(c − O) ± acos((L² + D² − ρ²)/(2LD))`.
