@@ -265,6 +265,9 @@ def test_a_conjugate_follower_from_python():
     assert np.all(np.abs(a["conjugate_play_mm"]) <= 1e-9)
     c = mech.contacts([10.0, 200.0])
     assert list(c["curve"]) == ["follower", "conjugate"] * 2
+    checks = mech.checks()
+    assert checks["conjugate_play"]["passed"] and checks["passed"]
+    assert abs(checks["conjugate_play"]["min"][0]) <= 1e-9
     d = mech.to_dict()
     assert d["follower"]["conjugate"]["kind"] == "circle"
     d["dynamics"] = {"mass": 0.5, "spring_stiffness": 1000.0, "spring_preload": 10.0}
