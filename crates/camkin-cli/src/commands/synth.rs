@@ -347,7 +347,7 @@ pub(crate) fn conjugate_line(c: &camkin::cam::ConjugatePlay, arm: bool, len: &st
         v(hi.0),
         at(hi.1)
     );
-    let line = if c.failed > 0 {
+    if c.failed > 0 {
         format!("{range}; {} angles could not be computed", c.failed)
     } else if lo.0 < -c.tolerance && hi.0 - lo.0 <= c.tolerance {
         format!("the second curve cuts {} into the cam everywhere", v(-lo.0))
@@ -362,6 +362,5 @@ pub(crate) fn conjugate_line(c: &camkin::cam::ConjugatePlay, arm: bool, len: &st
             "none: both curves touch everywhere (|play| ≤ {})",
             v(lo.0.abs().max(hi.0.abs()))
         )
-    };
-    line
+    }
 }
