@@ -181,3 +181,44 @@ fn the_report_checks_the_conjugate_play() {
     let html = std::fs::read_to_string(&page).unwrap();
     assert!(html.contains("conjugate play: none: both curves touch everywhere"));
 }
+
+/// An arm's play is an angle, in degrees in the table (`conjugate_play_deg`): a bell crank with
+/// two rollers on an eccentric circle, against the law of cosines about the pivot.
+#[test]
+fn an_arms_play_is_in_degrees() {
+    let dir = tempfile::tempdir().unwrap();
+    let mech = dir.path().join("crank.toml");
+    let (l1, l2, r, beta) = (98.0f64, 97.0f64, 10.0f64, -0.84f64);
+    std::fs::write(
+        &mech,
+        format!(
+            "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"circle\"\ncenter = [5, 0]\nradius = 30\n\
+             [follower]\nkind = \"oscillating-roller\"\npivot = [-90, 0]\narm_length = {l1}\nroller_radius = {r}\nclosing = \"cw\"\ninitial_angle_deg = 20\n\
+             [follower.conjugate]\nkind = \"circle\"\ncenter = [{}, {}]\nradius = {r}\n",
+            l2 * beta.cos(),
+            l2 * beta.sin()
+        ),
+    )
+    .unwrap();
+    let out = camkin()
+        .arg("analyze")
+        .arg(&mech)
+        .args(["--angles", "0:360:10"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let (header, rows) = parse_csv(&out);
+    let col = columns(&header);
+    assert_eq!(rows.len(), 36);
+    for r in &rows {
+        let t = r[col["angle_deg"]].parse::<f64>().unwrap().to_radians();
+        let (cx, cy) = (5.0 * t.cos() + 90.0, 5.0 * t.sin());
+        let (d, towards) = (cx.hypot(cy), cy.atan2(cx));
+        let arm = |l: f64| ((l * l + d * d - 40.0 * 40.0) / (2.0 * l * d)).acos();
+        let want = (towards - arm(l2) - beta - (towards + arm(l1))).to_degrees();
+        let play: f64 = r[col["conjugate_play_deg"]].parse().unwrap();
+        assert!((play - want).abs() < 1e-7, "{r:?}: {want}");
+    }
+}
