@@ -4,15 +4,6 @@
 #![allow(clippy::unwrap_used)]
 use crate::common::predicate;
 use crate::common::*;
-use std::collections::HashMap;
-
-fn columns(header: &[String]) -> HashMap<&str, usize> {
-    header
-        .iter()
-        .enumerate()
-        .map(|(i, h)| (h.as_str(), i))
-        .collect()
-}
 
 /// The example's rollers are 2 × (40 + 10) + 20 mm apart, the cam's constant diameter across
 /// the pitch curve for a motion with `s(θ + 180°) = 20 − s(θ)`: the play is zero at every angle.

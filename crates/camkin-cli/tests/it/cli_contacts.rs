@@ -25,11 +25,7 @@ fn gear_pair_has_two_to_four_contacts_each_with_its_row() {
         .stdout
         .clone();
     let (header, rows) = parse_csv(&out);
-    let col: HashMap<&str, usize> = header
-        .iter()
-        .enumerate()
-        .map(|(i, h)| (h.as_str(), i))
-        .collect();
+    let col = columns(&header);
     for name in [
         "angle_deg",
         "contact",

@@ -250,6 +250,15 @@ pub fn polyline_points(p: &DxfPolyline, n: usize) -> Vec<(f64, f64)> {
     out
 }
 
+/// A CSV header's column indices by name.
+pub fn columns(header: &[String]) -> std::collections::HashMap<&str, usize> {
+    header
+        .iter()
+        .enumerate()
+        .map(|(i, h)| (h.as_str(), i))
+        .collect()
+}
+
 /// A CSV table: its header and its rows as text.
 pub fn parse_csv(out: &[u8]) -> (Vec<String>, Vec<Vec<String>>) {
     let text = String::from_utf8(out.to_vec()).unwrap();
