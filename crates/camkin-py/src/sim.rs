@@ -14,10 +14,12 @@ use pyo3::types::{PyDict, PyList};
 
 fn dyn_err(e: DynamicsError) -> PyErr {
     match e {
-        DynamicsError::Invalid { .. } | DynamicsError::StepTooLong { .. } => {
-            errors::input("dynamics", None, e.to_string())
+        DynamicsError::Invalid { .. }
+        | DynamicsError::StepTooLong { .. }
+        | DynamicsError::Chatter { .. } => errors::input("dynamics", None, e.to_string()),
+        DynamicsError::FormClosed | DynamicsError::Interference { .. } => {
+            errors::input("follower.conjugate", None, e.to_string())
         }
-        DynamicsError::FormClosed => errors::input("follower.conjugate", None, e.to_string()),
         _ => errors::contact(e.to_string()),
     }
 }

@@ -257,8 +257,9 @@ def test_mesh_of_a_cam_is_refused_naming_the_field():
 
 def test_a_conjugate_follower_from_python():
     """The constant-diameter cam: the second roller's play column is zero, both rollers are
-    contacts (named in the `curve` column), and the simulation refuses a form-closed follower
-    naming the table."""
+    contacts (named in the `curve` column); the simulation, without a spring, keeps the yoke on
+    the cam's motion with the load passing between the rollers (the `on_conjugate` column), and
+    refuses a second roller that cuts into the cam, naming the table."""
     path = EXAMPLES / "conjugate-yoke.toml"
     mech = camkin.Mechanism.from_toml(path)
     a = mech.analyze(np.arange(0.0, 360.0, 2.5))
@@ -270,7 +271,14 @@ def test_a_conjugate_follower_from_python():
     assert abs(checks["conjugate_play"]["min"][0]) <= 1e-9
     d = mech.to_dict()
     assert d["follower"]["conjugate"]["kind"] == "circle"
-    d["dynamics"] = {"mass": 0.5, "spring_stiffness": 1000.0, "spring_preload": 10.0}
+    d["dynamics"] = {"mass": 0.5, "spring_stiffness": 0.0, "spring_preload": 0.0}
+    run = camkin.Mechanism.from_dict(d).simulate(step_deg=2.0)
+    s = run["samples"]
+    assert run["events"] == []
+    assert np.all(s["in_contact"] == 1)
+    assert np.max(np.abs(s["position_mm"] - s["kinematic_position_mm"])) <= 1e-9
+    assert set(s["on_conjugate"]) == {0, 1}
+    d["follower"]["conjugate"]["center"] = [-119.8, 0.0]
     with pytest.raises(camkin.InputError) as e:
         camkin.Mechanism.from_dict(d).simulate()
     assert e.value.field == "follower.conjugate"

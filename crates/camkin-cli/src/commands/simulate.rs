@@ -6,7 +6,7 @@ use crate::mechfile;
 use crate::output::{write_atomic, write_cell_table, Cell, Keyed, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, EventKind, Sample, Simulation};
+use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, Sample, Simulation};
 use camkin::table::Units;
 use camkin::table::{
     event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow,
@@ -54,6 +54,8 @@ fn dyn_err(e: DynamicsError) -> Failure {
         | DynamicsError::Kinematics { .. }
         | DynamicsError::ContactJumps { .. }
         | DynamicsError::FormClosed
+        | DynamicsError::Interference { .. }
+        | DynamicsError::Chatter { .. }
         | DynamicsError::StepTooLong { .. } => Failure::Input(anyhow!("{e}")),
         _ => Failure::Internal(anyhow!("{e}")),
     }
@@ -213,37 +215,37 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             plot(&samples, &rows, dir, &units, k_len).map_err(Failure::output)?;
         }
     }
-    report(&events, unit);
+    report(&events, unit, mech.is_conjugate());
     Ok(())
 }
 
-fn kind(e: &Event) -> &'static str {
-    match e.kind {
-        EventKind::LiftOff => "lift-off",
-        EventKind::Impact => "impact",
-    }
-}
-
 /// The events as a table on stderr.
-fn report(events: &[Event], unit: camkin::spec::LengthUnit) {
+fn report(events: &[Event], unit: camkin::spec::LengthUnit, conjugate: bool) {
     if events.is_empty() {
         eprintln!("camkin: no lift-off: the follower stays on the cam");
         return;
     }
     eprintln!(
-        "{:>9} {:>14} {:>15} {:>18}",
+        "{:>9} {:>14} {:>15} {:>18}{}",
         "event",
         "time (s)",
         "cam angle (°)",
-        format!("impact speed ({}/s)", unit.name())
+        format!("impact speed ({}/s)", unit.name()),
+        if conjugate { "  curve" } else { "" }
     );
     for e in events.iter().take(50) {
+        let row = EventRow::from(e);
         eprintln!(
-            "{:>9} {:>14.9} {:>15.6} {:>18.6}",
-            kind(e),
+            "{:>9} {:>14.9} {:>15.6} {:>18.6}{}",
+            row.event,
             e.time,
             e.cam_angle.to_degrees(),
-            e.impact_velocity / unit.metres()
+            e.impact_velocity / unit.metres(),
+            if conjugate {
+                format!("  {}", row.curve)
+            } else {
+                String::new()
+            }
         );
     }
     if events.len() > 50 {

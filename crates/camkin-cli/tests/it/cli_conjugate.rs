@@ -61,34 +61,72 @@ fn with_dynamics() -> tempfile::TempDir {
     let text = std::fs::read_to_string(examples().join("conjugate-yoke.toml")).unwrap();
     std::fs::write(
         dir.path().join("m.toml"),
-        format!(
-            "{text}\n[dynamics]\nmass = 0.5\nspring_stiffness = 1000.0\nspring_preload = 10.0\n"
-        ),
+        format!("{text}\n[dynamics]\nmass = 0.5\nspring_stiffness = 0.0\nspring_preload = 0.0\n"),
     )
     .unwrap();
     dir
 }
 
-/// `forces` and `simulate` model a follower held on by a spring: a form-closed one is refused,
-/// naming the table, and nothing is written.
+/// `forces` models a follower held on by a spring: a form-closed one is refused, naming the
+/// table, and nothing is written. `simulate` drives it through both rollers: it stays on the
+/// cam's motion, the load passing between the rollers (`on_conjugate`), without an event; a
+/// second roller that cuts into the cam is refused (exit 2, naming the table, nothing written).
 #[test]
-fn dynamics_commands_refuse_a_form_closed_follower() {
+fn dynamics_of_a_form_closed_follower() {
     let dir = with_dynamics();
     let mech = dir.path().join("m.toml");
-    for (cmd, out) in [("forces", "f"), ("simulate", "s")] {
-        let out = dir.path().join(out);
-        camkin()
-            .arg(cmd)
-            .arg(&mech)
-            .arg("--out")
-            .arg(&out)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains(
-                "follower.conjugate: the follower is form-closed",
-            ));
-        assert!(!out.exists(), "{cmd} wrote {out:?}");
+    let out = dir.path().join("f");
+    camkin()
+        .arg("forces")
+        .arg(&mech)
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "follower.conjugate: the follower is form-closed",
+        ));
+    assert!(!out.exists(), "forces wrote {out:?}");
+    let a = camkin()
+        .arg("simulate")
+        .arg(&mech)
+        .args(["--step", "2"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("no lift-off"));
+    let (header, rows) = parse_csv(&a.get_output().stdout);
+    let col = columns(&header);
+    let (p, k, on, c) = (
+        col["position_mm"],
+        col["kinematic_position_mm"],
+        col["on_conjugate"],
+        col["in_contact"],
+    );
+    let mut sides = std::collections::BTreeSet::new();
+    for f in &rows {
+        let (x, y): (f64, f64) = (f[p].parse().unwrap(), f[k].parse().unwrap());
+        assert!((x - y).abs() <= 1e-9, "{f:?}");
+        assert_eq!(f[c], "1", "{f:?}");
+        sides.insert(f[on].clone());
     }
+    assert_eq!(sides.len(), 2, "the load never passes: {sides:?}");
+    let tight = dir.path().join("tight.toml");
+    let text = std::fs::read_to_string(&mech)
+        .unwrap()
+        .replace("center = [-120.0, 0.0]", "center = [-119.8, 0.0]");
+    std::fs::write(&tight, text).unwrap();
+    let out = dir.path().join("s");
+    camkin()
+        .arg("simulate")
+        .arg(&tight)
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "follower.conjugate: the second curve cuts 0.0002 m into the cam",
+        ));
+    assert!(!out.exists(), "simulate wrote {out:?}");
 }
 
 /// A second curve's bad field is named with its line in the file; one that cannot touch the cam

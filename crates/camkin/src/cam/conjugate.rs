@@ -181,6 +181,15 @@ impl Mechanism {
         )
     }
 
+    /// The second curve's own mechanism (the same cam, the second curve on the same joint
+    /// closing the other way) and the sign that maps its coordinate to the follower's (−1 for a
+    /// slide, +1 for an arm); `None` without a second curve.
+    pub(crate) fn conjugate_side(&self) -> Option<(&Mechanism, f64)> {
+        self.conjugate
+            .as_ref()
+            .map(|c| (&c.mech, if c.flip { -1.0 } else { 1.0 }))
+    }
+
     /// The play of the second curve at the states of a sweep, warm-started from angle to angle
     /// (`None` without a second curve).
     pub fn conjugate_sweep(&self) -> Option<ConjugateSweep<'_>> {

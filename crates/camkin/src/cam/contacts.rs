@@ -142,7 +142,7 @@ impl Mechanism {
     }
 
     /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
-    pub(super) fn ahead(&self, q: f64, other: f64) -> f64 {
+    pub(crate) fn ahead(&self, q: f64, other: f64) -> f64 {
         let d = self.oriented(q) - self.oriented(other);
         match self.geometry.joint {
             Joint::Rotating { .. } => wrap_angle_near(d, 0.0),

@@ -8,87 +8,20 @@
 //! an impact with a coefficient of restitution, after which the contact is re-engaged once the
 //! bouncing has died down.
 
+use super::follower::{Event, EventKind, FollowerDynamics, Sample, REBOUND_TOLERANCE};
 use super::model::{body_state, Constraint, ForceElement, RigidBody, System};
 use super::projection::DenseRows;
 use super::solver::AugmentedLagrangian;
 use super::DynamicsError;
 use crate::cam::{Joint, Mechanism};
 use crate::contact::{refine, Pairing, SearchOptions, Surface};
-use crate::field::{DynamicsField, Field};
+use crate::field::Field;
 use crate::geometry::Vec2;
 
-/// Dynamic properties of the follower (SI units, lengths in the mechanism's unit converted by the
-/// caller).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FollowerDynamics {
-    /// mass of a translating follower, kg
-    pub mass: f64,
-    /// moment of inertia of an oscillating follower about its pivot, kg·m²
-    pub inertia: f64,
-    /// spring stiffness, N/m (translating) or N·m/rad (oscillating)
-    pub spring_stiffness: f64,
-    /// spring force (torque) at the follower's lowest position over a revolution, pushing it
-    /// onto the cam, N (N·m)
-    pub spring_preload: f64,
-    /// viscous damping, N·s/m (N·m·s/rad)
-    pub damping: f64,
-    /// coefficient of restitution of impacts, 0 to 1
-    pub restitution: f64,
-    /// gravity, m/s²
-    pub gravity: Vec2,
-}
-
-/// The follower's state at one instant of a simulation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Sample {
-    /// time, s
-    pub time: f64,
-    /// cam angle, rad
-    pub cam_angle: f64,
-    /// position (as in [`crate::cam::FollowerState`])
-    pub position: f64,
-    /// velocity
-    pub velocity: f64,
-    /// acceleration
-    pub acceleration: f64,
-    /// contact force along the common normal, N, compressive positive; 0 in free flight
-    pub contact_force: f64,
-    /// the follower touches the cam
-    pub in_contact: bool,
-    /// the torque driving the cam, N·m
-    pub driver_torque: f64,
-    /// the work done by the driving torque since time 0, J
-    pub driver_work: f64,
-}
-
-/// What happened at an event.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub enum EventKind {
-    /// the contact force reached zero: the follower leaves the cam
-    LiftOff,
-    /// the follower hits the cam again
-    Impact,
-}
-
-/// A located event.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Event {
-    /// lift-off or impact
-    pub kind: EventKind,
-    /// time, s
-    pub time: f64,
-    /// cam angle, rad
-    pub cam_angle: f64,
-    /// normal approach speed at an impact (0 at a lift-off), m/s
-    pub impact_velocity: f64,
-}
-
-/// A cam-follower simulation.
+/// A cam-follower simulation as a multibody system (see the module docs); [`super::Simulation`]
+/// chooses it for a follower with one contact that never jumps.
 #[derive(Debug, Clone)]
-pub struct Simulation {
+pub struct Multibody {
     sys: System,
     al: AugmentedLagrangian,
     params: FollowerDynamics,
@@ -97,6 +30,8 @@ pub struct Simulation {
     axis_origin: crate::Point2,
     orientation: f64,
     speed: f64,
+    /// the cam's angular acceleration, rad/s²
+    alpha: f64,
     theta0: f64,
     work: f64,
     t: f64,
@@ -106,7 +41,7 @@ pub struct Simulation {
     pairings: Vec<Option<Pairing>>,
     size: f64,
     /// events found at the start (a tensile force there: lift-off at time 0), returned by the
-    /// first [`Simulation::advance`]
+    /// first [`Multibody::advance`]
     pending: Vec<Event>,
 }
 
@@ -114,24 +49,16 @@ const CONTACT: usize = 3;
 /// The driver's row among the constraint rows (after the cam's revolute joint).
 const DRIVER_ROW: usize = 2;
 
-/// A rebound slower than this times the cam's surface speed scale (`ω · size`) ends the bouncing:
-/// the impact is taken as plastic and the contact re-engaged (a sequence of bounces with
-/// restitution below 1 would otherwise never end).
-pub const REBOUND_TOLERANCE: f64 = 1e-3;
-
-/// The longest step times the follower's fastest rate ([`Simulation::max_step`]).
-pub const MAX_RATE_STEP: f64 = 2.0;
-
-impl Simulation {
+impl Multibody {
     /// Builds the multibody model of `mech` with the follower's `params`, starting at cam angle
     /// 0 at the kinematic position and velocity, in contact unless the contact force there would
-    /// be tensile (then it starts in flight, and the first [`Simulation::advance`] reports a
+    /// be tensile (then it starts in flight, and the first [`Multibody::advance`] reports a
     /// lift-off at time 0).
     ///
     /// ```
     /// use camkin::cam::{Cam, Follower, Mechanism, Sense};
     /// use camkin::curve::Circle;
-    /// use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Simulation};
+    /// use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Multibody};
     /// use camkin::{Point2, Vec2};
     /// use std::sync::Arc;
     ///
@@ -149,7 +76,7 @@ impl Simulation {
     ///     restitution: 0.0,
     ///     gravity: Vec2::zeros(),
     /// };
-    /// let mut sim = Simulation::new(&m, params, AugmentedLagrangian::default())?;
+    /// let mut sim = Multibody::new(&m, params, AugmentedLagrangian::default())?;
     /// let h = 1f64.to_radians() / m.cam().speed(); // 1° of cam rotation
     /// for _ in 0..90 {
     ///     assert!(sim.advance(h)?.is_empty(), "no lift-off");
@@ -167,37 +94,15 @@ impl Simulation {
         Self::starting_at(mech, params, al, 0.0)
     }
 
-    /// As [`Simulation::new`], starting at cam angle `theta0` (rad) at time 0.
+    /// As [`Multibody::new`], starting at cam angle `theta0` (rad) at time 0.
     pub fn starting_at(
         mech: &Mechanism,
         params: FollowerDynamics,
         al: AugmentedLagrangian,
         theta0: f64,
     ) -> Result<Self, DynamicsError> {
-        let positive = |field: Field, v: f64| {
-            if v.is_finite() && v > 0.0 {
-                Ok(())
-            } else {
-                Err(DynamicsError::Invalid {
-                    field,
-                    value: v,
-                    reason: "must be positive and finite",
-                })
-            }
-        };
+        super::follower::check_params(mech, &params)?;
         let oscillating = mech.follower_joint().is_rotating();
-        if oscillating {
-            positive(Field::Dynamics(DynamicsField::Inertia), params.inertia)?;
-        } else {
-            positive(Field::Dynamics(DynamicsField::Mass), params.mass)?;
-        }
-        if !(0.0..=1.0).contains(&params.restitution) {
-            return Err(DynamicsError::Invalid {
-                field: Field::Dynamics(DynamicsField::Restitution),
-                value: params.restitution,
-                reason: "must be from 0 to 1",
-            });
-        }
         if mech.is_conjugate() {
             return Err(DynamicsError::FormClosed);
         }
@@ -350,6 +255,7 @@ impl Simulation {
             axis_origin,
             orientation: mech.orientation(),
             speed: cam.speed(),
+            alpha: cam.angular_acceleration(),
             theta0,
             work: 0.0,
             t: 0.0,
@@ -372,48 +278,25 @@ impl Simulation {
                 time: 0.0,
                 cam_angle: theta0,
                 impact_velocity: 0.0,
+                conjugate: false,
             });
         }
         Ok(sim)
     }
 
-    /// The follower's fastest free rate (1/s) and the parameter that sets it: the larger root of
-    /// `λ² + (c/m) λ + k/m = 0` in magnitude (`c/m` for a heavily damped follower, `√(k/m)` for a
-    /// lightly damped one; `m` is the inertia for an oscillating follower).
+    /// The follower's fastest free rate (see [`FollowerDynamics::fastest_rate`]).
     pub fn fastest_rate(&self) -> (f64, Field, f64) {
-        let m = if self.oscillating {
-            self.params.inertia
-        } else {
-            self.params.mass
-        };
-        let (c, k) = (self.params.damping / m, self.params.spring_stiffness / m);
-        let disc = c * c - 4.0 * k;
-        if disc >= 0.0 {
-            (
-                0.5 * (c + disc.sqrt()),
-                Field::Dynamics(DynamicsField::Damping),
-                self.params.damping,
-            )
-        } else {
-            (
-                k.sqrt(),
-                Field::Dynamics(DynamicsField::SpringStiffness),
-                self.params.spring_stiffness,
-            )
-        }
+        self.params.fastest_rate(self.oscillating)
     }
 
-    /// The longest step [`Simulation::advance`] accepts, s: `2 / fastest rate` (the classical
-    /// Runge–Kutta method is stable to 2.78 on the negative real axis and 2.83 on the imaginary
-    /// one; measured on an overdamped follower, steps of 3.3 / rate ran but gave impacts of
-    /// 9–18 m/s where the resolved run gives 1 m/s).
+    /// The longest step [`Multibody::advance`] accepts, s ([`FollowerDynamics::max_step`]).
     pub fn max_step(&self) -> f64 {
-        let rate = self.fastest_rate().0;
-        if rate > 0.0 {
-            MAX_RATE_STEP / rate
-        } else {
-            f64::INFINITY
-        }
+        self.params.max_step(self.oscillating)
+    }
+
+    /// The cam angle now, rad (`θ₀ + ω t + ½ α t²`: the driver's).
+    fn cam_angle(&self) -> f64 {
+        self.theta0 + self.speed * self.t + 0.5 * self.alpha * self.t * self.t
     }
 
     /// The multibody system (for inspection).
@@ -540,12 +423,13 @@ impl Simulation {
         };
         Ok(Sample {
             time: self.t,
-            cam_angle: self.theta0 + self.speed * self.t,
+            cam_angle: self.cam_angle(),
             position,
             velocity,
             acceleration,
             contact_force: f,
             in_contact: self.in_contact,
+            on_conjugate: false,
             driver_torque: torque,
             driver_work: self.work,
         })
@@ -566,17 +450,7 @@ impl Simulation {
 
     /// Advances by `h` seconds, locating lift-off and impact events inside the step.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
-        let max_step = self.max_step();
-        if h > max_step {
-            let (rate, field, value) = self.fastest_rate();
-            return Err(DynamicsError::StepTooLong {
-                field,
-                value,
-                step: h,
-                rate,
-                max_step,
-            });
-        }
+        self.params.check_step(self.oscillating, h)?;
         let mut events = std::mem::take(&mut self.pending);
         let end = self.t + h;
         let mut guard = 0;
@@ -611,8 +485,9 @@ impl Simulation {
                 events.push(Event {
                     kind: EventKind::LiftOff,
                     time: self.t,
-                    cam_angle: self.theta0 + self.speed * self.t,
+                    cam_angle: self.cam_angle(),
                     impact_velocity: 0.0,
+                    conjugate: false,
                 });
             } else {
                 let mut p = pairings[CONTACT];
@@ -630,8 +505,9 @@ impl Simulation {
                 events.push(Event {
                     kind: EventKind::Impact,
                     time: self.t,
-                    cam_angle: self.theta0 + self.speed * self.t,
+                    cam_angle: self.cam_angle(),
                     impact_velocity: vn_before,
+                    conjugate: false,
                 });
             }
         }

@@ -28,16 +28,22 @@
 //! acceleration of a follower in permanent contact equals the contact method's to 3e-14.
 
 mod cam;
+mod follower;
 mod forces;
 mod model;
 mod projection;
+mod reduced;
 mod run;
+mod simulation;
 mod solver;
 
-pub use cam::{Event, EventKind, FollowerDynamics, Sample, Simulation, REBOUND_TOLERANCE};
+pub use cam::Multibody;
+pub use follower::{Event, EventKind, FollowerDynamics, Sample, MAX_RATE_STEP, REBOUND_TOLERANCE};
 pub use forces::{effective_modulus, hertz_line_pressure, ForceState, Forces};
 pub use model::{Constraint, ForceElement, RigidBody, System};
+pub use reduced::Reduced;
 pub use run::Run;
+pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
 
 /// What went wrong in a dynamic simulation.
@@ -68,6 +74,32 @@ pub enum DynamicsError {
         iterations: usize,
         /// last constraint residual, 1/s² units of the constraints
         residual: f64,
+    },
+    /// The kinematic analysis failed during a run.
+    #[error("at t = {time} s: {source}")]
+    Analysis {
+        /// time, s
+        time: f64,
+        /// the analysis error
+        source: crate::cam::CamError,
+    },
+    /// A conjugate follower's second curve cuts into the cam: a rigid follower cannot be there.
+    #[error("follower.conjugate: the second curve cuts {} {unit} into the cam at cam angle {}°: a rigid follower cannot be there; give the second curve clearance (`camkin synth` reports the play over a revolution)", crate::human::human(*.depth), crate::human::human(*.angle_deg))]
+    Interference {
+        /// where it cuts deepest, degrees
+        angle_deg: f64,
+        /// how deep, in `unit`
+        depth: f64,
+        /// `m` (a slide) or `rad` (an arm)
+        unit: &'static str,
+    },
+    /// More events than [`MAX_EVENTS_PER_STEP`](self) in one step: the follower chatters.
+    #[error("at t = {time} s: more than {events} lift-offs and impacts in one step: the follower chatters (restitution near 1 with a rebound that never dies down); use a smaller restitution")]
+    Chatter {
+        /// time, s
+        time: f64,
+        /// the limit
+        events: usize,
     },
     /// The kinematic analysis at the start failed.
     #[error("the starting position cannot be analysed: {source}")]

@@ -12,7 +12,7 @@ pub struct Run {
     pub events: Vec<Event>,
 }
 
-impl Simulation {
+impl Simulation<'_> {
     /// Samples the state now and after each of `outputs` intervals of `substeps` steps of `h`
     /// seconds; `progress` is told how many intervals are done, every 1000 of them.
     pub fn run(

@@ -116,7 +116,7 @@ pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
 
 /// The column names of a simulation's time series (`camkin simulate`), each with its unit.
 pub fn sample_columns(u: &Units) -> Vec<String> {
-    vec![
+    let mut c: Vec<String> = vec![
         "time_s".into(),
         "cam_angle_deg".into(),
         format!("position_{}", u.motion_key(0)),
@@ -126,7 +126,11 @@ pub fn sample_columns(u: &Units) -> Vec<String> {
         "in_contact".into(),
         format!("kinematic_position_{}", u.motion_key(0)),
         format!("kinematic_acceleration_{}", u.motion_key(2)),
-    ]
+    ];
+    if u.conjugate {
+        c.push("on_conjugate".into());
+    }
+    c
 }
 
 /// Lengths of a simulation (metres) in the mechanism file's unit: the factor.
@@ -149,7 +153,7 @@ pub fn sample_cells(r: &super::SampleRow, u: &Units) -> Vec<Cell> {
         k * r.kinematic_acceleration,
         None,
     );
-    vec![
+    let mut cells = vec![
         Cell::Num(Some(r.time)),
         Cell::Num(Some(r.cam_angle_deg)),
         Cell::Num(m[0]),
@@ -159,25 +163,37 @@ pub fn sample_cells(r: &super::SampleRow, u: &Units) -> Vec<Cell> {
         Cell::Int(Some(r.in_contact)),
         Cell::Num(km[0]),
         Cell::Num(km[2]),
-    ]
+    ];
+    if u.conjugate {
+        cells.push(Cell::Int(Some(r.on_conjugate)));
+    }
+    cells
 }
 
 /// The column names of a simulation's events.
 pub fn event_columns(u: &Units) -> Vec<String> {
-    vec![
+    let mut c: Vec<String> = vec![
         "event".into(),
         "time_s".into(),
         "cam_angle_deg".into(),
         format!("impact_velocity_{}_s", u.len()),
-    ]
+    ];
+    if u.conjugate {
+        c.push("curve".into());
+    }
+    c
 }
 
 /// One event's cells, in the order of [`event_columns`].
 pub fn event_cells(e: &super::EventRow, u: &Units) -> Vec<Cell> {
-    vec![
+    let mut cells = vec![
         Cell::Text(Some(e.event.to_string())),
         Cell::Num(Some(e.time)),
         Cell::Num(Some(e.cam_angle_deg)),
         Cell::Num(Some(e.impact_velocity / u.length.metres())),
-    ]
+    ];
+    if u.conjugate {
+        cells.push(Cell::Text(Some(e.curve.to_string())));
+    }
+    cells
 }

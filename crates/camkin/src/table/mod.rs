@@ -206,6 +206,8 @@ pub struct SampleRow {
     pub contact_force: f64,
     /// 1 while the follower touches the cam, else 0
     pub in_contact: u8,
+    /// 1 while the touching curve is the follower's second curve, else 0
+    pub on_conjugate: u8,
     /// the position the follower would have in permanent contact (the kinematic motion)
     pub kinematic_position: f64,
     /// the acceleration it would have in permanent contact
@@ -224,6 +226,7 @@ impl SampleRow {
             acceleration: s.acceleration,
             contact_force: s.contact_force,
             in_contact: u8::from(s.in_contact),
+            on_conjugate: u8::from(s.on_conjugate),
             kinematic_position: kinematic.map_or(f64::NAN, |k| k.position),
             kinematic_acceleration: kinematic.map_or(f64::NAN, |k| k.acceleration),
         }
@@ -234,7 +237,7 @@ impl SampleRow {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct EventRow {
-    /// `lift-off` or `impact`
+    /// `lift-off`, `impact` or `jump`
     pub event: &'static str,
     /// time, s
     pub time: f64,
@@ -242,6 +245,8 @@ pub struct EventRow {
     pub cam_angle_deg: f64,
     /// normal approach speed at an impact (0 at a lift-off), m/s
     pub impact_velocity: f64,
+    /// the follower's curve: `follower` (its own) or `conjugate` (its second curve)
+    pub curve: &'static str,
 }
 
 impl From<&Event> for EventRow {
@@ -250,7 +255,9 @@ impl From<&Event> for EventRow {
             event: match e.kind {
                 EventKind::LiftOff => "lift-off",
                 EventKind::Impact => "impact",
+                EventKind::Jump => "jump",
             },
+            curve: if e.conjugate { "conjugate" } else { "follower" },
             time: e.time,
             cam_angle_deg: e.cam_angle.to_degrees(),
             impact_velocity: e.impact_velocity,

@@ -10,6 +10,7 @@ mod contact_jumps;
 mod dynamics_contact;
 mod dynamics_liftoff;
 mod dynamics_multibody;
+mod dynamics_reduced;
 mod eccentric_circle;
 mod ellipse_flat;
 mod forces;

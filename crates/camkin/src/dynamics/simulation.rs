@@ -1,0 +1,150 @@
+//! A cam-follower simulation: the multibody model where it applies, the one-coordinate model
+//! where the contact jumps or the follower is form-closed.
+
+use super::{
+    AugmentedLagrangian, DynamicsError, Event, FollowerDynamics, Multibody, Reduced, Sample, System,
+};
+use crate::cam::Mechanism;
+use crate::field::Field;
+
+/// A simulation of a cam (or gear) mechanism's follower with lift-off, impacts and, where the
+/// contact jumps, impacts without flight.
+///
+/// [`Simulation::starting_at`] chooses the model:
+/// - [`Multibody`] (the paper's eq. 11 as a constraint row of a multibody system) for a follower
+///   with one curve whose contact never jumps;
+/// - [`Reduced`] (the follower's one coordinate, driven exactly along the contact method's first
+///   touch) for a follower whose contact jumps (gears at a tooth handover, a flat face across a
+///   concave stretch) or that carries a second curve (a conjugate cam, a gear's coast flanks:
+///   backlash and rattle).
+///
+/// Where both apply they agree (`tests/it/dynamics_reduced.rs`).
+///
+/// ```
+/// use camkin::cam::{Cam, Follower, Mechanism, Sense};
+/// use camkin::curve::Circle;
+/// use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Simulation};
+/// use camkin::{Point2, Vec2};
+/// use std::sync::Arc;
+///
+/// // an eccentric disc (m) at 300 rpm under a flat face; a stiff, preloaded spring keeps the
+/// // follower on the cam, so it follows the kinematic motion s = R + e cos θ
+/// let disc = Arc::new(Circle::new(Point2::new(0.005, 0.0), 0.04)?);
+/// let cam = Cam::from_rpm(disc, Point2::origin(), Sense::Ccw, 300.0)?;
+/// let m = Mechanism::new(cam, Follower::TranslatingFlat { direction: Vec2::x() })?;
+/// let params = FollowerDynamics {
+///     mass: 0.5,
+///     inertia: 0.0,
+///     spring_stiffness: 2.0e4,
+///     spring_preload: 200.0,
+///     damping: 0.0,
+///     restitution: 0.0,
+///     gravity: Vec2::zeros(),
+/// };
+/// let mut sim = Simulation::new(&m, params, AugmentedLagrangian::default())?;
+/// let h = 1f64.to_radians() / m.cam().speed(); // 1° of cam rotation
+/// for _ in 0..90 {
+///     assert!(sim.advance(h)?.is_empty(), "no lift-off");
+/// }
+/// let s = sim.sample()?;
+/// let exact = 0.04 + 0.005 * s.cam_angle.cos();
+/// assert!(s.in_contact && (s.position - exact).abs() < 1e-8);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+#[allow(clippy::large_enum_variant)]
+pub enum Simulation<'a> {
+    /// the multibody model
+    Multibody(Multibody),
+    /// the one-coordinate model
+    Reduced(Reduced<'a>),
+}
+
+impl<'a> Simulation<'a> {
+    /// Starts at cam angle 0; see [`Simulation::starting_at`].
+    pub fn new(
+        mech: &'a Mechanism,
+        params: FollowerDynamics,
+        al: AugmentedLagrangian,
+    ) -> Result<Self, DynamicsError> {
+        Self::starting_at(mech, params, al, 0.0)
+    }
+
+    /// The simulation of `mech` (lengths in metres) with the follower's `params`, starting at
+    /// cam angle `theta0` (rad) at time 0 on the cam at the kinematic position and velocity
+    /// (in flight where the contact force there would be tensile: the first
+    /// [`Simulation::advance`] then reports a lift-off at time 0). `al` sets the multibody
+    /// model's solver.
+    pub fn starting_at(
+        mech: &'a Mechanism,
+        params: FollowerDynamics,
+        al: AugmentedLagrangian,
+        theta0: f64,
+    ) -> Result<Self, DynamicsError> {
+        match Multibody::starting_at(mech, params, al, theta0) {
+            Ok(m) => Ok(Self::Multibody(m)),
+            Err(DynamicsError::ContactJumps { .. } | DynamicsError::FormClosed) => {
+                Reduced::starting_at(mech, params, theta0).map(Self::Reduced)
+            }
+            Err(e) => Err(e),
+        }
+    }
+
+    /// Advances by `h` seconds; the events located inside the step, in time order.
+    pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
+        match self {
+            Self::Multibody(m) => m.advance(h),
+            Self::Reduced(r) => r.advance(h),
+        }
+    }
+
+    /// The state at the current time.
+    pub fn sample(&mut self) -> Result<Sample, DynamicsError> {
+        match self {
+            Self::Multibody(m) => m.sample(),
+            Self::Reduced(r) => r.sample(),
+        }
+    }
+
+    /// The current time, s.
+    pub fn time(&self) -> f64 {
+        match self {
+            Self::Multibody(m) => m.time(),
+            Self::Reduced(r) => r.time(),
+        }
+    }
+
+    /// The follower's fastest free rate (1/s) and the parameter that sets it
+    /// ([`FollowerDynamics::fastest_rate`]).
+    pub fn fastest_rate(&self) -> (f64, Field, f64) {
+        match self {
+            Self::Multibody(m) => m.fastest_rate(),
+            Self::Reduced(r) => r.params().fastest_rate(r.is_rotating()),
+        }
+    }
+
+    /// The longest step [`Simulation::advance`] accepts, s ([`FollowerDynamics::max_step`]).
+    pub fn max_step(&self) -> f64 {
+        match self {
+            Self::Multibody(m) => m.max_step(),
+            Self::Reduced(r) => r.params().max_step(r.is_rotating()),
+        }
+    }
+
+    /// The largest `|Φ|` of the active constraints (length or rad); 0 for the one-coordinate
+    /// model, which moves on the contact exactly.
+    pub fn constraint_residual(&self) -> Result<f64, DynamicsError> {
+        match self {
+            Self::Multibody(m) => m.constraint_residual(),
+            Self::Reduced(_) => Ok(0.0),
+        }
+    }
+
+    /// The multibody system, for the multibody model.
+    pub fn system(&self) -> Option<&System> {
+        match self {
+            Self::Multibody(m) => Some(m.system()),
+            Self::Reduced(_) => None,
+        }
+    }
+}
