@@ -128,15 +128,16 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     .map_err(dyn_err)?;
     if let Simulation::Reduced(_) = &sim {
         // the one-coordinate model searches each curve's first touch, warm and cold, every step,
-        // and by bisection at every event: measured, about 12 cold searches a step and curve
-        // (a rattling gear pair with backlash: 21 ms a step)
+        // and by bisection at every event: measured, 4 (an ideal gear pair, 0.5° steps) to 12 (a
+        // gear pair rattling in its backlash, 1° steps: 21 ms a step) cold searches a step and
+        // curve; the bound is for runs of hours, so it takes 6 (the probe is a wall time)
         let probe = std::time::Instant::now();
         for k in 0..8 {
             let _ = mech.motion(f64::from(k) * 0.7);
         }
         let per_search = probe.elapsed().as_secs_f64() / 8.0;
         let sides = if mech.is_conjugate() { 2.0 } else { 1.0 };
-        let seconds = steps * sides * 12.0 * per_search;
+        let seconds = steps * sides * 6.0 * per_search;
         if seconds > 60.0 && !args.large {
             return Err(Failure::Input(anyhow!(
                 "{} steps of this mechanism (its contact jumps or it has a second curve: each step searches every curve's first touch) would take about {} s; pass --large to run it, or simulate fewer --revolutions",
