@@ -219,13 +219,17 @@ impl<'a> Reduced<'a> {
 
     /// Refuses a second curve that cuts into the cam anywhere (sampled every 0.25°).
     fn check_interference(&self) -> Result<(), DynamicsError> {
-        let (mut s0, mut s1) = (self.sides[0].mech.sweep(), self.sides[1].mech.sweep());
+        // the play as the mechanism defines it (`Mechanism::conjugate_play`), swept
+        let mech = self.sides[0].mech;
+        let mut sweep = mech.sweep();
+        let Some(mut second) = mech.conjugate_sweep() else {
+            return Ok(());
+        };
         let mut worst = (f64::INFINITY, 0.0);
         for k in 0..1440 {
             let theta = f64::from(k) * 0.25f64.to_radians();
-            let o1 = self.sides[0].map * s0.step_motion(theta).map_err(kinematics)?.position;
-            let o2 = self.sides[1].map * s1.step_motion(theta).map_err(kinematics)?.position;
-            let play = self.unwrap(o2, o1) - o1;
+            let state = sweep.step(theta).map_err(kinematics)?;
+            let play = second.play(&state).map_err(kinematics)?;
             if play < worst.0 {
                 worst = (play, theta);
             }
