@@ -27,6 +27,7 @@ mod jumps;
 mod kinematics;
 mod mechanism;
 mod options;
+mod overtake;
 mod search;
 mod starts;
 mod state;

@@ -148,7 +148,7 @@ impl Mechanism {
     }
 
     /// The peak of the first-touch function on `[a, b]` by golden-section search: `(u, q)`.
-    fn score_peak(&self, frame: &Frame, a: f64, b: f64) -> Option<(f64, f64)> {
+    pub(super) fn score_peak(&self, frame: &Frame, a: f64, b: f64) -> Option<(f64, f64)> {
         let profile = self.cam.profile.as_ref();
         let score = |u: f64| {
             self.geometry

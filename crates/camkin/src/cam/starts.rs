@@ -86,6 +86,10 @@ pub(crate) struct Sampled {
     /// offset curve turns back at a cusp, where the distance from the path has an extremum
     /// whatever the tangent: those runs are `None`
     path_turn: Vec<Option<(f64, f64)>>,
+    /// for each node of the points' tree, the longest chord from one of its samples to a
+    /// neighbouring sample: its circle grown by it holds the continuous curve between the
+    /// samples (the jump guard's bound, [`Mechanism::overtaken`])
+    pub(super) pad: Vec<f64>,
 }
 
 /// The samples of the two densities of the first-touch search: dense (a non-convex profile's
@@ -115,7 +119,21 @@ impl Sampled {
                 .collect();
             CircleTree::new(&off, Some(&pad))
         });
+        let n = points.len();
+        let chord = |k: usize| (points[(k + 1) % n] - points[k]).norm();
+        let sample_pad: Vec<f64> = (0..n)
+            .map(|k| chord(k).max(chord((k + n - 1) % n)))
+            .collect();
         let points = CircleTree::new(&points, None);
+        let pad = points
+            .nodes
+            .iter()
+            .map(|node| {
+                sample_pad[node.lo as usize..node.hi as usize]
+                    .iter()
+                    .fold(0.0, |a: f64, &b| a.max(b))
+            })
+            .collect();
         let angles: Vec<Option<f64>> = derivs
             .iter()
             .map(|d| (d.d1.norm_squared() > 0.0).then(|| d.d1.y.atan2(d.d1.x)))
@@ -145,6 +163,7 @@ impl Sampled {
             path,
             turn,
             path_turn,
+            pad,
         }
     }
 }
@@ -233,7 +252,7 @@ impl Mechanism {
 
     /// An upper bound of the oriented first-touch score of the cam points within `r` of `c`.
     #[inline]
-    fn score_bound(&self, c: Point2, r: f64) -> Option<f64> {
+    pub(super) fn score_bound(&self, c: Point2, r: f64) -> Option<f64> {
         let interval = self.geometry.model.score_interval(c, r)?;
         Some(self.geometry.joint.oriented_bound(interval))
     }
@@ -281,37 +300,23 @@ impl Mechanism {
         let mut v = BestSample {
             q: Query::new(self, frame, s),
             best: None,
-            above: None,
         };
         s.points.branch_and_bound(frame, &mut v);
         v.best
     }
-
-    /// Whether a dense sample's first-touch score exceeds `threshold` (the sweep's jump guard:
-    /// a sampled score is an exact first touch of that point).
-    pub(crate) fn sample_above(&self, frame: &Frame, threshold: f64) -> bool {
-        let s = &self.index.dense;
-        let mut v = BestSample {
-            q: Query::new(self, frame, s),
-            best: None,
-            above: Some(threshold),
-        };
-        s.points.branch_and_bound(frame, &mut v);
-        v.best.is_some()
-    }
 }
 
 /// What every query of the samples shares.
-struct Query<'a> {
-    m: &'a Mechanism,
-    frame: &'a Frame,
-    s: &'a Sampled,
+pub(super) struct Query<'a> {
+    pub(super) m: &'a Mechanism,
+    pub(super) frame: &'a Frame,
+    pub(super) s: &'a Sampled,
     /// the cam frame's angle: the samples' tangent directions turned to the world
     angle: f64,
 }
 
 impl<'a> Query<'a> {
-    fn new(m: &'a Mechanism, frame: &'a Frame, s: &'a Sampled) -> Self {
+    pub(super) fn new(m: &'a Mechanism, frame: &'a Frame, s: &'a Sampled) -> Self {
         Self {
             m,
             frame,
@@ -322,7 +327,7 @@ impl<'a> Query<'a> {
 
     /// The first-touch score of sample `k`.
     #[inline]
-    fn score(&self, k: usize) -> Option<(f64, f64)> {
+    pub(super) fn score(&self, k: usize) -> Option<(f64, f64)> {
         let profile = self.m.cam.profile.as_ref();
         let u = self.s.params[k];
         self.m
@@ -343,7 +348,7 @@ impl<'a> Query<'a> {
     }
 
     /// Whether the first-touch score is monotone over node `i` of the points' tree.
-    fn score_monotone(&self, i: usize, c: Point2, r: f64) -> bool {
+    pub(super) fn score_monotone(&self, i: usize, c: Point2, r: f64) -> bool {
         self.avoids(
             &self.s.turn,
             i,
@@ -352,11 +357,10 @@ impl<'a> Query<'a> {
     }
 }
 
-/// [`Mechanism::best_sample`]'s query; with `above`, it stops at the first sample above it.
+/// [`Mechanism::best_sample`]'s query.
 struct BestSample<'a> {
     q: Query<'a>,
     best: Option<(f64, f64, f64)>,
-    above: Option<f64>,
 }
 
 impl BestSample<'_> {
@@ -365,11 +369,7 @@ impl BestSample<'_> {
             return;
         };
         let u = self.q.s.params[k];
-        let better = match self.above {
-            Some(t) => sc > t,
-            None => self.best.is_none_or(|b| sc > b.0 || (sc == b.0 && u < b.1)),
-        };
-        if better {
+        if self.best.is_none_or(|b| sc > b.0 || (sc == b.0 && u < b.1)) {
             self.best = Some((sc, u, q));
         }
     }
@@ -380,11 +380,7 @@ impl Visit for BestSample<'_> {
         self.q.m.score_bound(c, r)
     }
     fn floor(&self) -> f64 {
-        match (self.above, self.best) {
-            (Some(_), Some(_)) => f64::INFINITY,
-            (Some(t), None) => t,
-            (None, b) => b.map_or(f64::NEG_INFINITY, |b| b.0),
-        }
+        self.best.map_or(f64::NEG_INFINITY, |b| b.0)
     }
     fn node(&mut self, i: usize) -> bool {
         let n = self.q.s.points.nodes[i];
@@ -399,9 +395,6 @@ impl Visit for BestSample<'_> {
     fn leaf(&mut self, lo: usize, hi: usize) {
         for k in lo..hi {
             self.offer(k);
-            if self.above.is_some() && self.best.is_some() {
-                return;
-            }
         }
     }
 }

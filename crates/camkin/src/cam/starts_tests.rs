@@ -149,16 +149,17 @@ fn pruned_searches_find_what_the_scans_find() {
                     }
                     // the best sample, and the jump guard about it
                     let best = m.best_sample(&frame, s);
-                    let mut v = BestSample {
-                        q: q(),
-                        best: None,
-                        above: None,
-                    };
+                    let mut v = BestSample { q: q(), best: None };
                     scan(&s.points, &mut v);
                     assert_eq!(best, v.best, "best sample, {at}");
                     if let (Some(b), true) = (best, std::ptr::eq(s, &m.index.dense)) {
-                        for t in [b.0 - 1e-9, b.0, b.0 - 0.01] {
-                            assert_eq!(m.sample_above(&frame, t), b.0 > t, "above {t}, {at}");
+                        // a sample above the threshold: the global search decides
+                        for t in [b.0 - 1e-9, b.0 - 0.01] {
+                            assert_eq!(
+                                m.overtaken(0.0, &frame, t, b.1),
+                                super::super::overtake::Overtaken::Sampled,
+                                "above {t}, {at}"
+                            );
                         }
                     }
                     checked += 1;

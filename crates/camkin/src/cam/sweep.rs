@@ -8,6 +8,7 @@
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
 use super::follower::Kind as _;
+use super::overtake::Overtaken;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
 use crate::body::BodyState;
 use crate::geometry::Frame;
@@ -219,21 +220,28 @@ impl<'a> Sweep<'a> {
                 if m.convex {
                     return Ok((t, Found::WarmStart));
                 }
-                // non-convex: another part of the profile touches first if a sample does (a
-                // sampled score is an exact first touch of that point); a knife's or a roller's
-                // reach beside its path can be narrower than the sample spacing, so for them the
-                // global search (crossings of the path) decides
-                let ahead = if m.geometry.model.centre_path().is_some() {
-                    true
+                // non-convex: another part of the profile may touch first. A knife's or a
+                // roller's reach beside its path can be narrower than the sample spacing, so for
+                // them the global search (crossings of the path) decides; for the others the
+                // guard bounds the continuous profile and refines the parts that may be ahead
+                let threshold = m.oriented(t.q) + m.touch_slack();
+                let over = if m.geometry.model.centre_path().is_some() {
+                    Overtaken::Sampled
                 } else {
-                    m.sample_above(frame, m.oriented(t.q) + m.touch_slack())
+                    m.overtaken(theta, frame, threshold, t.u)
                 };
-                if !ahead {
-                    m.check_cusps(theta, frame, t.q)?;
-                    return Ok((t, Found::WarmStart));
-                }
-                let g = m.global_touch(theta, frame)?;
-                if m.oriented(g.q) > m.oriented(t.q) + m.touch_slack() {
+                let g = match over {
+                    Overtaken::No => {
+                        m.check_cusps(theta, frame, t.q)?;
+                        return Ok((t, Found::WarmStart));
+                    }
+                    Overtaken::By(g) => {
+                        m.check_cusps(theta, frame, g.q)?;
+                        g
+                    }
+                    Overtaken::Sampled => m.global_touch(theta, frame)?,
+                };
+                if m.oriented(g.q) > threshold {
                     Ok((
                         g,
                         Found::Jump {
