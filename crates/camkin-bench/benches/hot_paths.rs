@@ -11,7 +11,6 @@
 //! - `sweep_full_state/translating-flat`: the same with every output (`Sweep::step`, no jerk);
 //! - `dynamics/revolution_1deg`: one simulated revolution of the paper's cam, 1° steps.
 use camkin::body::{BodyState, Pose};
-use camkin::cam::{Cam, Follower, Mechanism, Sense};
 use camkin::contact::{
     find_contact, find_contact_indexed, ContactKinematics, CurveIndex, SearchOptions, Surface,
 };
@@ -19,52 +18,10 @@ use camkin::curve::{ClosedSpline, Curve, Ellipse};
 use camkin::reference::{paper_mechanism, paper_profile};
 use camkin::{Point2, Vec2};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use std::sync::Arc;
 
-fn followers() -> Vec<Follower> {
-    vec![
-        Follower::TranslatingFlat {
-            direction: Vec2::x(),
-        },
-        Follower::TranslatingRoller {
-            direction: Vec2::y(),
-            offset: 0.7,
-            roller_radius: 1.2,
-        },
-        Follower::TranslatingKnife {
-            direction: Vec2::new(-1.0, 0.2),
-            offset: -0.4,
-        },
-        Follower::OscillatingFlat {
-            pivot: Point2::new(-3.0, 7.0),
-            face_offset: 0.5,
-            closing: Sense::Cw,
-            initial_angle: (-30f64).to_radians(),
-        },
-        Follower::OscillatingRoller {
-            pivot: Point2::new(-3.0, 7.0),
-            arm_length: 9.0,
-            roller_radius: 1.0,
-            closing: Sense::Cw,
-            initial_angle: (-30f64).to_radians(),
-        },
-    ]
-}
-
-fn mechanism(f: Follower) -> Mechanism {
-    let cam = Cam::from_rpm(
-        Arc::new(paper_profile(false)),
-        Point2::origin(),
-        Sense::Ccw,
-        1000.0,
-    )
-    .expect("cam");
-    let mut m = Mechanism::new(cam, f).expect("mechanism");
-    let mut o = *m.options();
-    o.jerk = false;
-    m.set_options(o);
-    m
-}
+use camkin_bench::scenarios::{
+    paper_dynamics, paper_followers as followers, paper_with as mechanism,
+};
 
 fn spline(c: &mut Criterion) {
     let s = paper_profile(false);
@@ -173,17 +130,9 @@ fn followers_bench(c: &mut Criterion) {
 /// One revolution of the paper's cam (stiff spring, permanent contact) at 1000 rpm with a step
 /// of 1°: the target is 100 revolutions in under a second.
 fn dynamics(c: &mut Criterion) {
-    use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Simulation};
+    use camkin::dynamics::{AugmentedLagrangian, Simulation};
     let m = paper_mechanism(false);
-    let p = FollowerDynamics {
-        mass: 0.005,
-        inertia: 0.0,
-        spring_stiffness: 2.0e4,
-        spring_preload: 200.0,
-        damping: 5.0,
-        restitution: 0.5,
-        gravity: Vec2::zeros(),
-    };
+    let p = paper_dynamics();
     let h = 1f64.to_radians() / m.cam().speed();
     let mut g = c.benchmark_group("dynamics");
     g.sample_size(10);

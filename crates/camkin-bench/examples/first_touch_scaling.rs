@@ -8,24 +8,12 @@
 //! `Sweep::step_motion`). Prints the mean wall time per query and a checksum of the positions.
 
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
-use camkin::curve::ClosedSpline;
 use camkin::{Point2, Vec2};
 use std::hint::black_box;
 use std::sync::Arc;
 use std::time::Instant;
 
-/// A three-lobed cam of radius 40 (±15 %): concave between the lobes (radius of curvature about
-/// 58), sampled at `n` nodes.
-pub fn lobed(n: usize) -> ClosedSpline {
-    let pts: Vec<Point2> = (0..n)
-        .map(|i| {
-            let t = std::f64::consts::TAU * i as f64 / n as f64;
-            let r = 40.0 * (1.0 + 0.15 * (3.0 * t).sin());
-            Point2::new(r * t.cos(), r * t.sin())
-        })
-        .collect();
-    ClosedSpline::new(&pts).expect("a star-shaped polygon")
-}
+use camkin_bench::scenarios::lobed;
 
 /// The follower of each kind used for the count.
 pub fn follower(kind: &str) -> Follower {
