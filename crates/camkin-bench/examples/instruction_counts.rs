@@ -1,5 +1,5 @@
 //! Runs one counted scenario (`scripts/instruction-counts` runs it under callgrind, collecting
-//! only `scenarios::measured`).
+//! only `scenarios::counted_repetitions`).
 //!
 //! `instruction_counts --list`: the scenarios, one per line (`name<TAB>repetitions<TAB>operation`).
 //! `instruction_counts NAME [REPS]`: sets NAME up and repeats its operation REPS times.

@@ -1,6 +1,6 @@
 //! The operations whose instructions are counted (`scripts/instruction-counts`, the
-//! `instruction_counts` example): each is set up first and then repeated inside [`measured`], the
-//! only function whose instructions callgrind collects (`--toggle-collect=*measured*`), so the
+//! `instruction_counts` example): each is set up first and then repeated inside [`counted_repetitions`], the
+//! only function whose instructions callgrind collects (`--toggle-collect=*counted_repetitions*`), so the
 //! count divided by the repetitions is the cost of one operation, set-up excluded.
 
 use camkin::body::BodyState;
@@ -189,7 +189,7 @@ pub fn all() -> Vec<Scenario> {
 
 /// Repeats `f` `reps` times: the only function whose instructions are collected.
 #[inline(never)]
-pub fn measured(reps: usize, mut f: impl FnMut(usize) -> f64) -> f64 {
+pub fn counted_repetitions(reps: usize, mut f: impl FnMut(usize) -> f64) -> f64 {
     let mut acc = 0.0;
     for k in 0..reps {
         acc += f(k);
@@ -206,14 +206,14 @@ fn step_angle(k: usize) -> f64 {
     (k as f64 * 0.05).to_radians()
 }
 
-/// `n` inputs computed before the measured loop (so that it counts no `fmod` or `to_radians`),
-/// taken in turn by [`measured`]'s repetition `k` as `inputs[k % n]` (`n` a power of two).
+/// `n` inputs computed before the counted_repetitions loop (so that it counts no `fmod` or `to_radians`),
+/// taken in turn by [`counted_repetitions`]'s repetition `k` as `inputs[k % n]` (`n` a power of two).
 fn inputs(n: usize, f: impl Fn(usize) -> f64) -> Vec<f64> {
     debug_assert!(n.is_power_of_two());
     (0..n).map(f).collect()
 }
 
-/// Sets scenario `name` up and runs [`measured`] `reps` times; `None` for an unknown name.
+/// Sets scenario `name` up and runs [`counted_repetitions`] `reps` times; `None` for an unknown name.
 pub fn run(name: &str, reps: usize) -> Option<f64> {
     let (group, kind) = name.split_once('/')?;
     let kind_of = |m: &str| paper_followers().into_iter().find(|f| f.kind_name() == m);
@@ -222,7 +222,7 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
         // the sweep starts with a global search: not a step
         let _ = black_box(s.step_motion(0.0));
         let angles: Vec<f64> = (1..=reps).map(step_angle).collect();
-        measured(reps, |k| {
+        counted_repetitions(reps, |k| {
             let th = angles[k];
             if full {
                 s.step(th).map_or(f64::NAN, |s| s.acceleration)
@@ -235,7 +235,7 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
         ("spline", "eval") => {
             let s = paper_profile(false);
             let u = inputs(1024, |k| k as f64 * 0.37 % 9.0);
-            measured(reps, |k| {
+            counted_repetitions(reps, |k| {
                 let d = s.eval(black_box(u[k & 1023]));
                 d.p.x + d.d1.x + d.d2.x + d.d3.x
             })
@@ -243,14 +243,14 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
         ("spline", "position") => {
             let s = paper_profile(false);
             let u = inputs(1024, |k| k as f64 * 0.37 % 9.0);
-            measured(reps, |k| s.position(black_box(u[k & 1023])).x)
+            counted_repetitions(reps, |k| s.position(black_box(u[k & 1023])).x)
         }
         ("cold", k) => {
             let m = paper_with(kind_of(k)?);
             let th = inputs(1024, |k| {
                 (k as f64 * 137.50776405).rem_euclid(360.0).to_radians()
             });
-            measured(reps, |k| motion(m.motion(th[k & 1023])))
+            counted_repetitions(reps, |k| motion(m.motion(th[k & 1023])))
         }
         ("warm", k) => warm(&paper_with(kind_of(k)?), false),
         ("warm-full", k) => warm(&paper_with(kind_of(k)?), true),
@@ -280,7 +280,7 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
             let (s1, s2) = (star(50.0, 0.1, 3.0), star(20.0, 0.15, 2.0));
             let o = SearchOptions::for_length_scale(50.0);
             let (i1, i2) = (CurveIndex::new(&s1, &o), CurveIndex::new(&s2, &o));
-            measured(reps, |k| {
+            counted_repetitions(reps, |k| {
                 let b1 = BodyState::at_rest(camkin::body::Pose::new(Point2::origin(), 0.0));
                 let b2 = BodyState::at_rest(camkin::body::Pose::new(
                     Point2::new(78.0, 3.0),
@@ -296,7 +296,7 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
             let h = 1f64.to_radians() / m.cam().speed();
             let mut sim = Simulation::new(&m, paper_dynamics(), AugmentedLagrangian::default())
                 .expect("simulation");
-            measured(reps, |_| {
+            counted_repetitions(reps, |_| {
                 let e = sim.advance(h).map_or(0, |e| e.len());
                 e as f64 + sim.sample().map_or(f64::NAN, |s| s.position)
             })

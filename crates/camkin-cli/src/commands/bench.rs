@@ -25,6 +25,140 @@ pub struct BenchArgs {
     /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
+    /// Also count the instructions of a cold query, a warm step and a full-state warm step with
+    /// valgrind's callgrind (which must be installed: Debian's package `valgrind`); they do not
+    /// depend on the machine's load. JSON key `instructions`.
+    #[arg(long)]
+    pub instructions: bool,
+    /// Internal: run only this counted operation (what `--instructions` runs under callgrind).
+    #[arg(long, hide = true, value_enum)]
+    pub count_operation: Option<Counted>,
+    /// Internal: repetitions of the counted operation.
+    #[arg(long, hide = true, default_value_t = 1000)]
+    pub count_reps: usize,
+}
+
+/// The operations `--instructions` counts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Counted {
+    /// a query at an arbitrary angle (`Mechanism::motion`)
+    Cold,
+    /// a step of a 0.05° sweep (`Sweep::step_motion`)
+    Warm,
+    /// a step of a 0.05° sweep with every output but the jerk (`Sweep::step`)
+    WarmFull,
+}
+
+impl Counted {
+    const ALL: [(Counted, &'static str, usize); 3] = [
+        (Counted::Cold, "cold_query", 300),
+        (Counted::Warm, "warm_step", 2000),
+        (Counted::WarmFull, "warm_step_full_state", 2000),
+    ];
+}
+
+/// Repeats `f` `reps` times: the only function whose instructions callgrind collects.
+#[inline(never)]
+fn counted_repetitions(reps: usize, mut f: impl FnMut(usize) -> f64) -> f64 {
+    let mut acc = 0.0;
+    for k in 0..reps {
+        acc += f(k);
+    }
+    black_box(acc)
+}
+
+/// Runs `op` `reps` times on `mech` (set-up outside [`counted_repetitions`]).
+fn run_counted(mech: &camkin::cam::Mechanism, op: Counted, reps: usize) -> f64 {
+    match op {
+        Counted::Cold => {
+            let th: Vec<f64> = (0..reps)
+                .map(|k| (k as f64 * 137.50776405).rem_euclid(360.0).to_radians())
+                .collect();
+            counted_repetitions(reps, |k| use_motion(mech.motion(th[k])))
+        }
+        Counted::Warm | Counted::WarmFull => {
+            let th: Vec<f64> = (1..=reps)
+                .map(|k| (k as f64 * SWEEP_STEP_DEG).to_radians())
+                .collect();
+            let mut s = mech.sweep();
+            let _ = black_box(s.step_motion(0.0));
+            counted_repetitions(reps, |k| {
+                if op == Counted::Warm {
+                    use_motion(s.step_motion(th[k]))
+                } else {
+                    s.step(th[k]).map_or(0.0, |s| s.acceleration)
+                }
+            })
+        }
+    }
+}
+
+fn valgrind_missing() -> Failure {
+    Failure::Input(anyhow!(
+        "--instructions counts with valgrind's callgrind, and valgrind was not found (Debian: apt-get install valgrind)"
+    ))
+}
+
+/// Fails, before anything is timed, when `--instructions` cannot count.
+fn valgrind_present() -> Result<(), Failure> {
+    std::process::Command::new("valgrind")
+        .arg("--version")
+        .output()
+        .map(|_| ())
+        .map_err(|_| valgrind_missing())
+}
+
+/// Instructions per operation of each [`Counted`] operation, counted by running this command
+/// under callgrind (collecting only [`counted_repetitions`]).
+fn count_instructions(args: &BenchArgs) -> Result<Map<String, Value>, Failure> {
+    valgrind_present()?;
+    let exe = std::env::current_exe()
+        .map_err(|e| Failure::Internal(anyhow!("cannot find this program to count it: {e}")))?;
+    let dir = tempfile::tempdir()
+        .map_err(|e| Failure::Internal(anyhow!("a temporary directory: {e}")))?;
+    let mut out = Map::new();
+    for (op, key, reps) in Counted::ALL {
+        let file = dir.path().join(format!("{key}.callgrind"));
+        let mut cmd = std::process::Command::new("valgrind");
+        cmd.arg("--tool=callgrind")
+            .arg("--toggle-collect=*counted_repetitions*")
+            .arg(format!("--callgrind-out-file={}", file.display()))
+            .arg(&exe)
+            .arg("bench");
+        if let Some(m) = &args.mechanism {
+            cmd.arg(m);
+        }
+        let op_name = clap::ValueEnum::to_possible_value(&op)
+            .map_or(String::new(), |v| v.get_name().to_string());
+        cmd.args([
+            "--count-operation",
+            &op_name,
+            "--count-reps",
+            &reps.to_string(),
+        ]);
+        let run = cmd.output().map_err(|_| valgrind_missing())?;
+        if !run.status.success() {
+            return Err(Failure::Internal(anyhow!(
+                "counting {key} under callgrind failed: {}",
+                String::from_utf8_lossy(&run.stderr)
+                    .lines()
+                    .last()
+                    .unwrap_or("")
+            )));
+        }
+        let text = std::fs::read_to_string(&file)
+            .map_err(|e| Failure::Internal(anyhow!("reading callgrind's output: {e}")))?;
+        let total: u64 = text
+            .lines()
+            .find_map(|l| l.strip_prefix("summary:"))
+            .and_then(|v| v.trim().parse().ok())
+            .ok_or_else(|| Failure::Internal(anyhow!("callgrind wrote no summary for {key}")))?;
+        out.insert(
+            key.to_string(),
+            json!((total as f64 / reps as f64).round() as u64),
+        );
+    }
+    Ok(out)
 }
 
 /// What a caller uses of one query: its position, velocity and acceleration, folded into one
@@ -66,6 +200,19 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
     let mut opts = *mech.options();
     opts.jerk = false;
     mech.set_options(opts);
+    if let Some(op) = args.count_operation {
+        if !(1..=1_000_000).contains(&args.count_reps) {
+            return Err(Failure::Input(anyhow!(
+                "--count-reps: {} must be from 1 to 1000000",
+                args.count_reps
+            )));
+        }
+        black_box(run_counted(&mech, op, args.count_reps));
+        return Ok(());
+    }
+    if args.instructions {
+        valgrind_present()?;
+    }
     let r = args.repeats;
     // cold queries and two timed sweeps of SWEEP_REVOLUTIONS revolutions per repetition, one
     // revolution for the baseline's reference, the baseline's nodes twice per repetition
@@ -154,7 +301,12 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
     let check = mech
         .independent_check(&crate::study::check_angles(&answered))
         .map_err(|e| Failure::Internal(anyhow!("independent check: {e}")))?;
-    let out = json!({
+    let instructions = if args.instructions {
+        Some(count_instructions(args)?)
+    } else {
+        None
+    };
+    let mut out = json!({
         "mechanism": args.mechanism.as_ref().map_or("paper (built in)".to_string(), |p| p.display().to_string()),
         "follower": mech.follower().kind_name(),
         "single_query_ns": single * 1e9,
@@ -168,6 +320,9 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
         "independent_check": super::compare::check_json(&check),
         "repeats": r,
     });
+    if let Some(i) = &instructions {
+        out["instructions"] = Value::Object(i.clone());
+    }
     if args.json {
         println!("{out}");
     } else {
@@ -198,6 +353,12 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
             "  independent check (support function, differences in θ) at {} angles: position {:.1e} of the cam's size, velocity {:.1e}, acceleration {:.1e} of their peaks",
             check.angles, check.position, check.velocity, check.acceleration
         );
+        if let Some(i) = &instructions {
+            println!(
+                "  instructions (callgrind): cold query {}, warm step {}, warm step with every output {}",
+                i["cold_query"], i["warm_step"], i["warm_step_full_state"]
+            );
+        }
     }
     Ok(())
 }

@@ -250,6 +250,39 @@ fn bench_runs_and_reports_every_key() {
     camkin().args(["bench", "--repeats", "0"]).assert().code(2);
 }
 
+/// `bench --instructions` counts a cold query, a warm step and a full-state step under callgrind
+/// (scripts/test installs valgrind); without valgrind it refuses before timing anything.
+#[test]
+fn bench_counts_instructions_with_callgrind() {
+    let out = camkin()
+        .args(["bench", "--repeats", "1", "--json", "--instructions"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let n = |k: &str| {
+        j["instructions"][k]
+            .as_u64()
+            .unwrap_or_else(|| panic!("instructions.{k}: {j}"))
+    };
+    let (cold, warm, full) = (n("cold_query"), n("warm_step"), n("warm_step_full_state"));
+    // a warm step is one Newton start and the kinematics: cheaper than a search, dearer than
+    // a spline evaluation; every output costs more than position, velocity and acceleration
+    assert!(warm > 200 && warm < cold && warm < full, "{j}");
+    assert!(
+        j["single_query_ns"].as_f64().is_some(),
+        "the wall-time keys stay: {j}"
+    );
+    camkin()
+        .env("PATH", "")
+        .args(["bench", "--repeats", "1", "--instructions"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("valgrind was not found"));
+}
+
 /// Issue 12, class 6: a study estimated at over a minute, 2 GB of memory or 1 GB of files is
 /// refused up front with the estimate and the flag that allows it, and writes nothing.
 #[test]

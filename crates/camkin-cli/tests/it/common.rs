@@ -33,6 +33,11 @@ impl Cmd {
         self.0.args(a);
         self
     }
+    /// Sets an environment variable of the child.
+    pub fn env(&mut self, k: impl AsRef<OsStr>, v: impl AsRef<OsStr>) -> &mut Self {
+        self.0.env(k, v);
+        self
+    }
     /// Sends standard output to `file` instead of capturing it.
     pub fn stdout_to(&mut self, file: std::fs::File) -> &mut Self {
         self.0.stdout(file);
