@@ -158,6 +158,11 @@ pub fn all() -> Vec<Scenario> {
         );
     }
     add(
+        "floor/translating-flat".into(),
+        "a hand-written warm step of the flat face on the paper's cam (the floor)",
+        2_000,
+    );
+    add(
         "warm-full/translating-flat".into(),
         "a step of a 0.05° sweep, every output but the jerk (Sweep::step)",
         2_000,
@@ -195,6 +200,65 @@ pub fn counted_repetitions(reps: usize, mut f: impl FnMut(usize) -> f64) -> f64 
         acc += f(k);
     }
     black_box(acc)
+}
+
+/// The floor of a warm step: a hand-written sweep of the paper's cam (counter-clockwise at `w`
+/// rad/s about the origin) under a flat face along x, with nothing general in it. The contact
+/// is where the turned tangent is normal to x: `g(u) = (R p'(u))·x = 0`, one Newton step from
+/// the previous parameter extrapolated to second order (a start off by O(Δθ³), so one step
+/// leaves O(Δθ⁶)), Newton again while the step is not tiny; then `q = (R p)·x`,
+/// `q̇ = ω (J R p)·x` and `q̈ = −ω² (R p)·x + ω u̇ (J R p')·x` with `u̇ = −ω (J R p')·x / (R p'')·x`
+/// (`J` the quarter turn).
+#[derive(Debug, Clone)]
+pub struct FloorFlat {
+    profile: ClosedSpline,
+    w: f64,
+    u: f64,
+    /// `du/dθ` and `d²u/dθ²` (from the last two rates)
+    du: f64,
+    d2u: f64,
+    theta: f64,
+}
+
+impl FloorFlat {
+    /// Starts at `theta` from the contact parameter `u` (a global search's).
+    pub fn new(w: f64, theta: f64, u: f64) -> Self {
+        Self {
+            profile: paper_profile(false),
+            w,
+            u,
+            du: 0.0,
+            d2u: 0.0,
+            theta,
+        }
+    }
+
+    /// Position, velocity and acceleration at `theta`.
+    #[inline]
+    pub fn step(&mut self, theta: f64) -> [f64; 3] {
+        let (s, c) = theta.sin_cos();
+        // x-components of R v and of J R v
+        let rx = |v: Vec2| c * v.x - s * v.y;
+        let jrx = |v: Vec2| -(s * v.x + c * v.y);
+        let h = theta - self.theta;
+        let mut u = self.u + h * (self.du + 0.5 * h * self.d2u);
+        let mut d = self.profile.eval(u);
+        for _ in 0..8 {
+            let step = rx(d.d1) / rx(d.d2);
+            u -= step;
+            d = self.profile.eval(u);
+            if step.abs() <= 1e-7 {
+                break;
+            }
+        }
+        let w = self.w;
+        let rate = -w * jrx(d.d1) / rx(d.d2);
+        let du = rate / w;
+        self.d2u = if h != 0.0 { (du - self.du) / h } else { 0.0 };
+        (self.u, self.du, self.theta) = (u, du, theta);
+        let p = d.p.coords;
+        [rx(p), w * jrx(p), -w * w * rx(p) + w * rate * jrx(d.d1)]
+    }
 }
 
 fn motion(r: Result<camkin::cam::Motion, camkin::cam::CamError>) -> f64 {
@@ -253,6 +317,35 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
             counted_repetitions(reps, |k| motion(m.motion(th[k & 1023])))
         }
         ("warm", k) => warm(&paper_with(kind_of(k)?), false),
+        ("floor", "translating-flat") => {
+            let m = paper_with(kind_of("translating-flat")?);
+            let first = m.analyze(0.0).ok()?;
+            // the floor is only a floor if it computes the same: a revolution against the library
+            let mut check = FloorFlat::new(m.cam().speed(), 0.0, first.cam_param);
+            for k in 1..=7200 {
+                let th = step_angle(k);
+                let got = check.step(th);
+                let lib = m.motion(th).expect("the paper's cam");
+                let want = [lib.position, lib.velocity, lib.acceleration];
+                let scale = [
+                    m.size(),
+                    m.size() * m.cam().speed(),
+                    m.size() * m.cam().speed().powi(2),
+                ];
+                for i in 0..3 {
+                    assert!(
+                        (got[i] - want[i]).abs() <= 1e-12 * scale[i],
+                        "the hand-written flat-face step differs from the library at {th} rad: {got:?} vs {want:?}"
+                    );
+                }
+            }
+            let mut f = FloorFlat::new(m.cam().speed(), 0.0, first.cam_param);
+            let angles: Vec<f64> = (1..=reps).map(step_angle).collect();
+            counted_repetitions(reps, |k| {
+                let [q, v, a] = f.step(angles[k]);
+                q + v + a
+            })
+        }
         ("warm-full", k) => warm(&paper_with(kind_of(k)?), true),
         ("warm-nonconvex", k) => {
             let cam = Cam::from_rpm(Arc::new(lobed(1000)), Point2::origin(), Sense::Ccw, 100.0)

@@ -257,9 +257,9 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
         black_box(acc);
     }) / long.len() as f64;
     let threads = rayon::current_num_threads();
-    let chunk = long.len().div_ceil(threads);
+    // the chunks of `Mechanism::analyze_all`: fixed angles, whatever the number of threads
     let parallel = median_time(r, || {
-        long.par_chunks(chunk).for_each(|c| {
+        long.par_chunks(camkin::cam::SWEEP_CHUNK).for_each(|c| {
             let mut s = mech.sweep();
             let mut acc = 0.0;
             for &t in c {

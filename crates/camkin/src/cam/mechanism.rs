@@ -11,6 +11,10 @@ use crate::curve::{Curve, Domain};
 use crate::field::{Field, ProfileField};
 use std::sync::Arc;
 
+/// Angles per chunk of [`Mechanism::analyze_all`]: each chunk is one warm-started sweep (a
+/// global search, then about 1 µs a step), so a chunk is a few milliseconds of work.
+pub const SWEEP_CHUNK: usize = 2048;
+
 impl Mechanism {
     /// Validates and prepares a mechanism.
     pub fn new(cam: Cam, follower: Follower) -> Result<Self, CamError> {
@@ -283,19 +287,17 @@ impl Mechanism {
         Sweep::new(self)
     }
 
-    /// The states at the cam angles `angles_deg` (degrees): a warm-started [`Sweep`] when
-    /// `contiguous` (the angles trace the motion), else a cold query at each.
+    /// The states at the cam angles `angles_deg` (degrees): warm-started sweeps
+    /// ([`Mechanism::analyze_all`]) when `contiguous` (the angles trace the motion), else a cold
+    /// query at each.
     pub fn analyze_deg_each(
         &self,
         angles_deg: &[f64],
         contiguous: bool,
     ) -> Vec<Result<FollowerState, CamError>> {
         if contiguous {
-            let mut sweep = self.sweep();
-            angles_deg
-                .iter()
-                .map(|a| sweep.step(a.to_radians()))
-                .collect()
+            let thetas: Vec<f64> = angles_deg.iter().map(|a| a.to_radians()).collect();
+            self.analyze_all(&thetas)
         } else {
             angles_deg
                 .iter()
@@ -304,9 +306,57 @@ impl Mechanism {
         }
     }
 
-    /// Analyses every angle of `thetas` (rad) in order with a warm-started [`Sweep`].
+    /// Analyses every angle of `thetas` (rad) in order with warm-started [`Sweep`]s, one for
+    /// each chunk of [`SWEEP_CHUNK`] angles, on several threads (feature `parallel`, on by
+    /// default). The chunks are fixed by the angles' positions, not by the number of threads,
+    /// and each starts from a global search at the angle before its first (so the jump guard
+    /// sees the step into it, as a single sweep would): the results do not depend on the number
+    /// of threads, bit for bit, and differ from one sweep through every angle only by rounding
+    /// (the warm start's extrapolation restarts at each chunk).
     pub fn analyze_all(&self, thetas: &[f64]) -> Vec<Result<FollowerState, CamError>> {
-        let mut s = self.sweep();
-        thetas.iter().map(|&t| s.step(t)).collect()
+        self.analyze_all_after(None, thetas)
+    }
+
+    /// [`Mechanism::analyze_all`] of the angles `thetas` that follow the angle `before` (rad):
+    /// the first chunk also starts from a global search there. `analyze_all` of a long list is
+    /// the same, bit for bit, as this of its consecutive slices of a multiple of [`SWEEP_CHUNK`]
+    /// angles, each after the angle before it (what a front end writing rows in bounded memory
+    /// does).
+    pub fn analyze_all_after(
+        &self,
+        before: Option<f64>,
+        thetas: &[f64],
+    ) -> Vec<Result<FollowerState, CamError>> {
+        let chunk = |c: usize| -> Vec<Result<FollowerState, CamError>> {
+            let start = c * SWEEP_CHUNK;
+            let end = (start + SWEEP_CHUNK).min(thetas.len());
+            let mut s = self.sweep();
+            // the previous angle's contact, as the sweep reaching it would have it
+            let lead = if start > 0 {
+                Some(thetas[start - 1])
+            } else {
+                before
+            };
+            if let Some(t) = lead {
+                let _ = s.step(t);
+            }
+            thetas[start..end].iter().map(|&t| s.step(t)).collect()
+        };
+        let chunks = thetas.len().div_ceil(SWEEP_CHUNK);
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            (0..chunks)
+                .into_par_iter()
+                .map(chunk)
+                .collect::<Vec<_>>()
+                .into_iter()
+                .flatten()
+                .collect()
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            (0..chunks).flat_map(chunk).collect()
+        }
     }
 }

@@ -43,6 +43,7 @@ pub use contacts::Contact;
 pub use error::{CamError, StopReason};
 pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};
+pub use mechanism::SWEEP_CHUNK;
 pub use options::AnalysisOptions;
 pub use starts::MAX_CANDIDATES;
 pub use state::{FollowerState, Motion};

@@ -1,24 +1,25 @@
-//! The analysis table of a list of cam angles, computed chunk by chunk: one warm-started sweep,
-//! contact jumps marked (also across chunk seams) and lift measured from the follower's rest
+//! The analysis table of a list of cam angles, computed chunk by chunk: the warm-started sweeps
+//! of [`Mechanism::analyze_all`] (on all cores, the same rows whatever the chunk), contact jumps
+//! marked (also across chunk seams) and lift measured from the follower's rest
 //! position. Every front end that writes the table (`camkin analyze`, the Python package) runs
 //! this one loop, so they give the same numbers to the last bit.
 
 use super::AnalysisRow;
-use crate::cam::{contact_jumps_with, CamError, FollowerState, Mechanism, Sweep, Travel};
+use crate::cam::{contact_jumps_with, CamError, FollowerState, Mechanism, Travel, SWEEP_CHUNK};
 use crate::geometry::deg_to_rad;
 
 /// How many jumped rows [`AnalysisSweep::jump_at`] keeps.
 pub const JUMPS_KEPT: usize = 50;
 
-/// The rows of the analysis at `angles_deg`, a chunk of at most `chunk` rows per
-/// [`Iterator::next`]; memory stays bounded whatever the number of angles.
+/// The rows of the analysis at `angles_deg`, a chunk of at most `chunk` rows (rounded up to a
+/// multiple of [`SWEEP_CHUNK`]) per [`Iterator::next`]; memory stays bounded whatever the number
+/// of angles.
 #[derive(Debug)]
 pub struct AnalysisSweep<'a> {
     mech: &'a Mechanism,
     angles: &'a [f64],
     contiguous: bool,
     chunk: usize,
-    sweep: Sweep<'a>,
     conjugate: Option<crate::cam::ConjugateSweep<'a>>,
     stretches: Vec<(f64, f64)>,
     travel: Result<Travel, CamError>,
@@ -60,8 +61,8 @@ impl<'a> AnalysisSweep<'a> {
             mech,
             angles: angles_deg,
             contiguous,
-            chunk: chunk.max(1),
-            sweep: mech.sweep(),
+            // whole chunks of `Mechanism::analyze_all`, so that the rows are the same as its
+            chunk: chunk.max(1).next_multiple_of(SWEEP_CHUNK),
             conjugate: mech.conjugate_sweep(),
             stretches,
             travel,
@@ -112,7 +113,12 @@ impl Iterator for AnalysisSweep<'_> {
         // the previous chunk's last result leads, so that a jump across the seam is seen
         let mut results: Vec<_> = self.prev.take().into_iter().collect();
         let lead = results.len();
-        results.extend(chunk.iter().map(|&a| self.sweep.step(deg_to_rad(a))));
+        let thetas: Vec<f64> = chunk.iter().map(|&a| deg_to_rad(a)).collect();
+        let before = self
+            .start
+            .checked_sub(1)
+            .map(|k| deg_to_rad(self.angles[k]));
+        results.extend(self.mech.analyze_all_after(before, &thetas));
         let jumps = contact_jumps_with(self.mech, &self.stretches, &results, self.contiguous);
         let mut rows = Vec::with_capacity(chunk.len());
         for (k, ((&a, r), &j)) in chunk

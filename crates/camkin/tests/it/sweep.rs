@@ -229,3 +229,87 @@ fn warm_sweep_on_a_folded_motion_profile_agrees_with_single_queries() {
         );
     }
 }
+
+/// Issue 17: a sweep of many angles runs in fixed chunks on rayon's threads. On 1, 2 and 3
+/// threads the rows are the same bit for bit (the chunks do not depend on the thread count), and
+/// they agree with one sweep through every angle to rounding, with the same rows flagged as
+/// jumps (each chunk starts at the angle before its first), for every follower on the paper's
+/// cam and on a cam with dents.
+#[test]
+fn analyze_all_does_not_depend_on_the_thread_count() {
+    use camkin::cam::SWEEP_CHUNK;
+    let n = 4 * SWEEP_CHUNK + 123;
+    // 0.11° steps: four chunk boundaries, and several revolutions' jumps on the dented cam
+    let thetas: Vec<f64> = (0..n).map(|k| (k as f64 * 0.11).to_radians()).collect();
+    let bits = |r: &Result<camkin::cam::FollowerState, camkin::cam::CamError>| {
+        r.as_ref()
+            .map(|s| {
+                (
+                    s.position.to_bits(),
+                    s.velocity.to_bits(),
+                    s.acceleration.to_bits(),
+                    matches!(s.found, Found::Jump { .. }),
+                )
+            })
+            .map_err(|e| e.to_string())
+    };
+    let mut jumps = 0;
+    for profile in [
+        paper_profile(false),
+        peanut() as Arc<dyn camkin::curve::Curve>,
+    ] {
+        for f in all_followers(Point2::origin()) {
+            let m = mechanism(profile.clone(), Point2::origin(), Sense::Ccw, 600.0, f);
+            let on = |threads: usize| {
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .unwrap()
+                    .install(|| m.analyze_all(&thetas))
+            };
+            let one: Vec<_> = on(1).iter().map(bits).collect();
+            for threads in [2, 3] {
+                let other: Vec<_> = on(threads).iter().map(bits).collect();
+                assert!(
+                    one == other,
+                    "{}: {threads} threads differ from one",
+                    m.follower().kind_name()
+                );
+            }
+            // one sweep through every angle
+            let mut s = m.sweep();
+            let serial: Vec<_> = thetas.iter().map(|&t| s.step(t)).collect();
+            let chunked = on(2);
+            let peak = serial
+                .iter()
+                .filter_map(|r| r.as_ref().ok())
+                .fold(0.0f64, |p, s| p.max(s.acceleration.abs()));
+            for (k, (a, b)) in serial.iter().zip(&chunked).enumerate() {
+                let what = format!("{} row {k}", m.follower().kind_name());
+                let (a, b) = match (a, b) {
+                    (Ok(a), Ok(b)) => (a, b),
+                    (Err(x), Err(y)) => {
+                        assert_eq!(x.to_string(), y.to_string(), "{what}");
+                        continue;
+                    }
+                    _ => panic!("{what}: one sweep {a:?}, the chunks {b:?}"),
+                };
+                assert!(
+                    (a.position - b.position).abs() <= 1e-13 * m.size(),
+                    "{what}: position"
+                );
+                assert!(
+                    (a.acceleration - b.acceleration).abs() <= 1e-11 * peak,
+                    "{what}: acceleration"
+                );
+                assert_eq!(
+                    matches!(a.found, Found::Jump { .. }),
+                    matches!(b.found, Found::Jump { .. }),
+                    "{what}: jump flag"
+                );
+                jumps += usize::from(matches!(a.found, Found::Jump { .. }));
+            }
+        }
+    }
+    assert!(jumps > 0, "the dented cam's jumps are compared too");
+}
