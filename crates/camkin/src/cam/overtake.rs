@@ -88,31 +88,34 @@ impl Overtake<'_> {
         }
     }
 
-    /// Whether the parameter interval from sample `k − 1` to sample `k + 1` holds `own`.
-    fn holds_own(&self, k: usize) -> bool {
+    /// Sample `k`'s parameter and its distances to samples `k − 1` and `k + 1`, and whether the
+    /// interval between those holds the parameter `x` (modulo the period).
+    fn around(&self, k: usize) -> (f64, f64, f64, impl Fn(f64) -> bool) {
         let (s, n, period) = (&self.q.s.params, self.q.s.params.len(), self.q.m.period);
         let u = s[k];
         let ahead = (s[(k + 1) % n] - u).rem_euclid(period);
         let behind = (u - s[(k + n - 1) % n]).rem_euclid(period);
-        (self.own - u).rem_euclid(period) <= ahead || (u - self.own).rem_euclid(period) <= behind
+        let holds = move |x: f64| {
+            (x - u).rem_euclid(period) <= ahead || (u - x).rem_euclid(period) <= behind
+        };
+        (u, behind, ahead, holds)
+    }
+
+    /// Whether the parameter interval from sample `k − 1` to sample `k + 1` holds `own`.
+    fn holds_own(&self, k: usize) -> bool {
+        (self.around(k).3)(self.own)
     }
 
     /// The exact tangency of the sampled local maximum at `k` (its peak lies between samples
     /// `k − 1` and `k + 1`): Newton from the sample, else from the peak of the score there.
     fn refine(&mut self, k: usize, q0: f64) {
         let m = self.q.m;
-        let (s, n, period) = (&self.q.s.params, self.q.s.params.len(), m.period);
-        let u = s[k];
-        let ahead = (s[(k + 1) % n] - u).rem_euclid(period);
-        let behind = (u - s[(k + n - 1) % n]).rem_euclid(period);
-        let inside = |t: &Touch| {
-            (t.u - u).rem_euclid(period) <= ahead || (u - t.u).rem_euclid(period) <= behind
-        };
+        let (u, behind, ahead, holds) = self.around(k);
         let frame = self.q.frame;
         let attempt = |u0: f64, q0: f64| {
             m.newton(self.theta, frame, u0, q0)
                 .ok()
-                .filter(|t| inside(t) && m.is_first_touch(frame, t))
+                .filter(|t| holds(t.u) && m.is_first_touch(frame, t))
         };
         let t = attempt(u, q0).or_else(|| {
             let (u1, q1) = m.score_peak(frame, u - behind, u + ahead)?;
