@@ -14,13 +14,13 @@ use camkin::body::{BodyState, Pose};
 use camkin::contact::{
     find_contact, find_contact_indexed, ContactKinematics, CurveIndex, SearchOptions, Surface,
 };
-use camkin::curve::{ClosedSpline, Curve, Ellipse};
+use camkin::curve::{Curve, Ellipse};
 use camkin::reference::{paper_mechanism, paper_profile};
 use camkin::{Point2, Vec2};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 
 use camkin_bench::scenarios::{
-    paper_dynamics, paper_followers as followers, paper_with as mechanism,
+    paper_dynamics, paper_followers as followers, paper_with as mechanism, star,
 };
 
 fn spline(c: &mut Criterion) {
@@ -58,16 +58,6 @@ fn contact(c: &mut Criterion) {
     });
     let p = find_contact(&sa, &sb, &opts).expect("pair").pairing();
     // two wavy closed splines of 1000 nodes, 8 mm apart
-    let star = |r: f64, wobble: f64, lobes: f64| {
-        let pts: Vec<Point2> = (0..1000)
-            .map(|i| {
-                let t = std::f64::consts::TAU * f64::from(i) / 1000.0;
-                let rr = r * (1.0 + wobble * (lobes * t).sin());
-                Point2::new(rr * t.cos(), rr * t.sin())
-            })
-            .collect();
-        ClosedSpline::new(&pts).expect("star")
-    };
     let (s1, s2) = (star(50.0, 0.1, 3.0), star(20.0, 0.15, 2.0));
     let b1 = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
     let b2 = BodyState::at_rest(Pose::new(Point2::new(78.0, 3.0), 0.0));

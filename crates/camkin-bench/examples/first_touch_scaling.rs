@@ -7,45 +7,13 @@
 //! arbitrary cam angle, `Mechanism::motion`) or `warm` (a step of a 0.05° sweep,
 //! `Sweep::step_motion`). Prints the mean wall time per query and a checksum of the positions.
 
-use camkin::cam::{Cam, Follower, Mechanism, Sense};
-use camkin::{Point2, Vec2};
+use camkin::cam::{Cam, Mechanism, Sense};
+use camkin::Point2;
 use std::hint::black_box;
 use std::sync::Arc;
 use std::time::Instant;
 
-use camkin_bench::scenarios::lobed;
-
-/// The follower of each kind used for the count.
-pub fn follower(kind: &str) -> Follower {
-    match kind {
-        "translating-flat" => Follower::TranslatingFlat {
-            direction: Vec2::y(),
-        },
-        "translating-roller" => Follower::TranslatingRoller {
-            direction: Vec2::y(),
-            offset: 5.0,
-            roller_radius: 8.0,
-        },
-        "translating-knife" => Follower::TranslatingKnife {
-            direction: Vec2::y(),
-            offset: 3.0,
-        },
-        "oscillating-flat" => Follower::OscillatingFlat {
-            pivot: Point2::new(-30.0, 80.0),
-            face_offset: 5.0,
-            closing: Sense::Cw,
-            initial_angle: (-20f64).to_radians(),
-        },
-        "oscillating-roller" => Follower::OscillatingRoller {
-            pivot: Point2::new(-60.0, 60.0),
-            arm_length: 75.0,
-            roller_radius: 8.0,
-            closing: Sense::Cw,
-            initial_angle: (-20f64).to_radians(),
-        },
-        other => panic!("unknown follower kind {other}"),
-    }
-}
+use camkin_bench::scenarios::{lobed, lobed_follower};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -54,7 +22,11 @@ fn main() {
     let mode = args.get(3).map_or("cold", String::as_str);
     let reps: usize = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(100);
     let cam = Cam::from_rpm(Arc::new(lobed(n)), Point2::origin(), Sense::Ccw, 100.0).expect("cam");
-    let mut m = Mechanism::new(cam, follower(kind)).expect("mechanism");
+    let mut m = Mechanism::new(
+        cam,
+        lobed_follower(kind).unwrap_or_else(|| panic!("unknown follower kind {kind}")),
+    )
+    .expect("mechanism");
     let mut o = *m.options();
     o.jerk = false;
     m.set_options(o);

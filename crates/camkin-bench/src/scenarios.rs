@@ -104,8 +104,40 @@ pub fn lobed(n: usize) -> ClosedSpline {
     ClosedSpline::new(&pts).expect("a star-shaped polygon")
 }
 
+/// The follower of each kind placed about the [`lobed`] cam; `None` for an unknown kind.
+pub fn lobed_follower(kind: &str) -> Option<Follower> {
+    Some(match kind {
+        "translating-flat" => Follower::TranslatingFlat {
+            direction: Vec2::y(),
+        },
+        "translating-roller" => Follower::TranslatingRoller {
+            direction: Vec2::y(),
+            offset: 5.0,
+            roller_radius: 8.0,
+        },
+        "translating-knife" => Follower::TranslatingKnife {
+            direction: Vec2::y(),
+            offset: 3.0,
+        },
+        "oscillating-flat" => Follower::OscillatingFlat {
+            pivot: Point2::new(-30.0, 80.0),
+            face_offset: 5.0,
+            closing: Sense::Cw,
+            initial_angle: (-20f64).to_radians(),
+        },
+        "oscillating-roller" => Follower::OscillatingRoller {
+            pivot: Point2::new(-60.0, 60.0),
+            arm_length: 75.0,
+            roller_radius: 8.0,
+            closing: Sense::Cw,
+            initial_angle: (-20f64).to_radians(),
+        },
+        _ => return None,
+    })
+}
+
 /// A wavy closed spline of 1000 nodes: radius `r`, `lobes` waves of relative height `wobble`.
-fn star(r: f64, wobble: f64, lobes: f64) -> ClosedSpline {
+pub fn star(r: f64, wobble: f64, lobes: f64) -> ClosedSpline {
     let pts: Vec<Point2> = (0..1000)
         .map(|i| {
             let t = std::f64::consts::TAU * f64::from(i) / 1000.0;
@@ -351,16 +383,7 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
             let cam = Cam::from_rpm(Arc::new(lobed(1000)), Point2::origin(), Sense::Ccw, 100.0)
                 .expect("cam");
             let f = match k {
-                "translating-flat" => Follower::TranslatingFlat {
-                    direction: Vec2::y(),
-                },
-                "oscillating-roller" => Follower::OscillatingRoller {
-                    pivot: Point2::new(-60.0, 60.0),
-                    arm_length: 75.0,
-                    roller_radius: 8.0,
-                    closing: Sense::Cw,
-                    initial_angle: (-20f64).to_radians(),
-                },
+                "translating-flat" | "oscillating-roller" => lobed_follower(k)?,
                 _ => return None,
             };
             warm(
