@@ -15,6 +15,8 @@ struct Cover {
     lo: f64,
     hi: f64,
     u: f64,
+    /// the index of the cam's sample
+    k: usize,
     v_lo: f64,
     v_hi: f64,
     /// converts a change of `q` at this point into a length
@@ -62,7 +64,7 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
         let (m, c) = (self.m, self.c);
         let (lo, hi) = c.level_range;
         let params = &m.index.dense.params[first..last];
-        for (&u, &y) in params.iter().zip(&m.sample_points[first..last]) {
+        for (k, (&u, &y)) in params.iter().zip(&m.sample_points[first..last]).enumerate() {
             let x = self.frame * y;
             // the level first: most points of a large driver are beyond an arm's reach
             let (along, level, scale) = match (c.track, m.geometry.joint) {
@@ -91,6 +93,7 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
                     lo: along - a1,
                     hi: along - a0,
                     u,
+                    k: first + k,
                     v_lo: v1,
                     v_hi: v0,
                     scale,
@@ -98,6 +101,14 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
             }
         }
     }
+}
+
+/// A cover's depth at a follower position: see [`Mechanism::cover_depths`].
+#[derive(Debug, Clone, Copy)]
+struct Tie<'a> {
+    depth: f64,
+    q: f64,
+    cover: &'a Cover,
 }
 
 /// Most starts tried by Newton in one global search.
@@ -375,9 +386,9 @@ impl Mechanism {
         };
         self.corners_outside(c, theta, frame, t)?;
         let (slack, window) = self.tie_window(c);
-        let mut ties: Vec<(f64, f64, &Cover)> = Vec::new();
-        for (depth, q, k) in self.cover_depths(t, covers) {
-            if depth > slack {
+        let mut ties: Vec<Tie<'_>> = Vec::new();
+        for tie in self.cover_depths(t, covers) {
+            if tie.depth > slack {
                 return Err(CamError::NoConvergence {
                     angle_deg,
                     reason: StopReason::BehindSample,
@@ -386,8 +397,8 @@ impl Mechanism {
             // a near tie elsewhere on the cam: the samples cannot tell which touches first (a
             // sample can miss an overlap shallower than its spacing's sagitta), the exact
             // tangency there can (a gear's next tooth pair, by a fraction of a micron)
-            if depth > -window {
-                ties.push((depth, q, k));
+            if tie.depth > -window {
+                ties.push(tie);
             }
         }
         let tol = self.options.touch_tolerance;
@@ -428,7 +439,7 @@ impl Mechanism {
         &self,
         t: &Touch,
         covers: &'a [Cover],
-    ) -> impl Iterator<Item = (f64, f64, &'a Cover)> + 'a {
+    ) -> impl Iterator<Item = Tie<'a>> + 'a {
         let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
         let tq = t.q;
         covers.iter().map(move |k| {
@@ -438,13 +449,45 @@ impl Mechanism {
             } else {
                 tq
             };
-            ((q - k.lo).min(k.hi - q) * k.scale, q, k)
+            Tie {
+                depth: (q - k.lo).min(k.hi - q) * k.scale,
+                q,
+                cover: k,
+            }
         })
     }
 
+    /// Whether the sample of cam parameter index `k` is the sampled peak of a part of the cam
+    /// other than the contact's at `own`: at least as deep as both neighbouring samples and not
+    /// next to `own`. `depths`: each tie's sample and depth, sorted (a sample that is not a tie
+    /// is shallower than every tie).
+    fn other_peak(&self, depths: &[(usize, f64)], k: usize, own: f64) -> bool {
+        let params = &self.index.dense.params;
+        let n = params.len();
+        if n < 3 {
+            return false;
+        }
+        let depth_of = |k: usize| {
+            let i = depths.partition_point(|d| d.0 < k);
+            depths[i..]
+                .iter()
+                .take_while(|d| d.0 == k)
+                .map(|d| d.1)
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        let here = depth_of(k);
+        let u = params[k];
+        let ahead = (params[(k + 1) % n] - u).rem_euclid(self.period);
+        let behind = (u - params[(k + n - 1) % n]).rem_euclid(self.period);
+        let holds_own = (own - u).rem_euclid(self.period) <= ahead
+            || (u - own).rem_euclid(self.period) <= behind;
+        here >= depth_of((k + 1) % n) && here >= depth_of((k + n - 1) % n) && !holds_own
+    }
+
     /// Newton on the tangency near each of `ties` (`(depth, q, cover)`, sorted here deepest
-    /// first), one per place at least four sample spacings from `contact` and from the places
-    /// tried before, `places` at most, started at the cover's edge the closing sense reaches
+    /// first), one per place at least four sample spacings from `contact` (or nearer, at the
+    /// sampled peak of another part of the cam) and from the places tried before, `places` at
+    /// most, started at the cover's edge the closing sense reaches
     /// (with `both_edges`, also at its other edge, and when neither gives a tangency there, from
     /// the cam point deepest inside the follower near the sample). Each tangency found is
     /// brought to `t`'s configuration modulo the curve's symmetry (the contact moved to the
@@ -459,7 +502,7 @@ impl Mechanism {
         frame: &Frame,
         t: &Touch,
         contact: Point2,
-        ties: &mut [(f64, f64, &Cover)],
+        ties: &mut [Tie<'_>],
         (places, both_edges): (usize, bool),
         mut f: impl FnMut(Touch, f64) -> Option<bool>,
     ) {
@@ -473,13 +516,18 @@ impl Mechanism {
         let spacing = self.corners.spacing.max(c.chord_error);
         let joint = self.geometry.joint;
         let mut tried: Vec<Point2> = Vec::new();
-        ties.sort_by(|a, b| b.0.total_cmp(&a.0));
-        for &(_, q, k) in ties.iter() {
+        let mut depths: Vec<(usize, f64)> = ties.iter().map(|d| (d.cover.k, d.depth)).collect();
+        depths.sort_unstable_by_key(|d| d.0);
+        ties.sort_by(|a, b| b.depth.total_cmp(&a.depth));
+        for &Tie { q, cover: k, .. } in ties.iter() {
             if tried.len() >= places {
                 break;
             }
             let x = frame * self.cam.profile.position(k.u);
-            if (x - contact).norm() <= 4.0 * spacing
+            // a place within a few samples of one looked at is the same place; near the
+            // contact, unless its sample is the peak of another part of the cam (two parts
+            // crossing: the one taking over touches first by less than the samples can tell)
+            if ((x - contact).norm() <= 4.0 * spacing && !self.other_peak(&depths, k.k, t.u))
                 || tried.iter().any(|y| (x - y).norm() <= 4.0 * spacing)
             {
                 continue;
@@ -591,7 +639,7 @@ impl Mechanism {
         let (_, window) = self.tie_window(c);
         let mut ties: Vec<_> = self
             .cover_depths(t, &covers)
-            .filter(|d| d.0 > -window)
+            .filter(|d| d.depth > -window)
             .collect();
         let Some(sides) = self.carried_sides(c, frame, t) else {
             return;

@@ -2,56 +2,11 @@
 //! involute gear pair (constant ratio `z1/z2`, zero angular acceleration, contact on the line of
 //! action).
 
-use crate::common::{ellipse, mechanism, paper_profile};
-use camkin::cam::{Cam, Follower, FollowerCurve, FollowerProfile, Found, Mechanism, Sense};
-use camkin::curve::{Curve, InvoluteGear, InvoluteGearSpec, Line};
+use crate::common::{ellipse, general_of, mechanism, paper_profile};
+use camkin::cam::{Cam, Follower, FollowerProfile, Found, Mechanism, Sense};
+use camkin::curve::{InvoluteGear, InvoluteGearSpec};
 use camkin::{Point2, Vec2};
 use std::sync::Arc;
-
-/// The general follower equivalent to a named one: the named kind's contact curve on the same
-/// joint (a translating follower's curve turned into the frame along its direction).
-fn general_of(m: &Mechanism) -> Follower {
-    let arc = |c: FollowerCurve| -> Arc<dyn Curve> { c.to_arc() };
-    match m.follower().clone() {
-        // the face x·d = s: the line through the origin along −y of the frame along d
-        Follower::TranslatingFlat { direction } => Follower::Translating {
-            direction,
-            offset: 0.0,
-            profile: FollowerProfile(Arc::new(
-                Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
-            )),
-        },
-        Follower::TranslatingRoller {
-            direction,
-            offset,
-            roller_radius,
-        } => Follower::Translating {
-            direction,
-            offset,
-            profile: FollowerProfile(Arc::new(
-                camkin::curve::Circle::new(Point2::origin(), roller_radius).unwrap(),
-            )),
-        },
-        Follower::OscillatingFlat {
-            pivot,
-            closing,
-            initial_angle,
-            ..
-        }
-        | Follower::OscillatingRoller {
-            pivot,
-            closing,
-            initial_angle,
-            ..
-        } => Follower::Rotating {
-            pivot,
-            closing,
-            initial_angle,
-            profile: FollowerProfile(arc(m.follower_curve())),
-        },
-        other => panic!("no general equivalent written for {other:?}"),
-    }
-}
 
 fn presets() -> Vec<Mechanism> {
     let paper = paper_profile(false);

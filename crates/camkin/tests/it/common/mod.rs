@@ -2,9 +2,9 @@
 //! reference problems with exact answers.
 #![allow(dead_code)]
 
-use camkin::cam::{Cam, Follower, Mechanism, Sense};
-use camkin::curve::{Circle, Curve, Ellipse};
-use camkin::Point2;
+use camkin::cam::{Cam, Follower, FollowerCurve, FollowerProfile, Mechanism, Sense};
+use camkin::curve::{Circle, Curve, Ellipse, Line};
+use camkin::{Point2, Vec2};
 use std::sync::Arc;
 
 /// Central finite-difference derivatives of `f` at `x` with step `h`, of 8th order for the first
@@ -229,5 +229,50 @@ impl std::ops::Add<f64> for HD {
             v: self.v + o,
             ..self
         }
+    }
+}
+
+/// The general follower equivalent to a named one: the named kind's contact curve on the same
+/// joint (a translating follower's curve turned into the frame along its direction).
+pub fn general_of(m: &Mechanism) -> Follower {
+    let arc = |c: FollowerCurve| -> Arc<dyn Curve> { c.to_arc() };
+    match m.follower().clone() {
+        // the face x·d = s: the line through the origin along −y of the frame along d
+        Follower::TranslatingFlat { direction } => Follower::Translating {
+            direction,
+            offset: 0.0,
+            profile: FollowerProfile(Arc::new(
+                Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
+            )),
+        },
+        Follower::TranslatingRoller {
+            direction,
+            offset,
+            roller_radius,
+        } => Follower::Translating {
+            direction,
+            offset,
+            profile: FollowerProfile(Arc::new(
+                camkin::curve::Circle::new(Point2::origin(), roller_radius).unwrap(),
+            )),
+        },
+        Follower::OscillatingFlat {
+            pivot,
+            closing,
+            initial_angle,
+            ..
+        }
+        | Follower::OscillatingRoller {
+            pivot,
+            closing,
+            initial_angle,
+            ..
+        } => Follower::Rotating {
+            pivot,
+            closing,
+            initial_angle,
+            profile: FollowerProfile(arc(m.follower_curve())),
+        },
+        other => panic!("no general equivalent written for {other:?}"),
     }
 }
