@@ -57,6 +57,13 @@ impl Knots {
     /// The segment holding `u` (taken modulo the period) and the local coordinate in it.
     #[inline]
     pub(crate) fn locate(&self, u: f64) -> (usize, f64) {
+        let (i, w) = self.segment_of(u);
+        (i, w - self.u[i])
+    }
+
+    /// The segment holding `u` and `u` taken modulo the period.
+    #[inline(always)]
+    pub(crate) fn segment_of(&self, u: f64) -> (usize, f64) {
         let n = self.segments();
         let p = self.period();
         let w = if (0.0..p).contains(&u) {
@@ -72,7 +79,7 @@ impl Knots {
                 k.saturating_sub(1).min(n - 1)
             }
         };
-        (i, w - self.u[i])
+        (i, w)
     }
 }
 

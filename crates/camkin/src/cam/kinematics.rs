@@ -45,7 +45,7 @@ impl Mechanism {
     /// Velocity, acceleration and contact data at a converged touch (paper eqs. 5, 6, 1, 2, 11).
     /// The contact method at a converged touch: velocity from the velocity constraint, sliding
     /// rates (eqs. 5, 6) and acceleration from the acceleration constraint (eq. 11).
-    #[inline]
+    #[inline(always)]
     fn core(
         &self,
         theta: f64,
@@ -92,7 +92,7 @@ impl Mechanism {
     /// The contact method's kinematics (eqs. 5, 6, 1, 2, 11) at the touch `t`, the cam point
     /// `ea` (world) paired with the follower's curve on `body_b`: the follower curve's parameter
     /// there and the kinematics.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn pair_kinematics(
         &self,
         theta: f64,

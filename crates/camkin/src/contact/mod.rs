@@ -593,7 +593,7 @@ impl ContactKinematics {
 
     /// As [`ContactKinematics::new`] from curve points already evaluated in the world frame
     /// (`ea` on A at `pairing.u_a`, `eb` on B at `pairing.u_b`); A must not be a point.
-    #[inline]
+    #[inline(always)]
     pub fn from_geometry(
         body_a: &BodyState,
         ea: &WorldDerivs,

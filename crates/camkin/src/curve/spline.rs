@@ -24,9 +24,18 @@ pub enum Parameterization {
 pub struct ClosedSpline {
     nodes: Vec<Point2>,
     knots: Knots,
-    cx: Vec<[f64; 4]>,
-    cy: Vec<[f64; 4]>,
+    /// each segment's start and coefficients side by side (one lookup, one cache line or two)
+    pieces: Vec<Piece>,
     parameterization: Parameterization,
+}
+
+/// Segment `i` of a closed spline: its start parameter `u_i` and local cubic coefficients
+/// `[c0, c1, c2, c3]` for x and y (`x = c0 + c1 t + c2 t² + c3 t³`, `t = u − u_i`).
+#[derive(Debug, Clone, Copy)]
+struct Piece {
+    start: f64,
+    x: [f64; 4],
+    y: [f64; 4],
 }
 
 impl ClosedSpline {
@@ -80,11 +89,17 @@ impl ClosedSpline {
         let ys: Vec<f64> = nodes.iter().map(|p| p.y).collect();
         let cx = fit(&knots, &xs);
         let cy = fit(&knots, &ys);
+        let pieces = (0..n)
+            .map(|i| Piece {
+                start: knots.u[i],
+                x: cx[i],
+                y: cy[i],
+            })
+            .collect();
         Ok(Self {
             nodes: nodes.to_vec(),
             knots,
-            cx,
-            cy,
+            pieces,
             parameterization,
         })
     }
@@ -112,7 +127,8 @@ impl ClosedSpline {
     /// Segment `i`: its start parameter, its length in `u`, and its local cubic coefficients
     /// `[c0, c1, c2, c3]` for x and y (`x = c0 + c1 t + c2 t² + c3 t³`, `t = u − start`).
     pub fn segment(&self, i: usize) -> (f64, f64, [f64; 4], [f64; 4]) {
-        (self.knots.u[i], self.knots.h(i), self.cx[i], self.cy[i])
+        let c = &self.pieces[i];
+        (c.start, self.knots.h(i), c.x, c.y)
     }
 }
 
@@ -188,18 +204,35 @@ impl ClosedSpline {
     }
 }
 
+impl ClosedSpline {
+    /// The segment holding `u` (modulo the period) and the local coordinate in it.
+    #[inline(always)]
+    fn piece(&self, u: f64) -> (&Piece, f64) {
+        let (i, w) = self.knots.segment_of(u);
+        let c = &self.pieces[i];
+        (c, w - c.start)
+    }
+}
+
 impl Curve for ClosedSpline {
     #[inline]
     fn eval(&self, u: f64) -> Derivs {
-        let (i, t) = self.knots.locate(u);
-        let x = eval_local(&self.cx[i], t);
-        let y = eval_local(&self.cy[i], t);
+        let (c, t) = self.piece(u);
+        let x = eval_local(&c.x, t);
+        let y = eval_local(&c.y, t);
         Derivs {
             p: Point2::new(x[0], y[0]),
             d1: Vec2::new(x[1], y[1]),
             d2: Vec2::new(x[2], y[2]),
             d3: Vec2::new(x[3], y[3]),
         }
+    }
+
+    #[inline]
+    fn position(&self, u: f64) -> Point2 {
+        let (c, t) = self.piece(u);
+        let cubic = |c: &[f64; 4]| c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+        Point2::new(cubic(&c.x), cubic(&c.y))
     }
 
     fn domain(&self) -> Domain {
