@@ -11,7 +11,7 @@
 use super::follower::{Event, EventKind, FollowerDynamics, Sample, REBOUND_TOLERANCE};
 use super::model::{body_state, Constraint, ForceElement, RigidBody, System};
 use super::projection::DenseRows;
-use super::solver::AugmentedLagrangian;
+use super::solver::{AugmentedLagrangian, Solution};
 use super::DynamicsError;
 use crate::cam::{Joint, Mechanism};
 use crate::contact::{refine, Pairing, SearchOptions, Surface};
@@ -35,10 +35,10 @@ pub struct Multibody {
     theta0: f64,
     work: f64,
     t: f64,
-    q: Vec<f64>,
-    qd: Vec<f64>,
+    q: State,
+    qd: State,
     in_contact: bool,
-    pairings: Vec<Option<Pairing>>,
+    pairings: Pairings,
     size: f64,
     /// events found at the start (a tensile force there: lift-off at time 0), returned by the
     /// first [`Multibody::advance`]
@@ -46,6 +46,13 @@ pub struct Multibody {
 }
 
 const CONTACT: usize = 3;
+/// The coordinates of the cam and the follower (`x, y, θ` each).
+const DOFS: usize = 6;
+/// The constraint rows: the cam's revolute joint (2), its driver (1), the follower's joint (2),
+/// the contact (1).
+const ROWS: usize = 6;
+type State = [f64; DOFS];
+type Pairings = [Option<Pairing>; 4];
 /// The driver's row among the constraint rows (after the cam's revolute joint).
 const DRIVER_ROW: usize = 2;
 
@@ -216,7 +223,7 @@ impl Multibody {
             search: SearchOptions::for_length_scale(mech.size()),
         };
         let body_b = mech.follower_body(s0.position).0;
-        let q = vec![
+        let q = [
             cam.pivot().x,
             cam.pivot().y,
             sign * theta0,
@@ -229,7 +236,7 @@ impl Multibody {
         } else {
             s0.velocity * axis
         };
-        let qd = vec![
+        let qd = [
             0.0,
             0.0,
             sign * cam.speed(),
@@ -262,14 +269,14 @@ impl Multibody {
             q,
             qd,
             in_contact: true,
-            pairings: vec![None, None, None, Some(pairing)],
+            pairings: [None, None, None, Some(pairing)],
             size: mech.size(),
             pending: Vec::new(),
         };
         // The kinematic start is in contact; a tensile force there means the spring cannot hold
         // the follower on the cam at this angle and speed: it leaves at once.
-        let (q0, qd0) = (sim.q.clone(), sim.qd.clone());
-        let mut p = sim.pairings.clone();
+        let (q0, qd0) = (sim.q, sim.qd);
+        let mut p = sim.pairings;
         let (_, f, _) = sim.accel(0.0, &q0, &qd0, true, &mut p)?;
         if f < 0.0 {
             sim.in_contact = false;
@@ -316,17 +323,31 @@ impl Multibody {
         qd: &[f64],
         contact: bool,
         pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<f64>, f64, f64), DynamicsError> {
-        let e = self
-            .sys
-            .evaluate(&self.al, t, q, qd, &self.active(contact), pairings)?;
+    ) -> Result<(State, f64, f64), DynamicsError> {
+        let (mut qdd, mut lambda, mut phi, mut phi_dot) =
+            ([0.0; DOFS], [0.0; ROWS], [0.0; ROWS], [0.0; ROWS]);
+        self.sys.evaluate_into(
+            &self.al,
+            t,
+            q,
+            qd,
+            &self.active(contact),
+            pairings,
+            Solution {
+                qdd: &mut qdd,
+                lambda: &mut lambda,
+                phi: &mut phi,
+                phi_dot: &mut phi_dot,
+            },
+        )?;
+        // the contact is the last row
         let f = if contact {
-            -self.orientation * e.lambda[e.lambda.len() - 1]
+            -self.orientation * lambda[ROWS - 1]
         } else {
             0.0
         };
         // the driver is row 2 (after the cam's revolute joint); its force on θ is −λ
-        Ok((e.qdd, f, -e.lambda[DRIVER_ROW]))
+        Ok((qdd, f, -lambda[DRIVER_ROW]))
     }
 
     /// One RK4 step of length `h` from `(t, q, q̇)` in the given mode.
@@ -338,11 +359,10 @@ impl Multibody {
         h: f64,
         contact: bool,
         pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<f64>, Vec<f64>, f64), DynamicsError> {
-        let n = q.len();
-        let add = |a: &[f64], b: &[f64], s: f64| -> Vec<f64> {
-            a.iter().zip(b).map(|(x, y)| x + s * y).collect()
-        };
+    ) -> Result<(State, State, f64), DynamicsError> {
+        let n = DOFS;
+        let add =
+            |a: &[f64], b: &[f64], s: f64| -> State { std::array::from_fn(|i| a[i] + s * b[i]) };
         let (a1, _, t1) = self.accel(t, q, qd, contact, pairings)?;
         let (q2, v2) = (add(q, qd, 0.5 * h), add(qd, &a1, 0.5 * h));
         let (a2, _, t2) = self.accel(t + 0.5 * h, &q2, &v2, contact, pairings)?;
@@ -350,12 +370,11 @@ impl Multibody {
         let (a3, _, t3) = self.accel(t + 0.5 * h, &q3, &v3, contact, pairings)?;
         let (q4, v4) = (add(q, &v3, h), add(qd, &a3, h));
         let (a4, _, t4) = self.accel(t + h, &q4, &v4, contact, pairings)?;
-        let qn = (0..n)
-            .map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]))
-            .collect();
-        let vn = (0..n)
-            .map(|i| qd[i] + h / 6.0 * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]))
-            .collect();
+        let qn: State =
+            std::array::from_fn(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]));
+        let vn: State =
+            std::array::from_fn(|i| qd[i] + h / 6.0 * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]));
+        debug_assert_eq!(q.len(), n);
         // the driving torque's work over the step, integrated with the same stages
         let w = 2; // θ of the cam
         let dw = h / 6.0 * (t1 * qd[w] + 2.0 * t2 * v2[w] + 2.0 * t3 * v3[w] + t4 * v4[w]);
@@ -402,14 +421,9 @@ impl Multibody {
 
     /// The sample at the current state.
     pub fn sample(&mut self) -> Result<Sample, DynamicsError> {
-        let mut pairings = self.pairings.clone();
-        let (qdd, f, torque) = self.accel(
-            self.t,
-            &self.q.clone(),
-            &self.qd.clone(),
-            self.in_contact,
-            &mut pairings,
-        )?;
+        let mut pairings = self.pairings;
+        let (qdd, f, torque) =
+            self.accel(self.t, &self.q, &self.qd, self.in_contact, &mut pairings)?;
         self.pairings = pairings;
         let (position, velocity, acceleration) = if self.oscillating {
             (self.q[5], self.qd[5], qdd[5])
@@ -438,7 +452,7 @@ impl Multibody {
     /// The largest `|Φ|` of the active constraints at the current state (length or rad):
     /// the drift from the constraint manifold.
     pub fn constraint_residual(&self) -> Result<f64, DynamicsError> {
-        let mut p = self.pairings.clone();
+        let mut p = self.pairings;
         let rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut p)?;
         Ok(rows.phi.iter().fold(0.0f64, |m, x| m.max(x.abs())))
     }
@@ -457,7 +471,7 @@ impl Multibody {
         while self.t < end - 1e-15 * end.abs().max(1.0) && guard < 64 {
             guard += 1;
             let dt = end - self.t;
-            let mut pairings = self.pairings.clone();
+            let mut pairings = self.pairings;
             let (qn, vn, dw) = self.rk4(
                 self.t,
                 &self.q,
@@ -467,7 +481,7 @@ impl Multibody {
                 &mut pairings,
             )?;
             if self.in_contact {
-                let (_, f, _) = self.accel(end, &qn, &vn, true, &mut pairings.clone())?;
+                let (_, f, _) = self.accel(end, &qn, &vn, true, &mut { pairings })?;
                 if f >= 0.0 {
                     (self.q, self.qd, self.pairings, self.t) = (qn, vn, pairings, end);
                     self.work += dw;
@@ -525,7 +539,7 @@ impl Multibody {
         let (mut lo, mut hi) = (0.0, dt);
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);
-            let mut p = self.pairings.clone();
+            let mut p = self.pairings;
             let (q, v, _) = self.rk4(self.t, &self.q, &self.qd, mid, contact, &mut p)?;
             let val = f(self, self.t + mid, &q, &v, &mut p)?;
             if val >= 0.0 {
@@ -541,7 +555,7 @@ impl Multibody {
     }
 
     fn commit(&mut self, tau: f64, contact: bool) -> Result<(), DynamicsError> {
-        let mut p = self.pairings.clone();
+        let mut p = self.pairings;
         let (q, v, dw) = self.rk4(self.t, &self.q, &self.qd, tau, contact, &mut p)?;
         let mut pc = p[CONTACT];
         let _ = self.gap(&q, &v, &mut pc)?;
@@ -570,35 +584,39 @@ impl Multibody {
     /// The mass-orthogonal projection of `x0` onto `J x = b` (see [`System::project_onto`]).
     fn project_onto(
         &self,
-        rows: &[Vec<f64>],
+        rows: &DenseRows,
         x0: &[f64],
         b: &[f64],
-    ) -> Result<Vec<f64>, DynamicsError> {
-        self.sys
-            .project_onto(rows, x0, b)
-            .ok_or(DynamicsError::Singular { time: self.t })
+    ) -> Result<State, DynamicsError> {
+        let mut x = [0.0; DOFS];
+        if self.sys.project_onto(rows, x0, b, &mut x) {
+            Ok(x)
+        } else {
+            Err(DynamicsError::Singular { time: self.t })
+        }
     }
 
     /// Mass-orthogonal projection of the state onto the constraints (Bayo and Ledesma 1996):
     /// positions by Newton on `Φ(q) = 0`, then velocities onto `Φ_q q̇ = −Φ_t`.
     fn project(&mut self) -> Result<(), DynamicsError> {
-        let mut pairings = self.pairings.clone();
+        let mut pairings = self.pairings;
         for _ in 0..4 {
-            let DenseRows { rows, phi, .. } =
-                self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
-            if phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
+            let rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
+            if rows.phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
                 break;
             }
-            let zero = vec![0.0; self.q.len()];
-            let b: Vec<f64> = phi.iter().map(|p| -p).collect();
-            let dq = self.project_onto(&rows, &zero, &b)?;
+            let zero = [0.0; DOFS];
+            let mut b = [0.0; ROWS];
+            for (b, p) in b.iter_mut().zip(rows.phi.iter()) {
+                *b = -p;
+            }
+            let dq = self.project_onto(&rows, &zero, &b[..rows.m])?;
             for (q, d) in self.q.iter_mut().zip(&dq) {
                 *q += d;
             }
         }
-        let DenseRows { rows, target, .. } =
-            self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
-        self.qd = self.project_onto(&rows, &self.qd, &target)?;
+        let rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
+        self.qd = self.project_onto(&rows, &self.qd, &rows.target)?;
         self.pairings = pairings;
         Ok(())
     }
@@ -607,14 +625,12 @@ impl Multibody {
     /// times the restitution (joints and driver held); returns the approach speed. Re-engages the
     /// contact when the rebound is negligible.
     fn impact(&mut self) -> Result<f64, DynamicsError> {
-        let mut pairings = self.pairings.clone();
-        let DenseRows {
-            rows,
-            target: mut targets,
-            ..
-        } = self.dense_rows(&self.q, &self.qd, true, &mut pairings)?;
-        let m = rows.len();
-        let vn_before = rows[m - 1]
+        let mut pairings = self.pairings;
+        let rows = self.dense_rows(&self.q, &self.qd, true, &mut pairings)?;
+        let mut targets = rows.target.clone();
+        let m = rows.m;
+        let vn_before = rows
+            .row(m - 1)
             .iter()
             .zip(&self.qd)
             .map(|(a, b)| a * b)

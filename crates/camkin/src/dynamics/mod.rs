@@ -28,6 +28,7 @@
 //! acceleration of a follower in permanent contact equals the contact method's to 3e-14.
 
 mod cam;
+mod dense;
 mod follower;
 mod forces;
 mod model;

@@ -164,12 +164,60 @@ pub(crate) fn body_state(q: &[f64], qd: &[f64], i: usize) -> BodyState {
     }
 }
 
-/// One constraint row: `Φ`, `Φ_q` (sparse, as (column, value) pairs), `γ`.
-#[derive(Debug, Clone, Default)]
+/// One constraint row: `Φ`, `Φ_q` (sparse, as (column, value) pairs, at most six), `γ`.
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Row {
     pub(crate) phi: f64,
-    pub(crate) jac: Vec<(usize, f64)>,
+    jac: [(usize, f64); 6],
+    len: usize,
     pub(crate) gamma: f64,
+}
+
+impl Row {
+    fn new(phi: f64, jac: &[(usize, f64)], gamma: f64) -> Self {
+        let mut r = Self {
+            phi,
+            jac: [(0, 0.0); 6],
+            len: jac.len(),
+            gamma,
+        };
+        r.jac[..jac.len()].copy_from_slice(jac);
+        r
+    }
+
+    /// The row's nonzero entries of `Φ_q`: (column, value).
+    pub(crate) fn jac(&self) -> &[(usize, f64)] {
+        &self.jac[..self.len]
+    }
+}
+
+/// The rows of one constraint (one or two).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Rows {
+    rows: [Row; 2],
+    len: usize,
+}
+
+impl Rows {
+    fn one(r: Row) -> Self {
+        Self {
+            rows: [r, Row::default()],
+            len: 1,
+        }
+    }
+    fn two(a: Row, b: Row) -> Self {
+        Self {
+            rows: [a, b],
+            len: 2,
+        }
+    }
+}
+
+impl std::ops::Deref for Rows {
+    type Target = [Row];
+    fn deref(&self) -> &[Row] {
+        &self.rows[..self.len]
+    }
 }
 
 impl System {
@@ -178,9 +226,9 @@ impl System {
         3 * self.bodies.len()
     }
 
-    /// Generalized applied forces `Q` at `(q, q̇)`.
-    pub(crate) fn forces(&self, q: &[f64], qd: &[f64]) -> Vec<f64> {
-        let mut f = vec![0.0; self.dofs()];
+    /// Generalized applied forces `Q` at `(q, q̇)`, written to `f` (`dofs()` long).
+    pub(crate) fn forces(&self, q: &[f64], qd: &[f64], f: &mut [f64]) {
+        f.fill(0.0);
         for e in &self.forces {
             match *e {
                 ForceElement::Gravity(g) => {
@@ -226,7 +274,6 @@ impl System {
                 }
             }
         }
-        f
     }
 
     /// The rows of constraint `c` at `(t, q, q̇)`; a contact updates its pairing in place
@@ -238,7 +285,7 @@ impl System {
         q: &[f64],
         qd: &[f64],
         pairing: &mut Option<Pairing>,
-    ) -> Result<Vec<Row>, crate::contact::ContactError> {
+    ) -> Result<Rows, crate::contact::ContactError> {
         Ok(match c {
             Constraint::Revolute {
                 body,
@@ -250,18 +297,18 @@ impl System {
                 let r = Rotation::new(th) * local.coords;
                 let dr = rot90(r); // ∂(R s)/∂θ
                 let w = qd[i + 2];
-                vec![
-                    Row {
-                        phi: q[i] + r.x - ground.x,
-                        jac: vec![(i, 1.0), (i + 2, dr.x)],
-                        gamma: w * w * r.x,
-                    },
-                    Row {
-                        phi: q[i + 1] + r.y - ground.y,
-                        jac: vec![(i + 1, 1.0), (i + 2, dr.y)],
-                        gamma: w * w * r.y,
-                    },
-                ]
+                Rows::two(
+                    Row::new(
+                        q[i] + r.x - ground.x,
+                        &[(i, 1.0), (i + 2, dr.x)],
+                        w * w * r.x,
+                    ),
+                    Row::new(
+                        q[i + 1] + r.y - ground.y,
+                        &[(i + 1, 1.0), (i + 2, dr.y)],
+                        w * w * r.y,
+                    ),
+                )
             }
             Constraint::Translational {
                 body,
@@ -271,18 +318,14 @@ impl System {
             } => {
                 let i = 3 * body;
                 let n = rot90(*axis);
-                vec![
-                    Row {
-                        phi: (q[i] - through.x) * n.x + (q[i + 1] - through.y) * n.y,
-                        jac: vec![(i, n.x), (i + 1, n.y)],
-                        gamma: 0.0,
-                    },
-                    Row {
-                        phi: q[i + 2] - angle,
-                        jac: vec![(i + 2, 1.0)],
-                        gamma: 0.0,
-                    },
-                ]
+                Rows::two(
+                    Row::new(
+                        (q[i] - through.x) * n.x + (q[i + 1] - through.y) * n.y,
+                        &[(i, n.x), (i + 1, n.y)],
+                        0.0,
+                    ),
+                    Row::new(q[i + 2] - angle, &[(i + 2, 1.0)], 0.0),
+                )
             }
             Constraint::AngleDriver {
                 body,
@@ -291,11 +334,11 @@ impl System {
                 acceleration,
             } => {
                 let i = 3 * body + 2;
-                vec![Row {
-                    phi: q[i] - (angle0 + speed * t + 0.5 * acceleration * t * t),
-                    jac: vec![(i, 1.0)],
-                    gamma: *acceleration,
-                }]
+                Rows::one(Row::new(
+                    q[i] - (angle0 + speed * t + 0.5 * acceleration * t * t),
+                    &[(i, 1.0)],
+                    *acceleration,
+                ))
             }
             Constraint::Contact {
                 a,
@@ -320,11 +363,11 @@ impl System {
                     crate::contact::CONFORMAL_TOLERANCE,
                 )?;
                 let cols = [3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2];
-                vec![Row {
-                    phi: p.gap,
-                    jac: cols.iter().zip(k.phi_q).map(|(&c, v)| (c, v)).collect(),
-                    gamma: k.gamma,
-                }]
+                let mut jac = [(0, 0.0); 6];
+                for (e, (&c, v)) in jac.iter_mut().zip(cols.iter().zip(k.phi_q)) {
+                    *e = (c, v);
+                }
+                Rows::one(Row::new(p.gap, &jac, k.gamma))
             }
         })
     }

@@ -1,15 +1,26 @@
 //! The constraints as dense rows and the mass-orthogonal projection onto them (Bayo and Ledesma
 //! 1996): what a simulation applies after every step and at impacts.
 
+use super::dense::{cholesky, cholesky_solve, dot, lu_solve, Buf, KKT, MAT, VEC};
 use super::model::{Constraint, System};
 use crate::contact::{ContactError, Pairing};
-use nalgebra::{DMatrix, DVector};
 
-/// The active constraints as dense rows, with `Φ` and each row's target velocity.
+/// The active constraints as dense rows (`m × n`, row-major), with `Φ` and each row's target
+/// velocity.
 pub(crate) struct DenseRows {
-    pub(crate) rows: Vec<Vec<f64>>,
-    pub(crate) phi: Vec<f64>,
-    pub(crate) target: Vec<f64>,
+    pub(crate) jac: Buf<MAT>,
+    pub(crate) phi: Buf<VEC>,
+    pub(crate) target: Buf<VEC>,
+    /// rows
+    pub(crate) m: usize,
+}
+
+impl DenseRows {
+    /// Row `r` of `Φ_q`.
+    pub(crate) fn row(&self, r: usize) -> &[f64] {
+        let n = self.jac.len() / self.m.max(1);
+        &self.jac[r * n..(r + 1) * n]
+    }
 }
 
 impl System {
@@ -25,58 +36,106 @@ impl System {
         pairings: &mut [Option<Pairing>],
     ) -> Result<DenseRows, ContactError> {
         let n = q.len();
-        let (mut rows, mut phi, mut target) = (Vec::new(), Vec::new(), Vec::new());
+        let m = self.active_rows(active);
+        let mut d = DenseRows {
+            jac: Buf::zeros(m * n),
+            phi: Buf::zeros(m),
+            target: Buf::zeros(m),
+            m,
+        };
+        let mut r = 0;
         for (k, c) in self.constraints.iter().enumerate() {
             if !active[k] {
                 continue;
             }
-            for row in self.rows(c, t, q, qd, &mut pairings[k])? {
-                let mut j = vec![0.0; n];
-                for (col, v) in &row.jac {
-                    j[*col] += v;
+            for row in self.rows(c, t, q, qd, &mut pairings[k])?.iter() {
+                for &(col, v) in row.jac() {
+                    d.jac[r * n + col] += v;
                 }
-                rows.push(j);
-                phi.push(row.phi);
-                target.push(match c {
+                d.phi[r] = row.phi;
+                d.target[r] = match c {
                     Constraint::AngleDriver {
                         speed,
                         acceleration,
                         ..
                     } => speed + acceleration * t,
                     _ => 0.0,
-                });
+                };
+                r += 1;
             }
         }
-        Ok(DenseRows { rows, phi, target })
+        Ok(d)
     }
 
     /// Solves `[M Jᵀ; J 0] [x; μ] = [M x0; b]`: the mass-orthogonal projection of `x0` onto
-    /// `J x = b`; `None` when the system is singular.
+    /// `J x = b` (`rows.jac`), written to `x`; `false` when the system is singular. With every
+    /// mass and inertia positive, by the Schur complement: `(J M⁻¹ Jᵀ) μ = b − J x0`,
+    /// `x = x0 + M⁻¹ Jᵀ μ` (an `m × m` Cholesky); else (or when that fails) by elimination on the
+    /// whole saddle-point matrix.
     pub(crate) fn project_onto(
         &self,
-        rows: &[Vec<f64>],
+        rows: &DenseRows,
         x0: &[f64],
         b: &[f64],
-    ) -> Option<Vec<f64>> {
+        x: &mut [f64],
+    ) -> bool {
         let n = x0.len();
-        let m = rows.len();
-        let mut kkt = DMatrix::zeros(n + m, n + m);
-        let mut rhs = DVector::zeros(n + m);
+        let m = rows.m;
+        let mut inv_mass = Buf::<VEC>::zeros(n);
         for (i, body) in self.bodies.iter().enumerate() {
-            let d = [body.mass, body.mass, body.inertia];
-            for k in 0..3 {
-                kkt[(3 * i + k, 3 * i + k)] = d[k];
-                rhs[3 * i + k] = d[k] * x0[3 * i + k];
+            inv_mass[3 * i] = 1.0 / body.mass;
+            inv_mass[3 * i + 1] = 1.0 / body.mass;
+            inv_mass[3 * i + 2] = 1.0 / body.inertia;
+        }
+        if inv_mass.iter().all(|w| w.is_finite() && *w > 0.0) {
+            let mut s = Buf::<MAT>::zeros(m * m);
+            let mut scaled = Buf::<MAT>::zeros(m * n);
+            for (r, out) in scaled.chunks_exact_mut(n.max(1)).enumerate().take(m) {
+                for ((o, j), w) in out.iter_mut().zip(rows.row(r)).zip(inv_mass.iter()) {
+                    *o = j * w;
+                }
+            }
+            for (a, sa) in s.chunks_exact_mut(m.max(1)).enumerate().take(m) {
+                for (c, v) in sa.iter_mut().enumerate() {
+                    *v = dot(&scaled[a * n..(a + 1) * n], rows.row(c));
+                }
+            }
+            if cholesky(&mut s, m) {
+                let mut mu = Buf::<VEC>::zeros(m);
+                for (r, v) in mu.iter_mut().enumerate() {
+                    *v = b[r] - dot(rows.row(r), x0);
+                }
+                cholesky_solve(&s, m, &mut mu);
+                x.copy_from_slice(x0);
+                for (r, &u) in mu.iter().enumerate() {
+                    for (xi, w) in x.iter_mut().zip(&scaled[r * n..(r + 1) * n]) {
+                        *xi += w * u;
+                    }
+                }
+                return x.iter().all(|v| v.is_finite());
             }
         }
-        for (r, j) in rows.iter().enumerate() {
-            for c in 0..n {
-                kkt[(n + r, c)] = j[c];
-                kkt[(c, n + r)] = j[c];
+        let k = n + m;
+        let mut kkt = Buf::<KKT>::zeros(k * k);
+        let mut rhs = Buf::<VEC>::zeros(k);
+        for (i, body) in self.bodies.iter().enumerate() {
+            let d = [body.mass, body.mass, body.inertia];
+            for j in 0..3 {
+                kkt[(3 * i + j) * k + 3 * i + j] = d[j];
+                rhs[3 * i + j] = d[j] * x0[3 * i + j];
+            }
+        }
+        for r in 0..m {
+            for (c, &v) in rows.row(r).iter().enumerate() {
+                kkt[(n + r) * k + c] = v;
+                kkt[c * k + n + r] = v;
             }
             rhs[n + r] = b[r];
         }
-        let sol = kkt.lu().solve(&rhs)?;
-        Some(sol.rows(0, n).iter().copied().collect())
+        if !lu_solve(&mut kkt, k, &mut rhs) {
+            return false;
+        }
+        x.copy_from_slice(&rhs[..n]);
+        true
     }
 }

@@ -1,9 +1,9 @@
 //! The augmented Lagrangian solve of the equations of motion at one instant.
 
-use super::model::{Row, System};
+use super::dense::{cholesky, cholesky_solve, dot, Buf, MAT, VEC};
+use super::model::System;
 use super::{Constraint, DynamicsError};
 use crate::contact::Pairing;
-use nalgebra::{DMatrix, DVector};
 
 /// Parameters of the augmented Lagrangian method (see the [module docs](super)).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,6 +49,15 @@ pub struct Evaluation {
     pub iterations: usize,
 }
 
+/// Where [`System::evaluate_into`] writes its solution: `q̈` (one per coordinate) and, one per
+/// active constraint row in order, `λ`, `Φ` and `Φ̇` (each at least as long as the rows).
+pub(crate) struct Solution<'a> {
+    pub(crate) qdd: &'a mut [f64],
+    pub(crate) lambda: &'a mut [f64],
+    pub(crate) phi: &'a mut [f64],
+    pub(crate) phi_dot: &'a mut [f64],
+}
+
 impl System {
     /// Solves for `q̈` and `λ` at `(t, q, q̇)` with the constraints flagged `active`; `pairings`
     /// holds each contact's pairing (updated in place).
@@ -61,91 +70,237 @@ impl System {
         active: &[bool],
         pairings: &mut [Option<Pairing>],
     ) -> Result<Evaluation, DynamicsError> {
+        let m = self.active_rows(active);
+        let mut e = Evaluation {
+            qdd: vec![0.0; self.dofs()],
+            lambda: vec![0.0; m],
+            phi: vec![0.0; m],
+            phi_dot: vec![0.0; m],
+            iterations: 0,
+        };
+        e.iterations = self.evaluate_into(
+            al,
+            t,
+            q,
+            qd,
+            active,
+            pairings,
+            Solution {
+                qdd: &mut e.qdd,
+                lambda: &mut e.lambda,
+                phi: &mut e.phi,
+                phi_dot: &mut e.phi_dot,
+            },
+        )?;
+        Ok(e)
+    }
+
+    /// The number of rows of the constraints flagged `active`.
+    pub(crate) fn active_rows(&self, active: &[bool]) -> usize {
+        self.constraints
+            .iter()
+            .zip(active)
+            .filter(|(_, &a)| a)
+            .map(|(c, _)| c.rows())
+            .sum()
+    }
+
+    /// [`System::evaluate`] into `out`, without allocating for a system of up to six coordinates
+    /// and six rows; the iterations used.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn evaluate_into(
+        &self,
+        al: &AugmentedLagrangian,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        active: &[bool],
+        pairings: &mut [Option<Pairing>],
+        out: Solution<'_>,
+    ) -> Result<usize, DynamicsError> {
         let n = self.dofs();
-        let mut rows: Vec<Row> = Vec::new();
-        for (k, c) in self.constraints.iter().enumerate() {
-            if !active[k] {
-                continue;
-            }
-            let r = self
-                .rows(c, t, q, qd, &mut pairings[k])
-                .map_err(|source| DynamicsError::Contact { time: t, source })?;
-            rows.extend(r);
-        }
-        let m = rows.len();
-        let mut mass = DMatrix::zeros(n, n);
-        let mut mmax: f64 = 0.0;
-        for (i, b) in self.bodies.iter().enumerate() {
-            mass[(3 * i, 3 * i)] = b.mass;
-            mass[(3 * i + 1, 3 * i + 1)] = b.mass;
-            mass[(3 * i + 2, 3 * i + 2)] = b.inertia;
-            mmax = mmax.max(b.mass).max(b.inertia);
-        }
-        let mut jac = DMatrix::zeros(m, n);
-        for (r, row) in rows.iter().enumerate() {
-            for &(c, v) in &row.jac {
-                jac[(r, c)] += v;
-            }
-        }
-        let qdv = DVector::from_column_slice(qd);
-        let mut phi_dot = &jac * &qdv;
-        // a driver's Φ_t
+        let m = self.active_rows(active);
+        // Φ_q (m × n, row-major), γ, Φ and Φ̇ (with a driver's Φ_t)
+        let mut jac = Buf::<MAT>::zeros(m * n);
+        let mut gamma = Buf::<VEC>::zeros(m);
+        let phi = &mut out.phi[..m];
+        let phi_dot = &mut out.phi_dot[..m];
         let mut r = 0;
         for (k, c) in self.constraints.iter().enumerate() {
             if !active[k] {
                 continue;
             }
-            if let Constraint::AngleDriver {
-                speed,
-                acceleration,
-                ..
-            } = c
-            {
-                phi_dot[r] -= speed + acceleration * t;
+            let rows = self
+                .rows(c, t, q, qd, &mut pairings[k])
+                .map_err(|source| DynamicsError::Contact { time: t, source })?;
+            for row in rows.iter() {
+                for &(col, v) in row.jac() {
+                    jac[r * n + col] += v;
+                }
+                gamma[r] = row.gamma;
+                phi[r] = row.phi;
+                phi_dot[r] = dot(&jac[r * n..(r + 1) * n], qd);
+                if let Constraint::AngleDriver {
+                    speed,
+                    acceleration,
+                    ..
+                } = c
+                {
+                    phi_dot[r] -= speed + acceleration * t;
+                }
+                r += 1;
             }
-            r += c.rows();
+        }
+        let mut mass = Buf::<VEC>::zeros(n);
+        let mut mmax: f64 = 0.0;
+        for (i, b) in self.bodies.iter().enumerate() {
+            mass[3 * i] = b.mass;
+            mass[3 * i + 1] = b.mass;
+            mass[3 * i + 2] = b.inertia;
+            mmax = mmax.max(b.mass).max(b.inertia);
         }
         let alpha = al.penalty * mmax.max(1e-300);
-        let gamma = DVector::from_iterator(m, rows.iter().map(|r| r.gamma));
-        let phi = DVector::from_iterator(m, rows.iter().map(|r| r.phi));
-        let stab = -&gamma + &phi_dot * (2.0 * al.xi * al.omega) + &phi * (al.omega * al.omega);
-        let q_force = DVector::from_vec(self.forces(q, qd));
-        let lhs = &mass + jac.transpose() * &jac * alpha;
-        let chol = lhs.cholesky().ok_or(DynamicsError::Singular { time: t })?;
-        let mut lambda = DVector::zeros(m);
-        let scale = 1.0 + gamma.amax();
-        for it in 1..=al.max_iterations {
-            let rhs = &q_force - jac.transpose() * (&lambda + &stab * alpha);
-            let qdd = chol.solve(&rhs);
-            let res = &jac * &qdd + &stab;
-            lambda += &res * alpha;
-            if res.amax() <= al.tolerance * scale {
-                // one more solve with the converged multipliers
-                let rhs = &q_force - jac.transpose() * (&lambda + &stab * alpha);
-                let qdd = chol.solve(&rhs);
-                // λ from Φ_qᵀ λ = Q − M q̈ (least squares): the update λ* + α·residual would
-                // amplify the residual's rounding by the penalty
-                let jjt = &jac * jac.transpose();
-                let lambda_final = match jjt.cholesky() {
-                    Some(c) => c.solve(&(&jac * (&q_force - &mass * &qdd))),
-                    None => lambda.clone() + (&jac * &qdd + &stab) * alpha,
-                };
-                return Ok(Evaluation {
-                    qdd: qdd.as_slice().to_vec(),
-                    lambda: lambda_final.as_slice().to_vec(),
-                    phi: phi.as_slice().to_vec(),
-                    phi_dot: phi_dot.as_slice().to_vec(),
-                    iterations: it,
-                });
+        let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
+        let mut stab = Buf::<VEC>::zeros(m);
+        for i in 0..m {
+            stab[i] = -gamma[i] + phi_dot[i] * c1 + phi[i] * c2;
+        }
+        let mut q_force = Buf::<VEC>::zeros(n);
+        self.forces(q, qd, &mut q_force);
+        let inputs = Inputs {
+            n,
+            m,
+            jac: &jac,
+            gamma: &gamma,
+            mass: &mass,
+            stab: &stab,
+            q_force: &q_force,
+            alpha,
+        };
+        al_iterate(&inputs, al, t, &mut out.lambda[..m], out.qdd)
+    }
+}
+
+/// What the augmented Lagrangian iteration works on: `n` coordinates, `m` rows, `Φ_q` (`jac`,
+/// `m × n`, row-major), `γ`, the mass diagonal, the stabilised right-hand side `stab`, the
+/// forces `Q` and the penalty `α`.
+struct Inputs<'a> {
+    n: usize,
+    m: usize,
+    jac: &'a [f64],
+    gamma: &'a [f64],
+    mass: &'a [f64],
+    stab: &'a [f64],
+    q_force: &'a [f64],
+    alpha: f64,
+}
+
+/// The augmented Lagrangian iteration (see the [module docs](super)): `λ` and `q̈` written, the
+/// iterations used.
+fn al_iterate(
+    inputs: &Inputs<'_>,
+    al: &AugmentedLagrangian,
+    t: f64,
+    lambda: &mut [f64],
+    qdd: &mut [f64],
+) -> Result<usize, DynamicsError> {
+    let &Inputs {
+        n,
+        m,
+        jac,
+        gamma,
+        mass,
+        stab,
+        q_force,
+        alpha,
+    } = inputs;
+    let row = |r: usize| &jac[r * n..(r + 1) * n];
+    // M + α Φ_qᵀ Φ_q, factorised
+    let mut lhs = Buf::<MAT>::zeros(n * n);
+    for r in 0..m {
+        let jr = row(r);
+        for (i, li) in lhs.chunks_exact_mut(n).enumerate() {
+            let a = jr[i];
+            if a != 0.0 {
+                for (l, b) in li.iter_mut().zip(jr) {
+                    *l += a * b;
+                }
             }
         }
-        Err(DynamicsError::NoConvergence {
-            time: t,
-            iterations: al.max_iterations,
-            residual: (&jac
-                * chol.solve(&(&q_force - jac.transpose() * (&lambda + &stab * alpha)))
-                + &stab)
-                .amax(),
-        })
     }
+    for (i, li) in lhs.chunks_exact_mut(n).enumerate() {
+        for (j, l) in li.iter_mut().enumerate() {
+            *l = *l * alpha + if i == j { mass[i] } else { 0.0 };
+        }
+    }
+    if !cholesky(&mut lhs, n) {
+        return Err(DynamicsError::Singular { time: t });
+    }
+    let lhs: &[f64] = &lhs;
+    lambda.fill(0.0);
+    let amax = |v: &[f64]| v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    debug_assert_eq!(lambda.len(), m);
+    let scale = 1.0 + amax(gamma);
+    // q̈ from Q − Φ_qᵀ (λ + α stab)
+    let solve = |lambda: &[f64], qdd: &mut [f64]| {
+        qdd.copy_from_slice(q_force);
+        for r in 0..m {
+            let w = lambda[r] + stab[r] * alpha;
+            for (x, a) in qdd.iter_mut().zip(row(r)) {
+                *x -= a * w;
+            }
+        }
+        cholesky_solve(lhs, n, qdd);
+    };
+    let residual = |qdd: &[f64], res: &mut [f64]| {
+        for (r, x) in res.iter_mut().enumerate() {
+            *x = dot(row(r), qdd) + stab[r];
+        }
+    };
+    let mut res = Buf::<VEC>::zeros(m);
+    for it in 1..=al.max_iterations {
+        solve(lambda, qdd);
+        residual(qdd, &mut res);
+        for (l, x) in lambda.iter_mut().zip(res.iter()) {
+            *l += x * alpha;
+        }
+        if amax(&res) <= al.tolerance * scale {
+            // one more solve with the converged multipliers
+            solve(lambda, qdd);
+            // λ from Φ_qᵀ λ = Q − M q̈ (least squares): the update λ* + α·residual would
+            // amplify the residual's rounding by the penalty
+            let mut jjt = Buf::<MAT>::zeros(m * m);
+            for (a, ja) in jjt.chunks_exact_mut(m).enumerate() {
+                for (b, x) in ja.iter_mut().enumerate() {
+                    *x = dot(row(a), row(b));
+                }
+            }
+            if cholesky(&mut jjt, m) {
+                // Q − M q̈, then Φ_q times it
+                let mut f = Buf::<VEC>::zeros(n);
+                for (j, x) in f.iter_mut().enumerate() {
+                    *x = q_force[j] - mass[j] * qdd[j];
+                }
+                let mut rhs = Buf::<VEC>::zeros(m);
+                for (r, x) in rhs.iter_mut().enumerate() {
+                    *x = dot(row(r), &f);
+                }
+                cholesky_solve(&jjt, m, &mut rhs);
+                lambda.copy_from_slice(&rhs);
+            } else {
+                residual(qdd, &mut res);
+                for (l, x) in lambda.iter_mut().zip(res.iter()) {
+                    *l += x * alpha;
+                }
+            }
+            return Ok(it);
+        }
+    }
+    solve(lambda, qdd);
+    residual(qdd, &mut res);
+    Err(DynamicsError::NoConvergence {
+        time: t,
+        iterations: al.max_iterations,
+        residual: amax(&res),
+    })
 }
