@@ -3,10 +3,11 @@
 //! geometry the method does not use (a chord of the pitch circle, the breadth of a circle, the
 //! law of cosines about a pivot), and its contact against the motion it did not set.
 
+use crate::common::yoke_spec;
 use camkin::cam::{Cam, Follower, FollowerProfile, Mechanism, Sense};
 use camkin::curve::{Circle, Curve, Line};
 use camkin::dynamics::{DynamicsError, FollowerDynamics, Forces};
-use camkin::spec::{CamSpec, FollowerSpec, MechanismSpec, ProfileSpec, SegmentSpec, SpecError};
+use camkin::spec::{CamSpec, FollowerSpec, MechanismSpec, ProfileSpec, SpecError};
 use camkin::{Point2, Vec2};
 use std::f64::consts::TAU;
 use std::sync::Arc;
@@ -197,38 +198,11 @@ fn a_bell_crank_on_an_eccentric_has_the_play_of_the_law_of_cosines() {
     }
 }
 
-/// The constant-diameter cam of the example, built from its file's fields: a cycloidal rise of
-/// 20 over 180° and the same return, base radius 40, rollers of 10 whose centres are
-/// `2 (40 + 10) + 20 = 120` apart, plus `extra`.
+/// The constant-diameter cam of the example, built from its file's fields (see
+/// [`yoke_spec`]), `extra` mm of clearance between the rollers, the cam speeding up at
+/// 9000 °/s².
 fn constant_diameter(extra: f64) -> Mechanism {
-    let cycloidal = |rise: f64| SegmentSpec {
-        law: "cycloidal".into(),
-        rise: Some(rise),
-        degrees: 180.0,
-    };
-    let spec = MechanismSpec {
-        length_unit: Some("mm".into()),
-        cam: CamSpec {
-            speed_rpm: 600.0,
-            angular_acceleration_deg_s2: Some(9000.0),
-            profile: ProfileSpec {
-                kind: "motion".into(),
-                base_radius: Some(40.0),
-                segments: Some(vec![cycloidal(20.0), cycloidal(-20.0)]),
-                ..Default::default()
-            },
-            ..Default::default()
-        },
-        follower: FollowerSpec {
-            kind: "translating-roller".into(),
-            direction: Some([0.0, 1.0]),
-            roller_radius: Some(ROLLER),
-            conjugate: Some(Box::new(circle_spec([-(120.0 + extra), 0.0], ROLLER))),
-            ..Default::default()
-        },
-        ..Default::default()
-    };
-    Mechanism::try_from(spec).unwrap()
+    Mechanism::try_from(yoke_spec(extra, Some(9000.0))).unwrap()
 }
 
 fn circle_spec(center: [f64; 2], radius: f64) -> ProfileSpec {

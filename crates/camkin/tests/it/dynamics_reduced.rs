@@ -11,7 +11,7 @@ use camkin::dynamics::{
     AugmentedLagrangian, DynamicsError, Event, EventKind, FollowerDynamics, Reduced, Sample,
     Simulation,
 };
-use camkin::spec::{BuildOptions, CamSpec, FollowerSpec, MechanismSpec, ProfileSpec, SegmentSpec};
+use camkin::spec::BuildOptions;
 use camkin::{Point2, Vec2};
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
@@ -295,45 +295,13 @@ fn backlash_lets_the_driven_gear_rattle_between_its_flanks() {
 /// The constant-diameter cam of `examples/conjugate-yoke.toml` in SI, `extra` m of clearance
 /// between the rollers, the cam speeding up at `alpha` °/s².
 fn yoke(extra: f64, alpha: Option<f64>) -> Mechanism {
-    let cycloidal = |rise: f64| SegmentSpec {
-        law: "cycloidal".into(),
-        rise: Some(rise),
-        degrees: 180.0,
-    };
-    let circle = |x: f64, r: f64| ProfileSpec {
-        kind: "circle".into(),
-        center: Some([x, 0.0]),
-        radius: Some(r),
-        ..Default::default()
-    };
-    let spec = MechanismSpec {
-        length_unit: Some("mm".into()),
-        cam: CamSpec {
-            speed_rpm: 600.0,
-            angular_acceleration_deg_s2: alpha,
-            profile: ProfileSpec {
-                kind: "motion".into(),
-                base_radius: Some(40.0),
-                segments: Some(vec![cycloidal(20.0), cycloidal(-20.0)]),
-                ..Default::default()
-            },
+    yoke_spec(1e3 * extra, alpha)
+        .build(&BuildOptions {
+            si: true,
             ..Default::default()
-        },
-        follower: FollowerSpec {
-            kind: "translating-roller".into(),
-            direction: Some([0.0, 1.0]),
-            roller_radius: Some(10.0),
-            conjugate: Some(Box::new(circle(-(120.0 + 1e3 * extra), 10.0))),
-            ..Default::default()
-        },
-        ..Default::default()
-    };
-    spec.build(&BuildOptions {
-        si: true,
-        ..Default::default()
-    })
-    .unwrap()
-    .mechanism
+        })
+        .unwrap()
+        .mechanism
 }
 
 /// The cycloid's lift `s`, `s'`, `s''` (m, per rad) at cam angle `t`: 20 mm over 180° and back.

@@ -3,6 +3,7 @@
 //! first-touch computation that shares nothing with the contact method (the involute phase
 //! function, minimised over the driver's flank).
 
+use crate::common::base_pitches_inside;
 use camkin::cam::{Cam, Follower, FollowerProfile, Mechanism, Sense};
 use camkin::curve::{involute_function, InvoluteGear, InvoluteGearSpec, ReliefShape, TipRelief};
 use camkin::gears::{contact_ratio, GearPair};
@@ -130,13 +131,7 @@ fn ideal_pair_has_no_transmission_error_and_textbook_sliding() {
         );
         // pairs touching: the contact moved by whole base pitches along the line of action,
         // inside its ends (angles within 1e-7 of an end are not judged)
-        let inside: Vec<f64> = (-2..=2)
-            .map(|j| x + f64::from(j) * pb)
-            .filter(|y| *y >= start - 1e-7 && *y <= end + 1e-7)
-            .collect();
-        let near_end = inside
-            .iter()
-            .any(|y| (y - start).abs() < 1e-7 || (y - end).abs() < 1e-7);
+        let (inside, near_end) = base_pitches_inside(x, pb, start, end);
         if !near_end {
             assert_eq!(g.pairs_in_contact as usize, inside.len(), "{what}: x = {x}");
         }

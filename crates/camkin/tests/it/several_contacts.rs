@@ -3,6 +3,7 @@
 //! method does not use (the line of action, the involute's roll lengths, the constant ratio of
 //! ideal involutes, mirror symmetry).
 
+use crate::common::base_pitches_inside;
 use camkin::cam::{Cam, Contact, Follower, FollowerProfile, Mechanism, Sense};
 use camkin::curve::{Circle, ClosedSpline, Curve, InvoluteGear, InvoluteGearSpec, Line};
 use camkin::{Point2, Vec2};
@@ -140,13 +141,7 @@ fn mesh_cycles(teeth1: u32, teeth2: u32, backlash: f64) {
                 let j = (x(c) - x(first)) / pb;
                 assert!((j - j.round()).abs() <= 1e-10, "{what}: {j} base pitches");
             }
-            let inside: Vec<f64> = (-2..=2)
-                .map(|j| x(first) + f64::from(j) * pb)
-                .filter(|y| *y >= start - 1e-7 && *y <= end + 1e-7)
-                .collect();
-            let near_end = inside
-                .iter()
-                .any(|y| (y - start).abs() < 1e-7 || (y - end).abs() < 1e-7);
+            let (inside, near_end) = base_pitches_inside(x(first), pb, start, end);
             if !near_end {
                 assert_eq!(line.len(), inside.len(), "{what}: line {i}, at {inside:?}");
             }

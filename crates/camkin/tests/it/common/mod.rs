@@ -276,3 +276,57 @@ pub fn general_of(m: &Mechanism) -> Follower {
         other => panic!("no general equivalent written for {other:?}"),
     }
 }
+
+/// The constant-diameter cam of `examples/conjugate-yoke.toml` as its file's fields (mm): a
+/// cycloidal rise of 20 over 180° and the same return, base radius 40, 600 rpm, rollers of 10
+/// whose centres are `2 (40 + 10) + 20 = 120` apart, plus `extra` mm; the cam speeding up at
+/// `alpha` °/s².
+pub fn yoke_spec(extra: f64, alpha: Option<f64>) -> camkin::spec::MechanismSpec {
+    use camkin::spec::{CamSpec, FollowerSpec, MechanismSpec, ProfileSpec, SegmentSpec};
+    let cycloidal = |rise: f64| SegmentSpec {
+        law: "cycloidal".into(),
+        rise: Some(rise),
+        degrees: 180.0,
+    };
+    MechanismSpec {
+        length_unit: Some("mm".into()),
+        cam: CamSpec {
+            speed_rpm: 600.0,
+            angular_acceleration_deg_s2: alpha,
+            profile: ProfileSpec {
+                kind: "motion".into(),
+                base_radius: Some(40.0),
+                segments: Some(vec![cycloidal(20.0), cycloidal(-20.0)]),
+                ..Default::default()
+            },
+            ..Default::default()
+        },
+        follower: FollowerSpec {
+            kind: "translating-roller".into(),
+            direction: Some([0.0, 1.0]),
+            roller_radius: Some(10.0),
+            conjugate: Some(Box::new(ProfileSpec {
+                kind: "circle".into(),
+                center: Some([-(120.0 + extra), 0.0]),
+                radius: Some(10.0),
+                ..Default::default()
+            })),
+            ..Default::default()
+        },
+        ..Default::default()
+    }
+}
+
+/// The places on the line of action `[start, end]` a contact at `x` repeats at whole base
+/// pitches `pb` (within 1e-7 of the ends), and whether one lies within 1e-7 of an end (there
+/// the count of pairs touching is not judged).
+pub fn base_pitches_inside(x: f64, pb: f64, start: f64, end: f64) -> (Vec<f64>, bool) {
+    let inside: Vec<f64> = (-2..=2)
+        .map(|j| x + f64::from(j) * pb)
+        .filter(|y| *y >= start - 1e-7 && *y <= end + 1e-7)
+        .collect();
+    let near_end = inside
+        .iter()
+        .any(|y| (y - start).abs() < 1e-7 || (y - end).abs() < 1e-7);
+    (inside, near_end)
+}
