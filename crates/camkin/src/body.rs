@@ -144,7 +144,7 @@ pub trait CurveInFrame {
 }
 
 impl CurveInFrame for Frame {
-    #[inline]
+    #[inline(always)]
     fn derivs_to_world(&self, d: &Derivs) -> WorldDerivs {
         let r = &self.rotation;
         WorldDerivs {
@@ -155,7 +155,7 @@ impl CurveInFrame for Frame {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn curve_at(&self, curve: &dyn Curve, u: f64) -> WorldDerivs {
         self.derivs_to_world(&curve.eval(u))
     }

@@ -72,7 +72,9 @@ impl Knots {
             u.rem_euclid(p)
         };
         let i = match self.uniform {
-            Some(inv_h) => ((w * inv_h) as usize).min(n - 1),
+            // through u32 (fewer instructions than a saturating cast to usize): the index
+            // is below the segment count, far below 2³², and a NaN `u` gives 0
+            Some(inv_h) => (((w * inv_h) as u32) as usize).min(n - 1),
             None => {
                 // last knot index ≤ w
                 let k = self.u.partition_point(|&k| k <= w);

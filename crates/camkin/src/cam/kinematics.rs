@@ -2,6 +2,8 @@
 //! constraint, the sliding rates (paper eqs. 5, 6), the normal accelerations (eqs. 1, 2) and the
 //! follower's acceleration from the acceleration constraint (eq. 11).
 
+use super::follower::rates::{CamPoint, Refusals};
+use super::follower::{dispatch, Kind};
 use super::state::pressure_angle;
 use super::{CamError, FollowerState, Found, Mechanism, Motion, Touch};
 use crate::body::{BodyState, CurveInFrame, WorldDerivs};
@@ -30,6 +32,16 @@ impl Mechanism {
         touch: Touch,
         found: Found,
     ) -> Result<Motion, CamError> {
+        // a named kind: the closed-form rates at the contact (no normal, body states or
+        // constraint row); declined near a refusal, where the paper's method says why
+        if self.geometry.carried.is_none() {
+            let fast = dispatch!(&self.geometry.model, k => {
+                self.closed_form_motion(k, theta, cam, frame, touch, found)
+            });
+            if let Some(m) = fast {
+                return Ok(m);
+            }
+        }
         let c = self.core(theta, cam, frame, touch)?;
         Ok(Motion {
             cam_angle: theta,
@@ -38,6 +50,36 @@ impl Mechanism {
             acceleration: c.qdd,
             cam_param: touch.u,
             cam_param_rate: c.k.param_rate_a,
+            found,
+        })
+    }
+
+    /// The motion at a converged first touch by the closed-form rates of the follower kind `k`
+    /// (see [`Kind::rates`]); `None` where they decline.
+    #[inline(always)]
+    pub(crate) fn closed_form_motion<K: Kind>(
+        &self,
+        k: &K,
+        theta: f64,
+        cam: &BodyState,
+        frame: &Frame,
+        touch: Touch,
+        found: Found,
+    ) -> Option<Motion> {
+        let e = frame.curve_at(self.cam.profile.as_ref(), touch.u);
+        let at = CamPoint::new(&e, self.cam.pivot, cam.omega, cam.alpha);
+        let refuse = Refusals::new(
+            self.options.lock_tolerance,
+            self.options.conformal_tolerance,
+        );
+        let [qd, qdd, ud] = k.rates(&at, touch.q, &refuse)?;
+        Some(Motion {
+            cam_angle: theta,
+            position: touch.q,
+            velocity: qd,
+            acceleration: qdd,
+            cam_param: touch.u,
+            cam_param_rate: ud,
             found,
         })
     }

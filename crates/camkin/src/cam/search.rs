@@ -2,7 +2,8 @@
 //! first touch, and the global search (bracketing samples of the first-touch function, the best
 //! local maxima refined by Newton).
 
-use super::follower::Kind as _;
+use super::follower::{dispatch, Kind};
+use super::jet::V2;
 use super::starts::Candidates;
 use super::{CamError, Mechanism, StopReason};
 use crate::body::{CurveInFrame, WorldDerivs};
@@ -46,6 +47,20 @@ impl Mechanism {
         &self,
         theta: f64,
         frame: &Frame,
+        u: f64,
+        q: f64,
+    ) -> Result<(Touch, WorldDerivs), CamError> {
+        dispatch!(&self.geometry.model, k => self.newton_with(k, theta, frame, u, q))
+    }
+
+    /// [`Mechanism::newton_at`] for the follower kind `k` (the mechanism's own): monomorphised,
+    /// so that a warm step inlines the kind's residual and Jacobian.
+    #[inline(always)]
+    pub(crate) fn newton_with<K: Kind>(
+        &self,
+        k: &K,
+        theta: f64,
+        frame: &Frame,
         mut u: f64,
         mut q: f64,
     ) -> Result<(Touch, WorldDerivs), CamError> {
@@ -61,8 +76,8 @@ impl Mechanism {
         let lim = self.options.max_step_fraction * self.period;
         for _ in 0..self.options.max_iterations {
             let e = frame.curve_at(profile, u);
-            let (f, j) = self.geometry.residual(&e, q);
-            let [du, dq] = solve2(&j, f);
+            let f = k.residual_value(V2::c(e.p.coords), V2::c(e.d1), q);
+            let [du, dq] = solve2(&k.jacobian(&e, q), f);
             if !(du.is_finite() && dq.is_finite()) {
                 return Err(CamError::NoConvergence {
                     angle_deg: theta.to_degrees(),
@@ -99,7 +114,13 @@ impl Mechanism {
     /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
     #[inline]
     pub(crate) fn is_first_touch_at(&self, e: &WorldDerivs, q: f64) -> bool {
-        if !self.faces_follower(e, q) {
+        dispatch!(&self.geometry.model, k => self.is_first_touch_with(k, e, q))
+    }
+
+    /// [`Mechanism::is_first_touch_at`] for the follower kind `k` (the mechanism's own).
+    #[inline(always)]
+    pub(crate) fn is_first_touch_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: f64) -> bool {
+        if !self.faces_follower_with(k, e, q) {
             return false;
         }
         // on a cusp of a folded profile the tangency conditions hold trivially (r' = 0): the
@@ -110,7 +131,7 @@ impl Mechanism {
         if self.geometry.is_knife() {
             return true;
         }
-        match self.geometry.model.score(e.p) {
+        match k.score(e.p) {
             Some((_, qs)) => (qs - q).abs() <= self.touch_slack(),
             None => false,
         }
@@ -137,9 +158,15 @@ impl Mechanism {
     /// and a roller touching from inside fail this). Only a sign: no normalisation.
     #[inline]
     pub(crate) fn faces_follower(&self, e: &WorldDerivs, q: f64) -> bool {
+        dispatch!(&self.geometry.model, k => self.faces_follower_with(k, e, q))
+    }
+
+    /// [`Mechanism::faces_follower`] for the follower kind `k` (the mechanism's own).
+    #[inline(always)]
+    pub(crate) fn faces_follower_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: f64) -> bool {
         // outward normal ∝ −orientation · k × r'
         let outward = -self.orientation * crate::geometry::rot90(e.d1);
-        outward.dot(&self.geometry.model.toward_follower(e.p, q)) > 0.0
+        outward.dot(&k.toward_follower(e.p, q)) > 0.0
     }
 
     /// Oriented score of a position (larger is an earlier touch).
@@ -272,26 +299,27 @@ impl Mechanism {
     }
 }
 
-/// `J⁻¹ (−f)` for a 2×2 `J`, each equation first scaled by its largest coefficient: the
+/// `J⁻¹ (−f)` for a 2×2 `J`, each equation first scaled by the sum of its coefficients'
+/// magnitudes: the
 /// coefficients mix units (a cam parameter and a length: a roller's are lengths squared and
 /// lengths), so at extreme sizes the unscaled products underflow or overflow even where the
 /// determinant does not (a cam 1e-80 in size lost the position's step entirely). Non-finite
 /// when `J` is singular.
-#[inline]
+#[inline(always)]
 pub(crate) fn solve2(j: &[[f64; 2]; 2], f: [f64; 2]) -> [f64; 2] {
-    let mut a = *j;
-    let mut b = f;
-    for k in 0..2 {
-        let m = a[k][0].abs().max(a[k][1].abs());
-        if m > 0.0 && m.is_finite() {
-            let inv = 1.0 / m;
-            (a[k][0], a[k][1], b[k]) = (a[k][0] * inv, a[k][1] * inv, b[k] * inv);
-        }
-    }
-    let inv_det = 1.0 / (a[0][0] * a[1][1] - a[0][1] * a[1][0]);
+    // each row times 1 / (sum of its coefficients' magnitudes), without a branch: a zero row
+    // gives infinities, a singular `J` a zero or non-finite determinant, and either way a
+    // non-finite solution
+    let row = |r: [f64; 2], b: f64| {
+        let inv = 1.0 / (r[0].abs() + r[1].abs());
+        [r[0] * inv, r[1] * inv, b * inv]
+    };
+    let [a00, a01, b0] = row(j[0], f[0]);
+    let [a10, a11, b1] = row(j[1], f[1]);
+    let inv_det = 1.0 / (a00 * a11 - a01 * a10);
     [
-        (-b[0] * a[1][1] + b[1] * a[0][1]) * inv_det,
-        (-a[0][0] * b[1] + a[1][0] * b[0]) * inv_det,
+        (-b0 * a11 + b1 * a01) * inv_det,
+        (-a00 * b1 + a10 * b0) * inv_det,
     ]
 }
 

@@ -7,7 +7,7 @@
 //! sampled first-touch function is compared with the warm contact, and if another part of the
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
-use super::follower::Kind as _;
+use super::follower::{dispatch, Kind};
 use super::overtake::Overtaken;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
 use crate::body::BodyState;
@@ -107,6 +107,26 @@ impl<'a> Sweep<'a> {
     /// The follower's position, velocity and acceleration only at the next cam angle `theta`
     /// (rad): the fast path ([`Mechanism::motion`]).
     pub fn step_motion(&mut self, theta: f64) -> Result<Motion, CamError> {
+        let fast = match self.prev {
+            Some(p) if self.mech.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
+                dispatch!(&self.mech.geometry.model, k => self.warm_motion(k, theta, p))
+            }
+            _ => None,
+        };
+        if let Some(s) = fast {
+            self.remember(
+                theta,
+                Some((
+                    s.cam_param,
+                    s.cam_param_rate,
+                    s.position,
+                    s.velocity,
+                    s.acceleration,
+                    s.found,
+                )),
+            );
+            return Ok(s);
+        }
         let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
             self.note(theta, t, f);
             self.mech.motion_at(theta, &cam, &frame, t, f)
@@ -125,6 +145,30 @@ impl<'a> Sweep<'a> {
             }),
         );
         r
+    }
+
+    /// The motion-only warm step of a named follower kind `k` on a convex profile: Newton from
+    /// the extrapolated contact, the first-touch checks of [`Sweep::warm`], and the kind's
+    /// closed-form rates, monomorphised for the kind. `None` where any of them declines (a
+    /// carried curve, Newton failing, a touch that is not the first, a rate's denominator near
+    /// zero): the general step then decides, from the start.
+    #[inline(always)]
+    fn warm_motion<K: Kind>(&self, k: &K, theta: f64, p: Prev) -> Option<Motion> {
+        let m = self.mech;
+        if m.geometry.carried.is_some() {
+            return None;
+        }
+        let cam = m.cam.state(theta);
+        let frame = cam.frame();
+        let dt = theta - p.theta;
+        let u0 = p.u + dt * (p.du_dtheta + 0.5 * dt * p.d2u_dtheta2);
+        let q0 = p.q + dt * (p.dq_dtheta + 0.5 * dt * p.d2q_dtheta2);
+        let (t, e) = m.newton_with(k, theta, &frame, u0, q0).ok()?;
+        if !(m.faces_follower_with(k, &e, t.q) && (!m.roller || m.is_first_touch_with(k, &e, t.q)))
+        {
+            return None;
+        }
+        m.closed_form_motion(k, theta, &cam, &frame, t, Found::WarmStart)
     }
 
     /// Keeps a carried curve's contact parameter and its rate (a difference quotient over the last

@@ -19,6 +19,7 @@ pub(crate) mod carried;
 mod joint;
 mod oscillating_flat;
 mod oscillating_roller;
+pub(crate) mod rates;
 mod translating_flat;
 mod translating_knife;
 mod translating_roller;
@@ -35,6 +36,7 @@ use crate::geometry::Frame;
 use crate::geometry::{rot90, wrap_angle_near, Point2, Rotation, UnitVec2, Vec2};
 use oscillating_flat::OscillatingFlat;
 use oscillating_roller::OscillatingRoller;
+use rates::{CamPoint, Refusals};
 use translating_flat::TranslatingFlat;
 use translating_knife::TranslatingKnife;
 use translating_roller::TranslatingRoller;
@@ -483,6 +485,14 @@ pub(crate) trait Kind {
     /// cam's outward normal must point at a genuine touch (the cam's back side, or a roller
     /// touching from inside, fail this).
     fn toward_follower(&self, c: Point2, q: f64) -> Vec2;
+    /// The follower's velocity `q̇`, acceleration `q̈` and the cam parameter's rate `u̇`, as
+    /// `[q̇, q̈, u̇]`, at the converged first touch `c` at position `q`, in closed form from the
+    /// tangency conditions differentiated in time (see the `rates` module): the motion-only
+    /// path. `None` for a kind without them, or where a denominator is within `refuse` of zero
+    /// (the caller then runs the paper's method, which refuses with its reason or answers).
+    fn rates(&self, _c: &CamPoint, _q: f64, _refuse: &Refusals) -> Option<[f64; 3]> {
+        None
+    }
     /// Refuses a follower that can never touch a cam reaching `size` from its axis.
     fn check_reach(&self, _size: f64) -> Result<(), CamError> {
         Ok(())
@@ -568,15 +578,17 @@ pub(crate) enum Model {
 macro_rules! dispatch {
     ($model:expr, $k:ident => $body:expr) => {
         match $model {
-            Model::TranslatingFlat($k) => $body,
-            Model::TranslatingRoller($k) => $body,
-            Model::TranslatingKnife($k) => $body,
-            Model::OscillatingFlat($k) => $body,
-            Model::OscillatingRoller($k) => $body,
-            Model::Carried($k) => $body,
+            $crate::cam::follower::Model::TranslatingFlat($k) => $body,
+            $crate::cam::follower::Model::TranslatingRoller($k) => $body,
+            $crate::cam::follower::Model::TranslatingKnife($k) => $body,
+            $crate::cam::follower::Model::OscillatingFlat($k) => $body,
+            $crate::cam::follower::Model::OscillatingRoller($k) => $body,
+            $crate::cam::follower::Model::Carried($k) => $body,
         }
     };
 }
+
+pub(crate) use dispatch;
 
 impl Kind for Model {
     fn joint(&self) -> Joint {
@@ -602,6 +614,10 @@ impl Kind for Model {
     #[inline]
     fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
         dispatch!(self, k => k.jacobian(e, q))
+    }
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+        dispatch!(self, k => k.rates(c, q, refuse))
     }
     #[inline]
     fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
@@ -749,13 +765,6 @@ impl Geometry {
             curve,
             carried,
         })
-    }
-
-    /// The residual at cam point `e` and position `q` with its Jacobian in `(u, q)`.
-    #[inline]
-    pub(crate) fn residual(&self, e: &WorldDerivs, q: f64) -> ([f64; 2], [[f64; 2]; 2]) {
-        let f = self.model.residual_value(V2::c(e.p.coords), V2::c(e.d1), q);
-        (f, self.model.jacobian(e, q))
     }
 
     /// Converts a change of `q` into a length, for tolerances.

@@ -2,6 +2,7 @@
 //! `(cos φ, sin φ)`, touching the cam on the arm's side of the pivot. Its curve is the line
 //! `y = e` of the arm frame, oriented so that the cam lies on its right.
 
+use super::rates::{finite, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{scale, Jet, Num, V2};
@@ -9,7 +10,7 @@ use crate::cam::synthesis::{jet_recip, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
 use crate::field::{Field, FollowerField};
-use crate::geometry::{Point2, Rotation, Vec2};
+use crate::geometry::{rot90, Point2, Rotation, Vec2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingFlat {
@@ -108,6 +109,28 @@ impl Kind for OscillatingFlat {
         let n = Vec2::new(-s, c);
         let y = e.p - self.o;
         [[e.d1.dot(&n), -y.dot(&u)], [e.d2.dot(&n), -e.d1.dot(&u)]]
+    }
+    /// `z·n = e`, `x'·n = 0` with `z = x − O`, `n = (−sin φ, cos φ)`, `t = (cos φ, sin φ)`
+    /// (`ṅ = −φ̇ t`): `φ̇ = (ω J y)·n / z·t`; `u̇ = (φ̇ x'·t − ω (J x')·n) / x''·n`; and
+    /// `φ̈ = (b·n − 2 φ̇ ẋ·t − φ̇² z·n) / z·t` with `ẋ = ω J y + u̇ x'`. Declined where the
+    /// normal passes through the pivot (locked); a cam straight at the contact is conformal
+    /// with the face (`x''·n = 0`).
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (s, co) = q.sin_cos();
+        let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
+        let z = c.x - self.o;
+        let zt = z.dot(&t);
+        if !(zt * zt > refuse.lock * refuse.lock * z.norm_squared()) {
+            return None;
+        }
+        let v0 = c.material_velocity();
+        let qd = v0.dot(&n) / zt;
+        let ud = (qd * c.x1.dot(&t) - c.w * rot90(c.x1).dot(&n)) / c.x2.dot(&n);
+        let xdot = v0 + ud * c.x1;
+        let b = c.acceleration_but_tangential(ud);
+        let qdd = (b.dot(&n) - 2.0 * qd * xdot.dot(&t) - qd * qd * z.dot(&n)) / zt;
+        finite([qd, qdd, ud])
     }
     #[inline]
     fn toward_follower(&self, _c: Point2, q: f64) -> Vec2 {

@@ -1,6 +1,7 @@
 //! Oscillating roller: the roller centre at `O + L (cos φ, sin φ)`; its curve is the circle of
 //! radius `r` about `(L, 0)` in the arm frame.
 
+use super::rates::{finite, roller_denominator, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
@@ -8,7 +9,7 @@ use crate::cam::synthesis::{rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
-use crate::geometry::{Point2, Rotation, Vec2};
+use crate::geometry::{rot90, Point2, Rotation, Vec2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingRoller {
@@ -164,6 +165,31 @@ impl Kind for OscillatingRoller {
             [e.d1.dot(&m), m.dot(&dm_dq)],
             [e.d2.dot(&m) + e.d1.norm_squared(), e.d1.dot(&dm_dq)],
         ]
+    }
+    /// `½(|m|² − r²) = 0` and `x'·m = 0` with `m = x − O − L t`, `t = (cos φ, sin φ)`, `n = J t`:
+    /// `φ̇ = m·(ω J y) / L m·n`; `u̇ (x''·m + |x'|²) = −(ω (J x')·m + x'·ω J y − L φ̇ x'·n)`; and
+    /// `φ̈ = (m·b + L φ̇² m·t + |ṁ|²) / L m·n` with `ṁ = ω J y + u̇ x' − L φ̇ n`. Declined where
+    /// the normal passes through the pivot (locked) or the cam's curvature matches the roller's.
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (s, co) = q.sin_cos();
+        let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
+        let l = self.l;
+        let m = (c.x - self.o) - l * t;
+        // L m·n = m·J(x − O): the paper's lock test, squared
+        let lmn = l * m.dot(&n);
+        let reach = refuse.lock * self.r;
+        if !(lmn * lmn > reach * reach * (c.x - self.o).norm_squared()) {
+            return None;
+        }
+        let den = roller_denominator(c, m, refuse)?;
+        let v0 = c.material_velocity();
+        let qd = m.dot(&v0) / lmn;
+        let ud = -(c.w * rot90(c.x1).dot(&m) + c.x1.dot(&v0) - l * qd * c.x1.dot(&n)) / den;
+        let mdot = v0 + ud * c.x1 - (l * qd) * n;
+        let b = c.acceleration_but_tangential(ud);
+        let qdd = (m.dot(&b) + l * qd * qd * m.dot(&t) + mdot.norm_squared()) / lmn;
+        finite([qd, qdd, ud])
     }
     #[inline]
     fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {

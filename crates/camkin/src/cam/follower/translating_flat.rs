@@ -2,6 +2,7 @@
 //! Its curve is the line through the frame origin along `−rot90(d)` (material on the left: the
 //! follower lies on the `+d` side of its face).
 
+use super::rates::{finite, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
@@ -59,6 +60,16 @@ impl Kind for TranslatingFlat {
     #[inline]
     fn jacobian(&self, e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
         [[e.d1.dot(&self.d), -1.0], [e.d2.dot(&self.d), 0.0]]
+    }
+    /// `q = y·d` and `x'·d = 0`: `q̇ = ω (J y)·d`, `u̇ = −ω (J x')·d / x''·d` and
+    /// `q̈ = α (J y)·d − ω² y·d + ω u̇ (J x')·d`. A cam straight at the contact (`x''·d = 0`)
+    /// is conformal with the face: declined.
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, _q: f64, _refuse: &Refusals) -> Option<[f64; 3]> {
+        let d = self.d;
+        let (w, jy, jx1) = (c.w, rot90(c.y).dot(&d), rot90(c.x1).dot(&d));
+        let ud = -w * jx1 / c.x2.dot(&d);
+        finite([w * jy, c.a * jy - w * w * c.y.dot(&d) + w * ud * jx1, ud])
     }
     #[inline]
     fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {

@@ -1,6 +1,7 @@
 //! Translating knife edge: the tip at `e·rot90(d) + s·d` from the cam axis; its curve is the point
 //! at the frame origin.
 
+use super::rates::{finite, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
@@ -61,6 +62,23 @@ impl Kind for TranslatingKnife {
     #[inline]
     fn jacobian(&self, e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
         [[e.d1.dot(&self.p), 0.0], [e.d1.dot(&self.d), -1.0]]
+    }
+    /// `y·p = e`, `y·d = q`: the contact point's velocity `ẏ = ω J y + u̇ x'` is along `d`, so
+    /// `u̇ = −ω (J y)·p / x'·p`, `q̇ = ẏ·d`; its acceleration `b + ü x'` too, so
+    /// `ü = −b·p / x'·p` and `q̈ = b·d + ü x'·d`. Declined where the profile runs along the
+    /// line of travel (`x'·p ≈ 0`: the tip is locked).
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, _q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (d, p) = (self.d, self.p);
+        let x1p = c.x1.dot(&p);
+        if !(x1p.abs() > refuse.lock * c.x1.norm()) {
+            return None;
+        }
+        let v0 = c.material_velocity();
+        let ud = -v0.dot(&p) / x1p;
+        let b = c.acceleration_but_tangential(ud);
+        let udd = -b.dot(&p) / x1p;
+        finite([(v0 + ud * c.x1).dot(&d), b.dot(&d) + udd * c.x1.dot(&d), ud])
     }
     #[inline]
     fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {

@@ -1,6 +1,7 @@
 //! Translating roller: the roller centre at `e·rot90(d) + s·d` from the cam axis; its curve is the
 //! circle of radius `r` about the frame origin.
 
+use super::rates::{finite, roller_denominator, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
@@ -112,6 +113,26 @@ impl Kind for TranslatingRoller {
             [e.d1.dot(&m), -d.dot(&m)],
             [e.d2.dot(&m) + e.d1.norm_squared(), -e.d1.dot(&d)],
         ]
+    }
+    /// `½(|m|² − r²) = 0` and `x'·m = 0` with `m = y − e p − q d` (from the roller's centre):
+    /// `q̇ = m·(ω J y) / m·d`; `u̇ (x''·m + |x'|²) = −(ω (J x')·m + x'·ω J y − q̇ x'·d)`; and
+    /// `q̈ = (m·b + |ṁ|²) / m·d` with `ṁ = ω J y + u̇ x' − q̇ d`. Declined where the normal is
+    /// perpendicular to the travel (locked) or the cam's curvature matches the roller's.
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (d, p) = (self.d, self.p);
+        let m = c.y - (self.e * p + q * d);
+        let md = m.dot(&d);
+        if !(md.abs() > refuse.lock * self.r) {
+            return None;
+        }
+        let den = roller_denominator(c, m, refuse)?;
+        let v0 = c.material_velocity();
+        let qd = m.dot(&v0) / md;
+        let ud = -(c.w * rot90(c.x1).dot(&m) + c.x1.dot(&v0) - qd * c.x1.dot(&d)) / den;
+        let mdot = v0 + ud * c.x1 - qd * d;
+        let b = c.acceleration_but_tangential(ud);
+        finite([qd, (m.dot(&b) + mdot.norm_squared()) / md, ud])
     }
     #[inline]
     fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
