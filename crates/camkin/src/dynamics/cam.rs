@@ -43,6 +43,21 @@ pub struct Multibody {
     /// events found at the start (a tensile force there: lift-off at time 0), returned by the
     /// first [`Multibody::advance`]
     pending: Vec<Event>,
+    /// the last sample's evaluation, reused as the next step's first stage when the state has
+    /// not changed since
+    sampled: Option<Sampled>,
+}
+
+/// A sample's evaluation: RK4's first stage (`q̈` and the driver's torque), the state and mode
+/// it was taken at, and the pairings after it (which the sample keeps).
+#[derive(Debug, Clone, Copy)]
+struct Sampled {
+    t: f64,
+    q: State,
+    qd: State,
+    contact: bool,
+    after: Pairings,
+    stage: (State, f64),
 }
 
 const CONTACT: usize = 3;
@@ -272,6 +287,7 @@ impl Multibody {
             pairings: [None, None, None, Some(pairing)],
             size: mech.size(),
             pending: Vec::new(),
+            sampled: None,
         };
         // The kinematic start is in contact; a tensile force there means the spring cannot hold
         // the follower on the cam at this angle and speed: it leaves at once.
@@ -350,20 +366,37 @@ impl Multibody {
         Ok((qdd, f, -lambda[DRIVER_ROW]))
     }
 
-    /// One RK4 step of length `h` from `(t, q, q̇)` in the given mode.
+    /// RK4's first stage at the current state in the given mode (`q̈` and the driver's torque),
+    /// and the pairings after it: the last sample's when it was taken at this very state, mode
+    /// and pairings (the step after a sample starts where the sample was taken).
+    fn first_stage(&self, contact: bool) -> Result<((State, f64), Pairings), DynamicsError> {
+        if let Some(s) = &self.sampled {
+            if s.t == self.t
+                && s.q == self.q
+                && s.qd == self.qd
+                && s.contact == contact
+                && s.after == self.pairings
+            {
+                return Ok((s.stage, s.after));
+            }
+        }
+        let mut p = self.pairings;
+        let (a, _, torque) = self.accel(self.t, &self.q, &self.qd, contact, &mut p)?;
+        Ok(((a, torque), p))
+    }
+
+    /// One RK4 step of length `h` from the current state in the given mode, from its `first`
+    /// stage ([`Multibody::first_stage`]); `pairings` are those after the first stage.
     fn rk4(
         &self,
-        t: f64,
-        q: &[f64],
-        qd: &[f64],
         h: f64,
         contact: bool,
+        (a1, t1): (State, f64),
         pairings: &mut [Option<Pairing>],
     ) -> Result<(State, State, f64), DynamicsError> {
-        let n = DOFS;
+        let (t, q, qd) = (self.t, &self.q, &self.qd);
         let add =
             |a: &[f64], b: &[f64], s: f64| -> State { std::array::from_fn(|i| a[i] + s * b[i]) };
-        let (a1, _, t1) = self.accel(t, q, qd, contact, pairings)?;
         let (q2, v2) = (add(q, qd, 0.5 * h), add(qd, &a1, 0.5 * h));
         let (a2, _, t2) = self.accel(t + 0.5 * h, &q2, &v2, contact, pairings)?;
         let (q3, v3) = (add(q, &v2, 0.5 * h), add(qd, &a2, 0.5 * h));
@@ -374,7 +407,6 @@ impl Multibody {
             std::array::from_fn(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]));
         let vn: State =
             std::array::from_fn(|i| qd[i] + h / 6.0 * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]));
-        debug_assert_eq!(q.len(), n);
         // the driving torque's work over the step, integrated with the same stages
         let w = 2; // θ of the cam
         let dw = h / 6.0 * (t1 * qd[w] + 2.0 * t2 * v2[w] + 2.0 * t3 * v3[w] + t4 * v4[w]);
@@ -424,6 +456,14 @@ impl Multibody {
         let mut pairings = self.pairings;
         let (qdd, f, torque) =
             self.accel(self.t, &self.q, &self.qd, self.in_contact, &mut pairings)?;
+        self.sampled = Some(Sampled {
+            t: self.t,
+            q: self.q,
+            qd: self.qd,
+            contact: self.in_contact,
+            after: pairings,
+            stage: (qdd, torque),
+        });
         self.pairings = pairings;
         let (position, velocity, acceleration) = if self.oscillating {
             (self.q[5], self.qd[5], qdd[5])
@@ -471,15 +511,8 @@ impl Multibody {
         while self.t < end - 1e-15 * end.abs().max(1.0) && guard < 64 {
             guard += 1;
             let dt = end - self.t;
-            let mut pairings = self.pairings;
-            let (qn, vn, dw) = self.rk4(
-                self.t,
-                &self.q,
-                &self.qd,
-                dt,
-                self.in_contact,
-                &mut pairings,
-            )?;
+            let (first, mut pairings) = self.first_stage(self.in_contact)?;
+            let (qn, vn, dw) = self.rk4(dt, self.in_contact, first, &mut pairings)?;
             if self.in_contact {
                 let (_, f, _) = self.accel(end, &qn, &vn, true, &mut { pairings })?;
                 if f >= 0.0 {
@@ -537,10 +570,12 @@ impl Multibody {
         contact: bool,
     ) -> Result<f64, DynamicsError> {
         let (mut lo, mut hi) = (0.0, dt);
+        // every trial step starts from the current state
+        let (first, after) = self.first_stage(contact)?;
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);
-            let mut p = self.pairings;
-            let (q, v, _) = self.rk4(self.t, &self.q, &self.qd, mid, contact, &mut p)?;
+            let mut p = after;
+            let (q, v, _) = self.rk4(mid, contact, first, &mut p)?;
             let val = f(self, self.t + mid, &q, &v, &mut p)?;
             if val >= 0.0 {
                 lo = mid;
@@ -555,8 +590,8 @@ impl Multibody {
     }
 
     fn commit(&mut self, tau: f64, contact: bool) -> Result<(), DynamicsError> {
-        let mut p = self.pairings;
-        let (q, v, dw) = self.rk4(self.t, &self.q, &self.qd, tau, contact, &mut p)?;
+        let (first, mut p) = self.first_stage(contact)?;
+        let (q, v, dw) = self.rk4(tau, contact, first, &mut p)?;
         let mut pc = p[CONTACT];
         let _ = self.gap(&q, &v, &mut pc)?;
         p[CONTACT] = pc;
@@ -600,8 +635,8 @@ impl Multibody {
     /// positions by Newton on `Φ(q) = 0`, then velocities onto `Φ_q q̇ = −Φ_t`.
     fn project(&mut self) -> Result<(), DynamicsError> {
         let mut pairings = self.pairings;
+        let mut rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
         for _ in 0..4 {
-            let rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
             if rows.phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
                 break;
             }
@@ -614,8 +649,9 @@ impl Multibody {
             for (q, d) in self.q.iter_mut().zip(&dq) {
                 *q += d;
             }
+            // the rows at the corrected positions (the velocity projection uses the last)
+            rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
         }
-        let rows = self.dense_rows(&self.q, &self.qd, self.in_contact, &mut pairings)?;
         self.qd = self.project_onto(&rows, &self.qd, &rows.target)?;
         self.pairings = pairings;
         Ok(())

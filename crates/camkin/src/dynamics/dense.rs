@@ -54,6 +54,30 @@ impl<const N: usize> DerefMut for Buf<N> {
     }
 }
 
+/// A dimension: known at compile time ([`Fixed`], for the cam-follower model's six
+/// coordinates: its loops unroll and their bounds checks vanish) or at run time (`usize`).
+pub(crate) trait Dim: Copy {
+    fn get(self) -> usize;
+}
+
+impl Dim for usize {
+    #[inline(always)]
+    fn get(self) -> usize {
+        self
+    }
+}
+
+/// A dimension known at compile time.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Fixed<const N: usize>;
+
+impl<const N: usize> Dim for Fixed<N> {
+    #[inline(always)]
+    fn get(self) -> usize {
+        N
+    }
+}
+
 /// `Σ a_k b_k`.
 #[inline(always)]
 pub(crate) fn dot(a: &[f64], b: &[f64]) -> f64 {
@@ -62,7 +86,10 @@ pub(crate) fn dot(a: &[f64], b: &[f64]) -> f64 {
 
 /// Overwrites the lower triangle of the symmetric positive definite `n × n` matrix `a` with its
 /// Cholesky factor `L` (`a = L Lᵀ`); `false` when `a` is not positive definite.
-pub(crate) fn cholesky(a: &mut [f64], n: usize) -> bool {
+#[inline(always)]
+pub(crate) fn cholesky(a: &mut [f64], n: impl Dim) -> bool {
+    let n = n.get();
+    let a = &mut a[..n * n];
     for j in 0..n {
         let row_j = &mut a[j * n..(j + 1) * n];
         let d = row_j[j] - dot(&row_j[..j], &row_j[..j]);
@@ -82,10 +109,16 @@ pub(crate) fn cholesky(a: &mut [f64], n: usize) -> bool {
 }
 
 /// Solves `L Lᵀ x = b` in place (`l` from [`cholesky`]).
-pub(crate) fn cholesky_solve(l: &[f64], n: usize, b: &mut [f64]) {
+#[inline(always)]
+pub(crate) fn cholesky_solve(l: &[f64], n: impl Dim, b: &mut [f64]) {
+    let n = n.get();
+    let (l, b) = (&l[..n * n], &mut b[..n]);
     for i in 0..n {
-        let row = &l[i * n..(i + 1) * n];
-        b[i] = (b[i] - dot(&row[..i], &b[..i])) / row[i];
+        let mut s = b[i];
+        for k in 0..i {
+            s -= l[i * n + k] * b[k];
+        }
+        b[i] = s / l[i * n + i];
     }
     for i in (0..n).rev() {
         let mut s = b[i];

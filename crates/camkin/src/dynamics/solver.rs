@@ -1,6 +1,6 @@
 //! The augmented Lagrangian solve of the equations of motion at one instant.
 
-use super::dense::{cholesky, cholesky_solve, dot, Buf, MAT, VEC};
+use super::dense::{cholesky, cholesky_solve, dot, Buf, Dim, Fixed, MAT, VEC};
 use super::model::System;
 use super::{Constraint, DynamicsError};
 use crate::contact::Pairing;
@@ -118,7 +118,29 @@ impl System {
         pairings: &mut [Option<Pairing>],
         out: Solution<'_>,
     ) -> Result<usize, DynamicsError> {
-        let n = self.dofs();
+        // the cam-follower model's six coordinates as a constant: its loops unroll
+        if self.dofs() == 6 {
+            self.evaluate_dim(Fixed::<6>, al, t, q, qd, active, pairings, out)
+        } else {
+            self.evaluate_dim(self.dofs(), al, t, q, qd, active, pairings, out)
+        }
+    }
+
+    /// [`System::evaluate_into`] with the number of coordinates `dim`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn evaluate_dim(
+        &self,
+        dim: impl Dim,
+        al: &AugmentedLagrangian,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        active: &[bool],
+        pairings: &mut [Option<Pairing>],
+        out: Solution<'_>,
+    ) -> Result<usize, DynamicsError> {
+        let n = dim.get();
         let m = self.active_rows(active);
         // Φ_q (m × n, row-major), γ, Φ and Φ̇ (with a driver's Φ_t)
         let mut jac = Buf::<MAT>::zeros(m * n);
@@ -177,7 +199,7 @@ impl System {
             q_force: &q_force,
             alpha,
         };
-        al_iterate(&inputs, al, t, &mut out.lambda[..m], out.qdd)
+        al_iterate(&inputs, dim, al, t, &mut out.lambda[..m], out.qdd)
     }
 }
 
@@ -197,8 +219,10 @@ struct Inputs<'a> {
 
 /// The augmented Lagrangian iteration (see the [module docs](super)): `λ` and `q̈` written, the
 /// iterations used.
+#[inline(always)]
 fn al_iterate(
     inputs: &Inputs<'_>,
+    dim: impl Dim,
     al: &AugmentedLagrangian,
     t: f64,
     lambda: &mut [f64],
@@ -214,6 +238,8 @@ fn al_iterate(
         q_force,
         alpha,
     } = inputs;
+    debug_assert_eq!(n, dim.get());
+    let n = dim.get();
     let row = |r: usize| &jac[r * n..(r + 1) * n];
     // M + α Φ_qᵀ Φ_q, factorised
     let mut lhs = Buf::<MAT>::zeros(n * n);
@@ -233,7 +259,7 @@ fn al_iterate(
             *l = *l * alpha + if i == j { mass[i] } else { 0.0 };
         }
     }
-    if !cholesky(&mut lhs, n) {
+    if !cholesky(&mut lhs, dim) {
         return Err(DynamicsError::Singular { time: t });
     }
     let lhs: &[f64] = &lhs;
@@ -250,7 +276,7 @@ fn al_iterate(
                 *x -= a * w;
             }
         }
-        cholesky_solve(lhs, n, qdd);
+        cholesky_solve(lhs, dim, qdd);
     };
     let residual = |qdd: &[f64], res: &mut [f64]| {
         for (r, x) in res.iter_mut().enumerate() {
