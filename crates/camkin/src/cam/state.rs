@@ -93,6 +93,20 @@ pub(super) fn pressure_angle(jb: Vec2, nu: Vec2) -> f64 {
 }
 
 impl FollowerState {
+    /// The motion part of the state (what [`crate::cam::Mechanism::motion`] returns).
+    #[inline]
+    pub fn motion(&self) -> Motion {
+        Motion {
+            cam_angle: self.cam_angle,
+            position: self.position,
+            velocity: self.velocity,
+            acceleration: self.acceleration,
+            cam_param: self.cam_param,
+            cam_param_rate: self.cam_param_rate,
+            found: self.found,
+        }
+    }
+
     /// Pressure angle: from the direction of motion of the follower's point at the contact
     /// ([`FollowerState::follower_motion`]) to the contact normal oriented towards the follower,
     /// rad, counter-clockwise positive.

@@ -88,19 +88,7 @@ impl<'a> Sweep<'a> {
             self.note(theta, t, f);
             self.mech.kinematics(theta, &cam, &frame, t, f)
         });
-        self.remember(
-            theta,
-            r.as_ref().ok().map(|s| {
-                (
-                    s.cam_param,
-                    s.cam_param_rate,
-                    s.position,
-                    s.velocity,
-                    s.acceleration,
-                    s.found,
-                )
-            }),
-        );
+        self.remember(theta, r.as_ref().ok().map(|s| kept(&s.motion())));
         r
     }
 
@@ -114,36 +102,14 @@ impl<'a> Sweep<'a> {
             _ => None,
         };
         if let Some(s) = fast {
-            self.remember(
-                theta,
-                Some((
-                    s.cam_param,
-                    s.cam_param_rate,
-                    s.position,
-                    s.velocity,
-                    s.acceleration,
-                    s.found,
-                )),
-            );
+            self.remember(theta, Some(kept(&s)));
             return Ok(s);
         }
         let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
             self.note(theta, t, f);
             self.mech.motion_at(theta, &cam, &frame, t, f)
         });
-        self.remember(
-            theta,
-            r.as_ref().ok().map(|s| {
-                (
-                    s.cam_param,
-                    s.cam_param_rate,
-                    s.position,
-                    s.velocity,
-                    s.acceleration,
-                    s.found,
-                )
-            }),
-        );
+        self.remember(theta, r.as_ref().ok().map(kept));
         r
     }
 
@@ -307,4 +273,17 @@ impl<'a> Sweep<'a> {
             }),
         }
     }
+}
+
+/// What [`Sweep::remember`] keeps of a motion: `(u, u̇, q, q̇, q̈, found)`.
+#[inline(always)]
+fn kept(s: &Motion) -> (f64, f64, f64, f64, f64, Found) {
+    (
+        s.cam_param,
+        s.cam_param_rate,
+        s.position,
+        s.velocity,
+        s.acceleration,
+        s.found,
+    )
 }
