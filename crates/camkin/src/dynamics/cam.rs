@@ -43,21 +43,24 @@ pub struct Multibody {
     /// events found at the start (a tensile force there: lift-off at time 0), returned by the
     /// first [`Multibody::advance`]
     pending: Vec<Event>,
-    /// the last sample's evaluation, reused as the next step's first stage when the state has
-    /// not changed since
-    sampled: Option<Sampled>,
+    /// the last evaluation at the current state ([`Multibody::here`]): a step's force check,
+    /// then the sample, then the next step's first stage share it
+    last: std::cell::Cell<Option<Here>>,
 }
 
-/// A sample's evaluation: RK4's first stage (`q̈` and the driver's torque), the state and mode
-/// it was taken at, and the pairings after it (which the sample keeps).
+/// An evaluation at a state: `q̈`, the contact force and the driver's torque, with the state,
+/// mode and pairings it was taken at and the pairings after it.
 #[derive(Debug, Clone, Copy)]
-struct Sampled {
+struct Here {
     t: f64,
     q: State,
     qd: State,
     contact: bool,
+    before: Pairings,
     after: Pairings,
-    stage: (State, f64),
+    qdd: State,
+    force: f64,
+    torque: f64,
 }
 
 const CONTACT: usize = 3;
@@ -287,7 +290,7 @@ impl Multibody {
             pairings: [None, None, None, Some(pairing)],
             size: mech.size(),
             pending: Vec::new(),
-            sampled: None,
+            last: std::cell::Cell::new(None),
         };
         // The kinematic start is in contact; a tensile force there means the spring cannot hold
         // the follower on the cam at this angle and speed: it leaves at once.
@@ -366,23 +369,43 @@ impl Multibody {
         Ok((qdd, f, -lambda[DRIVER_ROW]))
     }
 
-    /// RK4's first stage at the current state in the given mode (`q̈` and the driver's torque),
-    /// and the pairings after it: the last sample's when it was taken at this very state, mode
-    /// and pairings (the step after a sample starts where the sample was taken).
-    fn first_stage(&self, contact: bool) -> Result<((State, f64), Pairings), DynamicsError> {
-        if let Some(s) = &self.sampled {
-            if s.t == self.t
-                && s.q == self.q
-                && s.qd == self.qd
-                && s.contact == contact
-                && s.after == self.pairings
+    /// The evaluation at the current state in mode `contact`, from the current pairings:
+    /// remembered, so that asking again at the same state and mode, with the pairings it
+    /// started from or ended with, evaluates once (a step's force check, the sample after it
+    /// and the next step's first stage are one evaluation).
+    fn here(&self, contact: bool) -> Result<Here, DynamicsError> {
+        if let Some(h) = self.last.get() {
+            if h.t == self.t
+                && h.q == self.q
+                && h.qd == self.qd
+                && h.contact == contact
+                && (h.before == self.pairings || h.after == self.pairings)
             {
-                return Ok((s.stage, s.after));
+                return Ok(h);
             }
         }
-        let mut p = self.pairings;
-        let (a, _, torque) = self.accel(self.t, &self.q, &self.qd, contact, &mut p)?;
-        Ok(((a, torque), p))
+        let mut after = self.pairings;
+        let (qdd, force, torque) = self.accel(self.t, &self.q, &self.qd, contact, &mut after)?;
+        let h = Here {
+            t: self.t,
+            q: self.q,
+            qd: self.qd,
+            contact,
+            before: self.pairings,
+            after,
+            qdd,
+            force,
+            torque,
+        };
+        self.last.set(Some(h));
+        Ok(h)
+    }
+
+    /// RK4's first stage at the current state in the given mode (`q̈` and the driver's torque)
+    /// and the pairings after it ([`Multibody::here`]).
+    fn first_stage(&self, contact: bool) -> Result<((State, f64), Pairings), DynamicsError> {
+        let h = self.here(contact)?;
+        Ok(((h.qdd, h.torque), h.after))
     }
 
     /// One RK4 step of length `h` from the current state in the given mode, from its `first`
@@ -453,18 +476,14 @@ impl Multibody {
 
     /// The sample at the current state.
     pub fn sample(&mut self) -> Result<Sample, DynamicsError> {
-        let mut pairings = self.pairings;
-        let (qdd, f, torque) =
-            self.accel(self.t, &self.q, &self.qd, self.in_contact, &mut pairings)?;
-        self.sampled = Some(Sampled {
-            t: self.t,
-            q: self.q,
-            qd: self.qd,
-            contact: self.in_contact,
-            after: pairings,
-            stage: (qdd, torque),
-        });
-        self.pairings = pairings;
+        let Here {
+            qdd,
+            force: f,
+            torque,
+            after,
+            ..
+        } = self.here(self.in_contact)?;
+        self.pairings = after;
         let (position, velocity, acceleration) = if self.oscillating {
             (self.q[5], self.qd[5], qdd[5])
         } else {
@@ -514,13 +533,16 @@ impl Multibody {
             let (first, mut pairings) = self.first_stage(self.in_contact)?;
             let (qn, vn, dw) = self.rk4(dt, self.in_contact, first, &mut pairings)?;
             if self.in_contact {
-                let (_, f, _) = self.accel(end, &qn, &vn, true, &mut { pairings })?;
-                if f >= 0.0 {
-                    (self.q, self.qd, self.pairings, self.t) = (qn, vn, pairings, end);
-                    self.work += dw;
-                    self.project()?;
+                // the step's end, projected: the contact force there decides (its evaluation
+                // is the sample's and the next step's first stage)
+                let before = (self.q, self.qd, self.pairings, self.t, self.work);
+                (self.q, self.qd, self.pairings, self.t) = (qn, vn, pairings, end);
+                self.work += dw;
+                self.project()?;
+                if self.here(true)?.force >= 0.0 {
                     continue;
                 }
+                (self.q, self.qd, self.pairings, self.t, self.work) = before;
                 // the force crosses zero inside: bisection on the sub-step
                 let tau = self.bisect(
                     dt,

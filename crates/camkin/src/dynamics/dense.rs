@@ -132,10 +132,17 @@ pub(crate) fn cholesky_solve(l: &[f64], n: impl Dim, b: &mut [f64]) {
 /// Solves the `n × n` system `a x = b` in place by Gaussian elimination with partial pivoting
 /// (`a` is destroyed); `false` when `a` is singular.
 pub(crate) fn lu_solve(a: &mut [f64], n: usize, b: &mut [f64]) -> bool {
+    let (a, b) = (&mut a[..n * n], &mut b[..n]);
     for j in 0..n {
-        let p = (j..n)
-            .max_by(|&x, &y| a[x * n + j].abs().total_cmp(&a[y * n + j].abs()))
-            .unwrap_or(j);
+        // the last of the largest magnitudes in column j at or below the diagonal
+        let mut p = j;
+        let mut best = a[j * n + j].abs();
+        for i in j + 1..n {
+            let v = a[i * n + j].abs();
+            if v >= best {
+                (p, best) = (i, v);
+            }
+        }
         if !(a[p * n + j] != 0.0 && a[p * n + j].is_finite()) {
             return false;
         }
@@ -146,13 +153,16 @@ pub(crate) fn lu_solve(a: &mut [f64], n: usize, b: &mut [f64]) -> bool {
             b.swap(p, j);
         }
         let inv = 1.0 / a[j * n + j];
-        for i in j + 1..n {
-            let f = a[i * n + j] * inv;
+        let (upper, lower) = a.split_at_mut((j + 1) * n);
+        let row_j = &upper[j * n..];
+        let bj = b[j];
+        for (ri, bi) in lower.chunks_exact_mut(n).zip(&mut b[j + 1..]) {
+            let f = ri[j] * inv;
             if f != 0.0 {
-                for k in j + 1..n {
-                    a[i * n + k] -= f * a[j * n + k];
+                for (x, y) in ri[j + 1..].iter_mut().zip(&row_j[j + 1..]) {
+                    *x -= f * y;
                 }
-                b[i] -= f * b[j];
+                *bi -= f * bj;
             }
         }
     }

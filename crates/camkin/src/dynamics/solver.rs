@@ -143,8 +143,11 @@ impl System {
         let n = dim.get();
         let m = self.active_rows(active);
         // Φ_q (m × n, row-major), γ, Φ and Φ̇ (with a driver's Φ_t)
-        let mut jac = Buf::<MAT>::zeros(m * n);
-        let mut gamma = Buf::<VEC>::zeros(m);
+        // each buffer taken as a slice once (not through the buffer at every access)
+        let mut jac_buf = Buf::<MAT>::zeros(m * n);
+        let jac: &mut [f64] = &mut jac_buf;
+        let mut gamma_buf = Buf::<VEC>::zeros(m);
+        let gamma: &mut [f64] = &mut gamma_buf;
         let phi = &mut out.phi[..m];
         let phi_dot = &mut out.phi_dot[..m];
         let mut r = 0;
@@ -173,7 +176,8 @@ impl System {
                 r += 1;
             }
         }
-        let mut mass = Buf::<VEC>::zeros(n);
+        let mut mass_buf = Buf::<VEC>::zeros(n);
+        let mass: &mut [f64] = &mut mass_buf;
         let mut mmax: f64 = 0.0;
         for (i, b) in self.bodies.iter().enumerate() {
             mass[3 * i] = b.mass;
@@ -183,20 +187,22 @@ impl System {
         }
         let alpha = al.penalty * mmax.max(1e-300);
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
-        let mut stab = Buf::<VEC>::zeros(m);
+        let mut stab_buf = Buf::<VEC>::zeros(m);
+        let stab: &mut [f64] = &mut stab_buf;
         for i in 0..m {
             stab[i] = -gamma[i] + phi_dot[i] * c1 + phi[i] * c2;
         }
-        let mut q_force = Buf::<VEC>::zeros(n);
-        self.forces(q, qd, &mut q_force);
+        let mut q_force_buf = Buf::<VEC>::zeros(n);
+        let q_force: &mut [f64] = &mut q_force_buf;
+        self.forces(q, qd, q_force);
         let inputs = Inputs {
             n,
             m,
-            jac: &jac,
-            gamma: &gamma,
-            mass: &mass,
-            stab: &stab,
-            q_force: &q_force,
+            jac,
+            gamma,
+            mass,
+            stab,
+            q_force,
             alpha,
         };
         al_iterate(&inputs, dim, al, t, &mut out.lambda[..m], out.qdd)
@@ -242,7 +248,8 @@ fn al_iterate(
     let n = dim.get();
     let row = |r: usize| &jac[r * n..(r + 1) * n];
     // M + α Φ_qᵀ Φ_q, factorised
-    let mut lhs = Buf::<MAT>::zeros(n * n);
+    let mut lhs_buf = Buf::<MAT>::zeros(n * n);
+    let lhs: &mut [f64] = &mut lhs_buf;
     for r in 0..m {
         let jr = row(r);
         for (i, li) in lhs.chunks_exact_mut(n).enumerate() {
@@ -254,15 +261,16 @@ fn al_iterate(
             }
         }
     }
-    for (i, li) in lhs.chunks_exact_mut(n).enumerate() {
-        for (j, l) in li.iter_mut().enumerate() {
-            *l = *l * alpha + if i == j { mass[i] } else { 0.0 };
-        }
+    for l in lhs.iter_mut() {
+        *l *= alpha;
     }
-    if !cholesky(&mut lhs, dim) {
+    for (i, m_i) in mass.iter().enumerate() {
+        lhs[i * n + i] += m_i;
+    }
+    if !cholesky(lhs, dim) {
         return Err(DynamicsError::Singular { time: t });
     }
-    let lhs: &[f64] = &lhs;
+    let lhs: &[f64] = lhs;
     lambda.fill(0.0);
     let amax = |v: &[f64]| v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
     debug_assert_eq!(lambda.len(), m);
@@ -283,21 +291,23 @@ fn al_iterate(
             *x = dot(row(r), qdd) + stab[r];
         }
     };
-    let mut res = Buf::<VEC>::zeros(m);
+    let mut res_buf = Buf::<VEC>::zeros(m);
+    let res: &mut [f64] = &mut res_buf;
     for it in 1..=al.max_iterations {
         solve(lambda, qdd);
-        residual(qdd, &mut res);
+        residual(qdd, res);
         for (l, x) in lambda.iter_mut().zip(res.iter()) {
             *l += x * alpha;
         }
-        if amax(&res) <= al.tolerance * scale {
+        if amax(res) <= al.tolerance * scale {
             // one more solve with the converged multipliers
             solve(lambda, qdd);
             // λ from Φ_qᵀ λ = Q − M q̈ (least squares): the update λ* + α·residual would
             // amplify the residual's rounding by the penalty
+            // (its lower triangle: all that the factorisation reads)
             let mut jjt = Buf::<MAT>::zeros(m * m);
             for (a, ja) in jjt.chunks_exact_mut(m).enumerate() {
-                for (b, x) in ja.iter_mut().enumerate() {
+                for (b, x) in ja[..=a].iter_mut().enumerate() {
                     *x = dot(row(a), row(b));
                 }
             }
@@ -314,7 +324,7 @@ fn al_iterate(
                 cholesky_solve(&jjt, m, &mut rhs);
                 lambda.copy_from_slice(&rhs);
             } else {
-                residual(qdd, &mut res);
+                residual(qdd, res);
                 for (l, x) in lambda.iter_mut().zip(res.iter()) {
                     *l += x * alpha;
                 }
@@ -323,10 +333,10 @@ fn al_iterate(
         }
     }
     solve(lambda, qdd);
-    residual(qdd, &mut res);
+    residual(qdd, res);
     Err(DynamicsError::NoConvergence {
         time: t,
         iterations: al.max_iterations,
-        residual: amax(&res),
+        residual: amax(res),
     })
 }
