@@ -81,31 +81,43 @@ impl System {
     ) -> bool {
         let n = x0.len();
         let m = rows.m;
-        let mut inv_mass = Buf::<VEC>::zeros(n);
+        // the rows and each stack buffer taken as slices once
+        let jac: &[f64] = &rows.jac;
+        let row = |r: usize| &jac[r * n..(r + 1) * n];
+        let mut inv_mass_buf = Buf::<VEC>::zeros(n);
+        let inv_mass: &mut [f64] = &mut inv_mass_buf;
         for (i, body) in self.bodies.iter().enumerate() {
             inv_mass[3 * i] = 1.0 / body.mass;
             inv_mass[3 * i + 1] = 1.0 / body.mass;
             inv_mass[3 * i + 2] = 1.0 / body.inertia;
         }
         if inv_mass.iter().all(|w| w.is_finite() && *w > 0.0) {
-            let mut s = Buf::<MAT>::zeros(m * m);
-            let mut scaled = Buf::<MAT>::zeros(m * n);
-            for (r, out) in scaled.chunks_exact_mut(n.max(1)).enumerate().take(m) {
-                for ((o, j), w) in out.iter_mut().zip(rows.row(r)).zip(inv_mass.iter()) {
+            let mut s_buf = Buf::<MAT>::zeros(m * m);
+            let s: &mut [f64] = &mut s_buf;
+            let mut scaled_buf = Buf::<MAT>::zeros(m * n);
+            let scaled: &mut [f64] = &mut scaled_buf;
+            for r in 0..m {
+                for ((o, j), w) in scaled[r * n..(r + 1) * n]
+                    .iter_mut()
+                    .zip(row(r))
+                    .zip(inv_mass.iter())
+                {
                     *o = j * w;
                 }
             }
-            for (a, sa) in s.chunks_exact_mut(m.max(1)).enumerate().take(m) {
-                for (c, v) in sa.iter_mut().enumerate() {
-                    *v = dot(&scaled[a * n..(a + 1) * n], rows.row(c));
+            // the lower triangle: all that the factorisation reads
+            for a in 0..m {
+                for c in 0..=a {
+                    s[a * m + c] = dot(&scaled[a * n..(a + 1) * n], row(c));
                 }
             }
-            if cholesky(&mut s, m) {
-                let mut mu = Buf::<VEC>::zeros(m);
+            if cholesky(s, m) {
+                let mut mu_buf = Buf::<VEC>::zeros(m);
+                let mu: &mut [f64] = &mut mu_buf;
                 for (r, v) in mu.iter_mut().enumerate() {
-                    *v = b[r] - dot(rows.row(r), x0);
+                    *v = b[r] - dot(row(r), x0);
                 }
-                cholesky_solve(&s, m, &mut mu);
+                cholesky_solve(s, m, mu);
                 x.copy_from_slice(x0);
                 for (r, &u) in mu.iter().enumerate() {
                     for (xi, w) in x.iter_mut().zip(&scaled[r * n..(r + 1) * n]) {
