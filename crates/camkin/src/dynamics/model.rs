@@ -278,6 +278,7 @@ impl System {
 
     /// The rows of constraint `c` at `(t, q, q̇)`; a contact updates its pairing in place
     /// (Newton from the previous one).
+    #[inline(always)]
     pub(crate) fn rows(
         &self,
         c: &Constraint,
