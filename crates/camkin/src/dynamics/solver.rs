@@ -246,26 +246,28 @@ fn al_iterate(
     } = inputs;
     debug_assert_eq!(n, dim.get());
     let n = dim.get();
+    // the slices at their lengths (so that the loops over `n` need no bounds checks)
+    let (jac, mass, q_force, qdd) = (&jac[..m * n], &mass[..n], &q_force[..n], &mut qdd[..n]);
     let row = |r: usize| &jac[r * n..(r + 1) * n];
-    // M + α Φ_qᵀ Φ_q, factorised
+    // M + α Φ_qᵀ Φ_q, its lower triangle (all that the factorisation reads), factorised
     let mut lhs_buf = Buf::<MAT>::zeros(n * n);
-    let lhs: &mut [f64] = &mut lhs_buf;
+    let lhs: &mut [f64] = &mut lhs_buf[..n * n];
     for r in 0..m {
         let jr = row(r);
-        for (i, li) in lhs.chunks_exact_mut(n).enumerate() {
+        for i in 0..n {
             let a = jr[i];
             if a != 0.0 {
-                for (l, b) in li.iter_mut().zip(jr) {
-                    *l += a * b;
+                for j in 0..=i {
+                    lhs[i * n + j] += a * jr[j];
                 }
             }
         }
     }
-    for l in lhs.iter_mut() {
-        *l *= alpha;
-    }
-    for (i, m_i) in mass.iter().enumerate() {
-        lhs[i * n + i] += m_i;
+    for i in 0..n {
+        for j in 0..=i {
+            lhs[i * n + j] *= alpha;
+        }
+        lhs[i * n + i] += mass[i];
     }
     if !cholesky(lhs, dim) {
         return Err(DynamicsError::Singular { time: t });
