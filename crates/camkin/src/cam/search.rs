@@ -137,6 +137,14 @@ impl Mechanism {
         }
     }
 
+    /// A warm contact on a convex profile is the first touch: its normal faces the follower,
+    /// and a roller's touch is the first of its cam point (a roller's Newton can leap: its
+    /// residual bends on the scale of the roller's radius, which may be tiny).
+    #[inline(always)]
+    pub(crate) fn convex_warm_touch_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: f64) -> bool {
+        self.faces_follower_with(k, e, q) && (!self.roller || self.is_first_touch_with(k, e, q))
+    }
+
     /// Fails with [`StopReason::OnCusp`] when a cusp of a folded profile touches the follower
     /// before the contact at position `q`: the follower then rests on that corner.
     pub(crate) fn check_cusps(&self, theta: f64, frame: &Frame, q: f64) -> Result<(), CamError> {
@@ -156,12 +164,6 @@ impl Mechanism {
 
     /// The cam's outward normal at `e` faces the follower at position `q` (the cam's back side
     /// and a roller touching from inside fail this). Only a sign: no normalisation.
-    #[inline]
-    pub(crate) fn faces_follower(&self, e: &WorldDerivs, q: f64) -> bool {
-        dispatch!(&self.geometry.model, k => self.faces_follower_with(k, e, q))
-    }
-
-    /// [`Mechanism::faces_follower`] for the follower kind `k` (the mechanism's own).
     #[inline(always)]
     pub(crate) fn faces_follower_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: f64) -> bool {
         // outward normal ∝ −orientation · k × r'

@@ -70,6 +70,17 @@ struct Prev {
     d2u_dtheta2: f64,
 }
 
+impl Prev {
+    /// The contact extrapolated to second order over `dt` (rad): `(u, q)`, off by O(Δθ³).
+    #[inline(always)]
+    fn start(&self, dt: f64) -> (f64, f64) {
+        (
+            self.u + dt * (self.du_dtheta + 0.5 * dt * self.d2u_dtheta2),
+            self.q + dt * (self.dq_dtheta + 0.5 * dt * self.d2q_dtheta2),
+        )
+    }
+}
+
 /// Largest angle step (rad) over which the previous contact is used as a start.
 pub const MAX_WARM_STEP: f64 = 0.2;
 
@@ -126,12 +137,9 @@ impl<'a> Sweep<'a> {
         }
         let cam = m.cam.state(theta);
         let frame = cam.frame();
-        let dt = theta - p.theta;
-        let u0 = p.u + dt * (p.du_dtheta + 0.5 * dt * p.d2u_dtheta2);
-        let q0 = p.q + dt * (p.dq_dtheta + 0.5 * dt * p.d2q_dtheta2);
+        let (u0, q0) = p.start(theta - p.theta);
         let (t, e) = m.newton_with(k, theta, &frame, u0, q0).ok()?;
-        if !(m.faces_follower_with(k, &e, t.q) && (!m.roller || m.is_first_touch_with(k, &e, t.q)))
-        {
+        if !m.convex_warm_touch_with(k, &e, t.q) {
             return None;
         }
         m.closed_form_motion(k, theta, &cam, &frame, t, Found::WarmStart)
@@ -197,8 +205,7 @@ impl<'a> Sweep<'a> {
         let m = self.mech;
         let dt = theta - p.theta;
         // second-order extrapolation: the start is off by O(Δθ³)
-        let u0 = p.u + dt * (p.du_dtheta + 0.5 * dt * p.d2u_dtheta2);
-        let q0 = p.q + dt * (p.dq_dtheta + 0.5 * dt * p.d2q_dtheta2);
+        let (u0, q0) = p.start(dt);
         if let (Some(c), Some((last, rate))) = (m.carried(), self.last) {
             let v0 = last.v + dt * rate;
             return m.carried_warm(c, theta, frame, (u0, v0, q0), (p.theta, last));
@@ -221,7 +228,7 @@ impl<'a> Sweep<'a> {
             // can leap (its residual bends on the scale of the roller's radius, which may be
             // tiny), so its touch must also be the first touch of its cam point
             Ok((t, e))
-                if (m.convex && m.faces_follower(&e, t.q) && (!m.roller || m.is_first_touch_at(&e, t.q)))
+                if (m.convex && dispatch!(&m.geometry.model, k => m.convex_warm_touch_with(k, &e, t.q)))
                     // evaluated at the converged point itself: near a cusp the tangent (and
                     // with it the normal) turns over within the last Newton step
                     || (!m.convex && m.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
