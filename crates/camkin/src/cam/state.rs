@@ -64,9 +64,9 @@ pub struct FollowerState {
     pub found: Found,
 }
 
-/// The follower's motion at one cam angle: position, velocity and acceleration by the contact
-/// method with nothing else computed (the fast path for sweeps and dynamics). Units as in
-/// [`FollowerState`].
+/// The follower's motion at one cam angle: position, velocity and acceleration with nothing
+/// else computed (the fast path for sweeps and dynamics; see [`crate::cam::Mechanism::motion`]).
+/// Units as in [`FollowerState`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Motion {
     /// cam angle `θ`, rad
@@ -75,7 +75,7 @@ pub struct Motion {
     pub position: f64,
     /// velocity `q̇`
     pub velocity: f64,
-    /// acceleration `q̈` (eq. 11)
+    /// acceleration `q̈`
     pub acceleration: f64,
     /// the cam-profile parameter at the contact
     pub cam_param: f64,
