@@ -210,8 +210,9 @@ proptest! {
         // against 8th-order differences of the follower's position (the first touch alone, no
         // velocity or acceleration formula), away from spline nodes (where the jerk jumps)
         // a step small enough for the sharply curved stretches of a random cam (the contact can
-        // sweep a node spacing in a few degrees), large enough for rounding: 5e-4 rad
-        let h = 5e-4;
+        // sweep a node spacing in a few degrees; at 5e-4 rad the differences' truncation reached
+        // 9e-8 of the velocity on one), large enough for rounding: 1e-4 rad
+        let h = 1e-4;
         let (lo, hi) = (m.analyze(th - 4.0 * h).unwrap(), m.analyze(th + 4.0 * h).unwrap());
         prop_assume!(lo.cam_param.floor() == s.cam_param.floor() && hi.cam_param.floor() == s.cam_param.floor());
         let (d1, d2) = fd8(|t| m.position(t).unwrap(), th, h);
@@ -311,16 +312,26 @@ proptest! {
         let a = m.analyze(th);
         prop_assume!(a.is_ok());
         let a = a.unwrap();
+        // away from a spline node: beside one, the check's stencils are one-sided at its finest
+        // steps and their rounding reaches 3e-10 of the peak velocity (the check's limit, not
+        // the method's: the method across nodes is checked in `spline_finite_differences`)
+        let piece = |t: f64| m.analyze(t).map(|s| s.cam_param.floor()).ok();
+        prop_assume!(piece(th - 4e-3) == Some(a.cam_param.floor()) && piece(th + 4e-3) == Some(a.cam_param.floor()));
         let c = m.independent_check(&[th]).unwrap();
         prop_assert_eq!(c.angles, 1, "no stencil on a convex cam: {:?}", c);
-        let w = m.cam().speed();
-        // relative to this angle's values (the check's figures are relative to the peaks over
-        // its angles): bounded below by the cam's size so that a zero crossing does not count
+        // the README's claim is relative to the peaks over a revolution (a random cam's sharply
+        // curved stretch can carry an acceleration of w² rad, where the differences' rounding
+        // limits the check to about 1e-7 of it): the peaks on a 1° grid and at this angle
+        let (mut vmax, mut amax) = (a.velocity.abs(), a.acceleration.abs());
+        for k in 0..360 {
+            if let Ok(s) = m.analyze(f64::from(k).to_radians()) {
+                (vmax, amax) = (vmax.max(s.velocity.abs()), amax.max(s.acceleration.abs()));
+            }
+        }
         let (dv, da) = (c.velocity * a.velocity.abs(), c.acceleration * a.acceleration.abs());
-        let scale = if f.is_oscillating() { 1.0 } else { m.size() };
         prop_assert!(c.position <= 2e-14, "{:?}", c);
-        prop_assert!(dv <= 1e-10 * w * scale, "{:?} at v = {}", c, a.velocity);
-        prop_assert!(da <= 1e-7 * w * w * scale, "{:?} at a = {}", c, a.acceleration);
+        prop_assert!(dv <= 1e-10 * vmax, "{:?} at v = {}, peak {vmax}", c, a.velocity);
+        prop_assert!(da <= 1e-7 * amax, "{:?} at a = {}, peak {amax}", c, a.acceleration);
     }
     /// Issue 12: scaling every length by any factor from 1e-99 to 1e98 scales positions,
     /// velocities and accelerations by it (arm angles unchanged), in single queries and in a
