@@ -194,7 +194,10 @@ fn support_check_resolves_a_sharply_curved_stretch() {
         * w
         / h;
     let v = m.analyze(th).unwrap().velocity;
-    assert!((v - fd).abs() <= 1e-10 * v.abs(), "v = {v}, by differences {fd}");
+    assert!(
+        (v - fd).abs() <= 1e-10 * v.abs(),
+        "v = {v}, by differences {fd}"
+    );
     let check = m.independent_check(&[th]).unwrap();
     assert_eq!(check.angles, 1);
     assert!(check.velocity <= VELOCITY, "{check:?}");
