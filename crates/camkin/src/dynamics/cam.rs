@@ -49,15 +49,16 @@ pub struct Multibody {
 }
 
 /// An evaluation at a state: `q̈`, the contact force and the driver's torque, with the state,
-/// mode and pairings it was taken at and the pairings after it.
+/// mode and contact pairing it was taken at and the contact pairing after it (only the contact
+/// has a pairing: the joints' entries stay `None`).
 #[derive(Debug, Clone, Copy)]
 struct Here {
     t: f64,
     q: State,
     qd: State,
     contact: bool,
-    before: Pairings,
-    after: Pairings,
+    before: Option<Pairing>,
+    after: Option<Pairing>,
     qdd: State,
     force: f64,
     torque: f64,
@@ -379,7 +380,7 @@ impl Multibody {
                 && h.q == self.q
                 && h.qd == self.qd
                 && h.contact == contact
-                && (h.before == self.pairings || h.after == self.pairings)
+                && (h.before == self.pairings[CONTACT] || h.after == self.pairings[CONTACT])
             {
                 return Ok(h);
             }
@@ -391,8 +392,8 @@ impl Multibody {
             q: self.q,
             qd: self.qd,
             contact,
-            before: self.pairings,
-            after,
+            before: self.pairings[CONTACT],
+            after: after[CONTACT],
             qdd,
             force,
             torque,
@@ -405,7 +406,9 @@ impl Multibody {
     /// and the pairings after it ([`Multibody::here`]).
     fn first_stage(&self, contact: bool) -> Result<((State, f64), Pairings), DynamicsError> {
         let h = self.here(contact)?;
-        Ok(((h.qdd, h.torque), h.after))
+        let mut after = self.pairings;
+        after[CONTACT] = h.after;
+        Ok(((h.qdd, h.torque), after))
     }
 
     /// One RK4 step of length `h` from the current state in the given mode, from its `first`
@@ -483,7 +486,7 @@ impl Multibody {
             after,
             ..
         } = self.here(self.in_contact)?;
-        self.pairings = after;
+        self.pairings[CONTACT] = after;
         let (position, velocity, acceleration) = if self.oscillating {
             (self.q[5], self.qd[5], qdd[5])
         } else {

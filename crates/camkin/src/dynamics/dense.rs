@@ -10,6 +10,16 @@ pub(crate) const VEC: usize = 12;
 pub(crate) const MAT: usize = 36;
 pub(crate) const KKT: usize = 144;
 
+/// The cam-follower model's size: six coordinates and at most six rows. A system of this size is
+/// solved at compile-time sizes with its rows padded to six by zero rows, so that its loops
+/// unroll; a zero row adds exact zeros to every sum, and its multiplier is zero.
+pub(crate) const SMALL: usize = 6;
+
+/// Whether `n` coordinates and `m` rows take the compile-time sizes ([`SMALL`]).
+pub(crate) fn small(n: usize, m: usize) -> bool {
+    n == SMALL && m <= SMALL
+}
+
 /// A buffer of `len` zeros: on the stack up to `N` entries, else on the heap.
 #[derive(Debug, Clone)]
 pub(crate) enum Buf<const N: usize> {

@@ -1,25 +1,28 @@
 //! The constraints as dense rows and the mass-orthogonal projection onto them (Bayo and Ledesma
 //! 1996): what a simulation applies after every step and at impacts.
 
-use super::dense::{cholesky, cholesky_solve, dot, lu_solve, Buf, KKT, MAT, VEC};
+use super::dense::{
+    cholesky, cholesky_solve, dot, lu_solve, small, Buf, Dim, Fixed, KKT, MAT, SMALL, VEC,
+};
 use super::model::{Constraint, System};
 use crate::contact::{ContactError, Pairing};
 
-/// The active constraints as dense rows (`m × n`, row-major), with `Φ` and each row's target
-/// velocity.
+/// The active constraints as dense rows (`m × n`, row-major, padded with zero rows to six for
+/// the cam-follower model: see [`SMALL`]), with `Φ` and each row's target velocity.
 pub(crate) struct DenseRows {
     pub(crate) jac: Buf<MAT>,
     pub(crate) phi: Buf<VEC>,
     pub(crate) target: Buf<VEC>,
-    /// rows
+    /// rows (without the padding)
     pub(crate) m: usize,
+    /// coordinates
+    n: usize,
 }
 
 impl DenseRows {
     /// Row `r` of `Φ_q`.
     pub(crate) fn row(&self, r: usize) -> &[f64] {
-        let n = self.jac.len() / self.m.max(1);
-        &self.jac[r * n..(r + 1) * n]
+        &self.jac[r * self.n..(r + 1) * self.n]
     }
 }
 
@@ -37,11 +40,13 @@ impl System {
     ) -> Result<DenseRows, ContactError> {
         let n = q.len();
         let m = self.active_rows(active);
+        let rows = if small(n, m) { SMALL } else { m };
         let mut d = DenseRows {
-            jac: Buf::zeros(m * n),
-            phi: Buf::zeros(m),
-            target: Buf::zeros(m),
+            jac: Buf::zeros(rows * n),
+            phi: Buf::zeros(rows),
+            target: Buf::zeros(rows),
             m,
+            n,
         };
         let mut r = 0;
         for (k, c) in self.constraints.iter().enumerate() {
@@ -79,10 +84,29 @@ impl System {
         b: &[f64],
         x: &mut [f64],
     ) -> bool {
-        let n = x0.len();
-        let m = rows.m;
-        // the rows and each stack buffer taken as slices once
-        let jac: &[f64] = &rows.jac;
+        if small(rows.n, rows.m) {
+            self.project_dim(Fixed::<SMALL>, Fixed::<SMALL>, rows, x0, b, x)
+        } else {
+            self.project_dim(rows.n, rows.m, rows, x0, b, x)
+        }
+    }
+
+    /// [`System::project_onto`] with the number of coordinates `dim` and `padded` rows (as
+    /// many as `rows` holds).
+    #[inline(always)]
+    fn project_dim(
+        &self,
+        dim: impl Dim,
+        padded: impl Dim,
+        rows: &DenseRows,
+        x0: &[f64],
+        b: &[f64],
+        x: &mut [f64],
+    ) -> bool {
+        let (n, real, m) = (dim.get(), rows.m, padded.get());
+        debug_assert!(n == rows.n && real <= m && rows.jac.len() == m * n);
+        // the rows and each stack buffer taken as slices once, at their lengths
+        let (jac, x0, x): (&[f64], _, _) = (&rows.jac[..m * n], &x0[..n], &mut x[..n]);
         let row = |r: usize| &jac[r * n..(r + 1) * n];
         let mut inv_mass_buf = Buf::<VEC>::zeros(n);
         let inv_mass: &mut [f64] = &mut inv_mass_buf;
@@ -111,13 +135,17 @@ impl System {
                     s[a * m + c] = dot(&scaled[a * n..(a + 1) * n], row(c));
                 }
             }
-            if cholesky(s, m) {
+            // a padded row's multiplier: zero (its row and right-hand side are zero)
+            for a in real..m {
+                s[a * m + a] = 1.0;
+            }
+            if cholesky(s, padded) {
                 let mut mu_buf = Buf::<VEC>::zeros(m);
                 let mu: &mut [f64] = &mut mu_buf;
-                for (r, v) in mu.iter_mut().enumerate() {
+                for (r, v) in mu[..real].iter_mut().enumerate() {
                     *v = b[r] - dot(row(r), x0);
                 }
-                cholesky_solve(s, m, mu);
+                cholesky_solve(s, padded, mu);
                 x.copy_from_slice(x0);
                 for (r, &u) in mu.iter().enumerate() {
                     for (xi, w) in x.iter_mut().zip(&scaled[r * n..(r + 1) * n]) {
@@ -127,6 +155,7 @@ impl System {
                 return x.iter().all(|v| v.is_finite());
             }
         }
+        let (m, x0) = (real, &x0[..n]);
         let k = n + m;
         let mut kkt = Buf::<KKT>::zeros(k * k);
         let mut rhs = Buf::<VEC>::zeros(k);

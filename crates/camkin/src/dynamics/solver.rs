@@ -1,6 +1,6 @@
 //! The augmented Lagrangian solve of the equations of motion at one instant.
 
-use super::dense::{cholesky, cholesky_solve, dot, Buf, Dim, Fixed, MAT, VEC};
+use super::dense::{cholesky, cholesky_solve, dot, small, Buf, Dim, Fixed, MAT, SMALL, VEC};
 use super::model::System;
 use super::{Constraint, DynamicsError};
 use crate::contact::Pairing;
@@ -118,20 +118,33 @@ impl System {
         pairings: &mut [Option<Pairing>],
         out: Solution<'_>,
     ) -> Result<usize, DynamicsError> {
-        // the cam-follower model's six coordinates as a constant: its loops unroll
-        if self.dofs() == 6 {
-            self.evaluate_dim(Fixed::<6>, al, t, q, qd, active, pairings, out)
+        let m = self.active_rows(active);
+        // the cam-follower model at compile-time sizes, its rows padded to six: its loops unroll
+        if small(self.dofs(), m) {
+            self.evaluate_dim(
+                Fixed::<SMALL>,
+                Fixed::<SMALL>,
+                al,
+                t,
+                q,
+                qd,
+                active,
+                pairings,
+                out,
+            )
         } else {
-            self.evaluate_dim(self.dofs(), al, t, q, qd, active, pairings, out)
+            self.evaluate_dim(self.dofs(), m, al, t, q, qd, active, pairings, out)
         }
     }
 
-    /// [`System::evaluate_into`] with the number of coordinates `dim`.
+    /// [`System::evaluate_into`] with the number of coordinates `dim` and `padded` rows (at
+    /// least the active rows; the rest are zero rows, whose multipliers are zero).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn evaluate_dim(
         &self,
         dim: impl Dim,
+        padded: impl Dim,
         al: &AugmentedLagrangian,
         t: f64,
         q: &[f64],
@@ -141,12 +154,13 @@ impl System {
         out: Solution<'_>,
     ) -> Result<usize, DynamicsError> {
         let n = dim.get();
-        let m = self.active_rows(active);
-        // Φ_q (m × n, row-major), γ, Φ and Φ̇ (with a driver's Φ_t)
+        let (m, rows) = (self.active_rows(active), padded.get());
+        debug_assert!(m <= rows);
+        // Φ_q (rows × n, row-major), γ, Φ and Φ̇ (with a driver's Φ_t)
         // each buffer taken as a slice once (not through the buffer at every access)
-        let mut jac_buf = Buf::<MAT>::zeros(m * n);
+        let mut jac_buf = Buf::<MAT>::zeros(rows * n);
         let jac: &mut [f64] = &mut jac_buf;
-        let mut gamma_buf = Buf::<VEC>::zeros(m);
+        let mut gamma_buf = Buf::<VEC>::zeros(rows);
         let gamma: &mut [f64] = &mut gamma_buf;
         let phi = &mut out.phi[..m];
         let phi_dot = &mut out.phi_dot[..m];
@@ -187,7 +201,7 @@ impl System {
         }
         let alpha = al.penalty * mmax.max(1e-300);
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
-        let mut stab_buf = Buf::<VEC>::zeros(m);
+        let mut stab_buf = Buf::<VEC>::zeros(rows);
         let stab: &mut [f64] = &mut stab_buf;
         for i in 0..m {
             stab[i] = -gamma[i] + phi_dot[i] * c1 + phi[i] * c2;
@@ -205,12 +219,16 @@ impl System {
             q_force,
             alpha,
         };
-        al_iterate(&inputs, dim, al, t, &mut out.lambda[..m], out.qdd)
+        let mut lambda_buf = Buf::<VEC>::zeros(rows);
+        let lambda: &mut [f64] = &mut lambda_buf;
+        let iterations = al_iterate(&inputs, dim, padded, al, t, lambda, out.qdd)?;
+        out.lambda[..m].copy_from_slice(&lambda[..m]);
+        Ok(iterations)
     }
 }
 
-/// What the augmented Lagrangian iteration works on: `n` coordinates, `m` rows, `Φ_q` (`jac`,
-/// `m × n`, row-major), `γ`, the mass diagonal, the stabilised right-hand side `stab`, the
+/// What the augmented Lagrangian iteration works on: `n` coordinates, `m` rows (padded with zero
+/// rows to the iteration's row count), `Φ_q` (`jac`, rows × `n`, row-major), `γ`, the mass diagonal, the stabilised right-hand side `stab`, the
 /// forces `Q` and the penalty `α`.
 struct Inputs<'a> {
     n: usize,
@@ -229,6 +247,7 @@ struct Inputs<'a> {
 fn al_iterate(
     inputs: &Inputs<'_>,
     dim: impl Dim,
+    padded: impl Dim,
     al: &AugmentedLagrangian,
     t: f64,
     lambda: &mut [f64],
@@ -245,9 +264,10 @@ fn al_iterate(
         alpha,
     } = inputs;
     debug_assert_eq!(n, dim.get());
-    let n = dim.get();
+    let (n, real, m) = (dim.get(), m, padded.get());
     // the slices at their lengths (so that the loops over `n` need no bounds checks)
     let (jac, mass, q_force, qdd) = (&jac[..m * n], &mass[..n], &q_force[..n], &mut qdd[..n]);
+    let (gamma, stab, lambda) = (&gamma[..m], &stab[..m], &mut lambda[..m]);
     let row = |r: usize| &jac[r * n..(r + 1) * n];
     // M + α Φ_qᵀ Φ_q, its lower triangle (all that the factorisation reads), factorised
     let mut lhs_buf = Buf::<MAT>::zeros(n * n);
@@ -313,7 +333,11 @@ fn al_iterate(
                     *x = dot(row(a), row(b));
                 }
             }
-            if cholesky(&mut jjt, m) {
+            // a padded row's multiplier: zero (its row and right-hand side are zero)
+            for a in real..m {
+                jjt[a * m + a] = 1.0;
+            }
+            if cholesky(&mut jjt, padded) {
                 // Q − M q̈, then Φ_q times it
                 let mut f = Buf::<VEC>::zeros(n);
                 for (j, x) in f.iter_mut().enumerate() {
@@ -323,7 +347,7 @@ fn al_iterate(
                 for (r, x) in rhs.iter_mut().enumerate() {
                     *x = dot(row(r), &f);
                 }
-                cholesky_solve(&jjt, m, &mut rhs);
+                cholesky_solve(&jjt, padded, &mut rhs);
                 lambda.copy_from_slice(&rhs);
             } else {
                 residual(qdd, res);
