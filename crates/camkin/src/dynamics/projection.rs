@@ -131,7 +131,7 @@ impl System {
             }
             // the lower triangle: all that the factorisation reads
             for a in 0..m {
-                for c in 0..=a {
+                for c in 0..a + 1 {
                     s[a * m + c] = dot(&scaled[a * n..(a + 1) * n], row(c));
                 }
             }

@@ -277,14 +277,14 @@ fn al_iterate(
         for i in 0..n {
             let a = jr[i];
             if a != 0.0 {
-                for j in 0..=i {
+                for j in 0..i + 1 {
                     lhs[i * n + j] += a * jr[j];
                 }
             }
         }
     }
     for i in 0..n {
-        for j in 0..=i {
+        for j in 0..i + 1 {
             lhs[i * n + j] *= alpha;
         }
         lhs[i * n + i] += mass[i];
