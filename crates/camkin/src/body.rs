@@ -133,6 +133,13 @@ impl BodyState {
     }
 }
 
+/// [`CurveInFrame::curve_at`] for a curve of a type known at compile time (its evaluation
+/// inlined, what the caller does not read left out) or `dyn Curve`.
+#[inline(always)]
+pub(crate) fn curve_in<C: Curve + ?Sized>(frame: &Frame, curve: &C, u: f64) -> WorldDerivs {
+    frame.derivs_to_world(&curve.eval(u))
+}
+
 /// Curves seen through a body [`Frame`].
 pub trait CurveInFrame {
     /// Body-frame derivatives expressed in the world frame.
@@ -157,7 +164,7 @@ impl CurveInFrame for Frame {
 
     #[inline(always)]
     fn curve_at(&self, curve: &dyn Curve, u: f64) -> WorldDerivs {
-        self.derivs_to_world(&curve.eval(u))
+        curve_in(self, curve, u)
     }
 
     #[inline]

@@ -6,8 +6,9 @@ use super::follower::rates::{CamPoint, Refusals};
 use super::follower::{dispatch, Kind};
 use super::state::pressure_angle;
 use super::{CamError, FollowerState, Found, Mechanism, Motion, Touch};
-use crate::body::{BodyState, CurveInFrame, WorldDerivs};
+use crate::body::{curve_in, BodyState, CurveInFrame, WorldDerivs};
 use crate::contact::{ContactKinematics, Pairing};
+use crate::curve::Curve;
 use crate::geometry::{Frame, UnitVec2, Vec2};
 
 /// The shared part of an analysis at a converged touch.
@@ -35,8 +36,9 @@ impl Mechanism {
         // a named kind: the closed-form rates at the contact (no normal, body states or
         // constraint row); declined near a refusal, where the paper's method says why
         if self.geometry.carried.is_none() {
+            let profile = self.cam.profile.as_ref();
             let fast = dispatch!(&self.geometry.model, k => {
-                self.closed_form_motion(k, theta, cam, frame, touch, found)
+                self.closed_form_motion(k, profile, theta, cam, frame, touch, found)
             });
             if let Some(m) = fast {
                 return Ok(m);
@@ -57,16 +59,18 @@ impl Mechanism {
     /// The motion at a converged first touch by the closed-form rates of the follower kind `k`
     /// (see [`Kind::rates`]); `None` where they decline.
     #[inline(always)]
-    pub(crate) fn closed_form_motion<K: Kind>(
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn closed_form_motion<K: Kind, C: Curve + ?Sized>(
         &self,
         k: &K,
+        profile: &C,
         theta: f64,
         cam: &BodyState,
         frame: &Frame,
         touch: Touch,
         found: Found,
     ) -> Option<Motion> {
-        let e = frame.curve_at(self.cam.profile.as_ref(), touch.u);
+        let e = curve_in(frame, profile, touch.u);
         let at = CamPoint::new(&e, self.cam.pivot, cam.omega, cam.alpha);
         let refuse = Refusals::new(
             self.options.lock_tolerance,

@@ -6,7 +6,8 @@ use super::follower::{dispatch, Kind};
 use super::jet::V2;
 use super::starts::Candidates;
 use super::{CamError, Mechanism, StopReason};
-use crate::body::{CurveInFrame, WorldDerivs};
+use crate::body::{curve_in, CurveInFrame, WorldDerivs};
+use crate::curve::Curve;
 use crate::geometry::Frame;
 
 /// A converged first touch: cam parameter and follower position.
@@ -50,21 +51,23 @@ impl Mechanism {
         u: f64,
         q: f64,
     ) -> Result<(Touch, WorldDerivs), CamError> {
-        dispatch!(&self.geometry.model, k => self.newton_with(k, theta, frame, u, q))
+        let profile = self.cam.profile.as_ref();
+        dispatch!(&self.geometry.model, k => self.newton_with(k, profile, theta, frame, u, q))
     }
 
-    /// [`Mechanism::newton_at`] for the follower kind `k` (the mechanism's own): monomorphised,
-    /// so that a warm step inlines the kind's residual and Jacobian.
+    /// [`Mechanism::newton_at`] for the follower kind `k` (the mechanism's own) on the cam's
+    /// `profile` (as its own type or `dyn Curve`): monomorphised, so that a warm step inlines
+    /// the kind's residual and Jacobian and, on a spline, the spline's evaluation.
     #[inline(always)]
-    pub(crate) fn newton_with<K: Kind>(
+    pub(crate) fn newton_with<K: Kind, C: Curve + ?Sized>(
         &self,
         k: &K,
+        profile: &C,
         theta: f64,
         frame: &Frame,
         mut u: f64,
         mut q: f64,
     ) -> Result<(Touch, WorldDerivs), CamError> {
-        let profile = self.cam.profile.as_ref();
         // in units of the tolerance (squares of lengths could underflow at extreme sizes):
         // a step δ is accepted when δ ≤ tol, or when C δ² ≤ tol (the next step would be below
         // the tolerance): (δ/tol)² ≤ 1 or (C tol)² (δ/tol)⁴ ≤ 1
@@ -75,7 +78,7 @@ impl Mechanism {
         let qs = self.q_scale();
         let lim = self.options.max_step_fraction * self.period;
         for _ in 0..self.options.max_iterations {
-            let e = frame.curve_at(profile, u);
+            let e = curve_in(frame, profile, u);
             let f = k.residual_value(V2::c(e.p.coords), V2::c(e.d1), q);
             let [du, dq] = solve2(&k.jacobian(&e, q), f);
             if !(du.is_finite() && dq.is_finite()) {
@@ -131,10 +134,7 @@ impl Mechanism {
         if self.geometry.is_knife() {
             return true;
         }
-        match k.score(e.p) {
-            Some((_, qs)) => (qs - q).abs() <= self.touch_slack(),
-            None => false,
-        }
+        k.is_first_through(e.p, q, self.touch_slack())
     }
 
     /// A warm contact on a convex profile is the first touch: its normal faces the follower,

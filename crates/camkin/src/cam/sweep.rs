@@ -11,6 +11,7 @@ use super::follower::{dispatch, Kind};
 use super::overtake::Overtaken;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
 use crate::body::BodyState;
+use crate::curve::{ClosedSpline, Curve};
 use crate::geometry::Frame;
 
 /// How the contact at an angle was found.
@@ -52,6 +53,8 @@ pub enum Found {
 #[derive(Debug, Clone)]
 pub struct Sweep<'a> {
     mech: &'a Mechanism,
+    /// the cam's profile when it is a spline (the motion-only warm step evaluates it inlined)
+    spline: Option<&'a ClosedSpline>,
     prev: Option<Prev>,
     /// the last contact found, and `dv/dθ` of a carried curve's parameter
     last: Option<(Touch, f64)>,
@@ -86,8 +89,10 @@ pub const MAX_WARM_STEP: f64 = 0.2;
 
 impl<'a> Sweep<'a> {
     pub(crate) fn new(mech: &'a Mechanism) -> Self {
+        let profile: &dyn std::any::Any = mech.cam.profile.as_ref();
         Self {
             mech,
+            spline: profile.downcast_ref::<ClosedSpline>(),
             prev: None,
             last: None,
         }
@@ -131,18 +136,33 @@ impl<'a> Sweep<'a> {
     /// zero): the general step then decides, from the start.
     #[inline(always)]
     fn warm_motion<K: Kind>(&self, k: &K, theta: f64, p: Prev) -> Option<Motion> {
-        let m = self.mech;
-        if m.geometry.carried.is_some() {
+        if self.mech.geometry.carried.is_some() {
             return None;
         }
+        match self.spline {
+            Some(s) => self.warm_motion_on(k, s, theta, p),
+            None => self.warm_motion_on(k, self.mech.cam.profile.as_ref(), theta, p),
+        }
+    }
+
+    /// [`Sweep::warm_motion`] on the cam's `profile` as its own type or `dyn Curve`.
+    #[inline(always)]
+    fn warm_motion_on<K: Kind, C: Curve + ?Sized>(
+        &self,
+        k: &K,
+        profile: &C,
+        theta: f64,
+        p: Prev,
+    ) -> Option<Motion> {
+        let m = self.mech;
         let cam = m.cam.state(theta);
         let frame = cam.frame();
         let (u0, q0) = p.start(theta - p.theta);
-        let (t, e) = m.newton_with(k, theta, &frame, u0, q0).ok()?;
+        let (t, e) = m.newton_with(k, profile, theta, &frame, u0, q0).ok()?;
         if !m.convex_warm_touch_with(k, &e, t.q) {
             return None;
         }
-        m.closed_form_motion(k, theta, &cam, &frame, t, Found::WarmStart)
+        m.closed_form_motion(k, profile, theta, &cam, &frame, t, Found::WarmStart)
     }
 
     /// Keeps a carried curve's contact parameter and its rate (a difference quotient over the last

@@ -462,6 +462,13 @@ pub(crate) trait Kind {
     /// `x`, oriented so that larger is "touches earlier" (the first touch is the maximum), or
     /// `None` when the follower never touches `x`. Returns `(oriented score, q)`.
     fn score(&self, x: Point2) -> Option<(f64, f64)>;
+    /// Whether a converged tangency at world cam point `x` and position `q` is the follower's
+    /// first touch through `x` (the position of [`Kind::score`], within `slack`), not its
+    /// boundary's later crossing of `x`. A kind may answer by a cheaper equivalent test.
+    #[inline(always)]
+    fn is_first_through(&self, x: Point2, q: f64, slack: f64) -> bool {
+        matches!(self.score(x), Some((_, qs)) if (qs - q).abs() <= slack)
+    }
     /// An interval `(mid, half width)` of positions holding the `q` of [`Kind::score`] at every
     /// world point within `r` of `c` (rounding included), for pruning the first-touch search;
     /// `None` when the follower touches none of them. The default bounds nothing.

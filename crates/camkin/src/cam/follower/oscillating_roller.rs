@@ -88,6 +88,19 @@ impl Kind for OscillatingRoller {
             self.closing,
         ))
     }
+    /// At a tangency the roller's boundary passes through `x` at the arm angles `ψ ∓ closing·β`
+    /// (`ψ` the polar angle of `x` about the pivot, `β ∈ [0, π]` the angle at the pivot between
+    /// `x` and the roller's centre: see [`Kind::score`]); the first, `ψ − closing·β`, has `x`
+    /// ahead of the arm in the closing sense: `closing·(arm × (x − o)) = ρ sin β ≥ 0`, where
+    /// the later one has `−ρ sin β`. Within `slack` where the two merge (`β → 0`), and on the
+    /// reported branch (within ±180° of the initial angle). No `atan2` and no wrapping.
+    #[inline(always)]
+    fn is_first_through(&self, x: Point2, q: f64, slack: f64) -> bool {
+        let y = x - self.o;
+        let (s, c) = q.sin_cos();
+        let (ahead, rho) = (self.closing * (c * y.y - s * y.x), y.norm());
+        rho > 0.0 && ahead >= -slack * rho && (q - self.phi0).abs() <= std::f64::consts::PI + slack
+    }
     fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
         Some((
             super::CentrePath::Circle {
@@ -256,5 +269,75 @@ impl Kind for OscillatingRoller {
                 + (f1.powi(4) - 4.0 * f1 * f3 - 3.0 * f2 * f2) * u),
         ];
         Envelope::Offset(rotated_derivs(sigma, rot, &w), self.r)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cheap first-touch test against the score's (the default of [`Kind::is_first_through`]),
+    /// at both arm angles where the roller passes through a point, found independently: sign
+    /// changes of `|x − C(φ)|² − r²` over the branch, refined by bisection (no law of cosines).
+    #[test]
+    fn first_through_agrees_with_the_score_at_both_crossings() {
+        let (mut checked, mut first) = (0, 0);
+        for (closing, l, r) in [
+            (Sense::Ccw, 4.0, 1.0),
+            (Sense::Cw, 4.0, 1.0),
+            (Sense::Ccw, 3.0, 0.01),
+        ] {
+            let Model::OscillatingRoller(k) = OscillatingRoller::model(
+                Point2::origin(),
+                Point2::new(-2.0, 5.0),
+                l,
+                r,
+                closing,
+                -1.0,
+            ) else {
+                unreachable!()
+            };
+            let slack = 1e-12;
+            let gap = |x: Point2, phi: f64| {
+                let c = k.o + l * Vec2::new(phi.cos(), phi.sin());
+                (x - c).norm_squared() - r * r
+            };
+            for i in 0..40 {
+                // points the roller reaches, around the arm's circle
+                let (a, d) = (
+                    -1.0 + 0.9 * (f64::from(i) * 0.37).sin(),
+                    0.95 * r * (f64::from(i) * 1.3).cos(),
+                );
+                let x = k.o + (l + d) * Vec2::new(a.cos(), a.sin());
+                let (lo, n) = (k.phi0 - std::f64::consts::PI, 20_000);
+                let h = std::f64::consts::TAU / f64::from(n);
+                for j in 0..n {
+                    let (p0, p1) = (lo + f64::from(j) * h, lo + f64::from(j + 1) * h);
+                    if gap(x, p0).signum() == gap(x, p1).signum() {
+                        continue;
+                    }
+                    let (mut a0, mut a1) = (p0, p1);
+                    for _ in 0..80 {
+                        let m = 0.5 * (a0 + a1);
+                        if gap(x, m).signum() == gap(x, a0).signum() {
+                            a0 = m;
+                        } else {
+                            a1 = m;
+                        }
+                    }
+                    let phi = 0.5 * (a0 + a1);
+                    let by_score = matches!(k.score(x), Some((_, q)) if (q - phi).abs() <= 1e-9);
+                    assert_eq!(
+                        k.is_first_through(x, phi, slack),
+                        by_score,
+                        "{closing:?}, L {l}, r {r}: x {x:?} at φ {phi}"
+                    );
+                    checked += 1;
+                    first += usize::from(by_score);
+                }
+            }
+        }
+        // two crossings a point: the first accepted, the later refused
+        assert_eq!((checked, first), (240, 120));
     }
 }
