@@ -20,6 +20,16 @@ pub(crate) fn small(n: usize, m: usize) -> bool {
     n == SMALL && m <= SMALL
 }
 
+/// Gives the padded rows `real..m` of the symmetric `m × m` matrix `a` (zero rows and columns:
+/// a padded constraint row is zero) a unit diagonal, so that their unknowns come out zero and
+/// the rest of the solution is that of the unpadded system, to the bit.
+#[inline(always)]
+pub(crate) fn unit_padding(a: &mut [f64], m: usize, real: usize) {
+    for k in real..m {
+        a[k * m + k] = 1.0;
+    }
+}
+
 /// A buffer of `len` zeros: on the stack up to `N` entries, else on the heap.
 #[derive(Debug, Clone)]
 pub(crate) enum Buf<const N: usize> {
@@ -224,6 +234,20 @@ mod tests {
         assert!(lu_solve(&mut s, 2, &mut r));
         assert_eq!(r, vec![3.0, 2.0]);
         assert!(!lu_solve(&mut [1.0, 2.0, 2.0, 4.0], 2, &mut [1.0, 1.0]));
+        // padded to n + 2 with zero rows and columns and a unit diagonal there: the same
+        // solution to the bit, zeros in the padding
+        let p = n + 2;
+        let mut padded = vec![0.0; p * p];
+        for i in 0..n {
+            padded[i * p..i * p + n].copy_from_slice(&a[i * n..(i + 1) * n]);
+        }
+        unit_padding(&mut padded, p, n);
+        assert!(cholesky(&mut padded, p));
+        let mut z = b.clone();
+        z.extend([0.0, 0.0]);
+        cholesky_solve(&padded, p, &mut z);
+        assert_eq!(&z[..n], &x[..]);
+        assert_eq!(&z[n..], &[0.0, 0.0]);
         // a large buffer lives on the heap, a small one on the stack
         assert!(matches!(Buf::<MAT>::zeros(MAT + 1), Buf::Heap(_)));
         assert!(matches!(Buf::<MAT>::zeros(MAT), Buf::Stack(..)));

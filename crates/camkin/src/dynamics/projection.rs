@@ -2,7 +2,8 @@
 //! 1996): what a simulation applies after every step and at impacts.
 
 use super::dense::{
-    cholesky, cholesky_solve, dot, lu_solve, small, Buf, Dim, Fixed, KKT, MAT, SMALL, VEC,
+    cholesky, cholesky_solve, dot, lu_solve, small, unit_padding, Buf, Dim, Fixed, KKT, MAT, SMALL,
+    VEC,
 };
 use super::model::{Constraint, System};
 use crate::contact::{ContactError, Pairing};
@@ -136,9 +137,7 @@ impl System {
                 }
             }
             // a padded row's multiplier: zero (its row and right-hand side are zero)
-            for a in real..m {
-                s[a * m + a] = 1.0;
-            }
+            unit_padding(s, m, real);
             if cholesky(s, padded) {
                 let mut mu_buf = Buf::<VEC>::zeros(m);
                 let mu: &mut [f64] = &mut mu_buf;

@@ -1,6 +1,8 @@
 //! The augmented Lagrangian solve of the equations of motion at one instant.
 
-use super::dense::{cholesky, cholesky_solve, dot, small, Buf, Dim, Fixed, MAT, SMALL, VEC};
+use super::dense::{
+    cholesky, cholesky_solve, dot, small, unit_padding, Buf, Dim, Fixed, MAT, SMALL, VEC,
+};
 use super::model::System;
 use super::{Constraint, DynamicsError};
 use crate::contact::Pairing;
@@ -334,9 +336,7 @@ fn al_iterate(
                 }
             }
             // a padded row's multiplier: zero (its row and right-hand side are zero)
-            for a in real..m {
-                jjt[a * m + a] = 1.0;
-            }
+            unit_padding(&mut jjt, m, real);
             if cholesky(&mut jjt, padded) {
                 // Q − M q̈, then Φ_q times it
                 let mut f = Buf::<VEC>::zeros(n);
