@@ -126,6 +126,7 @@ impl System {
             self.evaluate_dim(
                 Fixed::<SMALL>,
                 Fixed::<SMALL>,
+                m,
                 al,
                 t,
                 q,
@@ -135,18 +136,19 @@ impl System {
                 out,
             )
         } else {
-            self.evaluate_dim(self.dofs(), m, al, t, q, qd, active, pairings, out)
+            self.evaluate_dim(self.dofs(), m, m, al, t, q, qd, active, pairings, out)
         }
     }
 
-    /// [`System::evaluate_into`] with the number of coordinates `dim` and `padded` rows (at
-    /// least the active rows; the rest are zero rows, whose multipliers are zero).
+    /// [`System::evaluate_into`] with the number of coordinates `dim`, the `m` active rows and
+    /// `padded` rows (at least `m`; the rest are zero rows, whose multipliers are zero).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn evaluate_dim(
         &self,
         dim: impl Dim,
         padded: impl Dim,
+        m: usize,
         al: &AugmentedLagrangian,
         t: f64,
         q: &[f64],
@@ -156,7 +158,7 @@ impl System {
         out: Solution<'_>,
     ) -> Result<usize, DynamicsError> {
         let n = dim.get();
-        let (m, rows) = (self.active_rows(active), padded.get());
+        let rows = padded.get();
         debug_assert!(m <= rows);
         // Φ_q (rows × n, row-major), γ, Φ and Φ̇ (with a driver's Φ_t)
         // each buffer taken as a slice once (not through the buffer at every access)
