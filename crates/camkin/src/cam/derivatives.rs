@@ -33,10 +33,10 @@ impl Mechanism {
         let rot0 = Rotation::new(s * theta);
         // R(s ε) as jets: cos(sε) = 1 − ε²/2, sin(sε) = s ε − s ε³/6 (s = ±1)
         let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
-        let j = self
-            .geometry
-            .model
-            .jacobian(&cam.eval_curve(profile, touch.u), touch.q);
+        let j = self.geometry.model.jacobian(
+            &cam.eval_curve(profile, touch.u),
+            &self.geometry.model.pose(touch.q),
+        );
         if !solve2(&j, [1.0, 1.0]).iter().all(|x| x.is_finite()) {
             return Err(CamError::NoConvergence {
                 angle_deg: theta.to_degrees(),

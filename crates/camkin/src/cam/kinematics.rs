@@ -4,6 +4,7 @@
 
 use super::follower::rates::{CamPoint, Refusals};
 use super::follower::{dispatch, Kind};
+use super::pose::Pose;
 use super::state::pressure_angle;
 use super::{CamError, FollowerState, Found, Mechanism, Motion, Touch};
 use crate::body::{curve_in, BodyState, CurveInFrame, WorldDerivs};
@@ -38,7 +39,8 @@ impl Mechanism {
         if self.geometry.carried.is_none() {
             let profile = self.cam.profile.as_ref();
             let fast = dispatch!(&self.geometry.model, k => {
-                self.closed_form_motion(k, profile, theta, cam, frame, touch, found)
+                let pose = k.pose(touch.q);
+                self.closed_form_motion(k, profile, theta, cam, frame, (touch, pose), found)
             });
             if let Some(m) = fast {
                 return Ok(m);
@@ -56,8 +58,9 @@ impl Mechanism {
         })
     }
 
-    /// The motion at a converged first touch by the closed-form rates of the follower kind `k`
-    /// (see [`Kind::rates`]); `None` where they decline.
+    /// The motion at a converged first touch (with the follower's position as a [`Pose`]) by
+    /// the closed-form rates of the follower kind `k` (see [`Kind::rates`]); `None` where they
+    /// decline.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn closed_form_motion<K: Kind, C: Curve + ?Sized>(
@@ -67,7 +70,7 @@ impl Mechanism {
         theta: f64,
         cam: &BodyState,
         frame: &Frame,
-        touch: Touch,
+        (touch, pose): (Touch, Pose),
         found: Found,
     ) -> Option<Motion> {
         let e = curve_in(frame, profile, touch.u);
@@ -76,7 +79,7 @@ impl Mechanism {
             self.options.lock_tolerance,
             self.options.conformal_tolerance,
         );
-        let [qd, qdd, ud] = k.rates(&at, touch.q, &refuse)?;
+        let [qd, qdd, ud] = k.rates(&at, &pose, &refuse)?;
         Some(Motion {
             cam_angle: theta,
             position: touch.q,

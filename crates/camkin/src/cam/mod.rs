@@ -28,6 +28,7 @@ mod kinematics;
 mod mechanism;
 mod options;
 mod overtake;
+mod pose;
 mod search;
 mod starts;
 mod state;

@@ -3,7 +3,7 @@
 //! local maxima refined by Newton).
 
 use super::follower::{dispatch, Kind};
-use super::jet::V2;
+use super::pose::Pose;
 use super::starts::Candidates;
 use super::{CamError, Mechanism, StopReason};
 use crate::body::{curve_in, CurveInFrame, WorldDerivs};
@@ -52,12 +52,16 @@ impl Mechanism {
         q: f64,
     ) -> Result<(Touch, WorldDerivs), CamError> {
         let profile = self.cam.profile.as_ref();
-        dispatch!(&self.geometry.model, k => self.newton_with(k, profile, theta, frame, u, q))
+        dispatch!(&self.geometry.model, k => self
+            .newton_with(k, profile, theta, frame, u, k.pose(q))
+            .map(|(t, e, _)| (t, e)))
     }
 
     /// [`Mechanism::newton_at`] for the follower kind `k` (the mechanism's own) on the cam's
     /// `profile` (as its own type or `dyn Curve`): monomorphised, so that a warm step inlines
-    /// the kind's residual and Jacobian and, on a spline, the spline's evaluation.
+    /// the kind's residual and Jacobian and, on a spline, the spline's evaluation. Starts from
+    /// the position `pose` and also returns the converged one (an arm angle's sine and cosine
+    /// carried along the steps).
     #[inline(always)]
     pub(crate) fn newton_with<K: Kind, C: Curve + ?Sized>(
         &self,
@@ -66,8 +70,8 @@ impl Mechanism {
         theta: f64,
         frame: &Frame,
         mut u: f64,
-        mut q: f64,
-    ) -> Result<(Touch, WorldDerivs), CamError> {
+        mut pose: Pose,
+    ) -> Result<(Touch, WorldDerivs, Pose), CamError> {
         // in units of the tolerance (squares of lengths could underflow at extreme sizes):
         // a step δ is accepted when δ ≤ tol, or when C δ² ≤ tol (the next step would be below
         // the tolerance): (δ/tol)² ≤ 1 or (C tol)² (δ/tol)⁴ ≤ 1
@@ -79,8 +83,7 @@ impl Mechanism {
         let lim = self.options.max_step_fraction * self.period;
         for _ in 0..self.options.max_iterations {
             let e = curve_in(frame, profile, u);
-            let f = k.residual_value(V2::c(e.p.coords), V2::c(e.d1), q);
-            let [du, dq] = solve2(&k.jacobian(&e, q), f);
+            let [du, dq] = k.newton_step(&e, &pose);
             if !(du.is_finite() && dq.is_finite()) {
                 return Err(CamError::NoConvergence {
                     angle_deg: theta.to_degrees(),
@@ -90,7 +93,7 @@ impl Mechanism {
             // a step stays within a fraction of the period (safeguard against wild steps)
             let du = du.clamp(-lim, lim);
             u += du;
-            q += dq;
+            pose = k.pose_from(pose, pose.q + dq);
             let (su, sq) = (du * inv_tol, dq * qs * inv_tol);
             let step2 = (su * su * e.d1.norm_squared()).max(sq * sq);
             if step2 <= 1.0 || c2 * step2 * step2 <= 1.0 {
@@ -99,7 +102,12 @@ impl Mechanism {
                 } else {
                     u.rem_euclid(self.period)
                 };
-                return Ok((Touch { u, q, v: 0.0 }, e));
+                let t = Touch {
+                    u,
+                    q: pose.q,
+                    v: 0.0,
+                };
+                return Ok((t, e, pose));
             }
         }
         Err(CamError::NoConvergence {
@@ -117,12 +125,12 @@ impl Mechanism {
     /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
     #[inline]
     pub(crate) fn is_first_touch_at(&self, e: &WorldDerivs, q: f64) -> bool {
-        dispatch!(&self.geometry.model, k => self.is_first_touch_with(k, e, q))
+        dispatch!(&self.geometry.model, k => self.is_first_touch_with(k, e, &k.pose(q)))
     }
 
     /// [`Mechanism::is_first_touch_at`] for the follower kind `k` (the mechanism's own).
     #[inline(always)]
-    pub(crate) fn is_first_touch_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: f64) -> bool {
+    pub(crate) fn is_first_touch_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: &Pose) -> bool {
         if !self.faces_follower_with(k, e, q) {
             return false;
         }
@@ -141,7 +149,7 @@ impl Mechanism {
     /// and a roller's touch is the first of its cam point (a roller's Newton can leap: its
     /// residual bends on the scale of the roller's radius, which may be tiny).
     #[inline(always)]
-    pub(crate) fn convex_warm_touch_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: f64) -> bool {
+    pub(crate) fn convex_warm_touch_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: &Pose) -> bool {
         self.faces_follower_with(k, e, q) && (!self.roller || self.is_first_touch_with(k, e, q))
     }
 
@@ -165,7 +173,7 @@ impl Mechanism {
     /// The cam's outward normal at `e` faces the follower at position `q` (the cam's back side
     /// and a roller touching from inside fail this). Only a sign: no normalisation.
     #[inline(always)]
-    pub(crate) fn faces_follower_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: f64) -> bool {
+    pub(crate) fn faces_follower_with<K: Kind>(&self, k: &K, e: &WorldDerivs, q: &Pose) -> bool {
         // outward normal ∝ −orientation · k × r'
         let outward = -self.orientation * crate::geometry::rot90(e.d1);
         outward.dot(&k.toward_follower(e.p, q)) > 0.0

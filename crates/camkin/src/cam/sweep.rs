@@ -9,6 +9,7 @@
 
 use super::follower::{dispatch, Kind};
 use super::overtake::Overtaken;
+use super::pose::Pose;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
 use crate::body::BodyState;
 use crate::curve::{ClosedSpline, Curve};
@@ -58,52 +59,9 @@ pub struct Sweep<'a> {
     prev: Option<Prev>,
     /// the last contact found, and `dv/dθ` of a carried curve's parameter
     last: Option<(Touch, f64)>,
-    /// the cam's rotation at the last motion-only warm step, for the next by angle addition
-    turn: Option<Turn>,
-}
-
-/// The cam's rotation at angle `theta` (rad), reached `age` angle additions after a `sin_cos`.
-#[derive(Debug, Clone, Copy)]
-struct Turn {
-    theta: f64,
-    rotation: Rotation,
-    age: u32,
-}
-
-/// The largest step (rad) the cam's rotation is carried over by angle addition (the series of
-/// `sin h` and `cos h` below are exact to rounding up to it: their first omitted terms are
-/// below 3e-24), and the most additions before a fresh `sin_cos` (each adds up to an ulp of
-/// rounding: the rotation stays within 2e-15 of `sin_cos`, measured 1.0e-15).
-const TURN_STEP: f64 = 0.02;
-const TURN_AGE: u32 = 32;
-
-impl Turn {
-    /// The rotation at `theta` from this one by angle addition, or `None` when `theta` is too
-    /// far or the rotation too old. `sign` is the cam's sense (its rotation is by `sign·θ`).
-    #[inline(always)]
-    fn at(self, theta: f64, sign: f64) -> Option<Self> {
-        let h = sign * (theta - self.theta);
-        if !(h.abs() <= TURN_STEP && self.age < TURN_AGE) {
-            return None;
-        }
-        let h2 = h * h;
-        let sin = h * (1.0 - h2 / 6.0 * (1.0 - h2 / 20.0 * (1.0 - h2 / 42.0 * (1.0 - h2 / 72.0))));
-        let cos = 1.0 - h2 / 2.0 * (1.0 - h2 / 12.0 * (1.0 - h2 / 30.0 * (1.0 - h2 / 56.0)));
-        Some(Self {
-            theta,
-            rotation: self.rotation * Rotation::from_cos_sin_unchecked(cos, sin),
-            age: self.age + 1,
-        })
-    }
-
-    /// The rotation at `theta` by `sin_cos`.
-    fn fresh(theta: f64, sign: f64) -> Self {
-        Self {
-            theta,
-            rotation: Rotation::new(sign * theta),
-            age: 0,
-        }
-    }
+    /// the cam's rotation angle (`±θ`) at the last motion-only warm step, for the next by angle
+    /// addition
+    turn: Option<Pose>,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -117,6 +75,8 @@ struct Prev {
     d2q_dtheta2: f64,
     /// `d²u/dθ²` from the last two rates (0 after a global search)
     d2u_dtheta2: f64,
+    /// the position with, for an arm angle, its sine and cosine (after a motion-only warm step)
+    pose: Option<Pose>,
 }
 
 impl Prev {
@@ -160,17 +120,22 @@ impl<'a> Sweep<'a> {
     pub fn step_motion(&mut self, theta: f64) -> Result<Motion, CamError> {
         let fast = match self.prev {
             Some(p) if self.mech.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
-                let sign = self.mech.cam.direction.sign();
-                let turn = (self.turn.and_then(|t| t.at(theta, sign)))
-                    .unwrap_or_else(|| Turn::fresh(theta, sign));
+                let angle = self.mech.cam.direction.sign() * theta;
+                let turn = match self.turn {
+                    Some(t) => t.angle_to(angle),
+                    None => Pose::angle(angle),
+                };
                 self.turn = Some(turn);
-                let rotation = turn.rotation;
+                let rotation = Rotation::from_cos_sin_unchecked(turn.cos, turn.sin);
                 dispatch!(&self.mech.geometry.model, k => self.warm_motion(k, theta, p, rotation))
             }
             _ => None,
         };
-        if let Some(s) = fast {
+        if let Some((s, pose)) = fast {
             self.remember(theta, Some(kept(&s)));
+            if let Some(p) = &mut self.prev {
+                p.pose = Some(pose);
+            }
             return Ok(s);
         }
         let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
@@ -183,9 +148,9 @@ impl<'a> Sweep<'a> {
 
     /// The motion-only warm step of a named follower kind `k` on a convex profile: Newton from
     /// the extrapolated contact, the first-touch checks of [`Sweep::warm`], and the kind's
-    /// closed-form rates, monomorphised for the kind. `None` where any of them declines (a
-    /// carried curve, Newton failing, a touch that is not the first, a rate's denominator near
-    /// zero): the general step then decides, from the start.
+    /// closed-form rates, monomorphised for the kind; also the converged position. `None` where
+    /// any of them declines (a carried curve, Newton failing, a touch that is not the first, a
+    /// rate's denominator near zero): the general step then decides, from the start.
     #[inline(always)]
     fn warm_motion<K: Kind>(
         &self,
@@ -193,7 +158,7 @@ impl<'a> Sweep<'a> {
         theta: f64,
         p: Prev,
         rotation: Rotation,
-    ) -> Option<Motion> {
+    ) -> Option<(Motion, Pose)> {
         if self.mech.geometry.carried.is_some() {
             return None;
         }
@@ -213,16 +178,22 @@ impl<'a> Sweep<'a> {
         theta: f64,
         p: Prev,
         rotation: Rotation,
-    ) -> Option<Motion> {
+    ) -> Option<(Motion, Pose)> {
         let m = self.mech;
         let cam = m.cam.state(theta);
         let frame = Frame::from_parts(cam.pose.origin.coords.into(), rotation);
         let (u0, q0) = p.start(theta - p.theta);
-        let (t, e) = m.newton_with(k, profile, theta, &frame, u0, q0).ok()?;
-        if !m.convex_warm_touch_with(k, &e, t.q) {
+        let start = match p.pose {
+            Some(from) => k.pose_from(from, q0),
+            None => k.pose(q0),
+        };
+        let (t, e, pose) = m.newton_with(k, profile, theta, &frame, u0, start).ok()?;
+        if !m.convex_warm_touch_with(k, &e, &pose) {
             return None;
         }
-        m.closed_form_motion(k, profile, theta, &cam, &frame, t, Found::WarmStart)
+        let found = Found::WarmStart;
+        let motion = m.closed_form_motion(k, profile, theta, &cam, &frame, (t, pose), found)?;
+        Some((motion, pose))
     }
 
     /// Keeps a carried curve's contact parameter and its rate (a difference quotient over the last
@@ -276,6 +247,7 @@ impl<'a> Sweep<'a> {
                 dq_dtheta: v * inv_rate,
                 d2q_dtheta2: (a - m.cam.angular_acceleration * v * inv_rate) * inv_rate * inv_rate,
                 d2u_dtheta2: d2u,
+                pose: None,
             }
         });
     }
@@ -308,7 +280,7 @@ impl<'a> Sweep<'a> {
             // can leap (its residual bends on the scale of the roller's radius, which may be
             // tiny), so its touch must also be the first touch of its cam point
             Ok((t, e))
-                if (m.convex && dispatch!(&m.geometry.model, k => m.convex_warm_touch_with(k, &e, t.q)))
+                if (m.convex && dispatch!(&m.geometry.model, k => m.convex_warm_touch_with(k, &e, &k.pose(t.q))))
                     // evaluated at the converged point itself: near a cusp the tangent (and
                     // with it the normal) turns over within the last Newton step
                     || (!m.convex && m.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
@@ -373,39 +345,4 @@ fn kept(s: &Motion) -> (f64, f64, f64, f64, f64, Found) {
         s.acceleration,
         s.found,
     )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The cam's rotation carried by angle addition stays within 2e-15 of `sin_cos`
-    /// (independent: libm) over a sweep of uneven steps in both senses, forwards and back; a step
-    /// beyond `TURN_STEP` or an old rotation takes a fresh one.
-    #[test]
-    fn carried_rotation_stays_with_sin_cos() {
-        for sign in [1.0, -1.0] {
-            let mut turn = Turn::fresh(0.3, sign);
-            let (mut theta, mut worst, mut fresh) = (0.3, 0.0f64, 0);
-            for k in 0..20_000 {
-                // steps up to 0.02 rad, mostly forwards
-                let h = 0.02 * ((f64::from(k) * 0.618_033_988_7).fract() * 1.2 - 0.2);
-                theta += h;
-                turn = turn.at(theta, sign).unwrap_or_else(|| {
-                    fresh += 1;
-                    Turn::fresh(theta, sign)
-                });
-                let exact = Rotation::new(sign * theta);
-                let (c, s) = (turn.rotation.re - exact.re, turn.rotation.im - exact.im);
-                worst = worst.max(c.abs()).max(s.abs());
-            }
-            // measured 1.0e-15
-            assert!(worst <= 2e-15, "sense {sign}: {worst:e}");
-            // one fresh rotation every TURN_AGE additions
-            assert_eq!(fresh, 20_000 / (TURN_AGE as usize + 1));
-        }
-        let t = Turn::fresh(1.0, 1.0);
-        assert!(t.at(1.0 + 1.01 * TURN_STEP, 1.0).is_none());
-        assert!(t.at(1.0 - 0.99 * TURN_STEP, 1.0).is_some());
-    }
 }

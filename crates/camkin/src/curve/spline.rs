@@ -215,7 +215,7 @@ impl ClosedSpline {
 }
 
 impl Curve for ClosedSpline {
-    #[inline]
+    #[inline(always)]
     fn eval(&self, u: f64) -> Derivs {
         let (c, t) = self.piece(u);
         let x = eval_local(&c.x, t);

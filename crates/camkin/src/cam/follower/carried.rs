@@ -49,10 +49,10 @@ impl Kind for CarriedJoint {
     fn residual_value<T: Num>(&self, _x: V2<T>, _x1: V2<T>, _q: T) -> [T; 2] {
         [T::c(f64::NAN), T::c(f64::NAN)]
     }
-    fn jacobian(&self, _e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
+    fn jacobian(&self, _e: &WorldDerivs, _q: &crate::cam::pose::Pose) -> [[f64; 2]; 2] {
         [[f64::NAN; 2]; 2]
     }
-    fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {
+    fn toward_follower(&self, _c: Point2, _q: &crate::cam::pose::Pose) -> Vec2 {
         Vec2::zeros()
     }
     fn concave_limit(&self) -> Option<f64> {

@@ -27,6 +27,7 @@ mod translating_roller;
 pub use joint::Joint;
 
 use super::jet::{Num, V2};
+use super::pose::Pose;
 use super::synthesis::Envelope;
 use super::CamError;
 use crate::body::WorldDerivs;
@@ -462,12 +463,24 @@ pub(crate) trait Kind {
     /// `x`, oriented so that larger is "touches earlier" (the first touch is the maximum), or
     /// `None` when the follower never touches `x`. Returns `(oriented score, q)`.
     fn score(&self, x: Point2) -> Option<(f64, f64)>;
+    /// The position `q` as a [`Pose`]: with its sine and cosine for an arm angle (the methods
+    /// below read them there instead of calling `sin_cos`), without for a length (the default).
+    #[inline(always)]
+    fn pose(&self, q: f64) -> Pose {
+        Pose::length(q)
+    }
+    /// The position `q` reached from `from` (a Newton step, a sweep's step): for an arm angle its
+    /// sine and cosine carried by angle addition where the step is small.
+    #[inline(always)]
+    fn pose_from(&self, _from: Pose, q: f64) -> Pose {
+        self.pose(q)
+    }
     /// Whether a converged tangency at world cam point `x` and position `q` is the follower's
     /// first touch through `x` (the position of [`Kind::score`], within `slack`), not its
     /// boundary's later crossing of `x`. A kind may answer by a cheaper equivalent test.
     #[inline(always)]
-    fn is_first_through(&self, x: Point2, q: f64, slack: f64) -> bool {
-        matches!(self.score(x), Some((_, qs)) if (qs - q).abs() <= slack)
+    fn is_first_through(&self, x: Point2, q: &Pose, slack: f64) -> bool {
+        matches!(self.score(x), Some((_, qs)) if (qs - q.q).abs() <= slack)
     }
     /// An interval `(mid, half width)` of positions holding the `q` of [`Kind::score`] at every
     /// world point within `r` of `c` (rounding included), for pruning the first-touch search;
@@ -486,18 +499,29 @@ pub(crate) trait Kind {
     /// position `q`: two equations, zero at a touch. Generic so that the jerk can be computed by
     /// differentiating it with jets.
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2];
+    /// [`Kind::residual_value`] at cam point `e` and position `q` (Newton's).
+    #[inline(always)]
+    fn residual(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        self.residual_value(V2::c(e.p.coords), V2::c(e.d1), q.q)
+    }
     /// `∂(residual)/∂(u, q)` at cam point `e` and position `q`.
-    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2];
+    fn jacobian(&self, e: &WorldDerivs, q: &Pose) -> [[f64; 2]; 2];
+    /// Newton's step `(δu, δq)` at cam point `e` and position `q`: `J δ = −residual`, non-finite
+    /// where `J` is singular. A kind whose `J` has a zero may solve it by substitution.
+    #[inline(always)]
+    fn newton_step(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        crate::cam::search::solve2(&self.jacobian(e, q), self.residual(e, q))
+    }
     /// A direction from the contact point `c` into the follower at position `q`: along it the
     /// cam's outward normal must point at a genuine touch (the cam's back side, or a roller
     /// touching from inside, fail this).
-    fn toward_follower(&self, c: Point2, q: f64) -> Vec2;
+    fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2;
     /// The follower's velocity `q̇`, acceleration `q̈` and the cam parameter's rate `u̇`, as
     /// `[q̇, q̈, u̇]`, at the converged first touch `c` at position `q`, in closed form from the
     /// tangency conditions differentiated in time (see the `rates` module): the motion-only
     /// path. `None` for a kind without them, or where a denominator is within `refuse` of zero
     /// (the caller then runs the paper's method, which refuses with its reason or answers).
-    fn rates(&self, _c: &CamPoint, _q: f64, _refuse: &Refusals) -> Option<[f64; 3]> {
+    fn rates(&self, _c: &CamPoint, _q: &Pose, _refuse: &Refusals) -> Option<[f64; 3]> {
         None
     }
     /// Refuses a follower that can never touch a cam reaching `size` from its axis.
@@ -615,19 +639,39 @@ impl Kind for Model {
     fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
         dispatch!(self, k => k.stationary_tangents(c, r))
     }
+    #[inline]
+    fn pose(&self, q: f64) -> Pose {
+        dispatch!(self, k => k.pose(q))
+    }
+    #[inline]
+    fn pose_from(&self, from: Pose, q: f64) -> Pose {
+        dispatch!(self, k => k.pose_from(from, q))
+    }
+    #[inline]
+    fn is_first_through(&self, x: Point2, q: &Pose, slack: f64) -> bool {
+        dispatch!(self, k => k.is_first_through(x, q, slack))
+    }
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         dispatch!(self, k => k.residual_value(x, x1, q))
     }
     #[inline]
-    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
+    fn residual(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        dispatch!(self, k => k.residual(e, q))
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, q: &Pose) -> [[f64; 2]; 2] {
         dispatch!(self, k => k.jacobian(e, q))
     }
+    #[inline]
+    fn newton_step(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        dispatch!(self, k => k.newton_step(e, q))
+    }
     #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
         dispatch!(self, k => k.rates(c, q, refuse))
     }
     #[inline]
-    fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
+    fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2 {
         dispatch!(self, k => k.toward_follower(c, q))
     }
     fn check_reach(&self, size: f64) -> Result<(), CamError> {

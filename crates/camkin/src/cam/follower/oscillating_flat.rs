@@ -6,6 +6,7 @@ use super::rates::{finite, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{scale, Jet, Num, V2};
+use crate::cam::pose::Pose;
 use crate::cam::synthesis::{jet_recip, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
@@ -36,6 +37,16 @@ impl OscillatingFlat {
             e,
             sense: closing,
         })
+    }
+}
+
+impl OscillatingFlat {
+    /// The tangency residual with the arm angle given by its sine and cosine `(s, c)`.
+    #[inline(always)]
+    fn residual_sc<T: Num>(&self, x: V2<T>, x1: V2<T>, (s, c): (T, T)) -> [T; 2] {
+        let y = x - V2::c(self.o.coords);
+        let n = V2::new(-s, c);
+        [y.dot(n) - T::c(self.e), x1.dot(n)]
     }
 }
 
@@ -95,16 +106,25 @@ impl Kind for OscillatingFlat {
         }
         self.score_interval(c, r)
     }
-    #[inline]
-    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
-        let (s, c) = q.sin_cos();
-        let y = x - V2::c(self.o.coords);
-        let n = V2::new(-s, c);
-        [y.dot(n) - T::c(self.e), x1.dot(n)]
+    #[inline(always)]
+    fn pose(&self, q: f64) -> Pose {
+        Pose::angle(q)
+    }
+    #[inline(always)]
+    fn pose_from(&self, from: Pose, q: f64) -> Pose {
+        from.angle_to(q)
     }
     #[inline]
-    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
-        let (s, c) = q.sin_cos();
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        self.residual_sc(x, x1, q.sin_cos())
+    }
+    #[inline(always)]
+    fn residual(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        self.residual_sc(V2::c(e.p.coords), V2::c(e.d1), (q.sin, q.cos))
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, q: &Pose) -> [[f64; 2]; 2] {
+        let (s, c) = (q.sin, q.cos);
         let u = Vec2::new(c, s);
         let n = Vec2::new(-s, c);
         let y = e.p - self.o;
@@ -116,8 +136,8 @@ impl Kind for OscillatingFlat {
     /// normal passes through the pivot (locked); a cam straight at the contact is conformal
     /// with the face (`x''·n = 0`).
     #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
-        let (s, co) = q.sin_cos();
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (s, co) = (q.sin, q.cos);
         let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
         let z = c.x - self.o;
         let zt = z.dot(&t);
@@ -133,8 +153,8 @@ impl Kind for OscillatingFlat {
         finite([qd, qdd, ud])
     }
     #[inline]
-    fn toward_follower(&self, _c: Point2, q: f64) -> Vec2 {
-        let (s, co) = q.sin_cos();
+    fn toward_follower(&self, _c: Point2, q: &Pose) -> Vec2 {
+        let (s, co) = (q.sin, q.cos);
         // cw closing (sign −1): the cam is on the −n side, the arm on the +n side
         -self.closing * Vec2::new(-s, co)
     }

@@ -5,6 +5,7 @@ use super::rates::{finite, roller_denominator, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
+use crate::cam::pose::Pose;
 use crate::cam::synthesis::{rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
@@ -44,6 +45,16 @@ impl OscillatingRoller {
             r,
             sense: closing,
         })
+    }
+}
+
+impl OscillatingRoller {
+    /// The tangency residual with the arm angle given by its sine and cosine `(s, c)`.
+    #[inline(always)]
+    fn residual_sc<T: Num>(&self, x: V2<T>, x1: V2<T>, (s, c): (T, T)) -> [T; 2] {
+        let y = x - V2::c(self.o.coords);
+        let m = y - V2::new(c, s).scale(T::c(self.l));
+        [T::c(0.5) * (m.dot(m) - T::c(self.r * self.r)), x1.dot(m)]
     }
 }
 
@@ -95,11 +106,13 @@ impl Kind for OscillatingRoller {
     /// the later one has `−ρ sin β`. Within `slack` where the two merge (`β → 0`), and on the
     /// reported branch (within ±180° of the initial angle). No `atan2` and no wrapping.
     #[inline(always)]
-    fn is_first_through(&self, x: Point2, q: f64, slack: f64) -> bool {
+    fn is_first_through(&self, x: Point2, q: &Pose, slack: f64) -> bool {
         let y = x - self.o;
-        let (s, c) = q.sin_cos();
+        let (s, c) = (q.sin, q.cos);
         let (ahead, rho) = (self.closing * (c * y.y - s * y.x), y.norm());
-        rho > 0.0 && ahead >= -slack * rho && (q - self.phi0).abs() <= std::f64::consts::PI + slack
+        rho > 0.0
+            && ahead >= -slack * rho
+            && (q.q - self.phi0).abs() <= std::f64::consts::PI + slack
     }
     fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
         Some((
@@ -158,16 +171,25 @@ impl Kind for OscillatingRoller {
             )
         })
     }
-    #[inline]
-    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
-        let (s, c) = q.sin_cos();
-        let y = x - V2::c(self.o.coords);
-        let m = y - V2::new(c, s).scale(T::c(self.l));
-        [T::c(0.5) * (m.dot(m) - T::c(self.r * self.r)), x1.dot(m)]
+    #[inline(always)]
+    fn pose(&self, q: f64) -> Pose {
+        Pose::angle(q)
+    }
+    #[inline(always)]
+    fn pose_from(&self, from: Pose, q: f64) -> Pose {
+        from.angle_to(q)
     }
     #[inline]
-    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
-        let (s, c) = q.sin_cos();
+    fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
+        self.residual_sc(x, x1, q.sin_cos())
+    }
+    #[inline(always)]
+    fn residual(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        self.residual_sc(V2::c(e.p.coords), V2::c(e.d1), (q.sin, q.cos))
+    }
+    #[inline]
+    fn jacobian(&self, e: &WorldDerivs, q: &Pose) -> [[f64; 2]; 2] {
+        let (s, c) = (q.sin, q.cos);
         let u = Vec2::new(c, s);
         let n = Vec2::new(-s, c);
         let y = e.p - self.o;
@@ -184,8 +206,8 @@ impl Kind for OscillatingRoller {
     /// `φ̈ = (m·b + L φ̇² m·t + |ṁ|²) / L m·n` with `ṁ = ω J y + u̇ x' − L φ̇ n`. Declined where
     /// the normal passes through the pivot (locked) or the cam's curvature matches the roller's.
     #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
-        let (s, co) = q.sin_cos();
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (s, co) = (q.sin, q.cos);
         let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
         let l = self.l;
         let m = (c.x - self.o) - l * t;
@@ -205,8 +227,8 @@ impl Kind for OscillatingRoller {
         finite([qd, qdd, ud])
     }
     #[inline]
-    fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
-        let (s, co) = q.sin_cos();
+    fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2 {
+        let (s, co) = (q.sin, q.cos);
         (self.o + self.l * Vec2::new(co, s)) - c
     }
     fn check_reach(&self, size: f64) -> Result<(), CamError> {
@@ -328,7 +350,7 @@ mod tests {
                     let phi = 0.5 * (a0 + a1);
                     let by_score = matches!(k.score(x), Some((_, q)) if (q - phi).abs() <= 1e-9);
                     assert_eq!(
-                        k.is_first_through(x, phi, slack),
+                        k.is_first_through(x, &k.pose(phi), slack),
                         by_score,
                         "{closing:?}, L {l}, r {r}: x {x:?} at φ {phi}"
                     );

@@ -128,10 +128,18 @@ mod tests {
             direction: Vec2::y(),
         });
         assert!(flat
-            .rates(&at([0.0, 2.0], [1.0, 0.0], [1.0, 0.0]), 2.0, &refuse)
+            .rates(
+                &at([0.0, 2.0], [1.0, 0.0], [1.0, 0.0]),
+                &flat.pose(2.0),
+                &refuse
+            )
             .is_none());
         assert!(flat
-            .rates(&at([0.0, 2.0], [1.0, 0.0], [0.0, -1.0]), 2.0, &refuse)
+            .rates(
+                &at([0.0, 2.0], [1.0, 0.0], [0.0, -1.0]),
+                &flat.pose(2.0),
+                &refuse
+            )
             .is_some());
         // a roller of radius 1 on the y axis, centre at the origin (q = 0)
         let roller = model(Follower::TranslatingRoller {
@@ -141,14 +149,26 @@ mod tests {
         });
         // the normal along x, perpendicular to the travel: locked
         assert!(roller
-            .rates(&at([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]), 0.0, &refuse)
+            .rates(
+                &at([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]),
+                &roller.pose(0.0),
+                &refuse
+            )
             .is_none());
         // below the roller, curved as the roller (concave, radius 1): conformal
         assert!(roller
-            .rates(&at([0.0, -1.0], [1.0, 0.0], [0.0, 1.0]), 0.0, &refuse)
+            .rates(
+                &at([0.0, -1.0], [1.0, 0.0], [0.0, 1.0]),
+                &roller.pose(0.0),
+                &refuse
+            )
             .is_none());
         assert!(roller
-            .rates(&at([0.0, -1.0], [1.0, 0.0], [0.0, 0.5]), 0.0, &refuse)
+            .rates(
+                &at([0.0, -1.0], [1.0, 0.0], [0.0, 0.5]),
+                &roller.pose(0.0),
+                &refuse
+            )
             .is_some());
         // a knife along y whose profile runs along its line of travel: locked
         let knife = model(Follower::TranslatingKnife {
@@ -156,10 +176,18 @@ mod tests {
             offset: 0.0,
         });
         assert!(knife
-            .rates(&at([0.0, 2.0], [0.0, 1.0], [1.0, 0.0]), 2.0, &refuse)
+            .rates(
+                &at([0.0, 2.0], [0.0, 1.0], [1.0, 0.0]),
+                &knife.pose(2.0),
+                &refuse
+            )
             .is_none());
         assert!(knife
-            .rates(&at([0.0, 2.0], [1.0, 0.2], [0.0, -1.0]), 2.0, &refuse)
+            .rates(
+                &at([0.0, 2.0], [1.0, 0.2], [0.0, -1.0]),
+                &knife.pose(2.0),
+                &refuse
+            )
             .is_some());
         // an arm pivoted at (−3, 2), face offset 0, at φ = 0 (the face is the line y = 2): the
         // contact right under the pivot is locked
@@ -170,10 +198,18 @@ mod tests {
             initial_angle: 0.0,
         });
         assert!(arm
-            .rates(&at([-3.0, 2.0], [1.0, 0.0], [0.0, -1.0]), 0.0, &refuse)
+            .rates(
+                &at([-3.0, 2.0], [1.0, 0.0], [0.0, -1.0]),
+                &arm.pose(0.0),
+                &refuse
+            )
             .is_none());
         assert!(arm
-            .rates(&at([0.5, 2.0], [1.0, 0.0], [0.0, -1.0]), 0.0, &refuse)
+            .rates(
+                &at([0.5, 2.0], [1.0, 0.0], [0.0, -1.0]),
+                &arm.pose(0.0),
+                &refuse
+            )
             .is_some());
         // an arm of length 3 pivoted at (−3, 0), roller radius 1 centred at the origin: a
         // contact on the arm's line has its normal through the pivot (locked)
@@ -185,10 +221,16 @@ mod tests {
             initial_angle: 0.0,
         });
         let locked = at([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]);
-        assert!(arm_roller.rates(&locked, 0.0, &refuse).is_none());
+        assert!(arm_roller
+            .rates(&locked, &arm_roller.pose(0.0), &refuse)
+            .is_none());
         let below = at([0.0, -1.0], [1.0, 0.0], [0.0, 0.5]);
-        assert!(arm_roller.rates(&below, 0.0, &refuse).is_some());
+        assert!(arm_roller
+            .rates(&below, &arm_roller.pose(0.0), &refuse)
+            .is_some());
         let conformal = at([0.0, -1.0], [1.0, 0.0], [0.0, 1.0]);
-        assert!(arm_roller.rates(&conformal, 0.0, &refuse).is_none());
+        assert!(arm_roller
+            .rates(&conformal, &arm_roller.pose(0.0), &refuse)
+            .is_none());
     }
 }

@@ -6,6 +6,7 @@ use super::rates::{finite, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
+use crate::cam::pose::Pose;
 use crate::cam::synthesis::{rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
@@ -58,21 +59,29 @@ impl Kind for TranslatingFlat {
         [y.dot(d) - q, x1.dot(d)] // y·d = q, y'·d = 0
     }
     #[inline]
-    fn jacobian(&self, e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
+    fn jacobian(&self, e: &WorldDerivs, _q: &Pose) -> [[f64; 2]; 2] {
         [[e.d1.dot(&self.d), -1.0], [e.d2.dot(&self.d), 0.0]]
+    }
+    /// `J = [[x'·d, −1], [x''·d, 0]]`: `δu = −x'·d / x''·d`, then `δq = (y·d − q) + x'·d δu`.
+    #[inline(always)]
+    fn newton_step(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        let d = self.d;
+        let x1d = e.d1.dot(&d);
+        let du = -x1d / e.d2.dot(&d);
+        [du, ((e.p - self.cam_pivot).dot(&d) - q.q) + x1d * du]
     }
     /// `q = y·d` and `x'·d = 0`: `q̇ = ω (J y)·d`, `u̇ = −ω (J x')·d / x''·d` and
     /// `q̈ = α (J y)·d − ω² y·d + ω u̇ (J x')·d`. A cam straight at the contact (`x''·d = 0`)
     /// is conformal with the face: declined.
     #[inline(always)]
-    fn rates(&self, c: &CamPoint, _q: f64, _refuse: &Refusals) -> Option<[f64; 3]> {
+    fn rates(&self, c: &CamPoint, _q: &Pose, _refuse: &Refusals) -> Option<[f64; 3]> {
         let d = self.d;
         let (w, jy, jx1) = (c.w, rot90(c.y).dot(&d), rot90(c.x1).dot(&d));
         let ud = -w * jx1 / c.x2.dot(&d);
         finite([w * jy, c.a * jy - w * w * c.y.dot(&d) + w * ud * jx1, ud])
     }
     #[inline]
-    fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {
+    fn toward_follower(&self, _c: Point2, _q: &Pose) -> Vec2 {
         self.d
     }
     fn concave_limit(&self) -> Option<f64> {

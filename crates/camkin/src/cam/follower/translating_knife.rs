@@ -5,6 +5,7 @@ use super::rates::{finite, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
+use crate::cam::pose::Pose;
 use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, PointCurve};
@@ -60,7 +61,7 @@ impl Kind for TranslatingKnife {
         [y.dot(p) - T::c(self.e), y.dot(d) - q] // y·p = e, y·d = q
     }
     #[inline]
-    fn jacobian(&self, e: &WorldDerivs, _q: f64) -> [[f64; 2]; 2] {
+    fn jacobian(&self, e: &WorldDerivs, _q: &Pose) -> [[f64; 2]; 2] {
         [[e.d1.dot(&self.p), 0.0], [e.d1.dot(&self.d), -1.0]]
     }
     /// `y·p = e`, `y·d = q`: the contact point's velocity `ẏ = ω J y + u̇ x'` is along `d`, so
@@ -68,7 +69,7 @@ impl Kind for TranslatingKnife {
     /// `ü = −b·p / x'·p` and `q̈ = b·d + ü x'·d`. Declined where the profile runs along the
     /// line of travel (`x'·p ≈ 0`: the tip is locked).
     #[inline(always)]
-    fn rates(&self, c: &CamPoint, _q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+    fn rates(&self, c: &CamPoint, _q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
         let (d, p) = (self.d, self.p);
         let x1p = c.x1.dot(&p);
         if !(x1p.abs() > refuse.lock * c.x1.norm()) {
@@ -81,7 +82,7 @@ impl Kind for TranslatingKnife {
         finite([(v0 + ud * c.x1).dot(&d), b.dot(&d) + udd * c.x1.dot(&d), ud])
     }
     #[inline]
-    fn toward_follower(&self, _c: Point2, _q: f64) -> Vec2 {
+    fn toward_follower(&self, _c: Point2, _q: &Pose) -> Vec2 {
         self.d
     }
     fn centre_path(&self) -> Option<(super::CentrePath, f64)> {

@@ -5,6 +5,7 @@ use super::rates::{finite, roller_denominator, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
+use crate::cam::pose::Pose;
 use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
@@ -57,6 +58,14 @@ impl Kind for TranslatingRoller {
             Some((q, q))
         }
     }
+    /// The roller's boundary passes through `x` at the positions `y·d ± √(r² − l²)` (see
+    /// [`Kind::score`]); the first is the larger, where the roller's centre lies beyond `x`
+    /// along the travel: `q − y·d ≥ 0`, where the later one has `−√(r² − l²)`. Within half the
+    /// slack where the two merge (they are `2√(r² − l²)` apart). No square root.
+    #[inline(always)]
+    fn is_first_through(&self, x: Point2, q: &Pose, slack: f64) -> bool {
+        q.q - (x - self.cam_pivot).dot(&self.d) >= -0.5 * slack
+    }
     fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
         // q = along + √(R² − l²) over the disc: along ∈ along(c) ± r, and |l| at least the
         // lateral offset of the disc's nearest point
@@ -105,7 +114,8 @@ impl Kind for TranslatingRoller {
         [T::c(0.5) * (m.dot(m) - T::c(self.r * self.r)), x1.dot(m)]
     }
     #[inline]
-    fn jacobian(&self, e: &WorldDerivs, q: f64) -> [[f64; 2]; 2] {
+    fn jacobian(&self, e: &WorldDerivs, q: &Pose) -> [[f64; 2]; 2] {
+        let q = q.q;
         let (d, p) = (self.d, self.p);
         let y = e.p - self.cam_pivot;
         let m = y - (self.e * p + q * d);
@@ -119,7 +129,8 @@ impl Kind for TranslatingRoller {
     /// `q̈ = (m·b + |ṁ|²) / m·d` with `ṁ = ω J y + u̇ x' − q̇ d`. Declined where the normal is
     /// perpendicular to the travel (locked) or the cam's curvature matches the roller's.
     #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: f64, refuse: &Refusals) -> Option<[f64; 3]> {
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        let q = q.q;
         let (d, p) = (self.d, self.p);
         let m = c.y - (self.e * p + q * d);
         let md = m.dot(&d);
@@ -135,8 +146,8 @@ impl Kind for TranslatingRoller {
         finite([qd, (m.dot(&b) + mdot.norm_squared()) / md, ud])
     }
     #[inline]
-    fn toward_follower(&self, c: Point2, q: f64) -> Vec2 {
-        (self.cam_pivot + self.e * self.p + q * self.d) - c
+    fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2 {
+        (self.cam_pivot + self.e * self.p + q.q * self.d) - c
     }
     fn check_reach(&self, size: f64) -> Result<(), CamError> {
         let (e, r) = (self.e, self.r);
@@ -172,5 +183,67 @@ impl Kind for TranslatingRoller {
         // the roller centre's path c = A (e p + s d), offset by the radius towards the cam
         let c = rotated_derivs(sigma, rot, &translating_path(self.d, self.p, self.e, s));
         Envelope::Offset(c, self.r)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cheap first-touch test against the score's (the default of [`Kind::is_first_through`])
+    /// at both positions where the roller's boundary passes through a point, found
+    /// independently: sign changes of `|x − C(q)|² − r²` along the travel, refined by bisection.
+    #[test]
+    fn first_through_agrees_with_the_score_at_both_crossings() {
+        let (mut checked, mut first) = (0, 0);
+        for (dir, e, r) in [
+            (Vec2::new(0.0, 1.0), 0.5, 1.0),
+            (Vec2::new(0.6, -0.8), -0.2, 0.3),
+            (Vec2::new(1.0, 0.0), 0.0, 0.01),
+        ] {
+            let d = UnitVec2::new_normalize(dir);
+            let Model::TranslatingRoller(k) =
+                TranslatingRoller::model(Point2::new(1.0, 2.0), d, e, r)
+            else {
+                unreachable!()
+            };
+            let slack = 1e-12;
+            let centre = |q: f64| k.cam_pivot + e * k.p + q * k.d;
+            let gap = |x: Point2, q: f64| (x - centre(q)).norm_squared() - r * r;
+            for i in 0..40 {
+                // points the roller reaches beside its path
+                let (along, side) = (
+                    3.0 * (f64::from(i) * 0.37).sin(),
+                    0.95 * r * (f64::from(i) * 1.3).cos(),
+                );
+                let x = k.cam_pivot + (e + side) * k.p + along * k.d;
+                let (lo, n) = (along - 2.0 * r, 20_000);
+                let h = 4.0 * r / f64::from(n);
+                for j in 0..n {
+                    let (q0, q1) = (lo + f64::from(j) * h, lo + f64::from(j + 1) * h);
+                    if gap(x, q0).signum() == gap(x, q1).signum() {
+                        continue;
+                    }
+                    let (mut a0, mut a1) = (q0, q1);
+                    for _ in 0..80 {
+                        let m = 0.5 * (a0 + a1);
+                        if gap(x, m).signum() == gap(x, a0).signum() {
+                            a0 = m;
+                        } else {
+                            a1 = m;
+                        }
+                    }
+                    let q = 0.5 * (a0 + a1);
+                    let by_score =
+                        matches!(k.score(x), Some((_, qs)) if (qs - q).abs() <= 1e-9 * r);
+                    let cheap = k.is_first_through(x, &k.pose(q), slack);
+                    assert_eq!(cheap, by_score, "{dir:?}, e {e}, r {r}: x {x:?} at q {q}");
+                    checked += 1;
+                    first += usize::from(cheap);
+                }
+            }
+        }
+        // two crossings of each of the 120 points, one of them the first
+        assert_eq!((checked, first), (240, 120));
     }
 }
