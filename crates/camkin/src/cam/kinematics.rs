@@ -2,14 +2,13 @@
 //! constraint, the sliding rates (paper eqs. 5, 6), the normal accelerations (eqs. 1, 2) and the
 //! follower's acceleration from the acceleration constraint (eq. 11).
 
-use super::follower::rates::{CamPoint, Refusals};
+use super::follower::rates::CamPoint;
 use super::follower::{dispatch, Kind};
 use super::pose::Pose;
 use super::state::pressure_angle;
 use super::{CamError, FollowerState, Found, Mechanism, Motion, Touch};
 use crate::body::{curve_in, BodyState, CurveInFrame, WorldDerivs};
 use crate::contact::{ContactKinematics, Pairing};
-use crate::curve::Curve;
 use crate::geometry::{Frame, UnitVec2, Vec2};
 
 /// The shared part of an analysis at a converged touch.
@@ -39,8 +38,8 @@ impl Mechanism {
         if self.geometry.carried.is_none() {
             let profile = self.cam.profile.as_ref();
             let fast = dispatch!(&self.geometry.model, k => {
-                let pose = k.pose(touch.q);
-                self.closed_form_motion(k, profile, theta, cam, frame, (touch, pose), found)
+                let at = curve_in(frame, profile, touch.u);
+                self.closed_form_motion(k, theta, cam, &at, (touch, k.pose(touch.q)), found)
             });
             if let Some(m) = fast {
                 return Ok(m);
@@ -58,28 +57,21 @@ impl Mechanism {
         })
     }
 
-    /// The motion at a converged first touch (with the follower's position as a [`Pose`]) by
-    /// the closed-form rates of the follower kind `k` (see [`Kind::rates`]); `None` where they
-    /// decline.
+    /// The motion at a converged first touch (with the follower's position as a [`Pose`]) at
+    /// the cam point `e` by the closed-form rates of the follower kind `k` (see
+    /// [`Kind::rates`]); `None` where they decline.
     #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn closed_form_motion<K: Kind, C: Curve + ?Sized>(
+    pub(crate) fn closed_form_motion<K: Kind>(
         &self,
         k: &K,
-        profile: &C,
         theta: f64,
         cam: &BodyState,
-        frame: &Frame,
+        e: &WorldDerivs,
         (touch, pose): (Touch, Pose),
         found: Found,
     ) -> Option<Motion> {
-        let e = curve_in(frame, profile, touch.u);
-        let at = CamPoint::new(&e, self.cam.pivot, cam.omega, cam.alpha);
-        let refuse = Refusals::new(
-            self.options.lock_tolerance,
-            self.options.conformal_tolerance,
-        );
-        let [qd, qdd, ud] = k.rates(&at, &pose, &refuse)?;
+        let at = CamPoint::new(e, self.cam.pivot, cam.omega, cam.alpha);
+        let [qd, qdd, ud] = k.rates(&at, &pose, &self.prepared.refuse)?;
         Some(Motion {
             cam_angle: theta,
             position: touch.q,

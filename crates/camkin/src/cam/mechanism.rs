@@ -57,6 +57,7 @@ impl Mechanism {
             cam,
             geometry,
             options,
+            prepared: Default::default(),
             index: Arc::default(),
             sample_points: Vec::new(),
             period,
@@ -99,6 +100,7 @@ impl Mechanism {
             coarse: super::starts::Sampled::new(self, coarse),
         });
         self.options = options;
+        self.prepared = super::search::Prepared::new(&options, self.q_scale(), self.period);
     }
 
     /// The analysis options in force.

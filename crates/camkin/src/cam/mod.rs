@@ -246,6 +246,8 @@ pub struct Mechanism {
     cam: Cam,
     geometry: Geometry,
     options: AnalysisOptions,
+    /// what the options give Newton and the first-touch test, prepared once
+    prepared: search::Prepared,
     /// the profile's samples and their trees for the first-touch search
     index: Arc<starts::SearchIndex>,
     /// the profile's points at the dense samples (cam frame), for the coverage of a carried curve

@@ -2,6 +2,7 @@
 //! first touch, and the global search (bracketing samples of the first-touch function, the best
 //! local maxima refined by Newton).
 
+use super::follower::rates::Refusals;
 use super::follower::{dispatch, Kind};
 use super::pose::Pose;
 use super::starts::Candidates;
@@ -20,14 +21,58 @@ pub(crate) struct Touch {
     pub(crate) v: f64,
 }
 
+/// What Newton converged to: the touch, the position as a [`Pose`], and the cam point of
+/// the last iterate (within the position tolerance of the converged one).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Converged {
+    pub(crate) touch: Touch,
+    pub(crate) pose: Pose,
+    pub(crate) last: WorldDerivs,
+}
+
+/// Newton's constants and the first-touch slack, prepared from the options once
+/// ([`Mechanism::set_options`]): a warm step reads them.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Prepared {
+    /// `1 / position tolerance`
+    inv_tol: f64,
+    /// `(newton_contraction · tolerance)²`
+    c2: f64,
+    /// the follower coordinate's length scale over the tolerance
+    q_over_tol: f64,
+    /// the largest step of the cam parameter (a fraction of the period)
+    lim: f64,
+    /// [`AnalysisOptions::touch_tolerance`] in units of the follower coordinate
+    touch_slack: f64,
+    /// where the closed-form rates decline
+    pub(crate) refuse: Refusals,
+}
+
+impl Prepared {
+    pub(crate) fn new(options: &super::AnalysisOptions, q_scale: f64, period: f64) -> Self {
+        let tol = options.position_tolerance;
+        let ct = options.newton_contraction * tol;
+        Self {
+            inv_tol: 1.0 / tol,
+            c2: ct * ct,
+            q_over_tol: q_scale / tol,
+            lim: options.max_step_fraction * period,
+            touch_slack: options.touch_tolerance / q_scale,
+            refuse: Refusals::new(options.lock_tolerance, options.conformal_tolerance),
+        }
+    }
+}
+
 impl Mechanism {
-    fn q_scale(&self) -> f64 {
+    /// The follower coordinate's length scale (1 for a length, the arm's reach for an angle).
+    pub(crate) fn q_scale(&self) -> f64 {
         self.geometry.q_length_scale(self.size)
     }
 
     /// [`AnalysisOptions::touch_tolerance`] in units of the follower coordinate.
+    #[inline(always)]
     pub(crate) fn touch_slack(&self) -> f64 {
-        self.options.touch_tolerance / self.q_scale()
+        self.prepared.touch_slack
     }
 
     /// Newton on the tangency residual from `(u, q)`.
@@ -54,14 +99,13 @@ impl Mechanism {
         let profile = self.cam.profile.as_ref();
         dispatch!(&self.geometry.model, k => self
             .newton_with(k, profile, theta, frame, u, k.pose(q))
-            .map(|(t, e, _)| (t, e)))
+            .map(|c| (c.touch, c.last)))
     }
 
     /// [`Mechanism::newton_at`] for the follower kind `k` (the mechanism's own) on the cam's
     /// `profile` (as its own type or `dyn Curve`): monomorphised, so that a warm step inlines
     /// the kind's residual and Jacobian and, on a spline, the spline's evaluation. Starts from
-    /// the position `pose` and also returns the converged one (an arm angle's sine and cosine
-    /// carried along the steps).
+    /// the position `pose` (an arm angle's sine and cosine are carried along the steps).
     #[inline(always)]
     pub(crate) fn newton_with<K: Kind, C: Curve + ?Sized>(
         &self,
@@ -71,16 +115,17 @@ impl Mechanism {
         frame: &Frame,
         mut u: f64,
         mut pose: Pose,
-    ) -> Result<(Touch, WorldDerivs, Pose), CamError> {
+    ) -> Result<Converged, CamError> {
         // in units of the tolerance (squares of lengths could underflow at extreme sizes):
         // a step δ is accepted when δ ≤ tol, or when C δ² ≤ tol (the next step would be below
         // the tolerance): (δ/tol)² ≤ 1 or (C tol)² (δ/tol)⁴ ≤ 1
-        let tol = self.options.position_tolerance;
-        let inv_tol = 1.0 / tol;
-        let ct = self.options.newton_contraction * tol;
-        let c2 = ct * ct;
-        let qs = self.q_scale();
-        let lim = self.options.max_step_fraction * self.period;
+        let Prepared {
+            inv_tol,
+            c2,
+            q_over_tol,
+            lim,
+            ..
+        } = self.prepared;
         for _ in 0..self.options.max_iterations {
             let e = curve_in(frame, profile, u);
             let [du, dq] = k.newton_step(&e, &pose);
@@ -94,7 +139,7 @@ impl Mechanism {
             let du = du.clamp(-lim, lim);
             u += du;
             pose = k.pose_from(pose, pose.q + dq);
-            let (su, sq) = (du * inv_tol, dq * qs * inv_tol);
+            let (su, sq) = (du * inv_tol, dq * q_over_tol);
             let step2 = (su * su * e.d1.norm_squared()).max(sq * sq);
             if step2 <= 1.0 || c2 * step2 * step2 <= 1.0 {
                 let u = if (0.0..self.period).contains(&u) {
@@ -102,12 +147,16 @@ impl Mechanism {
                 } else {
                     u.rem_euclid(self.period)
                 };
-                let t = Touch {
+                let touch = Touch {
                     u,
                     q: pose.q,
                     v: 0.0,
                 };
-                return Ok((t, e, pose));
+                return Ok(Converged {
+                    touch,
+                    pose,
+                    last: e,
+                });
             }
         }
         Err(CamError::NoConvergence {

@@ -11,7 +11,7 @@ use super::follower::{dispatch, Kind};
 use super::overtake::Overtaken;
 use super::pose::Pose;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
-use crate::body::BodyState;
+use crate::body::{curve_in, BodyState};
 use crate::curve::{ClosedSpline, Curve};
 use crate::geometry::{Frame, Rotation};
 
@@ -111,7 +111,7 @@ impl<'a> Sweep<'a> {
             self.note(theta, t, f);
             self.mech.kinematics(theta, &cam, &frame, t, f)
         });
-        self.remember(theta, r.as_ref().ok().map(|s| kept(&s.motion())));
+        self.remember(theta, r.as_ref().ok().map(|s| kept(&s.motion())), None);
         r
     }
 
@@ -132,17 +132,14 @@ impl<'a> Sweep<'a> {
             _ => None,
         };
         if let Some((s, pose)) = fast {
-            self.remember(theta, Some(kept(&s)));
-            if let Some(p) = &mut self.prev {
-                p.pose = Some(pose);
-            }
+            self.remember(theta, Some(kept(&s)), Some(pose));
             return Ok(s);
         }
         let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
             self.note(theta, t, f);
             self.mech.motion_at(theta, &cam, &frame, t, f)
         });
-        self.remember(theta, r.as_ref().ok().map(kept));
+        self.remember(theta, r.as_ref().ok().map(kept), None);
         r
     }
 
@@ -187,13 +184,14 @@ impl<'a> Sweep<'a> {
             Some(from) => k.pose_from(from, q0),
             None => k.pose(q0),
         };
-        let (t, e, pose) = m.newton_with(k, profile, theta, &frame, u0, start).ok()?;
-        if !m.convex_warm_touch_with(k, &e, &pose) {
+        let c = m.newton_with(k, profile, theta, &frame, u0, start).ok()?;
+        if !m.convex_warm_touch_with(k, &c.last, &c.pose) {
             return None;
         }
+        let at = curve_in(&frame, profile, c.touch.u);
         let found = Found::WarmStart;
-        let motion = m.closed_form_motion(k, profile, theta, &cam, &frame, (t, pose), found)?;
-        Some((motion, pose))
+        let motion = m.closed_form_motion(k, theta, &cam, &at, (c.touch, c.pose), found)?;
+        Some((motion, c.pose))
     }
 
     /// Keeps a carried curve's contact parameter and its rate (a difference quotient over the last
@@ -225,9 +223,15 @@ impl<'a> Sweep<'a> {
         Ok((cam, frame, t, f))
     }
 
-    /// Keeps what the next angle's prediction needs: `(u, u̇, q, q̇, q̈, found)`.
+    /// Keeps what the next angle's prediction needs: `(u, u̇, q, q̇, q̈, found)`, and the
+    /// position as a [`Pose`] when the step has it.
     #[inline(always)]
-    fn remember(&mut self, theta: f64, r: Option<(f64, f64, f64, f64, f64, Found)>) {
+    fn remember(
+        &mut self,
+        theta: f64,
+        r: Option<(f64, f64, f64, f64, f64, Found)>,
+        pose: Option<Pose>,
+    ) {
         let m = self.mech;
         self.prev = r.map(|(u, u_rate, q, v, a, found)| {
             let inv_rate = 1.0 / m.cam.speed;
@@ -247,7 +251,7 @@ impl<'a> Sweep<'a> {
                 dq_dtheta: v * inv_rate,
                 d2q_dtheta2: (a - m.cam.angular_acceleration * v * inv_rate) * inv_rate * inv_rate,
                 d2u_dtheta2: d2u,
-                pose: None,
+                pose,
             }
         });
     }

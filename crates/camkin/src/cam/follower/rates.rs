@@ -66,7 +66,7 @@ impl CamPoint {
 /// The tolerances the paper's method refuses a contact by, which the closed forms decline by
 /// (with a margin, so that a contact the method would refuse always reaches it and gets its
 /// error): a follower locked by a normal perpendicular to its motion, conformal curvatures.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Refusals {
     /// [`crate::cam::AnalysisOptions::lock_tolerance`] times the margin
     pub(crate) lock: f64,
