@@ -132,7 +132,7 @@ impl<'a> Sweep<'a> {
             _ => None,
         };
         if let Some((s, pose)) = fast {
-            self.remember(theta, Some(kept(&s)), Some(pose));
+            self.remember(theta, Some(kept(&s)), pose);
             return Ok(s);
         }
         let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
@@ -155,7 +155,7 @@ impl<'a> Sweep<'a> {
         theta: f64,
         p: Prev,
         rotation: Rotation,
-    ) -> Option<(Motion, Pose)> {
+    ) -> Option<(Motion, Option<Pose>)> {
         if self.mech.geometry.carried.is_some() {
             return None;
         }
@@ -175,14 +175,14 @@ impl<'a> Sweep<'a> {
         theta: f64,
         p: Prev,
         rotation: Rotation,
-    ) -> Option<(Motion, Pose)> {
+    ) -> Option<(Motion, Option<Pose>)> {
         let m = self.mech;
         let cam = m.cam.state(theta);
         let frame = Frame::from_parts(cam.pose.origin.coords.into(), rotation);
         let (u0, q0) = p.start(theta - p.theta);
         let start = match p.pose {
-            Some(from) => k.pose_from(from, q0),
-            None => k.pose(q0),
+            Some(from) if K::ANGULAR => k.pose_from(from, q0),
+            _ => k.pose(q0),
         };
         let c = m.newton_with(k, profile, theta, &frame, u0, start).ok()?;
         if !m.convex_warm_touch_with(k, &c.last, &c.pose) {
@@ -191,7 +191,7 @@ impl<'a> Sweep<'a> {
         let at = curve_in(&frame, profile, c.touch.u);
         let found = Found::WarmStart;
         let motion = m.closed_form_motion(k, theta, &cam, &at, (c.touch, c.pose), found)?;
-        Some((motion, c.pose))
+        Some((motion, K::ANGULAR.then_some(c.pose)))
     }
 
     /// Keeps a carried curve's contact parameter and its rate (a difference quotient over the last

@@ -2,7 +2,7 @@
 
 use super::{Curve, CurveError, Derivs, Domain};
 use crate::geometry::{Point2, Vec2};
-use crate::periodic::{eval_local, fit, Knots};
+use crate::periodic::{fit, Knots};
 
 /// Where the nodes sit in the parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -30,12 +30,32 @@ pub struct ClosedSpline {
 }
 
 /// Segment `i` of a closed spline: its start parameter `u_i` and local cubic coefficients
-/// `[c0, c1, c2, c3]` for x and y (`x = c0 + c1 t + c2 t² + c3 t³`, `t = u − u_i`).
+/// `[c0, c1, c2, c3]` for x and y (`x = c0 + c1 t + c2 t² + c3 t³`, `t = u − u_i`), and
+/// those of the derivatives, `[2 c2, 3 c3, 6 c3]` (an evaluation multiplies by them only).
 #[derive(Debug, Clone, Copy)]
 struct Piece {
     start: f64,
     x: [f64; 4],
     y: [f64; 4],
+    dx: [f64; 3],
+    dy: [f64; 3],
+}
+
+/// `[2 c2, 3 c3, 6 c3]` of a cubic's coefficients.
+fn derivative_coefficients(c: &[f64; 4]) -> [f64; 3] {
+    [2.0 * c[2], 3.0 * c[3], 6.0 * c[3]]
+}
+
+/// A cubic's value and first three derivatives at `t`, from its coefficients `c` and its
+/// derivatives' `d` ([`derivative_coefficients`]).
+#[inline(always)]
+fn eval_piece(c: &[f64; 4], d: &[f64; 3], t: f64) -> [f64; 4] {
+    [
+        c[0] + t * (c[1] + t * (c[2] + t * c[3])),
+        c[1] + t * (d[0] + t * d[1]),
+        d[0] + t * d[2],
+        d[2],
+    ]
 }
 
 impl ClosedSpline {
@@ -94,6 +114,8 @@ impl ClosedSpline {
                 start: knots.u[i],
                 x: cx[i],
                 y: cy[i],
+                dx: derivative_coefficients(&cx[i]),
+                dy: derivative_coefficients(&cy[i]),
             })
             .collect();
         Ok(Self {
@@ -218,8 +240,8 @@ impl Curve for ClosedSpline {
     #[inline(always)]
     fn eval(&self, u: f64) -> Derivs {
         let (c, t) = self.piece(u);
-        let x = eval_local(&c.x, t);
-        let y = eval_local(&c.y, t);
+        let x = eval_piece(&c.x, &c.dx, t);
+        let y = eval_piece(&c.y, &c.dy, t);
         Derivs {
             p: Point2::new(x[0], y[0]),
             d1: Vec2::new(x[1], y[1]),
@@ -250,6 +272,7 @@ impl Curve for ClosedSpline {
 mod tests {
     use super::*;
     use crate::curve::test_support::check_derivatives;
+    use crate::periodic::eval_local;
     use approx::assert_relative_eq;
 
     fn paper_nodes() -> Vec<Point2> {

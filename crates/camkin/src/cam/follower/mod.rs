@@ -463,6 +463,9 @@ pub(crate) trait Kind {
     /// `x`, oriented so that larger is "touches earlier" (the first touch is the maximum), or
     /// `None` when the follower never touches `x`. Returns `(oriented score, q)`.
     fn score(&self, x: Point2) -> Option<(f64, f64)>;
+    /// The position is an angle whose sine and cosine [`Kind::pose`] keeps (a sweep then
+    /// carries them from step to step).
+    const ANGULAR: bool = false;
     /// The position `q` as a [`Pose`]: with its sine and cosine for an arm angle (the methods
     /// below read them there instead of calling `sin_cos`), without for a length (the default).
     #[inline(always)]
@@ -622,6 +625,8 @@ macro_rules! dispatch {
 pub(crate) use dispatch;
 
 impl Kind for Model {
+    // some kinds are: a sweep through `Model` keeps the pose
+    const ANGULAR: bool = true;
     fn joint(&self) -> Joint {
         dispatch!(self, k => k.joint())
     }

@@ -106,6 +106,7 @@ impl Kind for OscillatingFlat {
         }
         self.score_interval(c, r)
     }
+    const ANGULAR: bool = true;
     #[inline(always)]
     fn pose(&self, q: f64) -> Pose {
         Pose::angle(q)
@@ -129,6 +130,16 @@ impl Kind for OscillatingFlat {
         let n = Vec2::new(-s, c);
         let y = e.p - self.o;
         [[e.d1.dot(&n), -y.dot(&u)], [e.d2.dot(&n), -e.d1.dot(&u)]]
+    }
+    /// Cramer's rule without the general solve's row scaling: the residual and the Jacobian's
+    /// entries scale at most as a length each (not as its square, as a roller's do), so their
+    /// products stay within range for every length camkin accepts (1e-100 to 1e100).
+    #[inline(always)]
+    fn newton_step(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
+        let [[a, b], [c, d]] = self.jacobian(e, q);
+        let [f, g] = self.residual(e, q);
+        let inv_det = 1.0 / (a * d - b * c);
+        [(b * g - d * f) * inv_det, (c * f - a * g) * inv_det]
     }
     /// `z·n = e`, `x'·n = 0` with `z = x − O`, `n = (−sin φ, cos φ)`, `t = (cos φ, sin φ)`
     /// (`ṅ = −φ̇ t`): `φ̇ = (ω J y)·n / z·t`; `u̇ = (φ̇ x'·t − ω (J x')·n) / x''·n`; and

@@ -171,6 +171,7 @@ impl Kind for OscillatingRoller {
             )
         })
     }
+    const ANGULAR: bool = true;
     #[inline(always)]
     fn pose(&self, q: f64) -> Pose {
         Pose::angle(q)
