@@ -250,7 +250,7 @@ impl Curve for ClosedSpline {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn position(&self, u: f64) -> Point2 {
         let (c, t) = self.piece(u);
         let cubic = |c: &[f64; 4]| c[0] + t * (c[1] + t * (c[2] + t * c[3]));
