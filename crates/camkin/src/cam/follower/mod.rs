@@ -464,19 +464,27 @@ pub(crate) trait Kind {
     /// `None` when the follower never touches `x`. Returns `(oriented score, q)`.
     fn score(&self, x: Point2) -> Option<(f64, f64)>;
     /// The position is an angle whose sine and cosine [`Kind::pose`] keeps (a sweep then
-    /// carries them from step to step).
+    /// carries them from step to step); else a length.
     const ANGULAR: bool = false;
     /// The position `q` as a [`Pose`]: with its sine and cosine for an arm angle (the methods
-    /// below read them there instead of calling `sin_cos`), without for a length (the default).
+    /// below read them there instead of calling `sin_cos`), without for a length.
     #[inline(always)]
     fn pose(&self, q: f64) -> Pose {
-        Pose::length(q)
+        if Self::ANGULAR {
+            Pose::angle(q)
+        } else {
+            Pose::length(q)
+        }
     }
     /// The position `q` reached from `from` (a Newton step, a sweep's step): for an arm angle its
     /// sine and cosine carried by angle addition where the step is small.
     #[inline(always)]
-    fn pose_from(&self, _from: Pose, q: f64) -> Pose {
-        self.pose(q)
+    fn pose_from(&self, from: Pose, q: f64) -> Pose {
+        if Self::ANGULAR {
+            from.angle_to(q)
+        } else {
+            Pose::length(q)
+        }
     }
     /// Whether a converged tangency at world cam point `x` and position `q` is the follower's
     /// first touch through `x` (the position of [`Kind::score`], within `slack`), not its
@@ -836,6 +844,34 @@ impl Geometry {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The roots of `gap` on `[lo, lo + width]`: its sign changes over `n` equal steps, each
+    /// refined by 80 bisections (the first-touch tests' reference, sharing no formula with a kind).
+    pub(in crate::cam::follower) fn crossings(
+        gap: impl Fn(f64) -> f64,
+        lo: f64,
+        width: f64,
+        n: u32,
+    ) -> Vec<f64> {
+        let h = width / f64::from(n);
+        (0..n)
+            .filter_map(|j| {
+                let (mut a0, mut a1) = (lo + f64::from(j) * h, lo + f64::from(j + 1) * h);
+                if gap(a0).signum() == gap(a1).signum() {
+                    return None;
+                }
+                for _ in 0..80 {
+                    let m = 0.5 * (a0 + a1);
+                    if gap(m).signum() == gap(a0).signum() {
+                        a0 = m;
+                    } else {
+                        a1 = m;
+                    }
+                }
+                Some(0.5 * (a0 + a1))
+            })
+            .collect()
+    }
 
     fn direction_of(d: Vec2) -> Result<Vec2, CamError> {
         let m = Follower::TranslatingFlat { direction: d }.model(Point2::origin())?;

@@ -107,14 +107,6 @@ impl Kind for OscillatingFlat {
         self.score_interval(c, r)
     }
     const ANGULAR: bool = true;
-    #[inline(always)]
-    fn pose(&self, q: f64) -> Pose {
-        Pose::angle(q)
-    }
-    #[inline(always)]
-    fn pose_from(&self, from: Pose, q: f64) -> Pose {
-        from.angle_to(q)
-    }
     #[inline]
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         self.residual_sc(x, x1, q.sin_cos())

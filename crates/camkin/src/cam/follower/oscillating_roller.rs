@@ -172,14 +172,6 @@ impl Kind for OscillatingRoller {
         })
     }
     const ANGULAR: bool = true;
-    #[inline(always)]
-    fn pose(&self, q: f64) -> Pose {
-        Pose::angle(q)
-    }
-    #[inline(always)]
-    fn pose_from(&self, from: Pose, q: f64) -> Pose {
-        from.angle_to(q)
-    }
     #[inline]
     fn residual_value<T: Num>(&self, x: V2<T>, x1: V2<T>, q: T) -> [T; 2] {
         self.residual_sc(x, x1, q.sin_cos())
@@ -332,23 +324,10 @@ mod tests {
                     0.95 * r * (f64::from(i) * 1.3).cos(),
                 );
                 let x = k.o + (l + d) * Vec2::new(a.cos(), a.sin());
-                let (lo, n) = (k.phi0 - std::f64::consts::PI, 20_000);
-                let h = std::f64::consts::TAU / f64::from(n);
-                for j in 0..n {
-                    let (p0, p1) = (lo + f64::from(j) * h, lo + f64::from(j + 1) * h);
-                    if gap(x, p0).signum() == gap(x, p1).signum() {
-                        continue;
-                    }
-                    let (mut a0, mut a1) = (p0, p1);
-                    for _ in 0..80 {
-                        let m = 0.5 * (a0 + a1);
-                        if gap(x, m).signum() == gap(x, a0).signum() {
-                            a0 = m;
-                        } else {
-                            a1 = m;
-                        }
-                    }
-                    let phi = 0.5 * (a0 + a1);
+                let lo = k.phi0 - std::f64::consts::PI;
+                for phi in
+                    super::super::tests::crossings(|p| gap(x, p), lo, std::f64::consts::TAU, 20_000)
+                {
                     let by_score = matches!(k.score(x), Some((_, q)) if (q - phi).abs() <= 1e-9);
                     assert_eq!(
                         k.is_first_through(x, &k.pose(phi), slack),

@@ -217,23 +217,9 @@ mod tests {
                     0.95 * r * (f64::from(i) * 1.3).cos(),
                 );
                 let x = k.cam_pivot + (e + side) * k.p + along * k.d;
-                let (lo, n) = (along - 2.0 * r, 20_000);
-                let h = 4.0 * r / f64::from(n);
-                for j in 0..n {
-                    let (q0, q1) = (lo + f64::from(j) * h, lo + f64::from(j + 1) * h);
-                    if gap(x, q0).signum() == gap(x, q1).signum() {
-                        continue;
-                    }
-                    let (mut a0, mut a1) = (q0, q1);
-                    for _ in 0..80 {
-                        let m = 0.5 * (a0 + a1);
-                        if gap(x, m).signum() == gap(x, a0).signum() {
-                            a0 = m;
-                        } else {
-                            a1 = m;
-                        }
-                    }
-                    let q = 0.5 * (a0 + a1);
+                for q in
+                    super::super::tests::crossings(|q| gap(x, q), along - 2.0 * r, 4.0 * r, 20_000)
+                {
                     let by_score =
                         matches!(k.score(x), Some((_, qs)) if (qs - q).abs() <= 1e-9 * r);
                     let cheap = k.is_first_through(x, &k.pose(q), slack);
