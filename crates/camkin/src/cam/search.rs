@@ -64,7 +64,8 @@ impl Prepared {
 }
 
 impl Mechanism {
-    /// The follower coordinate's length scale (1 for a length, the arm's reach for an angle).
+    /// The follower coordinate's length scale: 1 for a length; for an arm angle the cam's size
+    /// plus the pivot's distance from the cam's axis (the farthest a contact can be from the pivot).
     pub(crate) fn q_scale(&self) -> f64 {
         self.geometry.q_length_scale(self.size)
     }
