@@ -3,7 +3,7 @@
 //! local maxima refined by Newton).
 
 use super::follower::rates::Refusals;
-use super::follower::{dispatch, Kind};
+use super::follower::{dispatch, pitch_point, CentrePath, Kind};
 use super::pose::Pose;
 use super::starts::Candidates;
 use super::{CamError, Mechanism, StopReason};
@@ -157,6 +157,60 @@ impl Mechanism {
                     touch,
                     pose,
                     last: e,
+                });
+            }
+        }
+        Err(CamError::NoConvergence {
+            angle_deg: theta.to_degrees(),
+            reason: StopReason::IterationLimit,
+        })
+    }
+
+    /// A roller's warm Newton (radius `r > 0`, centre on `path`) in the cam parameter alone,
+    /// from `u`: the roller's centre is the profile's pitch point ([`pitch_point`]) where
+    /// that crosses the path, so the path's residual at the pitch point is one equation in
+    /// `u`, whose derivative is `(1 + r κ)` times the gradient's component along `x'`. No
+    /// arm angle is carried through the iterations; the caller takes the position from the
+    /// converged pitch point ([`CentrePath::pose`]). Steps are accepted as by
+    /// [`Mechanism::newton_with`], the centre's displacement measured both as a length and
+    /// as the follower coordinate.
+    #[inline(always)]
+    pub(crate) fn pitch_newton<C: Curve + ?Sized>(
+        &self,
+        (path, r): (CentrePath, f64),
+        profile: &C,
+        theta: f64,
+        frame: &Frame,
+        mut u: f64,
+    ) -> Result<f64, CamError> {
+        let Prepared {
+            inv_tol,
+            c2,
+            q_over_tol,
+            lim,
+            ..
+        } = self.prepared;
+        let per_tol = inv_tol.max(q_over_tol * path.per_length());
+        for _ in 0..self.options.max_iterations {
+            let e = curve_in(frame, profile, u);
+            let (c, stretch) = pitch_point(&e, r, self.orientation);
+            let (f, g) = path.residual(self.cam.pivot, c);
+            let du = -f / (stretch * g.dot(&e.d1));
+            if !du.is_finite() {
+                return Err(CamError::NoConvergence {
+                    angle_deg: theta.to_degrees(),
+                    reason: StopReason::SingularJacobian,
+                });
+            }
+            let du = du.max(-lim).min(lim);
+            u += du;
+            let s = du * stretch * per_tol;
+            let step2 = s * s * e.d1.norm_squared();
+            if step2 <= 1.0 || c2 * step2 * step2 <= 1.0 {
+                return Ok(if (0.0..self.period).contains(&u) {
+                    u
+                } else {
+                    u.rem_euclid(self.period)
                 });
             }
         }

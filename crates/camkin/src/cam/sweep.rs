@@ -7,7 +7,7 @@
 //! sampled first-touch function is compared with the warm contact, and if another part of the
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
-use super::follower::{dispatch, Kind};
+use super::follower::{dispatch, pitch_point, Kind};
 use super::overtake::Overtaken;
 use super::pose::Pose;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
@@ -180,18 +180,45 @@ impl<'a> Sweep<'a> {
         let cam = m.cam.state(theta);
         let frame = Frame::from_parts(cam.pose.origin.coords.into(), rotation);
         let (u0, q0) = p.start(theta - p.theta);
-        let start = match p.pose {
-            Some(from) if K::ANGULAR => k.pose_from(from, q0),
-            _ => k.pose(q0),
+        let (touch, pose, at) = match k.centre_path() {
+            // a roller: Newton in the cam parameter alone, the position from its centre
+            Some((path, r)) if r > 0.0 => {
+                let u = m.pitch_newton((path, r), profile, theta, &frame, u0).ok()?;
+                let at = curve_in(&frame, profile, u);
+                let near = match p.pose {
+                    Some(last) if K::ANGULAR => last,
+                    _ => k.pose(q0),
+                };
+                let (centre, _) = pitch_point(&at, r, m.orientation);
+                let pose = path.pose(m.cam.pivot, centre, near);
+                if !m.convex_warm_touch_with(k, &at, &pose) {
+                    return None;
+                }
+                (
+                    Touch {
+                        u,
+                        q: pose.q,
+                        v: 0.0,
+                    },
+                    pose,
+                    at,
+                )
+            }
+            _ => {
+                let start = match p.pose {
+                    Some(from) if K::ANGULAR => k.pose_from(from, q0),
+                    _ => k.pose(q0),
+                };
+                let c = m.newton_with(k, profile, theta, &frame, u0, start).ok()?;
+                if !m.convex_warm_touch_with(k, &c.last, &c.pose) {
+                    return None;
+                }
+                (c.touch, c.pose, curve_in(&frame, profile, c.touch.u))
+            }
         };
-        let c = m.newton_with(k, profile, theta, &frame, u0, start).ok()?;
-        if !m.convex_warm_touch_with(k, &c.last, &c.pose) {
-            return None;
-        }
-        let at = curve_in(&frame, profile, c.touch.u);
         let found = Found::WarmStart;
-        let motion = m.closed_form_motion(k, theta, &cam, &at, (c.touch, c.pose), found)?;
-        Some((motion, K::ANGULAR.then_some(c.pose)))
+        let motion = m.closed_form_motion(k, theta, &cam, &at, (touch, pose), found)?;
+        Some((motion, K::ANGULAR.then_some(pose)))
     }
 
     /// Keeps a carried curve's contact parameter and its rate (a difference quotient over the last

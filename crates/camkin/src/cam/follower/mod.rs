@@ -16,6 +16,7 @@
 //! (rad, counter-clockwise from the world x axis).
 
 pub(crate) mod carried;
+mod centre_path;
 mod joint;
 mod oscillating_flat;
 mod oscillating_roller;
@@ -24,6 +25,7 @@ mod translating_flat;
 mod translating_knife;
 mod translating_roller;
 
+pub(crate) use centre_path::{pitch_point, CentrePath};
 pub use joint::Joint;
 
 use super::jet::{Num, V2};
@@ -561,48 +563,6 @@ pub(crate) trait Kind {
     /// program's value and four derivatives (`s₀` added to the value), `σ` the cam's sense and
     /// `rot = R(−σu)`.
     fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rotation) -> Envelope;
-}
-
-/// The path of a follower's reference point (knife tip, roller centre).
-#[derive(Debug, Clone, Copy)]
-pub(crate) enum CentrePath {
-    /// the line `cam axis + e·p + q·d` of a translating follower (`p = rot90(d)`)
-    Line { d: Vec2, p: Vec2, e: f64 },
-    /// the circle of radius `l` about an arm's pivot `o` (world)
-    Circle { o: Point2, l: f64 },
-}
-
-impl CentrePath {
-    /// The interval `(mid, half width)` of the path coordinate (a length along the line, or the
-    /// arm angle) of every point within `r` of `c` that lies on the path; `None` when none does.
-    pub(crate) fn interval(&self, cam_pivot: Point2, c: Point2, r: f64) -> Option<(f64, f64)> {
-        match *self {
-            CentrePath::Line { d, p, e } => {
-                let (along, half) = along_interval(cam_pivot, d, c, r);
-                let lateral = (c - cam_pivot).dot(&p) - e;
-                (lateral.abs() <= half).then_some((along, half))
-            }
-            CentrePath::Circle { o, l } => {
-                let rho = (c - o).norm();
-                ((rho - l).abs() <= r + ROUNDING * (rho + r)).then(|| polar_interval(o, c, r))
-            }
-        }
-    }
-}
-
-impl CentrePath {
-    /// The tangent directions `(mid, half width)`, rad, modulo a half turn, of the path near the
-    /// points within `r` of `c`: a piece of curve whose tangent avoids them crosses the path at
-    /// most once.
-    pub(crate) fn tangents(&self, c: Point2, r: f64) -> (f64, f64) {
-        match *self {
-            CentrePath::Line { d, .. } => (d.y.atan2(d.x), ROUNDING),
-            CentrePath::Circle { o, .. } => {
-                let (psi, half) = polar_interval(o, c, r);
-                (psi + std::f64::consts::FRAC_PI_2, half)
-            }
-        }
-    }
 }
 
 /// A follower kind with its derived data: one variant per kind.
