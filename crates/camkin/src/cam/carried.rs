@@ -209,8 +209,19 @@ impl Mechanism {
                 let end = if ccw { gap.1 } else { gap.0 };
                 for k in &covers {
                     let (edge, v) = if ccw { (k.lo, k.v_lo) } else { (k.hi, k.v_hi) };
-                    let d = wrap_angle_near(edge - end, 0.0);
-                    starts.push((d.abs() * k.scale, k.u, v, end + d));
+                    let start = match c.sector {
+                        // one tooth's cover: started with that tooth there, ranked by the
+                        // nearest tooth's distance (the report brings the contact to it)
+                        Some((turn, _)) => {
+                            let d = edge - end;
+                            (d - (d / turn).round() * turn, edge)
+                        }
+                        None => {
+                            let d = wrap_angle_near(edge - end, 0.0);
+                            (d, end + d)
+                        }
+                    };
+                    starts.push((start.0.abs() * k.scale, k.u, v, start.1));
                 }
             }
         }
@@ -387,7 +398,7 @@ impl Mechanism {
         self.corners_outside(c, theta, frame, t)?;
         let (slack, window) = self.tie_window(c);
         let mut ties: Vec<Tie<'_>> = Vec::new();
-        for tie in self.cover_depths(t, covers) {
+        for tie in self.cover_depths(c, t, covers) {
             if tie.depth > slack {
                 return Err(CamError::NoConvergence {
                     angle_deg,
@@ -437,17 +448,20 @@ impl Mechanism {
     /// an arm: every tooth of a gear has its own covers, and its own parameter `v`).
     fn cover_depths<'a>(
         &self,
+        c: &Carried,
         t: &Touch,
         covers: &'a [Cover],
     ) -> impl Iterator<Item = Tie<'a>> + 'a {
         let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
+        let sector = c.sector;
         let tq = t.q;
         covers.iter().map(move |k| {
-            let q = if periodic {
-                let mid = 0.5 * (k.lo + k.hi);
-                tq + (mid - wrap_angle_near(mid, tq))
-            } else {
-                tq
+            let mid = 0.5 * (k.lo + k.hi);
+            let q = match (periodic, sector) {
+                // one tooth's covers: the tooth that is there
+                (true, Some((turn, _))) => tq + ((mid - tq) / turn).round() * turn,
+                (true, None) => tq + (mid - wrap_angle_near(mid, tq)),
+                (false, _) => tq,
             };
             Tie {
                 depth: (q - k.lo).min(k.hi - q) * k.scale,
@@ -545,10 +559,8 @@ impl Mechanism {
             };
             // a tangency from a start, handed to `f`: `Some((stop, here))` when `f` took it,
             // `here` when it is at this place (Newton may go to another)
-            let mut attempt = |u0: f64, edge: f64, v: f64| -> Option<(bool, bool)> {
-                let mut t2 = self
-                    .carried_newton(c, theta, frame, u0, v, t.q + (edge - q))
-                    .ok()?;
+            let mut attempt = |u0: f64, q0: f64, v: f64| -> Option<(bool, bool)> {
+                let mut t2 = self.carried_newton(c, theta, frame, u0, v, q0).ok()?;
                 let n = if periodic {
                     ((t2.q - t.q) / pitch).round()
                 } else {
@@ -565,7 +577,14 @@ impl Mechanism {
             let edges = [Some(closing_edge), both_edges.then_some(other_edge)];
             let mut taken = false;
             for (edge, v) in edges.into_iter().flatten() {
-                match attempt(k.u, edge, v) {
+                // at the edge with the cover's tooth there: one tooth's cover is that tooth's,
+                // a whole turn's is brought next to `t`
+                let q0 = if c.sector.is_some() {
+                    edge
+                } else {
+                    t.q + (edge - q)
+                };
+                match attempt(k.u, q0, v) {
                     Some((true, _)) => return,
                     Some((false, true)) => {
                         taken = true;
@@ -581,7 +600,7 @@ impl Mechanism {
             // beyond the tooth's tip corner)
             if both_edges && !taken {
                 if let Some((u0, v)) = self.deepest_near(c, frame, &joint.pose(t.q).frame(), k.u) {
-                    if attempt(u0, q, v).is_some_and(|(stop, _)| stop) {
+                    if attempt(u0, t.q, v).is_some_and(|(stop, _)| stop) {
                         return;
                     }
                 }
@@ -638,7 +657,7 @@ impl Mechanism {
         self.covers(c, frame, &mut covers);
         let (_, window) = self.tie_window(c);
         let mut ties: Vec<_> = self
-            .cover_depths(t, &covers)
+            .cover_depths(c, t, &covers)
             .filter(|d| d.depth > -window)
             .collect();
         let Some(sides) = self.carried_sides(c, frame, t) else {

@@ -76,15 +76,21 @@ impl Mechanism {
     }
 
     /// About how many seconds finding every contact at `angles` cam angles takes: the sweep,
-    /// and per angle one more search (about 3 ms for a follower carrying a curve, twice what the
-    /// 20/42 gear pair measured; 50 µs for a named kind, a cold query's cost at 100 000 nodes).
+    /// and per angle one more search (about 1.5 ms for a follower carrying a curve, twice what
+    /// the 20/42 gear pair measured; 50 µs for a named kind, a cold query's cost at 100 000
+    /// nodes).
     pub fn contacts_seconds_estimate(&self, angles: usize) -> f64 {
-        let per_angle = if self.carried().is_some() { 3e-3 } else { 5e-5 };
+        let per_angle = if self.carried().is_some() {
+            1.5e-3
+        } else {
+            5e-5
+        };
         self.sweep_seconds_estimate(angles) + angles as f64 * per_angle
     }
 
     /// Every contact with the follower at the state `s` (from [`Mechanism::analyze`] or a
-    /// [`Sweep`](super::Sweep)): its own contact first, then the other tangencies within the
+    /// [`Sweep`](super::Sweep)): its own contact first, then the other tangencies (in the order of
+    /// the cam's parameter) within the
     /// touch tolerance of its position, found from the same starts as the first-touch search (the
     /// local maxima of the sampled first-touch function; a carried curve's covered cam samples)
     /// and refined by Newton, then a conjugate follower's second curve where its play is within
@@ -116,6 +122,8 @@ impl Mechanism {
             places.push(x);
             out.push(self.contact(theta, &cam, &frame, t, s)?);
         }
+        // the others in the order of the cam's parameter, whatever order the search found them in
+        out[1..].sort_by(|a, b| a.cam_param.total_cmp(&b.cam_param));
         if let Some(c) = self.conjugate_contact(s)? {
             out.push(c);
         }

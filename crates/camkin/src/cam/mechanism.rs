@@ -143,9 +143,13 @@ impl Mechanism {
     /// non-convex one every step also searches the profile's dense samples (16 a spline piece)
     /// for a contact elsewhere, by branch and bound over their tree, in about 2 µs per doubling
     /// of their number (at most 41 µs a step measured on a 100 000-node profile, 1.6 million
-    /// samples, 2-core host).
+    /// samples, 2-core host); a follower carrying a curve checks its acceptance against the
+    /// cam's samples within its reach and its corners, about 0.2 ms a step (twice what the
+    /// 20/42 gear pair measured).
     pub fn sweep_seconds_estimate(&self, angles: usize) -> f64 {
-        let per_step = if self.convex {
+        let per_step = if self.carried().is_some() {
+            2e-4
+        } else if self.convex {
             1e-6
         } else {
             2e-6 + 2e-6 * (self.index.dense.params.len().max(2) as f64).log2()

@@ -233,8 +233,11 @@ pub enum CurveError {
     },
 }
 
-/// Sample parameters over one period of a closed curve: `per_piece` evenly in every smooth piece
-/// between consecutive `breakpoints`, or `per_curve` evenly over the period when there are none.
+/// Sample parameters over one period of a closed curve, in increasing order within `[0,
+/// period)`: `per_piece` evenly in every smooth piece between consecutive `breakpoints`
+/// (the last piece going round the end of the period to the first breakpoint, its samples past
+/// the end brought to the start), or `per_curve` evenly over the period when there are none.
+/// A curve whose pieces repeat (a gear's teeth) gets samples that repeat with them.
 pub(crate) fn piece_samples(
     breakpoints: &[f64],
     period: f64,
@@ -242,18 +245,34 @@ pub(crate) fn piece_samples(
     per_curve: usize,
 ) -> impl Iterator<Item = f64> + '_ {
     let n = breakpoints.len();
-    (0..n.max(1)).flat_map(move |i| {
-        let (s, e, k) = if n == 0 {
+    let piece = move |i: usize| -> (f64, f64, usize) {
+        if n == 0 {
             (0.0, period, per_curve)
         } else {
-            (
-                breakpoints[i],
-                breakpoints.get(i + 1).copied().unwrap_or(period),
-                per_piece,
-            )
-        };
-        (0..k).map(move |j| s + (e - s) * j as f64 / k as f64)
-    })
+            let s = breakpoints[i];
+            let e = breakpoints
+                .get(i + 1)
+                .copied()
+                .unwrap_or(breakpoints[0] + period);
+            (s, e, per_piece)
+        }
+    };
+    let at = move |(s, e, k): (f64, f64, usize), j: usize| s + (e - s) * j as f64 / k as f64;
+    // the last piece's samples past the period's end, brought to its start
+    let (last, wrapped_from) = match n {
+        0 => ((0.0, period, per_curve), per_curve),
+        _ => {
+            let p = piece(n - 1);
+            (p, (0..p.2).find(|&j| at(p, j) >= period).unwrap_or(p.2))
+        }
+    };
+    let wrapped = (wrapped_from..last.2).map(move |j| at(last, j) - period);
+    let pieces = (0..n.max(1)).flat_map(move |i| {
+        let p = piece(i);
+        let k = if i + 1 == n.max(1) { wrapped_from } else { p.2 };
+        (0..k).map(move |j| at(p, j))
+    });
+    wrapped.chain(pieces)
 }
 
 pub(crate) fn check_positive(field: &'static str, value: f64) -> Result<f64, CurveError> {
@@ -326,5 +345,39 @@ pub(crate) mod test_support {
             "d3 at {u}: {d3} vs {}",
             e.d3
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::piece_samples;
+
+    /// Samples cover the period in increasing order, `per_piece` in every piece including the
+    /// one round the end (which used to end at the period, leaving the stretch before the first
+    /// breakpoint a single chord), and repeat with pieces that repeat.
+    #[test]
+    fn piece_samples_cover_the_period_and_repeat_with_the_pieces() {
+        // three "teeth" of length 2, joints at 0.3 and 1.1 of each
+        let bp: Vec<f64> = (0..3)
+            .flat_map(|k| [2.0 * f64::from(k) + 0.3, 2.0 * f64::from(k) + 1.1])
+            .collect();
+        let s: Vec<f64> = piece_samples(&bp, 6.0, 4, 100).collect();
+        assert_eq!(s.len(), 6 * 4);
+        assert!(
+            s.windows(2).all(|w| w[0] < w[1]) && s[0] >= 0.0 && s[23] < 6.0,
+            "{s:?}"
+        );
+        // the stretch from 0 to the first joint is sampled: the piece from 5.1 to 6.3 has its
+        // fourth sample at 6.0, brought to 0
+        assert!(s[0].abs() <= 1e-12 && (s[1] - 0.3).abs() <= 1e-12, "{s:?}");
+        for i in 0..16 {
+            assert!((s[i + 8] - s[i] - 2.0).abs() <= 1e-12, "{i}: {s:?}");
+        }
+        // joints from 0 (a spline's nodes): as before, nothing wraps
+        let s: Vec<f64> = piece_samples(&[0.0, 1.0, 2.5], 4.0, 2, 100).collect();
+        assert_eq!(s, vec![0.0, 0.5, 1.0, 1.75, 2.5, 3.25]);
+        // no joints
+        let s: Vec<f64> = piece_samples(&[], 1.0, 2, 4).collect();
+        assert_eq!(s, vec![0.0, 0.25, 0.5, 0.75]);
     }
 }

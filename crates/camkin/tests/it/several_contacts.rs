@@ -89,8 +89,12 @@ fn mesh_cycles(teeth1: u32, teeth2: u32, backlash: f64) {
             "{teeth1}/{teeth2}, backlash {backlash} mm, θ = {:.2}°",
             theta.to_degrees()
         );
-        // the first contact is the state's own
+        // the first contact is the state's own; the others in the order of the cam parameter
         assert_eq!(cs[0].point, s.contact_world, "{what}");
+        assert!(
+            cs[1..].windows(2).all(|w| w[0].cam_param < w[1].cam_param),
+            "{what}"
+        );
         let mut on_line = [Vec::new(), Vec::new()];
         for c in &cs {
             // on the line, the normal along it (both lines pass through the pitch point)

@@ -183,6 +183,35 @@ pub(crate) struct Carried {
     pub(crate) corners: crate::cam::corners::Corners,
     /// the smallest and largest level of the polyline
     pub(crate) level_range: (f64, f64),
+    /// for a curve of symmetry `z > 1` on an arm: `(2π/z, period/z)`, the turn and the shift of
+    /// the parameter from one tooth to the next. Its crossings are then those of one tooth's
+    /// stretch of the polyline (the first `1/z` of its segments) and the stretches inside
+    /// are taken round that tooth's turn, not the whole turn: the others are the same turned by
+    /// multiples of `2π/z`.
+    pub(crate) sector: Option<(f64, f64)>,
+}
+
+/// `(2π/z, period/z)` when the closed polyline `verts` of a curve of symmetry `z > 1` (on an
+/// arm) repeats tooth by tooth: as many vertices a tooth, each the one a tooth before turned by
+/// `2π/z` (to 1e-9 of the curve's size) with its parameter shifted by `period/z`.
+fn tooth_sector(
+    verts: &[(Vec2, f64, (f64, f64))],
+    symmetry: u32,
+    period: Option<f64>,
+) -> Option<(f64, f64)> {
+    let (z, period) = (symmetry as usize, period?);
+    if z < 2 || verts.len() % z != 0 {
+        return None;
+    }
+    let (turn, shift) = (std::f64::consts::TAU / z as f64, period / z as f64);
+    let m = verts.len() / z;
+    let size = verts.iter().map(|v| v.0.norm()).fold(0.0, f64::max);
+    let rot = Rotation::new(turn);
+    let repeats = (0..verts.len() - m).all(|i| {
+        let (a, b) = (&verts[i], &verts[i + m]);
+        (rot * a.0 - b.0).norm() <= 1e-9 * size && (a.1 + shift - b.1).abs() <= 1e-9 * period
+    });
+    repeats.then_some((turn, shift))
 }
 
 /// Polyline vertices per smooth piece, and over a curve without breakpoints.
@@ -282,21 +311,27 @@ impl Carried {
             .iter()
             .map(|v| v.2 .1)
             .fold(f64::NEG_INFINITY, f64::max);
-        let nb = nseg.clamp(1, 1 << 16);
+        let symmetry = match track {
+            Track::Pivot => curve.symmetry().max(1),
+            Track::Slide { .. } => 1,
+        };
+        let sector = tooth_sector(&verts, symmetry, period);
+        // one tooth's segments when the polyline repeats tooth by tooth
+        let indexed = match sector {
+            Some(_) => nseg / symmetry as usize,
+            None => nseg,
+        };
+        let nb = indexed.clamp(1, 1 << 16);
         let width = ((hi - lo) / nb as f64).max(f64::MIN_POSITIVE);
         let mut buckets = vec![Vec::new(); nb];
         let bucket = |l: f64| (((l - lo) / width) as usize).min(nb - 1);
-        for i in 0..nseg {
+        for i in 0..indexed {
             let (a, b) = seg(i);
             let (la, lb) = (verts[a].2 .1, verts[b].2 .1);
             for b in &mut buckets[bucket(la.min(lb))..=bucket(la.max(lb))] {
                 b.push(i as u32);
             }
         }
-        let symmetry = match track {
-            Track::Pivot => curve.symmetry().max(1),
-            Track::Slide { .. } => 1,
-        };
         let corners = crate::cam::corners::Corners::of(curve.as_ref(), &params);
         Ok(Self {
             curve,
@@ -312,6 +347,7 @@ impl Carried {
             chord_error,
             level_range: (lo, hi),
             corners,
+            sector,
         })
     }
 
@@ -378,6 +414,16 @@ impl Carried {
         if buf.is_empty() {
             return;
         }
+        if let Some((turn, shift)) = self.sector {
+            // one tooth's crossings, within one tooth's turn from its first vertex (a crossing
+            // turned by whole teeth is the next tooth's, its parameter shifted with it)
+            let from = self.verts[0].2 .0;
+            for c in buf.iter_mut() {
+                let teeth = ((c.along - from) / turn).floor();
+                c.along -= teeth * turn;
+                c.v -= teeth * shift;
+            }
+        }
         buf.sort_by(|a, b| a.along.total_cmp(&b.along));
         match self.track {
             Track::Slide { .. } => {
@@ -403,16 +449,18 @@ impl Carried {
                 }
             }
             Track::Pivot => {
-                // cyclic: start at an entry, pair each with the next exit going round
+                // cyclic: start at an entry, pair each with the next exit going round (a whole
+                // turn, or one tooth's)
                 let Some(first) = buf.iter().position(|c| c.entering) else {
                     return;
                 };
+                let round = self.sector.map_or(std::f64::consts::TAU, |(turn, _)| turn);
                 let n = buf.len();
                 let mut open: Option<(f64, f64)> = None;
                 for k in 0..n {
                     let c = buf[(first + k) % n];
                     let along = if first + k >= n {
-                        c.along + std::f64::consts::TAU
+                        c.along + round
                     } else {
                         c.along
                     };
@@ -427,5 +475,73 @@ impl Carried {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::{Ellipse, InvoluteGear, InvoluteGearSpec};
+
+    fn arm() -> Joint {
+        Joint::Rotating {
+            pivot: Point2::new(62.0, 0.0),
+            closing: super::super::Sense::Ccw,
+            initial_angle: 0.0,
+            toward_cam: std::f64::consts::PI,
+        }
+    }
+
+    /// A gear on an arm is indexed by one tooth; its stretches inside at any level are the
+    /// whole turn's (computed from every segment, as a curve without symmetry is) reduced to
+    /// one tooth: each whole-turn stretch is a tooth-stretch turned by a whole number of
+    /// teeth, with its parameters shifted by as many teeth.
+    #[test]
+    fn one_tooth_gives_every_tooth_stretch() {
+        let z = 42;
+        let gear: Arc<dyn Curve> =
+            Arc::new(InvoluteGear::new(InvoluteGearSpec::new(2.0, z, 20f64.to_radians())).unwrap());
+        let c = Carried::new(gear.clone(), &arm(), 100.0).unwrap();
+        let (turn, shift) = c.sector.expect("a gear repeats tooth by tooth");
+        assert_eq!(turn, std::f64::consts::TAU / f64::from(z));
+        // the same polyline indexed whole (no symmetry)
+        let mut whole = Carried::new(gear, &arm(), 100.0).unwrap();
+        whole.sector = None;
+        let nseg = whole.verts.len();
+        let width = whole.bucket_width * whole.buckets.len() as f64 / nseg as f64;
+        whole.buckets = vec![Vec::new(); nseg];
+        whole.bucket_width = width;
+        for i in 0..nseg {
+            let (la, lb) = (whole.verts[i].2 .1, whole.verts[(i + 1) % nseg].2 .1);
+            let b = |l: f64| (((l - whole.level_lo) / width) as usize).min(nseg - 1);
+            for k in b(la.min(lb))..=b(la.max(lb)) {
+                whole.buckets[k].push(i as u32);
+            }
+        }
+        let (lo, hi) = c.level_range;
+        let (mut buf, mut one, mut all) = (Vec::new(), Vec::new(), Vec::new());
+        for k in 1..40 {
+            let level = lo + (hi - lo) * f64::from(k) / 40.0;
+            one.clear();
+            all.clear();
+            c.inside(level, &mut buf, &mut one);
+            whole.inside(level, &mut buf, &mut all);
+            assert_eq!(one.len(), 1, "one stretch a tooth at {level}");
+            assert_eq!(all.len(), z as usize, "at {level}");
+            let ((a0, v0), (a1, v1)) = one[0];
+            for &((b0, w0), (b1, w1)) in &all {
+                let teeth = ((b0 - a0) / turn).round();
+                assert!((b0 - a0 - teeth * turn).abs() <= 1e-9, "{level}: {b0} {a0}");
+                assert!((b1 - a1 - teeth * turn).abs() <= 1e-9);
+                let period = shift * f64::from(z);
+                let dv = |w: f64, v: f64| (w - v - teeth * shift).rem_euclid(period);
+                assert!(dv(w0, v0).min(period - dv(w0, v0)) <= 1e-9 * period);
+                assert!(dv(w1, v1).min(period - dv(w1, v1)) <= 1e-9 * period);
+            }
+        }
+        // a curve without symmetry keeps the whole turn
+        let e: Arc<dyn Curve> =
+            Arc::new(Ellipse::new(Point2::new(3.0, 0.0), 4.0, 2.0, 0.0).unwrap());
+        assert!(Carried::new(e, &arm(), 100.0).unwrap().sector.is_none());
     }
 }
