@@ -49,6 +49,13 @@ pub(crate) struct Prepared {
 }
 
 impl Prepared {
+    /// Newton's test on a step whose squared length, in units of the tolerance, is `step2`:
+    /// `δ ≤ tol`, or `C δ² ≤ tol` (the next step would be below the tolerance).
+    #[inline(always)]
+    fn accepts(&self, step2: f64) -> bool {
+        step2 <= 1.0 || self.c2 * step2 * step2 <= 1.0
+    }
+
     pub(crate) fn new(options: &super::AnalysisOptions, q_scale: f64, period: f64) -> Self {
         let tol = options.position_tolerance;
         let ct = options.newton_contraction * tol;
@@ -68,6 +75,16 @@ impl Mechanism {
     /// plus the pivot's distance from the cam's axis (the farthest a contact can be from the pivot).
     pub(crate) fn q_scale(&self) -> f64 {
         self.geometry.q_length_scale(self.size)
+    }
+
+    /// The cam parameter `u` taken into `[0, period)` (no division when it is there already).
+    #[inline(always)]
+    fn in_period(&self, u: f64) -> f64 {
+        if (0.0..self.period).contains(&u) {
+            u
+        } else {
+            u.rem_euclid(self.period)
+        }
     }
 
     /// [`AnalysisOptions::touch_tolerance`] in units of the follower coordinate.
@@ -122,7 +139,6 @@ impl Mechanism {
         // the tolerance): (δ/tol)² ≤ 1 or (C tol)² (δ/tol)⁴ ≤ 1
         let Prepared {
             inv_tol,
-            c2,
             q_over_tol,
             lim,
             ..
@@ -142,14 +158,9 @@ impl Mechanism {
             pose = k.pose_from(pose, pose.q + dq);
             let (su, sq) = (du * inv_tol, dq * q_over_tol);
             let step2 = (su * su * e.d1.norm_squared()).max(sq * sq);
-            if step2 <= 1.0 || c2 * step2 * step2 <= 1.0 {
-                let u = if (0.0..self.period).contains(&u) {
-                    u
-                } else {
-                    u.rem_euclid(self.period)
-                };
+            if self.prepared.accepts(step2) {
                 let touch = Touch {
-                    u,
+                    u: self.in_period(u),
                     q: pose.q,
                     v: 0.0,
                 };
@@ -185,7 +196,6 @@ impl Mechanism {
     ) -> Result<f64, CamError> {
         let Prepared {
             inv_tol,
-            c2,
             q_over_tol,
             lim,
             ..
@@ -205,13 +215,8 @@ impl Mechanism {
             let du = du.max(-lim).min(lim);
             u += du;
             let s = du * stretch * per_tol;
-            let step2 = s * s * e.d1.norm_squared();
-            if step2 <= 1.0 || c2 * step2 * step2 <= 1.0 {
-                return Ok(if (0.0..self.period).contains(&u) {
-                    u
-                } else {
-                    u.rem_euclid(self.period)
-                });
+            if self.prepared.accepts(s * s * e.d1.norm_squared()) {
+                return Ok(self.in_period(u));
             }
         }
         Err(CamError::NoConvergence {
