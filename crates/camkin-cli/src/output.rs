@@ -309,7 +309,7 @@ mod tests {
         assert_eq!(lines.len(), 3);
         assert!(lines[0].starts_with("angle_deg,position,lift,velocity,acceleration,"));
         let n = lines[0].split(',').count();
-        assert_eq!(n, 26);
+        assert_eq!(n, 27);
         assert_eq!(lines[1].split(',').count(), n);
         let err: Vec<&str> = lines[2].split(',').collect();
         assert_eq!(err.len(), n);

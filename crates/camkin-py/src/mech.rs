@@ -465,7 +465,7 @@ impl PyMechanism {
                             first_error = Some((a, e.clone()));
                         }
                     }
-                    cols.push(camkin::table::contact_cells(&r));
+                    cols.push(camkin::table::contact_cells(&r, &units));
                 }
             }
             (cols, first_error)

@@ -66,7 +66,11 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
         .collect();
     let units = Units::plain(mech, loaded.unit);
     let columns = contact_columns(&units);
-    let mut chunk = Some(rows.iter().map(contact_cells).collect::<Vec<_>>());
+    let mut chunk = Some(
+        rows.iter()
+            .map(|r| contact_cells(r, &units))
+            .collect::<Vec<_>>(),
+    );
     write_atomic(args.output.as_deref(), |w| {
         write_cells(w, args.format, &columns, &mut || chunk.take())
     })

@@ -24,13 +24,14 @@ struct Cover {
 }
 
 /// How the bodies meet at a touch.
-struct Sides {
+pub(super) struct Sides {
     /// the contact point (world)
-    contact: Point2,
-    /// the cam's outward normal points into the follower's material (on its left)
-    opposite: bool,
+    pub(super) contact: Point2,
+    /// the cam's outward normal points into the follower's material (on its left); at a corner,
+    /// the corner's pieces lie outside the other body
+    pub(super) opposite: bool,
     /// the follower moving in its closing sense moves its point at the contact into the cam
-    approaching: bool,
+    pub(super) approaching: bool,
 }
 
 /// [`Mechanism::covers`]' walk over the cam's samples.
@@ -255,17 +256,19 @@ impl Mechanism {
                 let near = 3.0 * self.corners.spacing.max(c.corners.spacing);
                 let xa = frame * profile_point(self, u0);
                 let xb = self.geometry.joint.pose(q0).frame() * c.curve.position(v0);
-                let fb = self.geometry.joint.pose(q0).frame();
-                if self
-                    .corners
-                    .at
-                    .iter()
-                    .any(|&(_, y)| (frame * y - xa).norm() <= near)
-                    || c.corners
-                        .at
-                        .iter()
-                        .any(|&(_, y)| (fb * y - xb).norm() <= near)
-                {
+                for k in self.corners_near(c, frame, q0, (xa, xb), near) {
+                    let e = match self.corner_from(c, theta, frame, &k, q0) {
+                        Ok(t) => match self.carried_settle(c, theta, frame, t, Some(&covers)) {
+                            Ok(t) => return Ok(self.carried_report(c, theta, t)),
+                            Err(e) => e,
+                        },
+                        Err(e) => e,
+                    };
+                    if !last.as_ref().is_some_and(corner) {
+                        last = Some(e);
+                    }
+                }
+                if !last.as_ref().is_some_and(corner) && !c.corners.at.is_empty() {
                     last = Some(CamError::NoConvergence {
                         angle_deg,
                         reason: StopReason::OnCorner,
@@ -352,7 +355,12 @@ impl Mechanism {
                     Some(p) => v.rem_euclid(p),
                     None => v,
                 };
-                return Ok(Touch { u, q, v });
+                return Ok(Touch {
+                    u,
+                    q,
+                    v,
+                    corner: None,
+                });
             }
         }
         Err(CamError::NoConvergence {
@@ -383,7 +391,11 @@ impl Mechanism {
             return Err(not_first);
         };
         if !sides.opposite {
-            return Err(not_first);
+            // a corner with a piece leaning into the other body: the contact is on that piece
+            return match self.off_corner(c, theta, frame, t) {
+                Some(t2) => Ok(Some(t2)),
+                None => Err(not_first),
+            };
         }
         let own;
         let covers = match covers {
@@ -395,7 +407,16 @@ impl Mechanism {
                 &own
             }
         };
-        self.corners_outside(c, theta, frame, t)?;
+        if let Some(k) = self.corner_inside(c, frame, t) {
+            // the corner touches first: the contact is there (or, when it is not found, refused)
+            return match self.corner_from(c, theta, frame, &k, t.q) {
+                Ok(t2) if t2 != *t => Ok(Some(t2)),
+                _ => Err(CamError::NoConvergence {
+                    angle_deg,
+                    reason: StopReason::OnCorner,
+                }),
+            };
+        }
         let (slack, window) = self.tie_window(c);
         let mut ties: Vec<Tie<'_>> = Vec::new();
         for tie in self.cover_depths(c, t, covers) {
@@ -723,6 +744,9 @@ impl Mechanism {
 
     /// How the bodies meet at a touch; `None` when it is off an open curve's bounds.
     fn carried_sides(&self, c: &Carried, frame: &Frame, t: &Touch) -> Option<Sides> {
+        if t.corner.is_some() {
+            return self.corner_sides(c, frame, t);
+        }
         if c.period.is_none() && !(t.v >= c.bounds.0 && t.v <= c.bounds.1) {
             return None;
         }
@@ -745,52 +769,6 @@ impl Mechanism {
         })
     }
 
-    /// Refuses a touch where a corner of either curve lies inside the other body (deeper than the
-    /// touch tolerance): the corner touches first, and a contact at a corner is not computed.
-    fn corners_outside(
-        &self,
-        c: &Carried,
-        theta: f64,
-        frame: &Frame,
-        t: &Touch,
-    ) -> Result<(), CamError> {
-        let tol = self.options.touch_tolerance;
-        let on_corner = CamError::NoConvergence {
-            angle_deg: theta.to_degrees(),
-            reason: StopReason::OnCorner,
-        };
-        let fb = self.geometry.joint.pose(t.q).frame();
-        let profile = self.cam.profile.as_ref();
-        // the follower's corners within the cam's reach, inside the cam
-        for &(_, y) in &c.corners.at {
-            let x = fb * y;
-            if (x - self.cam.pivot).norm() > self.size + tol {
-                continue;
-            }
-            let local = frame.inverse_transform_point(&x);
-            if self.corners.depth(profile, local, self.orientation) > tol {
-                return Err(on_corner);
-            }
-        }
-        // the cam's corners inside the follower (an arm's curve reaches no further from its
-        // pivot than its sampled levels)
-        let reach = match (c.track, self.geometry.joint) {
-            (Track::Pivot, super::Joint::Rotating { pivot, .. }) => Some((pivot, c.level_range.1)),
-            _ => None,
-        };
-        for &(_, y) in &self.corners.at {
-            let x = frame * y;
-            if reach.is_some_and(|(o, r)| (x - o).norm() > r + c.chord_error + tol) {
-                continue;
-            }
-            let local = fb.inverse_transform_point(&x);
-            if c.corners.depth(c.curve.as_ref(), local, 1.0) > tol {
-                return Err(on_corner);
-            }
-        }
-        Ok(())
-    }
-
     /// A warm step of a carried curve from the previous contact `(u0, v0, q0)` extrapolated;
     /// `previous`: the previous angle and contact, to tell a jump from a continuation.
     pub(crate) fn carried_warm(
@@ -804,19 +782,28 @@ impl Mechanism {
         let (u0, v0, q0) = start;
         let (p_theta, p) = previous;
         let back = self.cam.state(p_theta).frame();
+        // Newton of the kind of `corner`: on a tangency, or on a corner resting on a curve
+        let newton = |theta: f64, frame: &Frame, (u, v, q): (f64, f64, f64), corner| match corner {
+            None => self.carried_newton(c, theta, frame, u, v, q),
+            Some(side) => self.corner_newton(c, theta, frame, side, u, v, q),
+        };
+        let near = 4.0 * self.corners.spacing.max(c.corners.spacing);
         // a contact continues the previous one when Newton at the previous angle, started from
         // it, comes back to the previous contact (a warm Newton can land on the next tooth pair,
-        // or on the same pair a tooth further round, when a large step crosses a handover)
+        // or on the same pair a tooth further round, when a large step crosses a handover); one
+        // that reached a corner or left it, when it moved less than a few samples on each curve
         let continues = |t: &Touch| {
-            self.carried_newton(c, p_theta, &back, t.u, t.v, t.q)
-                .is_ok_and(|b| {
-                    let d = (b.u - p.u).rem_euclid(self.period);
-                    d.min(self.period - d) <= 1e-6 * self.period
-                        && (b.q - p.q).abs() * self.geometry.q_length_scale(self.size)
-                            <= 1e-6 * self.size
-                })
+            if t.corner != p.corner {
+                return self.corner_continues(c, (&p, t), near);
+            }
+            newton(p_theta, &back, (t.u, t.v, t.q), t.corner).is_ok_and(|b| {
+                let d = (b.u - p.u).rem_euclid(self.period);
+                d.min(self.period - d) <= 1e-6 * self.period
+                    && (b.q - p.q).abs() * self.geometry.q_length_scale(self.size)
+                        <= 1e-6 * self.size
+            })
         };
-        if let Ok(t) = self.carried_newton(c, theta, frame, u0, v0, q0) {
+        if let Ok(t) = newton(theta, frame, (u0, v0, q0), p.corner) {
             if let Ok(t) = self.carried_settle(c, theta, frame, t, None) {
                 if continues(&t) {
                     return Ok((t, Found::WarmStart));

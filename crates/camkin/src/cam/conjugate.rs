@@ -224,6 +224,7 @@ impl Mechanism {
             u: own.cam_param,
             q: own.position,
             v: own.follower_param,
+            corner: own.corner,
         };
         let mut k = c.mech.contact(theta, &cam, &frame, &t, &mapped)?;
         k.row_follower = c.map(k.row_follower);

@@ -65,6 +65,8 @@ pub struct Contact {
     /// the contact is the second curve's of a conjugate follower ([`Mechanism::with_conjugate`]);
     /// `follower_param` is then that curve's parameter
     pub conjugate: bool,
+    /// the contact is at a corner of this curve, not a tangency (see [`FollowerState::corner`])
+    pub corner: Option<super::Corner>,
 }
 
 impl Mechanism {
@@ -104,6 +106,7 @@ impl Mechanism {
             u: s.cam_param,
             q: s.position,
             v: s.follower_param,
+            corner: s.corner,
         };
         let mut touches = vec![first];
         match self.carried() {
@@ -170,7 +173,7 @@ impl Mechanism {
     ) -> Result<Contact, CamError> {
         let g = &self.geometry;
         let ea = frame.derivs_to_world(&self.cam.profile.eval(t.u));
-        let (c, nu) = (ea.p, ea.as_derivs().normal());
+        let (c, nu) = (ea.p, self.contact_normal(&ea, t));
         let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
         let (u_b, k) = self.pair_kinematics(theta, cam, &ea, &body_b, *t)?;
         let row_cam = k.phi_q[2] * self.cam.direction.sign();
@@ -193,6 +196,7 @@ impl Mechanism {
             residual: row_cam * self.cam.angular_acceleration + row_follower * s.acceleration
                 - k.gamma,
             conjugate: false,
+            corner: t.corner,
         })
     }
 }

@@ -66,12 +66,8 @@ impl Corners {
     }
 
     /// How deep the point `x` (this curve's frame) lies inside the material on the curve's
-    /// `side` (+1: its left, −1: its right): positive inside, by the distance to the foot point.
-    pub(crate) fn depth(&self, curve: &dyn Curve, x: Point2, side: f64) -> f64 {
-        self.depth_within(curve, x, side, 80)
-    }
-
-    /// [`Corners::depth`] with its foot point found in `sections` golden sections.
+    /// `side` (+1: its left, −1: its right): positive inside, by the distance to the foot point,
+    /// found in `sections` golden sections.
     pub(crate) fn depth_within(
         &self,
         curve: &dyn Curve,
@@ -82,8 +78,7 @@ impl Corners {
         let Some(u) = self.foot(curve, x, sections) else {
             return f64::NEG_INFINITY;
         };
-        let d = curve.eval(u);
-        side * (x - d.p).dot(&rot90(d.d1.normalize()))
+        depth_at(curve, u, x, side)
     }
 
     /// The parameter of the foot point of `x` (this curve's frame) on the curve: the point
@@ -125,6 +120,13 @@ impl Corners {
             None => u.clamp(self.bounds.0, self.bounds.1),
         })
     }
+}
+
+/// How deep `x` (the curve's frame) lies inside the material on the curve's `side` (+1: its
+/// left), measured from the point at `foot`: positive inside.
+pub(crate) fn depth_at(curve: &dyn Curve, foot: f64, x: Point2, side: f64) -> f64 {
+    let d = curve.eval(foot);
+    side * (x - d.p).dot(&rot90(d.d1.normalize()))
 }
 
 /// The sample nearest `x` (the first of equals): `(distance², index)`.

@@ -6,9 +6,10 @@ use super::follower::rates::CamPoint;
 use super::follower::{dispatch, Kind};
 use super::pose::Pose;
 use super::state::pressure_angle;
-use super::{CamError, FollowerState, Found, Mechanism, Motion, Touch};
+use super::{CamError, Corner, FollowerState, Found, Mechanism, Motion, Touch};
 use crate::body::{curve_in, BodyState, CurveInFrame, WorldDerivs};
-use crate::contact::{ContactKinematics, Pairing};
+use crate::contact::{ContactKinematics, Pairing, Surface};
+use crate::curve::PointCurve;
 use crate::geometry::{Frame, UnitVec2, Vec2};
 
 /// The shared part of an analysis at a converged touch.
@@ -100,7 +101,7 @@ impl Mechanism {
         let body_a = profile.eval(touch.u);
         let ea = frame.derivs_to_world(&body_a);
         let c = ea.p;
-        let nu = ea.as_derivs().normal();
+        let nu = self.contact_normal(&ea, &touch);
         let jb = g.joint.velocity_jacobian(c);
         // velocity constraint Φ_q q̇ = 0: ν·v_A^P = q̇ ν·J_B
         let den = nu.dot(&jb);
@@ -144,8 +145,8 @@ impl Mechanism {
     ) -> Result<(f64, ContactKinematics), CamError> {
         let g = &self.geometry;
         let c = ea.p;
-        let nu = ea.as_derivs().normal();
-        let (u_b, eb) = g.curve.world_at(&body_b.frame(), c, t.v);
+        let nu = self.contact_normal(ea, &t);
+        let (u_b, mut eb) = g.curve.world_at(&body_b.frame(), c, t.v);
         let pairing = Pairing {
             u_a: t.u,
             u_b,
@@ -155,20 +156,51 @@ impl Mechanism {
             gap: nu.dot(&(c - eb.p)),
             iterations: 0,
         };
-        let k = ContactKinematics::from_geometry(
-            cam,
-            ea,
-            body_b,
-            &eb,
-            g.is_knife(),
-            &pairing,
-            self.options.conformal_tolerance,
-        )
+        let tol = self.options.conformal_tolerance;
+        let k = match (t.corner, self.carried()) {
+            // the cam's corner is a point of the cam resting on the follower's curve
+            (Some(Corner::Cam), Some(carried)) => {
+                let corner = PointCurve::new(self.cam.profile.position(t.u))?;
+                let a = Surface::new(&corner, cam);
+                let b = Surface::new(carried.curve.as_ref(), body_b);
+                ContactKinematics::new(&a, &b, &pairing, tol)
+            }
+            (corner, _) => {
+                // the follower's corner is a point of the follower (a knife edge)
+                let point = corner == Some(Corner::Follower);
+                if point {
+                    (eb.d1, eb.d2, eb.d3) = (Vec2::zeros(), Vec2::zeros(), Vec2::zeros());
+                }
+                ContactKinematics::from_geometry(
+                    cam,
+                    ea,
+                    body_b,
+                    &eb,
+                    point || g.is_knife(),
+                    &pairing,
+                    tol,
+                )
+            }
+        }
         .map_err(|source| CamError::Contact {
             angle_deg: theta.to_degrees(),
             source,
         })?;
         Ok((u_b, k))
+    }
+
+    /// The common normal at the touch `t`: the cam profile's left normal at the cam point `ea`
+    /// (world); at a corner of the cam, which has none, the follower curve's right normal there
+    /// (the normal the contact method reports with the cam's corner a point).
+    #[inline(always)]
+    pub(crate) fn contact_normal(&self, ea: &WorldDerivs, t: &Touch) -> Vec2 {
+        if t.corner == Some(Corner::Cam) {
+            let fb = self.geometry.joint.pose(t.q).frame();
+            let (_, eb) = self.geometry.curve.world_at(&fb, ea.p, t.v);
+            -eb.as_derivs().normal()
+        } else {
+            ea.as_derivs().normal()
+        }
     }
 
     pub(crate) fn kinematics(
@@ -222,6 +254,7 @@ impl Mechanism {
             follower_motion: jb,
             radius_of_curvature: 1.0 / kappa_conv,
             at_breakpoint,
+            corner: touch.corner,
             found,
         })
     }

@@ -125,6 +125,7 @@ impl Overtake<'_> {
                     u: u1,
                     q: q1,
                     v: 0.0,
+                    corner: None,
                 });
             }
             attempt(u1, q1)

@@ -19,6 +19,8 @@ pub(crate) struct Touch {
     /// the follower curve's parameter at the contact (a carried curve's; 0 for the named kinds,
     /// whose contact curve gives it in closed form)
     pub(crate) v: f64,
+    /// the contact is at a corner of this curve (its parameter there is exact), not a tangency
+    pub(crate) corner: Option<super::Corner>,
 }
 
 /// What Newton converged to: the touch, the position as a [`Pose`], and the cam point of
@@ -163,6 +165,7 @@ impl Mechanism {
                     u: self.in_period(u),
                     q: pose.q,
                     v: 0.0,
+                    corner: None,
                 };
                 return Ok(Converged {
                     touch,

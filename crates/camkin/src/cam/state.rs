@@ -60,8 +60,33 @@ pub struct FollowerState {
     /// the contact sits on a node of the profile (its curvature has a corner there: the jerk
     /// jumps)
     pub at_breakpoint: bool,
+    /// the contact is at a corner of one curve (where its tangent turns: a gear's tip, where a
+    /// linear tip relief starts), not a tangency: that curve is a point there (its curvature
+    /// infinite, its sliding rate zero) and the normal is the other curve's
+    pub corner: Option<Corner>,
     /// how the contact was found
     pub found: Found,
+}
+
+/// Which curve has a corner at a contact ([`FollowerState::corner`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+pub enum Corner {
+    /// a corner of the cam's profile touches the follower's curve
+    Cam,
+    /// a corner of the follower's curve touches the cam's profile
+    Follower,
+}
+
+impl Corner {
+    /// `cam` or `follower`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Corner::Cam => "cam",
+            Corner::Follower => "follower",
+        }
+    }
 }
 
 /// The follower's motion at one cam angle: position, velocity and acceleration with nothing

@@ -199,6 +199,7 @@ impl<'a> Sweep<'a> {
                         u,
                         q: pose.q,
                         v: 0.0,
+                        corner: None,
                     },
                     pose,
                     at,

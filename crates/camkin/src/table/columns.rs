@@ -62,6 +62,9 @@ pub fn analysis_columns(u: &Units) -> Vec<String> {
         c.push(name.into());
     }
     c.push(format!("radius_of_curvature_{l}"));
+    if u.carried {
+        c.push("corner".into());
+    }
     if u.conjugate {
         c.push(format!("conjugate_play_{}", u.motion_key(0)));
     }
@@ -103,6 +106,9 @@ pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
         n(r.pressure_angle_deg),
         n(r.radius_of_curvature),
     ];
+    if u.carried {
+        cells.push(Cell::Text(r.corner.map(str::to_string)));
+    }
     if u.conjugate {
         cells.push(n(r.conjugate_play.map(|p| u.coord_value(p))));
     }

@@ -19,6 +19,8 @@ pub struct ContactRow {
     /// which curve of the follower touches: `follower` (its own), `conjugate` (a form-closed
     /// follower's second curve)
     pub curve: Option<&'static str>,
+    /// which curve has a corner at the contact (`cam`, `follower`; none for a tangency)
+    pub corner: Option<&'static str>,
     /// the cam-profile parameter at the contact
     pub cam_param: Option<f64>,
     /// the follower curve's parameter at the contact
@@ -69,6 +71,7 @@ impl ContactRow {
                     angle_deg,
                     contact: u32::try_from(i).ok(),
                     curve: Some(if c.conjugate { "conjugate" } else { "follower" }),
+                    corner: c.corner.map(crate::cam::Corner::name),
                     cam_param: Some(c.cam_param),
                     follower_param: Some(c.follower_param),
                     x: Some(c.point.x),
@@ -101,7 +104,7 @@ impl ContactRow {
 pub fn contact_columns(u: &Units) -> Vec<String> {
     let l = u.len();
     let q = if u.oscillating { "rad" } else { l };
-    vec![
+    let mut c: Vec<String> = vec![
         "angle_deg".into(),
         "contact".into(),
         "curve".into(),
@@ -121,14 +124,18 @@ pub fn contact_columns(u: &Units) -> Vec<String> {
         format!("row_follower_{l}_per_{q}"),
         format!("gamma_{l}_s2"),
         format!("residual_{l}_s2"),
-        "error".into(),
-    ]
+    ];
+    if u.carried {
+        c.push("corner".into());
+    }
+    c.push("error".into());
+    c
 }
 
 /// One row's cells, in the order of [`contact_columns`].
-pub fn contact_cells(r: &ContactRow) -> Vec<Cell> {
+pub fn contact_cells(r: &ContactRow, u: &Units) -> Vec<Cell> {
     let n = Cell::Num;
-    vec![
+    let mut cells = vec![
         n(Some(r.angle_deg)),
         Cell::Count(r.contact),
         Cell::Text(r.curve.map(str::to_string)),
@@ -148,6 +155,10 @@ pub fn contact_cells(r: &ContactRow) -> Vec<Cell> {
         n(r.row_follower),
         n(r.gamma),
         n(r.residual),
-        Cell::Text(r.error.clone()),
-    ]
+    ];
+    if u.carried {
+        cells.push(Cell::Text(r.corner.map(str::to_string)));
+    }
+    cells.push(Cell::Text(r.error.clone()));
+    cells
 }

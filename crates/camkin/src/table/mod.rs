@@ -113,6 +113,9 @@ pub struct AnalysisRow {
     /// a conjugate follower's play: how far it can move against its closing sense before its
     /// second curve touches (negative: interference), as `position` ([`Mechanism::conjugate_play`])
     pub conjugate_play: Option<f64>,
+    /// which curve has a corner at the contact (`cam`, `follower`; none for a tangency): that
+    /// curve is a point there (a carried follower's column)
+    pub corner: Option<&'static str>,
     /// 1 when the contact is at a profile node (where the jerk jumps), else 0
     pub at_node: Option<u8>,
     /// how the contact was found
@@ -149,6 +152,7 @@ impl AnalysisRow {
                 pressure_angle_deg: Some(s.pressure_angle().to_degrees()),
                 radius_of_curvature: Some(s.radius_of_curvature),
                 conjugate_play: None,
+                corner: s.corner.map(crate::cam::Corner::name),
                 at_node: Some(u8::from(s.at_breakpoint)),
                 found: Some(FoundBy::of(s.found, jump)),
                 error: None,

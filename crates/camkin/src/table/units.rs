@@ -80,6 +80,8 @@ pub struct Units {
     pub oscillating: bool,
     /// the follower is conjugate (form-closed): the analysis has a play column
     pub conjugate: bool,
+    /// the follower carries a curve of its own: the analysis and contacts have a corner column
+    pub carried: bool,
     /// cam speed, rad/s (for derivatives per degree)
     omega: f64,
     /// cam angular acceleration, rad/s²
@@ -98,6 +100,7 @@ impl Units {
             per,
             oscillating: mech.follower().is_oscillating(),
             conjugate: mech.is_conjugate(),
+            carried: mech.follower().carried_profile().is_some(),
             omega: mech.cam().speed(),
             alpha: mech.cam().angular_acceleration(),
         }

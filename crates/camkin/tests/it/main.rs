@@ -7,6 +7,7 @@ mod common;
 mod conjugate;
 mod contact_general;
 mod contact_jumps;
+mod corner_contacts;
 mod dynamics_contact;
 mod dynamics_liftoff;
 mod dynamics_multibody;
