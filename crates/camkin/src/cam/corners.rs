@@ -5,8 +5,7 @@
 //! `carried`); a corner of one curve can press into the other between samples (a gear tooth's
 //! tip corner entering mesh, by microns). Each corner near the other body is projected onto the
 //! other curve (nearest sample, then golden sections on the foot point) and its depth inside the material
-//! measured exactly. A contact *at* a corner has no tangency; it is refused with
-//! [`StopReason::OnCorner`](super::StopReason::OnCorner), not answered wrongly.
+//! measured exactly. A contact *at* a corner has no tangency: see `corner_touch`.
 
 use crate::circle_tree::{CircleTree, Visit};
 use crate::curve::{Curve, Domain};

@@ -131,8 +131,8 @@ pub enum StopReason {
     /// the follower rests on a cusp of a folded profile (a corner: no tangency, no contact
     /// kinematics); the profile folds where the follower cannot follow its motion program
     OnCusp,
-    /// the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts),
-    /// where there is no tangency: not computed
+    /// the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts)
+    /// and the corner's own Newton found no resting place on the other curve there
     OnCorner,
 }
 
@@ -145,7 +145,7 @@ impl std::fmt::Display for StopReason {
             StopReason::NoCandidate => "no candidate",
             StopReason::BehindSample => "refined contact is behind a sampled one",
             StopReason::OnCorner => {
-                "the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts), which camkin does not compute yet"
+                "the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts), and no resting place of that corner on the other curve was found"
             }
             StopReason::OnCusp => {
                 "the follower rests on a cusp of the profile, which folds over itself there (the follower cannot follow the motion program)"
