@@ -94,10 +94,17 @@ impl PyMechanism {
             )));
         }
         if seconds > MAX_SECONDS {
+            let why = if self.mech().follower().carried_profile().is_some() {
+                "the follower carries a curve: every angle checks the cam's samples within its reach".to_string()
+            } else {
+                format!(
+                    "it is not convex, so every angle searches its {} samples for a contact elsewhere",
+                    self.mech().sample_count()
+                )
+            };
             return Err(errors::resource(format!(
-                "{angles} cam angles on this profile would take about {} s (it is not convex, so every angle searches its {} samples for a contact elsewhere); pass large=True to run it anyway, or use fewer angles",
+                "{angles} cam angles on this profile would take about {} s ({why}); pass large=True to run it anyway, or use fewer angles",
                 camkin::human::human(seconds.ceil()),
-                self.mech().sample_count()
             )));
         }
         Ok(())

@@ -97,6 +97,20 @@ impl PyMechanism {
             camkin::geometry::deg_to_rad(start_angle_deg),
         )
         .map_err(dyn_err)?;
+        // the model chosen: the one-coordinate model searches every curve's first touch each step
+        let steps = outputs as f64 * substeps as f64;
+        let seconds = sim.seconds_estimate(steps);
+        if seconds > 60.0 && !large {
+            let why = match &sim {
+                Simulation::Reduced(_) => " (its contact jumps or it has a second curve: each step searches every curve's first touch)",
+                Simulation::Multibody(_) => "",
+            };
+            return Err(errors::resource(format!(
+                "{} steps of this mechanism{why} would take about {} s; pass large=True to run it, or simulate fewer revolutions",
+                camkin::human::human(steps),
+                camkin::human::human(seconds.round())
+            )));
+        }
         let h = step_deg.to_radians() / mech.cam().speed() / substeps as f64;
         if h > sim.max_step() {
             let (rate, field, value) = sim.fastest_rate();

@@ -126,25 +126,18 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         camkin::geometry::deg_to_rad(args.start_angle),
     )
     .map_err(dyn_err)?;
-    if let Simulation::Reduced(_) = &sim {
-        // the one-coordinate model searches each curve's first touch, warm and cold, every step,
-        // and by bisection at every event: measured, 4 (an ideal gear pair, 0.5° steps) to 12 (a
-        // gear pair rattling in its backlash, 1° steps: 21 ms a step) cold searches a step and
-        // curve; the bound is for runs of hours, so it takes 6 (the probe is a wall time)
-        let probe = std::time::Instant::now();
-        for k in 0..8 {
-            let _ = mech.motion(f64::from(k) * 0.7);
-        }
-        let per_search = probe.elapsed().as_secs_f64() / 8.0;
-        let sides = if mech.is_conjugate() { 2.0 } else { 1.0 };
-        let seconds = steps * sides * 6.0 * per_search;
-        if seconds > 60.0 && !args.large {
-            return Err(Failure::Input(anyhow!(
-                "{} steps of this mechanism (its contact jumps or it has a second curve: each step searches every curve's first touch) would take about {} s; pass --large to run it, or simulate fewer --revolutions",
-                camkin::human::human(steps),
-                camkin::human::human(seconds.round())
-            )));
-        }
+    // the model chosen: the one-coordinate model searches every curve's first touch each step
+    let seconds = sim.seconds_estimate(steps);
+    if seconds > 60.0 && !args.large {
+        let why = match &sim {
+            Simulation::Reduced(_) => " (its contact jumps or it has a second curve: each step searches every curve's first touch)",
+            Simulation::Multibody(_) => "",
+        };
+        return Err(Failure::Input(anyhow!(
+            "{} steps of this mechanism{why} would take about {} s; pass --large to run it, or simulate fewer --revolutions",
+            camkin::human::human(steps),
+            camkin::human::human(seconds.round())
+        )));
     }
     let w = mech.cam().speed();
     let h = step.to_radians() / w / args.substeps as f64;

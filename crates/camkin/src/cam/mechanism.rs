@@ -157,6 +157,19 @@ impl Mechanism {
         angles as f64 * per_step
     }
 
+    /// A rough estimate of the seconds one cold first-touch search takes (a global search, no
+    /// warm start), for refusing work of minutes up front: ten warm steps' worth for the named
+    /// kinds (a cold query counts 4 800–13 000 instructions, about 5 µs, against 600–870 for a
+    /// warm step); 1 ms for a follower carrying a curve (twice the 0.5 ms the 20/42 gear pair
+    /// measured).
+    pub fn search_seconds_estimate(&self) -> f64 {
+        if self.carried().is_some() {
+            1e-3
+        } else {
+            10.0 * self.sweep_seconds_estimate(1)
+        }
+    }
+
     /// The number of dense samples of the profile the global search looks among.
     pub fn sample_count(&self) -> usize {
         self.index.dense.params.len()

@@ -80,6 +80,17 @@ struct Side<'a> {
     at: Kin,
 }
 
+impl Reduced<'_> {
+    /// The seconds of one cold first-touch search of each of the follower's curves, summed
+    /// ([`Mechanism::search_seconds_estimate`]).
+    pub(crate) fn search_seconds(&self) -> f64 {
+        self.sides
+            .iter()
+            .map(|s| s.mech.search_seconds_estimate())
+            .sum()
+    }
+}
+
 /// The largest number of events in one step before the run is stopped as chattering.
 const MAX_EVENTS_PER_STEP: usize = 1000;
 
