@@ -101,10 +101,9 @@ impl PyMechanism {
         let steps = outputs as f64 * substeps as f64;
         let seconds = sim.seconds_estimate(steps);
         if seconds > 60.0 && !large {
-            let why = match &sim {
-                Simulation::Reduced(_) => " (its contact jumps or it has a second curve: each step searches every curve's first touch)",
-                Simulation::Multibody(_) => "",
-            };
+            let why = sim
+                .cost_reason()
+                .map_or(String::new(), |r| format!(" ({r})"));
             return Err(errors::resource(format!(
                 "{} steps of this mechanism{why} would take about {} s; pass large=True to run it, or simulate fewer revolutions",
                 camkin::human::human(steps),

@@ -129,10 +129,9 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     // the model chosen: the one-coordinate model searches every curve's first touch each step
     let seconds = sim.seconds_estimate(steps);
     if seconds > 60.0 && !args.large {
-        let why = match &sim {
-            Simulation::Reduced(_) => " (its contact jumps or it has a second curve: each step searches every curve's first touch)",
-            Simulation::Multibody(_) => "",
-        };
+        let why = sim
+            .cost_reason()
+            .map_or(String::new(), |r| format!(" ({r})"));
         return Err(Failure::Input(anyhow!(
             "{} steps of this mechanism{why} would take about {} s; pass --large to run it, or simulate fewer --revolutions",
             camkin::human::human(steps),

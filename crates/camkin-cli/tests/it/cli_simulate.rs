@@ -207,35 +207,15 @@ fn an_hours_long_simulation_asks_first() {
         .stderr(predicate::str::contains("--large"));
 }
 
-/// The gear pair with backlash as its coast flanks and a driven gear's inertia and load: the
-/// one-coordinate model, two curves.
-const RATTLING_PAIR_EXTRA: &str = "
-[follower.conjugate]
-kind = \"involute-gear\"
-module = 2.0
-teeth = 42
-pressure_angle_deg = 20.0
-backlash = 0.02
-
-[dynamics]
-inertia = 0.002
-spring_stiffness = 0.0
-spring_preload = 0.05
-restitution = 0.9
-";
-
 /// Issue 16: the one-coordinate model's cost is the library's estimate (six cold searches of 1 ms
 /// a step and curve for a carried curve), the same the Python package refuses with: 100
 /// revolutions of a gear pair with backlash at 1° are about 432 s, refused without `--large`.
 #[test]
 fn a_long_gear_simulation_is_refused_with_the_librarys_estimate() {
     let dir = tempfile::tempdir().unwrap();
-    let text = std::fs::read_to_string(example("gear-pair-20-42.toml")).unwrap();
-    let m = dir.path().join("rattle.toml");
-    std::fs::write(&m, text + RATTLING_PAIR_EXTRA).unwrap();
     camkin()
         .arg("simulate")
-        .arg(&m)
+        .arg(example("gear-pair-backlash.toml"))
         .args(["--revolutions", "100", "--out"])
         .arg(dir.path().join("out"))
         .assert()

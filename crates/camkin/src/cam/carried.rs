@@ -4,7 +4,7 @@
 
 use super::follower::carried::{Carried, Crossing, Track};
 use super::{CamError, Found, Mechanism, StopReason, Touch};
-use crate::body::CurveInFrame;
+use crate::body::{CurveInFrame, WorldDerivs};
 use crate::geometry::{cross, rot90, wrap_angle_near, Frame, Point2, Vec2};
 use std::f64::consts::TAU;
 
@@ -110,6 +110,15 @@ struct Tie<'a> {
     depth: f64,
     q: f64,
     cover: &'a Cover,
+}
+
+/// Newton's tolerance (length), the follower coordinate's length scale, and the largest steps
+/// of the cam's and the carried curve's parameters.
+pub(super) struct Limits {
+    pub(super) tol: f64,
+    pub(super) qs: f64,
+    pub(super) lim: f64,
+    pub(super) vlim: f64,
 }
 
 /// Most starts tried by Newton in one global search.
@@ -237,17 +246,21 @@ impl Mechanism {
                 }
             )
         };
-        for &(_, u0, v0, q0) in starts.iter().take(STARTS) {
-            let e = match self.carried_newton(c, theta, frame, u0, v0, q0) {
-                Ok(t) => match self.carried_settle(c, theta, frame, t, Some(&covers)) {
-                    Ok(t) => return Ok(self.carried_report(c, theta, t)),
-                    Err(e) => e,
-                },
-                Err(e) => e,
-            };
-            // a corner found in the way is the reason to give
+        // a converged touch settled and reported
+        let settled = |t: Result<Touch, CamError>| {
+            t.and_then(|t| self.carried_settle(c, theta, frame, t, Some(&covers)))
+                .map(|t| self.carried_report(c, theta, t))
+        };
+        // a corner found in the way is the reason to give
+        let keep = |e: CamError, last: &mut Option<CamError>| {
             if !last.as_ref().is_some_and(corner) {
-                last = Some(e);
+                *last = Some(e);
+            }
+        };
+        for &(_, u0, v0, q0) in starts.iter().take(STARTS) {
+            match settled(self.carried_newton(c, theta, frame, u0, v0, q0)) {
+                Ok(t) => return Ok(t),
+                Err(e) => keep(e, &mut last),
             }
         }
         // no tangency near a corner: the resting contact is at the corner
@@ -257,15 +270,9 @@ impl Mechanism {
                 let xa = frame * profile_point(self, u0);
                 let xb = self.geometry.joint.pose(q0).frame() * c.curve.position(v0);
                 for k in self.corners_near(c, frame, q0, (xa, xb), near) {
-                    let e = match self.corner_from(c, theta, frame, &k, q0) {
-                        Ok(t) => match self.carried_settle(c, theta, frame, t, Some(&covers)) {
-                            Ok(t) => return Ok(self.carried_report(c, theta, t)),
-                            Err(e) => e,
-                        },
-                        Err(e) => e,
-                    };
-                    if !last.as_ref().is_some_and(corner) {
-                        last = Some(e);
+                    match settled(self.corner_from(c, theta, frame, &k, q0)) {
+                        Ok(t) => return Ok(t),
+                        Err(e) => keep(e, &mut last),
                     }
                 }
                 if !last.as_ref().is_some_and(corner) && !c.corners.at.is_empty() {
@@ -304,6 +311,36 @@ impl Mechanism {
         t
     }
 
+    /// Newton's tolerance and step bounds for a carried curve.
+    pub(super) fn carried_limits(&self, c: &Carried) -> Limits {
+        let fraction = self.options.max_step_fraction;
+        Limits {
+            tol: self.options.position_tolerance,
+            qs: self.geometry.q_length_scale(self.size),
+            lim: fraction * self.period,
+            vlim: fraction * (c.bounds.1 - c.bounds.0),
+        }
+    }
+
+    /// The cam at `u` and the carried curve at `v` with the follower at `q` (world), and the
+    /// motion of the follower's point there per unit of `q`.
+    #[inline]
+    pub(super) fn carried_points(
+        &self,
+        c: &Carried,
+        frame: &Frame,
+        (u, v, q): (f64, f64, f64),
+    ) -> (WorldDerivs, WorldDerivs, Vec2) {
+        let joint = self.geometry.joint;
+        let a = frame.curve_at(self.cam.profile.as_ref(), u);
+        let b = joint.pose(q).frame().curve_at(c.curve.as_ref(), v);
+        let dq_x = match joint {
+            super::Joint::Translating { direction, .. } => *direction,
+            super::Joint::Rotating { pivot, .. } => rot90(b.p - pivot),
+        };
+        (a, b, dq_x)
+    }
+
     /// Newton on the tangency of the cam at `u` and the carried curve at `v` with the follower at
     /// `q`: `x_A(u) = x_B(v, q)` and `x_A' × x_B' = 0`.
     pub(crate) fn carried_newton(
@@ -316,19 +353,12 @@ impl Mechanism {
         mut q: f64,
     ) -> Result<Touch, CamError> {
         let angle_deg = theta.to_degrees();
-        let profile = self.cam.profile.as_ref();
-        let tol = self.options.position_tolerance;
-        let qs = self.geometry.q_length_scale(self.size);
-        let lim = self.options.max_step_fraction * self.period;
-        let vlim = self.options.max_step_fraction * (c.bounds.1 - c.bounds.0);
-        let joint = self.geometry.joint;
+        let Limits { tol, qs, lim, vlim } = self.carried_limits(c);
         for _ in 0..self.options.max_iterations {
-            let a = frame.curve_at(profile, u);
-            let fb = joint.pose(q).frame();
-            let b = fb.curve_at(c.curve.as_ref(), v);
-            let (dq_x, dq_x1) = match joint {
-                super::Joint::Translating { direction, .. } => (*direction, Vec2::zeros()),
-                super::Joint::Rotating { pivot, .. } => (rot90(b.p - pivot), rot90(b.d1)),
+            let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
+            let dq_x1 = match self.geometry.joint {
+                super::Joint::Translating { .. } => Vec2::zeros(),
+                super::Joint::Rotating { .. } => rot90(b.d1),
             };
             let f = [a.p.x - b.p.x, a.p.y - b.p.y, cross(a.d1, b.d1)];
             let j = [

@@ -10,7 +10,7 @@
 //! by Newton on `x_A(u) = x_B(v, q)` in the smooth curve's parameter and `q`, the corner's
 //! parameter fixed at its joint.
 
-use super::carried::Sides;
+use super::carried::{Limits, Sides};
 use super::corners::depth_at;
 use super::follower::carried::Carried;
 use super::{CamError, Corner, Mechanism, StopReason, Touch};
@@ -82,19 +82,9 @@ impl Mechanism {
                     .ok_or(fail(StopReason::OnCorner))?
             }
         }
-        let profile = self.cam.profile.as_ref();
-        let tol = self.options.position_tolerance;
-        let qs = self.geometry.q_length_scale(self.size);
-        let lim = self.options.max_step_fraction * self.period;
-        let vlim = self.options.max_step_fraction * (c.bounds.1 - c.bounds.0);
-        let joint = self.geometry.joint;
+        let Limits { tol, qs, lim, vlim } = self.carried_limits(c);
         for _ in 0..self.options.max_iterations {
-            let a = frame.curve_at(profile, u);
-            let b = joint.pose(q).frame().curve_at(c.curve.as_ref(), v);
-            let dq_x = match joint {
-                super::Joint::Translating { direction, .. } => *direction,
-                super::Joint::Rotating { pivot, .. } => rot90(b.p - pivot),
-            };
+            let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
             // the smooth curve's parameter moves its point; q moves the follower's
             let col = match side {
                 Corner::Follower => a.d1,

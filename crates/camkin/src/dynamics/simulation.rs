@@ -106,6 +106,17 @@ impl<'a> Simulation<'a> {
         }
     }
 
+    /// Why a step of this model costs more than the multibody model's, for the message that
+    /// refuses a long run; `None` for the multibody model.
+    pub fn cost_reason(&self) -> Option<&'static str> {
+        match self {
+            Self::Multibody(_) => None,
+            Self::Reduced(_) => Some(
+                "its contact jumps or it has a second curve: each step searches every curve's first touch",
+            ),
+        }
+    }
+
     /// Advances by `h` seconds; the events located inside the step, in time order.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
         match self {
