@@ -94,7 +94,7 @@ impl PyMechanism {
             )));
         }
         if seconds > MAX_SECONDS {
-            let why = if self.mech().follower().carried_profile().is_some() {
+            let why = if self.mech().carries_curve() {
                 "the follower carries a curve: every angle checks the cam's samples within its reach".to_string()
             } else {
                 format!(

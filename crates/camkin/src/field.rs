@@ -98,6 +98,8 @@ pub enum ProfileField {
     Anchor,
     /// `direction` (a line's)
     Direction,
+    /// `at` (a point's place)
+    At,
 }
 
 /// Fields of one motion segment.
@@ -265,6 +267,7 @@ impl ProfileField {
             ProfileField::TipReliefShape => "tip_relief_shape",
             ProfileField::Anchor => "anchor",
             ProfileField::Direction => "direction",
+            ProfileField::At => "at",
         })
     }
 }

@@ -175,6 +175,13 @@ impl Mechanism {
         self.index.dense.params.len()
     }
 
+    /// True when the follower carries a curve whose first touch is found by the coverage search
+    /// (a general follower's curve other than a point: a point is a knife edge, computed by the
+    /// knife's closed forms).
+    pub fn carries_curve(&self) -> bool {
+        self.carried().is_some()
+    }
+
     /// True when the profile's curvature has one sign all round (sampled densely).
     pub fn is_convex(&self) -> bool {
         self.convex

@@ -357,7 +357,9 @@ impl Mechanism {
             self.score_starts(frame, &self.index.dense, &mut starts)
         };
         if starts.is_empty() {
-            let reason = if knife {
+            let reason = if knife && self.geometry.joint.is_rotating() {
+                "the knife edge's circle about the pivot misses the cam"
+            } else if knife {
                 "the knife edge's line of travel misses the cam"
             } else if on_path {
                 "the roller's path misses the cam"

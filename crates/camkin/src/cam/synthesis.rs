@@ -119,6 +119,30 @@ pub(crate) fn translating_path(d: Vec2, p: Vec2, e: f64, s: &[f64; 5]) -> [Vec2;
     [e * p + s[0] * d, s[1] * d, s[2] * d, s[3] * d, s[4] * d]
 }
 
+/// A point of an arm at distance `l` from the pivot `o` (from the cam's axis), at the angle
+/// `φ₀ + ρ (s − φ₀) + β` (`s[0]` the program's value with `φ₀` added, `ρ` the sign of the
+/// program's lift, `β` the point's polar angle in the arm's frame), and its derivatives in θ.
+pub(crate) fn arm_path(o: Vec2, l: f64, s: &[f64; 5], phi0: f64, rho: f64, beta: f64) -> [Vec2; 5] {
+    let f = [
+        phi0 + rho * (s[0] - phi0) + beta,
+        rho * s[1],
+        rho * s[2],
+        rho * s[3],
+        rho * s[4],
+    ];
+    // u = (cos f, sin f), v = J u
+    let (sn, cs) = f[0].sin_cos();
+    let (u, v) = (Vec2::new(cs, sn), Vec2::new(-sn, cs));
+    let (f1, f2, f3) = (f[1], f[2], f[3]);
+    [
+        o + l * u,
+        l * f1 * v,
+        l * (f2 * v - f1 * f1 * u),
+        l * ((f3 - f1 * f1 * f1) * v - 3.0 * f1 * f2 * u),
+        l * ((f[4] - 6.0 * f1 * f1 * f2) * v + (f1.powi(4) - 4.0 * f1 * f3 - 3.0 * f2 * f2) * u),
+    ]
+}
+
 /// `√a` of a jet (a₀ > 0).
 fn jet_sqrt(a: Jet) -> Jet {
     let a = a.0;

@@ -252,6 +252,15 @@ pub struct ProfileSpec {
         )
     )]
     pub direction: Option<[f64; 2]>,
+    #[cfg_attr(
+        feature = "serde",
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
+    )]
+    pub at: Option<[f64; 2]>,
 }
 
 /// One segment of a `kind = "motion"` profile.

@@ -8,7 +8,7 @@ use crate::cam::synthesis::synthesize;
 use crate::cam::{Follower, Sense};
 use crate::curve::{
     read_points_file, Circle, ClosedSpline, Curve, CurveError, Ellipse, InvoluteGear,
-    InvoluteGearSpec, Line, Parameterization, TipRelief, MAX_POINTS,
+    InvoluteGearSpec, Line, Parameterization, PointCurve, TipRelief, MAX_POINTS,
 };
 use crate::field::{Field, ProfileField, SegmentField};
 use crate::motion::{Law, Program, Segment};
@@ -203,6 +203,7 @@ impl ProfileSpec {
             ),
             ("anchor", self.anchor.is_some(), f(P::Anchor)),
             ("direction", self.direction.is_some(), f(P::Direction)),
+            ("at", self.at.is_some(), f(P::At)),
         ];
         let param = self.parameterization.unwrap_or_default();
         let scaled = |p: Point2| Point2::new(scale * p.x, scale * p.y);
@@ -309,6 +310,29 @@ impl ProfileSpec {
                         reason: e.to_string(),
                     })?;
                 Arc::new(line)
+            }
+            "point" => {
+                let Place::Follower = place else {
+                    return Err(SpecError::Rule {
+                        field: kind_field,
+                        reason: match place {
+                            Place::Cam(..) => "a cam's profile is a closed curve: a point can only be carried by a follower (a knife edge)",
+                            _ => "a point (a knife edge) cannot be a follower's second curve: give a circle of small radius",
+                        }
+                        .into(),
+                    });
+                };
+                check_kind(kind, present, &["at"])?;
+                let a = point(f(P::At), self.at.unwrap_or([0.0, 0.0]))?;
+                Arc::new(
+                    PointCurve::new(Point2::new(scale * a.x, scale * a.y)).map_err(|e| {
+                        SpecError::Invalid {
+                            field: f(P::At),
+                            value: vector(self.at.unwrap_or([0.0, 0.0])),
+                            reason: e.to_string(),
+                        }
+                    })?,
+                )
             }
             "motion" => {
                 let Place::Cam(follower, sense) = place else {
@@ -454,7 +478,7 @@ impl ProfileSpec {
                     field: kind_field,
                     value: other.to_string(),
                     what: "a profile kind",
-                    known: "spline, circle, ellipse, points-file, motion, involute-gear, line (a follower's)".into(),
+                    known: "spline, circle, ellipse, points-file, motion, involute-gear, line and point (a follower's)".into(),
                 })
             }
         };

@@ -100,7 +100,7 @@ impl Units {
             per,
             oscillating: mech.follower().is_oscillating(),
             conjugate: mech.is_conjugate(),
-            carried: mech.follower().carried_profile().is_some(),
+            carried: mech.carries_curve(),
             omega: mech.cam().speed(),
             alpha: mech.cam().angular_acceleration(),
         }

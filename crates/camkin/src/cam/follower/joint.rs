@@ -28,9 +28,10 @@ pub enum Joint {
         closing: Sense,
         /// the arm angle is reported within ±180° of this angle, rad
         initial_angle: f64,
-        /// the direction from the pivot to the cam's axis, rad: the first touch is found among
-        /// arm angles within ±180° of it, so that the branch cut lies where the arm points away
-        /// from the cam and cannot touch it
+        /// the direction from the pivot to the cam's axis, rad (for a carried point, less the
+        /// point's polar angle in the arm's frame: the arm angle that points the point at the
+        /// cam's axis): the first touch is found among arm angles within ±180° of it, so that
+        /// the branch cut lies where the arm points away from the cam and cannot touch it
         toward_cam: f64,
     },
 }

@@ -19,6 +19,7 @@ pub(crate) mod carried;
 mod centre_path;
 mod joint;
 mod oscillating_flat;
+mod oscillating_knife;
 mod oscillating_roller;
 pub(crate) mod rates;
 mod translating_flat;
@@ -38,6 +39,7 @@ use crate::field::{Field, FollowerField};
 use crate::geometry::Frame;
 use crate::geometry::{rot90, wrap_angle_near, Point2, Rotation, UnitVec2, Vec2};
 use oscillating_flat::OscillatingFlat;
+use oscillating_knife::OscillatingKnife;
 use oscillating_roller::OscillatingRoller;
 use rates::{CamPoint, Refusals};
 use translating_flat::TranslatingFlat;
@@ -177,23 +179,32 @@ impl Follower {
         };
         Ok(match self {
             Follower::Translating {
-                direction, offset, ..
-            } => carried::CarriedJoint::translating(
-                cam_pivot,
-                unit(*direction)?,
-                finite(Field::Follower(FollowerField::Offset), *offset)?,
-            ),
+                direction,
+                offset,
+                profile,
+            } => {
+                let (d, e) = (
+                    unit(*direction)?,
+                    finite(Field::Follower(FollowerField::Offset), *offset)?,
+                );
+                match carried_point(profile)? {
+                    Some(tip) => TranslatingKnife::carrying(cam_pivot, d, e, tip),
+                    None => carried::CarriedJoint::translating(cam_pivot, d, e),
+                }
+            }
             Follower::Rotating {
                 pivot,
                 closing,
                 initial_angle,
-                ..
-            } => carried::CarriedJoint::rotating(
-                cam_pivot,
-                point(Field::Follower(FollowerField::Pivot), *pivot)?,
-                *closing,
-                arm_angle(Field::Follower(FollowerField::InitialAngle), *initial_angle)?,
-            ),
+                profile,
+            } => {
+                let o = point(Field::Follower(FollowerField::Pivot), *pivot)?;
+                let phi0 = arm_angle(Field::Follower(FollowerField::InitialAngle), *initial_angle)?;
+                match carried_point(profile)? {
+                    Some(tip) => OscillatingKnife::model(cam_pivot, o, tip, *closing, phi0)?,
+                    None => carried::CarriedJoint::rotating(cam_pivot, o, *closing, phi0),
+                }
+            }
             &Follower::TranslatingFlat { direction } => {
                 TranslatingFlat::model(cam_pivot, unit(direction)?)
             }
@@ -309,6 +320,19 @@ impl Follower {
             _ => None,
         }
     }
+}
+
+/// The point a general follower carries when its curve is a point (a knife edge), checked
+/// within [`LENGTH_RANGE`]; `None` for any other curve.
+fn carried_point(profile: &FollowerProfile) -> Result<Option<Vec2>, CamError> {
+    if !matches!(profile.0.domain(), crate::curve::Domain::Point) {
+        return Ok(None);
+    }
+    let at = point(
+        Field::FollowerProfile(crate::field::ProfileField::At),
+        profile.0.position(0.0),
+    )?;
+    Ok(Some(at.coords))
 }
 
 /// Largest length the computation takes (it squares lengths): see [`LENGTH_RANGE`].
@@ -573,6 +597,7 @@ pub(crate) enum Model {
     TranslatingKnife(TranslatingKnife),
     OscillatingFlat(OscillatingFlat),
     OscillatingRoller(OscillatingRoller),
+    OscillatingKnife(OscillatingKnife),
     Carried(carried::CarriedJoint),
 }
 
@@ -585,6 +610,7 @@ macro_rules! dispatch {
             $crate::cam::follower::Model::TranslatingKnife($k) => $body,
             $crate::cam::follower::Model::OscillatingFlat($k) => $body,
             $crate::cam::follower::Model::OscillatingRoller($k) => $body,
+            $crate::cam::follower::Model::OscillatingKnife($k) => $body,
             $crate::cam::follower::Model::Carried($k) => $body,
         }
     };
@@ -767,7 +793,9 @@ impl Geometry {
     pub(crate) fn new(follower: Follower, cam_pivot: Point2, reach: f64) -> Result<Self, CamError> {
         let model = follower.model(cam_pivot)?;
         let joint = model.joint();
-        let (curve, carried) = match follower.carried_profile() {
+        // a carried point is a knife edge: its kind's closed forms, not a carried curve
+        let carries = matches!(model, Model::Carried(_));
+        let (curve, carried) = match follower.carried_profile().filter(|_| carries) {
             Some(profile) => {
                 let far = match joint {
                     Joint::Rotating { pivot, .. } => (pivot - cam_pivot).norm(),

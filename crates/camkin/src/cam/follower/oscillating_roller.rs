@@ -6,7 +6,7 @@ use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
-use crate::cam::synthesis::{rotated_derivs, Envelope};
+use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
@@ -263,26 +263,8 @@ impl Kind for OscillatingRoller {
         })
     }
     fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
-        // φ = φ0 + ρ s and its derivatives; u(φ) = (cos φ, sin φ), v = k × u
-        let (o, l, rho) = (self.o - self.cam_pivot, self.l, -self.closing);
-        let f = [
-            s0 + rho * (s[0] - s0),
-            rho * s[1],
-            rho * s[2],
-            rho * s[3],
-            rho * s[4],
-        ];
-        let (sn, cs) = f[0].sin_cos();
-        let (u, v) = (Vec2::new(cs, sn), Vec2::new(-sn, cs));
-        let (f1, f2, f3) = (f[1], f[2], f[3]);
-        let w = [
-            o + l * u,
-            l * f1 * v,
-            l * (f2 * v - f1 * f1 * u),
-            l * ((f3 - f1 * f1 * f1) * v - 3.0 * f1 * f2 * u),
-            l * ((f[4] - 6.0 * f1 * f1 * f2) * v
-                + (f1.powi(4) - 4.0 * f1 * f3 - 3.0 * f2 * f2) * u),
-        ];
+        // the roller's centre at φ = φ0 + ρ s
+        let w = arm_path(self.o - self.cam_pivot, self.l, s, s0, -self.closing, 0.0);
         Envelope::Offset(rotated_derivs(sigma, rot, &w), self.r)
     }
 }
