@@ -454,14 +454,15 @@ impl PathStarts<'_> {
     fn lateral_of(&self, x: Point2) -> f64 {
         match self.path {
             CentrePath::Line { p, e, .. } => (x - self.q.m.cam.pivot).dot(&p) - e,
-            CentrePath::Circle { o, l } => (x - o).norm() - l,
+            CentrePath::Circle { o, l, .. } => (x - o).norm() - l,
         }
     }
 }
 
 impl Visit for PathStarts<'_> {
     fn bound(&self, i: usize, c: Point2, r: f64) -> Option<f64> {
-        let interval = self.path.interval(self.q.m.cam.pivot, c, r)?;
+        let (mid, half) = self.path.interval(self.q.m.cam.pivot, c, r)?;
+        let interval = (mid - self.path.lead(), half);
         if self
             .q
             .avoids(&self.q.s.path_turn, i, Some(self.path.tangents(c, r)))
@@ -485,18 +486,7 @@ impl Visit for PathStarts<'_> {
         let m = self.q.m;
         let (s, n, r, period) = (&self.q.s.params, self.q.s.params.len(), self.r, m.period);
         let (pivot, joint) = (m.cam.pivot, m.geometry.joint);
-        let coord = |x: Point2| -> (f64, f64) {
-            match self.path {
-                CentrePath::Line { d, .. } => {
-                    let q = (x - pivot).dot(&d);
-                    (q, q)
-                }
-                CentrePath::Circle { o, .. } => {
-                    let y = x - o;
-                    joint.branch(y.y.atan2(y.x))
-                }
-            }
-        };
+        let coord = |x: Point2| joint.branch(self.path.coordinate(pivot, x));
         let at = |u: f64| self.at(u);
         let lateral = |u: f64| self.lateral_of(self.at(u));
         // a roller's start must put its centre within a fraction of its radius of the pitch

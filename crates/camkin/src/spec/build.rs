@@ -380,7 +380,20 @@ impl MechanismSpec {
             cam_obj.set_synthesis(s);
         }
         let oscillating = follower.is_oscillating();
-        let mut mechanism = Mechanism::new(cam_obj, follower)?;
+        // the lengths an unreachable follower's reason gives are in the file's unit (or metres)
+        let lengths = if options.si { "m" } else { unit.name() };
+        let mut mechanism = Mechanism::new(cam_obj, follower).map_err(|e| match e {
+            CamError::Unreachable {
+                field,
+                value,
+                reason,
+            } => CamError::Unreachable {
+                field,
+                value,
+                reason: format!("{reason} (lengths in {lengths})"),
+            },
+            e => e,
+        })?;
         if let Some(c) = &self.follower.conjugate {
             let (curve, _) = c.build(
                 scale,

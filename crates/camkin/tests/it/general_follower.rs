@@ -25,6 +25,10 @@ fn presets() -> Vec<Mechanism> {
                 offset: 0.7,
                 roller_radius: 1.2,
             },
+            Follower::TranslatingKnife {
+                direction: Vec2::new(-0.6, 0.8),
+                offset: 0.4,
+            },
             Follower::OscillatingRoller {
                 pivot: Point2::new(3.0, 8.0),
                 arm_length: 7.0,

@@ -23,6 +23,7 @@ mod jerk;
 mod motion_closed_form;
 mod oscillating_branch;
 mod paper_cam;
+mod point_follower;
 mod properties;
 mod several_contacts;
 mod spec;

@@ -3,7 +3,7 @@
 //! follower type.
 #![allow(clippy::unwrap_used)]
 use camkin::cam::synthesis::{synthesize, SynthesizedProfile};
-use camkin::cam::{Cam, Follower, Mechanism, Sense};
+use camkin::cam::{Cam, Follower, FollowerProfile, Mechanism, Sense};
 use camkin::curve::Curve;
 use camkin::motion::{Law, Program, Segment};
 use camkin::{Point2, Vec2};
@@ -30,7 +30,7 @@ fn program(law: Law, rise: f64) -> Program {
     Program::new(0.0, segments).unwrap()
 }
 
-fn translating() -> [Follower; 3] {
+fn translating() -> [Follower; 4] {
     [
         Follower::TranslatingFlat {
             direction: Vec2::new(1.0, 0.2),
@@ -44,12 +44,22 @@ fn translating() -> [Follower; 3] {
             offset: -0.4,
             roller_radius: 1.0,
         },
+        // a point carried by a general slide, ahead of its frame's origin and to the left
+        Follower::Translating {
+            direction: Vec2::new(0.6, -0.8),
+            offset: 0.2,
+            profile: point(-0.7, 0.3),
+        },
     ]
+}
+
+fn point(x: f64, y: f64) -> FollowerProfile {
+    FollowerProfile(Arc::new(camkin::curve::PointCurve::new(Point2::new(x, y)).unwrap()))
 }
 
 /// Oscillating followers closing clockwise from above the cam, and their mirror images closing
 /// counter-clockwise from below (another branch: the arm near +30° instead of −30°).
-fn oscillating() -> [Follower; 4] {
+fn oscillating() -> [Follower; 6] {
     [
         Follower::OscillatingRoller {
             pivot: Point2::new(-3.0, 7.0),
@@ -76,6 +86,19 @@ fn oscillating() -> [Follower; 4] {
             face_offset: -0.5,
             closing: Sense::Ccw,
             initial_angle: 30f64.to_radians(),
+        },
+        // a point carried by a general arm: an oscillating knife at a bent arm's end
+        Follower::Rotating {
+            pivot: Point2::new(-3.0, 7.0),
+            closing: Sense::Cw,
+            initial_angle: (-30f64).to_radians(),
+            profile: point(8.6, -1.5),
+        },
+        Follower::Rotating {
+            pivot: Point2::new(-3.0, -7.0),
+            closing: Sense::Ccw,
+            initial_angle: 30f64.to_radians(),
+            profile: point(8.6, 1.5),
         },
     ]
 }

@@ -6,15 +6,19 @@
 use super::{along_interval, polar_interval, ROUNDING};
 use crate::body::WorldDerivs;
 use crate::cam::pose::Pose;
-use crate::geometry::{rot90, Point2, Vec2};
+use crate::geometry::{rot90, Point2, Rotation, Vec2};
 
-/// The path of a follower's reference point (knife tip, roller centre).
+/// The path of a follower's reference point (knife tip, roller centre). Its coordinate (the
+/// length along the line from the cam's axis, or the polar angle about the pivot) is the
+/// follower's position `q` plus `lead`: 0 for the named kinds, whose reference point is on the
+/// frame's axis; a carried point's place ahead of its frame's origin on a slide, or its polar
+/// angle in the arm's frame.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum CentrePath {
-    /// the line `cam axis + e·p + q·d` of a translating follower (`p = rot90(d)`)
-    Line { d: Vec2, p: Vec2, e: f64 },
-    /// the circle of radius `l` about an arm's pivot `o` (world)
-    Circle { o: Point2, l: f64 },
+    /// the line `cam axis + e·p + (q + lead)·d` of a translating follower (`p = rot90(d)`)
+    Line { d: Vec2, p: Vec2, e: f64, lead: f64 },
+    /// the circle of radius `l` about an arm's pivot `o` (world), at polar angle `q + lead`
+    Circle { o: Point2, l: f64, lead: f64 },
 }
 
 impl CentrePath {
@@ -22,12 +26,12 @@ impl CentrePath {
     /// arm angle) of every point within `r` of `c` that lies on the path; `None` when none does.
     pub(crate) fn interval(&self, cam_pivot: Point2, c: Point2, r: f64) -> Option<(f64, f64)> {
         match *self {
-            CentrePath::Line { d, p, e } => {
+            CentrePath::Line { d, p, e, .. } => {
                 let (along, half) = along_interval(cam_pivot, d, c, r);
                 let lateral = (c - cam_pivot).dot(&p) - e;
                 (lateral.abs() <= half).then_some((along, half))
             }
-            CentrePath::Circle { o, l } => {
+            CentrePath::Circle { o, l, .. } => {
                 let rho = (c - o).norm();
                 ((rho - l).abs() <= r + ROUNDING * (rho + r)).then(|| polar_interval(o, c, r))
             }
@@ -72,7 +76,7 @@ impl CentrePath {
     pub(crate) fn residual(&self, cam_pivot: Point2, c: Point2) -> (f64, Vec2) {
         match *self {
             CentrePath::Line { p, e, .. } => ((c - cam_pivot).dot(&p) - e, p),
-            CentrePath::Circle { o, l } => {
+            CentrePath::Circle { o, l, .. } => {
                 let y = c - o;
                 (0.5 * (y.norm_squared() - l * l), y)
             }
@@ -89,14 +93,42 @@ impl CentrePath {
         }
     }
 
-    /// The path coordinate of the point `c` on the path (its length along the line from the
-    /// cam's axis, or its arm angle with sine and cosine, followed from `near`: see
-    /// [`Pose::toward`]).
+    /// The path coordinate less its lead at the point `c` on the path: the follower's position
+    /// (a length along the line from the cam's axis; an arm angle with its sine and cosine,
+    /// followed from `near`: see [`Pose::toward`]).
     #[inline(always)]
     pub(crate) fn pose(&self, cam_pivot: Point2, c: Point2, near: Pose) -> Pose {
         match *self {
-            CentrePath::Line { d, .. } => Pose::length((c - cam_pivot).dot(&d)),
-            CentrePath::Circle { o, .. } => near.toward(c - o),
+            CentrePath::Line { d, lead, .. } => Pose::length((c - cam_pivot).dot(&d) - lead),
+            CentrePath::Circle { o, lead, .. } => {
+                let y = c - o;
+                if lead == 0.0 {
+                    near.toward(y)
+                } else {
+                    near.toward(Rotation::new(-lead) * y)
+                }
+            }
+        }
+    }
+
+    /// The path coordinate less its lead (see [`CentrePath::pose`]): a length, or an angle
+    /// anywhere.
+    #[inline]
+    pub(crate) fn coordinate(&self, cam_pivot: Point2, c: Point2) -> f64 {
+        match *self {
+            CentrePath::Line { d, lead, .. } => (c - cam_pivot).dot(&d) - lead,
+            CentrePath::Circle { o, lead, .. } => {
+                let y = c - o;
+                y.y.atan2(y.x) - lead
+            }
+        }
+    }
+
+    /// The path's lead: its coordinate less the follower's position.
+    #[inline]
+    pub(crate) fn lead(&self) -> f64 {
+        match *self {
+            CentrePath::Line { lead, .. } | CentrePath::Circle { lead, .. } => lead,
         }
     }
 }
@@ -162,10 +194,12 @@ mod tests {
             d,
             p: rot90(d),
             e: 0.3,
+            lead: 0.0,
         };
         let circle = CentrePath::Circle {
             o: Point2::new(-3.0, 4.0),
             l: 6.0,
+            lead: 0.0,
         };
         let on_line = pivot + 0.3 * rot90(d) + 2.5 * d;
         let on_circle = Point2::new(-3.0, 4.0) + 6.0 * Vec2::new(0.4f64.cos(), 0.4f64.sin());

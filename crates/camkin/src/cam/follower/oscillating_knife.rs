@@ -16,6 +16,7 @@ use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, PointCurve};
 use crate::field::{Field, FollowerField, ProfileField};
+use crate::human::human;
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -176,7 +177,14 @@ impl Kind for OscillatingKnife {
         -self.closing * rot90(self.t(q))
     }
     fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
-        Some((super::CentrePath::Circle { o: self.o, l: self.l }, 0.0))
+        Some((
+            super::CentrePath::Circle {
+                o: self.o,
+                l: self.l,
+                lead: self.beta,
+            },
+            0.0,
+        ))
     }
     fn check_reach(&self, size: f64) -> Result<(), CamError> {
         let d = (self.o - self.cam_pivot).norm();
@@ -185,8 +193,10 @@ impl Kind for OscillatingKnife {
                 field: Field::FollowerProfile(ProfileField::At),
                 value: self.l,
                 reason: format!(
-                    "the point cannot reach the cam: it stays {} from the cam axis, the cam reaches {size}",
-                    (d - self.l).abs()
+                    "the point, {} from the pivot, stays {} from the cam axis; the cam reaches {}",
+                    human(self.l),
+                    human((d - self.l).abs()),
+                    human(size)
                 ),
             });
         }

@@ -10,6 +10,7 @@ use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
+use crate::human::human;
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -119,6 +120,7 @@ impl Kind for OscillatingRoller {
             super::CentrePath::Circle {
                 o: self.o,
                 l: self.l,
+                lead: 0.0,
             },
             self.r,
         ))
@@ -231,7 +233,12 @@ impl Kind for OscillatingRoller {
             return Err(CamError::Unreachable {
                 field: Field::Follower(FollowerField::ArmLength),
                 value: l,
-                reason: format!("the roller cannot reach the cam: its centre stays {} from the cam axis, the cam reaches {size} and the roller radius is {r}", (d - l).abs()),
+                reason: format!(
+                    "the roller cannot reach the cam: its centre stays {} from the cam axis, the cam reaches {} and the roller radius is {}",
+                    human((d - l).abs()),
+                    human(size),
+                    human(r)
+                ),
             });
         }
         Ok(())

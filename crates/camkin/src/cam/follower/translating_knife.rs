@@ -12,6 +12,7 @@ use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, PointCurve};
 use crate::field::{Field, FollowerField};
+use crate::human::human;
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -111,6 +112,7 @@ impl Kind for TranslatingKnife {
                 d: self.d,
                 p: self.p,
                 e: self.tip_e,
+                lead: self.tip_a,
             },
             0.0,
         ))
@@ -120,7 +122,18 @@ impl Kind for TranslatingKnife {
             return Err(CamError::Unreachable {
                 field: Field::Follower(FollowerField::Offset),
                 value: self.e,
-                reason: format!("the knife edge's line of travel misses the cam, which reaches {size} from its axis"),
+                reason: if self.tip == Vec2::zeros() {
+                    format!(
+                        "the knife edge's line of travel misses the cam, which reaches {} from its axis",
+                        human(size)
+                    )
+                } else {
+                    format!(
+                        "the point's line of travel, {} from the cam axis, misses the cam, which reaches {}",
+                        human(self.tip_e.abs()),
+                        human(size)
+                    )
+                },
             });
         }
         Ok(())

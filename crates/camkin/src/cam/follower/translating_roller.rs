@@ -10,6 +10,7 @@ use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
+use crate::human::human;
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -102,6 +103,7 @@ impl Kind for TranslatingRoller {
                 d: self.d,
                 p: self.p,
                 e: self.e,
+                lead: 0.0,
             },
             self.r,
         ))
@@ -156,7 +158,9 @@ impl Kind for TranslatingRoller {
                 field: Field::Follower(FollowerField::Offset),
                 value: e,
                 reason: format!(
-                    "the roller (radius {r}) passes the cam, which reaches {size} from its axis"
+                    "the roller (radius {}) passes the cam, which reaches {} from its axis",
+                    human(r),
+                    human(size)
                 ),
             });
         }

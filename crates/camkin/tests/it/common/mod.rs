@@ -256,6 +256,14 @@ pub fn general_of(m: &Mechanism) -> Follower {
                 camkin::curve::Circle::new(Point2::origin(), roller_radius).unwrap(),
             )),
         },
+        // the tip: the point at the frame's origin
+        Follower::TranslatingKnife { direction, offset } => Follower::Translating {
+            direction,
+            offset,
+            profile: FollowerProfile(Arc::new(
+                camkin::curve::PointCurve::new(Point2::origin()).unwrap(),
+            )),
+        },
         Follower::OscillatingFlat {
             pivot,
             closing,
