@@ -285,7 +285,32 @@ fn follower_that_cannot_reach() {
         &[],
         &["follower.offset = -4", "passes the cam"],
     );
-    bad("arm too short", &format!("{CIRCLE}[follower]\nkind = \"oscillating-roller\"\npivot = [0, 10]\narm_length = 3\nroller_radius = 1\n"), &[], &["follower.arm_length = 3", "cannot reach"]);
+    bad("arm too short", &format!("{CIRCLE}[follower]\nkind = \"oscillating-roller\"\npivot = [0, 10]\narm_length = 3\nroller_radius = 1\n"), &[], &["follower.arm_length = 3", "cannot reach", "(lengths in mm)"]);
+    // a carried point: on an arm too short or too long, on the pivot, beside a slide's reach
+    let arm = |at: &str| {
+        format!("{CIRCLE}[follower]\nkind = \"rotating\"\npivot = [0, 10]\n[follower.profile]\nkind = \"point\"\nat = {at}\n")
+    };
+    bad("point short of the cam", &arm("[3, 0]"), &[], &["follower.profile.at = 3", "stays 7 from the cam axis; the cam reaches 2.5 (lengths in mm)"]);
+    bad("point beyond the cam", &arm("[0, -20]"), &[], &["follower.profile.at = 20", "stays 10 from"]);
+    bad("point on the pivot", &arm("[0, 0]"), &[], &["follower.profile.at = [0, 0]", "off its pivot"]);
+    bad(
+        "point beside the slide",
+        &format!("{CIRCLE}[follower]\nkind = \"translating\"\noffset = 1\n[follower.profile]\nkind = \"point\"\nat = [0, 2]\n"),
+        &[],
+        &["follower.offset = 1", "the point's line of travel, 3 from the cam axis, misses the cam, which reaches 2.5"],
+    );
+    bad(
+        "point as a cam",
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"point\"\n[follower]\nkind = \"translating-flat\"\n",
+        &[],
+        &["cam.profile.kind", "a point can only be carried by a follower"],
+    );
+    bad(
+        "point as a second curve",
+        &format!("{CIRCLE}[follower]\nkind = \"translating-knife\"\n[follower.conjugate]\nkind = \"point\"\nat = [-5, 0]\n"),
+        &[],
+        &["follower.conjugate.kind", "cannot be a follower's second curve"],
+    );
 }
 
 #[test]
