@@ -290,9 +290,27 @@ fn follower_that_cannot_reach() {
     let arm = |at: &str| {
         format!("{CIRCLE}[follower]\nkind = \"rotating\"\npivot = [0, 10]\n[follower.profile]\nkind = \"point\"\nat = {at}\n")
     };
-    bad("point short of the cam", &arm("[3, 0]"), &[], &["follower.profile.at = 3", "stays 7 from the cam axis; the cam reaches 2.5 (lengths in mm)"]);
-    bad("point beyond the cam", &arm("[0, -20]"), &[], &["follower.profile.at = 20", "stays 10 from"]);
-    bad("point on the pivot", &arm("[0, 0]"), &[], &["follower.profile.at = [0, 0]", "off its pivot"]);
+    bad(
+        "point short of the cam",
+        &arm("[3, 0]"),
+        &[],
+        &[
+            "follower.profile.at = 3",
+            "stays 7 from the cam axis; the cam reaches 2.5 (lengths in mm)",
+        ],
+    );
+    bad(
+        "point beyond the cam",
+        &arm("[0, -20]"),
+        &[],
+        &["follower.profile.at = 20", "stays 10 from"],
+    );
+    bad(
+        "point on the pivot",
+        &arm("[0, 0]"),
+        &[],
+        &["follower.profile.at = [0, 0]", "off its pivot"],
+    );
     bad(
         "point beside the slide",
         &format!("{CIRCLE}[follower]\nkind = \"translating\"\noffset = 1\n[follower.profile]\nkind = \"point\"\nat = [0, 2]\n"),

@@ -54,7 +54,9 @@ fn translating() -> [Follower; 4] {
 }
 
 fn point(x: f64, y: f64) -> FollowerProfile {
-    FollowerProfile(Arc::new(camkin::curve::PointCurve::new(Point2::new(x, y)).unwrap()))
+    FollowerProfile(Arc::new(
+        camkin::curve::PointCurve::new(Point2::new(x, y)).unwrap(),
+    ))
 }
 
 /// Oscillating followers closing clockwise from above the cam, and their mirror images closing

@@ -16,8 +16,8 @@ use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, PointCurve};
 use crate::field::{Field, FollowerField, ProfileField};
-use crate::human::human;
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
+use crate::human::human;
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingKnife {
@@ -227,7 +227,14 @@ impl Kind for OscillatingKnife {
     }
     fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         // the tip at φ + β, φ = φ0 + ρ s
-        let w = arm_path(self.o - self.cam_pivot, self.l, s, s0, -self.closing, self.beta);
+        let w = arm_path(
+            self.o - self.cam_pivot,
+            self.l,
+            s,
+            s0,
+            -self.closing,
+            self.beta,
+        );
         let y = rotated_derivs(sigma, rot, &w);
         Envelope::Derivs(Derivs {
             p: Point2::from(y[0]),

@@ -10,8 +10,8 @@ use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};
-use crate::human::human;
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
+use crate::human::human;
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingRoller {

@@ -12,8 +12,8 @@ use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, PointCurve};
 use crate::field::{Field, FollowerField};
-use crate::human::human;
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
+use crate::human::human;
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct TranslatingKnife {
@@ -160,7 +160,11 @@ impl Kind for TranslatingKnife {
         // the tip's path y = A ((e + b) p + (s + a) d)
         let mut s = *s;
         s[0] += self.tip_a;
-        let y = rotated_derivs(sigma, rot, &translating_path(self.d, self.p, self.tip_e, &s));
+        let y = rotated_derivs(
+            sigma,
+            rot,
+            &translating_path(self.d, self.p, self.tip_e, &s),
+        );
         Envelope::Derivs(Derivs {
             p: Point2::from(y[0]),
             d1: y[1],
