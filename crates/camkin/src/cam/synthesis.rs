@@ -50,6 +50,19 @@ pub(crate) enum Envelope {
     Offset([Vec2; 5], f64),
 }
 
+impl Envelope {
+    /// The profile traced by a point (a knife's tip, a flat face's touching point): its position
+    /// and first three derivatives in θ from `y` (value and four derivatives).
+    pub(crate) fn traced(y: &[Vec2; 5]) -> Self {
+        Envelope::Derivs(Derivs {
+            p: Point2::from(y[0]),
+            d1: y[1],
+            d2: y[2],
+            d3: y[3],
+        })
+    }
+}
+
 /// The profile that drives `follower` with the motion `program` above a base circle of radius
 /// `base_radius` (where the program is at 0), for a cam turning in `direction`; the program's
 /// rises are lengths for translating followers and radians of arm angle for oscillating ones.

@@ -14,7 +14,7 @@ use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
 use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
-use crate::curve::{Derivs, PointCurve};
+use crate::curve::PointCurve;
 use crate::field::{Field, FollowerField, ProfileField};
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
 use crate::human::human;
@@ -236,11 +236,6 @@ impl Kind for OscillatingKnife {
             self.beta,
         );
         let y = rotated_derivs(sigma, rot, &w);
-        Envelope::Derivs(Derivs {
-            p: Point2::from(y[0]),
-            d1: y[1],
-            d2: y[2],
-            d3: y[3],
-        })
+        Envelope::traced(&y)
     }
 }

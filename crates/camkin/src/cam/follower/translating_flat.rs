@@ -9,7 +9,7 @@ use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
 use crate::cam::synthesis::{rotated_derivs, Envelope};
 use crate::cam::CamError;
-use crate::curve::{Derivs, Line};
+use crate::curve::Line;
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
 
 #[derive(Debug, Clone, Copy)]
@@ -101,11 +101,6 @@ impl Kind for TranslatingFlat {
             Vec2::zeros(), // not needed: y''' uses w up to w'''
         ];
         let y = rotated_derivs(sigma, rot, &w);
-        Envelope::Derivs(Derivs {
-            p: Point2::from(y[0]),
-            d1: y[1],
-            d2: y[2],
-            d3: y[3],
-        })
+        Envelope::traced(&y)
     }
 }

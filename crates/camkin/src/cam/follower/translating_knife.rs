@@ -10,7 +10,7 @@ use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
 use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
-use crate::curve::{Derivs, PointCurve};
+use crate::curve::PointCurve;
 use crate::field::{Field, FollowerField};
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
 use crate::human::human;
@@ -165,11 +165,6 @@ impl Kind for TranslatingKnife {
             rot,
             &translating_path(self.d, self.p, self.tip_e, &s),
         );
-        Envelope::Derivs(Derivs {
-            p: Point2::from(y[0]),
-            d1: y[1],
-            d2: y[2],
-            d3: y[3],
-        })
+        Envelope::traced(&y)
     }
 }
