@@ -473,6 +473,43 @@ fn polar_interval(o: Point2, c: Point2, r: f64) -> (f64, f64) {
     (y.y.atan2(y.x), (r / rho).asin() + ROUNDING)
 }
 
+/// What every oscillating kind keeps of its arm: the pivot, the closing sense (and its sign), the
+/// initial angle, and the arm angle at which the first touch's branch is centred.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Arm {
+    /// the pivot `O`, world
+    pub(crate) o: Point2,
+    /// +1 when the load closes the arm counter-clockwise
+    pub(crate) closing: f64,
+    pub(crate) phi0: f64,
+    /// the arm angle that points the follower's reference at the cam's axis: the direction from
+    /// the pivot to the cam's axis less the reference's polar angle `lead` in the arm's frame, rad
+    pub(crate) toward_cam: f64,
+    pub(crate) sense: Sense,
+}
+
+impl Arm {
+    fn new(cam_pivot: Point2, o: Point2, closing: Sense, phi0: f64, lead: f64) -> Self {
+        Self {
+            o,
+            closing: closing.sign(),
+            phi0,
+            toward_cam: toward(cam_pivot, o) - lead,
+            sense: closing,
+        }
+    }
+
+    /// The arm's joint.
+    fn joint(&self) -> Joint {
+        Joint::Rotating {
+            pivot: self.o,
+            closing: self.sense,
+            initial_angle: self.phi0,
+            toward_cam: self.toward_cam,
+        }
+    }
+}
+
 /// The direction (rad) from an arm's pivot `o` to the cam's axis.
 fn toward(cam_pivot: Point2, o: Point2) -> f64 {
     let d = cam_pivot - o;

@@ -3,7 +3,7 @@
 //! `y = e` of the arm frame, oriented so that the cam lies on its right.
 
 use super::rates::{finite, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{scale, Jet, Num, V2};
 use crate::cam::pose::Pose;
@@ -16,26 +16,16 @@ use crate::geometry::{rot90, Point2, Rotation, Vec2};
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingFlat {
     pub(super) cam_pivot: Point2,
-    pub(super) o: Point2,
-    /// +1 when the spring closes the arm counter-clockwise
-    pub(super) closing: f64,
-    pub(super) phi0: f64,
-    /// direction from the pivot to the cam's axis, rad
-    pub(super) toward_cam: f64,
+    pub(super) arm: Arm,
     pub(super) e: f64,
-    pub(super) sense: Sense,
 }
 
 impl OscillatingFlat {
     pub(super) fn model(cam_pivot: Point2, o: Point2, e: f64, closing: Sense, phi0: f64) -> Model {
         Model::OscillatingFlat(Self {
             cam_pivot,
-            o,
-            closing: closing.sign(),
-            phi0,
-            toward_cam: toward(cam_pivot, o),
+            arm: Arm::new(cam_pivot, o, closing, phi0, 0.0),
             e,
-            sense: closing,
         })
     }
 }
@@ -44,7 +34,7 @@ impl OscillatingFlat {
     /// The tangency residual with the arm angle given by its sine and cosine `(s, c)`.
     #[inline(always)]
     fn residual_sc<T: Num>(&self, x: V2<T>, x1: V2<T>, (s, c): (T, T)) -> [T; 2] {
-        let y = x - V2::c(self.o.coords);
+        let y = x - V2::c(self.arm.o.coords);
         let n = V2::new(-s, c);
         [y.dot(n) - T::c(self.e), x1.dot(n)]
     }
@@ -52,23 +42,18 @@ impl OscillatingFlat {
 
 impl Kind for OscillatingFlat {
     fn joint(&self) -> Joint {
-        Joint::Rotating {
-            pivot: self.o,
-            closing: self.sense,
-            initial_angle: self.phi0,
-            toward_cam: self.toward_cam,
-        }
+        self.arm.joint()
     }
     fn curve(&self) -> super::FollowerCurve {
         // cw closing: the cam lies on the −n side of the face, the arm on the +n side
         super::FollowerCurve::Line(
-            Line::new(Point2::new(0.0, self.e), Vec2::new(-self.closing, 0.0))
+            Line::new(Point2::new(0.0, self.e), Vec2::new(-self.arm.closing, 0.0))
                 .expect("unit vector"),
         )
     }
     #[inline]
     fn score(&self, x: Point2) -> Option<(f64, f64)> {
-        let y = x - self.o;
+        let y = x - self.arm.o;
         let rho = y.norm();
         let psi = y.y.atan2(y.x);
         let e = self.e;
@@ -77,15 +62,15 @@ impl Kind for OscillatingFlat {
         }
         Some(arm_branch(
             psi - (e / rho).asin(),
-            self.toward_cam,
-            self.phi0,
-            self.closing,
+            self.arm.toward_cam,
+            self.arm.phi0,
+            self.arm.closing,
         ))
     }
     fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
         // φ = ψ − asin(e/ρ): ψ within the disc's polar interval, ρ within ρ(c) ± r and ≥ |e|
-        let (psi, dpsi) = super::polar_interval(self.o, c, r);
-        let rho = (c - self.o).norm();
+        let (psi, dpsi) = super::polar_interval(self.arm.o, c, r);
+        let rho = (c - self.arm.o).norm();
         let (lo, hi) = ((rho - r).max(self.e.abs()), rho + r);
         if hi < self.e.abs() {
             return None;
@@ -101,7 +86,7 @@ impl Kind for OscillatingFlat {
     fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
         // the face's direction (cos φ, sin φ) at the arm angles that touch the disc, where the
         // face reaches all of it (the score has no edge there)
-        if (c - self.o).norm() - r < self.e.abs() {
+        if (c - self.arm.o).norm() - r < self.e.abs() {
             return None;
         }
         self.score_interval(c, r)
@@ -120,7 +105,7 @@ impl Kind for OscillatingFlat {
         let (s, c) = (q.sin, q.cos);
         let u = Vec2::new(c, s);
         let n = Vec2::new(-s, c);
-        let y = e.p - self.o;
+        let y = e.p - self.arm.o;
         [[e.d1.dot(&n), -y.dot(&u)], [e.d2.dot(&n), -e.d1.dot(&u)]]
     }
     /// Cramer's rule without the general solve's row scaling: the residual and the Jacobian's
@@ -142,7 +127,7 @@ impl Kind for OscillatingFlat {
     fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
         let (s, co) = (q.sin, q.cos);
         let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
-        let z = c.x - self.o;
+        let z = c.x - self.arm.o;
         let zt = z.dot(&t);
         if !(zt * zt > refuse.lock * refuse.lock * z.norm_squared()) {
             return None;
@@ -159,26 +144,26 @@ impl Kind for OscillatingFlat {
     fn toward_follower(&self, _c: Point2, q: &Pose) -> Vec2 {
         let (s, co) = (q.sin, q.cos);
         // cw closing (sign −1): the cam is on the −n side, the arm on the +n side
-        -self.closing * Vec2::new(-s, co)
+        -self.arm.closing * Vec2::new(-s, co)
     }
     fn concave_limit(&self) -> Option<f64> {
         Some(0.0)
     }
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         // the pivot from the cam's axis (the profile is in the cam's frame, centred there)
-        let o = self.o - self.cam_pivot;
+        let o = self.arm.o - self.cam_pivot;
         let face_offset = self.e;
         // the face at signed distance h0 = −closing·R_b from the axis: e + O·n(φ0) = h0,
         // n = (−sin φ, cos φ)
-        let h0 = -self.closing * base_radius;
+        let h0 = -self.arm.closing * base_radius;
         // the face touches on the arm's side of the pivot: the foot of the perpendicular from
         // the cam's axis, h0·n, lies ahead of the pivot along the arm, (h0 n − O)·u = −O·u > 0
         first_touch_root(
             [o.y, -o.x, h0 - face_offset],
             |phi: f64| o.x * phi.cos() + o.y * phi.sin() < 0.0,
-            self.toward_cam,
-            self.phi0,
-            self.closing,
+            self.arm.toward_cam,
+            self.arm.phi0,
+            self.arm.closing,
         )
         .ok_or(CamError::Invalid {
             field: Field::Follower(FollowerField::Offset),
@@ -189,7 +174,12 @@ impl Kind for OscillatingFlat {
     fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, _rot: &Rotation) -> Envelope {
         // the face in the cam frame: y·N(α) = h, α = φ − σθ, h = e + O·n(φ); envelope
         // y = h N − (h'/α') T with N = (−sin α, cos α), T = (cos α, sin α)
-        let (o, e, rho, sg) = (self.o - self.cam_pivot, self.e, -self.closing, sigma);
+        let (o, e, rho, sg) = (
+            self.arm.o - self.cam_pivot,
+            self.e,
+            -self.arm.closing,
+            sigma,
+        );
         let f = [
             s0 + rho * (s[0] - s0),
             rho * s[1],

@@ -8,7 +8,7 @@
 //! (its circle is the path [`super::CentrePath::Circle`] at distance 0).
 
 use super::rates::{finite, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
@@ -22,12 +22,7 @@ use crate::human::human;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingKnife {
     pub(super) cam_pivot: Point2,
-    pub(super) o: Point2,
-    /// +1 when the load closes the arm counter-clockwise
-    pub(super) closing: f64,
-    pub(super) phi0: f64,
-    /// the arm angle at which the tip points at the cam's axis, rad
-    pub(super) toward_cam: f64,
+    pub(super) arm: Arm,
     /// the tip in the arm frame, its distance `L` from the pivot and its polar angle `β`
     pub(super) tip: Vec2,
     pub(super) l: f64,
@@ -35,7 +30,6 @@ pub(crate) struct OscillatingKnife {
     /// `(cos β, sin β)`
     pub(super) cb: f64,
     pub(super) sb: f64,
-    pub(super) sense: Sense,
 }
 
 impl OscillatingKnife {
@@ -60,16 +54,12 @@ impl OscillatingKnife {
         let beta = tip.y.atan2(tip.x);
         Ok(Model::OscillatingKnife(Self {
             cam_pivot,
-            o,
-            closing: closing.sign(),
-            phi0,
-            toward_cam: toward(cam_pivot, o) - beta,
+            arm: Arm::new(cam_pivot, o, closing, phi0, beta),
             tip,
             l,
             beta,
             cb: tip.x / l,
             sb: tip.y / l,
-            sense: closing,
         }))
     }
 
@@ -89,7 +79,7 @@ impl OscillatingKnife {
 
     #[inline(always)]
     fn residual_sc<T: Num>(&self, x: V2<T>, sc: (T, T)) -> [T; 2] {
-        let y = x - V2::c(self.o.coords);
+        let y = x - V2::c(self.arm.o.coords);
         let t = self.t_of(sc);
         let n = V2::new(T::c(0.0) - t.y, t.x);
         [y.dot(n), y.dot(t) - T::c(self.l)]
@@ -98,12 +88,7 @@ impl OscillatingKnife {
 
 impl Kind for OscillatingKnife {
     fn joint(&self) -> Joint {
-        Joint::Rotating {
-            pivot: self.o,
-            closing: self.sense,
-            initial_angle: self.phi0,
-            toward_cam: self.toward_cam,
-        }
+        self.arm.joint()
     }
     fn curve(&self) -> super::FollowerCurve {
         super::FollowerCurve::Point(PointCurve::new(Point2::from(self.tip)).expect("finite"))
@@ -112,24 +97,24 @@ impl Kind for OscillatingKnife {
     /// `β`), as the translating knife's score is the along-travel coordinate of any point.
     #[inline]
     fn score(&self, x: Point2) -> Option<(f64, f64)> {
-        let y = x - self.o;
+        let y = x - self.arm.o;
         if y == Vec2::zeros() {
             return None;
         }
         Some(arm_branch(
             y.y.atan2(y.x) - self.beta,
-            self.toward_cam,
-            self.phi0,
-            self.closing,
+            self.arm.toward_cam,
+            self.arm.phi0,
+            self.arm.closing,
         ))
     }
     fn score_interval(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
-        let (mid, half) = super::polar_interval(self.o, c, r);
+        let (mid, half) = super::polar_interval(self.arm.o, c, r);
         Some((mid - self.beta, half))
     }
     fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
         // the polar angle about the pivot is stationary where the curve runs radially
-        let y = c - self.o;
+        let y = c - self.arm.o;
         let rho = y.norm();
         (rho > r * (1.0 + super::ROUNDING))
             .then(|| (y.y.atan2(y.x), (r / rho).asin() + super::ROUNDING))
@@ -148,7 +133,7 @@ impl Kind for OscillatingKnife {
     fn jacobian(&self, e: &WorldDerivs, q: &Pose) -> [[f64; 2]; 2] {
         let t = self.t(q);
         let n = rot90(t);
-        let y = e.p - self.o;
+        let y = e.p - self.arm.o;
         [[e.d1.dot(&n), -y.dot(&t)], [e.d1.dot(&t), y.dot(&n)]]
     }
     /// The contact point `x` is the tip: `ẋ = ω J y + u̇ x' = L φ̇ n`, so (its part along `t`)
@@ -174,12 +159,12 @@ impl Kind for OscillatingKnife {
     /// The tip comes from behind its motion in the closing sense.
     #[inline]
     fn toward_follower(&self, _c: Point2, q: &Pose) -> Vec2 {
-        -self.closing * rot90(self.t(q))
+        -self.arm.closing * rot90(self.t(q))
     }
     fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
         Some((
             super::CentrePath::Circle {
-                o: self.o,
+                o: self.arm.o,
                 l: self.l,
                 lead: self.beta,
             },
@@ -187,7 +172,7 @@ impl Kind for OscillatingKnife {
         ))
     }
     fn check_reach(&self, size: f64) -> Result<(), CamError> {
-        let d = (self.o - self.cam_pivot).norm();
+        let d = (self.arm.o - self.cam_pivot).norm();
         if (d - self.l).abs() >= size {
             return Err(CamError::Unreachable {
                 field: Field::FollowerProfile(ProfileField::At),
@@ -208,16 +193,16 @@ impl Kind for OscillatingKnife {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         // |O + L t(φ + β)| = R_b (the pivot from the cam's axis): O·t(φ + β) = K, i.e.
         // (O·t(β)) cos φ + (O·n(β)) sin φ = K
-        let o = self.o - self.cam_pivot;
+        let o = self.arm.o - self.cam_pivot;
         let l = self.l;
         let k = (base_radius * base_radius - o.norm_squared() - l * l) / (2.0 * l);
         let (tb, nb) = (Vec2::new(self.cb, self.sb), Vec2::new(-self.sb, self.cb));
         first_touch_root(
             [o.dot(&tb), o.dot(&nb), k],
             |_| true,
-            self.toward_cam,
-            self.phi0,
-            self.closing,
+            self.arm.toward_cam,
+            self.arm.phi0,
+            self.arm.closing,
         )
         .ok_or(CamError::Invalid {
             field: Field::Follower(FollowerField::Pivot),
@@ -228,11 +213,11 @@ impl Kind for OscillatingKnife {
     fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         // the tip at φ + β, φ = φ0 + ρ s
         let w = arm_path(
-            self.o - self.cam_pivot,
+            self.arm.o - self.cam_pivot,
             self.l,
             s,
             s0,
-            -self.closing,
+            -self.arm.closing,
             self.beta,
         );
         let y = rotated_derivs(sigma, rot, &w);

@@ -2,7 +2,7 @@
 //! radius `r` about `(L, 0)` in the arm frame.
 
 use super::rates::{finite, roller_denominator, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, toward, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
@@ -16,15 +16,9 @@ use crate::human::human;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingRoller {
     pub(super) cam_pivot: Point2,
-    pub(super) o: Point2,
-    /// +1 when the spring closes the arm counter-clockwise
-    pub(super) closing: f64,
-    pub(super) phi0: f64,
-    /// direction from the pivot to the cam's axis, rad
-    pub(super) toward_cam: f64,
+    pub(super) arm: Arm,
     pub(super) l: f64,
     pub(super) r: f64,
-    pub(super) sense: Sense,
 }
 
 impl OscillatingRoller {
@@ -38,13 +32,9 @@ impl OscillatingRoller {
     ) -> Model {
         Model::OscillatingRoller(Self {
             cam_pivot,
-            o,
-            closing: closing.sign(),
-            phi0,
-            toward_cam: toward(cam_pivot, o),
+            arm: Arm::new(cam_pivot, o, closing, phi0, 0.0),
             l,
             r,
-            sense: closing,
         })
     }
 }
@@ -53,7 +43,7 @@ impl OscillatingRoller {
     /// The tangency residual with the arm angle given by its sine and cosine `(s, c)`.
     #[inline(always)]
     fn residual_sc<T: Num>(&self, x: V2<T>, x1: V2<T>, (s, c): (T, T)) -> [T; 2] {
-        let y = x - V2::c(self.o.coords);
+        let y = x - V2::c(self.arm.o.coords);
         let m = y - V2::new(c, s).scale(T::c(self.l));
         [T::c(0.5) * (m.dot(m) - T::c(self.r * self.r)), x1.dot(m)]
     }
@@ -61,12 +51,7 @@ impl OscillatingRoller {
 
 impl Kind for OscillatingRoller {
     fn joint(&self) -> Joint {
-        Joint::Rotating {
-            pivot: self.o,
-            closing: self.sense,
-            initial_angle: self.phi0,
-            toward_cam: self.toward_cam,
-        }
+        self.arm.joint()
     }
     fn curve(&self) -> super::FollowerCurve {
         super::FollowerCurve::Circle(
@@ -75,7 +60,7 @@ impl Kind for OscillatingRoller {
     }
     #[inline]
     fn score(&self, x: Point2) -> Option<(f64, f64)> {
-        let y = x - self.o;
+        let y = x - self.arm.o;
         let rho = y.norm();
         let psi = y.y.atan2(y.x);
         let (l, r) = (self.l, self.r);
@@ -94,10 +79,10 @@ impl Kind for OscillatingRoller {
         let beta = 2.0 * (num / den).sqrt().atan();
         // cw closing (arm comes down): largest φ whose roller holds x
         Some(arm_branch(
-            psi - self.closing * beta,
-            self.toward_cam,
-            self.phi0,
-            self.closing,
+            psi - self.arm.closing * beta,
+            self.arm.toward_cam,
+            self.arm.phi0,
+            self.arm.closing,
         ))
     }
     /// At a tangency the roller's boundary passes through `x` at the arm angles `ψ ∓ closing·β`
@@ -108,17 +93,17 @@ impl Kind for OscillatingRoller {
     /// reported branch (within ±180° of the initial angle). No `atan2` and no wrapping.
     #[inline(always)]
     fn is_first_through(&self, x: Point2, q: &Pose, slack: f64) -> bool {
-        let y = x - self.o;
+        let y = x - self.arm.o;
         let (s, c) = (q.sin, q.cos);
-        let (ahead, rho) = (self.closing * (c * y.y - s * y.x), y.norm());
+        let (ahead, rho) = (self.arm.closing * (c * y.y - s * y.x), y.norm());
         rho > 0.0
             && ahead >= -slack * rho
-            && (q.q - self.phi0).abs() <= std::f64::consts::PI + slack
+            && (q.q - self.arm.phi0).abs() <= std::f64::consts::PI + slack
     }
     fn centre_path(&self) -> Option<(super::CentrePath, f64)> {
         Some((
             super::CentrePath::Circle {
-                o: self.o,
+                o: self.arm.o,
                 l: self.l,
                 lead: 0.0,
             },
@@ -130,9 +115,9 @@ impl Kind for OscillatingRoller {
         // between the point and the roller's centre) over the ρ the roller reaches
         // (|ρ − L| ≤ R) within ρ(c) ± r: β(ρ) rises to its peak at √(L² − R²) and falls, so
         // its least value is at an end and its greatest at the ρ nearest the peak
-        let (psi, dpsi) = super::polar_interval(self.o, c, r);
+        let (psi, dpsi) = super::polar_interval(self.arm.o, c, r);
         let (l, rr) = (self.l, self.r);
-        let rho = (c - self.o).norm();
+        let rho = (c - self.arm.o).norm();
         let (lo, hi) = ((rho - r).max(l - rr), (rho + r).min(l + rr));
         if lo > hi {
             return None;
@@ -150,20 +135,20 @@ impl Kind for OscillatingRoller {
         let top = beta((l * l - rr * rr).sqrt().clamp(lo, hi));
         let least = beta(lo).min(beta(hi));
         Some((
-            psi - self.closing * 0.5 * (top + least),
+            psi - self.arm.closing * 0.5 * (top + least),
             dpsi + 0.5 * (top - least) + super::ROUNDING,
         ))
     }
     fn stationary_tangents(&self, c: Point2, r: f64) -> Option<(f64, f64)> {
         // the roller's tangent at the point it first touches: normal to x − C, C the roller's
         // centre, found at the disc's centre; over the disc x moves by r and C by L·Δφ
-        let rho = (c - self.o).norm();
+        let rho = (c - self.arm.o).norm();
         if !(rho - r > self.l - self.r && rho + r < self.l + self.r) {
             return None;
         }
         let (_, half) = self.score_interval(c, r)?;
         let (_, phi) = self.score(c)?;
-        let centre = self.o + self.l * Vec2::new(phi.cos(), phi.sin());
+        let centre = self.arm.o + self.l * Vec2::new(phi.cos(), phi.sin());
         let n = c - centre;
         let spread = (r + 2.0 * self.l * half) / self.r;
         (spread < 0.5).then(|| {
@@ -187,7 +172,7 @@ impl Kind for OscillatingRoller {
         let (s, c) = (q.sin, q.cos);
         let u = Vec2::new(c, s);
         let n = Vec2::new(-s, c);
-        let y = e.p - self.o;
+        let y = e.p - self.arm.o;
         let l = self.l;
         let m = y - l * u;
         let dm_dq = -l * n;
@@ -205,11 +190,11 @@ impl Kind for OscillatingRoller {
         let (s, co) = (q.sin, q.cos);
         let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
         let l = self.l;
-        let m = (c.x - self.o) - l * t;
+        let m = (c.x - self.arm.o) - l * t;
         // L m·n = m·J(x − O): the paper's lock test, squared
         let lmn = l * m.dot(&n);
         let reach = refuse.lock * self.r;
-        if !(lmn * lmn > reach * reach * (c.x - self.o).norm_squared()) {
+        if !(lmn * lmn > reach * reach * (c.x - self.arm.o).norm_squared()) {
             return None;
         }
         let den = roller_denominator(c, m, refuse)?;
@@ -224,11 +209,11 @@ impl Kind for OscillatingRoller {
     #[inline]
     fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2 {
         let (s, co) = (q.sin, q.cos);
-        (self.o + self.l * Vec2::new(co, s)) - c
+        (self.arm.o + self.l * Vec2::new(co, s)) - c
     }
     fn check_reach(&self, size: f64) -> Result<(), CamError> {
         let (l, r) = (self.l, self.r);
-        let d = (self.o - self.cam_pivot).norm();
+        let d = (self.arm.o - self.cam_pivot).norm();
         if (d - l).abs() >= size + r {
             return Err(CamError::Unreachable {
                 field: Field::Follower(FollowerField::ArmLength),
@@ -251,7 +236,7 @@ impl Kind for OscillatingRoller {
     }
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         // the pivot from the cam's axis (the profile is in the cam's frame, centred there)
-        let o = self.o - self.cam_pivot;
+        let o = self.arm.o - self.cam_pivot;
         let arm_length = self.l;
         let prime = base_radius + self.r;
         // |O + L u(φ0)| = R_b + r: O·u(φ0) = K
@@ -259,9 +244,9 @@ impl Kind for OscillatingRoller {
         first_touch_root(
             [o.x, o.y, k],
             |_| true,
-            self.toward_cam,
-            self.phi0,
-            self.closing,
+            self.arm.toward_cam,
+            self.arm.phi0,
+            self.arm.closing,
         )
         .ok_or(CamError::Invalid {
             field: Field::Follower(FollowerField::ArmLength),
@@ -271,7 +256,14 @@ impl Kind for OscillatingRoller {
     }
     fn envelope(&self, s: &[f64; 5], s0: f64, _u: f64, sigma: f64, rot: &Rotation) -> Envelope {
         // the roller's centre at φ = φ0 + ρ s
-        let w = arm_path(self.o - self.cam_pivot, self.l, s, s0, -self.closing, 0.0);
+        let w = arm_path(
+            self.arm.o - self.cam_pivot,
+            self.l,
+            s,
+            s0,
+            -self.arm.closing,
+            0.0,
+        );
         Envelope::Offset(rotated_derivs(sigma, rot, &w), self.r)
     }
 }
@@ -303,7 +295,7 @@ mod tests {
             };
             let slack = 1e-12;
             let gap = |x: Point2, phi: f64| {
-                let c = k.o + l * Vec2::new(phi.cos(), phi.sin());
+                let c = k.arm.o + l * Vec2::new(phi.cos(), phi.sin());
                 (x - c).norm_squared() - r * r
             };
             for i in 0..40 {
@@ -312,8 +304,8 @@ mod tests {
                     -1.0 + 0.9 * (f64::from(i) * 0.37).sin(),
                     0.95 * r * (f64::from(i) * 1.3).cos(),
                 );
-                let x = k.o + (l + d) * Vec2::new(a.cos(), a.sin());
-                let lo = k.phi0 - std::f64::consts::PI;
+                let x = k.arm.o + (l + d) * Vec2::new(a.cos(), a.sin());
+                let lo = k.arm.phi0 - std::f64::consts::PI;
                 for phi in
                     super::super::tests::crossings(|p| gap(x, p), lo, std::f64::consts::TAU, 20_000)
                 {
