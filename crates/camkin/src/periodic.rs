@@ -20,12 +20,19 @@ pub(crate) struct Knots {
     pub(crate) u: Vec<f64>,
     /// `Some(1/h)` when the knots are `i h` (segment lookup by multiplication).
     pub(crate) uniform: Option<f64>,
+    /// the period (the last knot) and the last segment's index, kept beside `u` so that a
+    /// lookup reads neither `u`'s length nor its last element (a warm step looks up twice)
+    period: f64,
+    last: usize,
 }
 
 impl Knots {
     pub(crate) fn uniform(n: usize, h: f64) -> Self {
+        let u: Vec<f64> = (0..=n).map(|i| i as f64 * h).collect();
         Self {
-            u: (0..=n).map(|i| i as f64 * h).collect(),
+            period: u[n],
+            last: n - 1,
+            u,
             uniform: Some(1.0 / h),
         }
     }
@@ -39,7 +46,12 @@ impl Knots {
             acc += hi;
             u.push(acc);
         }
-        Self { u, uniform: None }
+        Self {
+            period: acc,
+            last: h.len() - 1,
+            u,
+            uniform: None,
+        }
     }
 
     pub(crate) fn segments(&self) -> usize {
@@ -47,7 +59,7 @@ impl Knots {
     }
 
     pub(crate) fn period(&self) -> f64 {
-        self.u[self.segments()]
+        self.period
     }
 
     pub(crate) fn h(&self, i: usize) -> f64 {
@@ -64,8 +76,7 @@ impl Knots {
     /// The segment holding `u` and `u` taken modulo the period.
     #[inline(always)]
     pub(crate) fn segment_of(&self, u: f64) -> (usize, f64) {
-        let n = self.segments();
-        let p = self.period();
+        let p = self.period;
         let w = if (0.0..p).contains(&u) {
             u
         } else {
@@ -74,11 +85,11 @@ impl Knots {
         let i = match self.uniform {
             // through u32 (fewer instructions than a saturating cast to usize): the index
             // is below the segment count, far below 2³², and a NaN `u` gives 0
-            Some(inv_h) => (((w * inv_h) as u32) as usize).min(n - 1),
+            Some(inv_h) => (((w * inv_h) as u32) as usize).min(self.last),
             None => {
                 // last knot index ≤ w
                 let k = self.u.partition_point(|&k| k <= w);
-                k.saturating_sub(1).min(n - 1)
+                k.saturating_sub(1).min(self.last)
             }
         };
         (i, w)

@@ -9,7 +9,7 @@ use super::starts::Candidates;
 use super::{CamError, Mechanism, StopReason};
 use crate::body::{curve_in, CurveInFrame, WorldDerivs};
 use crate::curve::Curve;
-use crate::geometry::Frame;
+use crate::geometry::{Frame, Point2};
 
 /// A converged first touch: cam parameter and follower position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -203,11 +203,17 @@ impl Mechanism {
             lim,
             ..
         } = self.prepared;
-        let per_tol = inv_tol.max(q_over_tol * path.per_length());
+        // by comparisons, not `max`/`min` (their NaN handling costs instructions; neither value
+        // can be NaN here: `du` was checked finite, the path's scale is set up finite)
+        let along = q_over_tol * path.per_length();
+        let per_tol = if along > inv_tol { along } else { inv_tol };
+        // in the cam's frame: the path turned once, not the curve's three derivatives each
+        // iteration (the pitch point's offset and stretch do not depend on the frame)
+        let body = path.in_body(self.cam.pivot, frame);
         for _ in 0..self.options.max_iterations {
-            let e = curve_in(frame, profile, u);
-            let (c, stretch) = pitch_point(&e, r, self.orientation);
-            let (f, g) = path.residual(self.cam.pivot, c);
+            let e = profile.eval(u);
+            let (c, stretch) = pitch_point((e.p, e.d1, e.d2), r, self.orientation);
+            let (f, g) = body.residual(Point2::origin(), c);
             let du = -f / (stretch * g.dot(&e.d1));
             if !du.is_finite() {
                 return Err(CamError::NoConvergence {
@@ -215,7 +221,13 @@ impl Mechanism {
                     reason: StopReason::SingularJacobian,
                 });
             }
-            let du = du.max(-lim).min(lim);
+            let du = if du > lim {
+                lim
+            } else if du < -lim {
+                -lim
+            } else {
+                du
+            };
             u += du;
             let s = du * stretch * per_tol;
             if self.prepared.accepts(s * s * e.d1.norm_squared()) {

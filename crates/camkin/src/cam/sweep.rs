@@ -118,8 +118,9 @@ impl<'a> Sweep<'a> {
     /// The follower's position, velocity and acceleration only at the next cam angle `theta`
     /// (rad): the fast path ([`Mechanism::motion`]).
     pub fn step_motion(&mut self, theta: f64) -> Result<Motion, CamError> {
+        // the last step by reference: copying it out costs a dozen instructions a step
         let fast = match self.prev {
-            Some(p) if self.mech.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
+            Some(ref p) if self.mech.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
                 let angle = self.mech.cam.direction.sign() * theta;
                 let turn = match self.turn {
                     Some(t) => t.angle_to(angle),
@@ -153,7 +154,7 @@ impl<'a> Sweep<'a> {
         &self,
         k: &K,
         theta: f64,
-        p: Prev,
+        p: &Prev,
         rotation: Rotation,
     ) -> Option<(Motion, Option<Pose>)> {
         if self.mech.geometry.carried.is_some() {
@@ -173,7 +174,7 @@ impl<'a> Sweep<'a> {
         k: &K,
         profile: &C,
         theta: f64,
-        p: Prev,
+        p: &Prev,
         rotation: Rotation,
     ) -> Option<(Motion, Option<Pose>)> {
         let m = self.mech;
@@ -189,7 +190,7 @@ impl<'a> Sweep<'a> {
                     Some(last) if K::ANGULAR => last,
                     _ => k.pose(q0),
                 };
-                let (centre, _) = pitch_point(&at, r, m.orientation);
+                let (centre, _) = pitch_point((at.p, at.d1, at.d2), r, m.orientation);
                 let pose = path.pose(m.cam.pivot, centre, near);
                 if !m.convex_warm_touch_with(k, &at, &pose) {
                     return None;

@@ -4,9 +4,8 @@
 //! crosses that path.
 
 use super::{along_interval, polar_interval, ROUNDING};
-use crate::body::WorldDerivs;
 use crate::cam::pose::Pose;
-use crate::geometry::{rot90, Point2, Rotation, Vec2};
+use crate::geometry::{rot90, Frame, Point2, Rotation, Vec2};
 
 /// The path of a follower's reference point (knife tip, roller centre). Its coordinate (the
 /// length along the line from the cam's axis, or the polar angle about the pivot) is the
@@ -57,14 +56,19 @@ impl CentrePath {
 /// A point of a profile's pitch curve, the outward offset `c = x + r n` of its point `x` by
 /// a roller's radius `r` (`n` the outward unit normal, `−orientation · J x'/|x'|`), and the
 /// ratio `1 + r κ` of `c' = (1 + r κ) x'`, where `κ = orientation · (x' × x'')/|x'|³` is the
-/// profile's curvature (positive where convex): the offset's tangent is the profile's.
+/// profile's curvature (positive where convex): the offset's tangent is the profile's. The
+/// point and its derivatives `(x, x', x'')` in any one frame (the world's, or the cam's own).
 #[inline(always)]
-pub(crate) fn pitch_point(e: &WorldDerivs, r: f64, orientation: f64) -> (Point2, f64) {
-    let s2 = e.d1.norm_squared();
+pub(crate) fn pitch_point(
+    (x, d1, d2): (Point2, Vec2, Vec2),
+    r: f64,
+    orientation: f64,
+) -> (Point2, f64) {
+    let s2 = d1.norm_squared();
     let inv = 1.0 / s2.sqrt();
     let ro = r * orientation;
-    let c = e.p - (ro * inv) * rot90(e.d1);
-    let cross = e.d1.x * e.d2.y - e.d1.y * e.d2.x;
+    let c = x - (ro * inv) * rot90(d1);
+    let cross = d1.x * d2.y - d1.y * d2.x;
     (c, 1.0 + ro * cross * inv / s2)
 }
 
@@ -85,6 +89,29 @@ impl CentrePath {
 
     /// How far the path coordinate moves per unit length the point moves along the path: 1
     /// along the line, `1/l` (rad) about the circle.
+    /// The same path seen from a body `frame` (world `= frame · body`), for body-frame points
+    /// measured from the frame's origin: [`CentrePath::residual`] of the result at a body point
+    /// with `cam_pivot` at the origin equals this path's at the point's world image (the
+    /// residual is a distance or a squared distance, unchanged by the frame's rotation). A
+    /// Newton iteration on a cam's curve can then skip rotating the curve's derivatives.
+    #[inline(always)]
+    pub(crate) fn in_body(&self, cam_pivot: Point2, frame: &Frame) -> Self {
+        let r = &frame.rotation;
+        match *self {
+            CentrePath::Line { d, p, e, lead } => CentrePath::Line {
+                d: r.inverse_transform_vector(&d),
+                p: r.inverse_transform_vector(&p),
+                e: e - (Point2::from(frame.translation.vector) - cam_pivot).dot(&p),
+                lead,
+            },
+            CentrePath::Circle { o, l, lead } => CentrePath::Circle {
+                o: frame.inverse_transform_point(&o),
+                l,
+                lead,
+            },
+        }
+    }
+
     #[inline(always)]
     pub(crate) fn per_length(&self) -> f64 {
         match *self {
@@ -136,6 +163,44 @@ impl CentrePath {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::body::WorldDerivs;
+
+    /// A path seen from a turned and moved body frame: its residual at a body point is the
+    /// world path's at the point's world image, the world image built by hand (cosine and sine
+    /// of the frame's angle, not the frame's own transform), for both kinds of path.
+    #[test]
+    fn path_in_a_body_frame_keeps_the_residual() {
+        let pivot = Point2::new(1.5, -0.5);
+        let paths = [
+            CentrePath::Line {
+                d: Vec2::new(0.6, 0.8),
+                p: Vec2::new(-0.8, 0.6),
+                e: 2.5,
+                lead: 0.3,
+            },
+            CentrePath::Circle {
+                o: Point2::new(-3.0, 4.0),
+                l: 2.0,
+                lead: 0.0,
+            },
+        ];
+        for path in paths {
+            for (angle, origin) in [(0.0, pivot), (2.1, pivot), (-0.7, Point2::new(0.4, 2.0))] {
+                let frame = Frame::new(origin.coords, angle);
+                let body = path.in_body(pivot, &frame);
+                let (s, c) = f64::sin_cos(angle);
+                for b in [Point2::new(0.3, -1.2), Point2::new(-4.0, 2.5)] {
+                    let w = Point2::new(origin.x + c * b.x - s * b.y, origin.y + s * b.x + c * b.y);
+                    let (fw, _) = path.residual(pivot, w);
+                    let (fb, _) = body.residual(Point2::origin(), b);
+                    assert!(
+                        (fw - fb).abs() <= 1e-14 * (1.0 + fw.abs()),
+                        "{path:?} {angle}: {fw} {fb}"
+                    );
+                }
+            }
+        }
+    }
 
     /// On an ellipse (counter-clockwise: orientation 1; clockwise: −1), the pitch point is the
     /// point pushed out along the tangent turned a quarter clockwise (anticlockwise), and its
@@ -154,18 +219,22 @@ mod tests {
                     d3: orientation * Vec2::new(a * s, -b * c),
                 }
             };
+            let jet = |u: f64| {
+                let e = at(u);
+                (e.p, e.d1, e.d2)
+            };
             for k in 0..12 {
                 let u = 0.1 + 0.5 * f64::from(k);
                 let e = at(u);
-                let (c, stretch) = pitch_point(&e, r, orientation);
+                let (c, stretch) = pitch_point((e.p, e.d1, e.d2), r, orientation);
                 let t = e.d1 / e.d1.norm();
                 let out = orientation * Vec2::new(t.y, -t.x);
                 assert!((c - (e.p + r * out)).norm() <= 1e-15 * 5.0, "{u}");
                 // outward: away from the ellipse's centre
                 assert!(out.dot(&e.p.coords) > 0.0);
                 let h = 1e-5;
-                let fd = (pitch_point(&at(u + h), r, orientation).0
-                    - pitch_point(&at(u - h), r, orientation).0)
+                let fd = (pitch_point(jet(u + h), r, orientation).0
+                    - pitch_point(jet(u - h), r, orientation).0)
                     / (2.0 * h);
                 assert!(
                     (fd - stretch * e.d1).norm() <= 1e-9 * e.d1.norm(),
@@ -179,7 +248,7 @@ mod tests {
             d2: Vec2::new(0.0, -2.0),
             d3: Vec2::new(2.0, 0.0),
         };
-        let (c, stretch) = pitch_point(&circle, 0.5, 1.0);
+        let (c, stretch) = pitch_point((circle.p, circle.d1, circle.d2), 0.5, 1.0);
         assert!((c - Point2::new(0.0, 2.5)).norm() <= 1e-15);
         assert!((stretch - 1.25).abs() <= 1e-15);
     }
