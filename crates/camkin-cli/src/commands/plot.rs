@@ -167,14 +167,14 @@ fn kinematics(
         log_y: false,
         x_range: Some((0.0, 360.0)),
     };
-    // the jerk jumps where the contact passes a node of a spline profile: break the line there
-    let bps = mech.cam().profile().breakpoints();
-    let piece = |s: &FollowerState| bps.partition_point(|&b| b <= s.cam_param);
+    // the jerk jumps where the contact passes a node of a spline profile (or of the follower's
+    // curve): break the line there
+    let pieces = Pieces::of(mech);
     let mut jerk = Vec::with_capacity(grid.len());
     for (k, (&a, s)) in grid.iter().zip(states).enumerate() {
         let prev = if k > 0 { states[k - 1].as_ref() } else { None };
         if let (Some(p), Some(c)) = (prev, s.as_ref()) {
-            if piece(p) != piece(c) {
+            if pieces.several() && pieces.at(p) != pieces.at(c) {
                 jerk.push((a, f64::NAN));
             }
         }
@@ -277,6 +277,37 @@ pub fn svaj_title(loaded: &Loaded, u: &Units) -> String {
     )
 }
 
+/// The breakpoints of the cam's profile and of the follower's curve (sorted): the jerk jumps
+/// where the contact passes from one piece of either to the next (the named kinds' curves have
+/// one piece).
+struct Pieces {
+    cam: Vec<f64>,
+    follower: Vec<f64>,
+}
+
+impl Pieces {
+    fn of(mech: &Mechanism) -> Self {
+        let mut follower = mech.follower_curve().to_arc().breakpoints();
+        follower.sort_by(f64::total_cmp);
+        Self {
+            cam: mech.cam().profile().breakpoints(),
+            follower,
+        }
+    }
+
+    fn several(&self) -> bool {
+        self.cam.len() > 1 || self.follower.len() > 1
+    }
+
+    /// The pieces of the two curves a contact is on.
+    fn at(&self, s: &FollowerState) -> (usize, usize) {
+        (
+            self.cam.partition_point(|&b| b <= s.cam_param),
+            self.follower.partition_point(|&b| b <= s.follower_param),
+        )
+    }
+}
+
 /// Where the motion is discontinuous on the grid: the contact jumps (position), the contact
 /// passes a node of the profile where the jerk jumps, or a motion program's junctions.
 fn marks(mech: &Mechanism, grid: &[f64], states: &[Option<FollowerState>]) -> Vec<svaj::Mark> {
@@ -301,8 +332,7 @@ fn marks(mech: &Mechanism, grid: &[f64], states: &[Option<FollowerState>]) -> Ve
         states.iter().map(|s| s.map(|s| s.acceleration)).collect(),
         states.iter().map(|s| s.and_then(|s| s.jerk)).collect(),
     ];
-    let bps = mech.cam().profile().breakpoints();
-    let piece = |s: &FollowerState| bps.partition_point(|&b| b <= s.cam_param);
+    let pieces = Pieces::of(mech);
     for k in 1..grid.len() {
         if jumps[k] {
             // the contact jumped: mark the lowest derivative of the motion that jumps with it (a
@@ -316,8 +346,12 @@ fn marks(mech: &Mechanism, grid: &[f64], states: &[Option<FollowerState>]) -> Ve
                 });
             }
         } else if let (Some(p), Some(c)) = (&states[k - 1], &states[k]) {
-            // (the jerk jumps at a node; a carried curve's jerk is not computed)
-            if piece(p) != piece(c) && bps.len() > 1 && p.jerk.is_some() && c.jerk.is_some() {
+            // the jerk jumps at a node of either curve
+            if pieces.several()
+                && pieces.at(p) != pieces.at(c)
+                && p.jerk.is_some()
+                && c.jerk.is_some()
+            {
                 out.push(svaj::Mark {
                     angle_deg: 0.5 * (grid[k - 1] + grid[k]),
                     order: 3,

@@ -341,6 +341,30 @@ impl Mechanism {
         (a, b, dq_x)
     }
 
+    /// The tangency conditions of the cam at `u` and the carried curve at `v` with the follower
+    /// at `q`, `F = (x_A(u) − x_B(v, q), x_A' × x_B')`, and their Jacobian in `(u, v, q)`; with
+    /// the two curves' points (world).
+    #[inline]
+    pub(super) fn carried_system(
+        &self,
+        c: &Carried,
+        frame: &Frame,
+        (u, v, q): (f64, f64, f64),
+    ) -> (WorldDerivs, WorldDerivs, [f64; 3], [[f64; 3]; 3]) {
+        let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
+        let dq_x1 = match self.geometry.joint {
+            super::Joint::Translating { .. } => Vec2::zeros(),
+            super::Joint::Rotating { .. } => rot90(b.d1),
+        };
+        let f = [a.p.x - b.p.x, a.p.y - b.p.y, cross(a.d1, b.d1)];
+        let j = [
+            [a.d1.x, -b.d1.x, -dq_x.x],
+            [a.d1.y, -b.d1.y, -dq_x.y],
+            [cross(a.d2, b.d1), cross(a.d1, b.d2), cross(a.d1, dq_x1)],
+        ];
+        (a, b, f, j)
+    }
+
     /// Newton on the tangency of the cam at `u` and the carried curve at `v` with the follower at
     /// `q`: `x_A(u) = x_B(v, q)` and `x_A' × x_B' = 0`.
     pub(crate) fn carried_newton(
@@ -355,17 +379,7 @@ impl Mechanism {
         let angle_deg = theta.to_degrees();
         let Limits { tol, qs, lim, vlim } = self.carried_limits(c);
         for _ in 0..self.options.max_iterations {
-            let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
-            let dq_x1 = match self.geometry.joint {
-                super::Joint::Translating { .. } => Vec2::zeros(),
-                super::Joint::Rotating { .. } => rot90(b.d1),
-            };
-            let f = [a.p.x - b.p.x, a.p.y - b.p.y, cross(a.d1, b.d1)];
-            let j = [
-                [a.d1.x, -b.d1.x, -dq_x.x],
-                [a.d1.y, -b.d1.y, -dq_x.y],
-                [cross(a.d2, b.d1), cross(a.d1, b.d2), cross(a.d1, dq_x1)],
-            ];
+            let (a, b, f, j) = self.carried_system(c, frame, (u, v, q));
             let Some([du, dv, dq]) = solve3(j, f) else {
                 return Err(CamError::NoConvergence {
                     angle_deg,
@@ -914,7 +928,7 @@ fn free_gap(covers: &[Cover], reference: f64, period: f64, periodic: bool) -> Op
 
 /// `J⁻¹ (−f)` for a 3×3 `J` (nalgebra's LU with partial pivoting), each equation first scaled by
 /// its largest coefficient (they mix lengths and lengths squared); `None` when singular.
-fn solve3(a: [[f64; 3]; 3], f: [f64; 3]) -> Option<[f64; 3]> {
+pub(super) fn solve3(a: [[f64; 3]; 3], f: [f64; 3]) -> Option<[f64; 3]> {
     let mut m = nalgebra::Matrix3::from_fn(|r, c| a[r][c]);
     let mut b = nalgebra::Vector3::new(-f[0], -f[1], -f[2]);
     for k in 0..3 {

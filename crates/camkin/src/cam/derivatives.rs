@@ -3,12 +3,42 @@
 //! cross-check of the method's velocity and acceleration that shares the search, the profile
 //! derivatives and the tangency residual with it (not an independent computation).
 
+use super::carried::solve3;
+use super::follower::carried::Carried;
 use super::follower::Kind as _;
 use super::jet::{scale, Jet, Num, V2};
 use super::search::solve2;
-use super::{CamError, Mechanism, StopReason, Touch};
+use super::{CamError, Joint, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
-use crate::geometry::{Rotation, Vec2};
+use crate::curve::Derivs;
+use crate::geometry::{Frame, Rotation};
+
+/// `c0 + c1 δ + c2 δ²/2 + c3 δ³/6` for a jet `δ` without constant term: a curve's coordinate
+/// (or its derivative's) along a parameter that moves by `δ`.
+fn taylor(dl: Jet, [c0, c1, c2, c3]: [f64; 4]) -> Jet {
+    let (d2, d3) = (dl * dl, dl * dl * dl);
+    Jet::c(c0) + scale(dl, c1) + scale(d2, c2 / 2.0) + scale(d3, c3 / 6.0)
+}
+
+/// A curve's point and tangent `(x, x')` (its own frame) as jets in a parameter moving by `dl`;
+/// the tangent without the fourth derivative (it does not reach `q`: see the `jet` module).
+fn curve_jets(r: &Derivs, dl: Jet) -> (V2<Jet>, V2<Jet>) {
+    (
+        V2::new(
+            taylor(dl, [r.p.x, r.d1.x, r.d2.x, r.d3.x]),
+            taylor(dl, [r.p.y, r.d1.y, r.d2.y, r.d3.y]),
+        ),
+        V2::new(
+            taylor(dl, [r.d1.x, r.d2.x, r.d3.x, 0.0]),
+            taylor(dl, [r.d1.y, r.d2.y, r.d3.y, 0.0]),
+        ),
+    )
+}
+
+/// `(cos, sin)` turning `v` (jets) by an angle given by its cosine and sine (jets).
+fn turned((c, s): (Jet, Jet), v: V2<Jet>) -> V2<Jet> {
+    V2::new(c * v.x - s * v.y, s * v.x + c * v.y)
+}
 
 impl Mechanism {
     /// `(dq/dθ, d²q/dθ², d³q/dθ³)` at cam angle `theta` (rad) by implicit differentiation of the
@@ -18,9 +48,28 @@ impl Mechanism {
     pub fn angle_derivatives(&self, theta: f64) -> Result<[f64; 3], CamError> {
         let cam = self.cam.state(theta);
         let touch = self.global_touch(theta, &cam.frame())?;
-        self.jet_derivatives(theta, &cam, touch)
+        match self.carried() {
+            Some(c) => self.carried_jet_derivatives(c, theta, &cam.frame(), touch),
+            None => self.jet_derivatives(theta, &cam, touch),
+        }
     }
 
+    /// The cam's point and tangent at `u + dl` (world) as jets in the cam angle `θ + ε`.
+    fn cam_jets(&self, r: &Derivs, theta: f64, dl: Jet) -> (V2<Jet>, V2<Jet>) {
+        let s = self.cam.direction.sign();
+        let rot0 = Rotation::new(s * theta);
+        // R(θ + ε) = R(θ) R(s ε) as jets: cos(sε) = 1 − ε²/2, sin(sε) = s ε − s ε³/6 (s = ±1)
+        let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
+        let (c0, s0) = (rot0.cos_angle(), rot0.sin_angle());
+        let rot = (scale(ce, c0) - scale(se, s0), scale(se, c0) + scale(ce, s0));
+        let (x, x1) = curve_jets(r, dl);
+        (
+            turned(rot, x) + V2::c(self.cam.pivot.coords),
+            turned(rot, x1),
+        )
+    }
+
+    /// [`Mechanism::angle_derivatives`] at a converged touch of a named follower kind.
     pub(crate) fn jet_derivatives(
         &self,
         theta: f64,
@@ -29,10 +78,6 @@ impl Mechanism {
     ) -> Result<[f64; 3], CamError> {
         let profile = self.cam.profile.as_ref();
         let r = profile.eval(touch.u);
-        let s = self.cam.direction.sign();
-        let rot0 = Rotation::new(s * theta);
-        // R(s ε) as jets: cos(sε) = 1 − ε²/2, sin(sε) = s ε − s ε³/6 (s = ±1)
-        let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
         let j = self.geometry.model.jacobian(
             &cam.eval_curve(profile, touch.u),
             &self.geometry.model.pose(touch.q),
@@ -45,32 +90,56 @@ impl Mechanism {
         }
         let mut u = [0.0; 4];
         let mut q = [touch.q, 0.0, 0.0, 0.0];
-        let world = |x: Jet, y: Jet, origin: Vec2| {
-            let (ax, ay) = (ce * x - se * y, se * x + ce * y);
-            V2::new(
-                Jet::c(origin.x) + scale(ax, rot0.cos_angle()) - scale(ay, rot0.sin_angle()),
-                Jet::c(origin.y) + scale(ax, rot0.sin_angle()) + scale(ay, rot0.cos_angle()),
-            )
-        };
         for k in 1..=3 {
-            let dl = Jet([0.0, u[1], u[2], u[3]]);
-            let (d2, d3) = (dl * dl, dl * dl * dl);
-            let taylor = |c0: f64, c1: f64, c2: f64, c3: f64| {
-                Jet::c(c0) + scale(dl, c1) + scale(d2, c2 / 2.0) + scale(d3, c3 / 6.0)
-            };
-            let x = world(
-                taylor(r.p.x, r.d1.x, r.d2.x, r.d3.x),
-                taylor(r.p.y, r.d1.y, r.d2.y, r.d3.y),
-                self.cam.pivot.coords,
-            );
-            // ∂x/∂u along the path; the fourth derivative is left out (it does not reach q, see jet.rs)
-            let x1 = world(
-                taylor(r.d1.x, r.d2.x, r.d3.x, 0.0),
-                taylor(r.d1.y, r.d2.y, r.d3.y, 0.0),
-                Vec2::zeros(),
-            );
+            let (x, x1) = self.cam_jets(&r, theta, Jet([0.0, u[1], u[2], u[3]]));
             let f = self.geometry.model.residual_value(x, x1, Jet(q));
             [u[k], q[k]] = solve2(&j, [f[0].0[k], f[1].0[k]]);
+        }
+        Ok([q[1], 2.0 * q[2], 6.0 * q[3]])
+    }
+
+    /// [`Mechanism::angle_derivatives`] at a converged tangency of the carried curve `c`: the
+    /// unknowns are the cam's parameter `u`, the carried curve's `v` and the position `q`, the
+    /// conditions those of Newton's (`x_A(u, θ) = x_B(v, q)`, `x_A' × x_B' = 0`). The curves'
+    /// fourth derivatives would enter the tangency row at order 3 only, and the `q`-row of `J⁻¹`
+    /// has a zero there (with the tangents parallel, the first two rows alone fix `q`, by their
+    /// component along the normal), so they are left out. `frame` is the cam's at `theta`.
+    pub(crate) fn carried_jet_derivatives(
+        &self,
+        c: &Carried,
+        theta: f64,
+        frame: &Frame,
+        touch: Touch,
+    ) -> Result<[f64; 3], CamError> {
+        let singular = || CamError::NoConvergence {
+            angle_deg: theta.to_degrees(),
+            reason: StopReason::SingularJacobian,
+        };
+        let (a, b) = (self.cam.profile.eval(touch.u), c.curve.eval(touch.v));
+        let (.., j) = self.carried_system(c, frame, (touch.u, touch.v, touch.q));
+        solve3(j, [1.0, 1.0, 1.0]).ok_or_else(singular)?;
+        let (mut u, mut v, mut q) = ([0.0; 4], [0.0; 4], [touch.q, 0.0, 0.0, 0.0]);
+        for k in 1..=3 {
+            let (xa, xa1) = self.cam_jets(&a, theta, Jet([0.0, u[1], u[2], u[3]]));
+            let (y, y1) = curve_jets(&b, Jet([0.0, v[1], v[2], v[3]]));
+            // the follower's frame at q: a slide's keeps its angle 0 (the curve was turned to
+            // the world's axes when it was carried), an arm's turns by q
+            let (xb, xb1) = match self.geometry.joint {
+                Joint::Translating { origin, direction } => (
+                    V2::c(origin.coords) + V2::c(*direction).scale(Jet(q)) + y,
+                    y1,
+                ),
+                Joint::Rotating { pivot, .. } => {
+                    let (sin, cos) = Jet(q).sin_cos();
+                    (
+                        turned((cos, sin), y) + V2::c(pivot.coords),
+                        turned((cos, sin), y1),
+                    )
+                }
+            };
+            let f = [xa.x - xb.x, xa.y - xb.y, xa1.x * xb1.y - xa1.y * xb1.x];
+            [u[k], v[k], q[k]] =
+                solve3(j, [f[0].0[k], f[1].0[k], f[2].0[k]]).ok_or_else(singular)?;
         }
         Ok([q[1], 2.0 * q[2], 6.0 * q[3]])
     }

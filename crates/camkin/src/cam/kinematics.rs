@@ -2,6 +2,7 @@
 //! constraint, the sliding rates (paper eqs. 5, 6), the normal accelerations (eqs. 1, 2) and the
 //! follower's acceleration from the acceleration constraint (eq. 11).
 
+use super::follower::carried::Carried;
 use super::follower::rates::CamPoint;
 use super::follower::{dispatch, Kind};
 use super::pose::Pose;
@@ -226,14 +227,18 @@ impl Mechanism {
         let body_b = g.joint.body(touch.q, qd, qdd);
         let kappa_conv = self.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
-        // a carried curve's jerk would need its fourth derivative: not computed
-        let jerk = if at_breakpoint || !self.options.jerk || g.carried.is_some() {
-            None
-        } else {
-            let dq = self.jet_derivatives(theta, cam, touch)?;
-            let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
-            Some(w * w * w * dq[2] + 3.0 * w * al * dq[1])
+        // none where a curve's third derivative jumps (a spline node, a piece joint of the
+        // carried curve) or the contact sits on a corner
+        let dq = match self.carried() {
+            _ if at_breakpoint || !self.options.jerk || touch.corner.is_some() => None,
+            Some(c) if self.carried_at_breakpoint(c, touch.v) => None,
+            Some(c) => Some(self.carried_jet_derivatives(c, theta, frame, touch)?),
+            None => Some(self.jet_derivatives(theta, cam, touch)?),
         };
+        let jerk = dq.map(|dq| {
+            let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
+            w * w * w * dq[2] + 3.0 * w * al * dq[1]
+        });
         Ok(FollowerState {
             cam_angle: theta,
             position: touch.q,
@@ -260,6 +265,22 @@ impl Mechanism {
     }
 
     /// True when `u` is within the breakpoint tolerance of a node of the profile.
+    /// Whether the carried curve's parameter `v` is on one of its breakpoints (within the
+    /// breakpoint tolerance of its parameter span).
+    fn carried_at_breakpoint(&self, c: &Carried, v: f64) -> bool {
+        let span = c.period.unwrap_or(c.bounds.1 - c.bounds.0);
+        let tol = self.options.breakpoint_tolerance * span;
+        let bp = &c.breakpoints;
+        let i = bp.partition_point(|&b| b <= v);
+        let near = |k: usize| bp.get(k).is_some_and(|&b| (b - v).abs() <= tol);
+        // a closed curve's parameter wraps: its first breakpoint is also at period + first
+        let wrapped = c.period.is_some_and(|p| {
+            bp.first().is_some_and(|&b| (b + p - v).abs() <= tol)
+                || bp.last().is_some_and(|&b| (v + p - b).abs() <= tol)
+        });
+        (i > 0 && near(i - 1)) || near(i) || wrapped
+    }
+
     fn at_breakpoint(&self, u: f64) -> bool {
         let bp = &self.breakpoints;
         if bp.is_empty() {

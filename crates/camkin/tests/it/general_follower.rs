@@ -95,6 +95,15 @@ fn named_kinds_through_the_general_path_agree() {
                 (x.contact_world - y.contact_world).norm() <= 1e-10 * scale,
                 "{what}: contact"
             );
+            // the jerk: the named kind's jets in (u, q) against the carried curve's in
+            // (u, v, q), two residuals; absent on the same spline nodes
+            match (x.jerk, y.jerk) {
+                (Some(j1), Some(j2)) => assert!(
+                    (j1 - j2).abs() <= 1e-8 * q_scale * w * w * w,
+                    "{what}: jerk {j1} vs {j2}"
+                ),
+                (j1, j2) => assert_eq!(j1.is_some(), j2.is_some(), "{what}: jerk {j1:?} vs {j2:?}"),
+            }
             // a cold query agrees with the sweep
             if i % 24 == 5 {
                 let cold = general.analyze(t).unwrap();
@@ -139,7 +148,7 @@ fn ideal_involute_pair_transmits_a_constant_ratio() {
     let a = 62.0;
     let alpha = 20f64.to_radians();
     let mut sweep = mech.sweep();
-    let mut jumps = Vec::new();
+    let (mut jumps, mut jerks) = (Vec::new(), 0);
     // three mesh cycles of gear 1 (18° each) at 0.1°
     for k in 0..=540 {
         let theta = f64::from(k) * 0.1f64.to_radians();
@@ -155,6 +164,11 @@ fn ideal_involute_pair_transmits_a_constant_ratio() {
             "{what}: acceleration {}",
             s.acceleration
         );
+        // and its jerk zero, except on a flank's piece joint, where it is not given
+        if let Some(j) = s.jerk {
+            assert!(j.abs() <= 1e-9 * ratio * w * w * w, "{what}: jerk {j}");
+            jerks += 1;
+        }
         // the driven angle follows −(z1/z2) θ exactly (no transmission error)
         assert!(
             (s.position - (phi0 - ratio * theta)).abs() <= 1e-12,
@@ -175,6 +189,7 @@ fn ideal_involute_pair_transmits_a_constant_ratio() {
             jumps.push(theta.to_degrees());
         }
     }
+    assert!(jerks >= 530, "the jerk given at {jerks} of 541 angles");
     // handovers once per tooth of gear 1
     assert!(jumps.len() >= 2, "handovers at {jumps:?}");
     for w in jumps.windows(2) {

@@ -123,6 +123,57 @@ fn jerk_agrees_with_differences_of_acceleration_for_every_follower() {
     }
 }
 
+/// A follower carrying a curve: its jerk (jets of the three tangency conditions in the cam's
+/// and the carried curve's parameters and the position) against 8th-order differences of the
+/// acceleration, which the paper's method computes (no jets): an ellipse on an arm and on a
+/// slide, a crowned (circular) face on a slide, on an ellipse cam and on the paper's spline cam.
+#[test]
+fn carried_curve_jerk_agrees_with_differences_of_acceleration() {
+    use camkin::cam::FollowerProfile;
+    use camkin::curve::{Circle, Ellipse};
+    use std::sync::Arc;
+    let egg = || Ellipse::new(Point2::new(0.0, 0.0), 1.5, 0.8, 0.3).unwrap();
+    let followers = [
+        Follower::Rotating {
+            pivot: Point2::new(2.0, 9.0),
+            closing: Sense::Cw,
+            initial_angle: -1.3,
+            profile: FollowerProfile(Arc::new(
+                Ellipse::new(Point2::new(6.0, 0.0), 1.5, 0.8, 0.3).unwrap(),
+            )),
+        },
+        Follower::Translating {
+            direction: Vec2::new(0.0, 1.0),
+            offset: 0.5,
+            profile: FollowerProfile(Arc::new(egg())),
+        },
+        Follower::Translating {
+            direction: Vec2::new(0.6, 0.8),
+            offset: -0.3,
+            profile: FollowerProfile(Arc::new(Circle::new(Point2::new(9.0, 0.0), 9.0).unwrap())),
+        },
+    ];
+    for f in followers {
+        let name = format!("{f:?}");
+        let m = mechanism(
+            ellipse(5.0, 3.5, Point2::new(0.4, 0.2), 0.3),
+            Point2::origin(),
+            Sense::Cw,
+            700.0,
+            f.clone(),
+        );
+        assert_eq!(check_jerk_by_differences(&m, &name, false), 60, "{name}");
+        let m = mechanism(
+            paper_profile(false),
+            Point2::origin(),
+            Sense::Ccw,
+            1000.0,
+            f,
+        );
+        assert!(check_jerk_by_differences(&m, &name, true) >= 30, "{name}");
+    }
+}
+
 #[test]
 fn jerk_is_absent_exactly_at_a_spline_node() {
     // θ = 0 on the paper cam: the contact is node 0, where the curvature has a corner

@@ -181,6 +181,9 @@ pub(crate) struct Carried {
     pub(crate) chord_error: f64,
     /// the curve's corners and the samples to measure a depth inside the follower from
     pub(crate) corners: crate::cam::corners::Corners,
+    /// the parameters where the curve's pieces meet (sorted): its third derivative, and with it
+    /// the follower's jerk, jumps there
+    pub(crate) breakpoints: Vec<f64>,
     /// the smallest and largest level of the polyline
     pub(crate) level_range: (f64, f64),
     /// for a curve of symmetry `z > 1` on an arm: `(2π/z, period/z)`, the turn and the shift of
@@ -333,7 +336,10 @@ impl Carried {
             }
         }
         let corners = crate::cam::corners::Corners::of(curve.as_ref(), &params);
+        let mut breakpoints = curve.breakpoints();
+        breakpoints.sort_by(f64::total_cmp);
         Ok(Self {
+            breakpoints,
             curve,
             track,
             period,
