@@ -124,8 +124,11 @@ struct Line {
     t1: Point2,
 }
 
-/// The transverse contact ratio of two external gears at centre distance `a` (the textbook
-/// formula; refused as in [`GearPair::new`]).
+/// The transverse contact ratio of two external gears at centre distance `a`: the path of
+/// contact over the base pitch. The textbook formula `(√(r_a1² − r_b1²) + √(r_a2² − r_b2²) −
+/// a sin α_w) / p_b`, except where a flank's involute starts above its base circle (its form
+/// circle: a gear of few teeth, undercut by the rack that cut it), which shortens the path
+/// (refused as in [`GearPair::new`]).
 pub fn contact_ratio(
     driver: &InvoluteGear,
     driven: &InvoluteGear,
@@ -134,9 +137,12 @@ pub fn contact_ratio(
     let (rb1, rb2) = (driver.base_radius(), driven.base_radius());
     check(driver, driven, centre_distance)?;
     let g = (centre_distance * centre_distance - (rb1 + rb2).powi(2)).sqrt();
-    let roll = |ra: f64, rb: f64| (ra * ra - rb * rb).sqrt();
+    let roll = |r: f64, rb: f64| (r * r - rb * rb).max(0.0).sqrt();
     let pb = TAU * rb1 / f64::from(driver.teeth());
-    Ok((roll(driver.tip_radius(), rb1) + roll(driven.tip_radius(), rb2) - g) / pb)
+    // the contact's roll length on the driver, from T₁: within both flanks' involutes
+    let end = roll(driver.tip_radius(), rb1).min(g - roll(driven.form_radius(), rb2));
+    let start = (g - roll(driven.tip_radius(), rb2)).max(roll(driver.form_radius(), rb1));
+    Ok((end - start) / pb)
 }
 
 fn check(driver: &InvoluteGear, driven: &InvoluteGear, a: f64) -> Result<(), GearError> {

@@ -13,17 +13,18 @@
 //! Each tooth is symmetric about its centre line; tooth `k` is centred at the frame angle
 //! `2πk/z` (tooth 0 on the +x axis); the gear centre is the frame origin. Going counter-clockwise
 //! (material on the left), one tooth is: the root circle from the middle of the space before it,
-//! the root fillet, the radial line from the fillet up to the base circle (where the involute is
-//! radial), the involute flank, the tip relief, the tip circle, then the same mirrored. The
+//! the root fillet, the involute flank, the tip relief, the tip circle, then the same mirrored. The
 //! parameter `u` is the arc length along each piece (of the unrelieved involute on a relieved
 //! stretch), so `|r'| = 1` except on the relief where it differs from 1 by about the relief's
 //! slope; `u = 0` is the middle of the space before tooth 0, at the angle `−π/z`; the period is
 //! `z` times one tooth's length.
 //!
-//! - **Root fillet**: a circular arc tangent to the root circle and to the radial line below the
-//!   base circle, of the radius given (0: a corner) — not the trochoid a rack cutter leaves, which
-//!   no contact between correct gears reaches. When the root circle is at or above the base circle
-//!   (many teeth) the involute meets the root circle at a corner and there is no fillet.
+//! - **Root fillet**: what a rack cutter leaves: the envelope of the generating rack's tooth-tip
+//!   round (radius: the fillet radius, by default `0.38 m` or the largest the rack's tip holds) as
+//!   the rack rolls on the pitch circle, in closed form (`trochoid.rs`). It is tangent to the root
+//!   circle and meets the involute with a common tangent, or, when the rack's flank reaches below
+//!   the interference point (`h > r sin² α`: few teeth, the textbook's undercut), crosses it at a
+//!   corner above the base circle, the involute below cut away.
 //! - **Tip relief**: material removed along the flank's normal near the tip, `C_a` at the tip,
 //!   growing from zero over a roll length `ℓ` (the length along the line of action) linearly or as
 //!   a parabola. On an involute a normal offset `δ` is a rotation by `δ/r_b` about the gear
@@ -31,13 +32,16 @@
 //! - **Backlash** is an allowance `j` (length on the pitch circle) by which this gear's teeth are
 //!   thinned; a pair's circumferential backlash is the sum of the two gears' allowances.
 //!
-//! Pieces meet with a continuous position (C⁰); the tangent turns at the corners (tip, and the
-//! root where there is no fillet) and the curvature jumps at every joint: all joints are
+//! Pieces meet with a continuous position (C⁰); the tangent turns at the corners (tip, an
+//! undercut flank's foot, the root when the rack's tip is sharp) and the curvature jumps at every joint: all joints are
 //! [`Curve::breakpoints`]. The involute's curvature is infinite at the base circle (`1/(r_b t)`).
 
 use super::{check_positive, Curve, CurveError, Derivs, Domain};
 use crate::geometry::{Point2, Vec2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use trochoid::Trochoid;
+
+mod trochoid;
 
 /// How tip relief grows from its start to the tip.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -113,8 +117,8 @@ pub struct InvoluteGearSpec {
     pub profile_shift: f64,
     /// backlash allowance `j`: the tooth thinned by this length on the pitch circle (default 0)
     pub backlash: f64,
-    /// root fillet radius, length; `None`: the largest that fits, at most `0.38 m` (the usual
-    /// rack tip radius)
+    /// the generating rack's tooth-tip radius, which leaves the root fillet, length; `None`:
+    /// `0.38 m` (the usual), or the largest the rack's tip holds when less
     pub fillet_radius: Option<f64>,
     /// tip relief (default none)
     pub tip_relief: Option<TipRelief>,
@@ -152,8 +156,8 @@ enum Shape {
         a0: f64,
         sense: f64,
     },
-    /// the radial line at angle `angle` from radius `r0` outwards
-    Radial { dir: Vec2, r0: f64 },
+    /// the root fillet the generating rack leaves, in its parameter `s`
+    Fillet(Trochoid),
     /// the involute turned by `base` (its start on the base circle), from arc length `s0`;
     /// relieved when `relief` is set
     Involute {
@@ -194,17 +198,18 @@ struct Piece {
 /// Each tooth is symmetric about its centre line; tooth `k` is centred at the frame angle
 /// `2πk/z` (tooth 0 on the +x axis); the gear centre is the frame origin. Going counter-clockwise
 /// (material on the left), one tooth is: the root circle from the middle of the space before it,
-/// the root fillet, the radial line from the fillet up to the base circle (where the involute is
-/// radial), the involute flank, the tip relief, the tip circle, then the same mirrored. The
+/// the root fillet, the involute flank, the tip relief, the tip circle, then the same mirrored. The
 /// parameter `u` is the arc length along each piece (of the unrelieved involute on a relieved
 /// stretch), so `|r'| = 1` except on the relief where it differs from 1 by about the relief's
 /// slope; `u = 0` is the middle of the space before tooth 0, at the angle `−π/z`; the period is
 /// `z` times one tooth's length.
 ///
-/// - **Root fillet**: a circular arc tangent to the root circle and to the radial line below the
-///   base circle, of the radius given (0: a corner) — not the trochoid a rack cutter leaves, which
-///   no contact between correct gears reaches. When the root circle is at or above the base circle
-///   (many teeth) the involute meets the root circle at a corner and there is no fillet.
+/// - **Root fillet**: what a rack cutter leaves: the envelope of the generating rack's tooth-tip
+///   round (radius: the fillet radius, by default `0.38 m` or the largest the rack's tip holds) as
+///   the rack rolls on the pitch circle, in closed form (`trochoid.rs`). It is tangent to the root
+///   circle and meets the involute with a common tangent, or, when the rack's flank reaches below
+///   the interference point (`h > r sin² α`: few teeth, the textbook's undercut), crosses it at a
+///   corner above the base circle, the involute below cut away.
 /// - **Tip relief**: material removed along the flank's normal near the tip, `C_a` at the tip,
 ///   growing from zero over a roll length `ℓ` (the length along the line of action) linearly or as
 ///   a parabola. On an involute a normal offset `δ` is a rotation by `δ/r_b` about the gear
@@ -212,8 +217,8 @@ struct Piece {
 /// - **Backlash** is an allowance `j` (length on the pitch circle) by which this gear's teeth are
 ///   thinned; a pair's circumferential backlash is the sum of the two gears' allowances.
 ///
-/// Pieces meet with a continuous position (C⁰); the tangent turns at the corners (tip, and the
-/// root where there is no fillet) and the curvature jumps at every joint: all joints are
+/// Pieces meet with a continuous position (C⁰); the tangent turns at the corners (tip, an
+/// undercut flank's foot, the root when the rack's tip is sharp) and the curvature jumps at every joint: all joints are
 /// [`Curve::breakpoints`](crate::curve::Curve::breakpoints). The involute's curvature is infinite at the base circle (`1/(r_b t)`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct InvoluteGear {
@@ -222,6 +227,9 @@ pub struct InvoluteGear {
     ra: f64,
     rf: f64,
     fillet: f64,
+    /// the form radius: where the involute starts (above the base circle, where the fillet
+    /// meets it)
+    form: f64,
     /// half the tooth's angle at the base circle: tooth 0's flanks start at `∓γ`
     gamma: f64,
     relief: Option<Relief>,
@@ -304,7 +312,80 @@ impl InvoluteGear {
         };
         let half_angle = |radius: f64| gamma - involute_function((rb / radius).min(1.0).acos());
         let space = PI / zf;
-        let flank_from = rb.max(rf);
+        // the generating rack: its tooth fills the space, `2w` wide on the pitch circle; its tip
+        // round (the fillet radius) leaves the root fillet, the trochoid's envelope
+        let w = space * r - thickness / 2.0;
+        let fillet_max = Trochoid::largest(r, rf, alpha, w);
+        if !(fillet_max >= 0.0) {
+            return Err(bad(
+                "profile_shift",
+                x,
+                "leaves no space between the teeth at the root: the teeth overlap".into(),
+            ));
+        }
+        let fillet = match spec.fillet_radius {
+            None => (0.38 * m).min(fillet_max * (1.0 - 1e-9)),
+            Some(rho) => {
+                if !(rho.is_finite() && rho >= 0.0 && rho < fillet_max) {
+                    return Err(bad(
+                        "fillet_radius",
+                        rho,
+                        format!("must be from 0 to below {fillet_max:.4}: the largest round the generating rack's tooth tip holds"),
+                    ));
+                }
+                rho
+            }
+        };
+        let (trochoid, yc) = Trochoid::new(r, rf, alpha, w, fillet, -space).ok_or_else(|| {
+            bad(
+                "fillet_radius",
+                fillet,
+                format!(
+                    "does not fit on the generating rack's tooth tip (at most {fillet_max:.4})"
+                ),
+            )
+        })?;
+        // where the fillet meets the involute: with a common tangent where the rack's flank
+        // takes over, or, undercut, where the two cross above the base circle (a corner)
+        let flank_angle = |e: Vec2| e.y.atan2(e.x) + half_angle(e.norm());
+        let s_flank = trochoid.flank_start(alpha);
+        let s_end = if trochoid.flank_depth(alpha) <= r * alpha.sin().powi(2) {
+            s_flank
+        } else {
+            // the involute is the outline where the envelope is outside it (on the space's
+            // side); below, the envelope has cut into the tooth: their last crossing, found by
+            // samples from the flank's start down, then bisection
+            let side = |s: f64| {
+                let e = trochoid.eval(s)[0];
+                (e.norm() >= rb).then(|| flank_angle(e))
+            };
+            let n = 512;
+            let at = |k: u32| s_flank * f64::from(k) / f64::from(n);
+            let k = (0..n)
+                .rev()
+                .find(|&k| side(at(k)).is_none_or(|f| f >= 0.0))
+                .unwrap_or(0);
+            if side(at(k + 1)).is_none() {
+                return Err(bad(
+                    "teeth",
+                    zf,
+                    "are so few that the rack cuts the involute away down to the base circle (undercut): add profile shift".into(),
+                ));
+            }
+            let (mut inside, mut outside) = (at(k), at(k + 1));
+            for _ in 0..200 {
+                let mid = 0.5 * (inside + outside);
+                if mid <= inside.min(outside) || mid >= inside.max(outside) {
+                    break;
+                }
+                match side(mid) {
+                    Some(f) if f < 0.0 => outside = mid,
+                    _ => inside = mid,
+                }
+            }
+            inside
+        };
+        let flank_from = trochoid.eval(s_end)[0].norm().max(rb);
         if half_angle(flank_from) >= space {
             return Err(bad(
                 "profile_shift",
@@ -356,72 +437,17 @@ impl InvoluteGear {
                 format!("makes the tooth come to a point below its tip circle (radius {ra:.4})"),
             ));
         }
-        // the fillet between the root circle and the radial line below the base circle
-        let fillet_max = if rf < rb {
-            let s = (space - gamma).sin();
-            ((rb * rb - rf * rf) / (2.0 * rf)).min(rf * s / (1.0 - s))
-        } else {
-            0.0
-        };
-        let fillet = match spec.fillet_radius {
-            None => fillet_max.min(0.38 * m),
-            Some(rho) => {
-                if !(rho.is_finite() && rho >= 0.0 && rho <= fillet_max) {
-                    return Err(bad(
-                        "fillet_radius",
-                        rho,
-                        format!("must be from 0 to {fillet_max:.4}, the largest that fits between the root circle and the flank"),
-                    ));
-                }
-                rho
-            }
-        };
-        // the half tooth from the middle of the space (−π/z) to the tooth's centre line
+        // the half tooth from the middle of the space (−π/z) to the tooth's centre line: the
+        // root circle, the fillet, the involute
         let mut half = Vec::new();
         let mut at = 0.0;
         let mut push = |len: f64, shape: Shape, half: &mut Vec<Piece>| {
             half.push(Piece { start: at, shape });
             at += len;
         };
-        let polar = |a: f64| Vec2::new(a.cos(), a.sin());
-        if rf < rb {
-            let mu = (fillet / (rf + fillet)).asin();
-            let root_end = -gamma - mu;
+        if yc > 0.0 {
             push(
-                rf * (root_end + space),
-                Shape::Arc {
-                    centre: Vec2::zeros(),
-                    radius: rf,
-                    a0: -space,
-                    sense: 1.0,
-                },
-                &mut half,
-            );
-            let radial_from = (rf * rf + 2.0 * rf * fillet).sqrt();
-            if fillet > 0.0 {
-                push(
-                    fillet * (FRAC_PI_2 - mu),
-                    Shape::Arc {
-                        centre: (rf + fillet) * polar(root_end),
-                        radius: fillet,
-                        a0: root_end + PI,
-                        sense: -1.0,
-                    },
-                    &mut half,
-                );
-            }
-            push(
-                rb - radial_from,
-                Shape::Radial {
-                    dir: polar(-gamma),
-                    r0: radial_from,
-                },
-                &mut half,
-            );
-        } else {
-            let root_end = -half_angle(rf);
-            push(
-                rf * (root_end + space),
+                rf * yc / r,
                 Shape::Arc {
                     centre: Vec2::zeros(),
                     radius: rf,
@@ -431,6 +457,7 @@ impl InvoluteGear {
                 &mut half,
             );
         }
+        push(s_end, Shape::Fillet(trochoid), &mut half);
         let s_from = arc_at(flank_from);
         let s_tip = arc_at(ra);
         match relief {
@@ -500,6 +527,7 @@ impl InvoluteGear {
             ra,
             rf,
             fillet,
+            form: flank_from,
             gamma,
             relief,
             half,
@@ -529,9 +557,14 @@ impl InvoluteGear {
     pub fn root_radius(&self) -> f64 {
         self.rf
     }
-    /// The fillet radius used (0: none).
+    /// The generating rack's tooth-tip radius used (0: a sharp tip, whose trochoid is the fillet).
     pub fn fillet_radius(&self) -> f64 {
         self.fillet
+    }
+    /// The form radius: where the involute flank starts, at or above the base circle (the
+    /// fillet below it; an undercut flank's foot).
+    pub fn form_radius(&self) -> f64 {
+        self.form
     }
     /// Number of teeth.
     pub fn teeth(&self) -> u32 {
@@ -658,7 +691,7 @@ impl InvoluteGear {
                     -sense * et / (radius * radius),
                 ]
             }
-            Shape::Radial { dir, r0 } => [(r0 + l) * dir, dir, Vec2::zeros(), Vec2::zeros()],
+            Shape::Fillet(t) => t.eval(l),
             Shape::Involute { base, s0, relief } => {
                 involute(self.rb, base, s0 + l, relief.as_ref())
             }

@@ -58,9 +58,12 @@ fn textbook_ratio(z1: u32, z2: u32) -> f64 {
         / (PI * M * alpha().cos())
 }
 
+/// The textbook formula assumes each involute down to its base circle: true of gears the rack
+/// does not undercut (18 teeth and more at 20°). An undercut pair's path is shorter (its count of
+/// pairs in contact: `several_contacts::undercut_pinion_meshes_over_its_shortened_path_of_contact`).
 #[test]
 fn contact_ratio_is_the_textbook_formula() {
-    for (z1, z2) in [(20, 42), (12, 12), (17, 60), (30, 31), (40, 100)] {
+    for (z1, z2) in [(20, 42), (18, 18), (18, 60), (30, 31), (40, 100)] {
         let (_, gp) = standard(z1, z2);
         let want = textbook_ratio(z1, z2);
         assert!(
@@ -71,6 +74,9 @@ fn contact_ratio_is_the_textbook_formula() {
     }
     // the usual worked figure: 20/42 teeth, 20°: ε ≈ 1.64
     assert!((textbook_ratio(20, 42) - 1.6398).abs() < 1e-4);
+    // undercut 12-tooth gears: a shorter path than the formula's
+    let (_, gp) = standard(12, 12);
+    assert!(gp.contact_ratio() < textbook_ratio(12, 12) - 0.2);
 }
 
 /// Over three mesh cycles of the ideal 20/42 pair: no transmission error, the nominal ratio, the

@@ -46,7 +46,9 @@ fn gears(z1: u32, z2: u32, alpha: f64, backlash: f64) -> Mechanism {
 /// written here, not the one the method solved.
 #[test]
 fn ideal_gears_report_every_tooth_pair_in_contact() {
-    for (z1, z2) in [(20, 42), (17, 60), (25, 31)] {
+    // 18 teeth: the fewest a standard 20° rack cuts without undercut (17 is cut slightly, its
+    // flank's foot a corner the mate's tip touches)
+    for (z1, z2) in [(20, 42), (18, 60), (25, 31)] {
         for backlash in [0.0, 0.1] {
             mesh_cycles(z1, z2, backlash);
         }
@@ -155,6 +157,62 @@ fn mesh_cycles(teeth1: u32, teeth2: u32, backlash: f64) {
     // the fraction of time with two pairs driving is ε − 1 (ε = 1.6398 for 20/42)
     let eps =
         ((ra1 * ra1 - rb1 * rb1).sqrt() + (ra2 * ra2 - rb2 * rb2).sqrt() - a * a_w.sin()) / pb;
+    let frac = double as f64 / f64::from(n);
+    assert!(
+        (frac - (eps - 1.0)).abs() <= 2.0 / f64::from(n),
+        "two pairs {frac} of the time, ε = {eps}"
+    );
+}
+
+/// A 10-tooth pinion cut by a standard rack is undercut: its involute starts above the base
+/// circle, where the rack's tip round crossed it. Meshing with 40 teeth it still transmits the
+/// exact ratio (no contact on the fillet: the mate's tip reaches less deep than the rack's), but
+/// over a shorter path: the time with two pairs in contact, counted from the contacts at each
+/// angle, is `ε − 1` with `ε` from the form circle (1.09), not the textbook's tip-circle
+/// formula (1.54), which assumes the involute down to the base circle.
+#[test]
+fn undercut_pinion_meshes_over_its_shortened_path_of_contact() {
+    let mech = gears(10, 40, 0.0, 0.0);
+    let gear = |z| InvoluteGear::new(InvoluteGearSpec::new(M, z, 20f64.to_radians())).unwrap();
+    let (g1, g2) = (gear(10), gear(40));
+    let a = M * 50.0 / 2.0;
+    let eps = camkin::gears::contact_ratio(&g1, &g2, a).unwrap();
+    let (rb1, rb2, ra1, ra2) = (
+        g1.base_radius(),
+        g2.base_radius(),
+        g1.tip_radius(),
+        g2.tip_radius(),
+    );
+    let pb = TAU * rb1 / 10.0;
+    let textbook = ((ra1 * ra1 - rb1 * rb1).sqrt() + (ra2 * ra2 - rb2 * rb2).sqrt()
+        - a * 20f64.to_radians().sin())
+        / pb;
+    assert!(
+        g1.form_radius() > rb1 && eps < textbook - 0.4,
+        "ε {eps}, textbook {textbook}"
+    );
+    let w = mech.cam().speed();
+    let n = 720;
+    let mut sweep = mech.sweep();
+    let mut double = 0;
+    for k in 0..n {
+        let theta = f64::from(k) / f64::from(n) * 2.0 * TAU / 10.0;
+        let s = sweep.step(theta).unwrap();
+        assert!(
+            (s.velocity + 0.25 * w).abs() <= 1e-10 * w,
+            "{k}: ratio {}",
+            -s.velocity / w
+        );
+        let cs = mech.contacts_at(&s).unwrap();
+        // the driving flanks' contacts, their normal along the driving line of action (the
+        // coast flanks touch too, without backlash, along its mirror image)
+        let along = Vec2::new(20f64.to_radians().sin(), 20f64.to_radians().cos());
+        let driving = cs
+            .iter()
+            .filter(|c| c.normal.dot(&along).abs() >= 1.0 - 1e-9)
+            .count();
+        double += usize::from(driving == 2);
+    }
     let frac = double as f64 / f64::from(n);
     assert!(
         (frac - (eps - 1.0)).abs() <= 2.0 / f64::from(n),

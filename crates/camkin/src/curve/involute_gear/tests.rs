@@ -250,10 +250,163 @@ fn refuses_gears_that_cannot_be_made() {
     assert!(message.contains("teeth = 2"), "{message}");
 }
 
+/// Signed distance (negative inside) from `p` to the generating rack's tooth at rest, in the
+/// frame of the space it cuts (its middle on the +x axis): the tooth `X ≥ r_f`,
+/// `|Y| ≤ w − (r − X) tan α` with its two tip corners rounded to `ρ`, i.e. the same trapezoid
+/// shrunk by `ρ` (a convex polygon, its distance by its edges) less `ρ`.
+fn rack_tooth_distance(p: Vec2, (r, rf, alpha, w, rho): (f64, f64, f64, f64, f64)) -> f64 {
+    let half = |x: f64| w - (r - x) * alpha.tan() - rho / alpha.cos();
+    let (x0, x1) = (rf + rho, r + 10.0 * (r - rf));
+    let poly = [
+        Vec2::new(x0, -half(x0)),
+        Vec2::new(x1, -half(x1)),
+        Vec2::new(x1, half(x1)),
+        Vec2::new(x0, half(x0)),
+    ];
+    let mut inside = true;
+    let mut dist = f64::INFINITY;
+    for k in 0..4 {
+        let (a, b) = (poly[k], poly[(k + 1) % 4]);
+        let e = b - a;
+        let len = e.norm();
+        if len == 0.0 {
+            continue;
+        }
+        let t = ((p - a).dot(&e) / (len * len)).clamp(0.0, 1.0);
+        dist = dist.min((p - (a + t * e)).norm());
+        // counter-clockwise polygon: inside is left of every edge
+        inside &= cross(e, p - a) > 0.0;
+    }
+    (if inside { -dist } else { dist }) - rho
+}
+
+/// The outline below the tip is what a rack cutter leaves, checked by simulating the cutting
+/// and nothing of the gear's construction: the rack rolled on the pitch circle (its teeth a
+/// pitch apart), every outline point of a half tooth (root, fillet, flank; undercut or not)
+/// is never inside a rack tooth and is touched by one (its least distance over the rolling is
+/// zero), to 1e-9 of the module. Gears of 7 to 60 teeth, shifted and not, two rack tip radii.
 #[test]
-fn many_teeth_meet_the_root_at_a_corner_and_few_get_a_fillet() {
-    // r_f ≥ r_b from about 42 teeth at 20°: no room for a fillet below the base circle
-    assert_eq!(gear(60).fillet_radius(), 0.0);
-    let g = gear(20);
-    assert!(g.fillet_radius() > 0.0 && g.fillet_radius() <= 0.38 * 2.0 + 1e-15);
+fn outline_below_the_tip_is_what_the_rack_cutter_leaves() {
+    let alpha = 20f64.to_radians();
+    let m = 2.0;
+    let mut checked = 0;
+    for (z, x, rho) in [
+        (7, 0.2, None),
+        (10, 0.0, None),
+        (12, 0.0, Some(0.2)),
+        (12, 0.4, None),
+        (17, 0.0, None),
+        (18, 0.0, None),
+        (30, -0.3, None),
+        (60, 0.0, Some(0.0)),
+    ] {
+        let mut spec = InvoluteGearSpec::new(m, z, alpha);
+        spec.profile_shift = x;
+        spec.fillet_radius = rho;
+        let g = InvoluteGear::new(spec).unwrap();
+        let zf = f64::from(z);
+        let r = g.pitch_radius();
+        let s = m * (FRAC_PI_2 + 2.0 * x * alpha.tan());
+        let rack = (
+            r,
+            g.root_radius(),
+            alpha,
+            PI * r / zf - s / 2.0,
+            g.fillet_radius(),
+        );
+        let pitch = TAU * r / zf;
+        // the half tooth up to the tip circle, in the space's frame
+        let top = g.half.last().unwrap().start;
+        for k in 1..200 {
+            let w = top * f64::from(k) / 200.0;
+            let q = g.position(w).coords;
+            let (sn, cs) = (PI / zf).sin_cos();
+            let p = Vec2::new(cs * q.x - sn * q.y, sn * q.x + cs * q.y);
+            let at = |phi: f64| {
+                let (sn, cs) = phi.sin_cos();
+                let y = Vec2::new(cs * p.x - sn * p.y, sn * p.x + cs * p.y - r * phi);
+                (-2..=2)
+                    .map(|j| rack_tooth_distance(y - Vec2::new(0.0, f64::from(j) * pitch), rack))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            // the least distance over the rolling: samples, then golden-section refinement
+            let span = 3.0 * PI / zf;
+            let n = 3000;
+            let best = (0..=n)
+                .map(|i| -span + 2.0 * span * f64::from(i) / f64::from(n))
+                .min_by(|a, b| at(*a).total_cmp(&at(*b)))
+                .unwrap();
+            let h = 2.0 * span / f64::from(n);
+            let (mut lo, mut hi) = (best - h, best + h);
+            let g_ratio = 0.5 * (5f64.sqrt() - 1.0);
+            for _ in 0..100 {
+                let (a, b) = (hi - g_ratio * (hi - lo), lo + g_ratio * (hi - lo));
+                if at(a) < at(b) {
+                    hi = b;
+                } else {
+                    lo = a;
+                }
+            }
+            let least = at(0.5 * (lo + hi));
+            assert!(
+                least.abs() <= 1e-9 * m,
+                "z {z}, x {x}, ρ {rho:?}: the point at {w:.4} of the half tooth ({:.4} from the centre) is {least:.3e} from the rack",
+                p.norm()
+            );
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 8 * 199);
+}
+
+/// The rack undercuts the involute when its flank's lowest point lies deeper below the pitch
+/// line than the interference point, `h = (h_f − x) m − ρ (1 − sin α) > r sin² α` (the textbook's
+/// least tooth count, 17 for a standard 20° gear with `ρ = 0.38 m`): then the fillet and the
+/// involute meet at a corner above the base circle; otherwise with a common tangent.
+#[test]
+fn undercut_begins_where_the_textbook_says() {
+    let alpha = 20f64.to_radians();
+    for (z, x, undercut) in [
+        (17, 0.0, true),
+        (18, 0.0, false),
+        (12, 0.0, true),
+        (12, 0.4, false),
+        (10, 0.5, false),
+        (30, -0.8, true),
+    ] {
+        let mut spec = InvoluteGearSpec::new(2.0, z, alpha);
+        spec.profile_shift = x;
+        let g = InvoluteGear::new(spec).unwrap();
+        let r = g.pitch_radius();
+        let h = (1.25 - x) * 2.0 - g.fillet_radius() * (1.0 - alpha.sin());
+        assert_eq!(
+            h > r * alpha.sin().powi(2),
+            undercut,
+            "z {z}, x {x}: the textbook's condition"
+        );
+        // the joint of the fillet and the involute: the tangent's turn across it
+        let j = g
+            .half
+            .iter()
+            .position(|p| matches!(p.shape, Shape::Involute { .. }))
+            .unwrap();
+        let u = g.half[j].start;
+        let (a, b) = (
+            g.eval(u - 1e-7).d1.normalize(),
+            g.eval(u + 1e-7).d1.normalize(),
+        );
+        let turn = cross(a, b).abs();
+        let radius = g.position(u).coords.norm();
+        if undercut {
+            assert!(
+                turn > 1e-4 && radius >= g.base_radius(),
+                "z {z}, x {x}: turn {turn}, radius {radius}"
+            );
+        } else {
+            assert!(
+                turn < 1e-6 && radius >= g.base_radius(),
+                "z {z}, x {x}: turn {turn}"
+            );
+        }
+    }
 }
