@@ -101,6 +101,18 @@ fn check_jerk_by_differences(m: &Mechanism, name: &str, spline: bool) -> usize {
     n
 }
 
+/// [`check_jerk_by_differences`] on an ellipse cam (no nodes: every one of its 60 angles).
+fn check_jerk_on_the_ellipse_cam(f: &Follower, name: &str) {
+    let m = mechanism(
+        ellipse(5.0, 3.5, Point2::new(0.4, 0.2), 0.3),
+        Point2::origin(),
+        Sense::Cw,
+        700.0,
+        f.clone(),
+    );
+    assert_eq!(check_jerk_by_differences(&m, name, false), 60, "{name}");
+}
+
 #[test]
 fn jerk_agrees_with_differences_of_acceleration_for_every_follower() {
     for f in all_followers(Point2::origin()) {
@@ -112,14 +124,7 @@ fn jerk_agrees_with_differences_of_acceleration_for_every_follower() {
             f.clone(),
         );
         assert!(check_jerk_by_differences(&m, f.kind_name(), true) >= 30);
-        let m = mechanism(
-            ellipse(5.0, 3.5, Point2::new(0.4, 0.2), 0.3),
-            Point2::origin(),
-            Sense::Cw,
-            700.0,
-            f.clone(),
-        );
-        assert_eq!(check_jerk_by_differences(&m, f.kind_name(), false), 60);
+        check_jerk_on_the_ellipse_cam(&f, f.kind_name());
     }
 }
 
@@ -155,14 +160,7 @@ fn carried_curve_jerk_agrees_with_differences_of_acceleration() {
     ];
     for f in followers {
         let name = format!("{f:?}");
-        let m = mechanism(
-            ellipse(5.0, 3.5, Point2::new(0.4, 0.2), 0.3),
-            Point2::origin(),
-            Sense::Cw,
-            700.0,
-            f.clone(),
-        );
-        assert_eq!(check_jerk_by_differences(&m, &name, false), 60, "{name}");
+        check_jerk_on_the_ellipse_cam(&f, &name);
         let m = mechanism(
             paper_profile(false),
             Point2::origin(),
