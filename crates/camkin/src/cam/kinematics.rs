@@ -264,7 +264,6 @@ impl Mechanism {
         })
     }
 
-    /// True when `u` is within the breakpoint tolerance of a node of the profile.
     /// Whether the carried curve's parameter `v` is on one of its breakpoints (within the
     /// breakpoint tolerance of its parameter span).
     fn carried_at_breakpoint(&self, c: &Carried, v: f64) -> bool {
@@ -281,6 +280,7 @@ impl Mechanism {
         (i > 0 && near(i - 1)) || near(i) || wrapped
     }
 
+    /// True when `u` is within the breakpoint tolerance of a node of the profile.
     fn at_breakpoint(&self, u: f64) -> bool {
         let bp = &self.breakpoints;
         if bp.is_empty() {

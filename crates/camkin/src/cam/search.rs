@@ -203,8 +203,8 @@ impl Mechanism {
             lim,
             ..
         } = self.prepared;
-        // by comparisons, not `max`/`min` (their NaN handling costs instructions; neither value
-        // can be NaN here: `du` was checked finite, the path's scale is set up finite)
+        // the larger by a comparison, not `max` (its NaN handling costs instructions; both are
+        // set up finite)
         let along = q_over_tol * path.per_length();
         let per_tol = if along > inv_tol { along } else { inv_tol };
         // in the cam's frame: the path turned once, not the curve's three derivatives each
@@ -221,6 +221,7 @@ impl Mechanism {
                     reason: StopReason::SingularJacobian,
                 });
             }
+            // clamped by comparisons (`du` is finite here): no NaN handling to pay for
             let du = if du > lim {
                 lim
             } else if du < -lim {
