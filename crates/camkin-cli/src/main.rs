@@ -72,7 +72,7 @@ enum Command {
     )]
     Profile(profile::ProfileArgs),
     /// Contact force, camshaft torque, jump speed, spring sizing and contact stress, with a
-    /// [dynamics] section in the file.
+    /// [dynamics] section in the file (a form-closed follower: the load on each of its curves).
     #[command(
         after_help = "Examples:\n  camkin forces examples/eccentric-flat-dynamics.toml\n  camkin forces cam.toml --target-rpm 3000 --margin 20 --face-width 12 --materials steel,steel\n\nExit codes: 0 success, 1 internal failure, 2 bad input, 3 a check failed (contact lost below the target speed, stress over the allowable)."
     )]

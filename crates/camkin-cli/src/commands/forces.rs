@@ -9,6 +9,7 @@ use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::cam::FollowerCurve;
+use camkin::curve::Domain;
 use camkin::dynamics::{effective_modulus, hertz_line_pressure, ForceState, Forces};
 use camkin::human::human;
 use std::f64::consts::TAU;
@@ -161,24 +162,32 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
             return Err(bad(format!("--face-width: {wd} {lu} must be positive")));
         }
     }
-    // the follower's curve radius for Hertz (m): a roller's, a flat face's ∞; a knife has none
-    let follower_radius = match mech.follower_curve() {
-        FollowerCurve::Circle(c) => Some(c.radius()),
-        FollowerCurve::Line(_) => Some(f64::INFINITY),
-        _ => None,
+    // a knife edge (named, or a point carried) touches in a point: no line contact
+    let knife = match mech.follower_curve() {
+        FollowerCurve::Point(_) => true,
+        FollowerCurve::Carried(c) => matches!(c.domain(), Domain::Point),
+        _ => false,
     };
-    if args.face_width.is_some() && follower_radius.is_none() {
+    if args.face_width.is_some() && knife {
         return Err(bad(
             "--face-width: a knife-edge follower has no line contact (its edge is a point in the plane): no Hertz stress".into(),
         ));
     }
+    let closed = mech.is_conjugate();
+    if closed && (args.margin != 0.0 || args.target_rpm.is_some()) {
+        return Err(bad(format!(
+            "{}: the follower is form-closed (follower.conjugate): its second curve takes the load where its own would lift off, so it has no jump speed and no spring to size",
+            if args.margin != 0.0 { "--margin" } else { "--target-rpm" }
+        )));
+    }
     let n = (360.0 / args.step.deg()).round() as usize;
-    crate::check_sweep_time(&mech, n * 2 + 720, 1, false)?;
+    crate::check_sweep_time(&mech, n * 2 + 720, if closed { 3 } else { 1 }, false)?;
     let f = Forces::new(&mech, params).map_err(|e| Failure::Input(anyhow!(e)))?;
     let thetas: Vec<f64> = (0..n).map(|k| k as f64 * TAU / n as f64).collect();
+    let mut sweep = f.sweep();
     let states: Vec<ForceState> = thetas
         .iter()
-        .map(|&t| f.at(t))
+        .map(|&t| sweep.step(t))
         .collect::<Result<_, _>>()
         .map_err(|e| Failure::Input(anyhow!("the forces cannot be computed: {e}")))?;
     let w = mech.cam().speed();
@@ -214,13 +223,17 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         (lo, hi)
     };
     let (flo, fhi) = extreme(&|s| s.contact_force);
-    report += &format!(
-        "contact force: max {} N at {}, min {} N at {}\n",
-        num(fhi.contact_force),
-        angle(fhi.cam_angle),
-        num(flo.contact_force),
-        angle(flo.cam_angle)
-    );
+    if closed {
+        report += &form_closed_report(&mech, &states, &thetas, osc, m_per, lu)?;
+    } else {
+        report += &format!(
+            "contact force: max {} N at {}, min {} N at {}\n",
+            num(fhi.contact_force),
+            angle(fhi.cam_angle),
+            num(flo.contact_force),
+            angle(flo.cam_angle)
+        );
+    }
     let (tlo, thi) = extreme(&|s| s.camshaft_torque);
     let rms = (states
         .iter()
@@ -250,15 +263,8 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         num(pmax)
     );
     let mut failures: Vec<String> = Vec::new();
-    if flo.contact_force < args.margin {
-        failures.push(format!(
-            "the contact force falls to {} N at {} at the file's speed (margin {} N)",
-            num(flo.contact_force),
-            angle(flo.cam_angle),
-            num(args.margin)
-        ));
-    }
-    // the speed at which the contact force first reaches the margin
+    // the speed at which the contact force first reaches the margin (form-closed: from which
+    // the second curve takes load)
     let (mut jump, mut jump_at) = (f64::INFINITY, 0.0);
     for s in &states {
         let v = f.leave_speed(s, args.margin);
@@ -266,115 +272,167 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
             (jump, jump_at) = (v, s.cam_angle);
         }
     }
-    report += &if jump.is_finite() {
-        format!(
-            "jump speed: {} rpm (the contact force reaches {} N first at {}, at constant speed)\n",
-            num(jump * 60.0 / TAU),
-            num(args.margin),
-            angle(jump_at)
-        )
+    if closed {
+        report += &if jump == 0.0 {
+            "the second curve takes load at any constant speed (no spring holds the follower's own curve on)\n".to_string()
+        } else if jump.is_finite() {
+            format!(
+                "the second curve takes load from {} rpm (first at {}, at constant speed)\n",
+                num(jump * 60.0 / TAU),
+                angle(jump_at)
+            )
+        } else {
+            "the second curve takes no load at any constant speed (the spring holds the follower's own curve on)\n".to_string()
+        };
     } else {
-        format!(
-            "jump speed: none (the contact force stays above {} N at any constant speed)\n",
-            num(args.margin)
-        )
-    };
-    if jump < target {
-        failures.push(format!(
-            "the follower leaves the cam at {} rpm, below {} rpm",
-            num(jump * 60.0 / TAU),
-            num(target_rpm)
-        ));
-    }
-    // spring sizing for the target speed
-    let preload = states
-        .iter()
-        .map(|s| f.preload_needed(s, args.margin, target))
-        .fold(f64::NEG_INFINITY, f64::max);
-    let mut stiffness = f64::NEG_INFINITY;
-    let mut stiffness_possible = true;
-    for s in &states {
-        match f.stiffness_needed(s, args.margin, target) {
-            Some(k) => stiffness = stiffness.max(k),
-            None => {
-                if f.preload_needed(s, args.margin, target) > params.spring_preload {
-                    stiffness_possible = false;
-                }
-            }
+        if flo.contact_force < args.margin {
+            failures.push(format!(
+                "the contact force falls to {} N at {} at the file's speed (margin {} N)",
+                num(flo.contact_force),
+                angle(flo.cam_angle),
+                num(args.margin)
+            ));
         }
-    }
-    report += &format!(
-        "spring for {} rpm with a margin of {} N: preload ≥ {} {fu} with the stiffness {} {ku} (file: preload {} {fu}); ",
-        num(target_rpm),
-        num(args.margin),
-        num(preload.max(0.0)),
-        num(params.spring_stiffness),
-        num(params.spring_preload)
-    );
-    report += &if stiffness_possible {
-        format!(
-            "or stiffness ≥ {} {ku} with the preload {} {fu}\n",
-            num(stiffness.max(0.0)),
-            num(params.spring_preload)
-        )
-    } else {
-        format!(
-            "no stiffness will do with the preload {} {fu} (the follower leaves the cam at rest position, where only the preload acts)\n",
-            num(params.spring_preload)
-        )
-    };
-    // Hertz contact stress
-    let mut stress: Vec<Option<f64>> = vec![None; n];
-    if let (Some(width), Some(rf)) = (args.face_width, follower_radius) {
-        let Materials(a, b) = &args.materials;
-        let es = effective_modulus(a.e, a.nu, b.e, b.nu);
-        let mut worst: Option<(f64, f64, f64)> = None;
-        let mut unclosed = 0;
-        for (k, s) in states.iter().enumerate() {
-            match hertz_line_pressure(
-                s.contact_force.max(0.0),
-                width * m_per,
-                s.cam_radius,
-                rf,
-                es,
-            ) {
-                Some(p) => {
-                    stress[k] = Some(p / 1e6);
-                    if worst.is_none_or(|w| p > w.0) {
-                        worst = Some((p, s.cam_angle, s.cam_radius));
+        report += &if jump.is_finite() {
+            format!(
+                "jump speed: {} rpm (the contact force reaches {} N first at {}, at constant speed)\n",
+                num(jump * 60.0 / TAU),
+                num(args.margin),
+                angle(jump_at)
+            )
+        } else {
+            format!(
+                "jump speed: none (the contact force stays above {} N at any constant speed)\n",
+                num(args.margin)
+            )
+        };
+        if jump < target {
+            failures.push(format!(
+                "the follower leaves the cam at {} rpm, below {} rpm",
+                num(jump * 60.0 / TAU),
+                num(target_rpm)
+            ));
+        }
+        // spring sizing for the target speed
+        let preload = states
+            .iter()
+            .map(|s| f.preload_needed(s, args.margin, target))
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mut stiffness = f64::NEG_INFINITY;
+        let mut stiffness_possible = true;
+        for s in &states {
+            match f.stiffness_needed(s, args.margin, target) {
+                Some(k) => stiffness = stiffness.max(k),
+                None => {
+                    if f.preload_needed(s, args.margin, target) > params.spring_preload {
+                        stiffness_possible = false;
                     }
                 }
-                None if s.contact_force > 0.0 => unclosed += 1,
-                None => {}
             }
         }
-        if let Some((p, t, rho)) = worst {
-            let mpa = p / 1e6;
-            report += &format!(
-                "contact stress (Hertz line contact, face {} {lu}, {} cam on {} follower, E* = {} GPa): max {} MPa at {} (cam radius of curvature {} {lu})",
-                num(width),
-                a.name,
-                b.name,
-                num(es / 1e9),
-                num(mpa),
-                angle(t),
-                if rho.is_finite() { num(rho / m_per) } else { "∞".into() }
-            );
-            match args.allowable {
-                Some(al) if mpa > al => {
-                    report += &format!(", OVER the allowable {} MPa\n", num(al));
-                    failures.push(format!(
-                        "the contact stress {} MPa exceeds the allowable {} MPa",
-                        num(mpa),
-                        num(al)
-                    ));
+        report += &format!(
+            "spring for {} rpm with a margin of {} N: preload ≥ {} {fu} with the stiffness {} {ku} (file: preload {} {fu}); ",
+            num(target_rpm),
+            num(args.margin),
+            num(preload.max(0.0)),
+            num(params.spring_stiffness),
+            num(params.spring_preload)
+        );
+        report += &if stiffness_possible {
+            format!(
+                "or stiffness ≥ {} {ku} with the preload {} {fu}\n",
+                num(stiffness.max(0.0)),
+                num(params.spring_preload)
+            )
+        } else {
+            format!(
+                "no stiffness will do with the preload {} {fu} (the follower leaves the cam at rest position, where only the preload acts)\n",
+                num(params.spring_preload)
+            )
+        };
+    }
+    // Hertz contact stress, at each contact
+    let mut stress: Vec<[Option<f64>; 2]> = vec![[None; 2]; n];
+    if let Some(width) = args.face_width {
+        let Materials(a, b) = &args.materials;
+        let es = effective_modulus(a.e, a.nu, b.e, b.nu);
+        let mut worst_mpa = 0.0f64;
+        let sides: &[usize] = if closed { &[0, 1] } else { &[0] };
+        for &side in sides {
+            let contact = |s: &ForceState| match (side, s.second) {
+                (0, _) => Some((s.contact_force, s.cam_radius, s.follower_radius)),
+                (_, Some(c)) => Some((c.contact_force, c.cam_radius, c.follower_radius)),
+                _ => None,
+            };
+            let mut worst: Option<(f64, f64, f64)> = None;
+            let (mut unclosed, mut cornered) = (0, 0);
+            for (k, s) in states.iter().enumerate() {
+                let Some((force, rc, rf)) = contact(s) else {
+                    continue;
+                };
+                let Some(rf) = rf else {
+                    if force > 0.0 {
+                        cornered += 1;
+                    }
+                    continue;
+                };
+                match hertz_line_pressure(force.max(0.0), width * m_per, rc, rf, es) {
+                    Some(p) => {
+                        stress[k][side] = Some(p / 1e6);
+                        if worst.is_none_or(|w| p > w.0) {
+                            worst = Some((p, s.cam_angle, rc));
+                        }
+                    }
+                    None if force > 0.0 => unclosed += 1,
+                    None => {}
                 }
-                Some(al) => report += &format!(", within the allowable {} MPa\n", num(al)),
-                None => report.push('\n'),
+            }
+            let whose = match (closed, side) {
+                (false, _) => "",
+                (true, 0) => " on the follower's own curve",
+                _ => " on the second curve",
+            };
+            if let Some((p, t, rho)) = worst {
+                worst_mpa = worst_mpa.max(p / 1e6);
+                report += &format!(
+                    "contact stress{whose} (Hertz line contact, face {} {lu}, {} cam on {} follower, E* = {} GPa): max {} MPa at {} (cam radius of curvature {} {lu})\n",
+                    num(width),
+                    a.name,
+                    b.name,
+                    num(es / 1e9),
+                    num(p / 1e6),
+                    angle(t),
+                    if rho.is_finite() { num(rho / m_per) } else { "∞".into() }
+                );
+            }
+            if unclosed > 0 {
+                report += &format!("contact stress{whose}: at {unclosed} angles the cam is concave as sharply as the follower's curve: no Hertz solution (conformal contact)\n");
+            }
+            if cornered > 0 {
+                report += &format!("contact stress{whose}: at {cornered} angles the contact rests on a corner of a curve (a point, not a line contact): no Hertz stress there\n");
             }
         }
-        if unclosed > 0 {
-            report += &format!("contact stress: at {unclosed} angles the cam is concave as sharply as the roller: no Hertz solution (conformal contact)\n");
+        match args.allowable {
+            Some(al) if worst_mpa > al => {
+                report += &format!(
+                    "contact stress: max {} MPa, OVER the allowable {} MPa\n",
+                    num(worst_mpa),
+                    num(al)
+                );
+                failures.push(format!(
+                    "the contact stress {} MPa exceeds the allowable {} MPa",
+                    num(worst_mpa),
+                    num(al)
+                ));
+            }
+            Some(al) => {
+                report += &format!(
+                    "contact stress: max {} MPa, within the allowable {} MPa\n",
+                    num(worst_mpa),
+                    num(al)
+                )
+            }
+            None => {}
         }
     }
     print!("{report}");
@@ -393,12 +451,121 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
     }
 }
 
+/// The force the second curve of a form-closed follower carries (0 without one).
+fn second_force(s: &ForceState) -> f64 {
+    s.second.map_or(0.0, |c| c.contact_force)
+}
+
+/// A form-closed follower's lines: the largest force on each curve, where the load passes from
+/// one curve to the other, and the second curve's play.
+fn form_closed_report(
+    mech: &camkin::cam::Mechanism,
+    states: &[ForceState],
+    thetas: &[f64],
+    osc: bool,
+    m_per: f64,
+    lu: &str,
+) -> Result<String, Failure> {
+    let peak = |g: fn(&ForceState) -> f64| {
+        states
+            .iter()
+            .max_by(|a, b| g(a).total_cmp(&g(b)))
+            .expect("a revolution has angles")
+    };
+    let (p1, p2) = (peak(|s| s.contact_force), peak(second_force));
+    let mut r = format!(
+        "form-closed: the follower's own curve carries where the load presses it onto the cam, its second curve elsewhere\ncontact force on the follower's own curve: max {} N at {}; on the second curve: max {} N at {}\n",
+        num(p1.contact_force),
+        angle(p1.cam_angle),
+        num(second_force(p2)),
+        angle(p2.cam_angle)
+    );
+    // which curve carries, angle by angle (neither, or a force at rounding level of the peak:
+    // the last one's), around the revolution
+    let small = 1e-9 * p1.contact_force.max(second_force(p2));
+    let side = |s: &ForceState| {
+        if s.contact_force > small {
+            Some(false)
+        } else if second_force(s) > small {
+            Some(true)
+        } else {
+            None
+        }
+    };
+    let mut last = states.iter().rev().find_map(side);
+    let mut reversals = Vec::new();
+    for s in states {
+        if let Some(now) = side(s) {
+            if last.is_some_and(|l| l != now) {
+                reversals.push(angle(s.cam_angle));
+            }
+            last = Some(now);
+        }
+    }
+    r += &if reversals.is_empty() {
+        format!(
+            "load reversals: none (the {} carries at every angle)\n",
+            if last == Some(true) {
+                "second curve"
+            } else {
+                "follower's own curve"
+            }
+        )
+    } else {
+        let shown = reversals
+            .iter()
+            .take(6)
+            .cloned()
+            .collect::<Vec<_>>()
+            .join(", ");
+        format!(
+            "load reversals: {} a revolution, where the load passes to the other curve (at {shown}{}): with play, each is an impact (`camkin simulate`)\n",
+            reversals.len(),
+            if reversals.len() > 6 { ", …" } else { "" }
+        )
+    };
+    // the second curve's play over the same angles
+    let failed = |e: camkin::cam::CamError| {
+        Failure::Input(anyhow!("the second curve's play cannot be computed: {e}"))
+    };
+    let (mut sweep, mut plays) = (mech.sweep(), mech.conjugate_sweep().expect("form-closed"));
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &t in thetas {
+        let play = plays
+            .play(&sweep.step(t).map_err(failed)?)
+            .map_err(failed)?;
+        (lo, hi) = (lo.min(play), hi.max(play));
+    }
+    let show = |x: f64| {
+        if osc {
+            format!("{}°", num(x.to_degrees()))
+        } else {
+            format!("{} {lu}", num(x / m_per))
+        }
+    };
+    // as the design check of the play: 1e-6 of the cam's size (of 1 rad for an arm)
+    let tol = if osc { 1e-6 } else { 1e-6 * mech.size() };
+    r += &if lo.abs().max(hi.abs()) > tol {
+        format!(
+            "play of the second curve: {} to {} (its force is taken at its own contact, the motion from the follower's own curve: exact without play)\n",
+            show(lo),
+            show(hi)
+        )
+    } else {
+        format!(
+            "play of the second curve: none (within {} at every angle: an exact conjugate)\n",
+            show(tol)
+        )
+    };
+    Ok(r)
+}
+
 #[allow(clippy::too_many_arguments)]
 fn write_files(
     dir: &std::path::Path,
     f: &Forces<'_>,
     states: &[ForceState],
-    stress: &[Option<f64>],
+    stress: &[[Option<f64>; 2]],
     margin: f64,
     target: f64,
     jump: f64,
@@ -406,7 +573,8 @@ fn write_files(
     tu: &str,
 ) -> anyhow::Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
-    let columns: Vec<String> = vec![
+    let closed = f.is_form_closed();
+    let mut columns: Vec<String> = vec![
         "angle_deg".into(),
         "contact_force_N".into(),
         format!("spring_force_{}", fu.replace('·', "_")),
@@ -414,44 +582,84 @@ fn write_files(
         "pressure_angle_deg".into(),
         "contact_stress_MPa".into(),
     ];
+    if closed {
+        columns.extend([
+            "second_contact_force_N".into(),
+            "second_pressure_angle_deg".into(),
+            "second_contact_stress_MPa".into(),
+        ]);
+    }
     let rows: Vec<Vec<Cell>> = states
         .iter()
         .zip(stress)
         .map(|(s, p)| {
-            vec![
+            let mut row = vec![
                 Cell::Num(Some(s.cam_angle.to_degrees())),
                 Cell::Num(Some(s.contact_force)),
                 Cell::Num(Some(s.spring_force)),
                 Cell::Num(Some(s.camshaft_torque)),
                 Cell::Num(Some(s.pressure_angle.to_degrees())),
-                Cell::Num(*p),
-            ]
+                Cell::Num(p[0]),
+            ];
+            if let Some(c) = s.second {
+                row.extend([
+                    Cell::Num(Some(c.contact_force)),
+                    Cell::Num(Some(c.pressure_angle.to_degrees())),
+                    Cell::Num(p[1]),
+                ]);
+            }
+            row
         })
         .collect();
     write_atomic(Some(&dir.join("forces.csv")), |w| {
         write_cell_table(w, TableFormat::Csv, &columns, rows)
     })?;
-    // the smallest contact force over the revolution against a constant speed
+    // the smallest contact force over the revolution against a constant speed (form-closed:
+    // the largest on each curve)
     let top = 1.5 * target.max(if jump.is_finite() { jump } else { 0.0 });
     let speeds: Vec<f64> = (0..=150).map(|k| top * k as f64 / 150.0).collect();
+    let rpm = |w: f64| w * 60.0 / TAU;
     let min_force = |omega: f64| {
         states
             .iter()
             .map(|s| f.force_at_speed(s, omega))
             .fold(f64::INFINITY, f64::min)
     };
-    let curve: Vec<(f64, f64)> = speeds
-        .iter()
-        .map(|&w| (w * 60.0 / TAU, min_force(w)))
-        .collect();
+    // the first curve's force at ω is `R/|J₁|` where positive; the second's `−R/|J₂|`
+    let max_forces = |omega: f64| {
+        states.iter().fold((0.0f64, 0.0f64), |(a, b), s| {
+            let f1 = f.force_at_speed(s, omega);
+            let f2 = s.second.map_or(0.0, |c| -f1 * s.lever / c.lever);
+            (a.max(f1), b.max(f2))
+        })
+    };
+    let curves: Vec<Vec<(f64, f64)>> = if closed {
+        let m: Vec<(f64, f64)> = speeds.iter().map(|&w| max_forces(w)).collect();
+        vec![
+            speeds.iter().zip(&m).map(|(&w, x)| (rpm(w), x.0)).collect(),
+            speeds.iter().zip(&m).map(|(&w, x)| (rpm(w), x.1)).collect(),
+        ]
+    } else {
+        vec![speeds.iter().map(|&w| (rpm(w), min_force(w))).collect()]
+    };
+    let names: &[&str] = if closed {
+        &["max_contact_force_N", "max_second_contact_force_N"]
+    } else {
+        &["min_contact_force_N"]
+    };
     write_atomic(Some(&dir.join("force_speed.csv")), |w| {
+        let mut columns = vec!["speed_rpm".to_string()];
+        columns.extend(names.iter().map(|c| c.to_string()));
         write_cell_table(
             w,
             TableFormat::Csv,
-            &["speed_rpm".into(), "min_contact_force_N".into()],
-            curve
-                .iter()
-                .map(|&(a, b)| vec![Cell::Num(Some(a)), Cell::Num(Some(b))])
+            &columns,
+            (0..speeds.len())
+                .map(|k| {
+                    let mut row = vec![Cell::Num(Some(curves[0][k].0))];
+                    row.extend(curves.iter().map(|c| Cell::Num(Some(c[k].1))));
+                    row
+                })
                 .collect(),
         )
     })?;
@@ -461,11 +669,26 @@ fn write_files(
             title: "contact force under permanent contact".into(),
             x_label: "cam angle (°)".into(),
             y_label: "contact force (N)".into(),
-            series: vec![Series {
-                name: "contact force".into(),
-                points: states.iter().map(|s| (deg(s), s.contact_force)).collect(),
-                dashed: false,
-            }],
+            series: if closed {
+                vec![
+                    Series {
+                        name: "follower's own curve".into(),
+                        points: states.iter().map(|s| (deg(s), s.contact_force)).collect(),
+                        dashed: false,
+                    },
+                    Series {
+                        name: "second curve".into(),
+                        points: states.iter().map(|s| (deg(s), second_force(s))).collect(),
+                        dashed: true,
+                    },
+                ]
+            } else {
+                vec![Series {
+                    name: "contact force".into(),
+                    points: states.iter().map(|s| (deg(s), s.contact_force)).collect(),
+                    dashed: false,
+                }]
+            },
             log_y: false,
             x_range: Some((0.0, 360.0)),
         },
@@ -486,26 +709,50 @@ fn write_files(
         },
         &dir.join("camshaft_torque"),
     )?;
+    let mut series: Vec<Series> = if closed {
+        vec![
+            Series {
+                name: "largest force on the follower's own curve".into(),
+                points: curves[0].clone(),
+                dashed: false,
+            },
+            Series {
+                name: "largest force on the second curve".into(),
+                points: curves[1].clone(),
+                dashed: true,
+            },
+        ]
+    } else {
+        vec![Series {
+            name: "smallest contact force".into(),
+            points: curves[0].clone(),
+            dashed: false,
+        }]
+    };
+    if !closed {
+        series.push(Series {
+            name: "margin".into(),
+            points: vec![(0.0, margin), (rpm(top), margin)],
+            dashed: true,
+        });
+    }
     chart::save(
         &Chart {
-            title: format!(
-                "smallest contact force over a revolution (margin {} N)",
-                num(margin)
-            ),
+            title: if closed {
+                "largest contact force on each curve over a revolution".into()
+            } else {
+                format!(
+                    "smallest contact force over a revolution (margin {} N)",
+                    num(margin)
+                )
+            },
             x_label: "cam speed (rpm)".into(),
-            y_label: "smallest contact force (N)".into(),
-            series: vec![
-                Series {
-                    name: "smallest contact force".into(),
-                    points: curve,
-                    dashed: false,
-                },
-                Series {
-                    name: "margin".into(),
-                    points: vec![(0.0, margin), (top * 60.0 / TAU, margin)],
-                    dashed: true,
-                },
-            ],
+            y_label: if closed {
+                "largest contact force (N)".into()
+            } else {
+                "smallest contact force (N)".into()
+            },
+            series,
             log_y: false,
             x_range: None,
         },

@@ -601,15 +601,17 @@ fn dynamics(
         return Ok(None);
     };
     let forces = match Forces::new(mech, params) {
-        Ok(f) => f,
-        Err(_) => return Ok(None),
+        // the page's force panel is one contact held on by a spring (its jump speed): a
+        // form-closed follower's two contacts are `camkin forces`'s
+        Ok(f) if !f.is_form_closed() => f,
+        _ => return Ok(None),
     };
     let mut coefficients = Vec::with_capacity(angles.len());
     let (mut jump, mut jump_at) = (f64::INFINITY, None);
     // a warm sweep: a cold search at every angle would scan a large profile 720 times
-    let mut sweep = mech.sweep();
+    let mut sweep = forces.sweep();
     for &a in angles {
-        match sweep.step(deg_to_rad(a)).map(|s| forces.from_state(&s)) {
+        match sweep.step(deg_to_rad(a)) {
             Ok(s) => {
                 let [c2, c1, c0] = forces.force_coefficients(&s);
                 coefficients.push(Some([c2, c1, c0, s.lever]));

@@ -1,6 +1,6 @@
 //! A conjugate (form-closed) follower from the command line: the example's constant-diameter cam
 //! drives both rollers (its play column is zero, two contacts at every angle), a second curve's
-//! bad field is placed in the file, and the dynamics commands refuse it with exit code 2.
+//! bad field is placed in the file, and `forces` and `simulate` share the load between them.
 #![allow(clippy::unwrap_used)]
 use crate::common::predicate;
 use crate::common::*;
@@ -67,10 +67,12 @@ fn with_dynamics() -> tempfile::TempDir {
     dir
 }
 
-/// `forces` models a follower held on by a spring: a form-closed one is refused, naming the
-/// table, and nothing is written. `simulate` drives it through both rollers: it stays on the
-/// cam's motion, the load passing between the rollers (`on_conjugate`), without an event; a
-/// second roller that cuts into the cam is refused (exit 2, naming the table, nothing written).
+/// `forces` on a form-closed follower: the load on each roller, one at a time, as the dynamic
+/// simulation's contact force on the roller it says touches (at the same angles, 1e-6 of the
+/// peak); `--margin` (a spring-held follower's) is refused naming it, nothing written.
+/// `simulate` drives it through both rollers: it stays on the cam's motion, the load passing
+/// between the rollers (`on_conjugate`), without an event; a second roller that cuts into the cam
+/// is refused (exit 2, naming the table, nothing written).
 #[test]
 fn dynamics_of_a_form_closed_follower() {
     let dir = with_dynamics();
@@ -79,14 +81,47 @@ fn dynamics_of_a_form_closed_follower() {
     camkin()
         .arg("forces")
         .arg(&mech)
-        .arg("--out")
+        .args(["--margin", "5", "--out"])
         .arg(&out)
         .assert()
         .code(2)
         .stderr(predicate::str::contains(
-            "follower.conjugate: the follower is form-closed",
+            "--margin: the follower is form-closed (follower.conjugate)",
         ));
     assert!(!out.exists(), "forces wrote {out:?}");
+    camkin()
+        .arg("forces")
+        .arg(&mech)
+        .args(["--step", "2", "--face-width", "10", "--out"])
+        .arg(&out)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("load reversals: 2 a revolution"))
+        .stdout(predicate::str::contains("play of the second curve: none"))
+        .stdout(predicate::str::contains(
+            "contact stress on the second curve",
+        ));
+    let (fh, frows) = parse_csv(&std::fs::read(out.join("forces.csv")).unwrap());
+    let fc = columns(&fh);
+    let forces: Vec<(f64, f64, f64)> = frows
+        .iter()
+        .map(|r| {
+            let x = |c: &str| r[fc[c]].parse::<f64>().unwrap();
+            (
+                x("angle_deg"),
+                x("contact_force_N"),
+                x("second_contact_force_N"),
+            )
+        })
+        .collect();
+    let peak = forces.iter().map(|f| f.1.max(f.2)).fold(0.0, f64::max);
+    assert!(peak > 1.0, "{peak}");
+    for f in &forces {
+        assert!(
+            f.1 >= 0.0 && f.2 >= 0.0 && (f.1 == 0.0 || f.2 == 0.0),
+            "{f:?}"
+        );
+    }
     let a = camkin()
         .arg("simulate")
         .arg(&mech)
@@ -103,12 +138,25 @@ fn dynamics_of_a_form_closed_follower() {
         col["in_contact"],
     );
     let mut sides = std::collections::BTreeSet::new();
+    let mut compared = 0;
     for f in &rows {
         let (x, y): (f64, f64) = (f[p].parse().unwrap(), f[k].parse().unwrap());
         assert!((x - y).abs() <= 1e-9, "{f:?}");
         assert_eq!(f[c], "1", "{f:?}");
         sides.insert(f[on].clone());
+        // the kinetostatic force at the same angle, on the roller the simulation says touches
+        let angle: f64 = f[col["cam_angle_deg"]].parse().unwrap();
+        let force: f64 = f[col["contact_force_N"]].parse().unwrap();
+        if let Some(k) = forces
+            .iter()
+            .find(|g| (g.0 - angle.rem_euclid(360.0)).abs() < 1e-9)
+        {
+            let expected = if f[on] == "1" { k.2 } else { k.1 };
+            assert!((force - expected).abs() <= 1e-6 * peak, "{f:?}: {k:?}");
+            compared += 1;
+        }
     }
+    assert!(compared >= 150, "{compared} angles compared");
     assert_eq!(sides.len(), 2, "the load never passes: {sides:?}");
     let tight = dir.path().join("tight.toml");
     let text = std::fs::read_to_string(&mech)

@@ -253,6 +253,56 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
         .stderr(predicate::str::contains("[dynamics]"));
 }
 
+/// Regression (`forces --face-width` on a mushroom follower said "a knife-edge follower has no
+/// line contact"): a follower carrying a curve has the curve's radius at the contact. The
+/// example's crowned face (a circle of 60 mm) moves as a named roller of 60 mm whose centre is
+/// the circle's: the forces and the Hertz stress of the two files agree at every angle (1e-9 of
+/// their peaks), the roller's from its closed form.
+#[test]
+fn forces_face_width_on_a_mushroom_follower_is_not_called_a_knife_edge() {
+    let dir = tempfile::tempdir().unwrap();
+    let dynamics = "\n[dynamics]\nmass = 0.3\nspring_stiffness = 2000.0\nspring_preload = 100.0\n";
+    let text = std::fs::read_to_string(examples().join("mushroom-follower.toml")).unwrap();
+    let mushroom = dir.path().join("mushroom.toml");
+    std::fs::write(&mushroom, format!("{text}{dynamics}")).unwrap();
+    let (head, _) = text.split_once("[follower]").unwrap();
+    let roller = dir.path().join("roller.toml");
+    std::fs::write(
+        &roller,
+        format!("{head}[follower]\nkind = \"translating-roller\"\ndirection = [1.0, 0.0]\nroller_radius = 60.0\n{dynamics}"),
+    )
+    .unwrap();
+    let mut tables = Vec::new();
+    for (name, file) in [("mushroom", &mushroom), ("roller", &roller)] {
+        let out = dir.path().join(name);
+        camkin()
+            .arg("forces")
+            .arg(file)
+            .args(["--face-width", "10", "--out"])
+            .arg(&out)
+            .assert()
+            .success()
+            .stdout(predicate::str::contains(
+                "contact stress (Hertz line contact",
+            ));
+        tables.push(forces_csv(&out));
+    }
+    let (h, a) = &tables[0];
+    let b = &tables[1].1;
+    for name in [
+        "contact_force_N",
+        "contact_stress_MPa",
+        "camshaft_torque_N_m",
+    ] {
+        let c = col(h, name);
+        let peak = a.iter().map(|r| r[c].abs()).fold(0.0, f64::max);
+        assert!(peak > 0.0, "{name}");
+        for (x, y) in a.iter().zip(b) {
+            assert!((x[c] - y[c]).abs() <= 1e-9 * peak, "{name}: {x:?} vs {y:?}");
+        }
+    }
+}
+
 /// `camkin profile` on the eccentric disc: the polar table is the disc's radius in polar form,
 /// the pitch curve and the cutter path the discs of radius R + r (the offset definition) to 1e-9
 /// of the size; the DXF says centimetres and its arcs lie on the exact curves within the stated

@@ -23,9 +23,18 @@
 //! so `F |J|` is a quadratic in ω at every cam angle: the follower leaves the cam first at the
 //! smallest ω where it reaches the margin anywhere, and the preload (or stiffness) that keeps it
 //! on up to a target speed is a maximum over the revolution of a linear bound.
+//!
+//! A form-closed (conjugate) follower has a second curve that touches the cam from the other
+//! side ([`Mechanism::with_conjugate`]): where `R = a (M q̈ + c q̇ − G) + F₀ + k ℓ` is negative the
+//! follower's own curve would leave the cam and the second curve carries `−R / |J₂|` instead
+//! (`J₂` its lever at its own contact), so `F₁ |J₁| − F₂ |J₂| = R`; one curve carries at a time
+//! (no preload between the two). The torque sums both contacts. The second curve's contact is
+//! taken where it touches at its own first touch: exact for a conjugate without play; with play,
+//! the follower's motion is still its own curve's (the dynamics, `camkin simulate`, crosses the
+//! play).
 
 use super::{DynamicsError, FollowerDynamics};
-use crate::cam::{CamError, FollowerState, Mechanism, Travel};
+use crate::cam::{CamError, FollowerCurve, FollowerState, Mechanism, Sweep, Travel};
 use crate::geometry::cross;
 
 /// The forces at one cam angle under permanent contact (SI units).
@@ -52,14 +61,40 @@ pub struct ForceState {
     pub cam_radius: f64,
     /// pressure angle, rad
     pub pressure_angle: f64,
+    /// the follower's curve's radius of curvature at the contact, m (positive: convex; ∞ for a
+    /// flat face); `None` where the contact is not a line contact of two smooth surfaces (a knife
+    /// edge, or a corner of either curve)
+    pub follower_radius: Option<f64>,
     /// `q'`, `q''` in the cam angle
     pub dq: [f64; 2],
+    /// a form-closed follower's second curve: its contact and the force it carries (`None`
+    /// without a second curve)
+    pub second: Option<SecondContact>,
+}
+
+/// The second curve of a form-closed follower at one cam angle ([`ForceState::second`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SecondContact {
+    /// the force it carries along its common normal, N, ≥ 0 (zero where the follower's own curve
+    /// carries)
+    pub contact_force: f64,
+    /// its `|J₂|` (as [`ForceState::lever`])
+    pub lever: f64,
+    /// the cam profile's radius of curvature at its contact, m (positive: convex)
+    pub cam_radius: f64,
+    /// its pressure angle, rad
+    pub pressure_angle: f64,
+    /// its radius of curvature at the contact, m (as [`ForceState::follower_radius`])
+    pub follower_radius: Option<f64>,
 }
 
 /// Kinetostatics of a cam mechanism in SI units (lengths in metres).
 #[derive(Debug, Clone)]
 pub struct Forces<'a> {
     mech: &'a Mechanism,
+    /// a form-closed follower's second curve: its own mechanism
+    second: Option<&'a Mechanism>,
     params: FollowerDynamics,
     travel: Travel,
     /// mass or inertia
@@ -69,11 +104,9 @@ pub struct Forces<'a> {
 }
 
 impl<'a> Forces<'a> {
-    /// The kinetostatics of `mech` (lengths in metres) with `params`.
+    /// The kinetostatics of `mech` (lengths in metres) with `params`; for a form-closed
+    /// follower, both curves' forces (see the module's notes).
     pub fn new(mech: &'a Mechanism, params: FollowerDynamics) -> Result<Self, DynamicsError> {
-        if mech.is_conjugate() {
-            return Err(DynamicsError::FormClosed);
-        }
         let travel = mech
             .travel()
             .map_err(|source| DynamicsError::Kinematics { source })?;
@@ -91,6 +124,7 @@ impl<'a> Forces<'a> {
         };
         Ok(Self {
             mech,
+            second: mech.conjugate_side().map(|(m, _)| m),
             params,
             travel,
             m,
@@ -103,42 +137,83 @@ impl<'a> Forces<'a> {
         &self.travel
     }
 
-    /// The forces at cam angle `theta` (rad) at the cam's own speed.
-    pub fn at(&self, theta: f64) -> Result<ForceState, CamError> {
-        Ok(self.from_state(&self.mech.analyze(theta)?))
+    /// The follower is form-closed: [`ForceState::second`] is set.
+    pub fn is_form_closed(&self) -> bool {
+        self.second.is_some()
     }
 
-    /// The forces at the cam's own speed from the follower's state `s` (of this mechanism, at
-    /// its cam angle): a sweep's states ([`Mechanism::sweep`]) give the forces over a revolution
-    /// without a cold search at every angle.
-    pub fn from_state(&self, s: &FollowerState) -> ForceState {
+    /// The forces at cam angle `theta` (rad) at the cam's own speed: a cold search (over many
+    /// angles, [`Forces::sweep`] is faster).
+    pub fn at(&self, theta: f64) -> Result<ForceState, CamError> {
+        let s = self.mech.analyze(theta)?;
+        let s2 = self.second.map(|m| m.analyze(theta)).transpose()?;
+        Ok(self.of_states(&s, s2.as_ref()))
+    }
+
+    /// Warm-started forces from angle to angle ([`ForceSweep::step`]), as [`Mechanism::sweep`].
+    pub fn sweep(&self) -> ForceSweep<'_> {
+        ForceSweep {
+            forces: self,
+            first: self.mech.sweep(),
+            second: self.second.map(Mechanism::sweep),
+        }
+    }
+
+    /// The forces from the follower's state `s` and, for a form-closed follower, its second
+    /// curve's state `s2` at the same cam angle.
+    fn of_states(&self, s: &FollowerState, s2: Option<&FollowerState>) -> ForceState {
         let theta = s.cam_angle;
         let cam = self.mech.cam();
         let (w, al) = (cam.speed(), cam.angular_acceleration());
-        let orient = self.mech.orientation();
-        // the normal out of the cam, onto the follower
-        let n = -orient * *s.normal;
-        let jac = n.dot(&s.follower_motion);
+        let sense = cam.direction().sign();
+        let (n, jac) = lever(self.mech, s);
         let a = self.travel.away;
         let lift = self.travel.lift(s.position);
         let p = &self.params;
         let spring = p.spring_preload + p.spring_stiffness * lift;
+        // the force if the follower's own curve carried alone: `F |J| = R`
         let f = (self.m * s.acceleration + a * spring + p.damping * s.velocity - self.g) / jac;
-        let r = s.contact_world - cam.pivot();
-        let torque = cam.direction().sign() * f * cross(r, n);
+        let arm = |s: &FollowerState, n| cross(s.contact_world - cam.pivot(), n);
+        let (f1, second, torque2, power2) = match (self.second, s2) {
+            (Some(m2), Some(s2)) => {
+                // where R < 0 the second curve carries: F₂ |J₂| = −R
+                let (n2, jac2) = lever(m2, s2);
+                let f2 = if f < 0.0 {
+                    -f * jac.abs() / jac2.abs()
+                } else {
+                    0.0
+                };
+                let second = SecondContact {
+                    contact_force: f2,
+                    lever: jac2.abs(),
+                    cam_radius: s2.radius_of_curvature,
+                    pressure_angle: s2.pressure_angle(),
+                    follower_radius: follower_radius(m2, s2),
+                };
+                (
+                    f.max(0.0),
+                    Some(second),
+                    sense * f2 * arm(s2, n2),
+                    f2 * jac2 * s2.velocity,
+                )
+            }
+            _ => (f, None, 0.0, 0.0),
+        };
         let q1 = s.velocity / w;
         let q2 = (s.acceleration - q1 * al) / (w * w);
         ForceState {
             cam_angle: theta,
             lift,
-            contact_force: f,
+            contact_force: f1,
             spring_force: spring,
-            camshaft_torque: torque,
-            follower_power: f * jac * s.velocity,
+            camshaft_torque: sense * f1 * arm(s, n) + torque2,
+            follower_power: f1 * jac * s.velocity + power2,
             lever: jac.abs(),
             cam_radius: s.radius_of_curvature,
             pressure_angle: s.pressure_angle(),
+            follower_radius: follower_radius(self.mech, s),
             dq: [q1, q2],
+            second,
         }
     }
 
@@ -151,7 +226,8 @@ impl<'a> Forces<'a> {
 
     /// `[c2, c1, c0]` with `F |J| = c2 ω² + c1 ω + c0` at this angle, at any constant cam speed
     /// ω (rad/s): the contact force at any speed is `(c2 ω² + c1 ω + c0) / lever` (a front end
-    /// with a speed slider evaluates it without asking again).
+    /// with a speed slider evaluates it without asking again). For a form-closed follower this is
+    /// `R`: where it is negative the second curve carries `−R / second.lever`.
     pub fn force_coefficients(&self, s: &ForceState) -> [f64; 3] {
         let a = self.travel.away;
         [
@@ -168,12 +244,24 @@ impl<'a> Forces<'a> {
     }
 
     /// The smallest constant cam speed (rad/s) at which the contact force at this angle falls to
-    /// `margin` N (∞ if it never does; 0 if it is below the margin at rest).
+    /// `margin` N (∞ if it never does; 0 if it is below the margin at rest). For a form-closed
+    /// follower with `margin` 0: the speed from which its second curve takes the load here.
     pub fn leave_speed(&self, s: &ForceState, margin: f64) -> f64 {
         let (c2, c1, c0) = self.quadratic(s);
         let c0 = c0 - margin * s.lever;
         if c0 < 0.0 {
             return 0.0;
+        }
+        if c0 == 0.0 {
+            // at the margin at rest: below it at once if the force falls with ω, else past the
+            // other root `−c1/c2` of `ω (c2 ω + c1)`
+            return if c1 < 0.0 || (c1 == 0.0 && c2 < 0.0) {
+                0.0
+            } else if c2 < 0.0 {
+                -c1 / c2
+            } else {
+                f64::INFINITY
+            };
         }
         // smallest positive root of c2 ω² + c1 ω + c0 = 0 where the quadratic turns negative
         if c2 == 0.0 {
@@ -228,6 +316,51 @@ impl<'a> Forces<'a> {
             }
         }
         m
+    }
+}
+
+/// Warm-started forces over a sequence of cam angles ([`Forces::sweep`]): the follower's (and a
+/// second curve's) contact found from the previous angle's, as [`Mechanism::sweep`].
+#[derive(Debug, Clone)]
+pub struct ForceSweep<'a> {
+    forces: &'a Forces<'a>,
+    first: Sweep<'a>,
+    second: Option<Sweep<'a>>,
+}
+
+impl ForceSweep<'_> {
+    /// The forces at cam angle `theta` (rad), the next of the sweep.
+    pub fn step(&mut self, theta: f64) -> Result<ForceState, CamError> {
+        let s = self.first.step(theta)?;
+        let s2 = self.second.as_mut().map(|w| w.step(theta)).transpose()?;
+        Ok(self.forces.of_states(&s, s2.as_ref()))
+    }
+}
+
+/// The normal out of the cam onto the follower's curve at the contact of `s` (world) and the
+/// lever `J = n·∂v_P/∂q̇` (signed: `a J = |J|`).
+fn lever(mech: &Mechanism, s: &FollowerState) -> (crate::Vec2, f64) {
+    let n = -mech.orientation() * *s.normal;
+    (n, n.dot(&s.follower_motion))
+}
+
+/// The radius of curvature (m, positive: convex) of the follower's curve at the contact of `s`:
+/// a roller's radius, a flat face's ∞, a carried curve's at the contact (its material on its
+/// left, so convex where it turns counter-clockwise); `None` for a knife edge and where either
+/// curve touches with a corner (a point: no line contact).
+fn follower_radius(mech: &Mechanism, s: &FollowerState) -> Option<f64> {
+    if s.corner.is_some() {
+        return None;
+    }
+    match mech.follower_curve() {
+        FollowerCurve::Circle(c) => Some(c.radius()),
+        FollowerCurve::Line(_) => Some(f64::INFINITY),
+        FollowerCurve::Point(_) => None,
+        FollowerCurve::Carried(c) => {
+            let d = c.eval(s.follower_param);
+            let k = cross(d.d1, d.d2) / d.d1.norm().powi(3);
+            Some(if k == 0.0 { f64::INFINITY } else { 1.0 / k })
+        }
     }
 }
 

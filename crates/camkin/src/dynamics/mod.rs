@@ -40,7 +40,9 @@ mod solver;
 
 pub use cam::Multibody;
 pub use follower::{Event, EventKind, FollowerDynamics, Sample, MAX_RATE_STEP, REBOUND_TOLERANCE};
-pub use forces::{effective_modulus, hertz_line_pressure, ForceState, Forces};
+pub use forces::{
+    effective_modulus, hertz_line_pressure, ForceState, ForceSweep, Forces, SecondContact,
+};
 pub use model::{Constraint, ForceElement, RigidBody, System};
 pub use reduced::Reduced;
 pub use run::Run;

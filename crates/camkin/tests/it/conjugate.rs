@@ -6,7 +6,7 @@
 use crate::common::yoke_spec;
 use camkin::cam::{Cam, Follower, FollowerProfile, Mechanism, Sense};
 use camkin::curve::{Circle, Curve, Line};
-use camkin::dynamics::{DynamicsError, FollowerDynamics, Forces};
+
 use camkin::spec::{CamSpec, FollowerSpec, MechanismSpec, ProfileSpec, SpecError};
 use camkin::{Point2, Vec2};
 use std::f64::consts::TAU;
@@ -312,24 +312,6 @@ fn conjugate_spec_errors_name_the_field() {
         let path = e.field().to_string();
         assert!(path.starts_with("follower.conjugate"), "{path}");
     }
-}
-
-/// Neither the kinetostatics nor the simulation treats a form-closed follower as one held on by
-/// a spring.
-#[test]
-fn dynamics_refuses_a_form_closed_follower() {
-    let m = constant_diameter(0.0);
-    let params = FollowerDynamics {
-        mass: 0.5,
-        spring_stiffness: 1000.0,
-        spring_preload: 10.0,
-        inertia: 0.0,
-        damping: 0.0,
-        restitution: 0.0,
-        gravity: Vec2::zeros(),
-    };
-    let e = Forces::new(&m, params).unwrap_err();
-    assert!(matches!(e, DynamicsError::FormClosed), "{e}");
 }
 
 /// The design check of the play: passed for an exact conjugate and a constant clearance (the

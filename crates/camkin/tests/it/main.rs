@@ -5,6 +5,7 @@
 mod circle_followers;
 mod common;
 mod conjugate;
+mod conjugate_forces;
 mod contact_general;
 mod contact_jumps;
 mod corner_contacts;
