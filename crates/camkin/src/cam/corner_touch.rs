@@ -11,7 +11,6 @@
 //! parameter fixed at its joint.
 
 use super::carried::{Limits, Sides};
-use super::corners::depth_at;
 use super::follower::carried::Carried;
 use super::{CamError, Corner, Mechanism, StopReason, Touch};
 use crate::body::CurveInFrame;
@@ -259,8 +258,10 @@ impl Mechanism {
                 continue;
             }
             let local = frame.inverse_transform_point(&x);
-            if let Some(foot) = self.corners.foot(profile, local, 80) {
-                let depth = depth_at(profile, foot, local, self.orientation);
+            if let Some((foot, depth)) =
+                self.corners
+                    .deep_foot(profile, local, self.orientation, tol)
+            {
                 keep(Inside {
                     side: Corner::Follower,
                     param: b,
@@ -285,8 +286,7 @@ impl Mechanism {
                 continue;
             }
             let local = fb.inverse_transform_point(&x);
-            if let Some(foot) = c.corners.foot(c.curve.as_ref(), local, 80) {
-                let depth = depth_at(c.curve.as_ref(), foot, local, 1.0);
+            if let Some((foot, depth)) = c.corners.deep_foot(c.curve.as_ref(), local, 1.0, tol) {
                 keep(Inside {
                     side: Corner::Cam,
                     param: b,
