@@ -755,6 +755,8 @@ impl Mechanism {
                 }
             },
         );
+        // corners resting on the other curve (the caller keeps one contact per place)
+        self.corners_touching(c, frame, t, out);
     }
 
     /// The accepted touch from `t`: moved to an earlier tangency while one is found (a few
@@ -787,7 +789,7 @@ impl Mechanism {
     }
 
     /// How the bodies meet at a touch; `None` when it is off an open curve's bounds.
-    fn carried_sides(&self, c: &Carried, frame: &Frame, t: &Touch) -> Option<Sides> {
+    pub(super) fn carried_sides(&self, c: &Carried, frame: &Frame, t: &Touch) -> Option<Sides> {
         if t.corner.is_some() {
             return self.corner_sides(c, frame, t);
         }

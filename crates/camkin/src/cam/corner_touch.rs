@@ -236,6 +236,65 @@ impl Mechanism {
     /// tolerance (`t`'s own corner aside).
     pub(super) fn corner_inside(&self, c: &Carried, frame: &Frame, t: &Touch) -> Option<Inside> {
         let tol = self.options.touch_tolerance;
+        let mut deepest: Option<Inside> = None;
+        self.corners_deeper(c, frame, t, tol, |k| {
+            if k.depth > tol && deepest.is_none_or(|d| k.depth > d.depth) {
+                deepest = Some(k);
+            }
+        });
+        deepest
+    }
+
+    /// The corners of either curve that rest on the other at `t`'s position (within the touch
+    /// tolerance, both pieces meeting there outside the other body), `t`'s own corner aside, as
+    /// corner touches appended to `out`: a tooth's tip on the mating flank beside the first
+    /// contact, a flat face on two tip corners at once.
+    pub(crate) fn corners_touching(
+        &self,
+        c: &Carried,
+        frame: &Frame,
+        t: &Touch,
+        out: &mut Vec<Touch>,
+    ) {
+        let tol = self.options.touch_tolerance;
+        let mut found = Vec::new();
+        self.corners_deeper(c, frame, t, -tol, |k| {
+            if k.depth.abs() <= tol {
+                found.push(k);
+            }
+        });
+        for k in found {
+            let (u, v) = match k.side {
+                Corner::Cam => (k.param, k.foot),
+                Corner::Follower => (k.foot, k.param),
+            };
+            let t2 = Touch {
+                u,
+                v,
+                q: t.q,
+                corner: Some(k.side),
+            };
+            if self
+                .carried_sides(c, frame, &t2)
+                .is_some_and(|s| s.opposite)
+            {
+                out.push(t2);
+            }
+        }
+    }
+
+    /// Every corner of either curve (`t`'s own aside) within reach of the other body whose depth
+    /// inside it, with the follower at `t`'s position, may exceed `threshold`
+    /// ([`super::corners::Corners::deep_foot`]), handed to `visit` with its exact depth.
+    fn corners_deeper(
+        &self,
+        c: &Carried,
+        frame: &Frame,
+        t: &Touch,
+        threshold: f64,
+        mut visit: impl FnMut(Inside),
+    ) {
+        let tol = self.options.touch_tolerance;
         let fb = self.geometry.joint.pose(t.q).frame();
         let profile = self.cam.profile.as_ref();
         let own = |side: Corner, b: f64| {
@@ -244,12 +303,6 @@ impl Mechanism {
                     Corner::Cam => b == t.u,
                     Corner::Follower => self.corner_param(c, side, t.v) == Some(b),
                 }
-        };
-        let mut deepest: Option<Inside> = None;
-        let mut keep = |k: Inside| {
-            if k.depth > tol && deepest.is_none_or(|d| k.depth > d.depth) {
-                deepest = Some(k);
-            }
         };
         // the follower's corners within the cam's reach, inside the cam
         for &(b, y) in &c.corners.at {
@@ -260,9 +313,9 @@ impl Mechanism {
             let local = frame.inverse_transform_point(&x);
             if let Some((foot, depth)) =
                 self.corners
-                    .deep_foot(profile, local, self.orientation, tol)
+                    .deep_foot(profile, local, self.orientation, threshold)
             {
-                keep(Inside {
+                visit(Inside {
                     side: Corner::Follower,
                     param: b,
                     foot,
@@ -286,8 +339,10 @@ impl Mechanism {
                 continue;
             }
             let local = fb.inverse_transform_point(&x);
-            if let Some((foot, depth)) = c.corners.deep_foot(c.curve.as_ref(), local, 1.0, tol) {
-                keep(Inside {
+            if let Some((foot, depth)) =
+                c.corners.deep_foot(c.curve.as_ref(), local, 1.0, threshold)
+            {
+                visit(Inside {
                     side: Corner::Cam,
                     param: b,
                     foot,
@@ -295,7 +350,6 @@ impl Mechanism {
                 });
             }
         }
-        deepest
     }
 
     /// The corner touch of the corner `k` found inside the other body with the follower at `q`.

@@ -137,15 +137,10 @@ fn wedge_rests_on_its_tip_as_a_knife() {
     );
 }
 
-/// A flat-faced follower on a spur gear rests on a tip corner or on a tip land: its position is
-/// the gear's support function, `r_a cos δ` with `δ` the angle from the face's normal to the
-/// nearest tip land (0 on a land), so on a corner `q̇ = ∓ω r_a sin δ` and `q̈ = −ω² r_a cos δ`. The
-/// lands are where the involute reaches the tip circle, from the gear's own formula
-/// (`ψ_a = π/2z + inv α − inv α_a` each side of the tooth's centre line).
-#[test]
-fn flat_face_on_a_gear_rests_on_its_tip_corners() {
-    let (m, z, alpha) = (2.0, 20u32, 20f64.to_radians());
-    let gear = InvoluteGear::new(InvoluteGearSpec::new(m, z, alpha)).unwrap();
+/// The centre angles of a spur gear's tip lands, from its corners on the tip circle (each pair
+/// `2ψ_a` apart), and the lands' half-angle `ψ_a = π/2z + inv α − inv α_a` from the gear's own
+/// formula.
+fn tip_lands(gear: &InvoluteGear, z: u32, alpha: f64) -> (Vec<f64>, f64) {
     let (ra, rb) = (gear.tip_radius(), gear.base_radius());
     let psi_a =
         PI / (2.0 * f64::from(z)) + involute_function(alpha) - involute_function((rb / ra).acos());
@@ -166,6 +161,79 @@ fn flat_face_on_a_gear_rests_on_its_tip_corners() {
         })
         .collect();
     assert_eq!(centres.len(), z as usize, "a land of 2ψ_a per tooth");
+    (centres, psi_a)
+}
+
+/// Regression (`contacts` listed only the first of two contacts when the second rests on a
+/// corner): a flat face on a spur gear, at the angle where the face's normal points midway
+/// between two tip lands, rests on two tip corners at once, `r_a (cos δ, ± sin δ)` with
+/// `δ = π/z − ψ_a`, one arriving and one leaving: their normal velocities differ by
+/// `2 ω r_a sin δ`. A hundredth of a degree either side, one corner only.
+#[test]
+fn a_flat_face_on_two_tip_corners_lists_both() {
+    let (m, z, alpha) = (2.0, 20u32, 20f64.to_radians());
+    let gear = InvoluteGear::new(InvoluteGearSpec::new(m, z, alpha)).unwrap();
+    let ra = gear.tip_radius();
+    let (centres, psi_a) = tip_lands(&gear, z, alpha);
+    let cam = Cam::from_rpm(Arc::new(gear), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
+    let w = cam.speed();
+    let face = Follower::Translating {
+        direction: Vec2::x(),
+        offset: 0.0,
+        profile: FollowerProfile(Arc::new(
+            Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
+        )),
+    };
+    let mech = Mechanism::new(cam, face).unwrap();
+    let delta = PI / f64::from(z) - psi_a;
+    for c in &centres[..5] {
+        // the face's normal (+x) seen from the gear is at −θ: midway between two lands
+        let theta = -(c + PI / f64::from(z));
+        let s = mech.analyze(theta).unwrap();
+        let what = format!("at {:.3}°", theta.to_degrees());
+        assert!(
+            (s.position - ra * delta.cos()).abs() <= 1e-12 * ra,
+            "{what}"
+        );
+        let cs = mech.contacts_at(&s).unwrap();
+        assert_eq!(cs.len(), 2, "{what}: {cs:?}");
+        let mut ys: Vec<f64> = cs.iter().map(|k| k.point.y).collect();
+        ys.sort_by(f64::total_cmp);
+        for (y, sign) in ys.iter().zip([-1.0, 1.0]) {
+            assert!(
+                (y - sign * ra * delta.sin()).abs() <= 1e-9 * ra,
+                "{what}: {ys:?}"
+            );
+        }
+        for k in &cs {
+            assert_eq!(k.corner, Some(Corner::Cam), "{what}");
+            assert!((k.point.x - ra * delta.cos()).abs() <= 1e-9 * ra, "{what}");
+            assert!(k.gap.abs() <= 1e-9 * ra, "{what}: gap {}", k.gap);
+        }
+        let dv = (cs[0].normal_velocity - cs[1].normal_velocity).abs();
+        assert!(
+            (dv - 2.0 * w * ra * delta.sin()).abs() <= 1e-9 * w * ra,
+            "{what}: {dv}"
+        );
+        for side in [-1.0, 1.0] {
+            let near = theta + side * 0.01f64.to_radians();
+            let s = mech.analyze(near).unwrap();
+            assert_eq!(mech.contacts_at(&s).unwrap().len(), 1, "{what} {side}");
+        }
+    }
+}
+
+/// A flat-faced follower on a spur gear rests on a tip corner or on a tip land: its position is
+/// the gear's support function, `r_a cos δ` with `δ` the angle from the face's normal to the
+/// nearest tip land (0 on a land), so on a corner `q̇ = ∓ω r_a sin δ` and `q̈ = −ω² r_a cos δ`. The
+/// lands are where the involute reaches the tip circle, from the gear's own formula
+/// (`ψ_a = π/2z + inv α − inv α_a` each side of the tooth's centre line).
+#[test]
+fn flat_face_on_a_gear_rests_on_its_tip_corners() {
+    let (m, z, alpha) = (2.0, 20u32, 20f64.to_radians());
+    let gear = InvoluteGear::new(InvoluteGearSpec::new(m, z, alpha)).unwrap();
+    let ra = gear.tip_radius();
+    let (centres, psi_a) = tip_lands(&gear, z, alpha);
     let cam = Cam::from_rpm(Arc::new(gear), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
     let w = cam.speed();
     let face = Follower::Translating {
