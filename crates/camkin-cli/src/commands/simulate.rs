@@ -304,6 +304,20 @@ fn plot(
         x_range: None,
     };
     chart::save(&motion, &dir.join("motion"))?;
+    // the two positions differ by microns where they differ at all: their difference, drawn
+    let deviation = Chart {
+        title: "follower position less the kinematic one (lift-off, play)".into(),
+        x_label: "cam angle (°)".into(),
+        y_label: format!("dynamic − kinematic position ({pu})"),
+        series: vec![Series {
+            name: "dynamic − kinematic".into(),
+            points: pts(&|k| c(samples[k].position) - c(rows[k].kinematic_position)),
+            dashed: false,
+        }],
+        log_y: false,
+        x_range: None,
+    };
+    chart::save(&deviation, &dir.join("deviation"))?;
     let acc = Chart {
         title: "follower acceleration: dynamic and kinematic".into(),
         x_label: "cam angle (°)".into(),

@@ -87,9 +87,17 @@ fn lift_off_and_impacts_are_reported_and_written() {
         "acceleration.png",
         "contact_force.png",
         "contact_force.svg",
+        "deviation.png",
+        "deviation.svg",
     ] {
         assert!(dir.path().join(f).exists(), "{f}");
     }
+    // the deviation plot names its quantity and its unit
+    let svg = std::fs::read_to_string(dir.path().join("deviation.svg")).unwrap();
+    assert!(
+        svg.contains("dynamic − kinematic position (mm)"),
+        "axis label"
+    );
 }
 
 #[test]
