@@ -6,7 +6,7 @@
 //! motion across the load reversals.
 #![allow(clippy::unwrap_used)]
 use crate::common::*;
-use camkin::cam::{Cam, Follower, FollowerProfile, Mechanism, Sense};
+use camkin::cam::{Follower, FollowerProfile, Mechanism, Sense};
 use camkin::curve::{Circle, Curve, Ellipse, InvoluteGear, InvoluteGearSpec, Line};
 use camkin::dynamics::{AugmentedLagrangian, FollowerDynamics, Forces, Simulation};
 use camkin::{Point2, Vec2};
@@ -281,15 +281,7 @@ fn a_knife_edge_and_a_corner_have_no_follower_radius() {
     let f = Forces::new(&knife, params(M, 0.0, 1000.0, 10.0)).unwrap();
     assert_eq!(f.at(0.3).unwrap().follower_radius, None);
     let gear = InvoluteGear::new(InvoluteGearSpec::new(0.002, 20, 20f64.to_radians())).unwrap();
-    let cam = Cam::from_rpm(Arc::new(gear), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
-    let face = Follower::Translating {
-        direction: Vec2::x(),
-        offset: 0.0,
-        profile: FollowerProfile(Arc::new(
-            Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
-        )),
-    };
-    let mech = Mechanism::new(cam, face).unwrap();
+    let mech = flat_face_on(gear);
     let f = Forces::new(&mech, params(M, 0.0, 1000.0, 10.0)).unwrap();
     let mut seen = [0, 0];
     for k in 0..120 {

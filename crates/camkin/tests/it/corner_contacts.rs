@@ -2,11 +2,9 @@
 //! corner on the cam, and a cam's corner on the follower, against closed forms that share nothing
 //! with the method (a knife's kinematics, the support function of a gear's tip circle).
 
-use crate::common::{ellipse, mechanism, paper_profile};
-use camkin::cam::{Cam, Corner, Follower, FollowerProfile, Mechanism, Sense};
-use camkin::curve::{
-    involute_function, Curve, Derivs, Domain, InvoluteGear, InvoluteGearSpec, Line,
-};
+use crate::common::{ellipse, flat_face_on, mechanism, paper_profile};
+use camkin::cam::{Corner, Follower, FollowerProfile, Sense};
+use camkin::curve::{involute_function, Curve, Derivs, Domain, InvoluteGear, InvoluteGearSpec};
 use camkin::{Point2, Vec2};
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
@@ -164,6 +162,34 @@ fn tip_lands(gear: &InvoluteGear, z: u32, alpha: f64) -> (Vec<f64>, f64) {
     (centres, psi_a)
 }
 
+/// A flat face on a 20-tooth spur gear (module 2, 20°) turning at 1000 rpm, with the gear's
+/// tooth count, tip radius, speed (rad/s) and tip lands ([`tip_lands`]).
+struct Face {
+    mech: camkin::cam::Mechanism,
+    z: u32,
+    ra: f64,
+    w: f64,
+    centres: Vec<f64>,
+    psi_a: f64,
+}
+
+fn face_on_a_spur_gear() -> Face {
+    let (m, z, alpha) = (2.0, 20u32, 20f64.to_radians());
+    let gear = InvoluteGear::new(InvoluteGearSpec::new(m, z, alpha)).unwrap();
+    let ra = gear.tip_radius();
+    let (centres, psi_a) = tip_lands(&gear, z, alpha);
+    let mech = flat_face_on(gear);
+    let w = mech.cam().speed();
+    Face {
+        mech,
+        z,
+        ra,
+        w,
+        centres,
+        psi_a,
+    }
+}
+
 /// Regression (`contacts` listed only the first of two contacts when the second rests on a
 /// corner): a flat face on a spur gear, at the angle where the face's normal points midway
 /// between two tip lands, rests on two tip corners at once, `r_a (cos δ, ± sin δ)` with
@@ -171,20 +197,14 @@ fn tip_lands(gear: &InvoluteGear, z: u32, alpha: f64) -> (Vec<f64>, f64) {
 /// `2 ω r_a sin δ`. A hundredth of a degree either side, one corner only.
 #[test]
 fn a_flat_face_on_two_tip_corners_lists_both() {
-    let (m, z, alpha) = (2.0, 20u32, 20f64.to_radians());
-    let gear = InvoluteGear::new(InvoluteGearSpec::new(m, z, alpha)).unwrap();
-    let ra = gear.tip_radius();
-    let (centres, psi_a) = tip_lands(&gear, z, alpha);
-    let cam = Cam::from_rpm(Arc::new(gear), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
-    let w = cam.speed();
-    let face = Follower::Translating {
-        direction: Vec2::x(),
-        offset: 0.0,
-        profile: FollowerProfile(Arc::new(
-            Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
-        )),
-    };
-    let mech = Mechanism::new(cam, face).unwrap();
+    let Face {
+        mech,
+        z,
+        ra,
+        w,
+        centres,
+        psi_a,
+    } = face_on_a_spur_gear();
     let delta = PI / f64::from(z) - psi_a;
     for c in &centres[..5] {
         // the face's normal (+x) seen from the gear is at −θ: midway between two lands
@@ -230,20 +250,9 @@ fn a_flat_face_on_two_tip_corners_lists_both() {
 /// (`ψ_a = π/2z + inv α − inv α_a` each side of the tooth's centre line).
 #[test]
 fn flat_face_on_a_gear_rests_on_its_tip_corners() {
-    let (m, z, alpha) = (2.0, 20u32, 20f64.to_radians());
-    let gear = InvoluteGear::new(InvoluteGearSpec::new(m, z, alpha)).unwrap();
-    let ra = gear.tip_radius();
-    let (centres, psi_a) = tip_lands(&gear, z, alpha);
-    let cam = Cam::from_rpm(Arc::new(gear), Point2::origin(), Sense::Ccw, 1000.0).unwrap();
-    let w = cam.speed();
-    let face = Follower::Translating {
-        direction: Vec2::x(),
-        offset: 0.0,
-        profile: FollowerProfile(Arc::new(
-            Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
-        )),
-    };
-    let mech = Mechanism::new(cam, face).unwrap();
+    let face = face_on_a_spur_gear();
+    let (mech, ra, w, psi_a) = (face.mech, face.ra, face.w, face.psi_a);
+    let centres = face.centres;
     let mut sweep = mech.sweep();
     let (mut on_corner, mut on_land) = (0, 0);
     for k in 0..=1200 {

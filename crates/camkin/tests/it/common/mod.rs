@@ -59,6 +59,19 @@ pub fn mechanism(
     Mechanism::new(Cam::from_rpm(profile, pivot, dir, rpm).unwrap(), f).unwrap()
 }
 
+/// A flat face on a slide along +x (the face the line x = 0 of its frame, its material beyond
+/// it) on `gear`, the cam, turning counter-clockwise at 1000 rpm about the origin.
+pub fn flat_face_on(gear: camkin::curve::InvoluteGear) -> Mechanism {
+    let face = Follower::Translating {
+        direction: Vec2::x(),
+        offset: 0.0,
+        profile: FollowerProfile(Arc::new(
+            Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap(),
+        )),
+    };
+    mechanism(Arc::new(gear), Point2::origin(), Sense::Ccw, 1000.0, face)
+}
+
 /// Every follower type, placed sensibly around a cam of size about 5 whose axis is `pivot`.
 pub fn all_followers(pivot: Point2) -> Vec<Follower> {
     use camkin::Vec2;
