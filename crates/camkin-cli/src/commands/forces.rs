@@ -492,20 +492,28 @@ fn form_closed_report(
             None
         }
     };
-    let mut last = states.iter().rev().find_map(side);
+    // `R = F₁ |J₁| − F₂ |J₂|`: where it changes sign, the load passes (linear between samples)
+    let net = |s: &ForceState| {
+        s.contact_force * s.lever - s.second.map_or(0.0, |c| c.contact_force * c.lever)
+    };
+    let mut last = states
+        .iter()
+        .rev()
+        .find_map(|s| side(s).map(|d| (d, s.cam_angle - TAU, net(s))));
     let mut reversals = Vec::new();
     for s in states {
         if let Some(now) = side(s) {
-            if last.is_some_and(|l| l != now) {
-                reversals.push(angle(s.cam_angle));
+            let r = net(s);
+            if let Some((_, t0, r0)) = last.filter(|l| l.0 != now) {
+                reversals.push(angle(t0 + (s.cam_angle - t0) * r0 / (r0 - r)));
             }
-            last = Some(now);
+            last = Some((now, s.cam_angle, r));
         }
     }
     r += &if reversals.is_empty() {
         format!(
             "load reversals: none (the {} carries at every angle)\n",
-            if last == Some(true) {
+            if last.is_some_and(|l| l.0) {
                 "second curve"
             } else {
                 "follower's own curve"

@@ -67,7 +67,8 @@ fn with_dynamics() -> tempfile::TempDir {
     dir
 }
 
-/// `forces` on a form-closed follower: the load on each roller, one at a time, as the dynamic
+/// `forces` on a form-closed follower: the load passes between the rollers where the motion's
+/// acceleration changes sign; the load on each roller, one at a time, as the dynamic
 /// simulation's contact force on the roller it says touches (at the same angles, 1e-6 of the
 /// peak); `--margin` (a spring-held follower's) is refused naming it, nothing written.
 /// `simulate` drives it through both rollers: it stays on the cam's motion, the load passing
@@ -96,7 +97,10 @@ fn dynamics_of_a_form_closed_follower() {
         .arg(&out)
         .assert()
         .success()
-        .stdout(predicate::str::contains("load reversals: 2 a revolution"))
+        // the cycloidal rise's and return's accelerations change sign at 90° and 270°
+        .stdout(predicate::str::contains(
+            "load reversals: 2 a revolution, where the load passes to the other curve (at 90°, 270°)",
+        ))
         .stdout(predicate::str::contains("play of the second curve: none"))
         .stdout(predicate::str::contains(
             "contact stress on the second curve",
