@@ -99,15 +99,9 @@ impl PyMechanism {
         .map_err(dyn_err)?;
         // the model chosen: the one-coordinate model searches every curve's first touch each step
         let steps = outputs as f64 * substeps as f64;
-        let seconds = sim.seconds_estimate(steps);
-        if seconds > 60.0 && !large {
-            let why = sim
-                .cost_reason()
-                .map_or(String::new(), |r| format!(" ({r})"));
+        if let Some(refusal) = sim.too_long(steps).filter(|_| !large) {
             return Err(errors::resource(format!(
-                "{} steps of this mechanism{why} would take about {} s; pass large=True to run it, or simulate fewer revolutions",
-                camkin::human::human(steps),
-                camkin::human::human(seconds.round())
+                "{refusal}; pass large=True to run it, or simulate fewer revolutions"
             )));
         }
         let h = step_deg.to_radians() / mech.cam().speed() / substeps as f64;

@@ -127,15 +127,9 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     )
     .map_err(dyn_err)?;
     // the model chosen: the one-coordinate model searches every curve's first touch each step
-    let seconds = sim.seconds_estimate(steps);
-    if seconds > 60.0 && !args.large {
-        let why = sim
-            .cost_reason()
-            .map_or(String::new(), |r| format!(" ({r})"));
+    if let Some(refusal) = sim.too_long(steps).filter(|_| !args.large) {
         return Err(Failure::Input(anyhow!(
-            "{} steps of this mechanism{why} would take about {} s; pass --large to run it, or simulate fewer --revolutions",
-            camkin::human::human(steps),
-            camkin::human::human(seconds.round())
+            "{refusal}; pass --large to run it, or simulate fewer --revolutions"
         )));
     }
     let w = mech.cam().speed();

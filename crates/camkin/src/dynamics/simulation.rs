@@ -117,6 +117,23 @@ impl<'a> Simulation<'a> {
         }
     }
 
+    /// The refusal of a run of `steps` steps that would take over a minute: `"N steps of this
+    /// mechanism (why) would take about S s"` (each front end adds how to run it anyway); `None`
+    /// for a shorter run.
+    pub fn too_long(&self, steps: f64) -> Option<String> {
+        let seconds = self.seconds_estimate(steps);
+        (seconds > 60.0).then(|| {
+            let why = self
+                .cost_reason()
+                .map_or(String::new(), |r| format!(" ({r})"));
+            format!(
+                "{} steps of this mechanism{why} would take about {} s",
+                crate::human::human(steps),
+                crate::human::human(seconds.round())
+            )
+        })
+    }
+
     /// Advances by `h` seconds; the events located inside the step, in time order.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
         match self {
