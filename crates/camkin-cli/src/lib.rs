@@ -5,6 +5,7 @@
 pub mod args;
 pub mod commands;
 pub mod draw;
+pub mod forces_text;
 pub mod manufacture;
 pub mod mechfile;
 pub mod output;

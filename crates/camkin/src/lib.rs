@@ -81,8 +81,10 @@ pub mod measured;
 pub mod motion;
 pub(crate) mod periodic;
 pub mod reference;
+pub mod report;
 pub mod spec;
 pub mod table;
+pub mod work;
 
 pub use body::{BodyState, CurveInFrame, Pose};
 pub use error::Error;

@@ -530,3 +530,71 @@ fn the_readmes_mechanism_file_runs_as_pasted() {
             .success();
     }
 }
+
+/// Bad material and load inputs of `forces` are refused before any work, exit 2, naming the flag
+/// and the value as written: a modulus typed in GPa where Pa is asked for, an implausible or
+/// unknown key, a Poisson's ratio of −1, a face width no cam has, a file in the place of `--out`
+/// (which used to compute everything, then exit 1).
+#[test]
+fn forces_refuses_implausible_materials_widths_and_outputs_up_front() {
+    let mech = examples().join("eccentric-flat-dynamics.toml");
+    for (args, needles) in [
+        (
+            vec!["--face-width", "10", "--materials", "E=210:nu=0.3,steel"],
+            vec!["--materials", "E=210", "did you mean GPa"],
+        ),
+        (
+            vec!["--face-width", "10", "--materials", "steel,E=210e9:nu=-1"],
+            vec!["--materials", "nu = -1"],
+        ),
+        (
+            vec!["--face-width", "10", "--materials", "steel,E=5e-324:nu=0.3"],
+            vec!["--materials", "E = 5e-324 Pa"],
+        ),
+        (
+            vec![
+                "--face-width",
+                "10",
+                "--materials",
+                "steel,E=210e9:nu=0.3:rho=7800",
+            ],
+            vec!["--materials", "unknown key \"rho\""],
+        ),
+        (
+            vec!["--face-width", "1e-300"],
+            vec!["--face-width", "1e-300 mm", "not plausible"],
+        ),
+        (
+            vec!["--face-width", "1e9"],
+            vec!["--face-width", "1000000000 mm"],
+        ),
+        (vec!["--face-width", "0"], vec!["--face-width", "0 mm"]),
+        (vec!["--allowable", "-5"], vec!["--allowable", "-5 MPa"]),
+    ] {
+        let out = camkin()
+            .arg("forces")
+            .arg(&mech)
+            .args(&args)
+            .assert()
+            .code(2)
+            .get_output()
+            .clone();
+        let err = String::from_utf8_lossy(&out.stderr).to_string();
+        for n in needles {
+            assert!(err.contains(n), "{args:?}: {n:?} not in {err}");
+        }
+        assert!(out.stdout.is_empty(), "{args:?}: refused before any output");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("taken");
+    std::fs::write(&file, "keep me").unwrap();
+    camkin()
+        .arg("forces")
+        .arg(&mech)
+        .arg("--out")
+        .arg(&file)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("a file is in the way"));
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep me");
+}

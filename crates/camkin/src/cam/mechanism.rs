@@ -157,6 +157,22 @@ impl Mechanism {
         angles as f64 * per_step
     }
 
+    /// Why a sweep of this mechanism costs more than a microsecond a step, for the sentence that
+    /// refuses a long one ([`crate::work::Work::sweep`]); `None` for a convex profile under a
+    /// named follower.
+    pub fn search_cost_reason(&self) -> Option<String> {
+        if self.carried().is_some() {
+            Some("the follower carries a curve: every angle checks the cam's samples within its reach".into())
+        } else if self.convex {
+            None
+        } else {
+            Some(format!(
+                "it is not convex, so every angle searches its {} samples for a contact elsewhere",
+                self.sample_count()
+            ))
+        }
+    }
+
     /// A rough estimate of the seconds one cold first-touch search takes (a global search, no
     /// warm start), for refusing work of minutes up front: ten warm steps' worth for the named
     /// kinds (a cold query counts 4 800–13 000 instructions, about 5 µs, against 600–870 for a

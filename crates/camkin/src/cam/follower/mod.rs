@@ -747,6 +747,16 @@ pub enum FollowerCurve {
 }
 
 impl FollowerCurve {
+    /// The curve is a point (a knife edge, named or carried): it touches in a point, never
+    /// along a line.
+    pub fn is_point(&self) -> bool {
+        match self {
+            FollowerCurve::Point(_) => true,
+            FollowerCurve::Carried(c) => matches!(c.domain(), crate::curve::Domain::Point),
+            _ => false,
+        }
+    }
+
     /// The curve as a shared trait object (for the dynamics).
     pub fn to_arc(self) -> std::sync::Arc<dyn crate::curve::Curve> {
         match self {

@@ -1,0 +1,132 @@
+//! Reports an engineer reads, computed once for every front end: each a `Serialize` type (with
+//! the `serde` feature) that the command prints and writes, the Python package returns and the
+//! studio draws. The front ends only word them.
+//!
+//! - [`ForceReport`]: forces, torque, jump speed, spring sizing and Hertz stress over a
+//!   revolution under permanent contact (`camkin forces`, `Mechanism.forces()` in Python).
+//! - [`Materials`]: elastic constants for the Hertz stress, presets and `E=…:nu=…`, checked for
+//!   plausibility.
+
+mod forces;
+mod materials;
+
+pub use forces::{
+    rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport, HertzSide, Jump,
+    SpringSizing,
+};
+pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
+
+use crate::cam::CamError;
+use crate::dynamics::{DynamicsError, ForceState};
+use std::fmt;
+
+/// A value of a report and the cam angle where it is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Extreme {
+    /// the value (in the report's unit for it)
+    pub value: f64,
+    /// the cam angle, rad
+    pub cam_angle: f64,
+}
+
+impl Extreme {
+    fn of(value: f64, s: &ForceState) -> Self {
+        Self {
+            value,
+            cam_angle: s.cam_angle,
+        }
+    }
+}
+
+/// The inputs of a force report, named by enum: each front end words them its own way (the
+/// command's `--face-width`, Python's `face_width`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ForceField {
+    /// the cam-angle step
+    Step,
+    /// the contact force that must remain
+    Margin,
+    /// the speed up to which the follower must stay on
+    TargetRpm,
+    /// the face width of the contact
+    FaceWidth,
+    /// the materials
+    Materials,
+    /// the allowable contact stress
+    Allowable,
+}
+
+impl ForceField {
+    /// Every field, for front ends that map them all.
+    pub const ALL: [ForceField; 6] = [
+        ForceField::Step,
+        ForceField::Margin,
+        ForceField::TargetRpm,
+        ForceField::FaceWidth,
+        ForceField::Materials,
+        ForceField::Allowable,
+    ];
+}
+
+/// Why a report could not be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ReportError {
+    /// An input is out of its range: `value` as given, in `unit`.
+    #[error("{} {unit} {reason}", crate::human::human(*.value))]
+    Invalid {
+        /// the input
+        field: ForceField,
+        /// its value
+        value: f64,
+        /// its unit
+        unit: &'static str,
+        /// what it must be
+        reason: &'static str,
+    },
+    /// An input that does not apply to this mechanism.
+    #[error("{reason}")]
+    NotApplicable {
+        /// the input
+        field: ForceField,
+        /// why
+        reason: &'static str,
+    },
+    /// The dynamics' parameters do not fit the mechanism.
+    #[error("{0}")]
+    Dynamics(DynamicsError),
+    /// The kinematics failed at an angle.
+    #[error("the forces cannot be computed: {0}")]
+    Kinematics(CamError),
+    /// The second curve's play failed at an angle.
+    #[error("the second curve's play cannot be computed: {0}")]
+    Play(CamError),
+}
+
+impl ReportError {
+    /// The input the error is about, when it is about one.
+    pub fn field(&self) -> Option<ForceField> {
+        match self {
+            ReportError::Invalid { field, .. } | ReportError::NotApplicable { field, .. } => {
+                Some(*field)
+            }
+            _ => None,
+        }
+    }
+}
+
+impl fmt::Display for ForceField {
+    /// The field's name in the library's words (front ends use their own: a flag, a keyword).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            ForceField::Step => "step",
+            ForceField::Margin => "margin",
+            ForceField::TargetRpm => "target speed",
+            ForceField::FaceWidth => "face width",
+            ForceField::Materials => "materials",
+            ForceField::Allowable => "allowable stress",
+        })
+    }
+}

@@ -1,0 +1,157 @@
+//! Work estimates, and the one rule that refuses up front what would take minutes or gigabytes.
+//!
+//! Every entry point — each command, each Python call, each studio request — estimates its work
+//! as a [`Work`] before it starts and asks [`Work::refusal`]. A refusal's sentence is the
+//! library's (`"720000 cam angles on this profile would take about 1440 s (why)"`); each front end
+//! adds only how to run it anyway in its own words (`--large`, `large=True`) or, where there is
+//! no such override (a studio request), its own limit ([`Work::refusal_within`]).
+
+use crate::cam::Mechanism;
+use crate::human::human;
+use std::fmt;
+
+/// Above this many seconds work is refused without the front end's override.
+pub const SECONDS_LIMIT: f64 = 30.0;
+
+/// Above this many bytes (memory held, or files written) work is refused without the override.
+pub const BYTES_LIMIT: f64 = 2e9;
+
+/// An estimate of the work an entry point is about to do.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Work {
+    /// what is counted, as a person reads it (`720 cam angles on this profile`)
+    pub what: String,
+    /// wall time on one core, s
+    pub seconds: f64,
+    /// memory held or bytes written, whichever is larger
+    pub bytes: f64,
+    /// why it costs that much, where that is worth saying (`it is not convex, so …`)
+    pub why: Option<String>,
+}
+
+impl Work {
+    /// `what`, estimated at `seconds`, holding no memory worth counting.
+    pub fn new(what: impl Into<String>, seconds: f64) -> Self {
+        Self {
+            what: what.into(),
+            seconds,
+            bytes: 0.0,
+            why: None,
+        }
+    }
+
+    /// With `bytes` of memory held or files written.
+    pub fn with_bytes(mut self, bytes: f64) -> Self {
+        self.bytes = bytes;
+        self
+    }
+
+    /// With the reason for its cost.
+    pub fn because(mut self, why: impl Into<String>) -> Self {
+        self.why = Some(why.into());
+        self
+    }
+
+    /// Both pieces of work, one after the other (the first one's words).
+    pub fn and(mut self, other: &Work) -> Self {
+        self.seconds += other.seconds;
+        self.bytes = self.bytes.max(other.bytes);
+        if self.why.is_none() {
+            self.why.clone_from(&other.why);
+        }
+        self
+    }
+
+    /// `sweeps` warm-started sweeps of `angles` cam angles of `mech`
+    /// ([`Mechanism::sweep_seconds_estimate`]), with the reason when each angle also searches.
+    pub fn sweep(mech: &Mechanism, angles: usize, sweeps: usize) -> Self {
+        let work = Self::new(
+            format!("{} cam angles on this profile", angles * sweeps),
+            mech.sweep_seconds_estimate(angles) * sweeps as f64,
+        );
+        match mech.search_cost_reason() {
+            Some(why) => work.because(why),
+            None => work,
+        }
+    }
+
+    /// The refusal of this work under the library's limits ([`SECONDS_LIMIT`], [`BYTES_LIMIT`]),
+    /// `None` within them.
+    pub fn refusal(&self) -> Option<Refusal> {
+        self.refusal_within(SECONDS_LIMIT, BYTES_LIMIT)
+    }
+
+    /// The refusal under other limits (a server's per-request time).
+    pub fn refusal_within(&self, seconds: f64, bytes: f64) -> Option<Refusal> {
+        // NaN (an estimate of nonsense) is refused too
+        (!(self.seconds <= seconds && self.bytes <= bytes)).then(|| Refusal(self.clone()))
+    }
+}
+
+/// Work refused before it started; its `Display` is the sentence every front end begins with.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub struct Refusal(pub Work);
+
+impl fmt::Display for Refusal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let w = &self.0;
+        write!(
+            f,
+            "{} would take about {} s",
+            w.what,
+            human(w.seconds.ceil())
+        )?;
+        if w.bytes > 0.0 {
+            write!(f, " and {}", bytes(w.bytes))?;
+        }
+        if let Some(why) = &w.why {
+            write!(f, " ({why})")?;
+        }
+        Ok(())
+    }
+}
+
+/// A byte count as a person reads it: `2.4 GB`, `310 MB`, `12 kB`.
+pub fn bytes(b: f64) -> String {
+    let (v, unit) = if b >= 1e9 {
+        (b / 1e9, "GB")
+    } else if b >= 1e6 {
+        (b / 1e6, "MB")
+    } else if b >= 1e3 {
+        (b / 1e3, "kB")
+    } else {
+        (b, "B")
+    };
+    format!("{} {unit}", human((v * 10.0).ceil() / 10.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn refuses_over_either_limit_and_nonsense() {
+        let w = Work::new("10 cam angles", 1.0);
+        assert!(w.refusal().is_none());
+        assert!(Work::new("x", 31.0).refusal().is_some());
+        assert!(Work::new("x", 1.0).with_bytes(3e9).refusal().is_some());
+        assert!(Work::new("x", f64::NAN).refusal().is_some());
+        assert!(w.refusal_within(0.5, 1e9).is_some());
+    }
+
+    #[test]
+    fn the_sentence_names_what_time_memory_and_why() {
+        let r = Work::new("720000 cam angles on this profile", 1439.2)
+            .with_bytes(2.41e9)
+            .because("it is not convex")
+            .refusal()
+            .unwrap();
+        assert_eq!(
+            r.to_string(),
+            "720000 cam angles on this profile would take about 1440 s and 2.5 GB (it is not convex)"
+        );
+        assert_eq!(bytes(310e6), "310 MB");
+        assert_eq!(bytes(999.0), "999 B");
+    }
+}
