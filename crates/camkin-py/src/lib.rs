@@ -4,6 +4,7 @@
 
 mod columns;
 mod errors;
+mod forces;
 mod geometry;
 mod mech;
 mod motion;

@@ -55,6 +55,16 @@ class Mechanism:
         start_angle_deg: float = 0.0,
         large: bool = False,
     ) -> Dict[str, Any]: ...
+    def forces(
+        self,
+        *,
+        step_deg: float = 0.5,
+        margin: float = 0.0,
+        target_rpm: Optional[float] = None,
+        face_width: Optional[float] = None,
+        materials: Union[str, Tuple[str, str], None] = None,
+        allowable_mpa: Optional[float] = None,
+    ) -> Dict[str, Any]: ...
 
 class Curve:
     @property

@@ -128,6 +128,7 @@ pub struct HertzReport {
 /// A check of the force report that failed.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(tag = "check", rename_all = "snake_case"))]
 #[non_exhaustive]
 pub enum ForceCheck {
     /// the contact force falls below the margin at the file's speed

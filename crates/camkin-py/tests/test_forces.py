@@ -1,0 +1,110 @@
+"""`Mechanism.forces()` is the command's `camkin forces`: the same columns to the last bit, the
+jump speed of the closed form, and bad input refused naming the argument."""
+
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import camkin
+from conftest import EXAMPLES, camkin_bin, csv_columns
+from test_mechanism import same_cells
+
+DYNAMICS = sorted(p.name for p in EXAMPLES.glob("*.toml") if "[dynamics]" in p.read_text())
+
+
+def cli_forces(path, out, *args):
+    r = subprocess.run(
+        [camkin_bin(), "forces", str(path), "--out", str(out), *map(str, args)],
+        capture_output=True, text=True,
+    )
+    # 3: a check failed (the eccentric example leaves its cam at its own speed); files are written
+    assert r.returncode in (0, 3), r.stderr
+    return (
+        csv_columns((out / "forces.csv").read_text()),
+        csv_columns((out / "force_speed.csv").read_text()),
+    )
+
+
+def check_same(py, cli):
+    assert list(py) == list(cli), "the same columns in the same order"
+    for col, cells in cli.items():
+        same_cells(py[col], cells, col)
+
+
+@pytest.mark.parametrize("name", DYNAMICS)
+@pytest.mark.parametrize("hertz", [False, True])
+def test_forces_equal_the_command_csv_bit_for_bit(tmp_path, name, hertz):
+    path = EXAMPLES / name
+    args = ["--face-width", "10", "--materials", "steel,bronze"] if hertz else []
+    cli, cli_speed = cli_forces(path, tmp_path, "--step", "1", *args)
+    kw = {"face_width": 10.0, "materials": ("steel", "bronze")} if hertz else {}
+    r = camkin.Mechanism.from_toml(path).forces(step_deg=1.0, **kw)
+    check_same(r["columns"], cli)
+    check_same(r["force_speed"], cli_speed)
+    assert len(r["columns"]["angle_deg"]) == 360
+
+
+def test_a_form_closed_follower_reports_each_curve(tmp_path):
+    text = (EXAMPLES / "conjugate-yoke.toml").read_text()
+    path = tmp_path / "yoke.toml"
+    path.write_text(text + "\n[dynamics]\nmass = 0.5\nspring_stiffness = 0.0\nspring_preload = 0.0\n")
+    cli, cli_speed = cli_forces(path, tmp_path / "out", "--face-width", "10")
+    r = camkin.Mechanism.from_toml(path).forces(face_width=10.0)
+    check_same(r["columns"], cli)
+    check_same(r["force_speed"], cli_speed)
+    fc = r["report"]["form_closed"]
+    # the load passes between the rollers where the cycloidal accelerations change sign
+    assert [round(math.degrees(t), 6) for t in fc["reversals"]] == [90.0, 270.0]
+    assert r["report"]["spring"] is None and r["report"]["failures"] == []
+
+
+def test_the_jump_speed_is_the_closed_form_of_the_eccentric_disc():
+    # eccentric disc (e = 10 mm) under a flat face: the contact force m e ω² cos θ short of the
+    # spring's F₀ + k e (1 + cos θ) first reaches 0 at θ = 0, at ω² = (F₀ + 2 k e) / (m e)
+    d = camkin.Mechanism.from_toml(EXAMPLES / "eccentric-flat-dynamics.toml").to_dict()
+    m, k, f0 = d["dynamics"]["mass"], d["dynamics"]["spring_stiffness"], d["dynamics"]["spring_preload"]
+    e = 0.01
+    r = camkin.Mechanism.from_toml(EXAMPLES / "eccentric-flat-dynamics.toml").forces(target_rpm=100.0)
+    rep = r["report"]
+    assert rep["jump"]["speed"] == pytest.approx(math.sqrt((f0 + 2 * k * e) / (m * e)), rel=1e-9)
+    assert rep["jump"]["cam_angle"] == 0.0
+    # below the file's speed: the margin check fails, the target check passes
+    assert [f["check"] for f in rep["failures"]] == ["below_margin"]
+    # the force at 0° is the closed form at the file's speed
+    w = d["cam"]["speed_rpm"] * 2 * math.pi / 60
+    f = r["columns"]["contact_force_N"]
+    assert f[0] == pytest.approx(-m * e * w * w + f0 + 2 * k * e, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "kw, field, needle",
+    [
+        ({"face_width": 10.0, "materials": "E=210:nu=0.3,steel"}, "materials", "did you mean GPa"),
+        ({"face_width": 10.0, "materials": ("steel", "E=210e9:nu=-1")}, "materials", "nu = -1"),
+        ({"face_width": 10.0, "materials": "steel,E=210e9:nu=0.3:rho=7800"}, "materials", "rho"),
+        ({"face_width": 10.0, "materials": 3}, "materials", "CAM,FOLLOWER"),
+        ({"face_width": 1e-300}, "face_width", "not plausible"),
+        ({"face_width": -1.0}, "face_width", "must be positive"),
+        ({"margin": -1.0}, "margin", "≥ 0"),
+        ({"margin": float("nan")}, "margin", "finite"),
+        ({"target_rpm": 0.0}, "target_rpm", "(0, 1e7]"),
+        ({"allowable_mpa": -5.0}, "allowable_mpa", "positive"),
+        ({"step_deg": 7.0}, "step_deg", "divide 360"),
+    ],
+)
+def test_bad_force_input_names_the_argument(kw, field, needle):
+    mech = camkin.Mechanism.from_toml(EXAMPLES / "eccentric-flat-dynamics.toml")
+    with pytest.raises(camkin.InputError) as e:
+        mech.forces(**kw)
+    assert e.value.field == field, e.value
+    assert needle in str(e.value), str(e.value)
+
+
+def test_forces_need_a_dynamics_section():
+    with pytest.raises(camkin.InputError, match=r"\[dynamics\]"):
+        camkin.paper_cam().forces()
+    assert np.isfinite(
+        camkin.Mechanism.from_toml(EXAMPLES / "paper-dynamics.toml").forces()["columns"]["camshaft_torque_N_m"]
+    ).all()
