@@ -12,6 +12,8 @@ pub mod output;
 pub mod studio;
 pub mod study;
 
+use camkin::work::Work;
+
 use std::path::PathBuf;
 
 /// A failure and its exit code.
@@ -39,25 +41,31 @@ impl Failure {
 }
 
 /// Loads the mechanism file, or the paper's built-in mechanism when none is given.
-/// Refuses, with the estimate and the flag that allows it, a sweep of `angles` cam angles
-/// (`sweeps` of them) estimated at over 30 s on this profile (a large non-convex profile searches
-/// its samples at every step).
+/// The one refusal rule ([`camkin::work`]): `work` over the library's limits is refused unless
+/// `--large`; the sentence is the library's, `otherwise` says what else to change
+/// (`", or use fewer angles"`).
+pub fn refuse_large(work: &Work, large: bool, otherwise: &str) -> Result<(), Failure> {
+    match work.refusal() {
+        Some(r) if !large => Err(Failure::Input(anyhow::anyhow!(
+            "{r}; pass --large to run it anyway{otherwise}"
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// Refuses a sweep of `angles` cam angles (`sweeps` of them) over the library's limits (a large
+/// non-convex profile searches its samples at every step), unless `--large`.
 pub fn check_sweep_time(
     mech: &camkin::cam::Mechanism,
     angles: usize,
     sweeps: usize,
     large: bool,
 ) -> Result<(), Failure> {
-    let seconds = mech.sweep_seconds_estimate(angles) * sweeps as f64;
-    if seconds > 30.0 && !large {
-        return Err(Failure::Input(anyhow::anyhow!(
-            "{} cam angles on this profile would take about {} s (it is not convex, so every angle searches its {} samples for a contact elsewhere); pass --large to run it anyway, or use fewer angles",
-            angles * sweeps,
-            camkin::human::human(seconds.ceil()),
-            mech.sample_count()
-        )));
-    }
-    Ok(())
+    refuse_large(
+        &Work::sweep(mech, angles, sweeps),
+        large,
+        ", or use fewer angles",
+    )
 }
 
 /// A mechanism as loaded, with what its file said about it.

@@ -89,19 +89,18 @@ pub fn check_bounds(
     } else {
         0.0
     };
-    const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
-    if !large && (seconds > 60.0 || bytes > 2.0 * GIB || written > GIB) {
-        let gb = |b: f64| camkin::human::human((b / 1e8).ceil() / 10.0);
+    let work = camkin::work::Work::new(
+        format!(
+            "{grid} grid angles and {} interpolation nodes in all",
+            nodes.iter().sum::<usize>() * studies
+        ),
+        seconds,
+    )
+    // memory held, or files written (whichever is larger)
+    .with_bytes(bytes.max(written));
+    if let Some(r) = work.refusal().filter(|_| !large) {
         anyhow::bail!(
-            "{grid} grid angles and {} interpolation nodes in all would take about {} s and {} GB of memory{}; pass --large to run it anyway, or use a coarser --step or fewer --nodes",
-            nodes.iter().sum::<usize>() * studies,
-            camkin::human::human(seconds.ceil()),
-            gb(bytes),
-            if writes {
-                format!(", and write {} GB of files", gb(written))
-            } else {
-                String::new()
-            }
+            "{r}; pass --large to run it anyway, or use a coarser --step or fewer --nodes"
         );
     }
     Ok(())

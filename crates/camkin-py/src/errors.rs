@@ -40,6 +40,18 @@ pub fn resource(message: String) -> PyErr {
     Python::attach(|py| raise(py, "ResourceError", message, vec![]))
 }
 
+/// Refuses `work` over the library's limits ([`camkin::work`]) unless `large=True`: a
+/// `ResourceError` with the library's sentence and what else to change (`", or use fewer
+/// angles"`).
+pub fn refuse_large(work: &camkin::work::Work, large: bool, otherwise: &str) -> PyResult<()> {
+    match work.refusal() {
+        Some(r) if !large => Err(resource(format!(
+            "{r}; pass large=True to run it anyway{otherwise}"
+        ))),
+        _ => Ok(()),
+    }
+}
+
 /// A spec error as an `InputError` on its field.
 pub fn spec(e: &SpecError) -> PyErr {
     let (field, value) = match e {

@@ -15,10 +15,9 @@ use std::path::{Path, PathBuf};
 const MAX_TEXT_BYTES: usize = 8 << 20;
 /// Rows of an analysis computed per chunk (the GIL is released for the whole computation).
 const CHUNK: usize = 65_536;
-/// Most angles in one call without `large=True` (about 200 bytes each in the result).
-pub const MAX_ANGLES: usize = 20_000_000;
-/// Seconds of estimated work refused without `large=True`.
-pub const MAX_SECONDS: f64 = 30.0;
+/// Most angles in one call without `large=True`: the library's memory limit at about 200
+/// bytes each in the result ([`camkin::work::BYTES_LIMIT`]).
+pub const MAX_ANGLES: usize = (camkin::work::BYTES_LIMIT / 200.0) as usize;
 
 /// A cam-follower mechanism: a cam turning at constant speed (or constant angular acceleration)
 /// and a follower, as a mechanism file describes them. Lengths are in the file's
@@ -80,34 +79,15 @@ impl PyMechanism {
         Ok(Units::new(self.mech(), self.built.length_unit, angle, per))
     }
 
-    /// Refuses a sweep of `angles` estimated at over [`MAX_SECONDS`] (a large non-convex
-    /// profile searches its samples at every step) or over [`MAX_ANGLES`] angles.
+    /// Refuses a sweep of `angles` over the library's limits ([`camkin::work`]): its time (a
+    /// large non-convex profile searches its samples at every step) and the results held, about
+    /// 200 bytes an angle.
     pub fn check_work(&self, angles: usize, large: bool) -> PyResult<()> {
-        let seconds = self.mech().sweep_seconds_estimate(angles);
-        if large {
-            return Ok(());
-        }
-        if angles > MAX_ANGLES {
-            return Err(errors::resource(format!(
-                "{angles} angles would hold about {} GB of results; pass large=True to run it anyway, or use fewer angles",
-                camkin::human::human((angles as f64 * 200.0 / 1e8).ceil() / 10.0)
-            )));
-        }
-        if seconds > MAX_SECONDS {
-            let why = if self.mech().carries_curve() {
-                "the follower carries a curve: every angle checks the cam's samples within its reach".to_string()
-            } else {
-                format!(
-                    "it is not convex, so every angle searches its {} samples for a contact elsewhere",
-                    self.mech().sample_count()
-                )
-            };
-            return Err(errors::resource(format!(
-                "{angles} cam angles on this profile would take about {} s ({why}); pass large=True to run it anyway, or use fewer angles",
-                camkin::human::human(seconds.ceil()),
-            )));
-        }
-        Ok(())
+        errors::refuse_large(
+            &camkin::work::Work::sweep(self.mech(), angles, 1).with_bytes(angles as f64 * 200.0),
+            large,
+            ", or use fewer angles",
+        )
     }
 
     /// Warns (Python's `warnings`, category `camkin.errors.CamkinWarning`).
@@ -447,14 +427,11 @@ impl PyMechanism {
     ) -> PyResult<Bound<'py, PyDict>> {
         let (angles, _) = angles_from(py, angles_deg, "angles_deg")?;
         self.check_work(angles.len(), large)?;
-        let seconds = self.mech().contacts_seconds_estimate(angles.len());
-        if seconds > MAX_SECONDS && !large {
-            return Err(errors::resource(format!(
-                "{} cam angles would take about {} s to search for every contact; pass large=True to run it anyway, or use fewer angles",
-                angles.len(),
-                camkin::human::human(seconds.ceil())
-            )));
-        }
+        errors::refuse_large(
+            &camkin::work::Work::contacts(self.mech(), angles.len()),
+            large,
+            ", or use fewer angles",
+        )?;
         let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
         let mech = self.mech();
         let units = Units::plain(mech, self.built.length_unit);

@@ -64,14 +64,6 @@ impl PyMechanism {
             return Err(bad("start_angle_deg", start_angle_deg, "must be finite"));
         }
         let outputs = (revolutions * 360.0 / step_deg).round() as usize;
-        let seconds = outputs as f64 * substeps as f64 * 2e-5;
-        if (seconds > 60.0 || outputs > 1_000_000) && !large {
-            return Err(errors::resource(format!(
-                "{} steps ({outputs} samples) would take about {} s; pass large=True to run it",
-                camkin::human::human(outputs as f64 * substeps as f64),
-                camkin::human::human(seconds.round())
-            )));
-        }
         let built = self
             .spec
             .build(&BuildOptions {
@@ -88,7 +80,6 @@ impl PyMechanism {
             )
         })?;
         let mech = built.mechanism;
-        self.check_work(1441 + outputs, large)?;
         let units = Units::plain(&mech, built.length_unit);
         let mut sim = Simulation::starting_at(
             &mech,
@@ -97,13 +88,17 @@ impl PyMechanism {
             camkin::geometry::deg_to_rad(start_angle_deg),
         )
         .map_err(dyn_err)?;
-        // the model chosen: the one-coordinate model searches every curve's first touch each step
+        // the model chosen (the one-coordinate model searches every curve's first touch each
+        // step), the jump scan at the start (every 0.25°) and the kinematic motion beside every
+        // sample (about 200 bytes each held): as the command
         let steps = outputs as f64 * substeps as f64;
-        if let Some(refusal) = sim.too_long(steps).filter(|_| !large) {
-            return Err(errors::resource(format!(
-                "{refusal}; pass large=True to run it, or simulate fewer revolutions"
-            )));
-        }
+        errors::refuse_large(
+            &sim.work(steps)
+                .and(&camkin::work::Work::sweep(&mech, 1441 + outputs, 1))
+                .with_bytes(outputs as f64 * 200.0),
+            large,
+            ", or simulate fewer revolutions",
+        )?;
         let h = step_deg.to_radians() / mech.cam().speed() / substeps as f64;
         if h > sim.max_step() {
             let (rate, field, value) = sim.fastest_rate();

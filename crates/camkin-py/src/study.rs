@@ -14,9 +14,6 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 
-/// Work refused without `large=True`, estimated seconds on one core.
-const MAX_STUDY_SECONDS: f64 = 3600.0;
-
 /// Refuses a spec whose profile has no nodes to replace.
 fn check_spline_kind(spec: &MechanismSpec) -> PyResult<()> {
     let kind = spec.cam.profile.kind.as_str();
@@ -152,14 +149,15 @@ fn study_angles(py: Python<'_>, angles_deg: Option<&Bound<'_, PyAny>>) -> PyResu
 }
 
 fn check_study(base: &Mechanism, designs: usize, angles: usize, large: bool) -> PyResult<()> {
-    let seconds = base.sweep_seconds_estimate(angles) * designs as f64;
-    if seconds > MAX_STUDY_SECONDS && !large {
-        return Err(errors::resource(format!(
-            "{designs} designs × {angles} angles would take about {} s on one core; pass large=True to run it anyway, or split it (for example over Dask workers)",
-            camkin::human::human(seconds.ceil())
-        )));
-    }
-    Ok(())
+    let work = camkin::work::Work::new(
+        format!("{designs} designs × {angles} angles"),
+        base.sweep_seconds_estimate(angles) * designs as f64,
+    );
+    errors::refuse_large(
+        &work,
+        large,
+        ", or split it (for example over Dask workers)",
+    )
 }
 
 /// The summaries as a dict of arrays, keys with units.
@@ -319,15 +317,15 @@ pub fn summarize<'py>(
         .iter()
         .map(|m| m.sweep_seconds_estimate(angles.len()))
         .fold(0.0, f64::max);
-    let seconds = slowest * mechs.len() as f64;
-    if seconds > MAX_STUDY_SECONDS && !large {
-        return Err(errors::resource(format!(
-            "{} designs × {} angles would take about {} s on one core; pass large=True to run it anyway, or split it (for example over Dask workers)",
-            mechs.len(),
-            angles.len(),
-            camkin::human::human(seconds.ceil())
-        )));
-    }
+    let work = camkin::work::Work::new(
+        format!("{} designs × {} angles", mechs.len(), angles.len()),
+        slowest * mechs.len() as f64,
+    );
+    errors::refuse_large(
+        &work,
+        large,
+        ", or split it (for example over Dask workers)",
+    )?;
     let pool = pool(threads)?;
     let rows = py.detach(|| {
         pool.install(|| {

@@ -14,7 +14,7 @@ use std::fmt;
 pub const SECONDS_LIMIT: f64 = 30.0;
 
 /// Above this many bytes (memory held, or files written) work is refused without the override.
-pub const BYTES_LIMIT: f64 = 2e9;
+pub const BYTES_LIMIT: f64 = 1e9;
 
 /// An estimate of the work an entry point is about to do.
 #[derive(Debug, Clone, PartialEq)]
@@ -76,6 +76,15 @@ impl Work {
         }
     }
 
+    /// Every contact at `angles` cam angles of `mech`
+    /// ([`Mechanism::contacts_seconds_estimate`]: a sweep and one more search per angle).
+    pub fn contacts(mech: &Mechanism, angles: usize) -> Self {
+        Self::new(
+            format!("{angles} cam angles, every contact searched,"),
+            mech.contacts_seconds_estimate(angles),
+        )
+    }
+
     /// The refusal of this work under the library's limits ([`SECONDS_LIMIT`], [`BYTES_LIMIT`]),
     /// `None` within them.
     pub fn refusal(&self) -> Option<Refusal> {
@@ -135,7 +144,8 @@ mod tests {
         let w = Work::new("10 cam angles", 1.0);
         assert!(w.refusal().is_none());
         assert!(Work::new("x", 31.0).refusal().is_some());
-        assert!(Work::new("x", 1.0).with_bytes(3e9).refusal().is_some());
+        assert!(Work::new("x", 1.0).with_bytes(1.1e9).refusal().is_some());
+        assert!(Work::new("x", 1.0).with_bytes(0.9e9).refusal().is_none());
         assert!(Work::new("x", f64::NAN).refusal().is_some());
         assert!(w.refusal_within(0.5, 1e9).is_some());
     }

@@ -93,8 +93,6 @@ fn report_degenerate(
 const CHUNK: usize = 65_536;
 /// Bytes of output per row, about (CSV; JSON is about twice): for the size estimate.
 const BYTES_PER_ROW: f64 = 380.0;
-/// Output larger than this needs `--large`.
-const LARGE_BYTES: f64 = 1024.0 * 1024.0 * 1024.0;
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let loaded = load_mechanism(args.mechanism.as_ref())?;
@@ -109,16 +107,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         TableFormat::Csv => BYTES_PER_ROW,
         TableFormat::Json => 2.0 * BYTES_PER_ROW,
     };
-    let estimate = angles.len() as f64 * per_row;
-    if estimate > LARGE_BYTES && !args.large {
-        return Err(Failure::Input(anyhow::anyhow!(
-            "{} angles would write about {:.1} GB ({:.0} s at about 1 µs per angle); pass --large to write it (memory stays bounded: rows are written {CHUNK} at a time)",
-            angles.len(),
-            estimate / 1e9,
-            angles.len() as f64 * 1e-6
-        )));
-    }
-    crate::check_sweep_time(mech, angles.len(), 1, args.large)?;
+    // the bytes written (memory stays bounded: rows are written CHUNK at a time)
+    crate::refuse_large(
+        &camkin::work::Work::sweep(mech, angles.len(), 1).with_bytes(angles.len() as f64 * per_row),
+        args.large,
+        ", or use fewer angles",
+    )?;
     let contiguous = args.at.is_none();
     let mut rows = AnalysisSweep::new(mech, &angles, contiguous, CHUNK);
     // lift is measured from the lowest position over the revolution

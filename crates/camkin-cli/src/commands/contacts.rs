@@ -5,8 +5,6 @@
 use crate::args::{AngleList, AngleRange};
 use crate::output::{write_atomic, write_cells, TableFormat};
 use crate::{load_mechanism, Failure};
-use anyhow::anyhow;
-use camkin::human::human;
 use camkin::table::{contact_cells, contact_columns, ContactRow, Units};
 use std::path::PathBuf;
 
@@ -43,14 +41,11 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
         (Some(list), _) => list.0.clone(),
         (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
     };
-    let seconds = mech.contacts_seconds_estimate(angles.len());
-    if seconds > 30.0 && !args.large {
-        return Err(Failure::Input(anyhow!(
-            "{} cam angles would take about {} s to search for every contact; pass --large to run it anyway, or use fewer angles",
-            angles.len(),
-            human(seconds.ceil())
-        )));
-    }
+    crate::refuse_large(
+        &camkin::work::Work::contacts(mech, angles.len()),
+        args.large,
+        ", or use fewer angles",
+    )?;
     let contiguous = args.at.is_none();
     let states = mech.analyze_deg_each(&angles, contiguous);
     let rows: Vec<ContactRow> = angles

@@ -50,9 +50,6 @@ pub struct MeshArgs {
 /// The built-in pair.
 pub const GEAR_PAIR_TOML: &str = include_str!("../../../../examples/gear-pair-20-42.toml");
 
-/// Rows held in memory at most without `--large` (about 250 bytes each).
-const MAX_ROWS: usize = 2_000_000;
-
 fn load(path: Option<&PathBuf>) -> Result<Loaded, Failure> {
     match path {
         Some(_) => load_mechanism(path),
@@ -97,14 +94,12 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
             (0..720).map(|k| f64::from(k) * cycle / 360.0).collect()
         }
     };
-    if angles.len() > MAX_ROWS && !args.large {
-        return Err(Failure::Input(anyhow!(
-            "{} angles would hold about {} MB of rows in memory; pass --large to run it anyway, or use fewer angles",
-            angles.len(),
-            human((angles.len() as f64 * 250.0 / 1e6).ceil())
-        )));
-    }
-    crate::check_sweep_time(mech, angles.len(), 1, args.large)?;
+    // the rows are held in memory, about 250 bytes each
+    crate::refuse_large(
+        &camkin::work::Work::sweep(mech, angles.len(), 1).with_bytes(angles.len() as f64 * 250.0),
+        args.large,
+        ", or use fewer angles",
+    )?;
     let contiguous = args.at.is_none();
     let results = mech.analyze_deg_each(&angles, contiguous);
     let jumps = contact_jumps(mech, &results, contiguous);

@@ -90,18 +90,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             "{outputs} output rows is more than 10000000"
         )));
     }
-    // about 20 µs per step on a 2-core machine (6.7 ms per revolution at 1°): refuse runs of
-    // more than a minute, or over a million rows, unless asked
     let steps = outputs as f64 * args.substeps as f64;
-    let seconds = steps * 2e-5;
-    if (seconds > 60.0 || outputs > 1_000_000) && !args.large {
-        return Err(Failure::Input(anyhow!(
-            "{} steps ({outputs} rows of output) would take about {} s and {} MB; pass --large to run it",
-            camkin::human::human(steps),
-            camkin::human::human(seconds.round()),
-            camkin::human::human((outputs as f64 * 200e-6).round())
-        )));
-    }
     let (mech, params, unit) =
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     let units = Units::plain(&mech, unit);
@@ -111,8 +100,6 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     } else {
         1.0 / unit.metres()
     };
-    // the jump scan at the start (every 0.25°) and the kinematic motion beside every row
-    crate::check_sweep_time(&mech, 1441 + outputs, 1, args.large)?;
     if !args.start_angle.is_finite() {
         return Err(Failure::Input(anyhow!(
             "--start-angle: {} must be finite",
@@ -126,12 +113,16 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         camkin::geometry::deg_to_rad(args.start_angle),
     )
     .map_err(dyn_err)?;
-    // the model chosen: the one-coordinate model searches every curve's first touch each step
-    if let Some(refusal) = sim.too_long(steps).filter(|_| !args.large) {
-        return Err(Failure::Input(anyhow!(
-            "{refusal}; pass --large to run it, or simulate fewer --revolutions"
-        )));
-    }
+    // the model chosen (the one-coordinate model searches every curve's first touch each
+    // step), the jump scan at the start (every 0.25°) and the kinematic motion beside every row
+    // (about 200 bytes a row held)
+    crate::refuse_large(
+        &sim.work(steps)
+            .and(&camkin::work::Work::sweep(&mech, 1441 + outputs, 1))
+            .with_bytes(outputs as f64 * 200.0),
+        args.large,
+        ", or simulate fewer --revolutions",
+    )?;
     let w = mech.cam().speed();
     let h = step.to_radians() / w / args.substeps as f64;
     // the damping and the spring must be resolved by the time step (the library refuses a longer

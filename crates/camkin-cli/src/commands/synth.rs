@@ -79,16 +79,15 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         )));
     }
     let points = (360.0 / step).round();
-    if points * BYTES_PER_POINT > 1024.0 * 1024.0 * 1024.0 && !args.large {
-        return Err(Failure::Input(anyhow!(
-            "--step {step}: {points} profile points would write about {} GB of files; pass --large to write them, or use a coarser --step",
-            camkin::human::human((points * BYTES_PER_POINT / 1e8).ceil() / 10.0)
-        )));
-    }
     let loaded = load_mechanism(Some(&args.mechanism))?;
     let mech = &loaded.mech;
     let u = Units::new(mech, loaded.unit, args.angle_unit, args.per);
-    crate::check_sweep_time(mech, points as usize, 1, args.large)?;
+    // the files written
+    crate::refuse_large(
+        &camkin::work::Work::sweep(mech, points as usize, 1).with_bytes(points * BYTES_PER_POINT),
+        args.large,
+        ", or use a coarser --step",
+    )?;
     let profile = mech.cam().profile();
     let Some(synth) = mech.cam().synthesis() else {
         return Err(Failure::Input(anyhow!(

@@ -239,13 +239,11 @@ pub(super) fn check_work(
     angles: usize,
     limits: &Limits,
 ) -> Result<(), StudioError> {
-    let seconds = mech.sweep_seconds_estimate(angles);
-    if seconds > limits.max_seconds {
+    let work = camkin::work::Work::sweep(mech, angles, 1);
+    if let Some(r) = work.refusal_within(limits.max_seconds, camkin::work::BYTES_LIMIT) {
         return Err(StudioError::TooMuch {
             message: format!(
-                "{angles} cam angles on this profile would take about {} s here (it is not convex: every angle searches its {} samples), more than the {} s one request may take; use `camkin analyze` for it",
-                camkin::human::human(seconds.ceil()),
-                mech.sample_count(),
+                "{r}, more than the {} s one request may take; use `camkin analyze` for it",
                 limits.max_seconds
             ),
         });

@@ -211,13 +211,15 @@ fn an_hours_long_simulation_asks_first() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("3600000000 steps"))
-        .stderr(predicate::str::contains("would take about 72000 s"))
+        // 20 µs a step, and the kinematic sweep beside the 3.6 million rows at 1 µs an angle
+        .stderr(predicate::str::contains("would take about 72004 s"))
         .stderr(predicate::str::contains("--large"));
 }
 
 /// Issue 16: the one-coordinate model's cost is the library's estimate (six cold searches of 1 ms
 /// a step and curve for a carried curve), the same the Python package refuses with: 100
-/// revolutions of a gear pair with backlash at 1° are about 432 s, refused without `--large`.
+/// revolutions of a gear pair with backlash at 1° are about 432 s, with the kinematic sweep beside
+/// the rows 440 s, refused without `--large`.
 #[test]
 fn a_long_gear_simulation_is_refused_with_the_librarys_estimate() {
     let dir = tempfile::tempdir().unwrap();
@@ -229,7 +231,8 @@ fn a_long_gear_simulation_is_refused_with_the_librarys_estimate() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("36000 steps of this mechanism"))
-        .stderr(predicate::str::contains("would take about 432 s"))
+        // the library's 432 s of steps and the sweep beside them: 37 441 angles at 0.2 ms
+        .stderr(predicate::str::contains("would take about 440 s"))
         .stderr(predicate::str::contains("--large"));
     assert!(!dir.path().join("out").exists(), "nothing written");
 }

@@ -283,7 +283,7 @@ fn bench_counts_instructions_with_callgrind() {
         .stderr(predicate::str::contains("valgrind was not found"));
 }
 
-/// Issue 12, class 6: a study estimated at over a minute, 2 GB of memory or 1 GB of files is
+/// Issue 12, class 6: a study estimated at over 30 s, or 1 GB of memory or of files, is
 /// refused up front with the estimate and the flag that allows it, and writes nothing.
 #[test]
 fn studies_that_would_take_minutes_or_gigabytes_ask_first() {
@@ -295,10 +295,10 @@ fn studies_that_would_take_minutes_or_gigabytes_ask_first() {
             vec!["compare", "MECH", "--nodes", many.as_str()],
             "40000000 interpolation nodes in all would take about",
         ),
-        (vec!["compare", "MECH", "--step", "0.00004"], "GB of memory"),
+        (vec!["compare", "MECH", "--step", "0.00004"], "s and 3.2 GB"),
         (
             vec!["paper", "--step", "0.0001", "--out", "OUT"],
-            "write 2 GB of files",
+            "GB; pass --large",
         ),
     ] {
         let args: Vec<String> = args

@@ -192,7 +192,7 @@ fn a_profile_of_gigabytes_asks_first() {
         .args(["--step", "0.00004"])
         .assert()
         .code(2)
-        .stderr(predicate::str::contains("would write about 1.5 GB"))
+        .stderr(predicate::str::contains("s and 1.5 GB"))
         .stderr(predicate::str::contains("--large"));
     assert!(!out.exists());
 }

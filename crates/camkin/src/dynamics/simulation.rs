@@ -117,21 +117,17 @@ impl<'a> Simulation<'a> {
         }
     }
 
-    /// The refusal of a run of `steps` steps that would take over a minute: `"N steps of this
-    /// mechanism (why) would take about S s"` (each front end adds how to run it anyway); `None`
-    /// for a shorter run.
-    pub fn too_long(&self, steps: f64) -> Option<String> {
-        let seconds = self.seconds_estimate(steps);
-        (seconds > 60.0).then(|| {
-            let why = self
-                .cost_reason()
-                .map_or(String::new(), |r| format!(" ({r})"));
-            format!(
-                "{} steps of this mechanism{why} would take about {} s",
-                crate::human::human(steps),
-                crate::human::human(seconds.round())
-            )
-        })
+    /// The work of a run of `steps` steps ([`Simulation::seconds_estimate`], with
+    /// [`Simulation::cost_reason`]), for the one refusal rule of [`crate::work`].
+    pub fn work(&self, steps: f64) -> crate::work::Work {
+        let w = crate::work::Work::new(
+            format!("{} steps of this mechanism", crate::human::human(steps)),
+            self.seconds_estimate(steps),
+        );
+        match self.cost_reason() {
+            Some(why) => w.because(why),
+            None => w,
+        }
     }
 
     /// Advances by `h` seconds; the events located inside the step, in time order.
