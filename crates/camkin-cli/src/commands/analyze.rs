@@ -38,8 +38,7 @@ pub struct Args {
     /// Output file (written atomically); standard output without it.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
-    /// Allow output over 1 GiB or a run estimated at over 30 s (refused otherwise, with the
-    /// estimate).
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
 }

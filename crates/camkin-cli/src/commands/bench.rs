@@ -22,7 +22,7 @@ pub struct BenchArgs {
     /// Repetitions of each measurement (the median is reported).
     #[arg(long, default_value_t = 15)]
     pub repeats: usize,
-    /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
     /// Also count the instructions of a cold query, a warm step and a full-state warm step with

@@ -29,7 +29,7 @@ pub struct ContactsArgs {
     /// Output file (written atomically); standard output without it.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
-    /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
 }

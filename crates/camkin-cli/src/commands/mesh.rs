@@ -41,8 +41,7 @@ pub struct MeshArgs {
     /// and both flanks' specific sliding over the angles into DIR/mesh.{svg,png}.
     #[arg(long, value_name = "DIR")]
     pub plot: Option<PathBuf>,
-    /// Allow more than 2 million angles or a run estimated at over 30 s (refused otherwise,
-    /// with the estimate).
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
 }

@@ -40,7 +40,7 @@ pub struct PlotArgs {
     /// Unit of an oscillating follower's arm angle.
     #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
     pub angle_unit: AngleUnit,
-    /// Allow a run estimated at over 30 s (refused otherwise, with the estimate).
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
 }
@@ -399,11 +399,12 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let mech = &loaded.mech;
     let units = Units::new(mech, loaded.unit, args.angle_unit, args.per);
     let curve_angles = (360.0 / step).round() as usize;
-    crate::check_sweep_time(
-        mech,
-        curve_angles + args.frames + angles.len(),
-        1,
+    // the rows of every plotted angle are held, about 450 bytes each
+    crate::refuse_large(
+        &camkin::work::Work::sweep(mech, curve_angles + args.frames + angles.len(), 1)
+            .with_bytes(curve_angles as f64 * 450.0),
         args.large,
+        ", or use a coarser --step",
     )?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))

@@ -25,6 +25,9 @@ pub struct ProfileArgs {
     /// [default: 1e-6 of the cam's size].
     #[arg(long, value_name = "LENGTH")]
     pub tolerance: Option<f64>,
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
+    #[arg(long)]
+    pub large: bool,
 }
 
 pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
@@ -40,6 +43,13 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
             )));
         }
     }
+    // a sweep for the table (and the cutter's path), about 250 bytes of files an angle
+    let angles = (360.0 / args.step.deg()).round() as usize;
+    crate::refuse_large(
+        &camkin::work::Work::sweep(&loaded.mech, angles, 2).with_bytes(angles as f64 * 250.0),
+        args.large,
+        ", or use a coarser --step",
+    )?;
     let made = manufacture::write(
         &loaded.mech,
         loaded.unit,

@@ -32,8 +32,7 @@ pub struct SynthArgs {
     /// layer of profile.dxf), in the file's length unit.
     #[arg(long, value_name = "R")]
     pub tool_radius: Option<f64>,
-    /// Allow files estimated at over 1 GB in all, or a run estimated at over 30 s (refused
-    /// otherwise, with the estimate).
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]
     pub large: bool,
 }

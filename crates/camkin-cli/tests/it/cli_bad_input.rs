@@ -657,3 +657,55 @@ fn lengths_and_arm_angles_beyond_their_range_are_refused_by_field() {
         bad(name, &toml, &[], &[needle]);
     }
 }
+
+/// Issue 44, class 4 (unbounded work): every command that sweeps the cam refuses, before it
+/// writes anything, a step that would take minutes or gigabytes — with the library's one
+/// sentence (`would take about … s and … GB`), exit 2, and the flag that allows it.
+#[test]
+fn every_sweeping_command_refuses_gigabytes_up_front_with_one_sentence() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let out = out.to_str().unwrap();
+    let ecc = examples().join("eccentric-roller.toml");
+    let ecc = ecc.to_str().unwrap();
+    let measured = examples().join("measured-eccentric.csv");
+    let measured = measured.to_str().unwrap();
+    let motion = examples().join("motion-roller.toml");
+    let motion = motion.to_str().unwrap();
+    for args in [
+        vec!["plot", "--step", "0.000036", "--out", out],
+        vec![
+            "profile",
+            "--step",
+            "0.000036",
+            "--tool-radius",
+            "0.5",
+            "--out",
+            out,
+        ],
+        vec![
+            "deviation",
+            measured,
+            "--against",
+            ecc,
+            "--step",
+            "0.000036",
+            "--out",
+            out,
+        ],
+        vec!["synth", motion, "--step", "0.00004", "--out", out],
+        vec!["analyze", "--angles", "0:1e7:1", "-o", out],
+    ] {
+        camkin()
+            .args(&args)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("would take about "))
+            .stderr(predicate::str::contains(" GB"))
+            .stderr(predicate::str::contains("pass --large to run it anyway"));
+        assert!(
+            !std::path::Path::new(out).exists(),
+            "{args:?}: nothing written"
+        );
+    }
+}
