@@ -165,7 +165,7 @@ fn check(driver: &InvoluteGear, driven: &InvoluteGear, a: f64) -> Result<(), Gea
 }
 
 fn gear_of(c: &dyn Curve) -> Option<&InvoluteGear> {
-    (c as &dyn std::any::Any).downcast_ref::<InvoluteGear>()
+    c.as_involute_gear()
 }
 
 impl GearPair {

@@ -71,9 +71,7 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
     });
     // a spline's nodes (a gear's or a motion program's piece joints are not drawn: they are not
     // points anyone placed)
-    let spline = (profile as &dyn std::any::Any)
-        .downcast_ref::<camkin::curve::ClosedSpline>()
-        .is_some();
+    let spline = profile.as_spline().is_some();
     for u in profile.breakpoints().into_iter().filter(|_| spline) {
         shapes.push(Shape::Dot {
             p: body.pose.to_world(profile.position(u)),

@@ -95,10 +95,9 @@ pub const MAX_WARM_STEP: f64 = 0.2;
 
 impl<'a> Sweep<'a> {
     pub(crate) fn new(mech: &'a Mechanism) -> Self {
-        let profile: &dyn std::any::Any = mech.cam.profile.as_ref();
         Self {
             mech,
-            spline: profile.downcast_ref::<ClosedSpline>(),
+            spline: mech.cam.profile.as_spline(),
             prev: None,
             last: None,
             turn: None,

@@ -750,6 +750,10 @@ fn involute(rb: f64, base: f64, s: f64, relief: Option<&Relief>) -> [Vec2; 4] {
 }
 
 impl Curve for InvoluteGear {
+    fn as_involute_gear(&self) -> Option<&InvoluteGear> {
+        Some(self)
+    }
+
     fn eval(&self, u: f64) -> Derivs {
         let (k, w, mirrored) = self.locate(u);
         let [p, d1, d2, d3] = self.half_eval(w);

@@ -108,7 +108,7 @@ pub enum Domain {
 ///
 /// Implementors provide [`eval`](Curve::eval) and [`domain`](Curve::domain); everything else is
 /// derived. A curve must be regular (`r' ≠ 0`) except a [`Domain::Point`] curve.
-pub trait Curve: std::fmt::Debug + Send + Sync + std::any::Any {
+pub trait Curve: std::fmt::Debug + Send + Sync {
     /// Position and first three derivatives at `u`.
     fn eval(&self, u: f64) -> Derivs;
 
@@ -125,6 +125,17 @@ pub trait Curve: std::fmt::Debug + Send + Sync + std::any::Any {
     /// `z` teeth (it looks the same turned by `2π/z`), 1 for a curve without such symmetry.
     fn symmetry(&self) -> u32 {
         1
+    }
+
+    /// The curve as a closed cubic spline, when it is one: the typed hook a fast path asks (the
+    /// spline's warm step reads its pieces directly), as kurbo's `as_circle`.
+    fn as_spline(&self) -> Option<&ClosedSpline> {
+        None
+    }
+
+    /// The curve as an involute gear, when it is one (a gear pair is read as gears).
+    fn as_involute_gear(&self) -> Option<&InvoluteGear> {
+        None
     }
 
     /// `r(u)`.

@@ -237,6 +237,10 @@ impl ClosedSpline {
 }
 
 impl Curve for ClosedSpline {
+    fn as_spline(&self) -> Option<&ClosedSpline> {
+        Some(self)
+    }
+
     #[inline(always)]
     fn eval(&self, u: f64) -> Derivs {
         let (c, t) = self.piece(u);
