@@ -314,7 +314,7 @@ impl GearPair {
     /// (the contact moved by whole base pitches), counted when it converges on both flanks at
     /// the same driven angle (within the touch tolerance along the line of action).
     fn other_pairs_touching(&self, mech: &Mechanism, s: &FollowerState) -> u32 {
-        let Some(c) = mech.carried() else {
+        let Some(c) = mech.touch.carried() else {
             return 0;
         };
         let (f1, f2) = (
@@ -344,7 +344,10 @@ impl GearPair {
                 ) else {
                     continue;
                 };
-                let Ok(t) = mech.carried_newton(c, s.cam_angle, &frame, u, v, s.position) else {
+                let Ok(t) = mech
+                    .touch
+                    .carried_newton(c, s.cam_angle, &frame, u, v, s.position)
+                else {
                     continue;
                 };
                 let (g1, g2) = (self.driver.flank_at(t.u), self.driven.flank_at(t.v));

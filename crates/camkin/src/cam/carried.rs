@@ -2,8 +2,9 @@
 //! starts from): the free gap, Newton on the exact tangency in `(u, v, q)`, and the acceptance
 //! test (no sampled cam point inside the follower beyond the polyline's chord error).
 
+use super::first_touch::FirstTouch;
 use super::follower::carried::{Carried, Crossing, Track};
-use super::{CamError, Found, Mechanism, StopReason, Touch};
+use super::{CamError, Found, StopReason, Touch};
 use crate::body::{CurveInFrame, WorldDerivs};
 use crate::geometry::{cross, rot90, wrap_angle_near, Frame, Point2, Vec2};
 use std::f64::consts::TAU;
@@ -36,7 +37,7 @@ pub(super) struct Sides {
 
 /// [`Mechanism::covers`]' walk over the cam's samples.
 struct CoverSamples<'a> {
-    m: &'a Mechanism,
+    m: &'a FirstTouch,
     c: &'a Carried,
     frame: &'a Frame,
     out: &'a mut Vec<Cover>,
@@ -124,7 +125,7 @@ pub(super) struct Limits {
 /// Most starts tried by Newton in one global search.
 const STARTS: usize = 8;
 
-impl Mechanism {
+impl FirstTouch {
     pub(crate) fn carried(&self) -> Option<&Carried> {
         self.geometry.carried.as_deref()
     }
@@ -150,10 +151,9 @@ impl Mechanism {
         let super::Joint::Rotating { initial_angle, .. } = self.geometry.joint else {
             return 0.0;
         };
-        let z1 = self.cam.profile.symmetry();
+        let z1 = self.profile.symmetry();
         if z1 > 1 && c.symmetry > 1 {
-            initial_angle
-                - self.cam.direction.sign() * f64::from(z1) / f64::from(c.symmetry) * theta
+            initial_angle - self.sense.sign() * f64::from(z1) / f64::from(c.symmetry) * theta
         } else {
             initial_angle
         }
@@ -332,7 +332,7 @@ impl Mechanism {
         (u, v, q): (f64, f64, f64),
     ) -> (WorldDerivs, WorldDerivs, Vec2) {
         let joint = self.geometry.joint;
-        let a = frame.curve_at(self.cam.profile.as_ref(), u);
+        let a = frame.curve_at(self.profile.as_ref(), u);
         let b = joint.pose(q).frame().curve_at(c.curve.as_ref(), v);
         let dq_x = match joint {
             super::Joint::Translating { direction, .. } => *direction,
@@ -602,7 +602,7 @@ impl Mechanism {
             if tried.len() >= places {
                 break;
             }
-            let x = frame * self.cam.profile.position(k.u);
+            let x = frame * self.profile.position(k.u);
             // a place within a few samples of one looked at is the same place; near the
             // contact, unless its sample is the peak of another part of the cam (two parts
             // crossing: the one taking over touches first by less than the samples can tell)
@@ -636,7 +636,7 @@ impl Mechanism {
                 if let (Some(period), true) = (c.period, n != 0.0) {
                     t2.v = (t2.v + n * period / f64::from(c.symmetry)).rem_euclid(period);
                 }
-                let here = (frame * self.cam.profile.position(t2.u) - x).norm() <= 4.0 * spacing;
+                let here = (frame * self.profile.position(t2.u) - x).norm() <= 4.0 * spacing;
                 f(t2, -closing * d * k.scale).map(|stop| (stop, here))
             };
             let edges = [Some(closing_edge), both_edges.then_some(other_edge)];
@@ -796,7 +796,7 @@ impl Mechanism {
         if c.period.is_none() && !(t.v >= c.bounds.0 && t.v <= c.bounds.1) {
             return None;
         }
-        let a = frame.curve_at(self.cam.profile.as_ref(), t.u);
+        let a = frame.curve_at(self.profile.as_ref(), t.u);
         let b = self
             .geometry
             .joint
@@ -827,7 +827,7 @@ impl Mechanism {
     ) -> Result<(Touch, Found), CamError> {
         let (u0, v0, q0) = start;
         let (p_theta, p) = previous;
-        let back = self.cam.state(p_theta).frame();
+        let back = self.cam_frame(p_theta);
         // Newton of the kind of `corner`: on a tangency, or on a corner resting on a curve
         let newton = |theta: f64, frame: &Frame, (u, v, q): (f64, f64, f64), corner| match corner {
             None => self.carried_newton(c, theta, frame, u, v, q),
@@ -865,8 +865,8 @@ impl Mechanism {
     }
 }
 
-fn profile_point(m: &Mechanism, u: f64) -> Point2 {
-    m.cam.profile.position(u)
+fn profile_point(m: &FirstTouch, u: f64) -> Point2 {
+    m.profile.position(u)
 }
 
 /// The free gap (between covered stretches) to rest in, as `(from, to)` angles with

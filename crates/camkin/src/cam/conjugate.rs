@@ -112,7 +112,7 @@ impl Mechanism {
             });
         }
         let pivot = self.cam.pivot;
-        let (follower, flip) = match self.geometry.joint {
+        let (follower, flip) = match self.touch.geometry.joint {
             Joint::Translating { origin, direction } => (
                 Follower::Translating {
                     direction: -*direction,
@@ -215,7 +215,7 @@ impl Mechanism {
             acceleration: c.map(s.acceleration),
             ..*s
         };
-        if c.mech.ahead(mapped.position, own.position) > c.mech.touch_slack() {
+        if c.mech.ahead(mapped.position, own.position) > c.mech.touch.touch_slack() {
             return Ok(None);
         }
         let cam = self.cam.state(theta);

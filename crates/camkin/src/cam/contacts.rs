@@ -82,7 +82,7 @@ impl Mechanism {
     /// the 20/42 gear pair measured; 50 µs for a named kind, a cold query's cost at 100 000
     /// nodes).
     pub fn contacts_seconds_estimate(&self, angles: usize) -> f64 {
-        let per_angle = if self.carried().is_some() {
+        let per_angle = if self.touch.carried().is_some() {
             1.5e-3
         } else {
             5e-5
@@ -109,12 +109,14 @@ impl Mechanism {
             corner: s.corner,
         };
         let mut touches = vec![first];
-        match self.carried() {
-            Some(c) => self.carried_touching(c, theta, &frame, &first, &mut touches),
+        match self.touch.carried() {
+            Some(c) => self
+                .touch
+                .carried_touching(c, theta, &frame, &first, &mut touches),
             None => self.named_touching(theta, &frame, &first, &mut touches),
         }
         // one contact per place
-        let close = 1e-6 * self.size;
+        let close = 1e-6 * self.touch.size;
         let mut places: Vec<Point2> = Vec::new();
         let mut out = Vec::with_capacity(touches.len());
         for t in &touches {
@@ -137,15 +139,17 @@ impl Mechanism {
     /// global search, kept when it is a first touch within the touch tolerance of `t`.
     fn named_touching(&self, theta: f64, frame: &Frame, t: &Touch, out: &mut Vec<Touch>) {
         let mut starts = super::starts::Candidates::new(super::MAX_CANDIDATES);
-        if self.geometry.model.centre_path().is_some() {
-            self.path_starts(frame, &self.index.dense, &mut starts);
+        if self.touch.geometry.model.centre_path().is_some() {
+            self.touch
+                .path_starts(frame, &self.touch.index.dense, &mut starts);
         } else {
-            self.score_starts(frame, &self.index.dense, &mut starts);
+            self.touch
+                .score_starts(frame, &self.touch.index.dense, &mut starts);
         }
-        let slack = self.touch_slack();
+        let slack = self.touch.touch_slack();
         for &(_, u0, q0) in starts.as_slice() {
-            if let Ok(t2) = self.newton(theta, frame, u0, q0) {
-                if self.ahead(t.q, t2.q).abs() <= slack && self.is_first_touch(frame, &t2) {
+            if let Ok(t2) = self.touch.newton(theta, frame, u0, q0) {
+                if self.ahead(t.q, t2.q).abs() <= slack && self.touch.is_first_touch(frame, &t2) {
                     out.push(t2);
                 }
             }
@@ -154,8 +158,8 @@ impl Mechanism {
 
     /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
     pub(crate) fn ahead(&self, q: f64, other: f64) -> f64 {
-        let d = self.oriented(q) - self.oriented(other);
-        match self.geometry.joint {
+        let d = self.touch.oriented(q) - self.touch.oriented(other);
+        match self.touch.geometry.joint {
             Joint::Rotating { .. } => wrap_angle_near(d, 0.0),
             Joint::Translating { .. } => d,
         }
@@ -171,7 +175,7 @@ impl Mechanism {
         t: &Touch,
         s: &FollowerState,
     ) -> Result<Contact, CamError> {
-        let g = &self.geometry;
+        let g = &self.touch.geometry;
         let ea = frame.derivs_to_world(&self.cam.profile.eval(t.u));
         let (c, nu) = (ea.p, self.contact_normal(&ea, t));
         let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
@@ -184,7 +188,7 @@ impl Mechanism {
             follower_param: u_b,
             point: c,
             normal: UnitVec2::new_unchecked(nu),
-            gap: self.ahead(s.position, t.q) * g.q_length_scale(self.size),
+            gap: self.ahead(s.position, t.q) * g.q_length_scale(self.touch.size),
             normal_velocity: k.normal_velocity,
             sliding_rate_cam: k.sliding_rate_a,
             sliding_rate_follower: k.sliding_rate_b,

@@ -11,8 +11,9 @@
 //! parameter fixed at its joint.
 
 use super::carried::{Limits, Sides};
+use super::first_touch::FirstTouch;
 use super::follower::carried::Carried;
-use super::{CamError, Corner, Mechanism, StopReason, Touch};
+use super::{CamError, Corner, StopReason, Touch};
 use crate::body::CurveInFrame;
 use crate::curve::Curve;
 use crate::geometry::{cross, rot90, Frame, Point2, Vec2};
@@ -32,7 +33,7 @@ pub(super) struct Inside {
 /// the true contact, a tangency on that piece, by `O(δ²)` of its radius of curvature).
 const LEAN: f64 = 1e-9;
 
-impl Mechanism {
+impl FirstTouch {
     /// The corner of `side`'s curve nearest the parameter `param` (within `1e-9` of the period
     /// or of the bounds): its exact parameter.
     pub(super) fn corner_param(&self, c: &Carried, side: Corner, param: f64) -> Option<f64> {
@@ -127,7 +128,7 @@ impl Mechanism {
             return None;
         }
         let fb = self.geometry.joint.pose(t.q).frame();
-        let profile = self.cam.profile.as_ref();
+        let profile = self.profile.as_ref();
         let o = self.orientation;
         // the smooth body's outward normal, the corner's tangents either side of its joint
         // (world), the corner's material side (+1: left), and the normal from cam to follower
@@ -177,7 +178,7 @@ impl Mechanism {
     ) -> Option<Touch> {
         let side = t.corner?;
         let fb = self.geometry.joint.pose(t.q).frame();
-        let profile = self.cam.profile.as_ref();
+        let profile = self.profile.as_ref();
         let (out, b, (t_in, t_out), span) = match side {
             Corner::Follower => {
                 let a = frame.curve_at(profile, t.u);
@@ -296,7 +297,7 @@ impl Mechanism {
     ) {
         let tol = self.options.touch_tolerance;
         let fb = self.geometry.joint.pose(t.q).frame();
-        let profile = self.cam.profile.as_ref();
+        let profile = self.profile.as_ref();
         let own = |side: Corner, b: f64| {
             t.corner == Some(side)
                 && match side {
@@ -307,7 +308,7 @@ impl Mechanism {
         // the follower's corners within the cam's reach, inside the cam
         for &(b, y) in &c.corners.at {
             let x = fb * y;
-            if (x - self.cam.pivot).norm() > self.size + tol || own(Corner::Follower, b) {
+            if (x - self.pivot).norm() > self.size + tol || own(Corner::Follower, b) {
                 continue;
             }
             let local = frame.inverse_transform_point(&x);
@@ -380,7 +381,7 @@ impl Mechanism {
         near: f64,
     ) -> Vec<Inside> {
         let fb = self.geometry.joint.pose(q).frame();
-        let profile = self.cam.profile.as_ref();
+        let profile = self.profile.as_ref();
         let mut out = Vec::new();
         for &(b, y) in &c.corners.at {
             let x = fb * y;
@@ -422,7 +423,7 @@ impl Mechanism {
         (p, t): (&Touch, &Touch),
         near: f64,
     ) -> bool {
-        let profile = self.cam.profile.as_ref();
+        let profile = self.profile.as_ref();
         let curve = c.curve.as_ref();
         (profile.position(p.u) - profile.position(t.u)).norm() <= near
             && (curve.position(p.v) - curve.position(t.v)).norm() <= near

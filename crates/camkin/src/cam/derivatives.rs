@@ -47,8 +47,8 @@ impl Mechanism {
     /// holds the contact (at a spline node it jumps).
     pub fn angle_derivatives(&self, theta: f64) -> Result<[f64; 3], CamError> {
         let cam = self.cam.state(theta);
-        let touch = self.global_touch(theta, &cam.frame())?;
-        match self.carried() {
+        let touch = self.touch.global_touch(theta, &cam.frame())?;
+        match self.touch.carried() {
             Some(c) => self.carried_jet_derivatives(c, theta, &cam.frame(), touch),
             None => self.jet_derivatives(theta, &cam, touch),
         }
@@ -78,9 +78,9 @@ impl Mechanism {
     ) -> Result<[f64; 3], CamError> {
         let profile = self.cam.profile.as_ref();
         let r = profile.eval(touch.u);
-        let j = self.geometry.model.jacobian(
+        let j = self.touch.geometry.model.jacobian(
             &cam.eval_curve(profile, touch.u),
-            &self.geometry.model.pose(touch.q),
+            &self.touch.geometry.model.pose(touch.q),
         );
         if !solve2(&j, [1.0, 1.0]).iter().all(|x| x.is_finite()) {
             return Err(CamError::NoConvergence {
@@ -92,7 +92,7 @@ impl Mechanism {
         let mut q = [touch.q, 0.0, 0.0, 0.0];
         for k in 1..=3 {
             let (x, x1) = self.cam_jets(&r, theta, Jet([0.0, u[1], u[2], u[3]]));
-            let f = self.geometry.model.residual_value(x, x1, Jet(q));
+            let f = self.touch.geometry.model.residual_value(x, x1, Jet(q));
             [u[k], q[k]] = solve2(&j, [f[0].0[k], f[1].0[k]]);
         }
         Ok([q[1], 2.0 * q[2], 6.0 * q[3]])
@@ -116,7 +116,9 @@ impl Mechanism {
             reason: StopReason::SingularJacobian,
         };
         let (a, b) = (self.cam.profile.eval(touch.u), c.curve.eval(touch.v));
-        let (.., j) = self.carried_system(c, frame, (touch.u, touch.v, touch.q));
+        let (.., j) = self
+            .touch
+            .carried_system(c, frame, (touch.u, touch.v, touch.q));
         solve3(j, [1.0, 1.0, 1.0]).ok_or_else(singular)?;
         let (mut u, mut v, mut q) = ([0.0; 4], [0.0; 4], [touch.q, 0.0, 0.0, 0.0]);
         for k in 1..=3 {
@@ -124,7 +126,7 @@ impl Mechanism {
             let (y, y1) = curve_jets(&b, Jet([0.0, v[1], v[2], v[3]]));
             // the follower's frame at q: a slide's keeps its angle 0 (the curve was turned to
             // the world's axes when it was carried), an arm's turns by q
-            let (xb, xb1) = match self.geometry.joint {
+            let (xb, xb1) = match self.touch.geometry.joint {
                 Joint::Translating { origin, direction } => (
                     V2::c(origin.coords) + V2::c(*direction).scale(Jet(q)) + y,
                     y1,

@@ -59,7 +59,7 @@ impl Mechanism {
     /// on the profile all round.
     pub fn jump_angles(&self, step_deg: f64) -> Vec<f64> {
         // on a convex profile the first touch moves continuously: nothing to scan
-        if self.convex {
+        if self.touch.convex {
             return Vec::new();
         }
         let n = (360.0 / step_deg).ceil().max(1.0) as usize;

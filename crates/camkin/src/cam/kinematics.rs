@@ -37,9 +37,9 @@ impl Mechanism {
     ) -> Result<Motion, CamError> {
         // a named kind: the closed-form rates at the contact (no normal, body states or
         // constraint row); declined near a refusal, where the paper's method says why
-        if self.geometry.carried.is_none() {
+        if self.touch.geometry.carried.is_none() {
             let profile = self.cam.profile.as_ref();
-            let fast = dispatch!(&self.geometry.model, k => {
+            let fast = dispatch!(&self.touch.geometry.model, k => {
                 let at = curve_in(frame, profile, touch.u);
                 self.closed_form_motion(k, theta, cam, &at, (touch, k.pose(touch.q)), found)
             });
@@ -73,7 +73,7 @@ impl Mechanism {
         found: Found,
     ) -> Option<Motion> {
         let at = CamPoint::new(e, self.cam.pivot, cam.omega, cam.alpha);
-        let [qd, qdd, ud] = k.rates(&at, &pose, &self.prepared.refuse)?;
+        let [qd, qdd, ud] = k.rates(&at, &pose, &self.touch.prepared.refuse)?;
         Some(Motion {
             cam_angle: theta,
             position: touch.q,
@@ -96,7 +96,7 @@ impl Mechanism {
         frame: &Frame,
         touch: Touch,
     ) -> Result<Core, CamError> {
-        let g = &self.geometry;
+        let g = &self.touch.geometry;
         let profile = self.cam.profile.as_ref();
         let angle_deg = theta.to_degrees();
         let body_a = profile.eval(touch.u);
@@ -106,7 +106,7 @@ impl Mechanism {
         let jb = g.joint.velocity_jacobian(c);
         // velocity constraint Φ_q q̇ = 0: ν·v_A^P = q̇ ν·J_B
         let den = nu.dot(&jb);
-        if !(den.abs() > self.options.lock_tolerance * jb.norm()) {
+        if !(den.abs() > self.touch.options.lock_tolerance * jb.norm()) {
             return Err(CamError::Locked {
                 angle_deg,
                 pressure_angle_deg: pressure_angle(jb, nu).to_degrees(),
@@ -144,7 +144,7 @@ impl Mechanism {
         body_b: &BodyState,
         t: Touch,
     ) -> Result<(f64, ContactKinematics), CamError> {
-        let g = &self.geometry;
+        let g = &self.touch.geometry;
         let c = ea.p;
         let nu = self.contact_normal(ea, &t);
         let (u_b, mut eb) = g.curve.world_at(&body_b.frame(), c, t.v);
@@ -157,8 +157,8 @@ impl Mechanism {
             gap: nu.dot(&(c - eb.p)),
             iterations: 0,
         };
-        let tol = self.options.conformal_tolerance;
-        let k = match (t.corner, self.carried()) {
+        let tol = self.touch.options.conformal_tolerance;
+        let k = match (t.corner, self.touch.carried()) {
             // the cam's corner is a point of the cam resting on the follower's curve
             (Some(Corner::Cam), Some(carried)) => {
                 let corner = PointCurve::new(self.cam.profile.position(t.u))?;
@@ -196,8 +196,8 @@ impl Mechanism {
     #[inline(always)]
     pub(crate) fn contact_normal(&self, ea: &WorldDerivs, t: &Touch) -> Vec2 {
         if t.corner == Some(Corner::Cam) {
-            let fb = self.geometry.joint.pose(t.q).frame();
-            let (_, eb) = self.geometry.curve.world_at(&fb, ea.p, t.v);
+            let fb = self.touch.geometry.joint.pose(t.q).frame();
+            let (_, eb) = self.touch.geometry.curve.world_at(&fb, ea.p, t.v);
             -eb.as_derivs().normal()
         } else {
             ea.as_derivs().normal()
@@ -222,15 +222,15 @@ impl Mechanism {
             u_b,
             k,
         } = self.core(theta, cam, frame, touch)?;
-        let g = &self.geometry;
+        let g = &self.touch.geometry;
         let c = ea.p;
         let body_b = g.joint.body(touch.q, qd, qdd);
-        let kappa_conv = self.orientation * k.kappa_a;
+        let kappa_conv = self.touch.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
         // none where a curve's third derivative jumps (a spline node, a piece joint of the
         // carried curve) or the contact sits on a corner
-        let dq = match self.carried() {
-            _ if at_breakpoint || !self.options.jerk || touch.corner.is_some() => None,
+        let dq = match self.touch.carried() {
+            _ if at_breakpoint || !self.touch.options.jerk || touch.corner.is_some() => None,
             Some(c) if self.carried_at_breakpoint(c, touch.v) => None,
             Some(c) => Some(self.carried_jet_derivatives(c, theta, frame, touch)?),
             None => Some(self.jet_derivatives(theta, cam, touch)?),
@@ -268,7 +268,7 @@ impl Mechanism {
     /// breakpoint tolerance of its parameter span).
     fn carried_at_breakpoint(&self, c: &Carried, v: f64) -> bool {
         let span = c.period.unwrap_or(c.bounds.1 - c.bounds.0);
-        let tol = self.options.breakpoint_tolerance * span;
+        let tol = self.touch.options.breakpoint_tolerance * span;
         let bp = &c.breakpoints;
         let i = bp.partition_point(|&b| b <= v);
         let near = |k: usize| bp.get(k).is_some_and(|&b| (b - v).abs() <= tol);
@@ -282,21 +282,21 @@ impl Mechanism {
 
     /// True when `u` is within the breakpoint tolerance of a node of the profile.
     fn at_breakpoint(&self, u: f64) -> bool {
-        let bp = &self.breakpoints;
+        let bp = &self.touch.breakpoints;
         if bp.is_empty() {
             return false;
         }
-        let tol = self.options.breakpoint_tolerance * self.period;
+        let tol = self.touch.options.breakpoint_tolerance * self.touch.period;
         let i = bp.partition_point(|&b| b <= u);
         let below = if i == 0 {
-            bp[bp.len() - 1] - self.period
+            bp[bp.len() - 1] - self.touch.period
         } else {
             bp[i - 1]
         };
         let above = if i < bp.len() {
             bp[i]
         } else {
-            bp[0] + self.period
+            bp[0] + self.touch.period
         };
         u - below < tol || above - u < tol
     }

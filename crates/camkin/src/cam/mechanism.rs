@@ -54,21 +54,26 @@ impl Mechanism {
         let roller = geometry.model.roller_radius().is_some();
         let corners = std::sync::Arc::new(super::corners::Corners::of(profile, &samples));
         let mut m = Self {
+            touch: super::first_touch::FirstTouch {
+                profile: cam.profile.clone(),
+                pivot: cam.pivot,
+                sense: cam.direction,
+                geometry,
+                options,
+                prepared: Default::default(),
+                index: Arc::default(),
+                sample_points: Vec::new(),
+                period,
+                size,
+                orientation,
+                convex,
+                roller,
+                mean_speed,
+                cusps,
+                breakpoints,
+                corners,
+            },
             cam,
-            geometry,
-            options,
-            prepared: Default::default(),
-            index: Arc::default(),
-            sample_points: Vec::new(),
-            period,
-            size,
-            orientation,
-            convex,
-            roller,
-            mean_speed,
-            cusps,
-            breakpoints,
-            corners,
             conjugate: None,
         };
         m.set_options(options);
@@ -77,35 +82,12 @@ impl Mechanism {
 
     /// Replaces the analysis options.
     pub fn set_options(&mut self, options: AnalysisOptions) {
-        let dense = bracket_samples(
-            &self.breakpoints,
-            self.period,
-            options.samples_per_piece.max(2),
-            options.samples_per_curve.max(8),
-        );
-        self.sample_points = if self.geometry.carried.is_some() {
-            let profile = self.cam.profile.as_ref();
-            dense.iter().map(|&u| profile.position(u)).collect()
-        } else {
-            Vec::new()
-        };
-        let coarse = bracket_samples(
-            &self.breakpoints,
-            self.period,
-            options.convex_samples_per_piece.max(2),
-            options.convex_samples_per_curve.max(8),
-        );
-        self.index = Arc::new(super::starts::SearchIndex {
-            dense: super::starts::Sampled::new(self, dense),
-            coarse: super::starts::Sampled::new(self, coarse),
-        });
-        self.options = options;
-        self.prepared = super::search::Prepared::new(&options, self.q_scale(), self.period);
+        self.touch.set_options(options);
     }
 
     /// The analysis options in force.
     pub fn options(&self) -> &AnalysisOptions {
-        &self.options
+        &self.touch.options
     }
 
     /// The cam.
@@ -115,27 +97,27 @@ impl Mechanism {
 
     /// The follower.
     pub fn follower(&self) -> &Follower {
-        &self.geometry.follower
+        &self.touch.geometry.follower
     }
 
     /// The joint that carries the follower.
     pub fn follower_joint(&self) -> Joint {
-        self.geometry.joint
+        self.touch.geometry.joint
     }
 
     /// The follower's contact curve in its own frame (see [`Mechanism::follower_body`]).
     pub fn follower_curve(&self) -> FollowerCurve {
-        self.geometry.curve.clone()
+        self.touch.geometry.curve.clone()
     }
 
     /// The radius of a roller follower.
     pub fn roller_radius(&self) -> Option<f64> {
-        self.geometry.model.roller_radius()
+        self.touch.geometry.model.roller_radius()
     }
 
     /// Largest distance of a profile point from the cam axis (the length scale of tolerances).
     pub fn size(&self) -> f64 {
-        self.size
+        self.touch.size
     }
 
     /// A rough estimate of the seconds a warm-started sweep over `angles` cam angles takes, for
@@ -147,12 +129,12 @@ impl Mechanism {
     /// cam's samples within its reach and its corners, about 0.2 ms a step (twice what the
     /// 20/42 gear pair measured).
     pub fn sweep_seconds_estimate(&self, angles: usize) -> f64 {
-        let per_step = if self.carried().is_some() {
+        let per_step = if self.touch.carried().is_some() {
             2e-4
-        } else if self.convex {
+        } else if self.touch.convex {
             1e-6
         } else {
-            2e-6 + 2e-6 * (self.index.dense.params.len().max(2) as f64).log2()
+            2e-6 + 2e-6 * (self.touch.index.dense.params.len().max(2) as f64).log2()
         };
         angles as f64 * per_step
     }
@@ -161,9 +143,9 @@ impl Mechanism {
     /// refuses a long one ([`crate::work::Work::sweep`]); `None` for a convex profile under a
     /// named follower.
     pub fn search_cost_reason(&self) -> Option<String> {
-        if self.carried().is_some() {
+        if self.touch.carried().is_some() {
             Some("the follower carries a curve: every angle checks the cam's samples within its reach".into())
-        } else if self.convex {
+        } else if self.touch.convex {
             None
         } else {
             Some(format!(
@@ -179,7 +161,7 @@ impl Mechanism {
     /// warm step); 1 ms for a follower carrying a curve (twice the 0.5 ms the 20/42 gear pair
     /// measured).
     pub fn search_seconds_estimate(&self) -> f64 {
-        if self.carried().is_some() {
+        if self.touch.carried().is_some() {
             1e-3
         } else {
             10.0 * self.sweep_seconds_estimate(1)
@@ -188,19 +170,19 @@ impl Mechanism {
 
     /// The number of dense samples of the profile the global search looks among.
     pub fn sample_count(&self) -> usize {
-        self.index.dense.params.len()
+        self.touch.index.dense.params.len()
     }
 
     /// True when the follower carries a curve whose first touch is found by the coverage search
     /// (a general follower's curve other than a point: a point is a knife edge, computed by the
     /// knife's closed forms).
     pub fn carries_curve(&self) -> bool {
-        self.carried().is_some()
+        self.touch.carried().is_some()
     }
 
     /// True when the profile's curvature has one sign all round (sampled densely).
     pub fn is_convex(&self) -> bool {
-        self.convex
+        self.touch.convex
     }
 
     /// Parameter ranges `(from, to)` of the profile that the follower cannot follow: concave
@@ -211,24 +193,24 @@ impl Mechanism {
     /// and the acceleration is impulsive there. Found on a dense sampling of the profile; empty
     /// for a knife edge and for convex profiles.
     pub fn unfollowable_stretches(&self) -> Vec<(f64, f64)> {
-        let Some(limit) = self.geometry.model.concave_limit() else {
+        let Some(limit) = self.touch.geometry.model.concave_limit() else {
             return Vec::new();
         };
         let profile = self.cam.profile.as_ref();
-        let u = bracket_samples(&self.breakpoints, self.period, 64, 2048);
+        let u = bracket_samples(&self.touch.breakpoints, self.touch.period, 64, 2048);
         let mut bad: Vec<bool> = u
             .iter()
-            .map(|&v| self.orientation * profile.curvature(v) < limit)
+            .map(|&v| self.touch.orientation * profile.curvature(v) < limit)
             .collect();
         // a folded profile (a swallowtail between two cusps, found once by the summary): the
         // branch between the cusps runs backwards and the follower cannot follow it whatever its
         // curvature says; the tangent reverses at each cusp, the shorter alternate branches are
         // the reversed ones
         let n = u.len();
-        if self.cusps.len() >= 2 {
+        if self.touch.cusps.len() >= 2 {
             let mut reversed: Vec<bool> = u
                 .iter()
-                .map(|&v| self.cusps.iter().filter(|&&c| c <= v).count() % 2 == 1)
+                .map(|&v| self.touch.cusps.iter().filter(|&&c| c <= v).count() % 2 == 1)
                 .collect();
             if reversed.iter().filter(|&&r| r).count() * 2 > n {
                 reversed.iter_mut().for_each(|r| *r = !*r);
@@ -239,7 +221,7 @@ impl Mechanism {
         }
         let mut out = Vec::new();
         let Some(start) = (0..n).find(|&k| !bad[k]) else {
-            return vec![(0.0, self.period)];
+            return vec![(0.0, self.touch.period)];
         };
         let mut k = start;
         for _ in 0..n {
@@ -261,8 +243,8 @@ impl Mechanism {
     /// frame (face: a line, roller: a circle, knife: a point; oriented material-on-the-left).
     pub fn follower_body(&self, q: f64) -> (crate::body::Pose, Arc<dyn Curve>) {
         (
-            self.geometry.joint.pose(q),
-            self.geometry.curve.clone().to_arc(),
+            self.touch.geometry.joint.pose(q),
+            self.touch.geometry.curve.clone().to_arc(),
         )
     }
 
@@ -273,7 +255,7 @@ impl Mechanism {
 
     /// +1 when the profile runs counter-clockwise, −1 when clockwise.
     pub fn orientation(&self) -> f64 {
-        self.orientation
+        self.touch.orientation
     }
 
     /// The follower's motion at cam angle `theta` (rad) with the cam's own speed and
@@ -300,7 +282,7 @@ impl Mechanism {
     pub fn analyze(&self, theta: f64) -> Result<FollowerState, CamError> {
         let cam = self.cam.state(theta);
         let frame = cam.frame();
-        let touch = self.global_touch(theta, &frame)?;
+        let touch = self.touch.global_touch(theta, &frame)?;
         self.kinematics(theta, &cam, &frame, touch, Found::Global)
     }
 
@@ -311,7 +293,7 @@ impl Mechanism {
     pub fn motion(&self, theta: f64) -> Result<Motion, CamError> {
         let cam = self.cam.state(theta);
         let frame = cam.frame();
-        let touch = self.global_touch(theta, &frame)?;
+        let touch = self.touch.global_touch(theta, &frame)?;
         self.motion_at(theta, &cam, &frame, touch, Found::Global)
     }
 
@@ -323,7 +305,7 @@ impl Mechanism {
     /// The follower's position only, at cam angle `theta` (rad), by first touch.
     pub fn position(&self, theta: f64) -> Result<f64, CamError> {
         let frame = self.cam.state(theta).frame();
-        Ok(self.global_touch(theta, &frame)?.q)
+        Ok(self.touch.global_touch(theta, &frame)?.q)
     }
 
     /// A sweep that warm-starts each angle from the previous contact.

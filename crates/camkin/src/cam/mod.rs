@@ -21,6 +21,7 @@ mod corner_touch;
 mod corners;
 mod derivatives;
 mod error;
+mod first_touch;
 mod follower;
 mod golden;
 mod jet;
@@ -59,7 +60,6 @@ use crate::body::BodyState;
 use crate::curve::{Curve, Domain};
 use crate::field::{CamField, Field};
 use crate::geometry::Point2;
-use follower::Geometry;
 use std::sync::Arc;
 
 /// A cam: a closed profile in the cam frame, whose origin is the rotation axis.
@@ -241,31 +241,14 @@ impl Cam {
     }
 }
 
-/// A cam and its follower, validated, with the precomputed data the analysis needs.
+/// A cam and its follower, validated, with the precomputed data the analysis needs: the cam,
+/// the first-touch engine of its profile and follower, and a form-closed follower's second
+/// curve.
 #[derive(Debug, Clone)]
 pub struct Mechanism {
     cam: Cam,
-    geometry: Geometry,
-    options: AnalysisOptions,
-    /// what the options give Newton and the first-touch test, prepared once
-    prepared: search::Prepared,
-    /// the profile's samples and their trees for the first-touch search
-    index: Arc<starts::SearchIndex>,
-    /// the profile's points at the dense samples (cam frame), for the coverage of a carried curve
-    sample_points: Vec<Point2>,
-    period: f64,
-    size: f64,
-    orientation: f64,
-    convex: bool,
-    /// the follower is a roller (translating or oscillating)
-    roller: bool,
-    /// the mean `|r'|` of the profile: below 1e-6 of it a contact is taken to sit on a cusp
-    mean_speed: f64,
-    /// the cusps of a folded profile (parameters)
-    cusps: Vec<f64>,
-    breakpoints: Vec<f64>,
-    /// the profile's corners and the samples to measure a depth inside the cam from
-    corners: std::sync::Arc<corners::Corners>,
+    /// the first-touch engine: the profile's index, the follower's model, the options
+    pub(crate) touch: first_touch::FirstTouch,
     /// a form-closed follower's second curve
     conjugate: Option<Arc<conjugate::Conjugate>>,
 }

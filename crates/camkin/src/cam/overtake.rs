@@ -11,9 +11,10 @@
 //! followed contact's score, every sampled local maximum (other than the followed one) is refined
 //! to the exact tangency and compared.
 
+use super::first_touch::FirstTouch;
 use super::follower::Kind as _;
 use super::starts::Query;
-use super::{Mechanism, Touch};
+use super::Touch;
 use crate::body::CurveInFrame;
 use crate::circle_tree::Visit;
 use crate::geometry::{Frame, Point2};
@@ -30,7 +31,7 @@ pub(crate) enum Overtaken {
     Sampled,
 }
 
-impl Mechanism {
+impl FirstTouch {
     /// Whether a part of the profile other than the local maximum at cam parameter `own` touches
     /// the follower with an oriented score above `threshold` (the warm contact's, plus the touch
     /// tolerance), on the continuous profile. For the score-based followers (not a knife or a
@@ -76,9 +77,7 @@ impl Overtake<'_> {
     fn point(&self, k: usize) -> Point2 {
         let s = &self.q.s.params;
         let u = s[k % s.len()];
-        self.q
-            .frame
-            .curve_position(self.q.m.cam.profile.as_ref(), u)
+        self.q.frame.curve_position(self.q.m.profile.as_ref(), u)
     }
 
     /// A sample above the floor: the global search decides.

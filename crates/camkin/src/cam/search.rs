@@ -2,11 +2,12 @@
 //! first touch, and the global search (bracketing samples of the first-touch function, the best
 //! local maxima refined by Newton).
 
+use super::first_touch::FirstTouch;
 use super::follower::rates::Refusals;
 use super::follower::{dispatch, pitch_point, CentrePath, Kind};
 use super::pose::Pose;
 use super::starts::Candidates;
-use super::{CamError, Mechanism, StopReason};
+use super::{CamError, StopReason};
 use crate::body::{curve_in, CurveInFrame, WorldDerivs};
 use crate::curve::Curve;
 use crate::geometry::{Frame, Point2};
@@ -72,7 +73,7 @@ impl Prepared {
     }
 }
 
-impl Mechanism {
+impl FirstTouch {
     /// The follower coordinate's length scale: 1 for a length; for an arm angle the cam's size
     /// plus the pivot's distance from the cam's axis (the farthest a contact can be from the pivot).
     pub(crate) fn q_scale(&self) -> f64 {
@@ -116,7 +117,7 @@ impl Mechanism {
         u: f64,
         q: f64,
     ) -> Result<(Touch, WorldDerivs), CamError> {
-        let profile = self.cam.profile.as_ref();
+        let profile = self.profile.as_ref();
         dispatch!(&self.geometry.model, k => self
             .newton_with(k, profile, theta, frame, u, k.pose(q))
             .map(|c| (c.touch, c.last)))
@@ -209,7 +210,7 @@ impl Mechanism {
         let per_tol = if along > inv_tol { along } else { inv_tol };
         // in the cam's frame: the path turned once, not the curve's three derivatives each
         // iteration (the pitch point's offset and stretch do not depend on the frame)
-        let body = path.in_body(self.cam.pivot, frame);
+        let body = path.in_body(self.pivot, frame);
         for _ in 0..self.options.max_iterations {
             let e = profile.eval(u);
             let (c, stretch) = pitch_point((e.p, e.d1, e.d2), r, self.orientation);
@@ -244,7 +245,7 @@ impl Mechanism {
     /// True when `(u, q)` is the follower's first touch through that cam point (not another
     /// tangency such as the cam's back side or a roller touching from inside).
     pub(crate) fn is_first_touch(&self, frame: &Frame, t: &Touch) -> bool {
-        self.is_first_touch_at(&frame.curve_at(self.cam.profile.as_ref(), t.u), t.q)
+        self.is_first_touch_at(&frame.curve_at(self.profile.as_ref(), t.u), t.q)
     }
 
     /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
@@ -282,7 +283,7 @@ impl Mechanism {
     /// before the contact at position `q`: the follower then rests on that corner.
     pub(crate) fn check_cusps(&self, theta: f64, frame: &Frame, q: f64) -> Result<(), CamError> {
         for &u in &self.cusps {
-            let p = frame.curve_position(self.cam.profile.as_ref(), u);
+            let p = frame.curve_position(self.profile.as_ref(), u);
             if let Some((score, _)) = self.geometry.model.score(p) {
                 if score > self.oriented(q) + self.touch_slack() {
                     return Err(CamError::NoConvergence {
@@ -311,7 +312,7 @@ impl Mechanism {
 
     /// The peak of the first-touch function on `[a, b]` by golden-section search: `(u, q)`.
     pub(super) fn score_peak(&self, frame: &Frame, a: f64, b: f64) -> Option<(f64, f64)> {
-        let profile = self.cam.profile.as_ref();
+        let profile = self.profile.as_ref();
         let score = |u: f64| {
             self.geometry
                 .model
@@ -476,6 +477,7 @@ pub(crate) fn bracket_samples(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::cam::Mechanism;
     fn paper() -> Mechanism {
         crate::reference::paper_mechanism(false)
     }
@@ -485,11 +487,11 @@ mod tests {
         let m = paper();
         let frame = m.cam.state(0.0).frame();
         // Newton from the far side converges to the leftmost point, a stationary point of x·d
-        let back = m.newton(0.0, &frame, 4.5, -2.8).unwrap();
+        let back = m.touch.newton(0.0, &frame, 4.5, -2.8).unwrap();
         assert!(back.q < 0.0);
-        assert!(!m.is_first_touch(&frame, &back));
-        let front = m.newton(0.0, &frame, 0.1, 4.9).unwrap();
-        assert!(m.is_first_touch(&frame, &front));
+        assert!(!m.touch.is_first_touch(&frame, &back));
+        let front = m.touch.newton(0.0, &frame, 0.1, 4.9).unwrap();
+        assert!(m.touch.is_first_touch(&frame, &front));
         assert!((front.q - 5.0).abs() < 1e-14);
     }
 

@@ -4,7 +4,7 @@
 //! a concave radius of curvature (the pitch curve turns back at cusps) included.
 
 use super::*;
-use crate::cam::{Cam, Follower, Sense};
+use crate::cam::{Cam, Follower, Mechanism, Sense};
 use crate::curve::ClosedSpline;
 use crate::geometry::Vec2;
 use std::sync::Arc;
@@ -101,14 +101,14 @@ fn pruned_searches_find_what_the_scans_find() {
                 let theta = 0.0137 + f64::from(k) * 0.1049;
                 let frame = m.cam.state(theta).frame();
                 let at = format!("cam {ci}, follower {fi}, angle {k}");
-                for s in [&m.index.dense, &m.index.coarse] {
-                    let q = || Query::new(&m, &frame, s);
+                for s in [&m.touch.index.dense, &m.touch.index.coarse] {
+                    let q = || Query::new(&m.touch, &frame, s);
                     let leaves = s.points.nodes.iter().filter(|n| n.kids.is_none()).count();
                     // starts from the crossings of the path
                     if let Some(tree) = &s.path {
-                        let (path, r) = m.geometry.model.centre_path().unwrap();
+                        let (path, r) = m.touch.geometry.model.centre_path().unwrap();
                         let mut a = Candidates::new(4);
-                        m.path_starts(&frame, s, &mut a);
+                        m.touch.path_starts(&frame, s, &mut a);
                         let mut b = Candidates::new(4);
                         scan(
                             tree,
@@ -124,7 +124,7 @@ fn pruned_searches_find_what_the_scans_find() {
                     } else {
                         // starts from the local maxima of the first-touch function
                         let mut a = Candidates::new(4);
-                        let best_a = m.score_starts(&frame, s, &mut a);
+                        let best_a = m.touch.score_starts(&frame, s, &mut a);
                         let mut b = Candidates::new(4);
                         let mut v = ScoreStarts {
                             q: q(),
@@ -148,15 +148,15 @@ fn pruned_searches_find_what_the_scans_find() {
                         pruned_leaves.1 += leaves;
                     }
                     // the best sample, and the jump guard about it
-                    let best = m.best_sample(&frame, s);
+                    let best = m.touch.best_sample(&frame, s);
                     let mut v = BestSample { q: q(), best: None };
                     scan(&s.points, &mut v);
                     assert_eq!(best, v.best, "best sample, {at}");
-                    if let (Some(b), true) = (best, std::ptr::eq(s, &m.index.dense)) {
+                    if let (Some(b), true) = (best, std::ptr::eq(s, &m.touch.index.dense)) {
                         // a sample above the threshold: the global search decides
                         for t in [b.0 - 1e-9, b.0 - 0.01] {
                             assert_eq!(
-                                m.overtaken(0.0, &frame, t, b.1),
+                                m.touch.overtaken(0.0, &frame, t, b.1),
                                 super::super::overtake::Overtaken::Sampled,
                                 "above {t}, {at}"
                             );

@@ -81,7 +81,7 @@ impl Mechanism {
     /// method fails.
     pub fn independent_check(&self, thetas: &[f64]) -> Result<IndependentCheck, CamError> {
         let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
-        let reach = self.size
+        let reach = self.touch.size
             + match self.follower_joint() {
                 Joint::Rotating { pivot, .. } => (pivot - self.cam.pivot).norm(),
                 Joint::Translating { .. } => 0.0,
@@ -110,7 +110,7 @@ impl Mechanism {
                 Joint::Rotating { .. } => wrap_near_zero(s.position - centre.q),
                 Joint::Translating { .. } => s.position - centre.q,
             };
-            out.position = out.position.max(q_length(dq) / self.size);
+            out.position = out.position.max(q_length(dq) / self.touch.size);
             let Some((d1, d2)) = self.differences(theta, centre) else {
                 out.skipped += 1;
                 continue;
@@ -132,7 +132,7 @@ impl Mechanism {
     /// steps have a stencil.
     fn differences(&self, theta: f64, centre: Support) -> Option<(f64, f64)> {
         let half = (NODES / 2) as i32;
-        let piece = |u: f64| self.breakpoints.partition_point(|&b| b <= u);
+        let piece = |u: f64| self.touch.breakpoints.partition_point(|&b| b <= u);
         let home = piece(centre.u);
         // each derivative with the rounding it carries: the positions' own rounding (a few ulps
         // of the largest) through the stencil's weights
@@ -153,7 +153,7 @@ impl Mechanism {
                         _ => break,
                     }
                 }
-                if nodes.len() < NODES || !steady(&nodes, self.period) {
+                if nodes.len() < NODES || !steady(&nodes, self.touch.period) {
                     continue;
                 }
                 let x: Vec<f64> = ks.iter().map(|&k| k as f64 * h).collect();
@@ -218,8 +218,8 @@ impl Mechanism {
             q: report.map_or(s.q, |a| a + wrap_near_zero(s.q - a)),
             u: s.u,
         };
-        let period = self.period;
-        let grid = sample_grid(&self.breakpoints, period);
+        let period = self.touch.period;
+        let grid = sample_grid(&self.touch.breakpoints, period);
         match self.follower_curve() {
             curve @ (FollowerCurve::Point(_) | FollowerCurve::Circle(_)) => {
                 // the extreme of the crossings of the tip's path with the profile, or of the
@@ -231,7 +231,7 @@ impl Mechanism {
                     FollowerCurve::Point(p) => (p.at().coords, 0.0),
                     _ => unreachable!("matched above"),
                 };
-                let shift = -self.orientation * r;
+                let shift = -self.touch.orientation * r;
                 let offset = |u: f64| {
                     if r == 0.0 {
                         return world(u);

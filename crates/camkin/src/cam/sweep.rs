@@ -119,7 +119,7 @@ impl<'a> Sweep<'a> {
     pub fn step_motion(&mut self, theta: f64) -> Result<Motion, CamError> {
         // the last step by reference: copying it out costs a dozen instructions a step
         let fast = match self.prev {
-            Some(ref p) if self.mech.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
+            Some(ref p) if self.mech.touch.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
                 let angle = self.mech.cam.direction.sign() * theta;
                 let turn = match self.turn {
                     Some(t) => t.angle_to(angle),
@@ -127,7 +127,7 @@ impl<'a> Sweep<'a> {
                 };
                 self.turn = Some(turn);
                 let rotation = Rotation::from_cos_sin_unchecked(turn.cos, turn.sin);
-                dispatch!(&self.mech.geometry.model, k => self.warm_motion(k, theta, p, rotation))
+                dispatch!(&self.mech.touch.geometry.model, k => self.warm_motion(k, theta, p, rotation))
             }
             _ => None,
         };
@@ -156,7 +156,7 @@ impl<'a> Sweep<'a> {
         p: &Prev,
         rotation: Rotation,
     ) -> Option<(Motion, Option<Pose>)> {
-        if self.mech.geometry.carried.is_some() {
+        if self.mech.touch.geometry.carried.is_some() {
             return None;
         }
         match self.spline {
@@ -183,15 +183,18 @@ impl<'a> Sweep<'a> {
         let (touch, pose, at) = match k.centre_path() {
             // a roller: Newton in the cam parameter alone, the position from its centre
             Some((path, r)) if r > 0.0 => {
-                let u = m.pitch_newton((path, r), profile, theta, &frame, u0).ok()?;
+                let u = m
+                    .touch
+                    .pitch_newton((path, r), profile, theta, &frame, u0)
+                    .ok()?;
                 let at = curve_in(&frame, profile, u);
                 let near = match p.pose {
                     Some(last) if K::ANGULAR => last,
                     _ => k.pose(q0),
                 };
-                let (centre, _) = pitch_point((at.p, at.d1, at.d2), r, m.orientation);
+                let (centre, _) = pitch_point((at.p, at.d1, at.d2), r, m.touch.orientation);
                 let pose = path.pose(m.cam.pivot, centre, near);
-                if !m.convex_warm_touch_with(k, &at, &pose) {
+                if !m.touch.convex_warm_touch_with(k, &at, &pose) {
                     return None;
                 }
                 (
@@ -210,8 +213,11 @@ impl<'a> Sweep<'a> {
                     Some(from) if K::ANGULAR => k.pose_from(from, q0),
                     _ => k.pose(q0),
                 };
-                let c = m.newton_with(k, profile, theta, &frame, u0, start).ok()?;
-                if !m.convex_warm_touch_with(k, &c.last, &c.pose) {
+                let c = m
+                    .touch
+                    .newton_with(k, profile, theta, &frame, u0, start)
+                    .ok()?;
+                if !m.touch.convex_warm_touch_with(k, &c.last, &c.pose) {
                     return None;
                 }
                 (c.touch, c.pose, curve_in(&frame, profile, c.touch.u))
@@ -226,7 +232,7 @@ impl<'a> Sweep<'a> {
     /// step when it was a continuation).
     #[inline(always)]
     fn note(&mut self, theta: f64, t: Touch, found: Found) {
-        if self.mech.geometry.carried.is_none() {
+        if self.mech.touch.geometry.carried.is_none() {
             return;
         }
         let rate = match (self.prev, self.last) {
@@ -246,7 +252,7 @@ impl<'a> Sweep<'a> {
         let frame = cam.frame();
         let (t, f) = match self.prev {
             Some(p) if (theta - p.theta).abs() <= MAX_WARM_STEP => self.warm(theta, &frame, p)?,
-            _ => (m.global_touch(theta, &frame)?, Found::Global),
+            _ => (m.touch.global_touch(theta, &frame)?, Found::Global),
         };
         Ok((cam, frame, t, f))
     }
@@ -290,59 +296,63 @@ impl<'a> Sweep<'a> {
         let dt = theta - p.theta;
         // second-order extrapolation: the start is off by O(Δθ³)
         let (u0, q0) = p.start(dt);
-        if let (Some(c), Some((last, rate))) = (m.carried(), self.last) {
+        if let (Some(c), Some((last, rate))) = (m.touch.carried(), self.last) {
             let v0 = last.v + dt * rate;
-            return m.carried_warm(c, theta, frame, (u0, v0, q0), (p.theta, last));
+            return m
+                .touch
+                .carried_warm(c, theta, frame, (u0, v0, q0), (p.theta, last));
         }
         // on a non-convex profile a knife's crossing can vanish (it merges with its partner where
         // the line of travel grazes the profile) and the tip falls to another crossing: a
         // contact is a continuation only if Newton at the previous angle, started from it, comes
         // back to the previous contact (local rates diverge at the fold, so no step bound works)
-        let knife_fold = !m.convex && m.geometry.is_knife();
+        let knife_fold = !m.touch.convex && m.touch.geometry.is_knife();
         let continues = |t: &Touch| {
             let back = m.cam.state(p.theta).frame();
-            m.newton_at(p.theta, &back, t.u, t.q).is_ok_and(|(b, _)| {
-                let d = (b.u - p.u).rem_euclid(m.period);
-                d.min(m.period - d) <= 1e-6 * m.period
-            })
+            m.touch
+                .newton_at(p.theta, &back, t.u, t.q)
+                .is_ok_and(|(b, _)| {
+                    let d = (b.u - p.u).rem_euclid(m.touch.period);
+                    d.min(m.touch.period - d) <= 1e-6 * m.touch.period
+                })
         };
-        match m.newton_at(theta, frame, u0, q0) {
+        match m.touch.newton_at(theta, frame, u0, q0) {
             // on a convex profile the first touch is unique and Newton started next to it: the
             // orientation check is enough (it rejects the cam's back side); a roller's Newton
             // can leap (its residual bends on the scale of the roller's radius, which may be
             // tiny), so its touch must also be the first touch of its cam point
             Ok((t, e))
-                if (m.convex && dispatch!(&m.geometry.model, k => m.convex_warm_touch_with(k, &e, &k.pose(t.q))))
+                if (m.touch.convex && dispatch!(&m.touch.geometry.model, k => m.touch.convex_warm_touch_with(k, &e, &k.pose(t.q))))
                     // evaluated at the converged point itself: near a cusp the tangent (and
                     // with it the normal) turns over within the last Newton step
-                    || (!m.convex && m.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
+                    || (!m.touch.convex && m.touch.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
             {
                 // on a convex profile nothing can overtake the first touch
-                if m.convex {
+                if m.touch.convex {
                     return Ok((t, Found::WarmStart));
                 }
                 // non-convex: another part of the profile may touch first. A knife's or a
                 // roller's reach beside its path can be narrower than the sample spacing, so for
                 // them the global search (crossings of the path) decides; for the others the
                 // guard bounds the continuous profile and refines the parts that may be ahead
-                let threshold = m.oriented(t.q) + m.touch_slack();
-                let over = if m.geometry.model.centre_path().is_some() {
+                let threshold = m.touch.oriented(t.q) + m.touch.touch_slack();
+                let over = if m.touch.geometry.model.centre_path().is_some() {
                     Overtaken::Sampled
                 } else {
-                    m.overtaken(theta, frame, threshold, t.u)
+                    m.touch.overtaken(theta, frame, threshold, t.u)
                 };
                 let g = match over {
                     Overtaken::No => {
-                        m.check_cusps(theta, frame, t.q)?;
+                        m.touch.check_cusps(theta, frame, t.q)?;
                         return Ok((t, Found::WarmStart));
                     }
                     Overtaken::By(g) => {
-                        m.check_cusps(theta, frame, g.q)?;
+                        m.touch.check_cusps(theta, frame, g.q)?;
                         g
                     }
-                    Overtaken::Sampled => m.global_touch(theta, frame)?,
+                    Overtaken::Sampled => m.touch.global_touch(theta, frame)?,
                 };
-                if m.oriented(g.q) > threshold {
+                if m.touch.oriented(g.q) > threshold {
                     Ok((
                         g,
                         Found::Jump {
@@ -355,8 +365,8 @@ impl<'a> Sweep<'a> {
             }
             // the contact followed so far is gone: on a non-convex profile, a contact found
             // elsewhere is a jump
-            _ => m.global_touch(theta, frame).map(|g| {
-                if !m.convex && !continues(&g) {
+            _ => m.touch.global_touch(theta, frame).map(|g| {
+                if !m.touch.convex && !continues(&g) {
                     (g, Found::Jump { from_cam_param: u0 })
                 } else {
                     (g, Found::Global)

@@ -208,7 +208,7 @@ impl<'a> Reduced<'a> {
                     + k * o_scale
                     + params.damping * w * o_scale
                     + g.abs()),
-            slack: mech.touch_slack(),
+            slack: mech.touch.touch_slack(),
             pending: Vec::new(),
         };
         if sim.sides.len() == 2 {
@@ -295,7 +295,7 @@ impl<'a> Reduced<'a> {
             // `tests/it/contact_jumps.rs`): the cold search decides, and a lead restarts the
             // sweep on the new part
             let cold = side.mech.motion(theta).map_err(err)?;
-            if side.mech.ahead(cold.position, m.position) > side.mech.touch_slack() {
+            if side.mech.ahead(cold.position, m.position) > side.mech.touch.touch_slack() {
                 *sweep = side.mech.sweep();
                 m = sweep.step_motion(theta).map_err(err)?;
                 m.found = Found::Jump {
