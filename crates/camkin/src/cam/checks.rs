@@ -125,148 +125,150 @@ impl DesignChecks {
     }
 }
 
-impl Mechanism {
-    /// The design checks at cam angles `thetas` (rad), the pressure angle against
-    /// `pressure_limit_deg`.
-    pub fn design_checks(&self, thetas: &[f64], pressure_limit_deg: f64) -> DesignChecks {
-        let states = self.analyze_all(thetas);
-        let synth = self.cam().synthesis();
-        let w = self.cam().speed();
-        let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-        let mut failed = 0;
-        let mut over = Vec::new();
-        let mut pa_peak = (0.0f64, 0.0f64);
-        let mut folded = Vec::new();
-        // the profile at the contact concave more sharply than the follower can follow (a flat
-        // face: any concave stretch, ρ ≤ 0; a roller of radius r: −r < ρ ≤ 0; a knife any)
-        let (concave_limit, roller_radius, flat_face) = match self.follower_curve() {
-            FollowerCurve::Circle(roller) => (-roller.radius(), Some(roller.radius()), false),
-            FollowerCurve::Line(_) => (0.0, None, true),
-            _ => (f64::NEG_INFINITY, None, false),
+/// The design checks at cam angles `thetas` (rad), the pressure angle against
+/// `pressure_limit_deg`.
+pub(crate) fn design_checks(
+    mech: &Mechanism,
+    thetas: &[f64],
+    pressure_limit_deg: f64,
+) -> DesignChecks {
+    let states = mech.analyze_all(thetas);
+    let synth = mech.cam().synthesis();
+    let w = mech.cam().speed();
+    let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let mut failed = 0;
+    let mut over = Vec::new();
+    let mut pa_peak = (0.0f64, 0.0f64);
+    let mut folded = Vec::new();
+    // the profile at the contact concave more sharply than the follower can follow (a flat
+    // face: any concave stretch, ρ ≤ 0; a roller of radius r: −r < ρ ≤ 0; a knife any)
+    let (concave_limit, roller_radius, flat_face) = match mech.follower_curve() {
+        FollowerCurve::Circle(roller) => (-roller.radius(), Some(roller.radius()), false),
+        FollowerCurve::Line(_) => (0.0, None, true),
+        _ => (f64::NEG_INFINITY, None, false),
+    };
+    let (mut convex_min, mut convex_at) = (f64::INFINITY, 0.0);
+    let (mut concave_min, mut concave_at) = (f64::NEG_INFINITY, 0.0);
+    let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (t, s) in thetas.iter().zip(&states) {
+        if let Some(synth) = synth {
+            // the program's peak over every angle, not only those analysed
+            let m = synth.follower_motion(*t);
+            amax = amax.max((w * w * m[2]).abs());
+        }
+        let s = match s {
+            Ok(s) => s,
+            Err(e) => {
+                failed += 1;
+                // resting on a cusp of a folded profile: the follower cannot follow it
+                if matches!(
+                    e,
+                    CamError::NoConvergence {
+                        reason: StopReason::OnCusp,
+                        ..
+                    }
+                ) {
+                    folded.push(t.to_degrees());
+                }
+                continue;
+            }
         };
-        let (mut convex_min, mut convex_at) = (f64::INFINITY, 0.0);
-        let (mut concave_min, mut concave_at) = (f64::NEG_INFINITY, 0.0);
-        let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
-        for (t, s) in thetas.iter().zip(&states) {
-            if let Some(synth) = synth {
-                // the program's peak over every angle, not only those analysed
-                let m = synth.follower_motion(*t);
-                amax = amax.max((w * w * m[2]).abs());
-            }
-            let s = match s {
-                Ok(s) => s,
-                Err(e) => {
-                    failed += 1;
-                    // resting on a cusp of a folded profile: the follower cannot follow it
-                    if matches!(
-                        e,
-                        CamError::NoConvergence {
-                            reason: StopReason::OnCusp,
-                            ..
-                        }
-                    ) {
-                        folded.push(t.to_degrees());
-                    }
-                    continue;
-                }
-            };
-            if let Some(synth) = synth {
-                let m = synth.follower_motion(*t);
-                eq = eq.max((s.position - m[0]).abs());
-                ev = ev.max((s.velocity - w * m[1]).abs());
-                ea = ea.max((s.acceleration - w * w * m[2]).abs());
-            }
-            let pa = s.pressure_angle().to_degrees();
-            if pa.abs() > pressure_limit_deg {
-                over.push(t.to_degrees());
-            }
-            if pa.abs() > pa_peak.0.abs() {
-                pa_peak = (pa, t.to_degrees());
-            }
-            let rho = s.radius_of_curvature;
-            if concave_limit > f64::NEG_INFINITY && !(rho > 0.0 || rho < concave_limit) {
-                folded.push(t.to_degrees());
-            }
-            if rho > 0.0 && rho < convex_min {
-                (convex_min, convex_at) = (rho, t.to_degrees());
-            }
-            if rho < 0.0 && rho > concave_min {
-                (concave_min, concave_at) = (rho, t.to_degrees());
-            }
-            umin = umin.min(s.follower_param);
-            umax = umax.max(s.follower_param);
+        if let Some(synth) = synth {
+            let m = synth.follower_motion(*t);
+            eq = eq.max((s.position - m[0]).abs());
+            ev = ev.max((s.velocity - w * m[1]).abs());
+            ea = ea.max((s.acceleration - w * w * m[2]).abs());
         }
-        let round_trip = synth.map(|_| {
-            let natural = if self.follower().is_oscillating() {
-                w * w
-            } else {
-                w * w * self.size()
-            };
-            // a program's "peak" below 1e-9 of the natural scale is rounding
-            let has_peak = amax > 1e-9 * natural;
-            let scale = if has_peak { amax } else { natural };
-            RoundTrip {
-                position: eq,
-                velocity: ev,
-                acceleration: ea,
-                peak_acceleration: amax,
-                scale,
-                has_peak,
-                passed: ea <= 1e-6 * scale && failed == 0,
-            }
-        });
-        DesignChecks {
-            pressure_limit_deg,
-            angles: thetas.len(),
-            failed,
-            round_trip,
-            convex_min: convex_min.is_finite().then_some((convex_min, convex_at)),
-            concave_sharpest: concave_min.is_finite().then_some((concave_min, concave_at)),
-            roller_radius,
-            flat_face,
-            face_range: (flat_face && umin <= umax).then_some((umin, umax)),
-            pressure_peak: pa_peak,
-            pressure_over_deg: over,
-            undercut_deg: folded,
-            stretches: self.unfollowable_stretches(),
-            conjugate_play: self.conjugate_play_over(&states),
+        let pa = s.pressure_angle().to_degrees();
+        if pa.abs() > pressure_limit_deg {
+            over.push(t.to_degrees());
         }
+        if pa.abs() > pa_peak.0.abs() {
+            pa_peak = (pa, t.to_degrees());
+        }
+        let rho = s.radius_of_curvature;
+        if concave_limit > f64::NEG_INFINITY && !(rho > 0.0 || rho < concave_limit) {
+            folded.push(t.to_degrees());
+        }
+        if rho > 0.0 && rho < convex_min {
+            (convex_min, convex_at) = (rho, t.to_degrees());
+        }
+        if rho < 0.0 && rho > concave_min {
+            (concave_min, concave_at) = (rho, t.to_degrees());
+        }
+        umin = umin.min(s.follower_param);
+        umax = umax.max(s.follower_param);
     }
+    let round_trip = synth.map(|_| {
+        let natural = if mech.follower().is_oscillating() {
+            w * w
+        } else {
+            w * w * mech.size()
+        };
+        // a program's "peak" below 1e-9 of the natural scale is rounding
+        let has_peak = amax > 1e-9 * natural;
+        let scale = if has_peak { amax } else { natural };
+        RoundTrip {
+            position: eq,
+            velocity: ev,
+            acceleration: ea,
+            peak_acceleration: amax,
+            scale,
+            has_peak,
+            passed: ea <= 1e-6 * scale && failed == 0,
+        }
+    });
+    DesignChecks {
+        pressure_limit_deg,
+        angles: thetas.len(),
+        failed,
+        round_trip,
+        convex_min: convex_min.is_finite().then_some((convex_min, convex_at)),
+        concave_sharpest: concave_min.is_finite().then_some((concave_min, concave_at)),
+        roller_radius,
+        flat_face,
+        face_range: (flat_face && umin <= umax).then_some((umin, umax)),
+        pressure_peak: pa_peak,
+        pressure_over_deg: over,
+        undercut_deg: folded,
+        stretches: mech.unfollowable_stretches(),
+        conjugate_play: conjugate_play_over(mech, &states),
+    }
+}
 
-    /// The play of a conjugate follower's second curve at the analysed states.
-    fn conjugate_play_over(
-        &self,
-        states: &[Result<super::FollowerState, CamError>],
-    ) -> Option<ConjugatePlay> {
-        let mut sweep = self.conjugate_sweep()?;
-        let (mut min, mut max) = ((f64::INFINITY, 0.0), (f64::NEG_INFINITY, 0.0));
-        let mut failed = 0;
-        for s in states.iter().flatten() {
-            match sweep.play(s) {
-                Ok(p) => {
-                    let at = s.cam_angle.to_degrees();
-                    if p < min.0 {
-                        min = (p, at);
-                    }
-                    if p > max.0 {
-                        max = (p, at);
-                    }
+/// The play of a conjugate follower's second curve at the analysed states.
+fn conjugate_play_over(
+    mech: &Mechanism,
+    states: &[Result<super::FollowerState, CamError>],
+) -> Option<ConjugatePlay> {
+    let mut sweep = mech.conjugate_sweep()?;
+    let (mut min, mut max) = ((f64::INFINITY, 0.0), (f64::NEG_INFINITY, 0.0));
+    let mut failed = 0;
+    for s in states.iter().flatten() {
+        match sweep.play(s) {
+            Ok(p) => {
+                let at = s.cam_angle.to_degrees();
+                if p < min.0 {
+                    min = (p, at);
                 }
-                Err(_) => failed += 1,
+                if p > max.0 {
+                    max = (p, at);
+                }
             }
+            Err(_) => failed += 1,
         }
-        let tolerance = 1e-6
-            * if self.follower().is_oscillating() {
-                1.0
-            } else {
-                self.size()
-            };
-        Some(ConjugatePlay {
-            min,
-            max,
-            failed,
-            tolerance,
-            passed: failed == 0 && min.0 >= -tolerance && max.0 - min.0 <= tolerance,
-        })
     }
+    let tolerance = 1e-6
+        * if mech.follower().is_oscillating() {
+            1.0
+        } else {
+            mech.size()
+        };
+    Some(ConjugatePlay {
+        min,
+        max,
+        failed,
+        tolerance,
+        passed: failed == 0 && min.0 >= -tolerance && max.0 - min.0 <= tolerance,
+    })
 }

@@ -89,7 +89,7 @@ impl ConjugateSweep<'_> {
             .as_ref()
             .expect("a sweep of a conjugate");
         let q2 = self.sweep.step_motion(s.cam_angle)?.position;
-        Ok(c.mech.ahead(c.map(s.position), q2))
+        Ok(c.mech.touch.ahead(c.map(s.position), q2))
     }
 }
 
@@ -177,7 +177,7 @@ impl Mechanism {
         Some(
             c.mech
                 .motion(s.cam_angle)
-                .map(|m| c.mech.ahead(c.map(s.position), m.position)),
+                .map(|m| c.mech.touch.ahead(c.map(s.position), m.position)),
         )
     }
 
@@ -215,7 +215,7 @@ impl Mechanism {
             acceleration: c.map(s.acceleration),
             ..*s
         };
-        if c.mech.ahead(mapped.position, own.position) > c.mech.touch.touch_slack() {
+        if c.mech.touch.ahead(mapped.position, own.position) > c.mech.touch.touch_slack() {
             return Ok(None);
         }
         let cam = self.cam.state(theta);
@@ -226,7 +226,7 @@ impl Mechanism {
             v: own.follower_param,
             corner: own.corner,
         };
-        let mut k = c.mech.contact(theta, &cam, &frame, &t, &mapped)?;
+        let mut k = super::contacts::contact(&c.mech, theta, &cam, &frame, &t, &mapped)?;
         k.row_follower = c.map(k.row_follower);
         k.conjugate = true;
         Ok(Some(k))

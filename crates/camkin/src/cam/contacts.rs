@@ -17,10 +17,10 @@
 //! its [`Contact::normal_velocity`] whether the motion opens or closes it.
 
 use super::follower::Kind as _;
-use super::{CamError, FollowerState, Joint, Mechanism, Touch};
+use super::{CamError, FollowerState, Mechanism, Touch};
 use crate::body::{BodyState, CurveInFrame};
 use crate::contact::NormalAcceleration;
-use crate::geometry::{wrap_angle_near, Frame, Point2, UnitVec2};
+use crate::geometry::{Frame, Point2, UnitVec2};
 
 /// One contact between the cam and the follower at an instant. World frame; lengths in the
 /// mechanism's unit, time in s; `q` in length (slide) or rad (pivot).
@@ -69,138 +69,126 @@ pub struct Contact {
     pub corner: Option<super::Corner>,
 }
 
-impl Mechanism {
-    /// Every contact at cam angle `theta` (rad): the first touch of [`Mechanism::analyze`]
-    /// first, then each other place where the follower's curve touches the cam at that position
-    /// (see [`Mechanism::contacts_at`]).
-    pub fn contacts(&self, theta: f64) -> Result<Vec<Contact>, CamError> {
-        self.contacts_at(&self.analyze(theta)?)
-    }
+/// Every contact at cam angle `theta` (rad): the first touch of [`Mechanism::analyze`]
+/// first, then each other place where the follower's curve touches the cam at that position
+/// (see [`Mechanism::contacts_at`]).
+pub(crate) fn contacts(mech: &Mechanism, theta: f64) -> Result<Vec<Contact>, CamError> {
+    contacts_at(mech, &mech.analyze(theta)?)
+}
 
-    /// About how many seconds finding every contact at `angles` cam angles takes: the sweep,
-    /// and per angle one more search (about 1.5 ms for a follower carrying a curve, twice what
-    /// the 20/42 gear pair measured; 50 µs for a named kind, a cold query's cost at 100 000
-    /// nodes).
-    pub fn contacts_seconds_estimate(&self, angles: usize) -> f64 {
-        let per_angle = if self.touch.carried().is_some() {
-            1.5e-3
-        } else {
-            5e-5
-        };
-        self.sweep_seconds_estimate(angles) + angles as f64 * per_angle
-    }
+/// About how many seconds finding every contact at `angles` cam angles takes: the sweep,
+/// and per angle one more search (about 1.5 ms for a follower carrying a curve, twice what
+/// the 20/42 gear pair measured; 50 µs for a named kind, a cold query's cost at 100 000
+/// nodes).
+pub(crate) fn contacts_seconds_estimate(mech: &Mechanism, angles: usize) -> f64 {
+    let per_angle = if mech.touch.carried().is_some() {
+        1.5e-3
+    } else {
+        5e-5
+    };
+    mech.sweep_seconds_estimate(angles) + angles as f64 * per_angle
+}
 
-    /// Every contact with the follower at the state `s` (from [`Mechanism::analyze`] or a
-    /// [`Sweep`](super::Sweep)): its own contact first, then the other tangencies (in the order of
-    /// the cam's parameter) within the
-    /// touch tolerance of its position, found from the same starts as the first-touch search (the
-    /// local maxima of the sampled first-touch function; a carried curve's covered cam samples)
-    /// and refined by Newton, then a conjugate follower's second curve where its play is within
-    /// the touch tolerance or negative. Each has its kinematics at the state's velocity and
-    /// acceleration.
-    pub fn contacts_at(&self, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
-        let theta = s.cam_angle;
-        let cam = self.cam.state(theta);
-        let frame = cam.frame();
-        let first = Touch {
-            u: s.cam_param,
-            q: s.position,
-            v: s.follower_param,
-            corner: s.corner,
-        };
-        let mut touches = vec![first];
-        match self.touch.carried() {
-            Some(c) => self
-                .touch
-                .carried_touching(c, theta, &frame, &first, &mut touches),
-            None => self.named_touching(theta, &frame, &first, &mut touches),
-        }
-        // one contact per place
-        let close = 1e-6 * self.touch.size;
-        let mut places: Vec<Point2> = Vec::new();
-        let mut out = Vec::with_capacity(touches.len());
-        for t in &touches {
-            let x = frame.curve_position(self.cam.profile.as_ref(), t.u);
-            if places.iter().any(|y| (x - y).norm() <= close) {
-                continue;
-            }
-            places.push(x);
-            out.push(self.contact(theta, &cam, &frame, t, s)?);
-        }
-        // the others in the order of the cam's parameter, whatever order the search found them in
-        out[1..].sort_by(|a, b| a.cam_param.total_cmp(&b.cam_param));
-        if let Some(c) = self.conjugate_contact(s)? {
-            out.push(c);
-        }
-        Ok(out)
+/// Every contact with the follower at the state `s` (from [`Mechanism::analyze`] or a
+/// [`Sweep`](super::Sweep)): its own contact first, then the other tangencies (in the order of
+/// the cam's parameter) within the
+/// touch tolerance of its position, found from the same starts as the first-touch search (the
+/// local maxima of the sampled first-touch function; a carried curve's covered cam samples)
+/// and refined by Newton, then a conjugate follower's second curve where its play is within
+/// the touch tolerance or negative. Each has its kinematics at the state's velocity and
+/// acceleration.
+pub(crate) fn contacts_at(mech: &Mechanism, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
+    let theta = s.cam_angle;
+    let cam = mech.cam.state(theta);
+    let frame = cam.frame();
+    let first = Touch {
+        u: s.cam_param,
+        q: s.position,
+        v: s.follower_param,
+        corner: s.corner,
+    };
+    let mut touches = vec![first];
+    match mech.touch.carried() {
+        Some(c) => mech
+            .touch
+            .carried_touching(c, theta, &frame, &first, &mut touches),
+        None => named_touching(mech, theta, &frame, &first, &mut touches),
     }
-
-    /// The named kinds' other tangencies at `t`'s position: Newton from each start of the
-    /// global search, kept when it is a first touch within the touch tolerance of `t`.
-    fn named_touching(&self, theta: f64, frame: &Frame, t: &Touch, out: &mut Vec<Touch>) {
-        let mut starts = super::starts::Candidates::new(super::MAX_CANDIDATES);
-        if self.touch.geometry.model.centre_path().is_some() {
-            self.touch
-                .path_starts(frame, &self.touch.index.dense, &mut starts);
-        } else {
-            self.touch
-                .score_starts(frame, &self.touch.index.dense, &mut starts);
+    // one contact per place
+    let close = 1e-6 * mech.touch.size;
+    let mut places: Vec<Point2> = Vec::new();
+    let mut out = Vec::with_capacity(touches.len());
+    for t in &touches {
+        let x = frame.curve_position(mech.cam.profile.as_ref(), t.u);
+        if places.iter().any(|y| (x - y).norm() <= close) {
+            continue;
         }
-        let slack = self.touch.touch_slack();
-        for &(_, u0, q0) in starts.as_slice() {
-            if let Ok(t2) = self.touch.newton(theta, frame, u0, q0) {
-                if self.ahead(t.q, t2.q).abs() <= slack && self.touch.is_first_touch(frame, &t2) {
-                    out.push(t2);
-                }
+        places.push(x);
+        out.push(contact(mech, theta, &cam, &frame, t, s)?);
+    }
+    // the others in the order of the cam's parameter, whatever order the search found them in
+    out[1..].sort_by(|a, b| a.cam_param.total_cmp(&b.cam_param));
+    if let Some(c) = mech.conjugate_contact(s)? {
+        out.push(c);
+    }
+    Ok(out)
+}
+
+/// The named kinds' other tangencies at `t`'s position: Newton from each start of the
+/// global search, kept when it is a first touch within the touch tolerance of `t`.
+fn named_touching(mech: &Mechanism, theta: f64, frame: &Frame, t: &Touch, out: &mut Vec<Touch>) {
+    let mut starts = super::starts::Candidates::new(super::MAX_CANDIDATES);
+    if mech.touch.geometry.model.centre_path().is_some() {
+        mech.touch
+            .path_starts(frame, &mech.touch.index.dense, &mut starts);
+    } else {
+        mech.touch
+            .score_starts(frame, &mech.touch.index.dense, &mut starts);
+    }
+    let slack = mech.touch.touch_slack();
+    for &(_, u0, q0) in starts.as_slice() {
+        if let Ok(t2) = mech.touch.newton(theta, frame, u0, q0) {
+            if mech.touch.ahead(t.q, t2.q).abs() <= slack && mech.touch.is_first_touch(frame, &t2) {
+                out.push(t2);
             }
         }
     }
+}
 
-    /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
-    pub(crate) fn ahead(&self, q: f64, other: f64) -> f64 {
-        let d = self.touch.oriented(q) - self.touch.oriented(other);
-        match self.touch.geometry.joint {
-            Joint::Rotating { .. } => wrap_angle_near(d, 0.0),
-            Joint::Translating { .. } => d,
-        }
-    }
-
-    /// The kinematics of the contact `t` with the follower at the state `s`'s position,
-    /// velocity and acceleration.
-    pub(super) fn contact(
-        &self,
-        theta: f64,
-        cam: &BodyState,
-        frame: &Frame,
-        t: &Touch,
-        s: &FollowerState,
-    ) -> Result<Contact, CamError> {
-        let g = &self.touch.geometry;
-        let ea = frame.derivs_to_world(&self.cam.profile.eval(t.u));
-        let (c, nu) = (ea.p, self.contact_normal(&ea, t));
-        let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
-        let (u_b, k) = self.pair_kinematics(theta, cam, &ea, &body_b, *t)?;
-        let row_cam = k.phi_q[2] * self.cam.direction.sign();
-        let row_follower = g.joint.coordinate_coefficient(&k.phi_q);
-        Ok(Contact {
-            cam_angle: theta,
-            cam_param: t.u,
-            follower_param: u_b,
-            point: c,
-            normal: UnitVec2::new_unchecked(nu),
-            gap: self.ahead(s.position, t.q) * g.q_length_scale(self.touch.size),
-            normal_velocity: k.normal_velocity,
-            sliding_rate_cam: k.sliding_rate_a,
-            sliding_rate_follower: k.sliding_rate_b,
-            normal_acceleration_cam: k.normal_acceleration_a(cam),
-            normal_acceleration_follower: k.normal_acceleration_b(&body_b),
-            row_cam,
-            row_follower,
-            gamma: k.gamma,
-            residual: row_cam * self.cam.angular_acceleration + row_follower * s.acceleration
-                - k.gamma,
-            conjugate: false,
-            corner: t.corner,
-        })
-    }
+/// The kinematics of the contact `t` with the follower at the state `s`'s position,
+/// velocity and acceleration.
+pub(crate) fn contact(
+    mech: &Mechanism,
+    theta: f64,
+    cam: &BodyState,
+    frame: &Frame,
+    t: &Touch,
+    s: &FollowerState,
+) -> Result<Contact, CamError> {
+    let g = &mech.touch.geometry;
+    let ea = frame.derivs_to_world(&mech.cam.profile.eval(t.u));
+    let (c, nu) = (ea.p, mech.contact_normal(&ea, t));
+    let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
+    let (u_b, k) = mech.pair_kinematics(theta, cam, &ea, &body_b, *t)?;
+    let row_cam = k.phi_q[2] * mech.cam.direction.sign();
+    let row_follower = g.joint.coordinate_coefficient(&k.phi_q);
+    Ok(Contact {
+        cam_angle: theta,
+        cam_param: t.u,
+        follower_param: u_b,
+        point: c,
+        normal: UnitVec2::new_unchecked(nu),
+        gap: mech.touch.ahead(s.position, t.q) * g.q_length_scale(mech.touch.size),
+        normal_velocity: k.normal_velocity,
+        sliding_rate_cam: k.sliding_rate_a,
+        sliding_rate_follower: k.sliding_rate_b,
+        normal_acceleration_cam: k.normal_acceleration_a(cam),
+        normal_acceleration_follower: k.normal_acceleration_b(&body_b),
+        row_cam,
+        row_follower,
+        gamma: k.gamma,
+        residual: row_cam * mech.cam.angular_acceleration + row_follower * s.acceleration - k.gamma,
+        conjugate: false,
+        corner: t.corner,
+    })
 }

@@ -6,11 +6,11 @@
 //! and Newton (`search.rs`), the starts (`starts.rs`), a carried curve against a profile
 //! (`carried.rs`, `carried_accept.rs`), corners (`corner_touch.rs`), overtaking (`overtake.rs`).
 
-use super::follower::Geometry;
+use super::follower::{Geometry, Joint};
 use super::{corners, search, starts, AnalysisOptions, Sense};
 use crate::body::Pose as BodyPose;
 use crate::curve::Curve;
-use crate::geometry::{Frame, Point2};
+use crate::geometry::{wrap_angle_near, Frame, Point2};
 use std::sync::Arc;
 
 /// The first-touch engine of one cam profile and one follower.
@@ -46,6 +46,15 @@ pub(crate) struct FirstTouch {
 }
 
 impl FirstTouch {
+    /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
+    pub(crate) fn ahead(&self, q: f64, other: f64) -> f64 {
+        let d = self.oriented(q) - self.oriented(other);
+        match self.geometry.joint {
+            Joint::Rotating { .. } => wrap_angle_near(d, 0.0),
+            Joint::Translating { .. } => d,
+        }
+    }
+
     /// Replaces the options: the samples, their trees and Newton's constants follow them.
     pub(crate) fn set_options(&mut self, options: AnalysisOptions) {
         let dense = search::bracket_samples(

@@ -52,25 +52,23 @@ pub fn contact_jumps_with(
     out
 }
 
-impl Mechanism {
-    /// Cam angles (degrees, in `[0, 360)`) at which the contact jumps over a revolution sampled
-    /// every `step_deg` degrees: the end angle of every step across which the contact left one
-    /// part of the profile for another (see [`contact_jumps`]). Empty for a follower that stays
-    /// on the profile all round.
-    pub fn jump_angles(&self, step_deg: f64) -> Vec<f64> {
-        // on a convex profile the first touch moves continuously: nothing to scan
-        if self.touch.convex {
-            return Vec::new();
-        }
-        let n = (360.0 / step_deg).ceil().max(1.0) as usize;
-        let angles: Vec<f64> = (0..=n).map(|k| k as f64 * 360.0 / n as f64).collect();
-        let mut sweep = self.sweep();
-        let results: Vec<_> = angles.iter().map(|&a| sweep.step(a.to_radians())).collect();
-        contact_jumps(self, &results, true)
-            .into_iter()
-            .zip(&angles)
-            .filter(|(j, _)| *j)
-            .map(|(_, &a)| a % 360.0)
-            .collect()
+/// Cam angles (degrees, in `[0, 360)`) at which the contact jumps over a revolution sampled
+/// every `step_deg` degrees: the end angle of every step across which the contact left one
+/// part of the profile for another (see [`contact_jumps`]). Empty for a follower that stays
+/// on the profile all round.
+pub(crate) fn jump_angles(mech: &Mechanism, step_deg: f64) -> Vec<f64> {
+    // on a convex profile the first touch moves continuously: nothing to scan
+    if mech.touch.convex {
+        return Vec::new();
     }
+    let n = (360.0 / step_deg).ceil().max(1.0) as usize;
+    let angles: Vec<f64> = (0..=n).map(|k| k as f64 * 360.0 / n as f64).collect();
+    let mut sweep = mech.sweep();
+    let results: Vec<_> = angles.iter().map(|&a| sweep.step(a.to_radians())).collect();
+    contact_jumps(mech, &results, true)
+        .into_iter()
+        .zip(&angles)
+        .filter(|(j, _)| *j)
+        .map(|(_, &a)| a % 360.0)
+        .collect()
 }

@@ -232,8 +232,12 @@ impl Mechanism {
         let dq = match self.touch.carried() {
             _ if at_breakpoint || !self.touch.options.jerk || touch.corner.is_some() => None,
             Some(c) if self.carried_at_breakpoint(c, touch.v) => None,
-            Some(c) => Some(self.carried_jet_derivatives(c, theta, frame, touch)?),
-            None => Some(self.jet_derivatives(theta, cam, touch)?),
+            Some(c) => Some(super::derivatives::carried_jet_derivatives(
+                self, c, theta, frame, touch,
+            )?),
+            None => Some(super::derivatives::jet_derivatives(
+                self, theta, cam, touch,
+            )?),
         };
         let jerk = dq.map(|dq| {
             let (w, al) = (self.cam.speed, self.cam.angular_acceleration);

@@ -4,8 +4,8 @@
 use super::follower::{Geometry, Kind as _};
 use super::summary::ProfileSummary;
 use super::{
-    bracket_samples, AnalysisOptions, Cam, CamError, Follower, FollowerCurve, FollowerState, Found,
-    Joint, Mechanism, Motion, Sweep,
+    bracket_samples, AnalysisOptions, Cam, CamError, Contact, DesignChecks, Follower,
+    FollowerCurve, FollowerState, Found, IndependentCheck, Joint, Mechanism, Motion, Sweep, Travel,
 };
 use crate::curve::{Curve, Domain};
 use crate::field::{Field, ProfileField};
@@ -384,5 +384,83 @@ impl Mechanism {
         {
             (0..chunks).flat_map(chunk).collect()
         }
+    }
+
+    /// Cam angles (degrees, in `[0, 360)`) at which the contact jumps over a revolution sampled
+    /// every `step_deg` degrees: the end angle of every step across which the contact left one
+    /// part of the profile for another (see [`contact_jumps`](super::contact_jumps)). Empty for a follower that stays
+    /// on the profile all round.
+    pub fn jump_angles(&self, step_deg: f64) -> Vec<f64> {
+        super::jumps::jump_angles(self, step_deg)
+    }
+
+    /// The rest and farthest positions of the follower over a revolution, each located to
+    /// rounding: a scan at 0.5° steps, then the zero of the velocity (exact, by the contact
+    /// method) between the neighbours of the extreme sample, by bisection. Where the velocity
+    /// does not change sign there (a dwell, or an extreme at a jump of the contact) the extreme
+    /// sample stands. The scan is a warm-started sweep: the cost is about that of analysing
+    /// 720 angles plus some 100 global searches.
+    pub fn travel(&self) -> Result<Travel, CamError> {
+        super::travel::travel(self)
+    }
+
+    /// The design checks at cam angles `thetas` (rad), the pressure angle against
+    /// `pressure_limit_deg`.
+    pub fn design_checks(&self, thetas: &[f64], pressure_limit_deg: f64) -> DesignChecks {
+        super::checks::design_checks(self, thetas, pressure_limit_deg)
+    }
+
+    /// The follower's position at cam angle `theta` (rad) computed independently of the contact
+    /// method (the support function: see [`Mechanism::independent_check`]) and the profile
+    /// parameter of the cam point realising it, or `None` when the follower touches no cam point.
+    pub fn support_position(&self, theta: f64) -> Option<(f64, f64)> {
+        super::support::support_position(self, theta)
+    }
+
+    /// Compares the contact method's position, velocity and acceleration at `thetas` (rad) with
+    /// an independent computation: the follower's position as the cam's *support function* (for
+    /// every cam point, the coordinate at which the follower's boundary passes through it,
+    /// entering the follower in its closing sense; the extreme of that over the profile, by
+    /// sampling and golden-section search; a knife edge's over the crossings of its path, by
+    /// bisection), its velocity and acceleration by seven-point differences in the cam angle.
+    /// No tangency condition, Newton solve or curvature is involved. Fails only when the contact
+    /// method fails.
+    pub fn independent_check(&self, thetas: &[f64]) -> Result<IndependentCheck, CamError> {
+        super::support::independent_check(self, thetas)
+    }
+
+    /// Every contact at cam angle `theta` (rad): the first touch of [`Mechanism::analyze`]
+    /// first, then each other place where the follower's curve touches the cam at that position
+    /// (see [`Mechanism::contacts_at`]).
+    pub fn contacts(&self, theta: f64) -> Result<Vec<Contact>, CamError> {
+        super::contacts::contacts(self, theta)
+    }
+
+    /// About how many seconds finding every contact at `angles` cam angles takes: the sweep,
+    /// and per angle one more search (about 1.5 ms for a follower carrying a curve, twice what
+    /// the 20/42 gear pair measured; 50 µs for a named kind, a cold query's cost at 100 000
+    /// nodes).
+    pub fn contacts_seconds_estimate(&self, angles: usize) -> f64 {
+        super::contacts::contacts_seconds_estimate(self, angles)
+    }
+
+    /// Every contact with the follower at the state `s` (from [`Mechanism::analyze`] or a
+    /// [`Sweep`]): its own contact first, then the other tangencies (in the order of
+    /// the cam's parameter) within the
+    /// touch tolerance of its position, found from the same starts as the first-touch search (the
+    /// local maxima of the sampled first-touch function; a carried curve's covered cam samples)
+    /// and refined by Newton, then a conjugate follower's second curve where its play is within
+    /// the touch tolerance or negative. Each has its kinematics at the state's velocity and
+    /// acceleration.
+    pub fn contacts_at(&self, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
+        super::contacts::contacts_at(self, s)
+    }
+
+    /// `(dq/dθ, d²q/dθ², d³q/dθ³)` at cam angle `theta` (rad) by implicit differentiation of the
+    /// first-touch conditions (see the `jet` module). This is independent of the paper's method
+    /// and gives the jerk; `d³q/dθ³` takes the profile's third derivative on the segment that
+    /// holds the contact (at a spline node it jumps).
+    pub fn angle_derivatives(&self, theta: f64) -> Result<[f64; 3], CamError> {
+        super::derivatives::angle_derivatives(self, theta)
     }
 }

@@ -63,267 +63,268 @@ struct Support {
     u: f64,
 }
 
-impl Mechanism {
-    /// The follower's position at cam angle `theta` (rad) computed independently of the contact
-    /// method (the support function: see [`Mechanism::independent_check`]) and the profile
-    /// parameter of the cam point realising it, or `None` when the follower touches no cam point.
-    pub fn support_position(&self, theta: f64) -> Option<(f64, f64)> {
-        self.support(theta).map(|s| (s.q, s.u))
-    }
+/// The follower's position at cam angle `theta` (rad) computed independently of the contact
+/// method (the support function: see [`Mechanism::independent_check`]) and the profile
+/// parameter of the cam point realising it, or `None` when the follower touches no cam point.
+pub(crate) fn support_position(mech: &Mechanism, theta: f64) -> Option<(f64, f64)> {
+    support(mech, theta).map(|s| (s.q, s.u))
+}
 
-    /// Compares the contact method's position, velocity and acceleration at `thetas` (rad) with
-    /// an independent computation: the follower's position as the cam's *support function* (for
-    /// every cam point, the coordinate at which the follower's boundary passes through it,
-    /// entering the follower in its closing sense; the extreme of that over the profile, by
-    /// sampling and golden-section search; a knife edge's over the crossings of its path, by
-    /// bisection), its velocity and acceleration by seven-point differences in the cam angle.
-    /// No tangency condition, Newton solve or curvature is involved. Fails only when the contact
-    /// method fails.
-    pub fn independent_check(&self, thetas: &[f64]) -> Result<IndependentCheck, CamError> {
-        let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
-        let reach = self.touch.size
-            + match self.follower_joint() {
-                Joint::Rotating { pivot, .. } => (pivot - self.cam.pivot).norm(),
-                Joint::Translating { .. } => 0.0,
-            };
-        let q_length = |dq: f64| match self.follower_joint() {
-            Joint::Rotating { .. } => dq.abs() * reach,
-            Joint::Translating { .. } => dq.abs(),
+/// Compares the contact method's position, velocity and acceleration at `thetas` (rad) with
+/// an independent computation: the follower's position as the cam's *support function* (for
+/// every cam point, the coordinate at which the follower's boundary passes through it,
+/// entering the follower in its closing sense; the extreme of that over the profile, by
+/// sampling and golden-section search; a knife edge's over the crossings of its path, by
+/// bisection), its velocity and acceleration by seven-point differences in the cam angle.
+/// No tangency condition, Newton solve or curvature is involved. Fails only when the contact
+/// method fails.
+pub(crate) fn independent_check(
+    mech: &Mechanism,
+    thetas: &[f64],
+) -> Result<IndependentCheck, CamError> {
+    let (w, al) = (mech.cam.speed, mech.cam.angular_acceleration);
+    let reach = mech.touch.size
+        + match mech.follower_joint() {
+            Joint::Rotating { pivot, .. } => (pivot - mech.cam.pivot).norm(),
+            Joint::Translating { .. } => 0.0,
         };
-        let mut out = IndependentCheck {
-            angles: 0,
-            skipped: 0,
-            position: 0.0,
-            velocity: 0.0,
-            acceleration: 0.0,
+    let q_length = |dq: f64| match mech.follower_joint() {
+        Joint::Rotating { .. } => dq.abs() * reach,
+        Joint::Translating { .. } => dq.abs(),
+    };
+    let mut out = IndependentCheck {
+        angles: 0,
+        skipped: 0,
+        position: 0.0,
+        velocity: 0.0,
+        acceleration: 0.0,
+    };
+    let (mut dv, mut da, mut vmax, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for &theta in thetas {
+        let s = mech.analyze(theta)?;
+        vmax = vmax.max(s.velocity.abs());
+        amax = amax.max(s.acceleration.abs());
+        let Some(centre) = support(mech, theta) else {
+            out.position = f64::INFINITY;
+            continue;
         };
-        let (mut dv, mut da, mut vmax, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-        for &theta in thetas {
-            let s = self.analyze(theta)?;
-            vmax = vmax.max(s.velocity.abs());
-            amax = amax.max(s.acceleration.abs());
-            let Some(centre) = self.support(theta) else {
-                out.position = f64::INFINITY;
+        let dq = match mech.follower_joint() {
+            Joint::Rotating { .. } => wrap_near_zero(s.position - centre.q),
+            Joint::Translating { .. } => s.position - centre.q,
+        };
+        out.position = out.position.max(q_length(dq) / mech.touch.size);
+        let Some((d1, d2)) = differences(mech, theta, centre) else {
+            out.skipped += 1;
+            continue;
+        };
+        out.angles += 1;
+        dv = dv.max((s.velocity - w * d1).abs());
+        da = da.max((s.acceleration - (w * w * d2 + al * d1)).abs());
+    }
+    out.velocity = if vmax > 0.0 { dv / vmax } else { dv };
+    out.acceleration = if amax > 0.0 { da / amax } else { da };
+    Ok(out)
+}
+
+/// `(dq/dθ, d²q/dθ²)` of the support function at `theta` by seven-point differences at
+/// halving steps, each on the stencil nearest to centred whose maxima all lie on
+/// the smooth piece of `centre` and move steadily along it: for each derivative, the finer
+/// of the two consecutive steps at which it agrees best (truncation falls and rounding grows
+/// as the step shrinks, the second derivative's rounding faster); `None` when fewer than two
+/// steps have a stencil.
+fn differences(mech: &Mechanism, theta: f64, centre: Support) -> Option<(f64, f64)> {
+    let half = (NODES / 2) as i32;
+    let piece = |u: f64| mech.touch.breakpoints.partition_point(|&b| b <= u);
+    let home = piece(centre.u);
+    // each derivative with the rounding it carries: the positions' own rounding (a few ulps
+    // of the largest) through the stencil's weights
+    let estimate = |h: f64| -> Option<([f64; 2], [f64; 2])> {
+        let mut cache: Vec<Option<Option<Support>>> = vec![None; (4 * half + 1) as usize];
+        for shift in [0, -1, 1, -2, 2, -3, 3] {
+            let ks: Vec<i32> = (shift - half..=shift + half).collect();
+            let mut nodes = Vec::with_capacity(NODES);
+            for &k in &ks {
+                let s = if k == 0 {
+                    Some(centre)
+                } else {
+                    *cache[(k + 2 * half) as usize]
+                        .get_or_insert_with(|| support(mech, theta + k as f64 * h))
+                };
+                match s {
+                    Some(s) if piece(s.u) == home => nodes.push(s),
+                    _ => break,
+                }
+            }
+            if nodes.len() < NODES || !steady(&nodes, mech.touch.period) {
                 continue;
-            };
-            let dq = match self.follower_joint() {
-                Joint::Rotating { .. } => wrap_near_zero(s.position - centre.q),
-                Joint::Translating { .. } => s.position - centre.q,
-            };
-            out.position = out.position.max(q_length(dq) / self.touch.size);
-            let Some((d1, d2)) = self.differences(theta, centre) else {
-                out.skipped += 1;
-                continue;
-            };
-            out.angles += 1;
-            dv = dv.max((s.velocity - w * d1).abs());
-            da = da.max((s.acceleration - (w * w * d2 + al * d1)).abs());
+            }
+            let x: Vec<f64> = ks.iter().map(|&k| k as f64 * h).collect();
+            let w = fornberg(&x, 2);
+            let mut q: Vec<f64> = nodes.iter().map(|n| n.q).collect();
+            if let Joint::Rotating { .. } = mech.follower_joint() {
+                for v in &mut q {
+                    *v = centre.q + wrap_near_zero(*v - centre.q);
+                }
+            }
+            let d = |m: usize| w[m].iter().zip(&q).map(|(a, b)| a * b).sum::<f64>();
+            let noise = 4.0 * f64::EPSILON * q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            let r = |m: usize| noise * w[m].iter().map(|a| a.abs()).sum::<f64>();
+            return Some(([d(1), d(2)], [r(1), r(2)]));
         }
-        out.velocity = if vmax > 0.0 { dv / vmax } else { dv };
-        out.acceleration = if amax > 0.0 { da / amax } else { da };
-        Ok(out)
+        None
+    };
+    // each derivative at its own step: the finer of the two consecutive steps whose gap, or
+    // the finer's rounding if larger, is least (two estimates dominated by rounding can agree
+    // by chance; the second derivative's rounding grows faster as h shrinks)
+    let mut best: [Option<(f64, f64)>; 2] = [None, None];
+    let mut previous = estimate(STEP);
+    for l in 1..LEVELS {
+        let next = estimate(STEP / f64::from(1u32 << l));
+        if let (Some((a, _)), Some((b, rounding))) = (previous, next) {
+            for k in 0..2 {
+                let error = (a[k] - b[k]).abs().max(rounding[k]);
+                if best[k].is_none_or(|(e, _)| error < e) {
+                    best[k] = Some((error, b[k]));
+                }
+            }
+        }
+        previous = next;
     }
+    Some((best[0]?.1, best[1]?.1))
+}
 
-    /// `(dq/dθ, d²q/dθ²)` of the support function at `theta` by seven-point differences at
-    /// halving steps, each on the stencil nearest to centred whose maxima all lie on
-    /// the smooth piece of `centre` and move steadily along it: for each derivative, the finer
-    /// of the two consecutive steps at which it agrees best (truncation falls and rounding grows
-    /// as the step shrinks, the second derivative's rounding faster); `None` when fewer than two
-    /// steps have a stencil.
-    fn differences(&self, theta: f64, centre: Support) -> Option<(f64, f64)> {
-        let half = (NODES / 2) as i32;
-        let piece = |u: f64| self.touch.breakpoints.partition_point(|&b| b <= u);
-        let home = piece(centre.u);
-        // each derivative with the rounding it carries: the positions' own rounding (a few ulps
-        // of the largest) through the stencil's weights
-        let estimate = |h: f64| -> Option<([f64; 2], [f64; 2])> {
-            let mut cache: Vec<Option<Option<Support>>> = vec![None; (4 * half + 1) as usize];
-            for shift in [0, -1, 1, -2, 2, -3, 3] {
-                let ks: Vec<i32> = (shift - half..=shift + half).collect();
-                let mut nodes = Vec::with_capacity(NODES);
-                for &k in &ks {
-                    let s = if k == 0 {
-                        Some(centre)
-                    } else {
-                        *cache[(k + 2 * half) as usize]
-                            .get_or_insert_with(|| self.support(theta + k as f64 * h))
-                    };
-                    match s {
-                        Some(s) if piece(s.u) == home => nodes.push(s),
-                        _ => break,
+/// The support function at `theta`.
+fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
+    let profile = mech.cam.profile.as_ref();
+    let (sn, cs) = (mech.cam.direction.sign() * theta).sin_cos();
+    let pivot = mech.cam.pivot;
+    let world = |u: f64| {
+        let x = profile.position(u);
+        pivot + Vec2::new(cs * x.x - sn * x.y, sn * x.x + cs * x.y)
+    };
+    let joint = mech.follower_joint();
+    // a rotating follower: compare angles on the branch centred on the cam's axis, report
+    // them within ±180° of the initial angle
+    let (branch, report) = match joint {
+        Joint::Rotating {
+            pivot: o,
+            initial_angle,
+            ..
+        } => {
+            let d = pivot - o;
+            (d.y.atan2(d.x), Some(initial_angle))
+        }
+        Joint::Translating { .. } => (0.0, None),
+    };
+    let report = |s: Support| Support {
+        q: report.map_or(s.q, |a| a + wrap_near_zero(s.q - a)),
+        u: s.u,
+    };
+    let period = mech.touch.period;
+    let grid = sample_grid(&mech.touch.breakpoints, period);
+    match mech.follower_curve() {
+        curve @ (FollowerCurve::Point(_) | FollowerCurve::Circle(_)) => {
+            // the extreme of the crossings of the tip's path with the profile, or of the
+            // roller centre's path with the profile's offset by the radius (outward normal
+            // −orientation·rot90(r')): a roller's reach beside its path can be far narrower
+            // than the sampling
+            let (tip, r) = match curve {
+                FollowerCurve::Circle(c) => (c.center().coords, c.radius()),
+                FollowerCurve::Point(p) => (p.at().coords, 0.0),
+                _ => unreachable!("matched above"),
+            };
+            let shift = -mech.touch.orientation * r;
+            let offset = |u: f64| {
+                if r == 0.0 {
+                    return world(u);
+                }
+                let t = profile.eval(u).d1;
+                let n = Vec2::new(-t.y, t.x) * (shift / t.norm());
+                world(u) + Vec2::new(cs * n.x - sn * n.y, sn * n.x + cs * n.y)
+            };
+            let path = |u: f64| crossing(&joint, tip, offset(u), branch);
+            let mut best: Option<(f64, Support)> = None;
+            let mut keep = |u: f64| {
+                let q = path(u).1;
+                let score = oriented(&joint, q);
+                if best.is_none_or(|(s, _)| score > s) {
+                    best = Some((
+                        score,
+                        Support {
+                            q,
+                            u: u.rem_euclid(period),
+                        },
+                    ));
+                }
+            };
+            let n = grid.len();
+            let at = |i: usize| {
+                if i < n {
+                    grid[i]
+                } else {
+                    grid[i - n] + period
+                }
+            };
+            let f: Vec<f64> = (0..=n + 1).map(|i| path(at(i)).0).collect();
+            for i in 0..n {
+                let (a, b) = (at(i), at(i + 1));
+                if f[i] == 0.0 || f[i].signum() != f[i + 1].signum() {
+                    keep(bisect(|u| path(u).0, a, b, f[i]));
+                } else if f[i + 1].abs() < f[i].abs()
+                    && f[i + 1].abs() < f[i + 2].abs()
+                    && f[i + 1].signum() == f[i + 2].signum()
+                {
+                    // |f| has a local minimum at a sample: two crossings may hide around it
+                    let sign = f[i + 1].signum();
+                    let um = golden_max(
+                        &|u| -sign * path(u).0,
+                        a,
+                        at(i + 2),
+                        at(i + 1),
+                        -f[i + 1].abs(),
+                    );
+                    let fm = path(um).0;
+                    if fm.signum() != sign {
+                        keep(bisect(|u| path(u).0, a, um, f[i]));
+                        keep(bisect(|u| path(u).0, um, at(i + 2), fm));
                     }
                 }
-                if nodes.len() < NODES || !steady(&nodes, self.touch.period) {
+            }
+            best.map(|(_, s)| report(s))
+        }
+        curve => {
+            let f = |u: f64| {
+                touch(&joint, &curve, world(u), branch)
+                    .map_or(f64::NEG_INFINITY, |q| oriented(&joint, q))
+            };
+            let values: Vec<f64> = grid.iter().map(|&u| f(u)).collect();
+            // every sampled local maximum is refined: near a contact jump two lobes touch
+            // almost together and the best sample need not be on the winning one
+            let n = grid.len();
+            let mut best: Option<(f64, f64)> = None;
+            for i in 0..n {
+                let (before, after) = (values[(i + n - 1) % n], values[(i + 1) % n]);
+                if values[i] == f64::NEG_INFINITY || values[i] < before || values[i] < after {
                     continue;
                 }
-                let x: Vec<f64> = ks.iter().map(|&k| k as f64 * h).collect();
-                let w = fornberg(&x, 2);
-                let mut q: Vec<f64> = nodes.iter().map(|n| n.q).collect();
-                if let Joint::Rotating { .. } = self.follower_joint() {
-                    for v in &mut q {
-                        *v = centre.q + wrap_near_zero(*v - centre.q);
-                    }
-                }
-                let d = |m: usize| w[m].iter().zip(&q).map(|(a, b)| a * b).sum::<f64>();
-                let noise = 4.0 * f64::EPSILON * q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-                let r = |m: usize| noise * w[m].iter().map(|a| a.abs()).sum::<f64>();
-                return Some(([d(1), d(2)], [r(1), r(2)]));
-            }
-            None
-        };
-        // each derivative at its own step: the finer of the two consecutive steps whose gap, or
-        // the finer's rounding if larger, is least (two estimates dominated by rounding can agree
-        // by chance; the second derivative's rounding grows faster as h shrinks)
-        let mut best: [Option<(f64, f64)>; 2] = [None, None];
-        let mut previous = estimate(STEP);
-        for l in 1..LEVELS {
-            let next = estimate(STEP / f64::from(1u32 << l));
-            if let (Some((a, _)), Some((b, rounding))) = (previous, next) {
-                for k in 0..2 {
-                    let error = (a[k] - b[k]).abs().max(rounding[k]);
-                    if best[k].is_none_or(|(e, _)| error < e) {
-                        best[k] = Some((error, b[k]));
-                    }
+                let lo = if i == 0 {
+                    grid[n - 1] - period
+                } else {
+                    grid[i - 1]
+                };
+                let hi = if i + 1 == n {
+                    period + grid[0]
+                } else {
+                    grid[i + 1]
+                };
+                let u = golden_max(&f, lo, hi, grid[i], values[i]);
+                let v = f(u);
+                if best.is_none_or(|(b, _)| v > b) {
+                    best = Some((v, u));
                 }
             }
-            previous = next;
-        }
-        Some((best[0]?.1, best[1]?.1))
-    }
-
-    /// The support function at `theta`.
-    fn support(&self, theta: f64) -> Option<Support> {
-        let profile = self.cam.profile.as_ref();
-        let (sn, cs) = (self.cam.direction.sign() * theta).sin_cos();
-        let pivot = self.cam.pivot;
-        let world = |u: f64| {
-            let x = profile.position(u);
-            pivot + Vec2::new(cs * x.x - sn * x.y, sn * x.x + cs * x.y)
-        };
-        let joint = self.follower_joint();
-        // a rotating follower: compare angles on the branch centred on the cam's axis, report
-        // them within ±180° of the initial angle
-        let (branch, report) = match joint {
-            Joint::Rotating {
-                pivot: o,
-                initial_angle,
-                ..
-            } => {
-                let d = pivot - o;
-                (d.y.atan2(d.x), Some(initial_angle))
-            }
-            Joint::Translating { .. } => (0.0, None),
-        };
-        let report = |s: Support| Support {
-            q: report.map_or(s.q, |a| a + wrap_near_zero(s.q - a)),
-            u: s.u,
-        };
-        let period = self.touch.period;
-        let grid = sample_grid(&self.touch.breakpoints, period);
-        match self.follower_curve() {
-            curve @ (FollowerCurve::Point(_) | FollowerCurve::Circle(_)) => {
-                // the extreme of the crossings of the tip's path with the profile, or of the
-                // roller centre's path with the profile's offset by the radius (outward normal
-                // −orientation·rot90(r')): a roller's reach beside its path can be far narrower
-                // than the sampling
-                let (tip, r) = match curve {
-                    FollowerCurve::Circle(c) => (c.center().coords, c.radius()),
-                    FollowerCurve::Point(p) => (p.at().coords, 0.0),
-                    _ => unreachable!("matched above"),
-                };
-                let shift = -self.touch.orientation * r;
-                let offset = |u: f64| {
-                    if r == 0.0 {
-                        return world(u);
-                    }
-                    let t = profile.eval(u).d1;
-                    let n = Vec2::new(-t.y, t.x) * (shift / t.norm());
-                    world(u) + Vec2::new(cs * n.x - sn * n.y, sn * n.x + cs * n.y)
-                };
-                let path = |u: f64| crossing(&joint, tip, offset(u), branch);
-                let mut best: Option<(f64, Support)> = None;
-                let mut keep = |u: f64| {
-                    let q = path(u).1;
-                    let score = oriented(&joint, q);
-                    if best.is_none_or(|(s, _)| score > s) {
-                        best = Some((
-                            score,
-                            Support {
-                                q,
-                                u: u.rem_euclid(period),
-                            },
-                        ));
-                    }
-                };
-                let n = grid.len();
-                let at = |i: usize| {
-                    if i < n {
-                        grid[i]
-                    } else {
-                        grid[i - n] + period
-                    }
-                };
-                let f: Vec<f64> = (0..=n + 1).map(|i| path(at(i)).0).collect();
-                for i in 0..n {
-                    let (a, b) = (at(i), at(i + 1));
-                    if f[i] == 0.0 || f[i].signum() != f[i + 1].signum() {
-                        keep(bisect(|u| path(u).0, a, b, f[i]));
-                    } else if f[i + 1].abs() < f[i].abs()
-                        && f[i + 1].abs() < f[i + 2].abs()
-                        && f[i + 1].signum() == f[i + 2].signum()
-                    {
-                        // |f| has a local minimum at a sample: two crossings may hide around it
-                        let sign = f[i + 1].signum();
-                        let um = golden_max(
-                            &|u| -sign * path(u).0,
-                            a,
-                            at(i + 2),
-                            at(i + 1),
-                            -f[i + 1].abs(),
-                        );
-                        let fm = path(um).0;
-                        if fm.signum() != sign {
-                            keep(bisect(|u| path(u).0, a, um, f[i]));
-                            keep(bisect(|u| path(u).0, um, at(i + 2), fm));
-                        }
-                    }
-                }
-                best.map(|(_, s)| report(s))
-            }
-            curve => {
-                let f = |u: f64| {
-                    touch(&joint, &curve, world(u), branch)
-                        .map_or(f64::NEG_INFINITY, |q| oriented(&joint, q))
-                };
-                let values: Vec<f64> = grid.iter().map(|&u| f(u)).collect();
-                // every sampled local maximum is refined: near a contact jump two lobes touch
-                // almost together and the best sample need not be on the winning one
-                let n = grid.len();
-                let mut best: Option<(f64, f64)> = None;
-                for i in 0..n {
-                    let (before, after) = (values[(i + n - 1) % n], values[(i + 1) % n]);
-                    if values[i] == f64::NEG_INFINITY || values[i] < before || values[i] < after {
-                        continue;
-                    }
-                    let lo = if i == 0 {
-                        grid[n - 1] - period
-                    } else {
-                        grid[i - 1]
-                    };
-                    let hi = if i + 1 == n {
-                        period + grid[0]
-                    } else {
-                        grid[i + 1]
-                    };
-                    let u = golden_max(&f, lo, hi, grid[i], values[i]);
-                    let v = f(u);
-                    if best.is_none_or(|(b, _)| v > b) {
-                        best = Some((v, u));
-                    }
-                }
-                let u = best?.1.rem_euclid(period);
-                touch(&joint, &curve, world(u), branch).map(|q| report(Support { q, u }))
-            }
+            let u = best?.1.rem_euclid(period);
+            touch(&joint, &curve, world(u), branch).map(|q| report(Support { q, u }))
         }
     }
 }

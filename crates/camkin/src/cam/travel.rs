@@ -35,75 +35,73 @@ impl Travel {
 /// Samples per revolution of the coarse scan.
 const SAMPLES: usize = 720;
 
-impl Mechanism {
-    /// The rest and farthest positions of the follower over a revolution, each located to
-    /// rounding: a scan at 0.5° steps, then the zero of the velocity (exact, by the contact
-    /// method) between the neighbours of the extreme sample, by bisection. Where the velocity
-    /// does not change sign there (a dwell, or an extreme at a jump of the contact) the extreme
-    /// sample stands. The scan is a warm-started sweep: the cost is about that of analysing
-    /// 720 angles plus some 100 global searches.
-    pub fn travel(&self) -> Result<Travel, CamError> {
-        let step = std::f64::consts::TAU / SAMPLES as f64;
-        let mut sweep = self.sweep();
-        let mut q = Vec::with_capacity(SAMPLES);
-        for k in 0..SAMPLES {
-            q.push(sweep.step_motion(k as f64 * step)?.position);
-        }
-        let away = self.follower_joint().away();
-        let (mut lo, mut hi) = (0usize, 0usize);
-        for k in 1..SAMPLES {
-            if away * q[k] < away * q[lo] {
-                lo = k;
-            }
-            if away * q[k] > away * q[hi] {
-                hi = k;
-            }
-        }
-        let (rest_angle, rest) = self.refine_extreme(lo, step, q[lo], -away)?;
-        let (peak_angle, peak) = self.refine_extreme(hi, step, q[hi], away)?;
-        Ok(Travel {
-            rest,
-            rest_angle,
-            peak,
-            peak_angle,
-            away,
-        })
+/// The rest and farthest positions of the follower over a revolution, each located to
+/// rounding: a scan at 0.5° steps, then the zero of the velocity (exact, by the contact
+/// method) between the neighbours of the extreme sample, by bisection. Where the velocity
+/// does not change sign there (a dwell, or an extreme at a jump of the contact) the extreme
+/// sample stands. The scan is a warm-started sweep: the cost is about that of analysing
+/// 720 angles plus some 100 global searches.
+pub(crate) fn travel(mech: &Mechanism) -> Result<Travel, CamError> {
+    let step = std::f64::consts::TAU / SAMPLES as f64;
+    let mut sweep = mech.sweep();
+    let mut q = Vec::with_capacity(SAMPLES);
+    for k in 0..SAMPLES {
+        q.push(sweep.step_motion(k as f64 * step)?.position);
     }
+    let away = mech.follower_joint().away();
+    let (mut lo, mut hi) = (0usize, 0usize);
+    for k in 1..SAMPLES {
+        if away * q[k] < away * q[lo] {
+            lo = k;
+        }
+        if away * q[k] > away * q[hi] {
+            hi = k;
+        }
+    }
+    let (rest_angle, rest) = refine_extreme(mech, lo, step, q[lo], -away)?;
+    let (peak_angle, peak) = refine_extreme(mech, hi, step, q[hi], away)?;
+    Ok(Travel {
+        rest,
+        rest_angle,
+        peak,
+        peak_angle,
+        away,
+    })
+}
 
-    /// The extreme near sample `k` (`sign` −1 for a minimum, +1 for a maximum): bisection on
-    /// the velocity between the neighbouring samples, kept only when it improves on the sample.
-    fn refine_extreme(
-        &self,
-        k: usize,
-        step: f64,
-        qk: f64,
-        sign: f64,
-    ) -> Result<(f64, f64), CamError> {
-        let t = k as f64 * step;
-        let wrap = |a: f64| a.rem_euclid(std::f64::consts::TAU);
-        let (mut a, mut b) = (t - step, t + step);
-        let (va, vb) = (self.motion(a)?.velocity, self.motion(b)?.velocity);
-        // at a minimum the velocity goes from negative to positive (at a maximum, the reverse)
-        if !(sign * va > 0.0 && sign * vb < 0.0) {
-            return Ok((wrap(t), qk));
-        }
-        for _ in 0..60 {
-            let m = 0.5 * (a + b);
-            if m <= a || m >= b {
-                break;
-            }
-            if sign * self.motion(m)?.velocity > 0.0 {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
+/// The extreme near sample `k` (`sign` −1 for a minimum, +1 for a maximum): bisection on
+/// the velocity between the neighbouring samples, kept only when it improves on the sample.
+fn refine_extreme(
+    mech: &Mechanism,
+    k: usize,
+    step: f64,
+    qk: f64,
+    sign: f64,
+) -> Result<(f64, f64), CamError> {
+    let t = k as f64 * step;
+    let wrap = |a: f64| a.rem_euclid(std::f64::consts::TAU);
+    let (mut a, mut b) = (t - step, t + step);
+    let (va, vb) = (mech.motion(a)?.velocity, mech.motion(b)?.velocity);
+    // at a minimum the velocity goes from negative to positive (at a maximum, the reverse)
+    if !(sign * va > 0.0 && sign * vb < 0.0) {
+        return Ok((wrap(t), qk));
+    }
+    for _ in 0..60 {
         let m = 0.5 * (a + b);
-        let qm = self.motion(m)?.position;
-        if sign * (qm - qk) >= 0.0 {
-            Ok((wrap(m), qm))
-        } else {
-            Ok((wrap(t), qk))
+        if m <= a || m >= b {
+            break;
         }
+        if sign * mech.motion(m)?.velocity > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    let m = 0.5 * (a + b);
+    let qm = mech.motion(m)?.position;
+    if sign * (qm - qk) >= 0.0 {
+        Ok((wrap(m), qm))
+    } else {
+        Ok((wrap(t), qk))
     }
 }

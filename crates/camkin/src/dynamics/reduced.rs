@@ -295,7 +295,7 @@ impl<'a> Reduced<'a> {
             // `tests/it/contact_jumps.rs`): the cold search decides, and a lead restarts the
             // sweep on the new part
             let cold = side.mech.motion(theta).map_err(err)?;
-            if side.mech.ahead(cold.position, m.position) > side.mech.touch.touch_slack() {
+            if side.mech.touch.ahead(cold.position, m.position) > side.mech.touch.touch_slack() {
                 *sweep = side.mech.sweep();
                 m = sweep.step_motion(theta).map_err(err)?;
                 m.found = Found::Jump {
