@@ -14,6 +14,7 @@
 //! [crate docs](crate#sign-conventions).
 
 mod carried;
+mod carried_accept;
 mod checks;
 mod conjugate;
 mod contacts;
