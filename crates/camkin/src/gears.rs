@@ -324,7 +324,7 @@ impl GearPair {
         let (Some(l1), Some(l2)) = (f1.roll_length, f2.roll_length) else {
             return 0;
         };
-        let frame = mech.cam().state(s.cam_angle).frame();
+        let at = &crate::cam::Instant::new(mech.cam(), s.cam_angle);
         let tol = mech.options().touch_tolerance;
         let rb2 = self.driven.base_radius();
         let pb = self.base_pitch();
@@ -344,10 +344,7 @@ impl GearPair {
                 ) else {
                     continue;
                 };
-                let Ok(t) = mech
-                    .touch
-                    .carried_newton(c, s.cam_angle, &frame, u, v, s.position)
-                else {
+                let Ok(t) = mech.touch.carried_newton(c, at, u, v, s.position) else {
                     continue;
                 };
                 let (g1, g2) = (self.driver.flank_at(t.u), self.driven.flank_at(t.v));

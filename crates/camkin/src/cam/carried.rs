@@ -6,6 +6,7 @@ use super::first_touch::FirstTouch;
 use super::follower::carried::{Carried, Crossing, Track};
 use super::{CamError, Found, StopReason, Touch};
 use crate::body::{CurveInFrame, WorldDerivs};
+use crate::cam::instant::Instant;
 use crate::geometry::{cross, rot90, wrap_angle_near, Frame, Point2, Vec2};
 use std::f64::consts::TAU;
 
@@ -151,21 +152,18 @@ impl FirstTouch {
         let super::Joint::Rotating { initial_angle, .. } = self.geometry.joint else {
             return 0.0;
         };
-        let z1 = self.profile.symmetry();
+        let z1 = self.cam.profile.symmetry();
         if z1 > 1 && c.symmetry > 1 {
-            initial_angle - self.sense.sign() * f64::from(z1) / f64::from(c.symmetry) * theta
+            initial_angle
+                - self.cam.direction.sign() * f64::from(z1) / f64::from(c.symmetry) * theta
         } else {
             initial_angle
         }
     }
 
     /// The global first touch of a carried curve at cam angle `theta`.
-    pub(crate) fn carried_global(
-        &self,
-        c: &Carried,
-        theta: f64,
-        frame: &Frame,
-    ) -> Result<Touch, CamError> {
+    pub(crate) fn carried_global(&self, c: &Carried, at: &Instant) -> Result<Touch, CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         let angle_deg = theta.to_degrees();
         let no_touch = |reason| CamError::NoTouch { angle_deg, reason };
         let mut covers = Vec::new();
@@ -248,7 +246,7 @@ impl FirstTouch {
         };
         // a converged touch settled and reported
         let settled = |t: Result<Touch, CamError>| {
-            t.and_then(|t| self.carried_settle(c, theta, frame, t, Some(&covers)))
+            t.and_then(|t| self.carried_settle(c, at, t, Some(&covers)))
                 .map(|t| self.carried_report(c, theta, t))
         };
         // a corner found in the way is the reason to give
@@ -258,7 +256,7 @@ impl FirstTouch {
             }
         };
         for &(_, u0, v0, q0) in starts.iter().take(STARTS) {
-            match settled(self.carried_newton(c, theta, frame, u0, v0, q0)) {
+            match settled(self.carried_newton(c, at, u0, v0, q0)) {
                 Ok(t) => return Ok(t),
                 Err(e) => keep(e, &mut last),
             }
@@ -270,7 +268,7 @@ impl FirstTouch {
                 let xa = frame * profile_point(self, u0);
                 let xb = self.geometry.joint.pose(q0).frame() * c.curve.position(v0);
                 for k in self.corners_near(c, frame, q0, (xa, xb), near) {
-                    match settled(self.corner_from(c, theta, frame, &k, q0)) {
+                    match settled(self.corner_from(c, at, &k, q0)) {
                         Ok(t) => return Ok(t),
                         Err(e) => keep(e, &mut last),
                     }
@@ -332,7 +330,7 @@ impl FirstTouch {
         (u, v, q): (f64, f64, f64),
     ) -> (WorldDerivs, WorldDerivs, Vec2) {
         let joint = self.geometry.joint;
-        let a = frame.curve_at(self.profile.as_ref(), u);
+        let a = frame.curve_at(self.cam.profile.as_ref(), u);
         let b = joint.pose(q).frame().curve_at(c.curve.as_ref(), v);
         let dq_x = match joint {
             super::Joint::Translating { direction, .. } => *direction,
@@ -370,12 +368,12 @@ impl FirstTouch {
     pub(crate) fn carried_newton(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         mut u: f64,
         mut v: f64,
         mut q: f64,
     ) -> Result<Touch, CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         let angle_deg = theta.to_degrees();
         let Limits { tol, qs, lim, vlim } = self.carried_limits(c);
         for _ in 0..self.options.max_iterations {
@@ -418,11 +416,11 @@ impl FirstTouch {
     pub(crate) fn carried_touching(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         t: &Touch,
         out: &mut Vec<Touch>,
     ) {
+        let frame = &at.frame;
         let mut covers = Vec::new();
         self.covers(c, frame, &mut covers);
         let (_, window) = self.tie_window(c);
@@ -435,31 +433,22 @@ impl FirstTouch {
         };
         let tol = self.options.touch_tolerance;
         let close = 1e-6 * self.size;
-        let at = |t: &Touch| frame * profile_point(self, t.u);
+        let place = |t: &Touch| frame * profile_point(self, t.u);
         // a contact may close either way (gears without backlash touch on both flanks); one
         // found again from another place does not count as found there
         let every = (8, true);
-        self.near_tangencies(
-            c,
-            theta,
-            frame,
-            t,
-            sides.contact,
-            &mut ties,
-            every,
-            |t2, gain| {
-                let new = !out.iter().any(|o| (at(o) - at(&t2)).norm() <= close);
-                let opposite = self
-                    .carried_sides(c, frame, &t2)
-                    .is_some_and(|s| s.opposite);
-                if new && gain.abs() <= tol && opposite {
-                    out.push(t2);
-                    Some(false)
-                } else {
-                    None
-                }
-            },
-        );
+        self.near_tangencies(c, at, t, sides.contact, &mut ties, every, |t2, gain| {
+            let new = !out.iter().any(|o| (place(o) - place(&t2)).norm() <= close);
+            let opposite = self
+                .carried_sides(c, frame, &t2)
+                .is_some_and(|s| s.opposite);
+            if new && gain.abs() <= tol && opposite {
+                out.push(t2);
+                Some(false)
+            } else {
+                None
+            }
+        });
         // corners resting on the other curve (the caller keeps one contact per place)
         self.corners_touching(c, frame, t, out);
     }
@@ -469,13 +458,13 @@ impl FirstTouch {
     fn carried_settle(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         mut t: Touch,
         covers: Option<&Vec<Cover>>,
     ) -> Result<Touch, CamError> {
+        let theta = at.theta;
         for _ in 0..4 {
-            match self.carried_accept(c, theta, frame, &t, covers)? {
+            match self.carried_accept(c, at, &t, covers)? {
                 None => return Ok(t),
                 Some(t2) => t = t2,
             }
@@ -501,7 +490,7 @@ impl FirstTouch {
         if c.period.is_none() && !(t.v >= c.bounds.0 && t.v <= c.bounds.1) {
             return None;
         }
-        let a = frame.curve_at(self.profile.as_ref(), t.u);
+        let a = frame.curve_at(self.cam.profile.as_ref(), t.u);
         let b = self
             .geometry
             .joint
@@ -525,18 +514,17 @@ impl FirstTouch {
     pub(crate) fn carried_warm(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         start: (f64, f64, f64),
         previous: (f64, Touch),
     ) -> Result<(Touch, Found), CamError> {
         let (u0, v0, q0) = start;
         let (p_theta, p) = previous;
-        let back = self.cam_frame(p_theta);
+        let back = &Instant::new(&self.cam, p_theta);
         // Newton of the kind of `corner`: on a tangency, or on a corner resting on a curve
-        let newton = |theta: f64, frame: &Frame, (u, v, q): (f64, f64, f64), corner| match corner {
-            None => self.carried_newton(c, theta, frame, u, v, q),
-            Some(side) => self.corner_newton(c, theta, frame, side, u, v, q),
+        let newton = |at: &Instant, (u, v, q): (f64, f64, f64), corner| match corner {
+            None => self.carried_newton(c, at, u, v, q),
+            Some(side) => self.corner_newton(c, at, side, u, v, q),
         };
         let near = 4.0 * self.corners.spacing.max(c.corners.spacing);
         // a contact continues the previous one when Newton at the previous angle, started from
@@ -547,21 +535,21 @@ impl FirstTouch {
             if t.corner != p.corner {
                 return self.corner_continues(c, (&p, t), near);
             }
-            newton(p_theta, &back, (t.u, t.v, t.q), t.corner).is_ok_and(|b| {
+            newton(back, (t.u, t.v, t.q), t.corner).is_ok_and(|b| {
                 let d = (b.u - p.u).rem_euclid(self.period);
                 d.min(self.period - d) <= 1e-6 * self.period
                     && (b.q - p.q).abs() * self.geometry.q_length_scale(self.size)
                         <= 1e-6 * self.size
             })
         };
-        if let Ok(t) = newton(theta, frame, (u0, v0, q0), p.corner) {
-            if let Ok(t) = self.carried_settle(c, theta, frame, t, None) {
+        if let Ok(t) = newton(at, (u0, v0, q0), p.corner) {
+            if let Ok(t) = self.carried_settle(c, at, t, None) {
                 if continues(&t) {
                     return Ok((t, Found::WarmStart));
                 }
             }
         }
-        let g = self.carried_global(c, theta, frame)?;
+        let g = self.carried_global(c, at)?;
         Ok(if continues(&g) {
             (g, Found::Global)
         } else {
@@ -571,7 +559,7 @@ impl FirstTouch {
 }
 
 pub(super) fn profile_point(m: &FirstTouch, u: f64) -> Point2 {
-    m.profile.position(u)
+    m.cam.profile.position(u)
 }
 
 /// The free gap (between covered stretches) to rest in, as `(from, to)` angles with

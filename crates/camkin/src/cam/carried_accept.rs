@@ -7,6 +7,7 @@
 use super::first_touch::FirstTouch;
 use super::follower::carried::Carried;
 use super::{CamError, StopReason, Touch};
+use crate::cam::instant::Instant;
 
 use crate::geometry::{wrap_angle_near, Frame, Point2};
 use std::f64::consts::TAU;
@@ -22,11 +23,11 @@ impl FirstTouch {
     pub(super) fn carried_accept(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         t: &Touch,
         covers: Option<&Vec<Cover>>,
     ) -> Result<Option<Touch>, CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         let angle_deg = theta.to_degrees();
         let not_first = CamError::NoConvergence {
             angle_deg,
@@ -37,7 +38,7 @@ impl FirstTouch {
         };
         if !sides.opposite {
             // a corner with a piece leaning into the other body: the contact is on that piece
-            return match self.off_corner(c, theta, frame, t) {
+            return match self.off_corner(c, at, t) {
                 Some(t2) => Ok(Some(t2)),
                 None => Err(not_first),
             };
@@ -54,7 +55,7 @@ impl FirstTouch {
         };
         if let Some(k) = self.corner_inside(c, frame, t) {
             // the corner touches first: the contact is there (or, when it is not found, refused)
-            return match self.corner_from(c, theta, frame, &k, t.q) {
+            return match self.corner_from(c, at, &k, t.q) {
                 Ok(t2) if t2 != *t => Ok(Some(t2)),
                 _ => Err(CamError::NoConvergence {
                     angle_deg,
@@ -81,23 +82,14 @@ impl FirstTouch {
         let tol = self.options.touch_tolerance;
         let mut earlier = None;
         let once = (8, false);
-        self.near_tangencies(
-            c,
-            theta,
-            frame,
-            t,
-            sides.contact,
-            &mut ties,
-            once,
-            |t2, gain| {
-                if gain > tol && gain <= 2.0 * window && self.carried_proper(c, frame, &t2) {
-                    earlier = Some(t2);
-                    Some(true)
-                } else {
-                    None
-                }
-            },
-        );
+        self.near_tangencies(c, at, t, sides.contact, &mut ties, once, |t2, gain| {
+            if gain > tol && gain <= 2.0 * window && self.carried_proper(c, frame, &t2) {
+                earlier = Some(t2);
+                Some(true)
+            } else {
+                None
+            }
+        });
         Ok(earlier)
     }
 
@@ -178,14 +170,14 @@ impl FirstTouch {
     pub(super) fn near_tangencies(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         t: &Touch,
         contact: Point2,
         ties: &mut [Tie<'_>],
         (places, both_edges): (usize, bool),
         mut f: impl FnMut(Touch, f64) -> Option<bool>,
     ) {
+        let frame = &at.frame;
         let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
         let pitch = TAU / f64::from(c.symmetry);
         let closing = match self.geometry.joint {
@@ -203,7 +195,7 @@ impl FirstTouch {
             if tried.len() >= places {
                 break;
             }
-            let x = frame * self.profile.position(k.u);
+            let x = frame * self.cam.profile.position(k.u);
             // a place within a few samples of one looked at is the same place; near the
             // contact, unless its sample is the peak of another part of the cam (two parts
             // crossing: the one taking over touches first by less than the samples can tell)
@@ -226,7 +218,7 @@ impl FirstTouch {
             // a tangency from a start, handed to `f`: `Some((stop, here))` when `f` took it,
             // `here` when it is at this place (Newton may go to another)
             let mut attempt = |u0: f64, q0: f64, v: f64| -> Option<(bool, bool)> {
-                let mut t2 = self.carried_newton(c, theta, frame, u0, v, q0).ok()?;
+                let mut t2 = self.carried_newton(c, at, u0, v, q0).ok()?;
                 let n = if periodic {
                     ((t2.q - t.q) / pitch).round()
                 } else {
@@ -237,7 +229,7 @@ impl FirstTouch {
                 if let (Some(period), true) = (c.period, n != 0.0) {
                     t2.v = (t2.v + n * period / f64::from(c.symmetry)).rem_euclid(period);
                 }
-                let here = (frame * self.profile.position(t2.u) - x).norm() <= 4.0 * spacing;
+                let here = (frame * self.cam.profile.position(t2.u) - x).norm() <= 4.0 * spacing;
                 f(t2, -closing * d * k.scale).map(|stop| (stop, here))
             };
             let edges = [Some(closing_edge), both_edges.then_some(other_edge)];

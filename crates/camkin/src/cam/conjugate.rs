@@ -20,7 +20,9 @@
 //! and the curve turned by a half turn, so that its coordinate is the negative of the follower's
 //! (`s' = −s`: a slide's first touch always comes from `s = +∞`).
 
-use super::{CamError, Contact, Follower, FollowerProfile, FollowerState, Joint, Mechanism, Sense};
+use super::{
+    CamError, Contact, Follower, FollowerProfile, FollowerState, Instant, Joint, Mechanism, Sense,
+};
 use crate::curve::{Curve, Derivs, Domain};
 use crate::field::{Field, ProfileField};
 use crate::geometry::{rot90, Point2};
@@ -111,7 +113,7 @@ impl Mechanism {
                 reason: "a point (a knife edge) cannot be a follower's second curve: give a circle of small radius".into(),
             });
         }
-        let pivot = self.cam.pivot;
+        let pivot = self.touch.cam.pivot;
         let (follower, flip) = match self.touch.geometry.joint {
             Joint::Translating { origin, direction } => (
                 Follower::Translating {
@@ -140,10 +142,11 @@ impl Mechanism {
                 false,
             ),
         };
-        let mech = Mechanism::new(self.cam.clone(), follower).map_err(|e| CamError::Conjugate {
-            field: table,
-            reason: e.to_string(),
-        })?;
+        let mech =
+            Mechanism::new(self.touch.cam.clone(), follower).map_err(|e| CamError::Conjugate {
+                field: table,
+                reason: e.to_string(),
+            })?;
         mech.analyze(0.0).map_err(|e| CamError::Conjugate {
             field: table,
             reason: format!(
@@ -218,15 +221,14 @@ impl Mechanism {
         if c.mech.touch.ahead(mapped.position, own.position) > c.mech.touch.touch_slack() {
             return Ok(None);
         }
-        let cam = self.cam.state(theta);
-        let frame = cam.frame();
+        let at = &Instant::new(self.cam(), theta);
         let t = super::Touch {
             u: own.cam_param,
             q: own.position,
             v: own.follower_param,
             corner: own.corner,
         };
-        let mut k = super::contacts::contact(&c.mech, theta, &cam, &frame, &t, &mapped)?;
+        let mut k = super::contacts::contact(&c.mech, at, &t, &mapped)?;
         k.row_follower = c.map(k.row_follower);
         k.conjugate = true;
         Ok(Some(k))

@@ -18,9 +18,10 @@
 
 use super::follower::Kind as _;
 use super::{CamError, FollowerState, Mechanism, Touch};
-use crate::body::{BodyState, CurveInFrame};
+use crate::body::CurveInFrame;
+use crate::cam::instant::Instant;
 use crate::contact::NormalAcceleration;
-use crate::geometry::{Frame, Point2, UnitVec2};
+use crate::geometry::{Point2, UnitVec2};
 
 /// One contact between the cam and the follower at an instant. World frame; lengths in the
 /// mechanism's unit, time in s; `q` in length (slide) or rad (pivot).
@@ -98,9 +99,8 @@ pub(crate) fn contacts_seconds_estimate(mech: &Mechanism, angles: usize) -> f64 
 /// the touch tolerance or negative. Each has its kinematics at the state's velocity and
 /// acceleration.
 pub(crate) fn contacts_at(mech: &Mechanism, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
-    let theta = s.cam_angle;
-    let cam = mech.cam.state(theta);
-    let frame = cam.frame();
+    let at = &Instant::new(mech.cam(), s.cam_angle);
+    let frame = &at.frame;
     let first = Touch {
         u: s.cam_param,
         q: s.position,
@@ -109,22 +109,20 @@ pub(crate) fn contacts_at(mech: &Mechanism, s: &FollowerState) -> Result<Vec<Con
     };
     let mut touches = vec![first];
     match mech.touch.carried() {
-        Some(c) => mech
-            .touch
-            .carried_touching(c, theta, &frame, &first, &mut touches),
-        None => named_touching(mech, theta, &frame, &first, &mut touches),
+        Some(c) => mech.touch.carried_touching(c, at, &first, &mut touches),
+        None => named_touching(mech, at, &first, &mut touches),
     }
     // one contact per place
     let close = 1e-6 * mech.touch.size;
     let mut places: Vec<Point2> = Vec::new();
     let mut out = Vec::with_capacity(touches.len());
     for t in &touches {
-        let x = frame.curve_position(mech.cam.profile.as_ref(), t.u);
+        let x = frame.curve_position(mech.touch.cam.profile.as_ref(), t.u);
         if places.iter().any(|y| (x - y).norm() <= close) {
             continue;
         }
         places.push(x);
-        out.push(contact(mech, theta, &cam, &frame, t, s)?);
+        out.push(contact(mech, at, t, s)?);
     }
     // the others in the order of the cam's parameter, whatever order the search found them in
     out[1..].sort_by(|a, b| a.cam_param.total_cmp(&b.cam_param));
@@ -136,7 +134,8 @@ pub(crate) fn contacts_at(mech: &Mechanism, s: &FollowerState) -> Result<Vec<Con
 
 /// The named kinds' other tangencies at `t`'s position: Newton from each start of the
 /// global search, kept when it is a first touch within the touch tolerance of `t`.
-fn named_touching(mech: &Mechanism, theta: f64, frame: &Frame, t: &Touch, out: &mut Vec<Touch>) {
+fn named_touching(mech: &Mechanism, at: &Instant, t: &Touch, out: &mut Vec<Touch>) {
+    let frame = &at.frame;
     let mut starts = super::starts::Candidates::new(super::MAX_CANDIDATES);
     if mech.touch.geometry.model.centre_path().is_some() {
         mech.touch
@@ -147,7 +146,7 @@ fn named_touching(mech: &Mechanism, theta: f64, frame: &Frame, t: &Touch, out: &
     }
     let slack = mech.touch.touch_slack();
     for &(_, u0, q0) in starts.as_slice() {
-        if let Ok(t2) = mech.touch.newton(theta, frame, u0, q0) {
+        if let Ok(t2) = mech.touch.newton(at, u0, q0) {
             if mech.touch.ahead(t.q, t2.q).abs() <= slack && mech.touch.is_first_touch(frame, &t2) {
                 out.push(t2);
             }
@@ -159,18 +158,17 @@ fn named_touching(mech: &Mechanism, theta: f64, frame: &Frame, t: &Touch, out: &
 /// velocity and acceleration.
 pub(crate) fn contact(
     mech: &Mechanism,
-    theta: f64,
-    cam: &BodyState,
-    frame: &Frame,
+    at: &Instant,
     t: &Touch,
     s: &FollowerState,
 ) -> Result<Contact, CamError> {
+    let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
     let g = &mech.touch.geometry;
-    let ea = frame.derivs_to_world(&mech.cam.profile.eval(t.u));
+    let ea = frame.derivs_to_world(&mech.touch.cam.profile.eval(t.u));
     let (c, nu) = (ea.p, mech.contact_normal(&ea, t));
     let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
     let (u_b, k) = mech.pair_kinematics(theta, cam, &ea, &body_b, *t)?;
-    let row_cam = k.phi_q[2] * mech.cam.direction.sign();
+    let row_cam = k.phi_q[2] * mech.touch.cam.direction.sign();
     let row_follower = g.joint.coordinate_coefficient(&k.phi_q);
     Ok(Contact {
         cam_angle: theta,
@@ -187,7 +185,8 @@ pub(crate) fn contact(
         row_cam,
         row_follower,
         gamma: k.gamma,
-        residual: row_cam * mech.cam.angular_acceleration + row_follower * s.acceleration - k.gamma,
+        residual: row_cam * mech.touch.cam.angular_acceleration + row_follower * s.acceleration
+            - k.gamma,
         conjugate: false,
         corner: t.corner,
     })

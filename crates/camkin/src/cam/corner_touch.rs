@@ -15,6 +15,7 @@ use super::first_touch::FirstTouch;
 use super::follower::carried::Carried;
 use super::{CamError, Corner, StopReason, Touch};
 use crate::body::CurveInFrame;
+use crate::cam::instant::Instant;
 use crate::curve::Curve;
 use crate::geometry::{cross, rot90, Frame, Point2, Vec2};
 
@@ -61,13 +62,13 @@ impl FirstTouch {
     pub(super) fn corner_newton(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         side: Corner,
         mut u: f64,
         mut v: f64,
         mut q: f64,
     ) -> Result<Touch, CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         let angle_deg = theta.to_degrees();
         let fail = |reason| CamError::NoConvergence { angle_deg, reason };
         match side {
@@ -128,7 +129,7 @@ impl FirstTouch {
             return None;
         }
         let fb = self.geometry.joint.pose(t.q).frame();
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         let o = self.orientation;
         // the smooth body's outward normal, the corner's tangents either side of its joint
         // (world), the corner's material side (+1: left), and the normal from cam to follower
@@ -169,16 +170,11 @@ impl FirstTouch {
     /// From a corner touch `t` one of whose pieces leans into the other body: the tangency on
     /// that piece next to the corner (where the contact is once it has left the corner, or
     /// before it reaches it), by Newton started just off the joint on that piece.
-    pub(super) fn off_corner(
-        &self,
-        c: &Carried,
-        theta: f64,
-        frame: &Frame,
-        t: &Touch,
-    ) -> Option<Touch> {
+    pub(super) fn off_corner(&self, c: &Carried, at: &Instant, t: &Touch) -> Option<Touch> {
+        let frame = &at.frame;
         let side = t.corner?;
         let fb = self.geometry.joint.pose(t.q).frame();
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         let (out, b, (t_in, t_out), span) = match side {
             Corner::Follower => {
                 let a = frame.curve_at(profile, t.u);
@@ -216,7 +212,7 @@ impl FirstTouch {
                 Corner::Cam => (p.rem_euclid(self.period), t.v),
                 Corner::Follower => (t.u, c.period.map_or(p, |per| p.rem_euclid(per))),
             };
-            let t2 = self.carried_newton(c, theta, frame, u, v, t.q).ok()?;
+            let t2 = self.carried_newton(c, at, u, v, t.q).ok()?;
             // on that piece, near the corner
             let q = match side {
                 Corner::Cam => t2.u,
@@ -297,7 +293,7 @@ impl FirstTouch {
     ) {
         let tol = self.options.touch_tolerance;
         let fb = self.geometry.joint.pose(t.q).frame();
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         let own = |side: Corner, b: f64| {
             t.corner == Some(side)
                 && match side {
@@ -308,7 +304,7 @@ impl FirstTouch {
         // the follower's corners within the cam's reach, inside the cam
         for &(b, y) in &c.corners.at {
             let x = fb * y;
-            if (x - self.pivot).norm() > self.size + tol || own(Corner::Follower, b) {
+            if (x - self.cam.pivot).norm() > self.size + tol || own(Corner::Follower, b) {
                 continue;
             }
             let local = frame.inverse_transform_point(&x);
@@ -357,8 +353,7 @@ impl FirstTouch {
     pub(super) fn corner_from(
         &self,
         c: &Carried,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         k: &Inside,
         q: f64,
     ) -> Result<Touch, CamError> {
@@ -366,7 +361,7 @@ impl FirstTouch {
             Corner::Cam => (k.param, k.foot),
             Corner::Follower => (k.foot, k.param),
         };
-        self.corner_newton(c, theta, frame, k.side, u, v, q)
+        self.corner_newton(c, at, k.side, u, v, q)
     }
 
     /// The corners of either curve within `near` of the cam point `xa` or the follower point
@@ -381,7 +376,7 @@ impl FirstTouch {
         near: f64,
     ) -> Vec<Inside> {
         let fb = self.geometry.joint.pose(q).frame();
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         let mut out = Vec::new();
         for &(b, y) in &c.corners.at {
             let x = fb * y;
@@ -423,7 +418,7 @@ impl FirstTouch {
         (p, t): (&Touch, &Touch),
         near: f64,
     ) -> bool {
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         let curve = c.curve.as_ref();
         (profile.position(p.u) - profile.position(t.u)).norm() <= near
             && (curve.position(p.v) - curve.position(t.v)).norm() <= near

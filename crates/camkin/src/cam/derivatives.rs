@@ -10,8 +10,9 @@ use super::jet::{scale, Jet, Num, V2};
 use super::search::solve2;
 use super::{CamError, Joint, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
+use crate::cam::instant::Instant;
 use crate::curve::Derivs;
-use crate::geometry::{Frame, Rotation};
+use crate::geometry::Rotation;
 
 /// `c0 + c1 δ + c2 δ²/2 + c3 δ³/6` for a jet `δ` without constant term: a curve's coordinate
 /// (or its derivative's) along a parameter that moves by `δ`.
@@ -45,17 +46,17 @@ fn turned((c, s): (Jet, Jet), v: V2<Jet>) -> V2<Jet> {
 /// and gives the jerk; `d³q/dθ³` takes the profile's third derivative on the segment that
 /// holds the contact (at a spline node it jumps).
 pub(crate) fn angle_derivatives(mech: &Mechanism, theta: f64) -> Result<[f64; 3], CamError> {
-    let cam = mech.cam.state(theta);
-    let touch = mech.touch.global_touch(theta, &cam.frame())?;
+    let at = &Instant::new(mech.cam(), theta);
+    let touch = mech.touch.global_touch(at)?;
     match mech.touch.carried() {
-        Some(c) => carried_jet_derivatives(mech, c, theta, &cam.frame(), touch),
-        None => jet_derivatives(mech, theta, &cam, touch),
+        Some(c) => carried_jet_derivatives(mech, c, at, touch),
+        None => jet_derivatives(mech, theta, &at.cam, touch),
     }
 }
 
 /// The cam's point and tangent at `u + dl` (world) as jets in the cam angle `θ + ε`.
 fn cam_jets(mech: &Mechanism, r: &Derivs, theta: f64, dl: Jet) -> (V2<Jet>, V2<Jet>) {
-    let s = mech.cam.direction.sign();
+    let s = mech.touch.cam.direction.sign();
     let rot0 = Rotation::new(s * theta);
     // R(θ + ε) = R(θ) R(s ε) as jets: cos(sε) = 1 − ε²/2, sin(sε) = s ε − s ε³/6 (s = ±1)
     let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
@@ -63,7 +64,7 @@ fn cam_jets(mech: &Mechanism, r: &Derivs, theta: f64, dl: Jet) -> (V2<Jet>, V2<J
     let rot = (scale(ce, c0) - scale(se, s0), scale(se, c0) + scale(ce, s0));
     let (x, x1) = curve_jets(r, dl);
     (
-        turned(rot, x) + V2::c(mech.cam.pivot.coords),
+        turned(rot, x) + V2::c(mech.touch.cam.pivot.coords),
         turned(rot, x1),
     )
 }
@@ -75,7 +76,7 @@ pub(crate) fn jet_derivatives(
     cam: &BodyState,
     touch: Touch,
 ) -> Result<[f64; 3], CamError> {
-    let profile = mech.cam.profile.as_ref();
+    let profile = mech.touch.cam.profile.as_ref();
     let r = profile.eval(touch.u);
     let j = mech.touch.geometry.model.jacobian(
         &cam.eval_curve(profile, touch.u),
@@ -106,15 +107,15 @@ pub(crate) fn jet_derivatives(
 pub(crate) fn carried_jet_derivatives(
     mech: &Mechanism,
     c: &Carried,
-    theta: f64,
-    frame: &Frame,
+    at: &Instant,
     touch: Touch,
 ) -> Result<[f64; 3], CamError> {
+    let (theta, frame) = (at.theta, &at.frame);
     let singular = || CamError::NoConvergence {
         angle_deg: theta.to_degrees(),
         reason: StopReason::SingularJacobian,
     };
-    let (a, b) = (mech.cam.profile.eval(touch.u), c.curve.eval(touch.v));
+    let (a, b) = (mech.touch.cam.profile.eval(touch.u), c.curve.eval(touch.v));
     let (.., j) = mech
         .touch
         .carried_system(c, frame, (touch.u, touch.v, touch.q));

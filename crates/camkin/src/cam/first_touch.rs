@@ -7,21 +7,15 @@
 //! (`carried.rs`, `carried_accept.rs`), corners (`corner_touch.rs`), overtaking (`overtake.rs`).
 
 use super::follower::{Geometry, Joint};
-use super::{corners, search, starts, AnalysisOptions, Sense};
-use crate::body::Pose as BodyPose;
-use crate::curve::Curve;
-use crate::geometry::{wrap_angle_near, Frame, Point2};
+use super::{corners, search, starts, AnalysisOptions, Cam};
+use crate::geometry::{wrap_angle_near, Point2};
 use std::sync::Arc;
 
 /// The first-touch engine of one cam profile and one follower.
 #[derive(Debug, Clone)]
 pub(crate) struct FirstTouch {
-    /// the cam's profile (cam frame)
-    pub(crate) profile: Arc<dyn Curve>,
-    /// the cam's axis (world)
-    pub(crate) pivot: Point2,
-    /// the cam's sense of rotation
-    pub(crate) sense: Sense,
+    /// the cam: its profile (cam frame), axis, sense and speed
+    pub(crate) cam: Cam,
     pub(crate) geometry: Geometry,
     pub(crate) options: AnalysisOptions,
     /// what the options give Newton and the first-touch test, prepared once
@@ -64,7 +58,7 @@ impl FirstTouch {
             options.samples_per_curve.max(8),
         );
         self.sample_points = if self.geometry.carried.is_some() {
-            let profile = self.profile.as_ref();
+            let profile = self.cam.profile.as_ref();
             dense.iter().map(|&u| profile.position(u)).collect()
         } else {
             Vec::new()
@@ -81,10 +75,5 @@ impl FirstTouch {
         });
         self.options = options;
         self.prepared = search::Prepared::new(&options, self.q_scale(), self.period);
-    }
-
-    /// The cam frame at cam angle `theta` (rad): turned by `±θ` about the axis.
-    pub(crate) fn cam_frame(&self, theta: f64) -> Frame {
-        BodyPose::new(self.pivot, self.sense.sign() * theta).frame()
     }
 }

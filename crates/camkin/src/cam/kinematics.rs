@@ -9,9 +9,10 @@ use super::pose::Pose;
 use super::state::pressure_angle;
 use super::{CamError, Corner, FollowerState, Found, Mechanism, Motion, Touch};
 use crate::body::{curve_in, BodyState, CurveInFrame, WorldDerivs};
+use crate::cam::instant::Instant;
 use crate::contact::{ContactKinematics, Pairing, Surface};
 use crate::curve::PointCurve;
-use crate::geometry::{Frame, UnitVec2, Vec2};
+use crate::geometry::{UnitVec2, Vec2};
 
 /// The shared part of an analysis at a converged touch.
 struct Core {
@@ -29,16 +30,15 @@ impl Mechanism {
     #[inline(always)]
     pub(crate) fn motion_at(
         &self,
-        theta: f64,
-        cam: &BodyState,
-        frame: &Frame,
+        at: &Instant,
         touch: Touch,
         found: Found,
     ) -> Result<Motion, CamError> {
+        let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
         // a named kind: the closed-form rates at the contact (no normal, body states or
         // constraint row); declined near a refusal, where the paper's method says why
         if self.touch.geometry.carried.is_none() {
-            let profile = self.cam.profile.as_ref();
+            let profile = self.touch.cam.profile.as_ref();
             let fast = dispatch!(&self.touch.geometry.model, k => {
                 let at = curve_in(frame, profile, touch.u);
                 self.closed_form_motion(k, theta, cam, &at, (touch, k.pose(touch.q)), found)
@@ -47,7 +47,7 @@ impl Mechanism {
                 return Ok(m);
             }
         }
-        let c = self.core(theta, cam, frame, touch)?;
+        let c = self.core(at, touch)?;
         Ok(Motion {
             cam_angle: theta,
             position: touch.q,
@@ -72,7 +72,7 @@ impl Mechanism {
         (touch, pose): (Touch, Pose),
         found: Found,
     ) -> Option<Motion> {
-        let at = CamPoint::new(e, self.cam.pivot, cam.omega, cam.alpha);
+        let at = CamPoint::new(e, self.touch.cam.pivot, cam.omega, cam.alpha);
         let [qd, qdd, ud] = k.rates(&at, &pose, &self.touch.prepared.refuse)?;
         Some(Motion {
             cam_angle: theta,
@@ -89,15 +89,10 @@ impl Mechanism {
     /// The contact method at a converged touch: velocity from the velocity constraint, sliding
     /// rates (eqs. 5, 6) and acceleration from the acceleration constraint (eq. 11).
     #[inline(always)]
-    fn core(
-        &self,
-        theta: f64,
-        cam: &BodyState,
-        frame: &Frame,
-        touch: Touch,
-    ) -> Result<Core, CamError> {
+    fn core(&self, at: &Instant, touch: Touch) -> Result<Core, CamError> {
+        let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
         let g = &self.touch.geometry;
-        let profile = self.cam.profile.as_ref();
+        let profile = self.touch.cam.profile.as_ref();
         let angle_deg = theta.to_degrees();
         let body_a = profile.eval(touch.u);
         let ea = frame.derivs_to_world(&body_a);
@@ -161,7 +156,7 @@ impl Mechanism {
         let k = match (t.corner, self.touch.carried()) {
             // the cam's corner is a point of the cam resting on the follower's curve
             (Some(Corner::Cam), Some(carried)) => {
-                let corner = PointCurve::new(self.cam.profile.position(t.u))?;
+                let corner = PointCurve::new(self.touch.cam.profile.position(t.u))?;
                 let a = Surface::new(&corner, cam);
                 let b = Surface::new(carried.curve.as_ref(), body_b);
                 ContactKinematics::new(&a, &b, &pairing, tol)
@@ -206,12 +201,11 @@ impl Mechanism {
 
     pub(crate) fn kinematics(
         &self,
-        theta: f64,
-        cam: &BodyState,
-        frame: &Frame,
+        at: &Instant,
         touch: Touch,
         found: Found,
     ) -> Result<FollowerState, CamError> {
+        let (theta, cam) = (at.theta, &at.cam);
         let Core {
             body_a,
             ea,
@@ -221,7 +215,7 @@ impl Mechanism {
             qdd,
             u_b,
             k,
-        } = self.core(theta, cam, frame, touch)?;
+        } = self.core(at, touch)?;
         let g = &self.touch.geometry;
         let c = ea.p;
         let body_b = g.joint.body(touch.q, qd, qdd);
@@ -233,14 +227,14 @@ impl Mechanism {
             _ if at_breakpoint || !self.touch.options.jerk || touch.corner.is_some() => None,
             Some(c) if self.carried_at_breakpoint(c, touch.v) => None,
             Some(c) => Some(super::derivatives::carried_jet_derivatives(
-                self, c, theta, frame, touch,
+                self, c, at, touch,
             )?),
             None => Some(super::derivatives::jet_derivatives(
                 self, theta, cam, touch,
             )?),
         };
         let jerk = dq.map(|dq| {
-            let (w, al) = (self.cam.speed, self.cam.angular_acceleration);
+            let (w, al) = (self.touch.cam.speed, self.touch.cam.angular_acceleration);
             w * w * w * dq[2] + 3.0 * w * al * dq[1]
         });
         Ok(FollowerState {

@@ -2,6 +2,7 @@
 //! queries.
 
 use super::follower::{Geometry, Kind as _};
+use super::instant::Instant;
 use super::summary::ProfileSummary;
 use super::{
     bracket_samples, AnalysisOptions, Cam, CamError, Contact, DesignChecks, Follower,
@@ -55,9 +56,7 @@ impl Mechanism {
         let corners = std::sync::Arc::new(super::corners::Corners::of(profile, &samples));
         let mut m = Self {
             touch: super::first_touch::FirstTouch {
-                profile: cam.profile.clone(),
-                pivot: cam.pivot,
-                sense: cam.direction,
+                cam,
                 geometry,
                 options,
                 prepared: Default::default(),
@@ -73,7 +72,6 @@ impl Mechanism {
                 breakpoints,
                 corners,
             },
-            cam,
             conjugate: None,
         };
         m.set_options(options);
@@ -92,7 +90,7 @@ impl Mechanism {
 
     /// The cam.
     pub fn cam(&self) -> &Cam {
-        &self.cam
+        &self.touch.cam
     }
 
     /// The follower.
@@ -196,7 +194,7 @@ impl Mechanism {
         let Some(limit) = self.touch.geometry.model.concave_limit() else {
             return Vec::new();
         };
-        let profile = self.cam.profile.as_ref();
+        let profile = self.touch.cam.profile.as_ref();
         let u = bracket_samples(&self.touch.breakpoints, self.touch.period, 64, 2048);
         let mut bad: Vec<bool> = u
             .iter()
@@ -250,7 +248,7 @@ impl Mechanism {
 
     /// The shared profile.
     pub fn profile_arc(&self) -> Arc<dyn Curve> {
-        self.cam.profile.clone()
+        self.touch.cam.profile.clone()
     }
 
     /// +1 when the profile runs counter-clockwise, −1 when clockwise.
@@ -280,10 +278,9 @@ impl Mechanism {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn analyze(&self, theta: f64) -> Result<FollowerState, CamError> {
-        let cam = self.cam.state(theta);
-        let frame = cam.frame();
-        let touch = self.touch.global_touch(theta, &frame)?;
-        self.kinematics(theta, &cam, &frame, touch, Found::Global)
+        let at = &Instant::new(self.cam(), theta);
+        let touch = self.touch.global_touch(at)?;
+        self.kinematics(at, touch, Found::Global)
     }
 
     /// The follower's position, velocity and acceleration only at cam angle `theta` (rad): the
@@ -291,10 +288,9 @@ impl Mechanism {
     /// (the tangency conditions differentiated in time, agreeing with the paper's method to
     /// 1e-13 of each quantity's scale); a follower carrying a curve uses the paper's method.
     pub fn motion(&self, theta: f64) -> Result<Motion, CamError> {
-        let cam = self.cam.state(theta);
-        let frame = cam.frame();
-        let touch = self.touch.global_touch(theta, &frame)?;
-        self.motion_at(theta, &cam, &frame, touch, Found::Global)
+        let at = &Instant::new(self.cam(), theta);
+        let touch = self.touch.global_touch(at)?;
+        self.motion_at(at, touch, Found::Global)
     }
 
     /// As [`Mechanism::analyze`] with the angle in degrees.
@@ -304,8 +300,7 @@ impl Mechanism {
 
     /// The follower's position only, at cam angle `theta` (rad), by first touch.
     pub fn position(&self, theta: f64) -> Result<f64, CamError> {
-        let frame = self.cam.state(theta).frame();
-        Ok(self.touch.global_touch(theta, &frame)?.q)
+        Ok(self.touch.global_touch(&Instant::new(self.cam(), theta))?.q)
     }
 
     /// A sweep that warm-starts each angle from the previous contact.

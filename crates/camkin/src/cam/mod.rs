@@ -25,6 +25,7 @@ mod error;
 mod first_touch;
 mod follower;
 mod golden;
+mod instant;
 mod jet;
 mod jumps;
 mod kinematics;
@@ -55,6 +56,7 @@ pub use support::IndependentCheck;
 pub use sweep::{Found, Sweep};
 pub use travel::Travel;
 
+pub(crate) use instant::Instant;
 pub(crate) use search::{bracket_params, bracket_samples, Touch};
 
 use crate::body::BodyState;
@@ -247,7 +249,6 @@ impl Cam {
 /// curve.
 #[derive(Debug, Clone)]
 pub struct Mechanism {
-    cam: Cam,
     /// the first-touch engine: the profile's index, the follower's model, the options
     pub(crate) touch: first_touch::FirstTouch,
     /// a form-closed follower's second curve

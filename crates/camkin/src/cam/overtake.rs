@@ -16,8 +16,9 @@ use super::follower::Kind as _;
 use super::starts::Query;
 use super::Touch;
 use crate::body::CurveInFrame;
+use crate::cam::instant::Instant;
 use crate::circle_tree::Visit;
-use crate::geometry::{Frame, Point2};
+use crate::geometry::Point2;
 
 /// What the guard found.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -36,17 +37,12 @@ impl FirstTouch {
     /// the follower with an oriented score above `threshold` (the warm contact's, plus the touch
     /// tolerance), on the continuous profile. For the score-based followers (not a knife or a
     /// roller, whose path crossings the global search finds).
-    pub(crate) fn overtaken(
-        &self,
-        theta: f64,
-        frame: &Frame,
-        threshold: f64,
-        own: f64,
-    ) -> Overtaken {
+    pub(crate) fn overtaken(&self, at: &Instant, threshold: f64, own: f64) -> Overtaken {
+        let frame = &at.frame;
         let s = &self.index.dense;
         let mut v = Overtake {
             q: Query::new(self, frame, s),
-            theta,
+            at,
             own,
             floor: threshold,
             best: None,
@@ -64,7 +60,7 @@ impl FirstTouch {
 /// [`Mechanism::overtaken`]'s query.
 struct Overtake<'a> {
     q: Query<'a>,
-    theta: f64,
+    at: &'a Instant,
     own: f64,
     /// the threshold, then the best refined touch's score
     floor: f64,
@@ -77,7 +73,9 @@ impl Overtake<'_> {
     fn point(&self, k: usize) -> Point2 {
         let s = &self.q.s.params;
         let u = s[k % s.len()];
-        self.q.frame.curve_position(self.q.m.profile.as_ref(), u)
+        self.q
+            .frame
+            .curve_position(self.q.m.cam.profile.as_ref(), u)
     }
 
     /// A sample above the floor: the global search decides.
@@ -112,7 +110,7 @@ impl Overtake<'_> {
         let (u, behind, ahead, holds) = self.around(k);
         let frame = self.q.frame;
         let attempt = |u0: f64, q0: f64| {
-            m.newton(self.theta, frame, u0, q0)
+            m.newton(self.at, u0, q0)
                 .ok()
                 .filter(|t| holds(t.u) && m.is_first_touch(frame, t))
         };

@@ -9,6 +9,7 @@ use super::pose::Pose;
 use super::starts::Candidates;
 use super::{CamError, StopReason};
 use crate::body::{curve_in, CurveInFrame, WorldDerivs};
+use crate::cam::instant::Instant;
 use crate::curve::Curve;
 use crate::geometry::{Frame, Point2};
 
@@ -97,14 +98,8 @@ impl FirstTouch {
     }
 
     /// Newton on the tangency residual from `(u, q)`.
-    pub(crate) fn newton(
-        &self,
-        theta: f64,
-        frame: &Frame,
-        u: f64,
-        q: f64,
-    ) -> Result<Touch, CamError> {
-        self.newton_at(theta, frame, u, q).map(|(t, _)| t)
+    pub(crate) fn newton(&self, at: &Instant, u: f64, q: f64) -> Result<Touch, CamError> {
+        self.newton_at(at, u, q).map(|(t, _)| t)
     }
 
     /// Newton on the tangency residual from `(u, q)`; also returns the cam point of the last
@@ -112,14 +107,13 @@ impl FirstTouch {
     #[inline]
     pub(crate) fn newton_at(
         &self,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         u: f64,
         q: f64,
     ) -> Result<(Touch, WorldDerivs), CamError> {
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         dispatch!(&self.geometry.model, k => self
-            .newton_with(k, profile, theta, frame, u, k.pose(q))
+            .newton_with(k, profile, at, u, k.pose(q))
             .map(|c| (c.touch, c.last)))
     }
 
@@ -132,11 +126,11 @@ impl FirstTouch {
         &self,
         k: &K,
         profile: &C,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         mut u: f64,
         mut pose: Pose,
     ) -> Result<Converged, CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         // in units of the tolerance (squares of lengths could underflow at extreme sizes):
         // a step δ is accepted when δ ≤ tol, or when C δ² ≤ tol (the next step would be below
         // the tolerance): (δ/tol)² ≤ 1 or (C tol)² (δ/tol)⁴ ≤ 1
@@ -194,10 +188,10 @@ impl FirstTouch {
         &self,
         (path, r): (CentrePath, f64),
         profile: &C,
-        theta: f64,
-        frame: &Frame,
+        at: &Instant,
         mut u: f64,
     ) -> Result<f64, CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         let Prepared {
             inv_tol,
             q_over_tol,
@@ -210,7 +204,7 @@ impl FirstTouch {
         let per_tol = if along > inv_tol { along } else { inv_tol };
         // in the cam's frame: the path turned once, not the curve's three derivatives each
         // iteration (the pitch point's offset and stretch do not depend on the frame)
-        let body = path.in_body(self.pivot, frame);
+        let body = path.in_body(self.cam.pivot, frame);
         for _ in 0..self.options.max_iterations {
             let e = profile.eval(u);
             let (c, stretch) = pitch_point((e.p, e.d1, e.d2), r, self.orientation);
@@ -245,7 +239,7 @@ impl FirstTouch {
     /// True when `(u, q)` is the follower's first touch through that cam point (not another
     /// tangency such as the cam's back side or a roller touching from inside).
     pub(crate) fn is_first_touch(&self, frame: &Frame, t: &Touch) -> bool {
-        self.is_first_touch_at(&frame.curve_at(self.profile.as_ref(), t.u), t.q)
+        self.is_first_touch_at(&frame.curve_at(self.cam.profile.as_ref(), t.u), t.q)
     }
 
     /// [`Mechanism::is_first_touch`] with the cam point already evaluated.
@@ -281,9 +275,10 @@ impl FirstTouch {
 
     /// Fails with [`StopReason::OnCusp`] when a cusp of a folded profile touches the follower
     /// before the contact at position `q`: the follower then rests on that corner.
-    pub(crate) fn check_cusps(&self, theta: f64, frame: &Frame, q: f64) -> Result<(), CamError> {
+    pub(crate) fn check_cusps(&self, at: &Instant, q: f64) -> Result<(), CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         for &u in &self.cusps {
-            let p = frame.curve_position(self.profile.as_ref(), u);
+            let p = frame.curve_position(self.cam.profile.as_ref(), u);
             if let Some((score, _)) = self.geometry.model.score(p) {
                 if score > self.oriented(q) + self.touch_slack() {
                     return Err(CamError::NoConvergence {
@@ -312,7 +307,7 @@ impl FirstTouch {
 
     /// The peak of the first-touch function on `[a, b]` by golden-section search: `(u, q)`.
     pub(super) fn score_peak(&self, frame: &Frame, a: f64, b: f64) -> Option<(f64, f64)> {
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         let score = |u: f64| {
             self.geometry
                 .model
@@ -332,9 +327,10 @@ impl FirstTouch {
     /// Newton. Otherwise, or when that start fails, the best local maxima of the densely sampled
     /// function (the crossings, for a knife edge) are refined and the best first touch among them
     /// is kept.
-    pub(crate) fn global_touch(&self, theta: f64, frame: &Frame) -> Result<Touch, CamError> {
+    pub(crate) fn global_touch(&self, at: &Instant) -> Result<Touch, CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         if let Some(c) = self.carried() {
-            return self.carried_global(c, theta, frame);
+            return self.carried_global(c, at);
         }
         let knife = self.geometry.is_knife();
         let on_path = self.geometry.model.centre_path().is_some();
@@ -349,7 +345,7 @@ impl FirstTouch {
                 self.best_sample(frame, &self.index.coarse)
             };
             if let Some((_, u0, q0)) = start {
-                if let Ok(t) = self.newton(theta, frame, u0, q0) {
+                if let Ok(t) = self.newton(at, u0, q0) {
                     if self.is_first_touch(frame, &t) {
                         return Ok(t);
                     }
@@ -393,9 +389,9 @@ impl FirstTouch {
             // moved to the sampled maximum's peak by golden-section search on the score
             let refined = || {
                 let (u1, q1) = self.score_peak(frame, u0 - spacing, u0 + spacing)?;
-                self.newton(theta, frame, u1, q1).ok()
+                self.newton(at, u1, q1).ok()
             };
-            let attempt = match self.newton(theta, frame, u0, q0) {
+            let attempt = match self.newton(at, u0, q0) {
                 Err(
                     e @ CamError::NoConvergence {
                         reason: StopReason::IterationLimit | StopReason::SingularJacobian,
@@ -425,7 +421,7 @@ impl FirstTouch {
                 reason: StopReason::NoCandidate,
             })
         })?;
-        self.check_cusps(theta, frame, best.q)?;
+        self.check_cusps(at, best.q)?;
         // the refined touch can only be later than (or equal to) a sampled one
         if self.oriented(best.q) < best_sample - self.touch_slack() {
             return Err(CamError::NoConvergence {
@@ -485,12 +481,13 @@ mod tests {
     #[test]
     fn back_side_stationary_point_is_not_a_first_touch() {
         let m = paper();
-        let frame = m.cam.state(0.0).frame();
+        let at = &crate::cam::Instant::new(m.cam(), 0.0);
+        let frame = at.frame;
         // Newton from the far side converges to the leftmost point, a stationary point of x·d
-        let back = m.touch.newton(0.0, &frame, 4.5, -2.8).unwrap();
+        let back = m.touch.newton(at, 4.5, -2.8).unwrap();
         assert!(back.q < 0.0);
         assert!(!m.touch.is_first_touch(&frame, &back));
-        let front = m.touch.newton(0.0, &frame, 0.1, 4.9).unwrap();
+        let front = m.touch.newton(at, 0.1, 4.9).unwrap();
         assert!(m.touch.is_first_touch(&frame, &front));
         assert!((front.q - 5.0).abs() < 1e-14);
     }

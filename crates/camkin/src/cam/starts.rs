@@ -107,7 +107,7 @@ impl Sampled {
     }
 
     pub(crate) fn new(m: &FirstTouch, params: Vec<f64>) -> Self {
-        let profile = m.profile.as_ref();
+        let profile = m.cam.profile.as_ref();
         let derivs: Vec<_> = params.iter().map(|&u| profile.eval(u)).collect();
         let points: Vec<Point2> = derivs.iter().map(|d| d.p).collect();
         let path = m.geometry.model.centre_path().map(|(_, r)| {
@@ -235,7 +235,7 @@ impl FirstTouch {
     /// frame): the profile itself for `r = 0`.
     #[inline]
     fn offset_point(&self, u: f64, r: f64) -> Point2 {
-        let profile = self.profile.as_ref();
+        let profile = self.cam.profile.as_ref();
         if r == 0.0 {
             return profile.position(u);
         }
@@ -328,7 +328,7 @@ impl<'a> Query<'a> {
     /// The first-touch score of sample `k`.
     #[inline]
     pub(super) fn score(&self, k: usize) -> Option<(f64, f64)> {
-        let profile = self.m.profile.as_ref();
+        let profile = self.m.cam.profile.as_ref();
         let u = self.s.params[k];
         self.m
             .geometry
@@ -453,7 +453,7 @@ impl PathStarts<'_> {
     #[inline]
     fn lateral_of(&self, x: Point2) -> f64 {
         match self.path {
-            CentrePath::Line { p, e, .. } => (x - self.q.m.pivot).dot(&p) - e,
+            CentrePath::Line { p, e, .. } => (x - self.q.m.cam.pivot).dot(&p) - e,
             CentrePath::Circle { o, l, .. } => (x - o).norm() - l,
         }
     }
@@ -461,7 +461,7 @@ impl PathStarts<'_> {
 
 impl Visit for PathStarts<'_> {
     fn bound(&self, i: usize, c: Point2, r: f64) -> Option<f64> {
-        let (mid, half) = self.path.interval(self.q.m.pivot, c, r)?;
+        let (mid, half) = self.path.interval(self.q.m.cam.pivot, c, r)?;
         let interval = (mid - self.path.lead(), half);
         if self
             .q
@@ -485,7 +485,7 @@ impl Visit for PathStarts<'_> {
     fn leaf(&mut self, lo: usize, hi: usize) {
         let m = self.q.m;
         let (s, n, r, period) = (&self.q.s.params, self.q.s.params.len(), self.r, m.period);
-        let (pivot, joint) = (m.pivot, m.geometry.joint);
+        let (pivot, joint) = (m.cam.pivot, m.geometry.joint);
         let coord = |x: Point2| joint.branch(self.path.coordinate(pivot, x));
         let at = |u: f64| self.at(u);
         let lateral = |u: f64| self.lateral_of(self.at(u));

@@ -99,7 +99,8 @@ fn pruned_searches_find_what_the_scans_find() {
             };
             for k in 0..60 {
                 let theta = 0.0137 + f64::from(k) * 0.1049;
-                let frame = m.cam.state(theta).frame();
+                let instant = crate::cam::Instant::new(m.cam(), theta);
+                let frame = instant.frame;
                 let at = format!("cam {ci}, follower {fi}, angle {k}");
                 for s in [&m.touch.index.dense, &m.touch.index.coarse] {
                     let q = || Query::new(&m.touch, &frame, s);
@@ -156,7 +157,7 @@ fn pruned_searches_find_what_the_scans_find() {
                         // a sample above the threshold: the global search decides
                         for t in [b.0 - 1e-9, b.0 - 0.01] {
                             assert_eq!(
-                                m.touch.overtaken(0.0, &frame, t, b.1),
+                                m.touch.overtaken(&instant, t, b.1),
                                 super::super::overtake::Overtaken::Sampled,
                                 "above {t}, {at}"
                             );

@@ -82,10 +82,10 @@ pub(crate) fn independent_check(
     mech: &Mechanism,
     thetas: &[f64],
 ) -> Result<IndependentCheck, CamError> {
-    let (w, al) = (mech.cam.speed, mech.cam.angular_acceleration);
+    let (w, al) = (mech.touch.cam.speed, mech.touch.cam.angular_acceleration);
     let reach = mech.touch.size
         + match mech.follower_joint() {
-            Joint::Rotating { pivot, .. } => (pivot - mech.cam.pivot).norm(),
+            Joint::Rotating { pivot, .. } => (pivot - mech.touch.cam.pivot).norm(),
             Joint::Translating { .. } => 0.0,
         };
     let q_length = |dq: f64| match mech.follower_joint() {
@@ -195,9 +195,9 @@ fn differences(mech: &Mechanism, theta: f64, centre: Support) -> Option<(f64, f6
 
 /// The support function at `theta`.
 fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
-    let profile = mech.cam.profile.as_ref();
-    let (sn, cs) = (mech.cam.direction.sign() * theta).sin_cos();
-    let pivot = mech.cam.pivot;
+    let profile = mech.touch.cam.profile.as_ref();
+    let (sn, cs) = (mech.touch.cam.direction.sign() * theta).sin_cos();
+    let pivot = mech.touch.cam.pivot;
     let world = |u: f64| {
         let x = profile.position(u);
         pivot + Vec2::new(cs * x.x - sn * x.y, sn * x.x + cs * x.y)

@@ -11,7 +11,8 @@ use super::follower::{dispatch, pitch_point, Kind};
 use super::overtake::Overtaken;
 use super::pose::Pose;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
-use crate::body::{curve_in, BodyState};
+use crate::body::curve_in;
+use crate::cam::instant::Instant;
 use crate::curve::{ClosedSpline, Curve};
 use crate::geometry::{Frame, Rotation};
 
@@ -97,7 +98,7 @@ impl<'a> Sweep<'a> {
     pub(crate) fn new(mech: &'a Mechanism) -> Self {
         Self {
             mech,
-            spline: mech.cam.profile.as_spline(),
+            spline: mech.touch.cam.profile.as_spline(),
             prev: None,
             last: None,
             turn: None,
@@ -106,9 +107,9 @@ impl<'a> Sweep<'a> {
 
     /// Analyses the next cam angle `theta` (rad).
     pub fn step(&mut self, theta: f64) -> Result<FollowerState, CamError> {
-        let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
+        let r = self.locate(theta).and_then(|(at, t, f)| {
             self.note(theta, t, f);
-            self.mech.kinematics(theta, &cam, &frame, t, f)
+            self.mech.kinematics(&at, t, f)
         });
         self.remember(theta, r.as_ref().ok().map(|s| kept(&s.motion())), None);
         r
@@ -120,7 +121,7 @@ impl<'a> Sweep<'a> {
         // the last step by reference: copying it out costs a dozen instructions a step
         let fast = match self.prev {
             Some(ref p) if self.mech.touch.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
-                let angle = self.mech.cam.direction.sign() * theta;
+                let angle = self.mech.touch.cam.direction.sign() * theta;
                 let turn = match self.turn {
                     Some(t) => t.angle_to(angle),
                     None => Pose::angle(angle),
@@ -135,9 +136,9 @@ impl<'a> Sweep<'a> {
             self.remember(theta, Some(kept(&s)), pose);
             return Ok(s);
         }
-        let r = self.locate(theta).and_then(|(cam, frame, t, f)| {
+        let r = self.locate(theta).and_then(|(at, t, f)| {
             self.note(theta, t, f);
-            self.mech.motion_at(theta, &cam, &frame, t, f)
+            self.mech.motion_at(&at, t, f)
         });
         self.remember(theta, r.as_ref().ok().map(kept), None);
         r
@@ -161,7 +162,9 @@ impl<'a> Sweep<'a> {
         }
         match self.spline {
             Some(s) => self.warm_motion_on(k, s, theta, p, rotation),
-            None => self.warm_motion_on(k, self.mech.cam.profile.as_ref(), theta, p, rotation),
+            None => {
+                self.warm_motion_on(k, self.mech.touch.cam.profile.as_ref(), theta, p, rotation)
+            }
         }
     }
 
@@ -177,24 +180,27 @@ impl<'a> Sweep<'a> {
         rotation: Rotation,
     ) -> Option<(Motion, Option<Pose>)> {
         let m = self.mech;
-        let cam = m.cam.state(theta);
-        let frame = Frame::from_parts(cam.pose.origin.coords.into(), rotation);
+        let cam = m.touch.cam.state(theta);
+        // the frame from the rotation carried from the last step (no sin_cos)
+        let at = &Instant {
+            theta,
+            frame: Frame::from_parts(cam.pose.origin.coords.into(), rotation),
+            cam,
+        };
+        let frame = &at.frame;
         let (u0, q0) = p.start(theta - p.theta);
-        let (touch, pose, at) = match k.centre_path() {
+        let (touch, pose, e) = match k.centre_path() {
             // a roller: Newton in the cam parameter alone, the position from its centre
             Some((path, r)) if r > 0.0 => {
-                let u = m
-                    .touch
-                    .pitch_newton((path, r), profile, theta, &frame, u0)
-                    .ok()?;
-                let at = curve_in(&frame, profile, u);
+                let u = m.touch.pitch_newton((path, r), profile, at, u0).ok()?;
+                let e = curve_in(frame, profile, u);
                 let near = match p.pose {
                     Some(last) if K::ANGULAR => last,
                     _ => k.pose(q0),
                 };
-                let (centre, _) = pitch_point((at.p, at.d1, at.d2), r, m.touch.orientation);
-                let pose = path.pose(m.cam.pivot, centre, near);
-                if !m.touch.convex_warm_touch_with(k, &at, &pose) {
+                let (centre, _) = pitch_point((e.p, e.d1, e.d2), r, m.touch.orientation);
+                let pose = path.pose(m.touch.cam.pivot, centre, near);
+                if !m.touch.convex_warm_touch_with(k, &e, &pose) {
                     return None;
                 }
                 (
@@ -205,7 +211,7 @@ impl<'a> Sweep<'a> {
                         corner: None,
                     },
                     pose,
-                    at,
+                    e,
                 )
             }
             _ => {
@@ -213,18 +219,15 @@ impl<'a> Sweep<'a> {
                     Some(from) if K::ANGULAR => k.pose_from(from, q0),
                     _ => k.pose(q0),
                 };
-                let c = m
-                    .touch
-                    .newton_with(k, profile, theta, &frame, u0, start)
-                    .ok()?;
+                let c = m.touch.newton_with(k, profile, at, u0, start).ok()?;
                 if !m.touch.convex_warm_touch_with(k, &c.last, &c.pose) {
                     return None;
                 }
-                (c.touch, c.pose, curve_in(&frame, profile, c.touch.u))
+                (c.touch, c.pose, curve_in(frame, profile, c.touch.u))
             }
         };
         let found = Found::WarmStart;
-        let motion = m.closed_form_motion(k, theta, &cam, &at, (touch, pose), found)?;
+        let motion = m.closed_form_motion(k, theta, &at.cam, &e, (touch, pose), found)?;
         Some((motion, K::ANGULAR.then_some(pose)))
     }
 
@@ -246,15 +249,14 @@ impl<'a> Sweep<'a> {
 
     /// The contact at `theta`: warm-started from the previous angle when there is one.
     #[inline(always)]
-    fn locate(&self, theta: f64) -> Result<(BodyState, Frame, Touch, Found), CamError> {
+    fn locate(&self, theta: f64) -> Result<(Instant, Touch, Found), CamError> {
         let m = self.mech;
-        let cam = m.cam.state(theta);
-        let frame = cam.frame();
+        let at = Instant::new(m.cam(), theta);
         let (t, f) = match self.prev {
-            Some(p) if (theta - p.theta).abs() <= MAX_WARM_STEP => self.warm(theta, &frame, p)?,
-            _ => (m.touch.global_touch(theta, &frame)?, Found::Global),
+            Some(p) if (theta - p.theta).abs() <= MAX_WARM_STEP => self.warm(&at, p)?,
+            _ => (m.touch.global_touch(&at)?, Found::Global),
         };
-        Ok((cam, frame, t, f))
+        Ok((at, t, f))
     }
 
     /// Keeps what the next angle's prediction needs: `(u, u̇, q, q̇, q̈, found)`, and the
@@ -268,7 +270,7 @@ impl<'a> Sweep<'a> {
     ) {
         let m = self.mech;
         self.prev = r.map(|(u, u_rate, q, v, a, found)| {
-            let inv_rate = 1.0 / m.cam.speed;
+            let inv_rate = 1.0 / m.touch.cam.speed;
             let du = u_rate * inv_rate;
             // the second derivative of u from the last two rates, when they are close
             let d2u = match self.prev {
@@ -283,7 +285,9 @@ impl<'a> Sweep<'a> {
                 q,
                 du_dtheta: du,
                 dq_dtheta: v * inv_rate,
-                d2q_dtheta2: (a - m.cam.angular_acceleration * v * inv_rate) * inv_rate * inv_rate,
+                d2q_dtheta2: (a - m.touch.cam.angular_acceleration * v * inv_rate)
+                    * inv_rate
+                    * inv_rate,
                 d2u_dtheta2: d2u,
                 pose,
             }
@@ -291,16 +295,15 @@ impl<'a> Sweep<'a> {
     }
 
     #[inline(always)]
-    fn warm(&self, theta: f64, frame: &Frame, p: Prev) -> Result<(Touch, Found), CamError> {
+    fn warm(&self, at: &Instant, p: Prev) -> Result<(Touch, Found), CamError> {
+        let (theta, frame) = (at.theta, &at.frame);
         let m = self.mech;
         let dt = theta - p.theta;
         // second-order extrapolation: the start is off by O(Δθ³)
         let (u0, q0) = p.start(dt);
         if let (Some(c), Some((last, rate))) = (m.touch.carried(), self.last) {
             let v0 = last.v + dt * rate;
-            return m
-                .touch
-                .carried_warm(c, theta, frame, (u0, v0, q0), (p.theta, last));
+            return m.touch.carried_warm(c, at, (u0, v0, q0), (p.theta, last));
         }
         // on a non-convex profile a knife's crossing can vanish (it merges with its partner where
         // the line of travel grazes the profile) and the tip falls to another crossing: a
@@ -308,15 +311,13 @@ impl<'a> Sweep<'a> {
         // back to the previous contact (local rates diverge at the fold, so no step bound works)
         let knife_fold = !m.touch.convex && m.touch.geometry.is_knife();
         let continues = |t: &Touch| {
-            let back = m.cam.state(p.theta).frame();
-            m.touch
-                .newton_at(p.theta, &back, t.u, t.q)
-                .is_ok_and(|(b, _)| {
-                    let d = (b.u - p.u).rem_euclid(m.touch.period);
-                    d.min(m.touch.period - d) <= 1e-6 * m.touch.period
-                })
+            let back = &Instant::new(m.cam(), p.theta);
+            m.touch.newton_at(back, t.u, t.q).is_ok_and(|(b, _)| {
+                let d = (b.u - p.u).rem_euclid(m.touch.period);
+                d.min(m.touch.period - d) <= 1e-6 * m.touch.period
+            })
         };
-        match m.touch.newton_at(theta, frame, u0, q0) {
+        match m.touch.newton_at(at, u0, q0) {
             // on a convex profile the first touch is unique and Newton started next to it: the
             // orientation check is enough (it rejects the cam's back side); a roller's Newton
             // can leap (its residual bends on the scale of the roller's radius, which may be
@@ -339,18 +340,18 @@ impl<'a> Sweep<'a> {
                 let over = if m.touch.geometry.model.centre_path().is_some() {
                     Overtaken::Sampled
                 } else {
-                    m.touch.overtaken(theta, frame, threshold, t.u)
+                    m.touch.overtaken(at, threshold, t.u)
                 };
                 let g = match over {
                     Overtaken::No => {
-                        m.touch.check_cusps(theta, frame, t.q)?;
+                        m.touch.check_cusps(at, t.q)?;
                         return Ok((t, Found::WarmStart));
                     }
                     Overtaken::By(g) => {
-                        m.touch.check_cusps(theta, frame, g.q)?;
+                        m.touch.check_cusps(at, g.q)?;
                         g
                     }
-                    Overtaken::Sampled => m.touch.global_touch(theta, frame)?,
+                    Overtaken::Sampled => m.touch.global_touch(at)?,
                 };
                 if m.touch.oriented(g.q) > threshold {
                     Ok((
@@ -365,7 +366,7 @@ impl<'a> Sweep<'a> {
             }
             // the contact followed so far is gone: on a non-convex profile, a contact found
             // elsewhere is a jump
-            _ => m.touch.global_touch(theta, frame).map(|g| {
+            _ => m.touch.global_touch(at).map(|g| {
                 if !m.touch.convex && !continues(&g) {
                     (g, Found::Jump { from_cam_param: u0 })
                 } else {
