@@ -136,7 +136,7 @@ pub(crate) fn contacts_at(mech: &Mechanism, s: &FollowerState) -> Result<Vec<Con
 /// global search, kept when it is a first touch within the touch tolerance of `t`.
 fn named_touching(mech: &Mechanism, at: &Instant, t: &Touch, out: &mut Vec<Touch>) {
     let frame = &at.frame;
-    let mut starts = super::starts::Candidates::new(super::MAX_CANDIDATES);
+    let mut starts = super::first_touch::starts::Candidates::new(super::MAX_CANDIDATES);
     if mech.touch.geometry.model.centre_path().is_some() {
         mech.touch
             .path_starts(frame, &mech.touch.index.dense, &mut starts);

@@ -3,11 +3,10 @@
 //! cross-check of the method's velocity and acceleration that shares the search, the profile
 //! derivatives and the tangency residual with it (not an independent computation).
 
-use super::carried::solve3;
 use super::follower::carried::Carried;
 use super::follower::Kind as _;
 use super::jet::{scale, Jet, Num, V2};
-use super::search::solve2;
+use super::linear::{solve2, solve3};
 use super::{CamError, Joint, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
 use crate::cam::instant::Instant;

@@ -13,12 +13,9 @@
 //! the world frame with its origin on the rotation axis. Other conventions: see the
 //! [crate docs](crate#sign-conventions).
 
-mod carried;
-mod carried_accept;
 mod checks;
 mod conjugate;
 mod contacts;
-mod corner_touch;
 mod corners;
 mod derivatives;
 mod error;
@@ -29,12 +26,10 @@ mod instant;
 mod jet;
 mod jumps;
 mod kinematics;
+mod linear;
 mod mechanism;
 mod options;
-mod overtake;
 mod pose;
-mod search;
-mod starts;
 mod state;
 mod summary;
 mod support;
@@ -46,18 +41,18 @@ pub use checks::{ConjugatePlay, DesignChecks, RoundTrip};
 pub use conjugate::ConjugateSweep;
 pub use contacts::Contact;
 pub use error::{CamError, StopReason};
+pub use first_touch::starts::MAX_CANDIDATES;
 pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};
 pub use mechanism::SWEEP_CHUNK;
 pub use options::AnalysisOptions;
-pub use starts::MAX_CANDIDATES;
 pub use state::{Corner, FollowerState, Motion};
 pub use support::IndependentCheck;
 pub use sweep::{Found, Sweep};
 pub use travel::Travel;
 
+pub(crate) use first_touch::search::{bracket_params, bracket_samples, Touch};
 pub(crate) use instant::Instant;
-pub(crate) use search::{bracket_params, bracket_samples, Touch};
 
 use crate::body::BodyState;
 use crate::curve::{Curve, Domain};

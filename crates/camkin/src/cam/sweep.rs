@@ -7,8 +7,8 @@
 //! sampled first-touch function is compared with the warm contact, and if another part of the
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
+use super::first_touch::overtake::Overtaken;
 use super::follower::{dispatch, pitch_point, Kind};
-use super::overtake::Overtaken;
 use super::pose::Pose;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
 use crate::body::curve_in;

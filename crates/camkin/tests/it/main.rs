@@ -21,6 +21,7 @@ mod general_follower;
 mod hyperdual_selfcheck;
 mod interpolation_study;
 mod jerk;
+mod layout;
 mod motion_closed_form;
 mod oscillating_branch;
 mod paper_cam;

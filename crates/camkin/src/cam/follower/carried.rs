@@ -16,10 +16,10 @@
 //! x axis along the direction of travel and turned here into the world-aligned follower frame the
 //! joint moves.
 
+use super::envelope::Envelope;
 use super::{Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
-use crate::cam::synthesis::Envelope;
 use crate::cam::CamError;
 use crate::curve::{Curve, Derivs, Domain};
 use crate::field::{Field, FollowerField};

@@ -71,7 +71,7 @@ pub(crate) trait Kind {
     /// where `J` is singular. A kind whose `J` has a zero may solve it by substitution.
     #[inline(always)]
     fn newton_step(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
-        crate::cam::search::solve2(&self.jacobian(e, q), self.residual(e, q))
+        crate::cam::linear::solve2(&self.jacobian(e, q), self.residual(e, q))
     }
     /// A direction from the contact point `c` into the follower at position `q`: along it the
     /// cam's outward normal must point at a genuine touch (the cam's back side, or a roller

@@ -18,6 +18,7 @@
 pub(crate) mod carried;
 mod centre_path;
 mod curve;
+pub(crate) mod envelope;
 mod joint;
 mod kind;
 mod oscillating_flat;
@@ -35,13 +36,13 @@ pub(crate) use kind::{dispatch, Kind, Model};
 
 use super::jet::{Num, V2};
 use super::pose::Pose;
-use super::synthesis::Envelope;
 use super::CamError;
 use crate::body::WorldDerivs;
 use crate::curve::{Circle, Line, PointCurve};
 use crate::field::{Field, FollowerField};
 use crate::geometry::Frame;
 use crate::geometry::{rot90, wrap_angle_near, Point2, Rotation, UnitVec2, Vec2};
+use envelope::Envelope;
 use oscillating_flat::OscillatingFlat;
 use oscillating_knife::OscillatingKnife;
 use oscillating_roller::OscillatingRoller;

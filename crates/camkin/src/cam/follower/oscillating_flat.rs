@@ -2,12 +2,12 @@
 //! `(cos φ, sin φ)`, touching the cam on the arm's side of the pivot. Its curve is the line
 //! `y = e` of the arm frame, oriented so that the cam lies on its right.
 
+use super::envelope::{jet_recip, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{scale, Jet, Num, V2};
 use crate::cam::pose::Pose;
-use crate::cam::synthesis::{jet_recip, Envelope};
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
 use crate::field::{Field, FollowerField};

@@ -7,12 +7,12 @@
 //! the tip's circle with the profile in the closing sense, found as for the translating knife
 //! (its circle is the path [`super::CentrePath::Circle`] at distance 0).
 
+use super::envelope::{arm_path, rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
-use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::PointCurve;
 use crate::field::{Field, FollowerField, ProfileField};

@@ -1,12 +1,12 @@
 //! Oscillating roller: the roller centre at `O + L (cos φ, sin φ)`; its curve is the circle of
 //! radius `r` about `(L, 0)` in the arm frame.
 
+use super::envelope::{arm_path, rotated_derivs, Envelope};
 use super::rates::{finite, roller_denominator, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
-use crate::cam::synthesis::{arm_path, rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};

@@ -2,12 +2,12 @@
 //! Its curve is the line through the frame origin along `−rot90(d)` (material on the left: the
 //! follower lies on the `+d` side of its face).
 
+use super::envelope::{rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
-use crate::cam::synthesis::{rotated_derivs, Envelope};
 use crate::cam::CamError;
 use crate::curve::Line;
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};

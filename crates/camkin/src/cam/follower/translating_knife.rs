@@ -3,12 +3,12 @@
 //! point off the frame origin: the tip at `a·d + b·rot90(d)` in the frame, so that the frame's
 //! coordinate is `q = s − a` on the line of travel of offset `e + b`.
 
+use super::envelope::{rotated_derivs, translating_path, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
-use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::PointCurve;
 use crate::field::{Field, FollowerField};

@@ -1,12 +1,12 @@
 //! Translating roller: the roller centre at `e·rot90(d) + s·d` from the cam axis; its curve is the
 //! circle of radius `r` about the frame origin.
 
+use super::envelope::{rotated_derivs, translating_path, Envelope};
 use super::rates::{finite, roller_denominator, CamPoint, Refusals};
 use super::{Joint, Kind, Model};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
-use crate::cam::synthesis::{rotated_derivs, translating_path, Envelope};
 use crate::cam::CamError;
 use crate::curve::Circle;
 use crate::field::{Field, FollowerField};

@@ -5,9 +5,9 @@
 //! scan's, ties broken by the lower cam parameter, in O(log N) visits where few parts of the
 //! profile come near the follower's first touch instead of O(N).
 
-use super::first_touch::FirstTouch;
-use super::follower::{CentrePath, Kind as _};
+use super::FirstTouch;
 use crate::body::CurveInFrame;
+use crate::cam::follower::{CentrePath, Kind as _};
 use crate::circle_tree::{CircleTree, Visit};
 use crate::geometry::{rot90, Frame, Point2};
 
@@ -538,7 +538,7 @@ impl Visit for PathStarts<'_> {
                 let sign = la.signum();
                 // stopping once it crosses: that is all that is needed
                 let (um, lm) =
-                    super::golden::golden_min(|u| sign * lateral(u), ua, ub, 60, |v| v < 0.0);
+                    crate::cam::golden::golden_min(|u| sign * lateral(u), ua, ub, 60, |v| v < 0.0);
                 if lm < 0.0 {
                     for (lo, hi) in [(ua, um), (um, ub)] {
                         let u0 = root(lo, hi);

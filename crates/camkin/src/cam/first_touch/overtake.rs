@@ -11,12 +11,12 @@
 //! followed contact's score, every sampled local maximum (other than the followed one) is refined
 //! to the exact tangency and compared.
 
-use super::first_touch::FirstTouch;
-use super::follower::Kind as _;
 use super::starts::Query;
-use super::Touch;
+use super::FirstTouch;
 use crate::body::CurveInFrame;
+use crate::cam::follower::Kind as _;
 use crate::cam::instant::Instant;
+use crate::cam::Touch;
 use crate::circle_tree::Visit;
 use crate::geometry::Point2;
 

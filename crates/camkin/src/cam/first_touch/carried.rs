@@ -2,11 +2,12 @@
 //! starts from): the free gap, Newton on the exact tangency in `(u, v, q)`, and the acceptance
 //! test (no sampled cam point inside the follower beyond the polyline's chord error).
 
-use super::first_touch::FirstTouch;
-use super::follower::carried::{Carried, Crossing, Track};
-use super::{CamError, Found, StopReason, Touch};
+use super::FirstTouch;
 use crate::body::{CurveInFrame, WorldDerivs};
+use crate::cam::follower::carried::{Carried, Crossing, Track};
 use crate::cam::instant::Instant;
+use crate::cam::linear::solve3;
+use crate::cam::{CamError, Found, StopReason, Touch};
 use crate::geometry::{cross, rot90, wrap_angle_near, Frame, Point2, Vec2};
 use std::f64::consts::TAU;
 
@@ -51,10 +52,10 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
         // whether the circle meets the band of levels (a slab, or an annulus about the pivot)
         let (lo, hi) = self.c.level_range;
         let level = match (self.c.track, self.m.geometry.joint) {
-            (Track::Slide { p, .. }, super::Joint::Translating { origin, .. }) => {
+            (Track::Slide { p, .. }, crate::cam::Joint::Translating { origin, .. }) => {
                 (x - origin).dot(&p)
             }
-            (_, super::Joint::Rotating { pivot, .. }) => (x - pivot).norm(),
+            (_, crate::cam::Joint::Rotating { pivot, .. }) => (x - pivot).norm(),
             _ => return None,
         };
         let slack = r * (1.0 + 1e-12);
@@ -71,11 +72,11 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
             let x = self.frame * y;
             // the level first: most points of a large driver are beyond an arm's reach
             let (along, level, scale) = match (c.track, m.geometry.joint) {
-                (Track::Slide { d, p }, super::Joint::Translating { origin, .. }) => {
+                (Track::Slide { d, p }, crate::cam::Joint::Translating { origin, .. }) => {
                     let y = x - origin;
                     (y.dot(&d), y.dot(&p), 1.0)
                 }
-                (_, super::Joint::Rotating { pivot, .. }) => {
+                (_, crate::cam::Joint::Rotating { pivot, .. }) => {
                     let y = x - pivot;
                     let rho = y.norm();
                     if !(rho >= lo && rho <= hi) {
@@ -149,7 +150,7 @@ impl FirstTouch {
     /// The predicted angle of a gear-like follower at cam angle `theta`: the initial angle
     /// continued by the nominal ratio `z_cam/z_follower` (external mesh: opposite senses).
     pub(crate) fn carried_predicted(&self, c: &Carried, theta: f64) -> f64 {
-        let super::Joint::Rotating { initial_angle, .. } = self.geometry.joint else {
+        let crate::cam::Joint::Rotating { initial_angle, .. } = self.geometry.joint else {
             return 0.0;
         };
         let z1 = self.cam.profile.symmetry();
@@ -174,7 +175,7 @@ impl FirstTouch {
         // the resting position (sampled) and the starts nearest it: (distance, u, v, q)
         let mut starts: Vec<(f64, f64, f64, f64)> = Vec::new();
         match self.geometry.joint {
-            super::Joint::Translating { .. } => {
+            crate::cam::Joint::Translating { .. } => {
                 let top = covers
                     .iter()
                     .map(|k| k.hi)
@@ -188,7 +189,7 @@ impl FirstTouch {
                     starts.push(((top - k.hi) * k.scale, k.u, k.v_hi, k.hi));
                 }
             }
-            super::Joint::Rotating {
+            crate::cam::Joint::Rotating {
                 closing,
                 toward_cam,
                 initial_angle,
@@ -291,7 +292,7 @@ impl FirstTouch {
     /// ±180° of its initial angle, a gear-like follower's within half a tooth of the predicted
     /// angle (its contact moved to the tooth that is there).
     fn carried_report(&self, c: &Carried, theta: f64, mut t: Touch) -> Touch {
-        if let super::Joint::Rotating { initial_angle, .. } = self.geometry.joint {
+        if let crate::cam::Joint::Rotating { initial_angle, .. } = self.geometry.joint {
             if c.symmetry > 1 {
                 let pitch = TAU / f64::from(c.symmetry);
                 let k = ((t.q - self.carried_predicted(c, theta)) / pitch).round();
@@ -333,8 +334,8 @@ impl FirstTouch {
         let a = frame.curve_at(self.cam.profile.as_ref(), u);
         let b = joint.pose(q).frame().curve_at(c.curve.as_ref(), v);
         let dq_x = match joint {
-            super::Joint::Translating { direction, .. } => *direction,
-            super::Joint::Rotating { pivot, .. } => rot90(b.p - pivot),
+            crate::cam::Joint::Translating { direction, .. } => *direction,
+            crate::cam::Joint::Rotating { pivot, .. } => rot90(b.p - pivot),
         };
         (a, b, dq_x)
     }
@@ -343,7 +344,7 @@ impl FirstTouch {
     /// at `q`, `F = (x_A(u) − x_B(v, q), x_A' × x_B')`, and their Jacobian in `(u, v, q)`; with
     /// the two curves' points (world).
     #[inline]
-    pub(super) fn carried_system(
+    pub(crate) fn carried_system(
         &self,
         c: &Carried,
         frame: &Frame,
@@ -351,8 +352,8 @@ impl FirstTouch {
     ) -> (WorldDerivs, WorldDerivs, [f64; 3], [[f64; 3]; 3]) {
         let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
         let dq_x1 = match self.geometry.joint {
-            super::Joint::Translating { .. } => Vec2::zeros(),
-            super::Joint::Rotating { .. } => rot90(b.d1),
+            crate::cam::Joint::Translating { .. } => Vec2::zeros(),
+            crate::cam::Joint::Rotating { .. } => rot90(b.d1),
         };
         let f = [a.p.x - b.p.x, a.p.y - b.p.y, cross(a.d1, b.d1)];
         let j = [
@@ -499,8 +500,10 @@ impl FirstTouch {
             .curve_at(c.curve.as_ref(), t.v);
         let outward = -self.orientation * rot90(a.d1);
         let (dx, closing) = match self.geometry.joint {
-            super::Joint::Translating { direction, .. } => (*direction, -1.0),
-            super::Joint::Rotating { pivot, closing, .. } => (rot90(b.p - pivot), closing.sign()),
+            crate::cam::Joint::Translating { direction, .. } => (*direction, -1.0),
+            crate::cam::Joint::Rotating { pivot, closing, .. } => {
+                (rot90(b.p - pivot), closing.sign())
+            }
         };
         Some(Sides {
             contact: a.p,
@@ -619,21 +622,4 @@ fn free_gap(covers: &[Cover], reference: f64, period: f64, periodic: bool) -> Op
     // back to angles, the gap placed next to the reference
     let shift = if best.0 > period / 2.0 { -period } else { 0.0 };
     Some((reference + best.0 + shift, reference + best.1 + shift))
-}
-
-/// `J⁻¹ (−f)` for a 3×3 `J` (nalgebra's LU with partial pivoting), each equation first scaled by
-/// its largest coefficient (they mix lengths and lengths squared); `None` when singular.
-pub(super) fn solve3(a: [[f64; 3]; 3], f: [f64; 3]) -> Option<[f64; 3]> {
-    let mut m = nalgebra::Matrix3::from_fn(|r, c| a[r][c]);
-    let mut b = nalgebra::Vector3::new(-f[0], -f[1], -f[2]);
-    for k in 0..3 {
-        let s = m.row(k).amax();
-        if !(s > 0.0 && s.is_finite()) {
-            return None;
-        }
-        m.row_mut(k).scale_mut(1.0 / s);
-        b[k] /= s;
-    }
-    let x = m.lu().solve(&b)?;
-    x.iter().all(|v| v.is_finite()).then(|| [x[0], x[1], x[2]])
 }

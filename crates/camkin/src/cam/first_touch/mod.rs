@@ -7,7 +7,14 @@
 //! (`carried.rs`, `carried_accept.rs`), corners (`corner_touch.rs`), overtaking (`overtake.rs`).
 
 use super::follower::{Geometry, Joint};
-use super::{corners, search, starts, AnalysisOptions, Cam};
+pub(crate) mod carried;
+mod carried_accept;
+pub(crate) mod corner_touch;
+pub(crate) mod overtake;
+pub(crate) mod search;
+pub(crate) mod starts;
+
+use super::{corners, AnalysisOptions, Cam};
 use crate::geometry::{wrap_angle_near, Point2};
 use std::sync::Arc;
 

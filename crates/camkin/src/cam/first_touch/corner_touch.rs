@@ -11,11 +11,11 @@
 //! parameter fixed at its joint.
 
 use super::carried::{Limits, Sides};
-use super::first_touch::FirstTouch;
-use super::follower::carried::Carried;
-use super::{CamError, Corner, StopReason, Touch};
+use super::FirstTouch;
 use crate::body::CurveInFrame;
+use crate::cam::follower::carried::Carried;
 use crate::cam::instant::Instant;
+use crate::cam::{CamError, Corner, StopReason, Touch};
 use crate::curve::Curve;
 use crate::geometry::{cross, rot90, Frame, Point2, Vec2};
 
@@ -155,8 +155,8 @@ impl FirstTouch {
         let convex = material * cross(t_in, t_out) > 0.0;
         let outside = out.dot(&-t_in) >= -LEAN && out.dot(&t_out) >= -LEAN;
         let (dx, closing) = match self.geometry.joint {
-            super::Joint::Translating { direction, .. } => (*direction, -1.0),
-            super::Joint::Rotating { pivot, closing, .. } => {
+            crate::cam::Joint::Translating { direction, .. } => (*direction, -1.0),
+            crate::cam::Joint::Rotating { pivot, closing, .. } => {
                 (rot90(contact - pivot), closing.sign())
             }
         };
@@ -282,7 +282,7 @@ impl FirstTouch {
 
     /// Every corner of either curve (`t`'s own aside) within reach of the other body whose depth
     /// inside it, with the follower at `t`'s position, may exceed `threshold`
-    /// ([`super::corners::Corners::deep_foot`]), handed to `visit` with its exact depth.
+    /// ([`crate::cam::corners::Corners::deep_foot`]), handed to `visit` with its exact depth.
     fn corners_deeper(
         &self,
         c: &Carried,
@@ -323,9 +323,10 @@ impl FirstTouch {
         // the cam's corners inside the follower (an arm's curve reaches no further from its
         // pivot than its sampled levels)
         let reach = match (c.track, self.geometry.joint) {
-            (super::follower::carried::Track::Pivot, super::Joint::Rotating { pivot, .. }) => {
-                Some((pivot, c.level_range.1))
-            }
+            (
+                crate::cam::follower::carried::Track::Pivot,
+                crate::cam::Joint::Rotating { pivot, .. },
+            ) => Some((pivot, c.level_range.1)),
             _ => None,
         };
         for &(b, y) in &self.corners.at {

@@ -2,14 +2,14 @@
 //! first touch, and the global search (bracketing samples of the first-touch function, the best
 //! local maxima refined by Newton).
 
-use super::first_touch::FirstTouch;
-use super::follower::rates::Refusals;
-use super::follower::{dispatch, pitch_point, CentrePath, Kind};
-use super::pose::Pose;
 use super::starts::Candidates;
-use super::{CamError, StopReason};
+use super::FirstTouch;
 use crate::body::{curve_in, CurveInFrame, WorldDerivs};
+use crate::cam::follower::rates::Refusals;
+use crate::cam::follower::{dispatch, pitch_point, CentrePath, Kind};
 use crate::cam::instant::Instant;
+use crate::cam::pose::Pose;
+use crate::cam::{CamError, StopReason};
 use crate::curve::Curve;
 use crate::geometry::{Frame, Point2};
 
@@ -22,7 +22,7 @@ pub(crate) struct Touch {
     /// whose contact curve gives it in closed form)
     pub(crate) v: f64,
     /// the contact is at a corner of this curve (its parameter there is exact), not a tangency
-    pub(crate) corner: Option<super::Corner>,
+    pub(crate) corner: Option<crate::cam::Corner>,
 }
 
 /// What Newton converged to: the touch, the position as a [`Pose`], and the cam point of
@@ -60,7 +60,7 @@ impl Prepared {
         step2 <= 1.0 || self.c2 * step2 * step2 <= 1.0
     }
 
-    pub(crate) fn new(options: &super::AnalysisOptions, q_scale: f64, period: f64) -> Self {
+    pub(crate) fn new(options: &crate::cam::AnalysisOptions, q_scale: f64, period: f64) -> Self {
         let tol = options.position_tolerance;
         let ct = options.newton_contraction * tol;
         Self {
@@ -314,7 +314,7 @@ impl FirstTouch {
                 .score(frame.curve_position(profile, u))
                 .map_or(f64::NEG_INFINITY, |s| s.0)
         };
-        let (u, _) = super::golden::golden_min(|u| -score(u), a, b, 60, |_| false);
+        let (u, _) = crate::cam::golden::golden_min(|u| -score(u), a, b, 60, |_| false);
         let (_, q) = self
             .geometry
             .model
@@ -433,30 +433,6 @@ impl FirstTouch {
     }
 }
 
-/// `J⁻¹ (−f)` for a 2×2 `J`, each equation first scaled by the sum of its coefficients'
-/// magnitudes: the
-/// coefficients mix units (a cam parameter and a length: a roller's are lengths squared and
-/// lengths), so at extreme sizes the unscaled products underflow or overflow even where the
-/// determinant does not (a cam 1e-80 in size lost the position's step entirely). Non-finite
-/// when `J` is singular.
-#[inline(always)]
-pub(crate) fn solve2(j: &[[f64; 2]; 2], f: [f64; 2]) -> [f64; 2] {
-    // each row times 1 / (sum of its coefficients' magnitudes), without a branch: a zero row
-    // gives infinities, a singular `J` a zero or non-finite determinant, and either way a
-    // non-finite solution
-    let row = |r: [f64; 2], b: f64| {
-        let inv = 1.0 / (r[0].abs() + r[1].abs());
-        [r[0] * inv, r[1] * inv, b * inv]
-    };
-    let [a00, a01, b0] = row(j[0], f[0]);
-    let [a10, a11, b1] = row(j[1], f[1]);
-    let inv_det = 1.0 / (a00 * a11 - a01 * a10);
-    [
-        (-b0 * a11 + b1 * a01) * inv_det,
-        (-a00 * b1 + a10 * b0) * inv_det,
-    ]
-}
-
 /// The same parameters as [`bracket_samples`], without storing them.
 pub(crate) use crate::curve::piece_samples as bracket_params;
 
@@ -472,8 +448,8 @@ pub(crate) fn bracket_samples(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::cam::Mechanism;
+    use crate::cam::*;
     fn paper() -> Mechanism {
         crate::reference::paper_mechanism(false)
     }

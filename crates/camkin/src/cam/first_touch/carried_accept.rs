@@ -4,10 +4,10 @@
 //! polyline's chord error; a tangency elsewhere within the samples' resolution may stop the
 //! follower first.
 
-use super::first_touch::FirstTouch;
-use super::follower::carried::Carried;
-use super::{CamError, StopReason, Touch};
+use super::FirstTouch;
+use crate::cam::follower::carried::Carried;
 use crate::cam::instant::Instant;
+use crate::cam::{CamError, StopReason, Touch};
 
 use crate::geometry::{wrap_angle_near, Frame, Point2};
 use std::f64::consts::TAU;
@@ -110,7 +110,7 @@ impl FirstTouch {
         t: &Touch,
         covers: &'a [Cover],
     ) -> impl Iterator<Item = Tie<'a>> + 'a {
-        let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
+        let periodic = matches!(self.geometry.joint, crate::cam::Joint::Rotating { .. });
         let sector = c.sector;
         let tq = t.q;
         covers.iter().map(move |k| {
@@ -178,12 +178,12 @@ impl FirstTouch {
         mut f: impl FnMut(Touch, f64) -> Option<bool>,
     ) {
         let frame = &at.frame;
-        let periodic = matches!(self.geometry.joint, super::Joint::Rotating { .. });
+        let periodic = matches!(self.geometry.joint, crate::cam::Joint::Rotating { .. });
         let pitch = TAU / f64::from(c.symmetry);
         let closing = match self.geometry.joint {
-            super::Joint::Rotating { closing, .. } => closing.sign(),
+            crate::cam::Joint::Rotating { closing, .. } => closing.sign(),
             // a slide closes towards the cam: decreasing q
-            super::Joint::Translating { .. } => -1.0,
+            crate::cam::Joint::Translating { .. } => -1.0,
         };
         let spacing = self.corners.spacing.max(c.chord_error);
         let joint = self.geometry.joint;
@@ -288,7 +288,7 @@ impl FirstTouch {
         };
         let local = |u: f64| fb.inverse_transform_point(&(frame * profile_point(self, u)));
         let curve = c.curve.as_ref();
-        let (u, _) = super::golden::golden_min(
+        let (u, _) = crate::cam::golden::golden_min(
             |u| -c.corners.depth_within(curve, local(u), 1.0, 30),
             lo,
             hi,
