@@ -20,7 +20,7 @@
 //! involutes, and a tip relief shows as the TE it causes. The line of action is the one of the
 //! flanks in contact (the driver's flank unwinding with sense `ε = ±1`).
 
-use crate::cam::{FollowerState, Joint, Mechanism};
+use crate::cam::{FollowerState, Mechanism};
 use crate::curve::{Curve, FlankSide, InvoluteGear};
 use crate::geometry::{rot90, wrap_angle_near, Point2, Vec2};
 use std::f64::consts::TAU;
@@ -178,9 +178,11 @@ impl GearPair {
             .carried_profile()
             .and_then(|c| gear_of(c.as_ref()))
             .ok_or(GearError::DrivenNotGear)?;
-        let Joint::Rotating { pivot, .. } = mech.follower_joint() else {
+        let joint = mech.follower_joint();
+        if !joint.is_rotating() {
             return Err(GearError::DrivenNotGear);
-        };
+        }
+        let pivot = joint.origin();
         let o1 = mech.cam().pivot();
         let a = (pivot - o1).norm();
         check(driver, driven, a)?;

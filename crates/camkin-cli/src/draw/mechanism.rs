@@ -2,7 +2,7 @@
 //! nodes, cam axis, follower, contact point and common normal. Rendered by plotters (static SVG
 //! and PNG) and by a small SVG writer (the animation).
 
-use camkin::cam::{FollowerCurve, FollowerState, Joint, Mechanism};
+use camkin::cam::{FollowerCurve, FollowerState, Mechanism};
 use camkin::curve::Domain;
 use camkin::geometry::{rot90, Rotation};
 use camkin::{Point2, Vec2};
@@ -141,9 +141,9 @@ pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &
         }
         FollowerCurve::Point(p) => {
             let tip = pose.to_world(p.at());
-            let away = match joint {
-                Joint::Translating { direction, .. } => *direction,
-                _ => (tip - c).try_normalize(0.0).unwrap_or(Vec2::x()),
+            let away = match joint.direction() {
+                Some(direction) => *direction,
+                None => (tip - c).try_normalize(0.0).unwrap_or(Vec2::x()),
             };
             let (w, back) = (0.06 * size, tip + 0.2 * size * away);
             shapes.push(Shape::Polyline {
@@ -166,8 +166,8 @@ pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &
         }
         _ => (pose.origin, 0.0),
     };
-    match joint {
-        Joint::Translating { direction, .. } => {
+    match joint.direction() {
+        Some(direction) => {
             shapes.push(segment(
                 attach,
                 attach + (reach + 0.8 * size) * *direction,
@@ -175,7 +175,8 @@ pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &
                 3,
             ));
         }
-        Joint::Rotating { pivot, .. } => {
+        None => {
+            let pivot = joint.origin();
             shapes.push(segment(pivot, attach, FOLLOWER, 3));
             shapes.push(Shape::Circle {
                 c: pivot,
@@ -184,7 +185,6 @@ pub fn follower_shapes(mech: &Mechanism, q: f64, c: Point2, size: f64, shapes: &
                 width: 2,
             });
         }
-        _ => {}
     }
     if let Some(curve) = mech.conjugate_curve() {
         conjugate_shapes(mech, curve.as_ref(), &pose, attach, size, shapes);
@@ -254,8 +254,9 @@ fn conjugate_shapes(
         width: 2,
         closed,
     });
-    match mech.follower_joint() {
-        Joint::Translating { direction, .. } => {
+    let joint = mech.follower_joint();
+    match joint.direction() {
+        Some(direction) => {
             // out to the side, past the cam, and back in
             let side = rot90(*direction);
             let out = (axis - attach).dot(&side) + 1.3 * size;
@@ -271,8 +272,7 @@ fn conjugate_shapes(
                 closed: false,
             });
         }
-        Joint::Rotating { pivot, .. } => shapes.push(segment(pivot, hold, FOLLOWER, 3)),
-        _ => {}
+        None => shapes.push(segment(joint.origin(), hold, FOLLOWER, 3)),
     }
 }
 

@@ -11,7 +11,9 @@
 //! (a spline's curvature has a corner at its nodes, where differences lose their order).
 //!
 //! What the check shares with the contact method is only its input: the profile's positions,
-//! the joint and contact curve of the follower, and the cam-angle convention.
+//! the joint and contact curve of the follower, and the cam-angle convention. It matches on the
+//! joint's kind itself (slide or pivot) rather than call [`Joint`]'s methods, so that the
+//! geometry of the check shares no code with the method it checks.
 
 use super::{CamError, FollowerCurve, Joint, Mechanism};
 use crate::geometry::{Point2, Vec2};

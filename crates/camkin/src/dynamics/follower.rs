@@ -27,6 +27,16 @@ pub struct FollowerDynamics {
     pub gravity: Vec2,
 }
 
+impl FollowerDynamics {
+    /// Gravity's force along a slide's coordinate, N (`m g·d`); 0 on an arm, whose mass is taken
+    /// at its pivot (no gravity torque).
+    pub fn gravity_along(&self, joint: &crate::cam::Joint) -> f64 {
+        joint
+            .direction()
+            .map_or(0.0, |d| self.mass * self.gravity.dot(&d))
+    }
+}
+
 /// The follower's state at one instant of a simulation.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]

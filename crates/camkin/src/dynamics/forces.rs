@@ -116,12 +116,7 @@ impl<'a> Forces<'a> {
         } else {
             params.mass
         };
-        let g = match mech.follower_joint() {
-            crate::cam::Joint::Translating { direction, .. } => {
-                params.mass * params.gravity.dot(&direction)
-            }
-            _ => 0.0,
-        };
+        let g = params.gravity_along(&mech.follower_joint());
         Ok(Self {
             mech,
             second: mech.conjugate_side().map(|(m, _)| m),

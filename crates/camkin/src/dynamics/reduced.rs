@@ -42,7 +42,7 @@
 //! (`M Δȯ · ȯ_f` at an impact).
 
 use super::{DynamicsError, Event, EventKind, FollowerDynamics, Sample, REBOUND_TOLERANCE};
-use crate::cam::{CamError, Found, Joint, Mechanism, Sweep};
+use crate::cam::{CamError, Found, Mechanism, Sweep};
 use crate::geometry::wrap_angle_near;
 use nalgebra::{Matrix3, Vector3};
 
@@ -146,13 +146,8 @@ impl<'a> Reduced<'a> {
             .travel()
             .map_err(|source| DynamicsError::Kinematics { source })?;
         let a = travel.away;
-        let (rotating, g) = match mech.follower_joint() {
-            Joint::Translating { direction, .. } => {
-                (false, params.mass * params.gravity.dot(&direction))
-            }
-            // an arm's mass is taken at its pivot: no gravity torque
-            Joint::Rotating { .. } => (true, 0.0),
-        };
+        let joint = mech.follower_joint();
+        let (rotating, g) = (joint.is_rotating(), params.gravity_along(&joint));
         let m = if rotating {
             params.inertia
         } else {

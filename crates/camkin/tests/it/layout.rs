@@ -210,6 +210,24 @@ fn the_modules_of_cam_import_in_one_direction() {
     assert_eq!(circle(&graph), None, "{graph:?}");
 }
 
+/// The joint is behaviour: its users call its methods instead of matching on its kind (the
+/// independent check in `support.rs` keeps its own, to share no code with what it checks).
+#[test]
+fn the_joint_is_matched_in_few_places() {
+    let mut places = Vec::new();
+    for (n, t) in files() {
+        if n.ends_with("follower/joint.rs") || n.ends_with("cam/support.rs") {
+            continue;
+        }
+        for (k, line) in code(&t).lines().enumerate() {
+            let hits = line.matches("Joint::Translating").count()
+                + line.matches("Joint::Rotating").count();
+            places.extend(std::iter::repeat_n(format!("{n}:{}", k + 1), hits));
+        }
+    }
+    assert!(places.len() <= 10, "{} places: {places:?}", places.len());
+}
+
 #[test]
 fn no_function_of_cam_takes_an_angle_and_a_frame() {
     for (n, t) in files().iter().filter(|(n, _)| n.starts_with("cam/")) {

@@ -4,7 +4,7 @@
 
 use super::FirstTouch;
 use crate::body::{CurveInFrame, WorldDerivs};
-use crate::cam::follower::carried::{Carried, Crossing, Track};
+use crate::cam::follower::carried::{Carried, Crossing};
 use crate::cam::instant::Instant;
 use crate::cam::linear::solve3;
 use crate::cam::{CamError, Found, StopReason, Touch};
@@ -51,13 +51,8 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
     fn bound(&self, _i: usize, x: Point2, r: f64) -> Option<f64> {
         // whether the circle meets the band of levels (a slab, or an annulus about the pivot)
         let (lo, hi) = self.c.level_range;
-        let level = match (self.c.track, self.m.geometry.joint) {
-            (Track::Slide { p, .. }, crate::cam::Joint::Translating { origin, .. }) => {
-                (x - origin).dot(&p)
-            }
-            (_, crate::cam::Joint::Rotating { pivot, .. }) => (x - pivot).norm(),
-            _ => return None,
-        };
+        let joint = &self.m.geometry.joint;
+        let level = joint.level(x - joint.origin());
         let slack = r * (1.0 + 1e-12);
         (level + slack >= lo && level - slack <= hi).then_some(0.0)
     }
@@ -66,29 +61,19 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
     }
     fn leaf(&mut self, first: usize, last: usize) {
         let (m, c) = (self.m, self.c);
+        let joint = &m.geometry.joint;
         let (lo, hi) = c.level_range;
         let params = &m.index.dense.params[first..last];
         for (k, (&u, &y)) in params.iter().zip(&m.sample_points[first..last]).enumerate() {
             let x = self.frame * y;
-            // the level first: most points of a large driver are beyond an arm's reach
-            let (along, level, scale) = match (c.track, m.geometry.joint) {
-                (Track::Slide { d, p }, crate::cam::Joint::Translating { origin, .. }) => {
-                    let y = x - origin;
-                    (y.dot(&d), y.dot(&p), 1.0)
-                }
-                (_, crate::cam::Joint::Rotating { pivot, .. }) => {
-                    let y = x - pivot;
-                    let rho = y.norm();
-                    if !(rho >= lo && rho <= hi) {
-                        continue;
-                    }
-                    (y.y.atan2(y.x), rho, rho)
-                }
-                _ => continue,
-            };
+            // the level first: most points of a large driver are beyond an arm's reach (and an
+            // arm's `along` is an arctangent)
+            let y = x - joint.origin();
+            let level = joint.level(y);
             if !(level >= lo && level <= hi) {
                 continue;
             }
+            let (along, scale) = (joint.along(y), joint.along_length(level));
             self.inside.clear();
             c.inside(level, &mut self.buf, &mut self.inside);
             for &((a0, v0), (a1, v1)) in &self.inside {
@@ -150,7 +135,7 @@ impl FirstTouch {
     /// The predicted angle of a gear-like follower at cam angle `theta`: the initial angle
     /// continued by the nominal ratio `z_cam/z_follower` (external mesh: opposite senses).
     pub(crate) fn carried_predicted(&self, c: &Carried, theta: f64) -> f64 {
-        let crate::cam::Joint::Rotating { initial_angle, .. } = self.geometry.joint else {
+        let Some(initial_angle) = self.geometry.joint.initial_angle() else {
             return 0.0;
         };
         let z1 = self.cam.profile.symmetry();
@@ -292,7 +277,7 @@ impl FirstTouch {
     /// ±180° of its initial angle, a gear-like follower's within half a tooth of the predicted
     /// angle (its contact moved to the tooth that is there).
     fn carried_report(&self, c: &Carried, theta: f64, mut t: Touch) -> Touch {
-        if let crate::cam::Joint::Rotating { initial_angle, .. } = self.geometry.joint {
+        if let Some(initial_angle) = self.geometry.joint.initial_angle() {
             if c.symmetry > 1 {
                 let pitch = TAU / f64::from(c.symmetry);
                 let k = ((t.q - self.carried_predicted(c, theta)) / pitch).round();
@@ -333,10 +318,7 @@ impl FirstTouch {
         let joint = self.geometry.joint;
         let a = frame.curve_at(self.cam.profile.as_ref(), u);
         let b = joint.pose(q).frame().curve_at(c.curve.as_ref(), v);
-        let dq_x = match joint {
-            crate::cam::Joint::Translating { direction, .. } => *direction,
-            crate::cam::Joint::Rotating { pivot, .. } => rot90(b.p - pivot),
-        };
+        let dq_x = joint.velocity_jacobian(b.p);
         (a, b, dq_x)
     }
 
@@ -351,10 +333,7 @@ impl FirstTouch {
         (u, v, q): (f64, f64, f64),
     ) -> (WorldDerivs, WorldDerivs, [f64; 3], [[f64; 3]; 3]) {
         let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
-        let dq_x1 = match self.geometry.joint {
-            crate::cam::Joint::Translating { .. } => Vec2::zeros(),
-            crate::cam::Joint::Rotating { .. } => rot90(b.d1),
-        };
+        let dq_x1 = self.geometry.joint.velocity_jacobian_along(b.d1);
         let f = [a.p.x - b.p.x, a.p.y - b.p.y, cross(a.d1, b.d1)];
         let j = [
             [a.d1.x, -b.d1.x, -dq_x.x],
@@ -499,12 +478,8 @@ impl FirstTouch {
             .frame()
             .curve_at(c.curve.as_ref(), t.v);
         let outward = -self.orientation * rot90(a.d1);
-        let (dx, closing) = match self.geometry.joint {
-            crate::cam::Joint::Translating { direction, .. } => (*direction, -1.0),
-            crate::cam::Joint::Rotating { pivot, closing, .. } => {
-                (rot90(b.p - pivot), closing.sign())
-            }
-        };
+        let joint = &self.geometry.joint;
+        let (dx, closing) = (joint.velocity_jacobian(b.p), joint.closing_sign());
         Some(Sides {
             contact: a.p,
             opposite: outward.dot(&rot90(b.d1)) > 0.0,

@@ -110,7 +110,7 @@ impl FirstTouch {
         t: &Touch,
         covers: &'a [Cover],
     ) -> impl Iterator<Item = Tie<'a>> + 'a {
-        let periodic = matches!(self.geometry.joint, crate::cam::Joint::Rotating { .. });
+        let periodic = self.geometry.joint.is_rotating();
         let sector = c.sector;
         let tq = t.q;
         covers.iter().map(move |k| {
@@ -178,13 +178,10 @@ impl FirstTouch {
         mut f: impl FnMut(Touch, f64) -> Option<bool>,
     ) {
         let frame = &at.frame;
-        let periodic = matches!(self.geometry.joint, crate::cam::Joint::Rotating { .. });
+        let periodic = self.geometry.joint.is_rotating();
         let pitch = TAU / f64::from(c.symmetry);
-        let closing = match self.geometry.joint {
-            crate::cam::Joint::Rotating { closing, .. } => closing.sign(),
-            // a slide closes towards the cam: decreasing q
-            crate::cam::Joint::Translating { .. } => -1.0,
-        };
+        // a slide closes towards the cam (decreasing q), an arm in its closing sense
+        let closing = self.geometry.joint.closing_sign();
         let spacing = self.corners.spacing.max(c.chord_error);
         let joint = self.geometry.joint;
         let mut tried: Vec<Point2> = Vec::new();

@@ -154,12 +154,8 @@ impl FirstTouch {
         };
         let convex = material * cross(t_in, t_out) > 0.0;
         let outside = out.dot(&-t_in) >= -LEAN && out.dot(&t_out) >= -LEAN;
-        let (dx, closing) = match self.geometry.joint {
-            crate::cam::Joint::Translating { direction, .. } => (*direction, -1.0),
-            crate::cam::Joint::Rotating { pivot, closing, .. } => {
-                (rot90(contact - pivot), closing.sign())
-            }
-        };
+        let joint = &self.geometry.joint;
+        let (dx, closing) = (joint.velocity_jacobian(contact), joint.closing_sign());
         Some(Sides {
             contact,
             opposite: convex && outside,
@@ -322,13 +318,10 @@ impl FirstTouch {
         }
         // the cam's corners inside the follower (an arm's curve reaches no further from its
         // pivot than its sampled levels)
-        let reach = match (c.track, self.geometry.joint) {
-            (
-                crate::cam::follower::carried::Track::Pivot,
-                crate::cam::Joint::Rotating { pivot, .. },
-            ) => Some((pivot, c.level_range.1)),
-            _ => None,
-        };
+        let reach = c
+            .joint
+            .is_rotating()
+            .then(|| (c.joint.origin(), c.level_range.1));
         for &(b, y) in &self.corners.at {
             let x = frame * y;
             if reach.is_some_and(|(o, r)| (x - o).norm() > r + c.chord_error + tol)

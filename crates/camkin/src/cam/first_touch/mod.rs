@@ -6,7 +6,7 @@
 //! and Newton (`search.rs`), the starts (`starts.rs`), a carried curve against a profile
 //! (`carried.rs`, `carried_accept.rs`), corners (`corner_touch.rs`), overtaking (`overtake.rs`).
 
-use super::follower::{Geometry, Joint};
+use super::follower::Geometry;
 pub(crate) mod carried;
 mod carried_accept;
 pub(crate) mod corner_touch;
@@ -15,7 +15,7 @@ pub(crate) mod search;
 pub(crate) mod starts;
 
 use super::{corners, AnalysisOptions, Cam};
-use crate::geometry::{wrap_angle_near, Point2};
+use crate::geometry::Point2;
 use std::sync::Arc;
 
 /// The first-touch engine of one cam profile and one follower.
@@ -49,11 +49,9 @@ pub(crate) struct FirstTouch {
 impl FirstTouch {
     /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
     pub(crate) fn ahead(&self, q: f64, other: f64) -> f64 {
-        let d = self.oriented(q) - self.oriented(other);
-        match self.geometry.joint {
-            Joint::Rotating { .. } => wrap_angle_near(d, 0.0),
-            Joint::Translating { .. } => d,
-        }
+        self.geometry
+            .joint
+            .difference(self.oriented(q), self.oriented(other))
     }
 
     /// Replaces the options: the samples, their trees and Newton's constants follow them.

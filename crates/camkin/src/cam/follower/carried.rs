@@ -78,20 +78,12 @@ impl Kind for CarriedJoint {
 impl CarriedJoint {
     pub(super) fn translating(cam_pivot: Point2, d: UnitVec2, offset: f64) -> Model {
         Model::Carried(Self {
-            joint: Joint::Translating {
-                origin: cam_pivot + offset * rot90(*d),
-                direction: d,
-            },
+            joint: Joint::slide(cam_pivot + offset * rot90(*d), d),
         })
     }
     pub(super) fn rotating(cam_pivot: Point2, o: Point2, closing: Sense, phi0: f64) -> Model {
         Model::Carried(Self {
-            joint: Joint::Rotating {
-                pivot: o,
-                closing,
-                initial_angle: phi0,
-                toward_cam: super::toward(cam_pivot, o),
-            },
+            joint: Joint::arm(o, closing, phi0, super::toward(cam_pivot, o)),
         })
     }
 }
@@ -126,27 +118,6 @@ impl Curve for Turned {
     }
 }
 
-/// How a cam point moves relative to the follower: along the slide's direction at a fixed lateral
-/// level, or round the pivot at a fixed radius.
-#[derive(Debug, Clone, Copy)]
-pub(crate) enum Track {
-    /// `along = y·d`, `level = y·rot90(d)`
-    Slide { d: Vec2, p: Vec2 },
-    /// `along` = polar angle, `level` = radius
-    Pivot,
-}
-
-impl Track {
-    /// `(along, level)` of a point `y` in the follower frame.
-    #[inline]
-    pub(crate) fn coords(&self, y: Vec2) -> (f64, f64) {
-        match *self {
-            Track::Slide { d, p } => (y.dot(&d), y.dot(&p)),
-            Track::Pivot => (y.y.atan2(y.x), y.norm()),
-        }
-    }
-}
-
 /// A crossing of the follower's polyline with a level: where along, the curve's parameter there
 /// and whether moving in `+along` enters the follower's material.
 #[derive(Debug, Clone, Copy)]
@@ -164,7 +135,9 @@ pub(crate) type Stretch = ((f64, f64), (f64, f64));
 pub(crate) struct Carried {
     /// the curve in the follower frame
     pub(crate) curve: Arc<dyn Curve>,
-    pub(crate) track: Track,
+    /// the joint that carries it: a cam point moves along its track ([`Joint::along`]) at its
+    /// level
+    pub(crate) joint: Joint,
     /// the curve's period (closed curves)
     pub(crate) period: Option<f64>,
     /// parameter bounds of an open curve (the sampled stretch of an unbounded one)
@@ -225,21 +198,16 @@ impl Carried {
     /// Samples `curve` (given in the follower frame of `joint`; a translating follower's is turned
     /// first) and indexes it. `reach` bounds the stretch of an unbounded curve that is sampled.
     pub(crate) fn new(curve: Arc<dyn Curve>, joint: &Joint, reach: f64) -> Result<Self, CamError> {
-        let (curve, track): (Arc<dyn Curve>, Track) = match *joint {
-            Joint::Translating { direction, .. } => {
-                let d = *direction;
-                let angle = d.y.atan2(d.x);
-                let c: Arc<dyn Curve> = if angle == 0.0 {
-                    curve
-                } else {
-                    Arc::new(Turned {
-                        curve,
-                        rot: Rotation::new(angle),
-                    })
-                };
-                (c, Track::Slide { d, p: rot90(d) })
-            }
-            Joint::Rotating { .. } => (curve, Track::Pivot),
+        let joint = *joint;
+        // a slide's curve turned into the world-aligned follower frame
+        let angle = joint.direction().map_or(0.0, |d| d.y.atan2(d.x));
+        let curve: Arc<dyn Curve> = if angle == 0.0 {
+            curve
+        } else {
+            Arc::new(Turned {
+                curve,
+                rot: Rotation::new(angle),
+            })
         };
         let bad = |reason: &'static str| CamError::Invalid {
             field: Field::Follower(FollowerField::Profile),
@@ -278,7 +246,7 @@ impl Carried {
             .iter()
             .map(|&v| {
                 let y = curve.position(v).coords;
-                (y, v, track.coords(y))
+                (y, v, (joint.along(y), joint.level(y)))
             })
             .collect();
         if verts
@@ -314,9 +282,10 @@ impl Carried {
             .iter()
             .map(|v| v.2 .1)
             .fold(f64::NEG_INFINITY, f64::max);
-        let symmetry = match track {
-            Track::Pivot => curve.symmetry().max(1),
-            Track::Slide { .. } => 1,
+        let symmetry = if joint.is_rotating() {
+            curve.symmetry().max(1)
+        } else {
+            1
         };
         let sector = tooth_sector(&verts, symmetry, period);
         // one tooth's segments when the polyline repeats tooth by tooth
@@ -341,7 +310,7 @@ impl Carried {
         Ok(Self {
             breakpoints,
             curve,
-            track,
+            joint,
             period,
             bounds,
             symmetry,
@@ -381,16 +350,14 @@ impl Carried {
             } else {
                 b.1
             };
-            let entering = match self.track {
-                Track::Slide { .. } => lb < la,
-                Track::Pivot => lb > la,
-            };
-            let along = match self.track {
-                Track::Slide { d, .. } => y.dot(&d),
+            let rotating = self.joint.is_rotating();
+            let entering = if rotating { lb > la } else { lb < la };
+            let along = match rotating {
+                false => self.joint.along(y),
                 // the polar angle interpolated between the vertices' (no atan2 per crossing,
                 // which the coverage of a gear makes for every tooth): off the chord's own by
                 // the cube of its angular extent, a hundredth of the chord error
-                Track::Pivot => {
+                true => {
                     let (pa, pb) = (a.2 .0, b.2 .0);
                     let d = (pb - pa + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
                         - std::f64::consts::PI;
@@ -431,8 +398,8 @@ impl Carried {
             }
         }
         buf.sort_by(|a, b| a.along.total_cmp(&b.along));
-        match self.track {
-            Track::Slide { .. } => {
+        match self.joint.is_rotating() {
+            false => {
                 let mut open: Option<(f64, f64)> = if buf[0].entering {
                     None
                 } else {
@@ -454,7 +421,7 @@ impl Carried {
                     out.push((s, (f64::INFINITY, f64::NAN)));
                 }
             }
-            Track::Pivot => {
+            true => {
                 // cyclic: start at an entry, pair each with the next exit going round (a whole
                 // turn, or one tooth's)
                 let Some(first) = buf.iter().position(|c| c.entering) else {
@@ -490,12 +457,12 @@ mod tests {
     use crate::curve::{Ellipse, InvoluteGear, InvoluteGearSpec};
 
     fn arm() -> Joint {
-        Joint::Rotating {
-            pivot: Point2::new(62.0, 0.0),
-            closing: super::super::Sense::Ccw,
-            initial_angle: 0.0,
-            toward_cam: std::f64::consts::PI,
-        }
+        Joint::arm(
+            Point2::new(62.0, 0.0),
+            super::super::Sense::Ccw,
+            0.0,
+            std::f64::consts::PI,
+        )
     }
 
     /// A gear on an arm is indexed by one tooth; its stretches inside at any level are the

@@ -37,6 +37,108 @@ pub enum Joint {
 }
 
 impl Joint {
+    /// A slide along `direction` whose frame is at `origin` at `q = 0`.
+    pub fn slide(origin: Point2, direction: UnitVec2) -> Self {
+        Joint::Translating { origin, direction }
+    }
+
+    /// A revolute pair at `pivot` closed by its spring in the sense `closing`, the arm angle
+    /// reported within ±180° of `initial_angle`, its first touch sought within ±180° of
+    /// `toward_cam` (see [`Joint::Rotating`]).
+    pub fn arm(pivot: Point2, closing: Sense, initial_angle: f64, toward_cam: f64) -> Self {
+        Joint::Rotating {
+            pivot,
+            closing,
+            initial_angle,
+            toward_cam,
+        }
+    }
+
+    /// The point the joint acts from: a slide's origin (at `q = 0`), an arm's pivot.
+    #[inline]
+    pub fn origin(&self) -> Point2 {
+        match *self {
+            Joint::Translating { origin, .. } => origin,
+            Joint::Rotating { pivot, .. } => pivot,
+        }
+    }
+
+    /// A slide's direction of travel; `None` for an arm.
+    #[inline]
+    pub fn direction(&self) -> Option<UnitVec2> {
+        match *self {
+            Joint::Translating { direction, .. } => Some(direction),
+            Joint::Rotating { .. } => None,
+        }
+    }
+
+    /// An arm's initial angle (the reported angle lies within ±180° of it); `None` for a slide.
+    #[inline]
+    pub fn initial_angle(&self) -> Option<f64> {
+        match *self {
+            Joint::Translating { .. } => None,
+            Joint::Rotating { initial_angle, .. } => Some(initial_angle),
+        }
+    }
+
+    /// The sign of `q` that moves the follower onto the cam: −1 for a slide (decreasing `q`),
+    /// an arm's closing sense (+1 counter-clockwise).
+    #[inline]
+    pub fn closing_sign(&self) -> f64 {
+        -self.away()
+    }
+
+    /// The difference `a − b` of two coordinates: an arm's taken within ±180°.
+    #[inline]
+    pub(crate) fn difference(&self, a: f64, b: f64) -> f64 {
+        match *self {
+            Joint::Translating { .. } => a - b,
+            Joint::Rotating { .. } => crate::geometry::wrap_angle_near(a - b, 0.0),
+        }
+    }
+
+    /// Where a point `y` of the follower frame (relative to [`Joint::origin`] in a frame not
+    /// turned) lies along the joint's track: its distance along the slide's direction, or its
+    /// polar angle about the pivot. As the follower moves by `Δq`, a point fixed elsewhere moves
+    /// along the track by `−Δq`, at its [`Joint::level`].
+    #[inline]
+    pub(crate) fn along(&self, y: Vec2) -> f64 {
+        match *self {
+            Joint::Translating { direction, .. } => y.dot(&direction),
+            Joint::Rotating { .. } => y.y.atan2(y.x),
+        }
+    }
+
+    /// The level of `y` on the track (see [`Joint::along`]): its distance across the slide's
+    /// direction, or its radius about the pivot.
+    #[inline]
+    pub(crate) fn level(&self, y: Vec2) -> f64 {
+        match *self {
+            Joint::Translating { direction, .. } => y.dot(&rot90(*direction)),
+            Joint::Rotating { .. } => y.norm(),
+        }
+    }
+
+    /// The length of a unit of [`Joint::along`] at `level`: 1 on a slide, the radius on an arm.
+    #[inline]
+    pub(crate) fn along_length(&self, level: f64) -> f64 {
+        match *self {
+            Joint::Translating { .. } => 1.0,
+            Joint::Rotating { .. } => level,
+        }
+    }
+
+    /// The rate of [`Joint::velocity_jacobian`] at a point of the follower's curve along the
+    /// curve, per unit of its parameter, where the curve's derivative (world) is `t`: zero on a
+    /// slide, `k × t` on an arm.
+    #[inline]
+    pub(crate) fn velocity_jacobian_along(&self, t: Vec2) -> Vec2 {
+        match *self {
+            Joint::Translating { .. } => Vec2::zeros(),
+            Joint::Rotating { .. } => rot90(t),
+        }
+    }
+
     /// The follower frame at position `q`.
     #[inline]
     pub fn pose(&self, q: f64) -> Pose {

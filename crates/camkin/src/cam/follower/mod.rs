@@ -506,12 +506,7 @@ impl Arm {
 
     /// The arm's joint.
     fn joint(&self) -> Joint {
-        Joint::Rotating {
-            pivot: self.o,
-            closing: self.sense,
-            initial_angle: self.phi0,
-            toward_cam: self.toward_cam,
-        }
+        Joint::arm(self.o, self.sense, self.phi0, self.toward_cam)
     }
 }
 
@@ -544,10 +539,7 @@ impl Geometry {
         let carries = matches!(model, Model::Carried(_));
         let (curve, carried) = match follower.carried_profile().filter(|_| carries) {
             Some(profile) => {
-                let far = match joint {
-                    Joint::Rotating { pivot, .. } => (pivot - cam_pivot).norm(),
-                    Joint::Translating { origin, .. } => (origin - cam_pivot).norm(),
-                };
+                let far = (joint.origin() - cam_pivot).norm();
                 let c = carried::Carried::new(profile.clone(), &joint, 4.0 * (reach + far))?;
                 (
                     FollowerCurve::Carried(c.curve.clone()),
@@ -610,10 +602,7 @@ mod tests {
 
     fn direction_of(d: Vec2) -> Result<Vec2, CamError> {
         let m = Follower::TranslatingFlat { direction: d }.model(Point2::origin())?;
-        match m.joint() {
-            Joint::Translating { direction, .. } => Ok(*direction),
-            Joint::Rotating { .. } => unreachable!("a translating follower"),
-        }
+        Ok(*m.joint().direction().expect("a translating follower"))
     }
 
     #[test]

@@ -31,11 +31,8 @@ impl TranslatingFlat {
 
 impl Kind for TranslatingFlat {
     fn joint(&self) -> Joint {
-        Joint::Translating {
-            origin: self.cam_pivot,
-            // `d` came in as a `UnitVec2` (`model`)
-            direction: UnitVec2::new_unchecked(self.d),
-        }
+        // `d` came in as a `UnitVec2` (`model`)
+        Joint::slide(self.cam_pivot, UnitVec2::new_unchecked(self.d))
     }
     fn curve(&self) -> super::FollowerCurve {
         super::FollowerCurve::Line(Line::new(Point2::origin(), -self.p).expect("unit vector"))

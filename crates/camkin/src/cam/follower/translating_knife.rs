@@ -52,11 +52,11 @@ impl TranslatingKnife {
 
 impl Kind for TranslatingKnife {
     fn joint(&self) -> Joint {
-        Joint::Translating {
-            origin: self.cam_pivot + self.e * self.p,
-            // `d` came in as a `UnitVec2` (`model`)
-            direction: UnitVec2::new_unchecked(self.d),
-        }
+        // `d` came in as a `UnitVec2` (`model`)
+        Joint::slide(
+            self.cam_pivot + self.e * self.p,
+            UnitVec2::new_unchecked(self.d),
+        )
     }
     fn curve(&self) -> super::FollowerCurve {
         super::FollowerCurve::Point(PointCurve::new(Point2::from(self.tip)).expect("finite"))

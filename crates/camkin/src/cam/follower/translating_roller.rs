@@ -36,11 +36,11 @@ impl TranslatingRoller {
 
 impl Kind for TranslatingRoller {
     fn joint(&self) -> Joint {
-        Joint::Translating {
-            origin: self.cam_pivot + self.e * self.p,
-            // `d` came in as a `UnitVec2` (`model`)
-            direction: UnitVec2::new_unchecked(self.d),
-        }
+        // `d` came in as a `UnitVec2` (`model`)
+        Joint::slide(
+            self.cam_pivot + self.e * self.p,
+            UnitVec2::new_unchecked(self.d),
+        )
     }
     fn curve(&self) -> super::FollowerCurve {
         super::FollowerCurve::Circle(
