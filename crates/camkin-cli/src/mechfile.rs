@@ -1,18 +1,16 @@
-//! Mechanism files (TOML): the library's [`MechanismSpec`] read from TOML, with every error
-//! placed in the file.
-//!
-//! The schema and all of its validation live in the library ([`camkin::spec`]); this module only
-//! parses TOML (syntax and type errors come with toml's line and column), builds the spec, and
-//! maps the field named by a library error to its key's line and column in the text.
+//! Mechanism files (TOML) for the command and the studio: the library's one reader
+//! ([`camkin::spec::text`]: bounded read, TOML to spec, errors and warnings placed at their
+//! keys' lines and columns), with the command's own wording of a missing `[dynamics]` and its
+//! warnings printed on stderr.
 
 use camkin::cam::Mechanism;
 use camkin::dynamics::FollowerDynamics;
-use camkin::spec::{BuildOptions, Built, Field, Key, MechanismSpec, SpecError, SpecWarning};
-use std::ops::Range;
+use camkin::spec::text::{self, TextError};
+use camkin::spec::{BuildOptions, Built, MechanismSpec};
 use std::path::Path;
 
-/// Largest mechanism file read, bytes.
-pub const MAX_FILE_BYTES: u64 = 8 << 20;
+/// Largest mechanism file read, bytes (the library's bound).
+pub const MAX_FILE_BYTES: u64 = text::MAX_TEXT_BYTES;
 /// Most nodal points of a spline profile (inline or from a points file).
 pub const MAX_POINTS: usize = camkin::curve::MAX_POINTS;
 
@@ -59,37 +57,19 @@ impl std::fmt::Display for InputError {
 
 impl std::error::Error for InputError {}
 
-/// Reads a mechanism file's text (at most [`MAX_FILE_BYTES`], a byte-order mark dropped):
-/// `(name for messages, text)`.
-pub fn read_text(path: &Path) -> Result<(String, String), InputError> {
-    let name = path.display().to_string();
-    let cannot =
-        |e: std::io::Error| InputError::new(format!("cannot read mechanism file {name}: {e}"));
-    // counted while reading: a device or a pipe has no length in its metadata
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| {
-            use std::io::Read;
-            f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes)
-        })
-        .map_err(cannot)?;
-    if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(InputError::new(format!(
-            "{name}: more than {MAX_FILE_BYTES} bytes ({} MiB), the most a mechanism file may have",
-            MAX_FILE_BYTES >> 20
-        )));
+impl From<TextError> for InputError {
+    fn from(e: TextError) -> Self {
+        Self {
+            message: e.message,
+            at: e.at,
+        }
     }
-    let text = String::from_utf8(bytes).map_err(|e| {
-        InputError::new(format!(
-            "{name}: not UTF-8 text (invalid byte at offset {})",
-            e.utf8_error().valid_up_to()
-        ))
-    })?;
-    let text = text
-        .strip_prefix('\u{feff}')
-        .map(str::to_string)
-        .unwrap_or(text);
-    Ok((name, text))
+}
+
+/// Reads a mechanism file's text (at most [`MAX_FILE_BYTES`] counted while reading, a byte-order
+/// mark dropped): `(name for messages, text)`.
+pub fn read_text(path: &Path) -> Result<(String, String), InputError> {
+    Ok(text::read_file(path)?)
 }
 
 /// Reads and builds a mechanism file; every error is bad input (exit code 2).
@@ -146,20 +126,7 @@ pub fn parse_dynamics(
 
 /// The spec in a mechanism file's text.
 pub fn parse_spec(text: &str, name: &str) -> Result<MechanismSpec, InputError> {
-    // the path of the value that failed (`follower.direction`), which the TOML error's own
-    // message does not name for a value of the wrong shape
-    serde_path_to_error::deserialize(toml::Deserializer::new(text)).map_err(|e| {
-        let path = e.path().to_string();
-        let inner = e.into_inner();
-        InputError {
-            message: if path.is_empty() || path == "." {
-                format!("{name}: {inner}")
-            } else {
-                format!("{name}: {path}: {inner}")
-            },
-            at: inner.span().map(|s| line_column(text, s.start)),
-        }
-    })
+    Ok(text::parse_toml(text, name)?)
 }
 
 fn build(text: &str, name: &str, base: &Path, si: bool) -> Result<Built, InputError> {
@@ -195,20 +162,12 @@ pub fn build_placed(
     name: &str,
     options: &BuildOptions,
 ) -> Result<(Built, Vec<Warning>), InputError> {
-    let built = spec.build(options).map_err(|e| place(text, name, &e))?;
-    let warnings = built
-        .warnings
-        .iter()
-        .map(|w| {
-            let field = match w {
-                SpecWarning::UnevenNodes { field, .. } => Some(*field),
-                _ => None,
-            };
-            let (prefix, at) = located(text, name, field);
-            Warning {
-                message: format!("{prefix}: {w}"),
-                at,
-            }
+    let (built, warnings) = text::build_placed(spec, text, name, options)?;
+    let warnings = warnings
+        .into_iter()
+        .map(|w| Warning {
+            message: w.message,
+            at: w.at,
         })
         .collect();
     Ok((built, warnings))
@@ -216,62 +175,7 @@ pub fn build_placed(
 
 /// 1-based `(line, column)` of byte offset `at` in `text` (column in characters).
 pub fn line_column(text: &str, at: usize) -> (usize, usize) {
-    let mut at = at.min(text.len());
-    while !text.is_char_boundary(at) {
-        at -= 1;
-    }
-    let before = &text[..at];
-    let line = before.matches('\n').count() + 1;
-    let col = before[before.rfind('\n').map_or(0, |i| i + 1)..]
-        .chars()
-        .count()
-        + 1;
-    (line, col)
-}
-
-/// `file:line:column` of `field`'s key (or `file` alone), and the line and column.
-fn located(text: &str, name: &str, field: Option<Field>) -> (String, Option<(usize, usize)>) {
-    match field.and_then(|f| span_of(text, f)) {
-        Some(span) => {
-            let (line, col) = line_column(text, span.start);
-            (format!("{name}:{line}:{col}"), Some((line, col)))
-        }
-        None => (name.to_string(), None),
-    }
-}
-
-/// The error as `file:line:column: message`, at the key of the field it names (the nearest
-/// enclosing key when that one is absent: the kind's, for a field the kind needs).
-fn place(text: &str, name: &str, e: &SpecError) -> InputError {
-    if let SpecError::PointsFile { .. } = e {
-        return InputError::new(e.to_string());
-    }
-    let (prefix, at) = located(text, name, Some(e.field()));
-    InputError {
-        message: format!("{prefix}: {e}"),
-        at,
-    }
-}
-
-/// The span of the value at `field`'s key path, or of the deepest part of the path present.
-fn span_of(text: &str, field: Field) -> Option<Range<usize>> {
-    let doc = toml_edit::ImDocument::parse(text).ok()?;
-    let mut item = doc.as_item();
-    let mut span = None;
-    for key in field.path() {
-        let next = match key {
-            Key::Name(n) => item.get(n),
-            Key::Index(i) => item.get(i),
-        };
-        match next {
-            Some(it) => {
-                item = it;
-                span = it.span().or(span);
-            }
-            None => break,
-        }
-    }
-    span
+    text::line_column(text, at)
 }
 
 /// The paper's mechanism (section 3), the file `examples/paper.toml`.

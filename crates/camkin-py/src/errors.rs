@@ -20,14 +20,43 @@ fn raise(py: Python<'_>, class: &str, message: String, extra: Vec<Py<PyAny>>) ->
 /// `InputError(message, field, value)`: bad input, naming the field (a dotted path, as in the
 /// files: `follower.roller_radius`) and the value given (None when absent).
 pub fn input(field: &str, value: Option<String>, message: String) -> PyErr {
+    input_at(field, value, message, None)
+}
+
+/// [`input`] placed at 1-based `(line, column)` of a mechanism's text (`.line`, `.column`).
+pub fn input_at(
+    field: &str,
+    value: Option<String>,
+    message: String,
+    at: Option<(usize, usize)>,
+) -> PyErr {
     Python::attach(|py| {
         let field = pyo3::types::PyString::new(py, field).into_any().unbind();
         let value = match value {
             Some(v) => pyo3::types::PyString::new(py, &v).into_any().unbind(),
             None => py.None(),
         };
-        raise(py, "InputError", message, vec![field, value])
+        let place = |x: Option<usize>| -> Py<PyAny> {
+            match x.and_then(|x| x.into_pyobject(py).ok()) {
+                Some(x) => x.into_any().unbind(),
+                None => py.None(),
+            }
+        };
+        let (line, column) = (place(at.map(|a| a.0)), place(at.map(|a| a.1)));
+        raise(py, "InputError", message, vec![field, value, line, column])
     })
+}
+
+/// Bad mechanism text (the library's one reader, [`camkin::spec::text`]) as an `InputError`
+/// with the field, the value and the place in the text.
+pub fn text(e: camkin::spec::text::TextError) -> PyErr {
+    use camkin::spec::text::TextProblem;
+    let (field, value) = match &e.problem {
+        TextProblem::Spec(s) => field_value(s),
+        TextProblem::Read => ("source".to_string(), Some(e.name.clone())),
+        _ => (e.path.clone().unwrap_or_default(), None),
+    };
+    input_at(&field, value, e.message, e.at)
 }
 
 /// `ContactError(message)`: the numerics stopped, and why.
@@ -54,13 +83,18 @@ pub fn refuse_large(work: &camkin::work::Work, large: bool, otherwise: &str) -> 
 
 /// A spec error as an `InputError` on its field.
 pub fn spec(e: &SpecError) -> PyErr {
-    let (field, value) = match e {
+    let (field, value) = field_value(e);
+    input(&field, value, e.to_string())
+}
+
+/// The field a spec error names (a dotted path) and the value given, as text.
+fn field_value(e: &SpecError) -> (String, Option<String>) {
+    match e {
         SpecError::Invalid { field, value, .. } | SpecError::Unknown { field, value, .. } => {
             (field.to_string(), Some(value.clone()))
         }
         SpecError::Missing { field, missing, .. } => (format!("{}.{missing}", field.table()), None),
         SpecError::PointsFile { path, .. } => (e.field().to_string(), Some(path.clone())),
         other => (other.field().to_string(), None),
-    };
-    input(&field, value, e.to_string())
+    }
 }

@@ -11,8 +11,6 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::path::{Path, PathBuf};
 
-/// Largest mechanism file or text read, bytes (as the command).
-const MAX_TEXT_BYTES: usize = 8 << 20;
 /// Rows of an analysis computed per chunk (the GIL is released for the whole computation).
 const CHUNK: usize = 65_536;
 /// Most angles in one call without `large=True`: the library's memory limit at about 200
@@ -54,13 +52,36 @@ impl PyMechanism {
                 confine: false,
             })
             .map_err(|e| errors::spec(&e))?;
-        Ok(Self {
+        Ok(Self::of(spec, base_dir, built, name))
+    }
+
+    /// Builds a spec read from mechanism `text` (called `file` in messages): an error is placed
+    /// at its key's line and column (`InputError.line`, `.column`), as the command's.
+    pub fn build_text(
+        spec: MechanismSpec,
+        text: &str,
+        file: &str,
+        base_dir: PathBuf,
+        name: String,
+    ) -> PyResult<Self> {
+        let options = BuildOptions {
+            base_dir: base_dir.clone(),
+            si: false,
+            confine: false,
+        };
+        let (built, _) =
+            camkin::spec::text::build_placed(&spec, text, file, &options).map_err(errors::text)?;
+        Ok(Self::of(spec, base_dir, built, name))
+    }
+
+    fn of(spec: MechanismSpec, base_dir: PathBuf, built: Built, name: String) -> Self {
+        Self {
             spec,
             base_dir,
             built,
             name,
             parts: std::sync::OnceLock::new(),
-        })
+        }
     }
 
     pub fn mech(&self) -> &Mechanism {
@@ -102,58 +123,18 @@ impl PyMechanism {
     }
 }
 
-/// Parses TOML text into a spec; errors name the key path and carry toml's line and column.
+/// Parses TOML text into a spec (the library's reader): errors name the key path and carry
+/// toml's line and column.
 pub fn parse_toml(text: &str, name: &str) -> PyResult<MechanismSpec> {
-    if text.len() > MAX_TEXT_BYTES {
-        return Err(errors::input(
-            "source",
-            Some(format!("{} bytes", text.len())),
-            format!("{name}: more than {MAX_TEXT_BYTES} bytes, the most a mechanism file may have"),
-        ));
-    }
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    serde_path_to_error::deserialize(toml::Deserializer::new(text)).map_err(|e| {
-        let path = e.path().to_string();
-        let inner = e.into_inner();
-        let path = if path == "." { String::new() } else { path };
-        let message = if path.is_empty() {
-            format!("{name}: {inner}")
-        } else {
-            format!("{name}: {path}: {inner}")
-        };
-        errors::input(&path, None, message)
-    })
+    camkin::spec::text::parse_toml(text, name).map_err(errors::text)
 }
 
-/// Parses JSON text (a dict dumped by Python's json) into a spec.
+/// Parses JSON text (a dict dumped by Python's json) into a spec; errors name the key path (the
+/// JSON's own lines and columns are not the user's: the user wrote a dict).
 pub fn parse_json(text: &str) -> PyResult<MechanismSpec> {
-    let mut de = serde_json::Deserializer::from_str(text);
-    serde_path_to_error::deserialize(&mut de).map_err(|e| {
-        let path = e.path().to_string();
-        let inner = e.into_inner();
-        let path = if path == "." { String::new() } else { path };
-        errors::input(&path, None, format!("mechanism dict: {path}: {inner}"))
-    })
-}
-
-/// Reads a mechanism file (at most [`MAX_TEXT_BYTES`]).
-fn read_file(path: &Path) -> PyResult<String> {
-    let name = path.display().to_string();
-    let cannot = |m: String| errors::input("source", Some(name.clone()), m);
-    let meta = std::fs::metadata(path)
-        .map_err(|e| cannot(format!("cannot read mechanism file {name}: {e}")))?;
-    if meta.len() > MAX_TEXT_BYTES as u64 {
-        return Err(cannot(format!(
-            "{name}: more than {MAX_TEXT_BYTES} bytes, the most a mechanism file may have"
-        )));
-    }
-    let bytes = std::fs::read(path)
-        .map_err(|e| cannot(format!("cannot read mechanism file {name}: {e}")))?;
-    String::from_utf8(bytes).map_err(|e| {
-        cannot(format!(
-            "{name}: not UTF-8 text (invalid byte at offset {})",
-            e.utf8_error().valid_up_to()
-        ))
+    camkin::spec::text::parse_json(text, "mechanism dict").map_err(|mut e| {
+        e.at = None;
+        errors::text(e)
     })
 }
 
@@ -169,18 +150,33 @@ impl PyMechanism {
     /// Mechanism.from_toml(source) -> Mechanism
     ///
     /// A mechanism from a mechanism file (a path, ``str`` or ``os.PathLike``) or from TOML text
-    /// (a ``str`` holding ``=``). A relative points-file path is read from the file's folder (the
-    /// current folder for text). Bad input raises ``camkin.InputError`` naming the field.
+    /// (a ``str`` with a line break, or with ``=`` that names no file: a path may hold ``=``). A
+    /// relative points-file path is read from the file's folder (the current folder for text).
+    /// Bad input raises ``camkin.InputError`` naming the field, the value, and the line and
+    /// column in the text (``.line``, ``.column``), as the command does.
     #[staticmethod]
     fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
+        // text: a str with a line break, or a line of TOML that names no file (a path may hold
+        // `=`: `a=b/cam.toml` is a path, read or refused as one)
         let is_text = source
             .extract::<String>()
-            .map(|s| s.contains('=') || s.contains('\n'))
+            .map(|s| {
+                s.contains('\n')
+                    || (s.contains('=')
+                        && !Path::new(&s).exists()
+                        && s.parse::<toml::Table>().is_ok())
+            })
             .unwrap_or(false);
         if is_text {
             let text: String = source.extract()?;
             let spec = parse_toml(&text, "<text>")?;
-            let m = Self::build(spec, PathBuf::from("."), "mechanism".into())?;
+            let m = Self::build_text(
+                spec,
+                &text,
+                "<text>",
+                PathBuf::from("."),
+                "mechanism".into(),
+            )?;
             m.warn_spec(py)?;
             return Ok(m);
         }
@@ -195,8 +191,8 @@ impl PyMechanism {
                     "Mechanism.from_toml takes a path (str or os.PathLike) or TOML text".into(),
                 )
             })?;
-        let text = read_file(&path)?;
-        let spec = parse_toml(&text, &path.display().to_string())?;
+        let (file, text) = camkin::spec::text::read_file(&path).map_err(errors::text)?;
+        let spec = parse_toml(&text, &file)?;
         let base = path
             .parent()
             .map(Path::to_path_buf)
@@ -205,7 +201,7 @@ impl PyMechanism {
         let name = path
             .file_stem()
             .map_or_else(|| "mechanism".into(), |s| s.to_string_lossy().into_owned());
-        let m = Self::build(spec, base, name)?;
+        let m = Self::build_text(spec, &text, &file, base, name)?;
         m.warn_spec(py)?;
         Ok(m)
     }

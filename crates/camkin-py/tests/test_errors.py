@@ -1,10 +1,12 @@
 """Errors are camkin's classes and carry the field and the value."""
 
+import subprocess
+
 import numpy as np
 import pytest
 
 import camkin
-from conftest import EXAMPLES
+from conftest import EXAMPLES, camkin_bin
 
 PAPER = (EXAMPLES / "paper.toml").read_text()
 
@@ -133,3 +135,42 @@ def test_errors_pickle():
     e = camkin.InputError("x = 1: bad", "x", "1")
     e2 = pickle.loads(pickle.dumps(e))
     assert (e2.field, e2.value, str(e2)) == ("x", "1", "x = 1: bad")
+
+
+def test_file_errors_carry_the_line_and_column_the_command_prints(tmp_path):
+    # the library's one reader places the error: the same file:line:column as `camkin analyze`
+    text = (EXAMPLES / "paper.toml").read_text().replace("speed_rpm = 1000.0", "speed_rpm = -5.0")
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_toml(path)
+    assert (e.value.line, e.value.column) == (6, 13), e.value
+    assert e.value.field == "cam.speed_rpm" and e.value.value == "-5"
+    assert str(e.value).startswith(f"{path}:6:13:"), str(e.value)
+    r = subprocess.run([camkin_bin(), "analyze", str(path)], capture_output=True, text=True)
+    assert r.returncode == 2 and f"{path}:6:13:" in r.stderr, r.stderr
+    # a type error too, and TOML text
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_toml(text.replace("speed_rpm = -5.0", 'speed_rpm = "fast"'))
+    assert e.value.line == 6 and e.value.field == "cam.speed_rpm", e.value
+    # a dict has no lines
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_dict({"length_unit": "cm", "cam": {"speed_rpm": "fast"}})
+    assert e.value.line is None and e.value.field == "cam.speed_rpm", e.value
+
+
+def test_a_path_with_an_equals_sign_is_a_path(tmp_path):
+    d = tmp_path / "a=b"
+    d.mkdir()
+    path = d / "cam.toml"
+    path.write_text((EXAMPLES / "paper.toml").read_text())
+    m = camkin.Mechanism.from_toml(str(path))
+    assert m.name == "cam"
+    with pytest.raises(camkin.InputError, match="cannot read mechanism file"):
+        camkin.Mechanism.from_toml(str(d / "missing.toml"))
+
+
+def test_the_bound_on_a_file_counts_the_bytes_read_not_its_reported_size():
+    # a device reports size 0; reading it must still stop at the bound
+    with pytest.raises(camkin.InputError, match="more than 8388608 bytes"):
+        camkin.Mechanism.from_toml("/dev/zero")

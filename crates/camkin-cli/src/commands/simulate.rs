@@ -61,15 +61,6 @@ fn dyn_err(e: DynamicsError) -> Failure {
     }
 }
 
-/// The follower's mass, or its inertia when it oscillates.
-fn m_eff(mech: &camkin::cam::Mechanism, params: &camkin::dynamics::FollowerDynamics) -> f64 {
-    if mech.follower().is_oscillating() {
-        params.inertia
-    } else {
-        params.mass
-    }
-}
-
 pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     if !(args.revolutions.is_finite() && args.revolutions > 0.0 && args.revolutions <= 1e4) {
         return Err(Failure::Input(anyhow!(
@@ -138,8 +129,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             camkin::human::human(step),
             args.substeps,
             camkin::human::human(rate),
-            camkin::human::human(params.damping / m_eff(&mech, &params)),
-            camkin::human::human((params.spring_stiffness / m_eff(&mech, &params)).sqrt()),
+            camkin::human::human(params.damping / params.moving_mass(&mech.follower_joint())),
+            camkin::human::human((params.spring_stiffness / params.moving_mass(&mech.follower_joint())).sqrt()),
             need
         )));
     }

@@ -4,7 +4,9 @@ Every error camkin raises is a ``CamkinError``:
 
 - ``InputError`` (also a ``ValueError``): bad input. ``.field`` names it as the mechanism file does
   (``"follower.roller_radius"``, ``"cam.profile.points[3]"``) or by the argument's name
-  (``"angles_deg"``); ``.value`` is the value given, as text (``None`` when it is missing).
+  (``"angles_deg"``); ``.value`` is the value given, as text (``None`` when it is missing);
+  ``.line`` and ``.column`` (1-based) place it in a mechanism file or TOML text (``None`` for
+  other input).
 - ``ContactError`` (also an ``ArithmeticError``): the numerics stopped, and the message says why
   (conformal contact, no convergence, a follower that cannot follow the profile).
 - ``ResourceError``: work refused up front, with the estimate; pass ``large=True`` to run it.
@@ -18,13 +20,16 @@ class CamkinError(Exception):
 
 
 class InputError(CamkinError, ValueError):
-    """Bad input: ``.field`` names the field, ``.value`` the value given (text, or None)."""
+    """Bad input: ``.field`` names the field, ``.value`` the value given (text, or None);
+    ``.line`` and ``.column`` its place in a mechanism file's text (1-based, or None)."""
 
-    def __init__(self, message, field=None, value=None):
-        super().__init__(message, field, value)
+    def __init__(self, message, field=None, value=None, line=None, column=None):
+        super().__init__(message, field, value, line, column)
         self.message = message
         self.field = field
         self.value = value
+        self.line = line
+        self.column = column
 
     def __str__(self):
         return self.message

@@ -28,6 +28,16 @@ pub struct FollowerDynamics {
 }
 
 impl FollowerDynamics {
+    /// What moves with the follower's coordinate: a slide's mass (kg), an arm's moment of
+    /// inertia about its pivot (kg·m²).
+    pub fn moving_mass(&self, joint: &crate::cam::Joint) -> f64 {
+        if joint.is_rotating() {
+            self.inertia
+        } else {
+            self.mass
+        }
+    }
+
     /// Gravity's force along a slide's coordinate, N (`m g·d`); 0 on an arm, whose mass is taken
     /// at its pivot (no gravity torque).
     pub fn gravity_along(&self, joint: &crate::cam::Joint) -> f64 {

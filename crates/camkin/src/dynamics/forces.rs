@@ -110,13 +110,8 @@ impl<'a> Forces<'a> {
         let travel = mech
             .travel()
             .map_err(|source| DynamicsError::Kinematics { source })?;
-        let oscillating = mech.follower().is_oscillating();
-        let m = if oscillating {
-            params.inertia
-        } else {
-            params.mass
-        };
-        let g = params.gravity_along(&mech.follower_joint());
+        let joint = mech.follower_joint();
+        let (m, g) = (params.moving_mass(&joint), params.gravity_along(&joint));
         Ok(Self {
             mech,
             second: mech.conjugate_side().map(|(m, _)| m),

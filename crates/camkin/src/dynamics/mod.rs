@@ -87,7 +87,7 @@ pub enum DynamicsError {
         source: crate::cam::CamError,
     },
     /// A conjugate follower's second curve cuts into the cam: a rigid follower cannot be there.
-    #[error("follower.conjugate: the second curve cuts {} {unit} into the cam at cam angle {}°: a rigid follower cannot be there; give the second curve clearance (`camkin synth` reports the play over a revolution)", crate::human::human(*.depth), crate::human::human(*.angle_deg))]
+    #[error("follower.conjugate: the second curve cuts {} {unit} into the cam at cam angle {}°: a rigid follower cannot be there; give the second curve clearance (the design checks report its play over a revolution)", crate::human::human(*.depth), crate::human::human(*.angle_deg))]
     Interference {
         /// where it cuts deepest, degrees
         angle_deg: f64,
@@ -113,7 +113,7 @@ pub enum DynamicsError {
     /// The contact jumps across a stretch of the profile the follower cannot follow (a concave
     /// stretch under a flat face, one sharper than the roller, a fold, a knife falling off a
     /// lobe): the dynamics follows one contact point continuously and cannot model the jump.
-    #[error("the contact jumps at cam angle {}: the follower cannot follow the profile there (a concave stretch under a flat face, one sharper than the roller, or a fold; `camkin analyze` flags the rows), and the dynamics follows one contact point continuously", fmt_angles(.angles_deg))]
+    #[error("the contact jumps at cam angle {}: the follower cannot follow the profile there (a concave stretch under a flat face, one sharper than the roller, or a fold; the analysis marks those rows as jumps), and the dynamics follows one contact point continuously", fmt_angles(.angles_deg))]
     ContactJumps {
         /// cam angles (degrees, in [0, 360)) of the jumps, sampled every 0.25°
         angles_deg: Vec<f64>,
@@ -121,7 +121,7 @@ pub enum DynamicsError {
     /// The follower is conjugate (form-closed, [`crate::cam::Mechanism::with_conjugate`]): its
     /// second curve takes the load where the first would lift off, which the dynamics (one
     /// contact, held on by a spring) does not model.
-    #[error("follower.conjugate: the follower is form-closed (its second curve takes the load where the first would lift off) and the dynamics models one contact held on by a spring: not modelled; `camkin analyze` and `camkin contacts` give its kinematics")]
+    #[error("follower.conjugate: the follower is form-closed (its second curve takes the load where the first would lift off) and the dynamics models one contact held on by a spring: not modelled; its kinematics and both contacts are computed by the analysis and the contact listing")]
     FormClosed,
     /// A time step too long for the follower's fastest rate (the damping's `c/m` or the spring's
     /// `√(k/m)`): the explicit integration would be unstable.

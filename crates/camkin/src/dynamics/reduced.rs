@@ -148,11 +148,7 @@ impl<'a> Reduced<'a> {
         let a = travel.away;
         let joint = mech.follower_joint();
         let (rotating, g) = (joint.is_rotating(), params.gravity_along(&joint));
-        let m = if rotating {
-            params.inertia
-        } else {
-            params.mass
-        };
+        let m = params.moving_mass(&joint);
         let o_rest = a * travel.rest;
         let mut sides = vec![Side {
             mech,

@@ -41,6 +41,8 @@ mod build;
 #[cfg(feature = "serde")]
 mod pair;
 mod profile;
+#[cfg(feature = "text")]
+pub mod text;
 
 pub use crate::field::{
     CamField, DynamicsField, Field, FollowerField, Key, ProfileField, SegmentField,
