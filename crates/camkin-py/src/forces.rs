@@ -124,6 +124,7 @@ impl PyMechanism {
             materials,
             allowable_mpa,
             unit: built.length_unit,
+            force_speed: true,
         };
         let value_of = |e: &ReportError| {
             match e.field() {
@@ -160,7 +161,7 @@ impl PyMechanism {
         let mut v = serde_json::to_value(&report)
             .map_err(|e| errors::contact(format!("the report cannot be written: {e}")))?;
         if let Some(o) = v.as_object_mut() {
-            for k in ["states", "stress_mpa", "force_speed"] {
+            for k in ["states", "stress_mpa", "force_speed", "coefficients"] {
                 o.remove(k);
             }
         }

@@ -38,21 +38,22 @@ pub struct ForcesArgs {
         long,
         value_name = "N",
         default_value_t = 0.0,
+        value_parser = crate::args::real,
         allow_negative_numbers = true
     )]
     pub margin: f64,
     /// The speed up to which the follower must stay on the cam, rpm [default: the file's].
-    #[arg(long, value_name = "RPM", allow_negative_numbers = true)]
+    #[arg(long, value_name = "RPM", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub target_rpm: Option<f64>,
     /// Face width of the contact, in the file's length unit: the Hertz contact stress.
-    #[arg(long, value_name = "LENGTH", allow_negative_numbers = true)]
+    #[arg(long, value_name = "LENGTH", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub face_width: Option<f64>,
     /// Cam and follower materials for the contact stress: presets (steel, aisi-52100,
     /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or `E=<Pa>:nu=<ν>`.
     #[arg(long, value_name = "CAM,FOLLOWER", default_value = "steel,steel")]
     pub materials: MaterialsArg,
     /// Allowable contact stress, MPa: exit 3 when the stress exceeds it.
-    #[arg(long, value_name = "MPA", allow_negative_numbers = true)]
+    #[arg(long, value_name = "MPA", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub allowable: Option<f64>,
     /// Directory for forces.csv, force_speed.csv and their plots.
     #[arg(long, value_name = "DIR")]
@@ -99,6 +100,7 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         materials: args.materials.0.clone(),
         allowable_mpa: args.allowable,
         unit,
+        force_speed: true,
     };
     req.validate(&mech).map_err(input_error)?;
     if let Some(refusal) = req.work(&mech).refusal() {

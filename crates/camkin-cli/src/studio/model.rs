@@ -8,9 +8,9 @@ use crate::draw::mechanism::{follower_shapes, Shape};
 use crate::mechfile::{self, FromText};
 use camkin::cam::Mechanism;
 use camkin::curve::Domain;
-use camkin::dynamics::Forces;
 use camkin::geometry::deg_to_rad;
 use camkin::interp::{max_and_mean, relative_errors, Interpolated};
+use camkin::report::{ForceReport, ForceRequest};
 use camkin::spec::{BuildOptions, MechanismSpec};
 use camkin::table::{AnalysisRow, AnalysisSweep, AngleUnit, Per, Units};
 use serde::Serialize;
@@ -598,36 +598,39 @@ fn dynamics(
     let (Some(params), mech) = (si.dynamics, &si.mechanism) else {
         return Ok(None);
     };
-    let forces = match Forces::new(mech, params) {
-        // the page's force panel is one contact held on by a spring (its jump speed): a
-        // form-closed follower's two contacts are `camkin forces`'s
-        Ok(f) if !f.is_form_closed() => f,
-        _ => return Ok(None),
-    };
-    let mut coefficients = Vec::with_capacity(angles.len());
-    let (mut jump, mut jump_at) = (f64::INFINITY, None);
-    // a warm sweep: a cold search at every angle would scan a large profile 720 times
-    let mut sweep = forces.sweep();
-    for &a in angles {
-        match sweep.step(deg_to_rad(a)) {
-            Ok(s) => {
-                let [c2, c1, c0] = forces.force_coefficients(&s);
-                coefficients.push(Some([c2, c1, c0, s.lever]));
-                let w = forces.leave_speed(&s, 0.0);
-                if w < jump {
-                    jump = w;
-                    jump_at = Some(a);
-                }
-            }
-            Err(_) => coefficients.push(None),
-        }
+    // the page's force panel is one contact held on by a spring (its jump speed): a
+    // form-closed follower's two contacts are `camkin forces`'s
+    if mech.is_conjugate() {
+        return Ok(None);
     }
+    // the library's force report at the page's angles (it fails as a whole where an angle
+    // fails: the analysis shows those angles)
+    let step_deg = 360.0 / angles.len().max(1) as f64;
+    let req = ForceRequest {
+        step_deg,
+        force_speed: false,
+        ..ForceRequest::default()
+    };
+    let Ok(report) = ForceReport::new(mech, params, &req) else {
+        return Ok(None);
+    };
+    let coefficients = report
+        .states
+        .iter()
+        .zip(&report.coefficients)
+        .map(|(s, c)| Some([c[0], c[1], c[2], s.lever]))
+        .collect();
+    let jump = report.jump;
     let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
     Ok(Some(DynamicsOut {
         rpm: rpm(mech.cam().speed()),
         coefficients,
-        jump_rpm: jump.is_finite().then(|| rpm(jump)),
-        jump_angle_deg: jump_at.filter(|_| jump.is_finite()),
+        jump_rpm: jump.speed.is_finite().then(|| rpm(jump.speed)),
+        jump_angle_deg: jump
+            .speed
+            .is_finite()
+            .then(|| angles.get(jump.index).copied())
+            .flatten(),
         unit: "N",
     }))
 }

@@ -30,6 +30,9 @@ pub struct ForceRequest {
     pub allowable_mpa: Option<f64>,
     /// the mechanism file's length unit (the mechanism itself is in metres)
     pub unit: LengthUnit,
+    /// the force–speed curve (151 speeds, each over every angle): a page that evaluates the
+    /// coefficients at its own speed leaves it out
+    pub force_speed: bool,
 }
 
 impl Default for ForceRequest {
@@ -42,6 +45,7 @@ impl Default for ForceRequest {
             materials: Materials::default(),
             allowable_mpa: None,
             unit: LengthUnit::M,
+            force_speed: true,
         }
     }
 }
@@ -55,6 +59,8 @@ pub struct Jump {
     pub speed: f64,
     /// the cam angle where it happens first, rad
     pub cam_angle: f64,
+    /// the index of that angle among the report's angles
+    pub index: usize,
 }
 
 /// The spring that keeps a spring-held follower on up to the target speed with the margin.
@@ -172,6 +178,9 @@ pub struct ForceReport {
     pub target: f64,
     /// the forces at each angle (SI)
     pub states: Vec<ForceState>,
+    /// per angle `[c2, c1, c0]` with `F |J| = c2 ω² + c1 ω + c0` at any constant speed ω
+    /// ([`Forces::force_coefficients`]): the contact force at any speed without asking again
+    pub coefficients: Vec<[f64; 3]>,
     /// the Hertz stress at each angle, MPa, on the own curve and the second (when asked for)
     pub stress_mpa: Vec<[Option<f64>; 2]>,
     /// the contact force's smallest and largest value (a form-closed follower's own curve)
@@ -196,7 +205,7 @@ pub struct ForceReport {
     /// the checks that failed
     pub failures: Vec<ForceCheck>,
     /// the force–speed curve: speeds (rad/s) and per speed the smallest contact force (a
-    /// form-closed follower: the largest on each curve), N
+    /// form-closed follower: the largest on each curve), N; empty when not asked for
     pub force_speed: Vec<(f64, [f64; 2])>,
 }
 
@@ -342,13 +351,15 @@ impl ForceReport {
         let mut jump = Jump {
             speed: f64::INFINITY,
             cam_angle: 0.0,
+            index: 0,
         };
-        for s in &states {
+        for (index, s) in states.iter().enumerate() {
             let v = f.leave_speed(s, req.margin);
             if v < jump.speed {
                 jump = Jump {
                     speed: v,
                     cam_angle: s.cam_angle,
+                    index,
                 };
             }
         }
@@ -383,7 +394,12 @@ impl ForceReport {
                 });
             }
         }
-        let force_speed = force_speed(&f, &states, closed, target, jump.speed);
+        let force_speed = if req.force_speed {
+            force_speed(&f, &states, closed, target, jump.speed)
+        } else {
+            Vec::new()
+        };
+        let coefficients = states.iter().map(|s| f.force_coefficients(s)).collect();
         Ok(Self {
             speed,
             accelerating: mech.cam().angular_acceleration() != 0.0,
@@ -392,6 +408,7 @@ impl ForceReport {
             margin: req.margin,
             target,
             states,
+            coefficients,
             stress_mpa,
             contact_force,
             camshaft_torque,
