@@ -37,6 +37,30 @@ fn number(what: &str, s: &str) -> Result<f64, BadValue> {
     }
 }
 
+/// The value parser of every numeric option (`#[arg(value_parser = real)]`): a finite number,
+/// a leading minus taken as a sign (the option's own check says whether a negative value is
+/// allowed), a unit typed after the number refused with a message that says so (`12mm`: the
+/// unit is the option's, written in its help).
+pub fn real(s: &str) -> Result<f64, BadValue> {
+    let t = s.trim();
+    match t.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(bad(format!("{t:?} must be finite"))),
+        Err(_) => {
+            // a number followed by letters: a unit typed with it
+            let head =
+                t.trim_end_matches(|c: char| c.is_alphabetic() || c == '/' || c == '°' || c == ' ');
+            if head.len() < t.len() && head.parse::<f64>().is_ok() {
+                Err(bad(format!(
+                    "{t:?}: write the number alone ({head}); its unit is the option's (see --help)"
+                )))
+            } else {
+                Err(bad(format!("{t:?} is not a number")))
+            }
+        }
+    }
+}
+
 /// Cam angles in degrees, comma-separated: `A1,A2,...`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AngleList(pub Vec<f64>);
@@ -247,6 +271,18 @@ mod tests {
     #[test]
     fn steps_divide_the_revolution() {
         assert_eq!("0.25".parse::<RevolutionStep>().unwrap().deg(), 0.25);
+        assert_eq!(real("-10"), Ok(-10.0));
+        assert_eq!(real(" 2.5e3 "), Ok(2500.0));
+        assert!(real("12mm")
+            .unwrap_err()
+            .0
+            .contains("write the number alone (12)"));
+        assert!(real("3000 rpm")
+            .unwrap_err()
+            .0
+            .contains("write the number alone (3000)"));
+        assert!(real("inf").unwrap_err().0.contains("finite"));
+        assert!(real("mm").unwrap_err().0.contains("is not a number"));
         for bad in ["0", "-1", "7", "91", "1e-6", "nan", "x"] {
             assert!(bad.parse::<RevolutionStep>().is_err(), "{bad:?} accepted");
         }

@@ -30,7 +30,7 @@ pub struct DeviationArgs {
     pub against: PathBuf,
     /// RMS noise of the measurement, in the file's length unit: the smoothing keeps the fewest
     /// harmonics that fit the points within it [default: 1e-4 of the cam's size].
-    #[arg(long, value_name = "LENGTH")]
+    #[arg(long, value_name = "LENGTH", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
     /// Cam-angle step of the comparison, degrees.
     #[arg(long, value_name = "DEG", default_value = "1")]

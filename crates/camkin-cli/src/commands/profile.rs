@@ -19,11 +19,11 @@ pub struct ProfileArgs {
     pub step: RevolutionStep,
     /// Radius of the cutter or grinding wheel, in the file's length unit: its centre path
     /// (cutter.csv, layer CUTTER of profile.dxf) and where it cannot cut the profile.
-    #[arg(long, value_name = "R")]
+    #[arg(long, value_name = "R", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub tool_radius: Option<f64>,
     /// Largest distance of the DXF's arcs from the exact curves, in the file's length unit
     /// [default: 1e-6 of the cam's size].
-    #[arg(long, value_name = "LENGTH")]
+    #[arg(long, value_name = "LENGTH", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
     /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]

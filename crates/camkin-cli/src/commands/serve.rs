@@ -36,7 +36,7 @@ pub struct ReportArgs {
     #[arg(long, value_name = "DEG", default_value = "0.5")]
     pub step: RevolutionStep,
     /// Pressure-angle limit of the checks, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 30.0)]
+    #[arg(long, value_name = "DEG", default_value_t = 30.0, value_parser = crate::args::real, allow_negative_numbers = true)]
     pub pressure_limit: f64,
 }
 

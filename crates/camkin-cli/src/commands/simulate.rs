@@ -19,7 +19,7 @@ pub struct SimulateArgs {
     /// Mechanism file (TOML) with a `[dynamics]` section.
     pub mechanism: PathBuf,
     /// Cam revolutions to simulate.
-    #[arg(long, value_name = "N", default_value_t = 1.0)]
+    #[arg(long, value_name = "N", default_value_t = 1.0, value_parser = crate::args::real, allow_negative_numbers = true)]
     pub revolutions: f64,
     /// Output interval, degrees of cam angle.
     #[arg(long, value_name = "DEG", default_value = "1")]
@@ -29,7 +29,8 @@ pub struct SimulateArgs {
         long,
         value_name = "DEG",
         default_value_t = 0.0,
-        allow_hyphen_values = true
+        value_parser = crate::args::real,
+        allow_negative_numbers = true
     )]
     pub start_angle: f64,
     /// Integration steps per output interval.

@@ -20,7 +20,7 @@ pub struct SynthArgs {
     #[arg(long, value_name = "DEG", default_value = "0.5")]
     pub step: RevolutionStep,
     /// Largest acceptable pressure angle, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 30.0)]
+    #[arg(long, value_name = "DEG", default_value_t = 30.0, value_parser = crate::args::real, allow_negative_numbers = true)]
     pub pressure_limit: f64,
     /// Derivatives on the SVAJ page per second of time, or per degree of cam angle.
     #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
@@ -30,7 +30,7 @@ pub struct SynthArgs {
     pub angle_unit: AngleUnit,
     /// Radius of the cutter or grinding wheel whose centre path to write (cutter.csv and a
     /// layer of profile.dxf), in the file's length unit.
-    #[arg(long, value_name = "R")]
+    #[arg(long, value_name = "R", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub tool_radius: Option<f64>,
     /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
     #[arg(long)]

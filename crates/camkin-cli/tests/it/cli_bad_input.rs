@@ -709,3 +709,56 @@ fn every_sweeping_command_refuses_gigabytes_up_front_with_one_sentence() {
         );
     }
 }
+
+/// Issue 49, item 5 (a class): every numeric option takes a leading minus as a sign (the option's
+/// own check then names it, not "unexpected argument") and refuses a unit typed with the number,
+/// saying so; exit 2 either way.
+#[test]
+fn numeric_options_take_a_sign_and_refuse_a_unit_in_the_number() {
+    let dynamics = examples().join("eccentric-flat-dynamics.toml");
+    let dynamics = dynamics.to_str().unwrap();
+    let motion = examples().join("motion-roller.toml");
+    let motion = motion.to_str().unwrap();
+    let measured = examples().join("measured-eccentric.csv");
+    let measured = measured.to_str().unwrap();
+    let ecc = examples().join("eccentric-roller.toml");
+    let ecc = ecc.to_str().unwrap();
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["forces", dynamics], "--margin"),
+        (vec!["forces", dynamics], "--target-rpm"),
+        (vec!["forces", dynamics], "--face-width"),
+        (vec!["forces", dynamics], "--allowable"),
+        (vec!["simulate", dynamics], "--revolutions"),
+        (vec!["synth", motion], "--pressure-limit"),
+        (vec!["synth", motion], "--tool-radius"),
+        (vec!["profile", ecc], "--tool-radius"),
+        (vec!["profile", ecc], "--tolerance"),
+        (vec!["deviation", measured, "--against", ecc], "--tolerance"),
+    ];
+    for (head, flag) in &cases {
+        let out = camkin()
+            .args(head)
+            .args([*flag, "12mm"])
+            .assert()
+            .code(2)
+            .get_output()
+            .clone();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("write the number alone (12)") && err.contains(flag),
+            "{flag} 12mm: {err}"
+        );
+        let out = camkin()
+            .args(head)
+            .args([*flag, "-7"])
+            .assert()
+            .code(2)
+            .get_output()
+            .clone();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !err.contains("unexpected argument") && err.contains(flag) && err.contains("-7"),
+            "{flag} -7: {err}"
+        );
+    }
+}
