@@ -1,6 +1,7 @@
 //! The analysis table's columns with their units (`camkin analyze`, the Python package's
 //! `Mechanism.analyze`): [`AnalysisRow`] converted and named by [`Units`].
 
+use super::column::{cells, fixed, named, names, Col};
 use super::units::Units;
 use super::AnalysisRow;
 
@@ -33,110 +34,104 @@ impl serde::Serialize for Cell {
     }
 }
 
+/// What an analysis row's cells share: its motion in the table's units.
+pub(crate) struct A {
+    /// position, velocity, acceleration, jerk converted ([`Units::motion`])
+    m: [Option<f64>; 4],
+    /// the lift and a conjugate's play in the position's unit
+    lift: Option<f64>,
+    play: Option<f64>,
+}
+
+/// The analysis table (`camkin analyze`, `Mechanism.analyze`): each column once.
+static ANALYSIS: &[Col<AnalysisRow, A>] = &[
+    fixed!("angle_deg", |r, _| Cell::Num(Some(r.angle_deg))),
+    named!(|u| format!("position_{}", u.motion_key(0)), |_, x| {
+        Cell::Num(x.m[0])
+    }),
+    named!(|u| format!("lift_{}", u.motion_key(0)), |_, x| {
+        Cell::Num(x.lift)
+    }),
+    named!(|u| format!("velocity_{}", u.motion_key(1)), |_, x| {
+        Cell::Num(x.m[1])
+    }),
+    named!(|u| format!("acceleration_{}", u.motion_key(2)), |_, x| {
+        Cell::Num(x.m[2])
+    }),
+    named!(|u| format!("jerk_{}", u.motion_key(3)), |_, x| Cell::Num(
+        x.m[3]
+    )),
+    named!(|u| format!("contact_x_{}", u.len()), |r, _| Cell::Num(
+        r.contact_x
+    )),
+    named!(|u| format!("contact_y_{}", u.len()), |r, _| Cell::Num(
+        r.contact_y
+    )),
+    named!(|u| format!("cam_x_{}", u.len()), |r, _| Cell::Num(r.cam_x)),
+    named!(|u| format!("cam_y_{}", u.len()), |r, _| Cell::Num(r.cam_y)),
+    fixed!("cam_param", |r, _| Cell::Num(r.cam_param)),
+    named!(|u| format!("sliding_rate_cam_{}_s", u.len()), |r, _| {
+        Cell::Num(r.sliding_rate_cam)
+    }),
+    named!(
+        |u| format!("sliding_rate_follower_{}_s", u.len()),
+        |r, _| { Cell::Num(r.sliding_rate_follower) }
+    ),
+    named!(|u| format!("normal_accel_cam_{}_s2", u.len()), |r, _| {
+        Cell::Num(r.normal_accel_cam)
+    }),
+    named!(
+        |u| format!("coriolis_cam_{}_s2", u.len()),
+        |r, _| Cell::Num(r.coriolis_cam)
+    ),
+    named!(
+        |u| format!("relative_cam_{}_s2", u.len()),
+        |r, _| Cell::Num(r.relative_cam)
+    ),
+    named!(
+        |u| format!("normal_accel_follower_{}_s2", u.len()),
+        |r, _| { Cell::Num(r.normal_accel_follower) }
+    ),
+    fixed!("normal_x", |r, _| Cell::Num(r.normal_x)),
+    fixed!("normal_y", |r, _| Cell::Num(r.normal_y)),
+    fixed!("sigma", |r, _| Cell::Num(r.sigma)),
+    fixed!("pressure_angle_deg", |r, _| Cell::Num(r.pressure_angle_deg)),
+    named!(|u| format!("radius_of_curvature_{}", u.len()), |r, _| {
+        Cell::Num(r.radius_of_curvature)
+    }),
+    Col {
+        name: |_| "corner".into(),
+        when: |u| u.carried,
+        cell: |r, _| Cell::Text(r.corner.map(str::to_string)),
+    },
+    Col {
+        name: |u| format!("conjugate_play_{}", u.motion_key(0)),
+        when: |u| u.conjugate,
+        cell: |_, x| Cell::Num(x.play),
+    },
+    fixed!("at_node", |r, _| Cell::Int(r.at_node)),
+    fixed!("found", |r, _| Cell::Text(
+        r.found.map(|f| f.name().to_string())
+    )),
+    fixed!("error", |r, _| Cell::Text(r.error.clone())),
+];
+
 /// The column names of the analysis table, each with its unit.
 pub fn analysis_columns(u: &Units) -> Vec<String> {
-    let l = u.len();
-    let mut c = vec![
-        "angle_deg".to_string(),
-        format!("position_{}", u.motion_key(0)),
-        format!("lift_{}", u.motion_key(0)),
-        format!("velocity_{}", u.motion_key(1)),
-        format!("acceleration_{}", u.motion_key(2)),
-        format!("jerk_{}", u.motion_key(3)),
-    ];
-    for name in ["contact_x", "contact_y", "cam_x", "cam_y"] {
-        c.push(format!("{name}_{l}"));
-    }
-    c.push("cam_param".into());
-    c.push(format!("sliding_rate_cam_{l}_s"));
-    c.push(format!("sliding_rate_follower_{l}_s"));
-    for name in [
-        "normal_accel_cam",
-        "coriolis_cam",
-        "relative_cam",
-        "normal_accel_follower",
-    ] {
-        c.push(format!("{name}_{l}_s2"));
-    }
-    for name in ["normal_x", "normal_y", "sigma", "pressure_angle_deg"] {
-        c.push(name.into());
-    }
-    c.push(format!("radius_of_curvature_{l}"));
-    if u.carried {
-        c.push("corner".into());
-    }
-    if u.conjugate {
-        c.push(format!("conjugate_play_{}", u.motion_key(0)));
-    }
-    for name in ["at_node", "found", "error"] {
-        c.push(name.into());
-    }
-    c
+    names(ANALYSIS, u)
 }
 
 /// One row's cells, in the order of [`analysis_columns`].
 pub fn analysis_cells(r: &AnalysisRow, u: &Units) -> Vec<Cell> {
-    let n = Cell::Num;
     let m = match (r.position, r.velocity, r.acceleration) {
         (Some(q), Some(v), Some(a)) => u.motion(q, v, a, r.jerk),
         _ => [None; 4],
     };
-    let lift = r.lift.map(|l| u.coord_value(l));
-    let mut cells = vec![
-        n(Some(r.angle_deg)),
-        n(m[0]),
-        n(lift),
-        n(m[1]),
-        n(m[2]),
-        n(m[3]),
-        n(r.contact_x),
-        n(r.contact_y),
-        n(r.cam_x),
-        n(r.cam_y),
-        n(r.cam_param),
-        n(r.sliding_rate_cam),
-        n(r.sliding_rate_follower),
-        n(r.normal_accel_cam),
-        n(r.coriolis_cam),
-        n(r.relative_cam),
-        n(r.normal_accel_follower),
-        n(r.normal_x),
-        n(r.normal_y),
-        n(r.sigma),
-        n(r.pressure_angle_deg),
-        n(r.radius_of_curvature),
-    ];
-    if u.carried {
-        cells.push(Cell::Text(r.corner.map(str::to_string)));
-    }
-    if u.conjugate {
-        cells.push(n(r.conjugate_play.map(|p| u.coord_value(p))));
-    }
-    cells.extend([
-        Cell::Int(r.at_node),
-        Cell::Text(r.found.map(|f| f.name().to_string())),
-        Cell::Text(r.error.clone()),
-    ]);
-    cells
-}
-
-/// The column names of a simulation's time series (`camkin simulate`), each with its unit.
-pub fn sample_columns(u: &Units) -> Vec<String> {
-    let mut c: Vec<String> = vec![
-        "time_s".into(),
-        "cam_angle_deg".into(),
-        format!("position_{}", u.motion_key(0)),
-        format!("velocity_{}", u.motion_key(1)),
-        format!("acceleration_{}", u.motion_key(2)),
-        "contact_force_N".into(),
-        "in_contact".into(),
-        format!("kinematic_position_{}", u.motion_key(0)),
-        format!("kinematic_acceleration_{}", u.motion_key(2)),
-    ];
-    if u.conjugate {
-        c.push("on_conjugate".into());
-    }
-    c
+    let (lift, play) = (
+        r.lift.map(|l| u.coord_value(l)),
+        r.conjugate_play.map(|p| u.coord_value(p)),
+    );
+    cells(ANALYSIS, u, r, &A { m, lift, play })
 }
 
 /// Lengths of a simulation (metres) in the mechanism file's unit: the factor.
@@ -146,6 +141,48 @@ fn from_metres(u: &Units) -> f64 {
     } else {
         1.0 / u.length.metres()
     }
+}
+
+/// What a simulation sample's cells share: its motion and the kinematic motion in the table's
+/// units.
+pub(crate) struct S {
+    m: [Option<f64>; 4],
+    km: [Option<f64>; 4],
+}
+
+/// A simulation's time series (`camkin simulate`): each column once.
+static SAMPLES: &[Col<super::SampleRow, S>] = &[
+    fixed!("time_s", |r, _| Cell::Num(Some(r.time))),
+    fixed!("cam_angle_deg", |r, _| Cell::Num(Some(r.cam_angle_deg))),
+    named!(|u| format!("position_{}", u.motion_key(0)), |_, x| {
+        Cell::Num(x.m[0])
+    }),
+    named!(|u| format!("velocity_{}", u.motion_key(1)), |_, x| {
+        Cell::Num(x.m[1])
+    }),
+    named!(|u| format!("acceleration_{}", u.motion_key(2)), |_, x| {
+        Cell::Num(x.m[2])
+    }),
+    fixed!("contact_force_N", |r, _| Cell::Num(Some(r.contact_force))),
+    fixed!("in_contact", |r, _| Cell::Int(Some(r.in_contact))),
+    named!(
+        |u| format!("kinematic_position_{}", u.motion_key(0)),
+        |_, x| { Cell::Num(x.km[0]) }
+    ),
+    named!(
+        |u| format!("kinematic_acceleration_{}", u.motion_key(2)),
+        |_, x| { Cell::Num(x.km[2]) }
+    ),
+    Col {
+        name: |_| "on_conjugate".into(),
+        when: |u| u.conjugate,
+        cell: |r, _| Cell::Int(Some(r.on_conjugate)),
+    },
+];
+
+/// The column names of a simulation's time series (`camkin simulate`), each with its unit.
+pub fn sample_columns(u: &Units) -> Vec<String> {
+    names(SAMPLES, u)
 }
 
 /// One sample's cells, in the order of [`sample_columns`] (the simulation ran in metres; lengths
@@ -159,47 +196,30 @@ pub fn sample_cells(r: &super::SampleRow, u: &Units) -> Vec<Cell> {
         k * r.kinematic_acceleration,
         None,
     );
-    let mut cells = vec![
-        Cell::Num(Some(r.time)),
-        Cell::Num(Some(r.cam_angle_deg)),
-        Cell::Num(m[0]),
-        Cell::Num(m[1]),
-        Cell::Num(m[2]),
-        Cell::Num(Some(r.contact_force)),
-        Cell::Int(Some(r.in_contact)),
-        Cell::Num(km[0]),
-        Cell::Num(km[2]),
-    ];
-    if u.conjugate {
-        cells.push(Cell::Int(Some(r.on_conjugate)));
-    }
-    cells
+    cells(SAMPLES, u, r, &S { m, km })
 }
+
+/// A simulation's events: each column once.
+static EVENTS: &[Col<super::EventRow, f64>] = &[
+    fixed!("event", |r, _| Cell::Text(Some(r.event.to_string()))),
+    fixed!("time_s", |r, _| Cell::Num(Some(r.time))),
+    fixed!("cam_angle_deg", |r, _| Cell::Num(Some(r.cam_angle_deg))),
+    named!(|u| format!("impact_velocity_{}_s", u.len()), |r, x| {
+        Cell::Num(Some(r.impact_velocity / x))
+    }),
+    Col {
+        name: |_| "curve".into(),
+        when: |u| u.conjugate,
+        cell: |r, _| Cell::Text(Some(r.curve.to_string())),
+    },
+];
 
 /// The column names of a simulation's events.
 pub fn event_columns(u: &Units) -> Vec<String> {
-    let mut c: Vec<String> = vec![
-        "event".into(),
-        "time_s".into(),
-        "cam_angle_deg".into(),
-        format!("impact_velocity_{}_s", u.len()),
-    ];
-    if u.conjugate {
-        c.push("curve".into());
-    }
-    c
+    names(EVENTS, u)
 }
 
 /// One event's cells, in the order of [`event_columns`].
 pub fn event_cells(e: &super::EventRow, u: &Units) -> Vec<Cell> {
-    let mut cells = vec![
-        Cell::Text(Some(e.event.to_string())),
-        Cell::Num(Some(e.time)),
-        Cell::Num(Some(e.cam_angle_deg)),
-        Cell::Num(Some(e.impact_velocity / u.length.metres())),
-    ];
-    if u.conjugate {
-        cells.push(Cell::Text(Some(e.curve.to_string())));
-    }
-    cells
+    cells(EVENTS, u, e, &u.length.metres())
 }

@@ -2,6 +2,7 @@
 //! [`ContactRow`] per contact per cam angle, from [`Mechanism::contacts_at`](crate::cam::Mechanism::contacts_at),
 //! with its columns named and converted by [`Units`].
 
+use super::column::{cells, fixed, named, names, Col};
 use super::columns::Cell;
 use super::units::Units;
 use crate::cam::{CamError, Contact};
@@ -100,65 +101,68 @@ impl ContactRow {
     }
 }
 
-/// The column names of the contacts table, each with its unit.
+/// The contact table (`camkin contacts`, `Mechanism.contacts`): each column once.
+static CONTACTS: &[Col<ContactRow, ()>] = &[
+    fixed!("angle_deg", |r, _| Cell::Num(Some(r.angle_deg))),
+    fixed!("contact", |r, _| Cell::Count(r.contact)),
+    fixed!("curve", |r, _| Cell::Text(r.curve.map(str::to_string))),
+    fixed!("cam_param", |r, _| Cell::Num(r.cam_param)),
+    fixed!("follower_param", |r, _| Cell::Num(r.follower_param)),
+    named!(|u| format!("x_{}", u.len()), |r, _| Cell::Num(r.x)),
+    named!(|u| format!("y_{}", u.len()), |r, _| Cell::Num(r.y)),
+    fixed!("normal_x", |r, _| Cell::Num(r.normal_x)),
+    fixed!("normal_y", |r, _| Cell::Num(r.normal_y)),
+    named!(|u| format!("gap_{}", u.len()), |r, _| Cell::Num(r.gap)),
+    named!(|u| format!("normal_velocity_{}_s", u.len()), |r, _| {
+        Cell::Num(r.normal_velocity)
+    }),
+    named!(|u| format!("sliding_rate_cam_{}_s", u.len()), |r, _| {
+        Cell::Num(r.sliding_rate_cam)
+    }),
+    named!(
+        |u| format!("sliding_rate_follower_{}_s", u.len()),
+        |r, _| { Cell::Num(r.sliding_rate_follower) }
+    ),
+    named!(
+        |u| format!("normal_acceleration_cam_{}_s2", u.len()),
+        |r, _| { Cell::Num(r.normal_acceleration_cam) }
+    ),
+    named!(
+        |u| format!("normal_acceleration_follower_{}_s2", u.len()),
+        |r, _| { Cell::Num(r.normal_acceleration_follower) }
+    ),
+    named!(
+        |u| format!("row_cam_{}_per_rad", u.len()),
+        |r, _| Cell::Num(r.row_cam)
+    ),
+    named!(
+        |u| format!(
+            "row_follower_{}_per_{}",
+            u.len(),
+            if u.oscillating { "rad" } else { u.len() }
+        ),
+        |r, _| Cell::Num(r.row_follower)
+    ),
+    named!(|u| format!("gamma_{}_s2", u.len()), |r, _| Cell::Num(
+        r.gamma
+    )),
+    named!(|u| format!("residual_{}_s2", u.len()), |r, _| Cell::Num(
+        r.residual
+    )),
+    Col {
+        name: |_| "corner".into(),
+        when: |u| u.carried,
+        cell: |r, _| Cell::Text(r.corner.map(str::to_string)),
+    },
+    fixed!("error", |r, _| Cell::Text(r.error.clone())),
+];
+
+/// The column names of the contact table, each with its unit.
 pub fn contact_columns(u: &Units) -> Vec<String> {
-    let l = u.len();
-    let q = if u.oscillating { "rad" } else { l };
-    let mut c: Vec<String> = vec![
-        "angle_deg".into(),
-        "contact".into(),
-        "curve".into(),
-        "cam_param".into(),
-        "follower_param".into(),
-        format!("x_{l}"),
-        format!("y_{l}"),
-        "normal_x".into(),
-        "normal_y".into(),
-        format!("gap_{l}"),
-        format!("normal_velocity_{l}_s"),
-        format!("sliding_rate_cam_{l}_s"),
-        format!("sliding_rate_follower_{l}_s"),
-        format!("normal_acceleration_cam_{l}_s2"),
-        format!("normal_acceleration_follower_{l}_s2"),
-        format!("row_cam_{l}_per_rad"),
-        format!("row_follower_{l}_per_{q}"),
-        format!("gamma_{l}_s2"),
-        format!("residual_{l}_s2"),
-    ];
-    if u.carried {
-        c.push("corner".into());
-    }
-    c.push("error".into());
-    c
+    names(CONTACTS, u)
 }
 
 /// One row's cells, in the order of [`contact_columns`].
 pub fn contact_cells(r: &ContactRow, u: &Units) -> Vec<Cell> {
-    let n = Cell::Num;
-    let mut cells = vec![
-        n(Some(r.angle_deg)),
-        Cell::Count(r.contact),
-        Cell::Text(r.curve.map(str::to_string)),
-        n(r.cam_param),
-        n(r.follower_param),
-        n(r.x),
-        n(r.y),
-        n(r.normal_x),
-        n(r.normal_y),
-        n(r.gap),
-        n(r.normal_velocity),
-        n(r.sliding_rate_cam),
-        n(r.sliding_rate_follower),
-        n(r.normal_acceleration_cam),
-        n(r.normal_acceleration_follower),
-        n(r.row_cam),
-        n(r.row_follower),
-        n(r.gamma),
-        n(r.residual),
-    ];
-    if u.carried {
-        cells.push(Cell::Text(r.corner.map(str::to_string)));
-    }
-    cells.push(Cell::Text(r.error.clone()));
-    cells
+    cells(CONTACTS, u, r, &())
 }

@@ -1,6 +1,7 @@
 //! The gear-mesh table (`camkin mesh`): one [`MeshRow`] per driver angle, read from a gear pair's
 //! [`MeshState`](crate::gears::MeshState), with its columns named and converted by [`Units`].
 
+use super::column::{fixed, named, names, Col};
 use super::columns::Cell;
 use super::units::Units;
 use super::FoundBy;
@@ -106,63 +107,69 @@ impl MeshRow {
 const MICRO: f64 = 1e6;
 
 /// The column names of the mesh table, each with its unit (transmission error and its rates in
-/// µrad).
-pub fn mesh_columns(u: &Units) -> Vec<String> {
-    let l = u.len();
-    vec![
-        "angle_deg".into(),
-        "driven_angle_deg".into(),
-        "speed_ratio".into(),
-        "driven_acceleration_rad_s2".into(),
-        "transmission_error_urad".into(),
-        format!("transmission_error_{l}"),
-        "transmission_error_rate_urad_s".into(),
-        "transmission_error_acceleration_urad_s2".into(),
-        "driver_tooth".into(),
-        "driven_tooth".into(),
-        "driver_flank".into(),
-        "on_flanks".into(),
-        "pairs_in_contact".into(),
-        format!("line_of_action_{l}"),
-        format!("line_of_action_offset_{l}"),
-        format!("sliding_velocity_{l}_s"),
-        "specific_sliding_driver".into(),
-        "specific_sliding_driven".into(),
-        "found".into(),
-        "error".into(),
-    ]
-}
-
-/// One row's cells, in the order of [`mesh_columns`].
-pub fn mesh_cells(r: &MeshRow) -> Vec<Cell> {
-    let n = Cell::Num;
-    let micro = |x: Option<f64>| x.map(|x| x * MICRO);
-    vec![
-        n(Some(r.angle_deg)),
-        n(r.driven_angle.map(f64::to_degrees)),
-        n(r.speed_ratio),
-        n(r.driven_acceleration),
-        n(micro(r.transmission_error)),
-        n(r.transmission_error_length),
-        n(micro(r.transmission_error_rate)),
-        n(micro(r.transmission_error_acceleration)),
-        Cell::Count(r.driver_tooth),
-        Cell::Count(r.driven_tooth),
+/// The mesh table (`camkin mesh`, `Mechanism.mesh`): each column once.
+static MESH: &[Col<MeshRow, ()>] = &[
+    fixed!("angle_deg", |r, _| Cell::Num(Some(r.angle_deg))),
+    fixed!("driven_angle_deg", |r, _| {
+        Cell::Num(r.driven_angle.map(f64::to_degrees))
+    }),
+    fixed!("speed_ratio", |r, _| Cell::Num(r.speed_ratio)),
+    fixed!("driven_acceleration_rad_s2", |r, _| {
+        Cell::Num(r.driven_acceleration)
+    }),
+    fixed!("transmission_error_urad", |r, _| {
+        Cell::Num(r.transmission_error.map(|x| x * MICRO))
+    }),
+    named!(|u| format!("transmission_error_{}", u.len()), |r, _| {
+        Cell::Num(r.transmission_error_length)
+    }),
+    fixed!("transmission_error_rate_urad_s", |r, _| {
+        Cell::Num(r.transmission_error_rate.map(|x| x * MICRO))
+    }),
+    fixed!("transmission_error_acceleration_urad_s2", |r, _| {
+        Cell::Num(r.transmission_error_acceleration.map(|x| x * MICRO))
+    }),
+    fixed!("driver_tooth", |r, _| Cell::Count(r.driver_tooth)),
+    fixed!("driven_tooth", |r, _| Cell::Count(r.driven_tooth)),
+    fixed!("driver_flank", |r, _| {
         Cell::Text(r.driver_flank.map(|f| {
             match f {
                 FlankSide::Clockwise => "cw",
                 FlankSide::CounterClockwise => "ccw",
             }
             .to_string()
-        })),
-        Cell::Flag(r.on_flanks),
-        Cell::Count(r.pairs_in_contact),
-        n(r.line_of_action),
-        n(r.line_of_action_offset),
-        n(r.sliding_velocity),
-        n(r.specific_sliding_driver),
-        n(r.specific_sliding_driven),
-        Cell::Text(r.found.map(|f| f.name().to_string())),
-        Cell::Text(r.error.clone()),
-    ]
+        }))
+    }),
+    fixed!("on_flanks", |r, _| Cell::Flag(r.on_flanks)),
+    fixed!("pairs_in_contact", |r, _| Cell::Count(r.pairs_in_contact)),
+    named!(|u| format!("line_of_action_{}", u.len()), |r, _| {
+        Cell::Num(r.line_of_action)
+    }),
+    named!(|u| format!("line_of_action_offset_{}", u.len()), |r, _| {
+        Cell::Num(r.line_of_action_offset)
+    }),
+    named!(|u| format!("sliding_velocity_{}_s", u.len()), |r, _| {
+        Cell::Num(r.sliding_velocity)
+    }),
+    fixed!("specific_sliding_driver", |r, _| {
+        Cell::Num(r.specific_sliding_driver)
+    }),
+    fixed!("specific_sliding_driven", |r, _| {
+        Cell::Num(r.specific_sliding_driven)
+    }),
+    fixed!("found", |r, _| Cell::Text(
+        r.found.map(|f| f.name().to_string())
+    )),
+    fixed!("error", |r, _| Cell::Text(r.error.clone())),
+];
+
+/// The column names of the mesh table, each with its unit.
+pub fn mesh_columns(u: &Units) -> Vec<String> {
+    names(MESH, u)
+}
+
+/// One row's cells, in the order of [`mesh_columns`].
+pub fn mesh_cells(r: &MeshRow) -> Vec<Cell> {
+    // no mesh column depends on the units for its cell or its presence
+    MESH.iter().map(|c| (c.cell)(r, &())).collect()
 }

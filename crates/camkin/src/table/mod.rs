@@ -5,6 +5,7 @@
 //! Rows keep the library's units: angles in degrees where the column name says `_deg`, lengths in
 //! the mechanism's length unit, time in seconds. Numbers are not rounded.
 
+mod column;
 mod columns;
 mod contacts;
 mod mesh;
