@@ -25,7 +25,7 @@
 //! series. The third derivative uses the law's fourth ([`crate::motion::Law::snap`]).
 
 use super::follower::envelope::{jet_recip, Envelope};
-use super::follower::{Kind, Model};
+use super::follower::{Kind as _, Model, Synthesis as _};
 use super::jet::{scale, Jet};
 use super::{CamError, Follower, Sense};
 use crate::curve::{Curve, Derivs, Domain};

@@ -17,7 +17,7 @@
 //! joint moves.
 
 use super::envelope::Envelope;
-use super::{Joint, Kind, Model, Sense};
+use super::{Joint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::CamError;
@@ -58,6 +58,12 @@ impl Kind for CarriedJoint {
     fn concave_limit(&self) -> Option<f64> {
         None
     }
+}
+
+/// No closed-form rates: the paper's method gives them.
+impl Rates for CarriedJoint {}
+
+impl Synthesis for CarriedJoint {
     fn synthesis_start(&self, _base_radius: f64) -> Result<f64, CamError> {
         Err(CamError::Invalid {
             field: Field::Follower(FollowerField::Kind),

@@ -1,10 +1,37 @@
-//! What a follower kind implements ([`Kind`]: first-touch geometry, the tangency residual Newton
-//! solves, rates, synthesis envelope, joint), and the one enum of the kinds with its dispatch.
+//! What a follower kind implements: [`Kind`] (joint, curve, first-touch geometry, the tangency
+//! residual Newton solves) with [`Rates`] (closed-form rates) and [`Synthesis`] (the envelope a
+//! motion program is synthesised through); and the one enum of the kinds with its dispatch.
 
 use super::*;
 
-/// What each follower kind implements, once, in its own file.
-pub(crate) trait Kind {
+/// A kind's rates in closed form: the motion-only path of a warm step.
+pub(crate) trait Rates {
+    /// The follower's velocity `q̇`, acceleration `q̈` and the cam parameter's rate `u̇`, as
+    /// `[q̇, q̈, u̇]`, at the converged first touch `c` at position `q`, in closed form from the
+    /// tangency conditions differentiated in time (see the `rates` module): the motion-only
+    /// path. `None` for a kind without them, or where a denominator is within `refuse` of zero
+    /// (the caller then runs the paper's method, which refuses with its reason or answers).
+    fn rates(&self, _c: &CamPoint, _q: &Pose, _refuse: &Refusals) -> Option<[f64; 3]> {
+        None
+    }
+}
+
+/// What a kind gives the synthesis of a profile from a motion program.
+pub(crate) trait Synthesis {
+    /// Synthesis: the follower's position `q₀` (length, or arm angle) where it rests on the base
+    /// circle of radius `base_radius` (the program's zero).
+    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError>;
+    /// Synthesis: the profile point touching the follower at cam angle `u`, with `s` the
+    /// program's value and four derivatives (`s₀` added to the value), `σ` the cam's sense and
+    /// `rot = R(−σu)`.
+    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rotation) -> Envelope;
+}
+
+/// What each follower kind implements, once, in its own file: its joint and curve, the
+/// first-touch geometry (the score of a cam point, its bounds for pruning, the tangency residual
+/// Newton solves and its Jacobian), with its closed-form rates and its synthesis envelope as the
+/// supertraits [`Rates`] and [`Synthesis`].
+pub(crate) trait Kind: Rates + Synthesis {
     /// The joint that carries the follower.
     fn joint(&self) -> Joint;
     /// The contact curve in the follower's frame, oriented material-on-the-left.
@@ -77,14 +104,6 @@ pub(crate) trait Kind {
     /// cam's outward normal must point at a genuine touch (the cam's back side, or a roller
     /// touching from inside, fail this).
     fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2;
-    /// The follower's velocity `q̇`, acceleration `q̈` and the cam parameter's rate `u̇`, as
-    /// `[q̇, q̈, u̇]`, at the converged first touch `c` at position `q`, in closed form from the
-    /// tangency conditions differentiated in time (see the `rates` module): the motion-only
-    /// path. `None` for a kind without them, or where a denominator is within `refuse` of zero
-    /// (the caller then runs the paper's method, which refuses with its reason or answers).
-    fn rates(&self, _c: &CamPoint, _q: &Pose, _refuse: &Refusals) -> Option<[f64; 3]> {
-        None
-    }
     /// Refuses a follower that can never touch a cam reaching `size` from its axis.
     fn check_reach(&self, _size: f64) -> Result<(), CamError> {
         Ok(())
@@ -104,13 +123,6 @@ pub(crate) trait Kind {
     fn roller_radius(&self) -> Option<f64> {
         None
     }
-    /// Synthesis: the follower's position `q₀` (length, or arm angle) where it rests on the base
-    /// circle of radius `base_radius` (the program's zero).
-    fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError>;
-    /// Synthesis: the profile point touching the follower at cam angle `u`, with `s` the
-    /// program's value and four derivatives (`s₀` added to the value), `σ` the cam's sense and
-    /// `rot = R(−σu)`.
-    fn envelope(&self, s: &[f64; 5], s0: f64, u: f64, sigma: f64, rot: &Rotation) -> Envelope;
 }
 
 /// A follower kind with its derived data: one variant per kind.
@@ -189,10 +201,6 @@ impl Kind for Model {
     fn newton_step(&self, e: &WorldDerivs, q: &Pose) -> [f64; 2] {
         dispatch!(self, k => k.newton_step(e, q))
     }
-    #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
-        dispatch!(self, k => k.rates(c, q, refuse))
-    }
     #[inline]
     fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2 {
         dispatch!(self, k => k.toward_follower(c, q))
@@ -209,6 +217,16 @@ impl Kind for Model {
     fn roller_radius(&self) -> Option<f64> {
         dispatch!(self, k => k.roller_radius())
     }
+}
+
+impl Rates for Model {
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        dispatch!(self, k => k.rates(c, q, refuse))
+    }
+}
+
+impl Synthesis for Model {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         dispatch!(self, k => k.synthesis_start(base_radius))
     }

@@ -32,7 +32,7 @@ mod translating_roller;
 pub(crate) use centre_path::{pitch_point, CentrePath};
 pub use curve::FollowerCurve;
 pub use joint::Joint;
-pub(crate) use kind::{dispatch, Kind, Model};
+pub(crate) use kind::{dispatch, Kind, Model, Rates, Synthesis};
 
 use super::jet::{Num, V2};
 use super::pose::Pose;

@@ -4,7 +4,7 @@
 
 use super::envelope::{jet_recip, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{scale, Jet, Num, V2};
 use crate::cam::pose::Pose;
@@ -118,6 +118,18 @@ impl Kind for OscillatingFlat {
         let inv_det = 1.0 / (a * d - b * c);
         [(b * g - d * f) * inv_det, (c * f - a * g) * inv_det]
     }
+    #[inline]
+    fn toward_follower(&self, _c: Point2, q: &Pose) -> Vec2 {
+        let (s, co) = (q.sin, q.cos);
+        // cw closing (sign −1): the cam is on the −n side, the arm on the +n side
+        -self.arm.closing * Vec2::new(-s, co)
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        Some(0.0)
+    }
+}
+
+impl Rates for OscillatingFlat {
     /// `z·n = e`, `x'·n = 0` with `z = x − O`, `n = (−sin φ, cos φ)`, `t = (cos φ, sin φ)`
     /// (`ṅ = −φ̇ t`): `φ̇ = (ω J y)·n / z·t`; `u̇ = (φ̇ x'·t − ω (J x')·n) / x''·n`; and
     /// `φ̈ = (b·n − 2 φ̇ ẋ·t − φ̇² z·n) / z·t` with `ẋ = ω J y + u̇ x'`. Declined where the
@@ -140,15 +152,9 @@ impl Kind for OscillatingFlat {
         let qdd = (b.dot(&n) - 2.0 * qd * xdot.dot(&t) - qd * qd * z.dot(&n)) / zt;
         finite([qd, qdd, ud])
     }
-    #[inline]
-    fn toward_follower(&self, _c: Point2, q: &Pose) -> Vec2 {
-        let (s, co) = (q.sin, q.cos);
-        // cw closing (sign −1): the cam is on the −n side, the arm on the +n side
-        -self.arm.closing * Vec2::new(-s, co)
-    }
-    fn concave_limit(&self) -> Option<f64> {
-        Some(0.0)
-    }
+}
+
+impl Synthesis for OscillatingFlat {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         // the pivot from the cam's axis (the profile is in the cam's frame, centred there)
         let o = self.arm.o - self.cam_pivot;

@@ -9,7 +9,7 @@
 
 use super::envelope::{arm_path, rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
@@ -136,26 +136,6 @@ impl Kind for OscillatingKnife {
         let y = e.p - self.arm.o;
         [[e.d1.dot(&n), -y.dot(&t)], [e.d1.dot(&t), y.dot(&n)]]
     }
-    /// The contact point `x` is the tip: `ẋ = ω J y + u̇ x' = L φ̇ n`, so (its part along `t`)
-    /// `u̇ = −(ω J y)·t / x'·t` and `φ̇ = ẋ·n / L`; `b + ü x' = L φ̈ n − L φ̇² t`, so
-    /// `ü = −(b·t + L φ̇²) / x'·t` and `φ̈ = (b + ü x')·n / L`. Declined where the profile runs
-    /// along the tip's circle (`x'·t ≈ 0`: the tip is locked).
-    #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
-        let t = self.t(q);
-        let n = rot90(t);
-        let x1t = c.x1.dot(&t);
-        if !(x1t.abs() > refuse.lock * c.x1.norm()) {
-            return None;
-        }
-        let l = self.l;
-        let v0 = c.material_velocity();
-        let ud = -v0.dot(&t) / x1t;
-        let qd = (v0 + ud * c.x1).dot(&n) / l;
-        let b = c.acceleration_but_tangential(ud);
-        let udd = -(b.dot(&t) + l * qd * qd) / x1t;
-        finite([qd, (b + udd * c.x1).dot(&n) / l, ud])
-    }
     /// The tip comes from behind its motion in the closing sense.
     #[inline]
     fn toward_follower(&self, _c: Point2, q: &Pose) -> Vec2 {
@@ -190,6 +170,32 @@ impl Kind for OscillatingKnife {
     fn concave_limit(&self) -> Option<f64> {
         None
     }
+}
+
+impl Rates for OscillatingKnife {
+    /// The contact point `x` is the tip: `ẋ = ω J y + u̇ x' = L φ̇ n`, so (its part along `t`)
+    /// `u̇ = −(ω J y)·t / x'·t` and `φ̇ = ẋ·n / L`; `b + ü x' = L φ̈ n − L φ̇² t`, so
+    /// `ü = −(b·t + L φ̇²) / x'·t` and `φ̈ = (b + ü x')·n / L`. Declined where the profile runs
+    /// along the tip's circle (`x'·t ≈ 0`: the tip is locked).
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        let t = self.t(q);
+        let n = rot90(t);
+        let x1t = c.x1.dot(&t);
+        if !(x1t.abs() > refuse.lock * c.x1.norm()) {
+            return None;
+        }
+        let l = self.l;
+        let v0 = c.material_velocity();
+        let ud = -v0.dot(&t) / x1t;
+        let qd = (v0 + ud * c.x1).dot(&n) / l;
+        let b = c.acceleration_but_tangential(ud);
+        let udd = -(b.dot(&t) + l * qd * qd) / x1t;
+        finite([qd, (b + udd * c.x1).dot(&n) / l, ud])
+    }
+}
+
+impl Synthesis for OscillatingKnife {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         // |O + L t(φ + β)| = R_b (the pivot from the cam's axis): O·t(φ + β) = K, i.e.
         // (O·t(β)) cos φ + (O·n(β)) sin φ = K

@@ -3,7 +3,7 @@
 
 use super::envelope::{arm_path, rotated_derivs, Envelope};
 use super::rates::{finite, roller_denominator, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Sense};
+use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
@@ -181,31 +181,6 @@ impl Kind for OscillatingRoller {
             [e.d2.dot(&m) + e.d1.norm_squared(), e.d1.dot(&dm_dq)],
         ]
     }
-    /// `½(|m|² − r²) = 0` and `x'·m = 0` with `m = x − O − L t`, `t = (cos φ, sin φ)`, `n = J t`:
-    /// `φ̇ = m·(ω J y) / L m·n`; `u̇ (x''·m + |x'|²) = −(ω (J x')·m + x'·ω J y − L φ̇ x'·n)`; and
-    /// `φ̈ = (m·b + L φ̇² m·t + |ṁ|²) / L m·n` with `ṁ = ω J y + u̇ x' − L φ̇ n`. Declined where
-    /// the normal passes through the pivot (locked) or the cam's curvature matches the roller's.
-    #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
-        let (s, co) = (q.sin, q.cos);
-        let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
-        let l = self.l;
-        let m = (c.x - self.arm.o) - l * t;
-        // L m·n = m·J(x − O): the paper's lock test, squared
-        let lmn = l * m.dot(&n);
-        let reach = refuse.lock * self.r;
-        if !(lmn * lmn > reach * reach * (c.x - self.arm.o).norm_squared()) {
-            return None;
-        }
-        let den = roller_denominator(c, m, refuse)?;
-        let v0 = c.material_velocity();
-        let qd = m.dot(&v0) / lmn;
-        let ud = -(c.w * rot90(c.x1).dot(&m) + c.x1.dot(&v0) - l * qd * c.x1.dot(&n)) / den;
-        let mdot = v0 + ud * c.x1 - (l * qd) * n;
-        let b = c.acceleration_but_tangential(ud);
-        let qdd = (m.dot(&b) + l * qd * qd * m.dot(&t) + mdot.norm_squared()) / lmn;
-        finite([qd, qdd, ud])
-    }
     #[inline]
     fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2 {
         let (s, co) = (q.sin, q.cos);
@@ -234,6 +209,37 @@ impl Kind for OscillatingRoller {
     fn roller_radius(&self) -> Option<f64> {
         Some(self.r)
     }
+}
+
+impl Rates for OscillatingRoller {
+    /// `½(|m|² − r²) = 0` and `x'·m = 0` with `m = x − O − L t`, `t = (cos φ, sin φ)`, `n = J t`:
+    /// `φ̇ = m·(ω J y) / L m·n`; `u̇ (x''·m + |x'|²) = −(ω (J x')·m + x'·ω J y − L φ̇ x'·n)`; and
+    /// `φ̈ = (m·b + L φ̇² m·t + |ṁ|²) / L m·n` with `ṁ = ω J y + u̇ x' − L φ̇ n`. Declined where
+    /// the normal passes through the pivot (locked) or the cam's curvature matches the roller's.
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (s, co) = (q.sin, q.cos);
+        let (t, n) = (Vec2::new(co, s), Vec2::new(-s, co));
+        let l = self.l;
+        let m = (c.x - self.arm.o) - l * t;
+        // L m·n = m·J(x − O): the paper's lock test, squared
+        let lmn = l * m.dot(&n);
+        let reach = refuse.lock * self.r;
+        if !(lmn * lmn > reach * reach * (c.x - self.arm.o).norm_squared()) {
+            return None;
+        }
+        let den = roller_denominator(c, m, refuse)?;
+        let v0 = c.material_velocity();
+        let qd = m.dot(&v0) / lmn;
+        let ud = -(c.w * rot90(c.x1).dot(&m) + c.x1.dot(&v0) - l * qd * c.x1.dot(&n)) / den;
+        let mdot = v0 + ud * c.x1 - (l * qd) * n;
+        let b = c.acceleration_but_tangential(ud);
+        let qdd = (m.dot(&b) + l * qd * qd * m.dot(&t) + mdot.norm_squared()) / lmn;
+        finite([qd, qdd, ud])
+    }
+}
+
+impl Synthesis for OscillatingRoller {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         // the pivot from the cam's axis (the profile is in the cam's frame, centred there)
         let o = self.arm.o - self.cam_pivot;

@@ -108,7 +108,7 @@ pub(crate) fn roller_denominator(c: &CamPoint, m: Vec2, refuse: &Refusals) -> Op
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cam::follower::{Follower, Kind, Sense};
+    use crate::cam::follower::{Follower, Kind, Rates as _, Sense};
 
     /// One test for three rates declines any infinity or NaN among them, wherever it sits,
     /// and keeps finite ones of any sign and size (short of a sum beyond 1.8e308).

@@ -4,7 +4,7 @@
 
 use super::envelope::{rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{Joint, Kind, Model};
+use super::{Joint, Kind, Model, Rates, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
@@ -67,6 +67,16 @@ impl Kind for TranslatingFlat {
         let du = -x1d / e.d2.dot(&d);
         [du, ((e.p - self.cam_pivot).dot(&d) - q.q) + x1d * du]
     }
+    #[inline]
+    fn toward_follower(&self, _c: Point2, _q: &Pose) -> Vec2 {
+        self.d
+    }
+    fn concave_limit(&self) -> Option<f64> {
+        Some(0.0)
+    }
+}
+
+impl Rates for TranslatingFlat {
     /// `q = y·d` and `x'·d = 0`: `q̇ = ω (J y)·d`, `u̇ = −ω (J x')·d / x''·d` and
     /// `q̈ = α (J y)·d − ω² y·d + ω u̇ (J x')·d`. A cam straight at the contact (`x''·d = 0`)
     /// is conformal with the face: declined.
@@ -77,13 +87,9 @@ impl Kind for TranslatingFlat {
         let ud = -w * jx1 / c.x2.dot(&d);
         finite([w * jy, c.a * jy - w * w * c.y.dot(&d) + w * ud * jx1, ud])
     }
-    #[inline]
-    fn toward_follower(&self, _c: Point2, _q: &Pose) -> Vec2 {
-        self.d
-    }
-    fn concave_limit(&self) -> Option<f64> {
-        Some(0.0)
-    }
+}
+
+impl Synthesis for TranslatingFlat {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         Ok(base_radius)
     }

@@ -5,7 +5,7 @@
 
 use super::envelope::{rotated_derivs, translating_path, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{Joint, Kind, Model};
+use super::{Joint, Kind, Model, Rates, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
@@ -85,23 +85,6 @@ impl Kind for TranslatingKnife {
     fn jacobian(&self, e: &WorldDerivs, _q: &Pose) -> [[f64; 2]; 2] {
         [[e.d1.dot(&self.p), 0.0], [e.d1.dot(&self.d), -1.0]]
     }
-    /// `y·p = e + b`, `y·d = q + a`: the contact point's velocity `ẏ = ω J y + u̇ x'` is along `d`, so
-    /// `u̇ = −ω (J y)·p / x'·p`, `q̇ = ẏ·d`; its acceleration `b + ü x'` too, so
-    /// `ü = −b·p / x'·p` and `q̈ = b·d + ü x'·d`. Declined where the profile runs along the
-    /// line of travel (`x'·p ≈ 0`: the tip is locked).
-    #[inline(always)]
-    fn rates(&self, c: &CamPoint, _q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
-        let (d, p) = (self.d, self.p);
-        let x1p = c.x1.dot(&p);
-        if !(x1p.abs() > refuse.lock * c.x1.norm()) {
-            return None;
-        }
-        let v0 = c.material_velocity();
-        let ud = -v0.dot(&p) / x1p;
-        let b = c.acceleration_but_tangential(ud);
-        let udd = -b.dot(&p) / x1p;
-        finite([(v0 + ud * c.x1).dot(&d), b.dot(&d) + udd * c.x1.dot(&d), ud])
-    }
     #[inline]
     fn toward_follower(&self, _c: Point2, _q: &Pose) -> Vec2 {
         self.d
@@ -141,6 +124,29 @@ impl Kind for TranslatingKnife {
     fn concave_limit(&self) -> Option<f64> {
         None
     }
+}
+
+impl Rates for TranslatingKnife {
+    /// `y·p = e + b`, `y·d = q + a`: the contact point's velocity `ẏ = ω J y + u̇ x'` is along `d`, so
+    /// `u̇ = −ω (J y)·p / x'·p`, `q̇ = ẏ·d`; its acceleration `b + ü x'` too, so
+    /// `ü = −b·p / x'·p` and `q̈ = b·d + ü x'·d`. Declined where the profile runs along the
+    /// line of travel (`x'·p ≈ 0`: the tip is locked).
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, _q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        let (d, p) = (self.d, self.p);
+        let x1p = c.x1.dot(&p);
+        if !(x1p.abs() > refuse.lock * c.x1.norm()) {
+            return None;
+        }
+        let v0 = c.material_velocity();
+        let ud = -v0.dot(&p) / x1p;
+        let b = c.acceleration_but_tangential(ud);
+        let udd = -b.dot(&p) / x1p;
+        finite([(v0 + ud * c.x1).dot(&d), b.dot(&d) + udd * c.x1.dot(&d), ud])
+    }
+}
+
+impl Synthesis for TranslatingKnife {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         let e = self.tip_e;
         if e.abs() >= base_radius {

@@ -3,7 +3,7 @@
 
 use super::envelope::{rotated_derivs, translating_path, Envelope};
 use super::rates::{finite, roller_denominator, CamPoint, Refusals};
-use super::{Joint, Kind, Model};
+use super::{Joint, Kind, Model, Rates, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
@@ -126,27 +126,6 @@ impl Kind for TranslatingRoller {
             [e.d2.dot(&m) + e.d1.norm_squared(), -e.d1.dot(&d)],
         ]
     }
-    /// `½(|m|² − r²) = 0` and `x'·m = 0` with `m = y − e p − q d` (from the roller's centre):
-    /// `q̇ = m·(ω J y) / m·d`; `u̇ (x''·m + |x'|²) = −(ω (J x')·m + x'·ω J y − q̇ x'·d)`; and
-    /// `q̈ = (m·b + |ṁ|²) / m·d` with `ṁ = ω J y + u̇ x' − q̇ d`. Declined where the normal is
-    /// perpendicular to the travel (locked) or the cam's curvature matches the roller's.
-    #[inline(always)]
-    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
-        let q = q.q;
-        let (d, p) = (self.d, self.p);
-        let m = c.y - (self.e * p + q * d);
-        let md = m.dot(&d);
-        if !(md.abs() > refuse.lock * self.r) {
-            return None;
-        }
-        let den = roller_denominator(c, m, refuse)?;
-        let v0 = c.material_velocity();
-        let qd = m.dot(&v0) / md;
-        let ud = -(c.w * rot90(c.x1).dot(&m) + c.x1.dot(&v0) - qd * c.x1.dot(&d)) / den;
-        let mdot = v0 + ud * c.x1 - qd * d;
-        let b = c.acceleration_but_tangential(ud);
-        finite([qd, (m.dot(&b) + mdot.norm_squared()) / md, ud])
-    }
     #[inline]
     fn toward_follower(&self, c: Point2, q: &Pose) -> Vec2 {
         (self.cam_pivot + self.e * self.p + q.q * self.d) - c
@@ -172,6 +151,33 @@ impl Kind for TranslatingRoller {
     fn roller_radius(&self) -> Option<f64> {
         Some(self.r)
     }
+}
+
+impl Rates for TranslatingRoller {
+    /// `½(|m|² − r²) = 0` and `x'·m = 0` with `m = y − e p − q d` (from the roller's centre):
+    /// `q̇ = m·(ω J y) / m·d`; `u̇ (x''·m + |x'|²) = −(ω (J x')·m + x'·ω J y − q̇ x'·d)`; and
+    /// `q̈ = (m·b + |ṁ|²) / m·d` with `ṁ = ω J y + u̇ x' − q̇ d`. Declined where the normal is
+    /// perpendicular to the travel (locked) or the cam's curvature matches the roller's.
+    #[inline(always)]
+    fn rates(&self, c: &CamPoint, q: &Pose, refuse: &Refusals) -> Option<[f64; 3]> {
+        let q = q.q;
+        let (d, p) = (self.d, self.p);
+        let m = c.y - (self.e * p + q * d);
+        let md = m.dot(&d);
+        if !(md.abs() > refuse.lock * self.r) {
+            return None;
+        }
+        let den = roller_denominator(c, m, refuse)?;
+        let v0 = c.material_velocity();
+        let qd = m.dot(&v0) / md;
+        let ud = -(c.w * rot90(c.x1).dot(&m) + c.x1.dot(&v0) - qd * c.x1.dot(&d)) / den;
+        let mdot = v0 + ud * c.x1 - qd * d;
+        let b = c.acceleration_but_tangential(ud);
+        finite([qd, (m.dot(&b) + mdot.norm_squared()) / md, ud])
+    }
+}
+
+impl Synthesis for TranslatingRoller {
     fn synthesis_start(&self, base_radius: f64) -> Result<f64, CamError> {
         let prime = base_radius + self.r;
         if self.e.abs() >= prime {
