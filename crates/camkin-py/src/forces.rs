@@ -4,7 +4,6 @@ use crate::columns::Columns;
 use crate::errors;
 use crate::mech::PyMechanism;
 use camkin::report::{ForceField, ForceReport, ForceRequest, Materials, ReportError};
-use camkin::spec::BuildOptions;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -100,21 +99,7 @@ impl PyMechanism {
                 ),
             ));
         }
-        let built = self
-            .spec
-            .build(&BuildOptions {
-                base_dir: self.base_dir.clone(),
-                si: true,
-                confine: false,
-            })
-            .map_err(|e| errors::spec(&e))?;
-        let params = built.dynamics.ok_or_else(|| {
-            errors::input(
-                "dynamics",
-                None,
-                "forces needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)".into(),
-            )
-        })?;
+        let (built, params) = self.built_si("forces")?;
         let mech = built.mechanism;
         let req = ForceRequest {
             step_deg,

@@ -84,6 +84,27 @@ impl PyMechanism {
         }
     }
 
+    /// The mechanism built again in SI units with its `[dynamics]`, for `what` (`simulate`,
+    /// `forces`) that needs them.
+    pub fn built_si(&self, what: &str) -> PyResult<(Built, camkin::dynamics::FollowerDynamics)> {
+        let built = self
+            .spec
+            .build(&BuildOptions {
+                base_dir: self.base_dir.clone(),
+                si: true,
+                confine: false,
+            })
+            .map_err(|e| errors::spec(&e))?;
+        let params = built.dynamics.ok_or_else(|| {
+            errors::input(
+                "dynamics",
+                None,
+                format!("{what} needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)"),
+            )
+        })?;
+        Ok((built, params))
+    }
+
     pub fn mech(&self) -> &Mechanism {
         &self.built.mechanism
     }

@@ -5,7 +5,6 @@ use crate::columns::Columns;
 use crate::errors;
 use crate::mech::PyMechanism;
 use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Simulation};
-use camkin::spec::BuildOptions;
 use camkin::table::{
     event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow, Units,
 };
@@ -64,21 +63,7 @@ impl PyMechanism {
             return Err(bad("start_angle_deg", start_angle_deg, "must be finite"));
         }
         let outputs = (revolutions * 360.0 / step_deg).round() as usize;
-        let built = self
-            .spec
-            .build(&BuildOptions {
-                base_dir: self.base_dir.clone(),
-                si: true,
-                confine: false,
-            })
-            .map_err(|e| errors::spec(&e))?;
-        let params = built.dynamics.ok_or_else(|| {
-            errors::input(
-                "dynamics",
-                None,
-                "simulate needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)".into(),
-            )
-        })?;
+        let (built, params) = self.built_si("simulate")?;
         let mech = built.mechanism;
         let units = Units::plain(&mech, built.length_unit);
         let mut sim = Simulation::starting_at(
