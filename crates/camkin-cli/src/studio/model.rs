@@ -168,7 +168,7 @@ pub struct Placed {
 
 /// Forces under permanent contact at any constant speed: the page evaluates
 /// `F = (c2 ω² + c1 ω + c0) / lever` for its speed slider (see
-/// [`Forces::force_coefficients`]).
+/// [`camkin::report::ForceReport::coefficients`]).
 #[derive(Debug, Serialize)]
 pub struct DynamicsOut {
     /// the file's cam speed, rpm
