@@ -238,6 +238,35 @@ impl CamField {
 }
 
 impl ProfileField {
+    /// Every keyed field of a profile table: the one list of its keys (their names are
+    /// [`ProfileField::name`]'s; the schema's serde names are checked equal to them).
+    pub const KEYED: [ProfileField; 24] = [
+        ProfileField::Kind,
+        ProfileField::Points,
+        ProfileField::Parameterization,
+        ProfileField::Center,
+        ProfileField::Radius,
+        ProfileField::SemiAxes,
+        ProfileField::RotationDeg,
+        ProfileField::Path,
+        ProfileField::BaseRadius,
+        ProfileField::Segments,
+        ProfileField::Module,
+        ProfileField::Teeth,
+        ProfileField::PressureAngle,
+        ProfileField::Addendum,
+        ProfileField::Dedendum,
+        ProfileField::ProfileShift,
+        ProfileField::Backlash,
+        ProfileField::FilletRadius,
+        ProfileField::TipRelief,
+        ProfileField::TipReliefLength,
+        ProfileField::TipReliefShape,
+        ProfileField::Anchor,
+        ProfileField::Direction,
+        ProfileField::At,
+    ];
+
     /// The key's name (`None` for the table, and for indexed fields).
     pub fn name(self) -> Option<&'static str> {
         Some(match self {
@@ -283,6 +312,19 @@ impl SegmentField {
 }
 
 impl FollowerField {
+    /// Every keyed field of `[follower]` (see [`ProfileField::KEYED`]).
+    pub const KEYED: [FollowerField; 9] = [
+        FollowerField::Kind,
+        FollowerField::Direction,
+        FollowerField::Offset,
+        FollowerField::RollerRadius,
+        FollowerField::Pivot,
+        FollowerField::ArmLength,
+        FollowerField::Closing,
+        FollowerField::InitialAngle,
+        FollowerField::Profile,
+    ];
+
     /// The key's name (`None` for the table).
     pub fn name(self) -> Option<&'static str> {
         Some(match self {

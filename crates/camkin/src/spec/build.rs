@@ -3,7 +3,7 @@
 use super::{DynamicsSpec, FollowerSpec, MechanismSpec};
 use crate::cam::{Cam, CamError, Follower, Mechanism, Sense};
 use crate::dynamics::FollowerDynamics;
-use crate::field::{CamField, DynamicsField, Field, FollowerField, ProfileField};
+use crate::field::{CamField, DynamicsField, Field, FollowerField, Key, ProfileField};
 use crate::{Point2, Vec2};
 use std::path::PathBuf;
 
@@ -232,33 +232,52 @@ impl TryFrom<MechanismSpec> for Mechanism {
     }
 }
 
-/// The fields of a table present in a spec, for the foreign-field check.
-pub(super) type Present = [(&'static str, bool, Field)];
+/// The keyed fields of a table and whether the spec gives each, for the foreign-field check.
+/// Fields are named by their enum; the key's name is written once, in `crate::field`.
+pub(super) type Present = [(Field, bool)];
 
-pub(super) fn check_kind(kind: &str, present: &Present, allowed: &[&str]) -> Result<(), SpecError> {
-    for &(name, here, field) in present {
-        if here && !allowed.contains(&name) {
+/// The key's name of a field (`radius` of `cam.profile.radius`).
+pub(super) fn key(field: Field) -> &'static str {
+    match field.path().last() {
+        Some(Key::Name(n)) => n,
+        _ => "",
+    }
+}
+
+/// Refuses a field present in the spec that the `kind` does not take.
+pub(super) fn check_kind(
+    kind: &str,
+    present: &Present,
+    allowed: &[Field],
+) -> Result<(), SpecError> {
+    for &(field, here) in present {
+        if here && !allowed.contains(&field) {
             return Err(SpecError::Foreign {
                 field,
-                name,
+                name: key(field),
                 kind: kind.to_string(),
-                allowed: allowed.join(", "),
+                allowed: allowed
+                    .iter()
+                    .map(|&f| key(f))
+                    .collect::<Vec<_>>()
+                    .join(", "),
             });
         }
     }
     Ok(())
 }
 
+/// The value of `field`, which the `kind` needs.
 pub(super) fn need<T: Copy>(
     kind_field: Field,
     kind: &str,
-    name: &'static str,
+    field: Field,
     v: Option<T>,
 ) -> Result<T, SpecError> {
     v.ok_or_else(|| SpecError::Missing {
         field: kind_field,
         kind: kind.to_string(),
-        missing: name,
+        missing: key(field),
     })
 }
 
@@ -431,28 +450,20 @@ impl FollowerSpec {
         let kind_field = f(F::Kind);
         let kind = self.kind.as_str();
         let present: &Present = &[
-            ("direction", self.direction.is_some(), f(F::Direction)),
-            ("offset", self.offset.is_some(), f(F::Offset)),
-            (
-                "roller_radius",
-                self.roller_radius.is_some(),
-                f(F::RollerRadius),
-            ),
-            ("pivot", self.pivot.is_some(), f(F::Pivot)),
-            ("arm_length", self.arm_length.is_some(), f(F::ArmLength)),
-            ("closing", self.closing.is_some(), f(F::Closing)),
-            (
-                "initial_angle_deg",
-                self.initial_angle_deg.is_some(),
-                f(F::InitialAngle),
-            ),
-            ("profile", self.profile.is_some(), f(F::Profile)),
+            (f(F::Direction), self.direction.is_some()),
+            (f(F::Offset), self.offset.is_some()),
+            (f(F::RollerRadius), self.roller_radius.is_some()),
+            (f(F::Pivot), self.pivot.is_some()),
+            (f(F::ArmLength), self.arm_length.is_some()),
+            (f(F::Closing), self.closing.is_some()),
+            (f(F::InitialAngle), self.initial_angle_deg.is_some()),
+            (f(F::Profile), self.profile.is_some()),
         ];
         let mut carried = || -> Result<crate::cam::FollowerProfile, SpecError> {
             let p = self.profile.as_ref().ok_or_else(|| SpecError::Missing {
                 field: kind_field,
                 kind: kind.to_string(),
-                missing: "profile",
+                missing: key(f(F::Profile)),
             })?;
             let (curve, _) = p.build(
                 scale,
@@ -481,15 +492,22 @@ impl FollowerSpec {
                 .to_radians())
         };
         let pivot = || -> Result<Point2, SpecError> {
-            let p = point(f(F::Pivot), need(kind_field, kind, "pivot", self.pivot)?)?;
+            let p = point(
+                f(F::Pivot),
+                need(kind_field, kind, f(F::Pivot), self.pivot)?,
+            )?;
             Ok(Point2::new(scale * p.x, scale * p.y))
         };
-        let len = |field: F, name: &'static str, v: Option<f64>| -> Result<f64, SpecError> {
-            Ok(scale * positive(f(field), need(kind_field, kind, name, v)?)?)
+        let len = |field: F, v: Option<f64>| -> Result<f64, SpecError> {
+            Ok(scale * positive(f(field), need(kind_field, kind, f(field), v)?)?)
         };
         Ok(match kind {
             "translating" => {
-                check_kind(kind, present, &["direction", "offset", "profile"])?;
+                check_kind(
+                    kind,
+                    present,
+                    &[f(F::Direction), f(F::Offset), f(F::Profile)],
+                )?;
                 Follower::Translating {
                     direction: dir()?,
                     offset: offset()?,
@@ -500,7 +518,12 @@ impl FollowerSpec {
                 check_kind(
                     kind,
                     present,
-                    &["pivot", "closing", "initial_angle_deg", "profile"],
+                    &[
+                        f(F::Pivot),
+                        f(F::Closing),
+                        f(F::InitialAngle),
+                        f(F::Profile),
+                    ],
                 )?;
                 Follower::Rotating {
                     pivot: pivot()?,
@@ -510,12 +533,16 @@ impl FollowerSpec {
                 }
             }
             "translating-flat" => {
-                check_kind(kind, present, &["direction"])?;
+                check_kind(kind, present, &[f(F::Direction)])?;
                 Follower::TranslatingFlat { direction: dir()? }
             }
             "translating-roller" => {
-                check_kind(kind, present, &["direction", "offset", "roller_radius"])?;
-                let r = len(F::RollerRadius, "roller_radius", self.roller_radius)?;
+                check_kind(
+                    kind,
+                    present,
+                    &[f(F::Direction), f(F::Offset), f(F::RollerRadius)],
+                )?;
+                let r = len(F::RollerRadius, self.roller_radius)?;
                 Follower::TranslatingRoller {
                     direction: dir()?,
                     offset: offset()?,
@@ -523,7 +550,7 @@ impl FollowerSpec {
                 }
             }
             "translating-knife" => {
-                check_kind(kind, present, &["direction", "offset"])?;
+                check_kind(kind, present, &[f(F::Direction), f(F::Offset)])?;
                 Follower::TranslatingKnife {
                     direction: dir()?,
                     offset: offset()?,
@@ -533,7 +560,7 @@ impl FollowerSpec {
                 check_kind(
                     kind,
                     present,
-                    &["pivot", "offset", "closing", "initial_angle_deg"],
+                    &[f(F::Pivot), f(F::Offset), f(F::Closing), f(F::InitialAngle)],
                 )?;
                 Follower::OscillatingFlat {
                     pivot: pivot()?,
@@ -547,16 +574,16 @@ impl FollowerSpec {
                     kind,
                     present,
                     &[
-                        "pivot",
-                        "arm_length",
-                        "roller_radius",
-                        "closing",
-                        "initial_angle_deg",
+                        f(F::Pivot),
+                        f(F::ArmLength),
+                        f(F::RollerRadius),
+                        f(F::Closing),
+                        f(F::InitialAngle),
                     ],
                 )?;
                 let pivot = pivot()?;
-                let l = len(F::ArmLength, "arm_length", self.arm_length)?;
-                let r = len(F::RollerRadius, "roller_radius", self.roller_radius)?;
+                let l = len(F::ArmLength, self.arm_length)?;
+                let r = len(F::RollerRadius, self.roller_radius)?;
                 Follower::OscillatingRoller {
                     pivot,
                     arm_length: l,
@@ -581,11 +608,11 @@ impl DynamicsSpec {
     fn build(&self, oscillating: bool) -> Result<FollowerDynamics, SpecError> {
         use DynamicsField as D;
         let f = |x| Field::Dynamics(x);
-        let needed = |field: D, name: &str, v: Option<f64>| match v {
+        let needed = |field: D, v: Option<f64>| match v {
             Some(v) => positive(f(field), v),
             None => Err(SpecError::Rule {
                 field: f(D::Table),
-                reason: format!("needs `{name}` for this follower"),
+                reason: format!("needs `{}` for this follower", key(f(field))),
             }),
         };
         let (mass, inertia) = if oscillating {
@@ -595,7 +622,7 @@ impl DynamicsSpec {
                     reason: "an oscillating follower takes `inertia`, not `mass`".into(),
                 });
             }
-            (1.0, needed(D::Inertia, "inertia", self.inertia)?)
+            (1.0, needed(D::Inertia, self.inertia)?)
         } else {
             if self.inertia.is_some() {
                 return Err(SpecError::Rule {
@@ -603,7 +630,7 @@ impl DynamicsSpec {
                     reason: "a translating follower takes `mass`, not `inertia`".into(),
                 });
             }
-            (needed(D::Mass, "mass", self.mass)?, 1.0)
+            (needed(D::Mass, self.mass)?, 1.0)
         };
         let restitution = self
             .restitution

@@ -1,7 +1,7 @@
 //! Validation of `[cam.profile]`: the profile kinds, inline and file points, motion programs.
 
 use super::build::{
-    check_kind, finite, need, point, positive, vector, Present, SpecError, SpecWarning,
+    check_kind, finite, key, need, point, positive, vector, Present, SpecError, SpecWarning,
 };
 use super::ProfileSpec;
 use crate::cam::synthesis::synthesize;
@@ -153,73 +153,45 @@ impl ProfileSpec {
         let kind_field = f(P::Kind);
         let kind = self.kind.as_str();
         let present: &Present = &[
-            ("base_radius", self.base_radius.is_some(), f(P::BaseRadius)),
-            ("segments", self.segments.is_some(), f(P::Segments)),
-            ("points", self.points.is_some(), f(P::Points)),
-            (
-                "parameterization",
-                self.parameterization.is_some(),
-                f(P::Parameterization),
-            ),
-            ("center", self.center.is_some(), f(P::Center)),
-            ("radius", self.radius.is_some(), f(P::Radius)),
-            ("semi_axes", self.semi_axes.is_some(), f(P::SemiAxes)),
-            (
-                "rotation_deg",
-                self.rotation_deg.is_some(),
-                f(P::RotationDeg),
-            ),
-            ("path", self.path.is_some(), f(P::Path)),
-            ("module", self.module.is_some(), f(P::Module)),
-            ("teeth", self.teeth.is_some(), f(P::Teeth)),
-            (
-                "pressure_angle_deg",
-                self.pressure_angle_deg.is_some(),
-                f(P::PressureAngle),
-            ),
-            ("addendum", self.addendum.is_some(), f(P::Addendum)),
-            ("dedendum", self.dedendum.is_some(), f(P::Dedendum)),
-            (
-                "profile_shift",
-                self.profile_shift.is_some(),
-                f(P::ProfileShift),
-            ),
-            ("backlash", self.backlash.is_some(), f(P::Backlash)),
-            (
-                "fillet_radius",
-                self.fillet_radius.is_some(),
-                f(P::FilletRadius),
-            ),
-            ("tip_relief", self.tip_relief.is_some(), f(P::TipRelief)),
-            (
-                "tip_relief_length",
-                self.tip_relief_length.is_some(),
-                f(P::TipReliefLength),
-            ),
-            (
-                "tip_relief_shape",
-                self.tip_relief_shape.is_some(),
-                f(P::TipReliefShape),
-            ),
-            ("anchor", self.anchor.is_some(), f(P::Anchor)),
-            ("direction", self.direction.is_some(), f(P::Direction)),
-            ("at", self.at.is_some(), f(P::At)),
+            (f(P::BaseRadius), self.base_radius.is_some()),
+            (f(P::Segments), self.segments.is_some()),
+            (f(P::Points), self.points.is_some()),
+            (f(P::Parameterization), self.parameterization.is_some()),
+            (f(P::Center), self.center.is_some()),
+            (f(P::Radius), self.radius.is_some()),
+            (f(P::SemiAxes), self.semi_axes.is_some()),
+            (f(P::RotationDeg), self.rotation_deg.is_some()),
+            (f(P::Path), self.path.is_some()),
+            (f(P::Module), self.module.is_some()),
+            (f(P::Teeth), self.teeth.is_some()),
+            (f(P::PressureAngle), self.pressure_angle_deg.is_some()),
+            (f(P::Addendum), self.addendum.is_some()),
+            (f(P::Dedendum), self.dedendum.is_some()),
+            (f(P::ProfileShift), self.profile_shift.is_some()),
+            (f(P::Backlash), self.backlash.is_some()),
+            (f(P::FilletRadius), self.fillet_radius.is_some()),
+            (f(P::TipRelief), self.tip_relief.is_some()),
+            (f(P::TipReliefLength), self.tip_relief_length.is_some()),
+            (f(P::TipReliefShape), self.tip_relief_shape.is_some()),
+            (f(P::Anchor), self.anchor.is_some()),
+            (f(P::Direction), self.direction.is_some()),
+            (f(P::At), self.at.is_some()),
         ];
         let param = self.parameterization.unwrap_or_default();
         let scaled = |p: Point2| Point2::new(scale * p.x, scale * p.y);
         let center = || -> Result<Point2, SpecError> {
             Ok(scaled(point(
                 f(P::Center),
-                need(kind_field, kind, "center", self.center)?,
+                need(kind_field, kind, f(P::Center), self.center)?,
             )?))
         };
         let curve: Arc<dyn Curve> = match kind {
             "spline" => {
-                check_kind(kind, present, &["points", "parameterization"])?;
+                check_kind(kind, present, &[f(P::Points), f(P::Parameterization)])?;
                 let pts = self.points.as_ref().ok_or_else(|| SpecError::Missing {
                     field: kind_field,
                     kind: kind.to_string(),
-                    missing: "points",
+                    missing: key(f(P::Points)),
                 })?;
                 if pts.len() > MAX_POINTS {
                     return Err(SpecError::Rule {
@@ -238,19 +210,19 @@ impl ProfileSpec {
                 spline(&nodes, param, &Nodes::Inline(f), warnings)?
             }
             "circle" => {
-                check_kind(kind, present, &["center", "radius"])?;
+                check_kind(kind, present, &[f(P::Center), f(P::Radius)])?;
                 let c = center()?;
                 let r =
-                    scale * positive(f(P::Radius), need(kind_field, kind, "radius", self.radius)?)?;
+                    scale * positive(f(P::Radius), need(kind_field, kind, f(P::Radius), self.radius)?)?;
                 Arc::new(Circle::new(c, r).map_err(|e| SpecError::Rule {
                     field: kind_field,
                     reason: e.to_string(),
                 })?)
             }
             "ellipse" => {
-                check_kind(kind, present, &["center", "semi_axes", "rotation_deg"])?;
+                check_kind(kind, present, &[f(P::Center), f(P::SemiAxes), f(P::RotationDeg)])?;
                 let c = center()?;
-                let ax = need(kind_field, kind, "semi_axes", self.semi_axes)?;
+                let ax = need(kind_field, kind, f(P::SemiAxes), self.semi_axes)?;
                 let [a, b] = ax;
                 if !(a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0) {
                     return Err(SpecError::Invalid {
@@ -274,23 +246,7 @@ impl ProfileSpec {
                 )
             }
             "involute-gear" => {
-                check_kind(
-                    kind,
-                    present,
-                    &[
-                        "module",
-                        "teeth",
-                        "pressure_angle_deg",
-                        "addendum",
-                        "dedendum",
-                        "profile_shift",
-                        "backlash",
-                        "fillet_radius",
-                        "tip_relief",
-                        "tip_relief_length",
-                        "tip_relief_shape",
-                    ],
-                )?;
+                check_kind(kind, present, &[f(P::Module), f(P::Teeth), f(P::PressureAngle), f(P::Addendum), f(P::Dedendum), f(P::ProfileShift), f(P::Backlash), f(P::FilletRadius), f(P::TipRelief), f(P::TipReliefLength), f(P::TipReliefShape)])?;
                 Arc::new(self.gear(scale, f)?)
             }
             "line" => {
@@ -300,9 +256,9 @@ impl ProfileSpec {
                         reason: "a cam's profile is a closed curve: a line can only be carried by a follower".into(),
                     });
                 };
-                check_kind(kind, present, &["anchor", "direction"])?;
+                check_kind(kind, present, &[f(P::Anchor), f(P::Direction)])?;
                 let a = point(f(P::Anchor), self.anchor.unwrap_or([0.0, 0.0]))?;
-                let d = need(kind_field, kind, "direction", self.direction)?;
+                let d = need(kind_field, kind, f(P::Direction), self.direction)?;
                 let line = Line::new(Point2::new(scale * a.x, scale * a.y), crate::Vec2::new(d[0], d[1]))
                     .map_err(|e| SpecError::Invalid {
                         field: f(P::Direction),
@@ -322,7 +278,7 @@ impl ProfileSpec {
                         .into(),
                     });
                 };
-                check_kind(kind, present, &["at"])?;
+                check_kind(kind, present, &[f(P::At)])?;
                 let a = point(f(P::At), self.at.unwrap_or([0.0, 0.0]))?;
                 Arc::new(
                     PointCurve::new(Point2::new(scale * a.x, scale * a.y)).map_err(|e| {
@@ -341,16 +297,16 @@ impl ProfileSpec {
                         reason: "a motion program is synthesised into a cam's profile: a follower cannot carry one".into(),
                     });
                 };
-                check_kind(kind, present, &["base_radius", "segments"])?;
+                check_kind(kind, present, &[f(P::BaseRadius), f(P::Segments)])?;
                 let rb = scale
                     * positive(
                         f(P::BaseRadius),
-                        need(kind_field, kind, "base_radius", self.base_radius)?,
+                        need(kind_field, kind, f(P::BaseRadius), self.base_radius)?,
                     )?;
                 let segs = self.segments.as_ref().ok_or_else(|| SpecError::Missing {
                     field: kind_field,
                     kind: kind.to_string(),
-                    missing: "segments",
+                    missing: key(f(P::Segments)),
                 })?;
                 // rises: lengths for translating followers, degrees of arm angle for oscillating
                 let rise_scale = if follower.is_oscillating() {
@@ -423,11 +379,11 @@ impl ProfileSpec {
                 return Ok((prof.clone(), Some(prof)));
             }
             "points-file" => {
-                check_kind(kind, present, &["path", "parameterization"])?;
+                check_kind(kind, present, &[f(P::Path), f(P::Parameterization)])?;
                 let path = self.path.as_ref().ok_or_else(|| SpecError::Missing {
                     field: kind_field,
                     kind: kind.to_string(),
-                    missing: "path",
+                    missing: key(f(P::Path)),
                 })?;
                 let full = base.join(path);
                 if confine {
@@ -492,15 +448,18 @@ impl ProfileSpec {
         use ProfileField as P;
         let kind_field = f(P::Kind);
         let kind = "involute-gear";
-        let module =
-            scale * positive(f(P::Module), need(kind_field, kind, "module", self.module)?)?;
-        let teeth = need(kind_field, kind, "teeth", self.teeth)?;
+        let module = scale
+            * positive(
+                f(P::Module),
+                need(kind_field, kind, f(P::Module), self.module)?,
+            )?;
+        let teeth = need(kind_field, kind, f(P::Teeth), self.teeth)?;
         let alpha = finite(
             f(P::PressureAngle),
             need(
                 kind_field,
                 kind,
-                "pressure_angle_deg",
+                f(P::PressureAngle),
                 self.pressure_angle_deg,
             )?,
         )?;

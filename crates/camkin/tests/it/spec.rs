@@ -333,6 +333,82 @@ fn specs_round_trip_through_json() {
     assert!(err.contains("arm_lenght"), "{err}");
 }
 
+/// The keys of the schema are named once (`camkin::field`): serde's names for the profile and
+/// follower tables are the field enums' names, no more and no fewer (read from serde's own
+/// "expected one of" list for an unknown key), and a key present for a kind that does not take it
+/// is refused naming it.
+#[cfg(feature = "serde")]
+#[test]
+fn the_schemas_keys_are_the_field_enums_names() {
+    fn serde_names<T: serde::de::DeserializeOwned + std::fmt::Debug>() -> Vec<String> {
+        let err = serde_json::from_str::<T>("{\"zz_not_a_key\": 1}")
+            .unwrap_err()
+            .to_string();
+        let list = err
+            .split("expected one of")
+            .nth(1)
+            .unwrap_or_else(|| panic!("{err}"));
+        let mut v: Vec<String> = list
+            .split('`')
+            .skip(1)
+            .step_by(2)
+            .map(str::to_string)
+            .collect();
+        v.sort();
+        v
+    }
+    let mut profile: Vec<String> = ProfileField::KEYED
+        .iter()
+        .map(|f| f.name().unwrap().to_string())
+        .collect();
+    profile.sort();
+    assert_eq!(serde_names::<ProfileSpec>(), profile);
+    let mut follower: Vec<String> = FollowerField::KEYED
+        .iter()
+        .map(|f| f.name().unwrap().to_string())
+        .collect();
+    // `[follower.conjugate]` is a table of its own, named by `Field::FollowerConjugate`
+    follower.push(
+        Field::FollowerConjugate(ProfileField::Table)
+            .to_string()
+            .trim_start_matches("follower.")
+            .to_string(),
+    );
+    follower.sort();
+    assert_eq!(serde_names::<FollowerSpec>(), follower);
+    // every profile key but a circle's is foreign to a circle, and named so
+    for f in ProfileField::KEYED {
+        let name = f.name().unwrap();
+        if ["kind", "center", "radius"].contains(&name) {
+            continue;
+        }
+        let mut text = format!(
+            "{{\"kind\": \"circle\", \"center\": [0.0, 0.0], \"radius\": 1.0, \"{name}\": "
+        );
+        text += match name {
+            "points" => "[[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]]}",
+            "parameterization" => "\"uniform\"}",
+            "semi_axes" | "anchor" | "direction" | "at" => "[1.0, 0.5]}",
+            "path" => "\"x.csv\"}",
+            "segments" => "[]}",
+            "teeth" => "20}",
+            "tip_relief_shape" => "\"linear\"}",
+            _ => "1.0}",
+        };
+        let p: ProfileSpec = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let mut spec = circle_spec(FollowerSpec {
+            kind: "translating-flat".into(),
+            ..Default::default()
+        });
+        spec.cam.profile = p;
+        let e = Mechanism::try_from(spec).unwrap_err();
+        assert!(
+            matches!(&e, SpecError::Foreign { name: n, .. } if *n == name),
+            "{name}: {e}"
+        );
+    }
+}
+
 #[test]
 fn spec_errors_are_not_panics_for_any_kind_without_its_fields() {
     for kind in Follower::KIND_NAMES {
