@@ -1,6 +1,6 @@
 //! Circle: `r(u) = c + R (cos u, sin u)`, counter-clockwise, `u` in radians.
 
-use super::{check_point, check_positive, Curve, CurveError, Derivs, Domain};
+use super::{check_point, check_positive, Curve, CurveError, CurveField, Derivs, Domain};
 use crate::geometry::{Point2, Vec2};
 
 /// A circle of radius `radius` about `center`, traversed counter-clockwise (`κ = 1/R`).
@@ -14,8 +14,8 @@ impl Circle {
     /// A circle; `radius` must be positive and finite, `center` finite.
     pub fn new(center: Point2, radius: f64) -> Result<Self, CurveError> {
         Ok(Self {
-            center: check_point("center", center)?,
-            radius: check_positive("radius", radius)?,
+            center: check_point(CurveField::Center, center)?,
+            radius: check_positive(CurveField::Radius, radius)?,
         })
     }
     /// The centre.
@@ -69,7 +69,7 @@ mod tests {
         assert!(matches!(
             Circle::new(Point2::origin(), -1.0),
             Err(CurveError::NonPositive {
-                field: "radius",
+                field: CurveField::Radius,
                 ..
             })
         ));

@@ -1,6 +1,8 @@
 //! Ellipse: `r(u) = c + R(φ) (a cos u, b sin u)`, counter-clockwise, `u` the eccentric anomaly.
 
-use super::{check_finite, check_point, check_positive, Curve, CurveError, Derivs, Domain};
+use super::{
+    check_finite, check_point, check_positive, Curve, CurveError, CurveField, Derivs, Domain,
+};
 use crate::geometry::{Point2, Rotation, Vec2};
 
 /// An ellipse with semi-axis `a` along its own x axis and `b` along its own y axis, that frame
@@ -18,10 +20,10 @@ impl Ellipse {
     /// An ellipse; semi-axes positive and finite, rotation in radians.
     pub fn new(center: Point2, a: f64, b: f64, rotation: f64) -> Result<Self, CurveError> {
         Ok(Self {
-            center: check_point("center", center)?,
-            a: check_positive("semi_axes[0]", a)?,
-            b: check_positive("semi_axes[1]", b)?,
-            rotation: check_finite("rotation", rotation)?,
+            center: check_point(CurveField::Center, center)?,
+            a: check_positive(CurveField::SemiAxis(0), a)?,
+            b: check_positive(CurveField::SemiAxis(1), b)?,
+            rotation: check_finite(CurveField::Rotation, rotation)?,
             rot: Rotation::new(rotation),
         })
     }

@@ -36,7 +36,7 @@
 //! undercut flank's foot, the root when the rack's tip is sharp) and the curvature jumps at every joint: all joints are
 //! [`Curve::breakpoints`]. The involute's curvature is infinite at the base circle (`1/(r_b t)`).
 
-use super::{check_positive, Curve, CurveError, Derivs, Domain};
+use super::{check_positive, Curve, CurveError, CurveField, Derivs, Domain};
 use crate::geometry::{Point2, Vec2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use trochoid::Trochoid;
@@ -241,7 +241,7 @@ pub struct InvoluteGear {
     breakpoints: Vec<f64>,
 }
 
-fn bad(field: &'static str, value: f64, reason: String) -> CurveError {
+fn bad(field: CurveField, value: f64, reason: String) -> CurveError {
     CurveError::Gear {
         field,
         value,
@@ -254,27 +254,34 @@ impl InvoluteGear {
     /// 10 000, a pressure angle outside 5°–45°, a tooth that comes to a point below its tip
     /// circle, teeth that overlap at the root, a fillet or a relief that does not fit.
     pub fn new(spec: InvoluteGearSpec) -> Result<Self, CurveError> {
-        let m = check_positive("module", spec.module)?;
+        let m = check_positive(CurveField::Module, spec.module)?;
         let z = spec.teeth;
         if !(3..=10_000).contains(&z) {
-            return Err(bad("teeth", f64::from(z), "must be from 3 to 10000".into()));
+            return Err(bad(
+                CurveField::Teeth,
+                f64::from(z),
+                "must be from 3 to 10000".into(),
+            ));
         }
         let alpha = spec.pressure_angle;
         if !(alpha.is_finite() && (5f64.to_radians()..=45f64.to_radians()).contains(&alpha)) {
             return Err(bad(
-                "pressure_angle_deg",
+                CurveField::PressureAngle,
                 alpha.to_degrees(),
                 "must be from 5° to 45°".into(),
             ));
         }
-        for (field, v) in [("addendum", spec.addendum), ("dedendum", spec.dedendum)] {
+        for (field, v) in [
+            (CurveField::Addendum, spec.addendum),
+            (CurveField::Dedendum, spec.dedendum),
+        ] {
             if !(v.is_finite() && v > 0.0 && v <= 3.0) {
                 return Err(bad(field, v, "must be above 0 and at most 3".into()));
             }
         }
         if !(spec.profile_shift.is_finite() && spec.profile_shift.abs() <= 2.0) {
             return Err(bad(
-                "profile_shift",
+                CurveField::ProfileShift,
                 spec.profile_shift,
                 "must be from −2 to 2".into(),
             ));
@@ -286,21 +293,24 @@ impl InvoluteGear {
         let rf = r - m * (spec.dedendum - x);
         if !(rf > 0.0) {
             return Err(bad(
-                "dedendum",
+                CurveField::Dedendum,
                 spec.dedendum,
                 format!("puts the root circle at radius {rf:.4}: it must be above the centre"),
             ));
         }
         if !(ra > rb && ra > rf) {
-            return Err(bad(
-                "addendum",
+            return Err(bad(CurveField::Addendum,
                 spec.addendum,
                 format!("puts the tip circle (radius {ra:.4}) inside the base circle (radius {rb:.4}): there is no involute"),
             ));
         }
         let j = spec.backlash;
         if !(j.is_finite() && j >= 0.0) {
-            return Err(bad("backlash", j, "must be zero or positive".into()));
+            return Err(bad(
+                CurveField::Backlash,
+                j,
+                "must be zero or positive".into(),
+            ));
         }
         let thickness = m * (FRAC_PI_2 + 2.0 * x * alpha.tan()) - j;
         // the involute's start on the base circle, at −γ for the lower flank of tooth 0
@@ -318,7 +328,7 @@ impl InvoluteGear {
         let fillet_max = Trochoid::largest(r, rf, alpha, w);
         if !(fillet_max >= 0.0) {
             return Err(bad(
-                "profile_shift",
+                CurveField::ProfileShift,
                 x,
                 "leaves no space between the teeth at the root: the teeth overlap".into(),
             ));
@@ -327,8 +337,7 @@ impl InvoluteGear {
             None => (0.38 * m).min(fillet_max * (1.0 - 1e-9)),
             Some(rho) => {
                 if !(rho.is_finite() && rho >= 0.0 && rho < fillet_max) {
-                    return Err(bad(
-                        "fillet_radius",
+                    return Err(bad(CurveField::FilletRadius,
                         rho,
                         format!("must be from 0 to below {fillet_max:.4}: the largest round the generating rack's tooth tip holds"),
                     ));
@@ -338,7 +347,7 @@ impl InvoluteGear {
         };
         let (trochoid, yc) = Trochoid::new(r, rf, alpha, w, fillet, -space).ok_or_else(|| {
             bad(
-                "fillet_radius",
+                CurveField::FilletRadius,
                 fillet,
                 format!(
                     "does not fit on the generating rack's tooth tip (at most {fillet_max:.4})"
@@ -366,8 +375,7 @@ impl InvoluteGear {
                 .find(|&k| side(at(k)).is_none_or(|f| f >= 0.0))
                 .unwrap_or(0);
             if side(at(k + 1)).is_none() {
-                return Err(bad(
-                    "teeth",
+                return Err(bad(CurveField::Teeth,
                     zf,
                     "are so few that the rack cuts the involute away down to the base circle (undercut): add profile shift".into(),
                 ));
@@ -388,7 +396,7 @@ impl InvoluteGear {
         let flank_from = trochoid.eval(s_end)[0].norm().max(rb);
         if half_angle(flank_from) >= space {
             return Err(bad(
-                "profile_shift",
+                CurveField::ProfileShift,
                 x,
                 "leaves no space between the teeth at the root: the teeth overlap".into(),
             ));
@@ -397,11 +405,10 @@ impl InvoluteGear {
         let relief = match spec.tip_relief {
             None => None,
             Some(t) => {
-                let amount = check_positive("tip_relief.amount", t.amount)?;
-                let length = check_positive("tip_relief.length", t.length)?;
+                let amount = check_positive(CurveField::TipReliefAmount, t.amount)?;
+                let length = check_positive(CurveField::TipReliefLength, t.length)?;
                 if la - length < lf {
-                    return Err(bad(
-                        "tip_relief.length",
+                    return Err(bad(CurveField::TipReliefLength,
                         length,
                         format!(
                             "is longer than the flank's roll length {:.4} (along the line of action)",
@@ -425,11 +432,14 @@ impl InvoluteGear {
             // named after what made it pointed: the thinning, the relief, or the tooth's height
             let plain = -half_angle(ra) - j / (2.0 * r);
             let (field, value) = if plain >= 0.0 {
-                ("addendum", spec.addendum)
+                (CurveField::Addendum, spec.addendum)
             } else if -half_angle(ra) >= 0.0 {
-                ("backlash", j)
+                (CurveField::Backlash, j)
             } else {
-                ("tip_relief.amount", relief.map_or(0.0, |r| r.amount))
+                (
+                    CurveField::TipReliefAmount,
+                    relief.map_or(0.0, |r| r.amount),
+                )
             };
             return Err(bad(
                 field,

@@ -1,6 +1,6 @@
 //! Straight line: `r(u) = p₀ + u d`, `|d| = 1`, `u` is arc length.
 
-use super::{check_point, unit_direction, Curve, CurveError, Derivs, Domain};
+use super::{check_point, unit_direction, Curve, CurveError, CurveField, Derivs, Domain};
 use crate::geometry::{Point2, Vec2};
 
 /// An infinite straight line through `anchor` along the unit vector `direction` (a flat face).
@@ -15,8 +15,8 @@ impl Line {
     /// A line; `direction` is normalised and must be non-zero.
     pub fn new(anchor: Point2, direction: Vec2) -> Result<Self, CurveError> {
         Ok(Self {
-            anchor: check_point("anchor", anchor)?,
-            direction: unit_direction("direction", direction)?,
+            anchor: check_point(CurveField::Anchor, anchor)?,
+            direction: unit_direction(CurveField::Direction, direction)?,
         })
     }
     /// The point at `u = 0`.

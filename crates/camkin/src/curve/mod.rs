@@ -156,6 +156,74 @@ pub trait Curve: std::fmt::Debug + Send + Sync {
     }
 }
 
+/// A field of the data a curve is built from, named by enum; its `Display` is the key of the
+/// mechanism-file schema where there is one (`semi_axes[0]`, `tip_relief.length`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum CurveField {
+    /// a circle's or an ellipse's centre
+    Center,
+    /// a circle's radius
+    Radius,
+    /// an ellipse's semi-axis (0 or 1)
+    SemiAxis(usize),
+    /// an ellipse's rotation
+    Rotation,
+    /// a point curve's place
+    Point,
+    /// a line's anchor
+    Anchor,
+    /// a line's direction
+    Direction,
+    /// a gear's module
+    Module,
+    /// a gear's number of teeth
+    Teeth,
+    /// a gear's pressure angle
+    PressureAngle,
+    /// a gear's addendum factor
+    Addendum,
+    /// a gear's dedendum factor
+    Dedendum,
+    /// a gear's profile shift coefficient
+    ProfileShift,
+    /// a gear's backlash
+    Backlash,
+    /// a gear's root fillet radius
+    FilletRadius,
+    /// a gear's tip relief at the tip
+    TipReliefAmount,
+    /// the length of a gear's tip relief
+    TipReliefLength,
+}
+
+impl std::fmt::Display for CurveField {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CurveField::SemiAxis(i) => write!(f, "semi_axes[{i}]"),
+            other => f.write_str(match other {
+                CurveField::Center => "center",
+                CurveField::Radius => "radius",
+                CurveField::Rotation => "rotation",
+                CurveField::Point => "point",
+                CurveField::Anchor => "anchor",
+                CurveField::Direction => "direction",
+                CurveField::Module => "module",
+                CurveField::Teeth => "teeth",
+                CurveField::PressureAngle => "pressure_angle_deg",
+                CurveField::Addendum => "addendum",
+                CurveField::Dedendum => "dedendum",
+                CurveField::ProfileShift => "profile_shift",
+                CurveField::Backlash => "backlash",
+                CurveField::FilletRadius => "fillet_radius",
+                CurveField::TipReliefAmount => "tip_relief.amount",
+                CurveField::TipReliefLength => "tip_relief.length",
+                CurveField::SemiAxis(_) => unreachable!("written above"),
+            }),
+        }
+    }
+}
+
 /// What is wrong with the data a curve was asked to be built from.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -192,7 +260,7 @@ pub enum CurveError {
     #[error("{field} must be positive and finite, got {}", crate::human::human(*.value))]
     NonPositive {
         /// the field
-        field: &'static str,
+        field: CurveField,
         /// the value given
         value: f64,
     },
@@ -200,7 +268,7 @@ pub enum CurveError {
     #[error("{field} must be finite, got {}", crate::human::human(*.value))]
     NonFinite {
         /// the field
-        field: &'static str,
+        field: CurveField,
         /// the value given
         value: f64,
     },
@@ -208,7 +276,7 @@ pub enum CurveError {
     #[error("{field} must be a non-zero finite vector, got ({}, {})", crate::human::human(*.x), crate::human::human(*.y))]
     ZeroDirection {
         /// the field
-        field: &'static str,
+        field: CurveField,
         /// x of the vector
         x: f64,
         /// y of the vector
@@ -235,8 +303,8 @@ pub enum CurveError {
     /// A gear that cannot be made from the data given.
     #[error("{field} = {}: {reason}", crate::human::human(*.value))]
     Gear {
-        /// the field, as in mechanism files
-        field: &'static str,
+        /// the field
+        field: CurveField,
         /// the value given
         value: f64,
         /// why not
@@ -286,7 +354,7 @@ pub(crate) fn piece_samples(
     wrapped.chain(pieces)
 }
 
-pub(crate) fn check_positive(field: &'static str, value: f64) -> Result<f64, CurveError> {
+pub(crate) fn check_positive(field: CurveField, value: f64) -> Result<f64, CurveError> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
@@ -294,7 +362,7 @@ pub(crate) fn check_positive(field: &'static str, value: f64) -> Result<f64, Cur
     }
 }
 
-pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<f64, CurveError> {
+pub(crate) fn check_finite(field: CurveField, value: f64) -> Result<f64, CurveError> {
     if value.is_finite() {
         Ok(value)
     } else {
@@ -302,14 +370,14 @@ pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<f64, Curve
     }
 }
 
-pub(crate) fn check_point(field: &'static str, p: Point2) -> Result<Point2, CurveError> {
+pub(crate) fn check_point(field: CurveField, p: Point2) -> Result<Point2, CurveError> {
     check_finite(field, p.x)?;
     check_finite(field, p.y)?;
     Ok(p)
 }
 
 /// The unit vector along `v`, or an error naming `field` when `v` is zero or not finite.
-pub fn unit_direction(field: &'static str, v: Vec2) -> Result<Vec2, CurveError> {
+pub fn unit_direction(field: CurveField, v: Vec2) -> Result<Vec2, CurveError> {
     let n = v.norm();
     if n.is_finite() && n > 0.0 {
         Ok(v / n)

@@ -1,6 +1,6 @@
 //! A single point: the knife edge.
 
-use super::{check_point, Curve, CurveError, Derivs, Domain};
+use super::{check_point, Curve, CurveError, CurveField, Derivs, Domain};
 use crate::geometry::{Point2, Vec2};
 
 /// A point fixed in its body (a knife-edge tip). Its domain is [`Domain::Point`]: contact with it
@@ -14,7 +14,7 @@ impl PointCurve {
     /// The point `at` (finite).
     pub fn new(at: Point2) -> Result<Self, CurveError> {
         Ok(Self {
-            at: check_point("point", at)?,
+            at: check_point(CurveField::Point, at)?,
         })
     }
     /// Where it is, in its body frame.

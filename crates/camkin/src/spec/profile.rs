@@ -7,7 +7,7 @@ use super::ProfileSpec;
 use crate::cam::synthesis::synthesize;
 use crate::cam::{Follower, Sense};
 use crate::curve::{
-    read_points_file, Circle, ClosedSpline, Curve, CurveError, Ellipse, InvoluteGear,
+    read_points_file, Circle, ClosedSpline, Curve, CurveError, CurveField, Ellipse, InvoluteGear,
     InvoluteGearSpec, Line, Parameterization, PointCurve, TipRelief, MAX_POINTS,
 };
 use crate::field::{Field, ProfileField, SegmentField};
@@ -504,15 +504,16 @@ impl ProfileSpec {
                 reason,
             } => {
                 let at = match field {
-                    "teeth" => P::Teeth,
-                    "pressure_angle_deg" => P::PressureAngle,
-                    "addendum" => P::Addendum,
-                    "dedendum" => P::Dedendum,
-                    "profile_shift" => P::ProfileShift,
-                    "backlash" => P::Backlash,
-                    "fillet_radius" => P::FilletRadius,
-                    "tip_relief.length" => P::TipReliefLength,
-                    "tip_relief.amount" => P::TipRelief,
+                    CurveField::Teeth => P::Teeth,
+                    CurveField::PressureAngle => P::PressureAngle,
+                    CurveField::Addendum => P::Addendum,
+                    CurveField::Dedendum => P::Dedendum,
+                    CurveField::ProfileShift => P::ProfileShift,
+                    CurveField::Backlash => P::Backlash,
+                    CurveField::FilletRadius => P::FilletRadius,
+                    CurveField::TipReliefLength => P::TipReliefLength,
+                    CurveField::TipReliefAmount => P::TipRelief,
+                    CurveField::Module => P::Module,
                     _ => P::Kind,
                 };
                 SpecError::Invalid {

@@ -218,32 +218,43 @@ fn tip_relief_removes_the_closed_form_amount_along_the_normal() {
 fn refuses_gears_that_cannot_be_made() {
     let a = 20f64.to_radians();
     let field = |s: InvoluteGearSpec| match InvoluteGear::new(s) {
-        Err(CurveError::Gear { field, .. }) => field,
-        Err(CurveError::NonPositive { field, .. }) => field,
+        // the field by enum, and its name as the schema writes it
+        Err(CurveError::Gear { field, .. }) => (field, field.to_string()),
+        Err(CurveError::NonPositive { field, .. }) => (field, field.to_string()),
         other => panic!("accepted: {other:?}"),
     };
-    assert_eq!(field(InvoluteGearSpec::new(2.0, 2, a)), "teeth");
-    assert_eq!(field(InvoluteGearSpec::new(f64::NAN, 20, a)), "module");
+    use super::super::CurveField as F;
+    assert_eq!(
+        field(InvoluteGearSpec::new(2.0, 2, a)),
+        (F::Teeth, "teeth".to_string())
+    );
+    assert_eq!(
+        field(InvoluteGearSpec::new(f64::NAN, 20, a)),
+        (F::Module, "module".to_string())
+    );
     assert_eq!(
         field(InvoluteGearSpec::new(2.0, 20, 60f64.to_radians())),
-        "pressure_angle_deg"
+        (F::PressureAngle, "pressure_angle_deg".to_string())
     );
     let mut s = InvoluteGearSpec::new(2.0, 10, a);
     s.addendum = 2.0;
-    assert_eq!(field(s), "addendum");
+    assert_eq!(field(s), (F::Addendum, "addendum".to_string()));
     let mut s = InvoluteGearSpec::new(2.0, 20, a);
     s.fillet_radius = Some(5.0);
-    assert_eq!(field(s), "fillet_radius");
+    assert_eq!(field(s), (F::FilletRadius, "fillet_radius".to_string()));
     let mut s = InvoluteGearSpec::new(2.0, 20, a);
     s.tip_relief = Some(TipRelief {
         amount: 0.01,
         length: 50.0,
         shape: ReliefShape::Linear,
     });
-    assert_eq!(field(s), "tip_relief.length");
+    assert_eq!(
+        field(s),
+        (F::TipReliefLength, "tip_relief.length".to_string())
+    );
     let mut s = InvoluteGearSpec::new(2.0, 20, a);
     s.backlash = 3.0;
-    assert_eq!(field(s), "backlash");
+    assert_eq!(field(s), (F::Backlash, "backlash".to_string()));
     let message = InvoluteGear::new(InvoluteGearSpec::new(2.0, 2, a))
         .unwrap_err()
         .to_string();
