@@ -735,27 +735,24 @@ fn numeric_options_take_a_sign_and_refuse_a_unit_in_the_number() {
         (vec!["profile", ecc], "--tolerance"),
         (vec!["deviation", measured, "--against", ecc], "--tolerance"),
     ];
-    for (head, flag) in &cases {
+    // the refusal's stderr of `head flag value` (exit 2)
+    let refused = |head: &[&str], flag: &str, value: &str| {
         let out = camkin()
             .args(head)
-            .args([*flag, "12mm"])
+            .args([flag, value])
             .assert()
             .code(2)
             .get_output()
             .clone();
-        let err = String::from_utf8_lossy(&out.stderr);
+        String::from_utf8_lossy(&out.stderr).to_string()
+    };
+    for (head, flag) in &cases {
+        let err = refused(head, flag, "12mm");
         assert!(
             err.contains("write the number alone (12)") && err.contains(flag),
             "{flag} 12mm: {err}"
         );
-        let out = camkin()
-            .args(head)
-            .args([*flag, "-7"])
-            .assert()
-            .code(2)
-            .get_output()
-            .clone();
-        let err = String::from_utf8_lossy(&out.stderr);
+        let err = refused(head, flag, "-7");
         assert!(
             !err.contains("unexpected argument") && err.contains(flag) && err.contains("-7"),
             "{flag} -7: {err}"
