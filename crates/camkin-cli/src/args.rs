@@ -61,6 +61,37 @@ pub fn real(s: &str) -> Result<f64, BadValue> {
     }
 }
 
+/// The override of the work estimate, shared by every command that estimates its work.
+#[derive(Debug, Clone, Copy, Default, clap::Args)]
+pub struct WorkArgs {
+    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
+    #[arg(long)]
+    pub large: bool,
+}
+
+/// Where a table goes and in what format (`analyze`, `contacts`, `mesh`).
+#[derive(Debug, Clone, clap::Args)]
+pub struct TableArgs {
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = crate::output::TableFormat::Csv)]
+    pub format: crate::output::TableFormat,
+    /// Output file (written atomically); standard output without it.
+    #[arg(short = 'o', long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+}
+
+/// The units of the follower's motion on a page or in a table (`analyze`, `plot`, `synth`).
+#[derive(Debug, Clone, Copy, clap::Args)]
+pub struct MotionUnitArgs {
+    /// Derivatives of the follower's motion per second of time, or per degree of cam angle
+    /// (ds/dθ, d²s/dθ², d³s/dθ³, as cam tools print them).
+    #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
+    pub per: camkin::table::Per,
+    /// Unit of an oscillating follower's arm angle and its derivatives.
+    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
+    pub angle_unit: camkin::table::AngleUnit,
+}
+
 /// Cam angles in degrees, comma-separated: `A1,A2,...`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AngleList(pub Vec<f64>);

@@ -6,8 +6,8 @@ use crate::{load_mechanism, Failure};
 use anyhow::Result;
 use camkin::cam::Mechanism;
 use camkin::table::AnalysisSweep;
+use camkin::table::Units;
 use camkin::table::{analysis_cells, analysis_columns};
-use camkin::table::{AngleUnit, Per, Units};
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -25,22 +25,12 @@ pub struct Args {
     /// Range of cam angles in degrees: START:STOP:STEP, STOP excluded [default: 0:360:1].
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub angles: Option<AngleRange>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-    /// Derivatives of the follower's motion per second of time, or per degree of cam angle
-    /// (ds/dθ, d²s/dθ², d³s/dθ³, as cam tools print them).
-    #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
-    pub per: Per,
-    /// Unit of an oscillating follower's arm angle and its derivatives.
-    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
-    pub angle_unit: AngleUnit,
-    /// Output file (written atomically); standard output without it.
-    #[arg(short = 'o', long, value_name = "FILE")]
-    pub output: Option<PathBuf>,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub units: crate::args::MotionUnitArgs,
+    #[command(flatten)]
+    pub table: crate::args::TableArgs,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 /// Warnings on stderr: profile stretches the follower cannot follow, and where the contact jumps
@@ -96,20 +86,20 @@ const BYTES_PER_ROW: f64 = 380.0;
 pub fn run(args: &Args) -> Result<(), Failure> {
     let loaded = load_mechanism(args.mechanism.as_ref())?;
     let mech = &loaded.mech;
-    let units = Units::new(mech, loaded.unit, args.angle_unit, args.per);
+    let units = Units::new(mech, loaded.unit, args.units.angle_unit, args.units.per);
     let columns = analysis_columns(&units);
     let angles = match (&args.at, args.angles) {
         (Some(list), _) => list.0.clone(),
         (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
     };
-    let per_row = match args.format {
+    let per_row = match args.table.format {
         TableFormat::Csv => BYTES_PER_ROW,
         TableFormat::Json => 2.0 * BYTES_PER_ROW,
     };
     // the bytes written (memory stays bounded: rows are written CHUNK at a time)
     crate::refuse_large(
         &camkin::work::Work::sweep(mech, angles.len(), 1).with_bytes(angles.len() as f64 * per_row),
-        args.large,
+        args.work.large,
         ", or use fewer angles",
     )?;
     let contiguous = args.at.is_none();
@@ -128,11 +118,11 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         pb.inc(chunk.len() as u64);
         Some(chunk.iter().map(|r| analysis_cells(r, &units)).collect())
     };
-    write_atomic(args.output.as_deref(), |w| {
-        write_cells(w, args.format, &columns, &mut next_chunk)
+    write_atomic(args.table.output.as_deref(), |w| {
+        write_cells(w, args.table.format, &columns, &mut next_chunk)
     })
     .map_err(|e| {
-        if args.output.is_some() {
+        if args.table.output.is_some() {
             Failure::output(e)
         } else {
             // standard output that cannot be written is not the user's input

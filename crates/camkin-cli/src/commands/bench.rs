@@ -22,9 +22,8 @@ pub struct BenchArgs {
     /// Repetitions of each measurement (the median is reported).
     #[arg(long, default_value_t = 15)]
     pub repeats: usize,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
     /// Also count the instructions of a cold query, a warm step and a full-state warm step with
     /// valgrind's callgrind (which must be installed: Debian's package `valgrind`); they do not
     /// depend on the machine's load. JSON key `instructions`.
@@ -220,7 +219,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
     let work = r
         * (1000 + 2 * SWEEP_REVOLUTIONS * per_revolution + 2 * NODES.iter().sum::<usize>())
         + per_revolution;
-    crate::check_sweep_time(&mech, work, 1, args.large)?;
+    crate::check_sweep_time(&mech, work, 1, args.work.large)?;
 
     // cold queries at scattered angles
     let cold: Vec<f64> = (0..1000)

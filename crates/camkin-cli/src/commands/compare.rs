@@ -36,10 +36,8 @@ pub struct PaperArgs {
     /// Format of the summary on stdout.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Allow a study estimated at over a minute or 2 GB of memory (refused otherwise, with the
-    /// estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 #[derive(Debug, clap::Args)]
@@ -61,10 +59,8 @@ pub struct CompareArgs {
     /// Format of the summary on stdout.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Allow a study estimated at over a minute or 2 GB of memory (refused otherwise, with the
-    /// estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 /// Writes the study's CSV files and plots into `dir`.
@@ -319,7 +315,7 @@ fn json_summary(study: &Study) -> Value {
 
 pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let (nodes, step) = (&args.nodes.0, args.step.deg());
-    study::check_bounds(nodes, step, 2, true, args.large).map_err(Failure::Input)?;
+    study::check_bounds(nodes, step, 2, true, args.work.large).map_err(Failure::Input)?;
     let mut md =
         String::from("# The paper's study: contact method against interpolated displacement\n\n");
     let mut csv = Vec::new();
@@ -349,7 +345,8 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
 
 pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
     let (nodes, step) = (&args.nodes.0, args.step.deg());
-    study::check_bounds(nodes, step, 1, args.out.is_some(), args.large).map_err(Failure::Input)?;
+    study::check_bounds(nodes, step, 1, args.out.is_some(), args.work.large)
+        .map_err(Failure::Input)?;
     let zoom = args.zoom.map(|w| (w.start, w.stop));
     let loaded = load_mechanism(Some(&args.mechanism))?;
     let mech = loaded.mech;
@@ -361,7 +358,12 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
         .unwrap_or_else(|| "mechanism".into());
     // the grid, and every interpolation node twice (built twice, for its timing)
     let grid = (360.0 / step).round() as usize;
-    crate::check_sweep_time(&mech, grid + 2 * nodes.iter().sum::<usize>(), 1, args.large)?;
+    crate::check_sweep_time(
+        &mech,
+        grid + 2 * nodes.iter().sum::<usize>(),
+        1,
+        args.work.large,
+    )?;
     let study = study::run(&mech, nodes, step, &title).map_err(Failure::Input)?;
     if let Some(dir) = &args.out {
         write_files(&study, dir, &title, &u, zoom).map_err(Failure::output)?;

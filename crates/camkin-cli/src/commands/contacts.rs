@@ -3,7 +3,7 @@
 //! constraint row `Φ_θ θ̈ + Φ_q q̈ = γ`; CSV or JSON.
 
 use crate::args::{AngleList, AngleRange};
-use crate::output::{write_atomic, write_cells, TableFormat};
+use crate::output::{write_atomic, write_cells};
 use crate::{load_mechanism, Failure};
 use camkin::table::{contact_cells, contact_columns, ContactRow, Units};
 use std::path::PathBuf;
@@ -23,15 +23,10 @@ pub struct ContactsArgs {
     /// Range of cam angles in degrees: START:STOP:STEP, STOP excluded [default: 0:360:1].
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub angles: Option<AngleRange>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-    /// Output file (written atomically); standard output without it.
-    #[arg(short = 'o', long, value_name = "FILE")]
-    pub output: Option<PathBuf>,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub table: crate::args::TableArgs,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
@@ -43,7 +38,7 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
     };
     crate::refuse_large(
         &camkin::work::Work::contacts(mech, angles.len()),
-        args.large,
+        args.work.large,
         ", or use fewer angles",
     )?;
     let contiguous = args.at.is_none();
@@ -66,11 +61,11 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
             .map(|r| contact_cells(r, &units))
             .collect::<Vec<_>>(),
     );
-    write_atomic(args.output.as_deref(), |w| {
-        write_cells(w, args.format, &columns, &mut || chunk.take())
+    write_atomic(args.table.output.as_deref(), |w| {
+        write_cells(w, args.table.format, &columns, &mut || chunk.take())
     })
     .map_err(|e| {
-        if args.output.is_some() {
+        if args.table.output.is_some() {
             Failure::output(e)
         } else {
             Failure::Internal(e)

@@ -38,9 +38,8 @@ pub struct DeviationArgs {
     /// Directory for radius.csv and motion.csv.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 fn fail(m: String) -> Failure {
@@ -125,7 +124,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
     // the design and the measured profile swept, about 400 bytes an angle held
     crate::refuse_large(
         &camkin::work::Work::sweep(mech, m, 2).with_bytes(m as f64 * 400.0),
-        args.large,
+        args.work.large,
         ", or use a coarser --step",
     )?;
     let thetas: Vec<f64> = (0..m).map(|k| (k as f64 * step).to_radians()).collect();

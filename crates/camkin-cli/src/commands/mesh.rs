@@ -5,7 +5,7 @@
 use crate::args::{AngleList, AngleRange};
 use crate::draw::svaj;
 use crate::mechfile;
-use crate::output::{write_atomic, write_cells, TableFormat};
+use crate::output::{write_atomic, write_cells};
 use crate::{load_mechanism, Failure, Loaded};
 use anyhow::{anyhow, Context};
 use camkin::gears::GearPair;
@@ -31,19 +31,14 @@ pub struct MeshArgs {
     /// cycles, 0:720/z1, 360 steps each: a tooth pair's whole time in mesh and a handover].
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub angles: Option<AngleRange>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-    /// Output file (written atomically); standard output without it.
-    #[arg(short = 'o', long, value_name = "FILE")]
-    pub output: Option<PathBuf>,
+    #[command(flatten)]
+    pub table: crate::args::TableArgs,
     /// Also draw the transmission error, the driven gear's acceleration, the sliding velocity
     /// and both flanks' specific sliding over the angles into DIR/mesh.{svg,png}.
     #[arg(long, value_name = "DIR")]
     pub plot: Option<PathBuf>,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 /// The built-in pair.
@@ -96,7 +91,7 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
     // the rows are held in memory, about 250 bytes each
     crate::refuse_large(
         &camkin::work::Work::sweep(mech, angles.len(), 1).with_bytes(angles.len() as f64 * 250.0),
-        args.large,
+        args.work.large,
         ", or use fewer angles",
     )?;
     let contiguous = args.at.is_none();
@@ -111,11 +106,11 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
     let units = Units::plain(mech, loaded.unit);
     let columns = mesh_columns(&units);
     let mut chunk = Some(rows.iter().map(mesh_cells).collect::<Vec<_>>());
-    write_atomic(args.output.as_deref(), |w| {
-        write_cells(w, args.format, &columns, &mut || chunk.take())
+    write_atomic(args.table.output.as_deref(), |w| {
+        write_cells(w, args.table.format, &columns, &mut || chunk.take())
     })
     .map_err(|e| {
-        if args.output.is_some() {
+        if args.table.output.is_some() {
             Failure::output(e)
         } else {
             Failure::Internal(e)

@@ -7,7 +7,7 @@ use crate::draw::svaj;
 use crate::{load_mechanism, Failure, Loaded};
 use anyhow::{anyhow, Context, Result};
 use camkin::cam::{FollowerState, Mechanism};
-use camkin::table::{AngleUnit, Per, Units};
+use camkin::table::{Per, Units};
 use camkin::Point2;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -34,15 +34,10 @@ pub struct PlotArgs {
     /// Frames of the animation over one revolution.
     #[arg(long, value_name = "N", default_value_t = 72)]
     pub frames: usize,
-    /// Derivatives on the SVAJ page per second of time, or per degree of cam angle.
-    #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
-    pub per: Per,
-    /// Unit of an oscillating follower's arm angle.
-    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
-    pub angle_unit: AngleUnit,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub units: crate::args::MotionUnitArgs,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 fn rgb(c: scene::Rgb) -> RGBColor {
@@ -397,13 +392,13 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     }
     let loaded = load_mechanism(args.mechanism.as_ref())?;
     let mech = &loaded.mech;
-    let units = Units::new(mech, loaded.unit, args.angle_unit, args.per);
+    let units = Units::new(mech, loaded.unit, args.units.angle_unit, args.units.per);
     let curve_angles = (360.0 / step).round() as usize;
     // the rows of every plotted angle are held, about 450 bytes each
     crate::refuse_large(
         &camkin::work::Work::sweep(mech, curve_angles + args.frames + angles.len(), 1)
             .with_bytes(curve_angles as f64 * 450.0),
-        args.large,
+        args.work.large,
         ", or use a coarser --step",
     )?;
     std::fs::create_dir_all(&args.out)

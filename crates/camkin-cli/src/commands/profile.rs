@@ -25,9 +25,8 @@ pub struct ProfileArgs {
     /// [default: 1e-6 of the cam's size].
     #[arg(long, value_name = "LENGTH", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
@@ -47,7 +46,7 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
     let angles = (360.0 / args.step.deg()).round() as usize;
     crate::refuse_large(
         &camkin::work::Work::sweep(&loaded.mech, angles, 2).with_bytes(angles as f64 * 250.0),
-        args.large,
+        args.work.large,
         ", or use a coarser --step",
     )?;
     let made = manufacture::write(

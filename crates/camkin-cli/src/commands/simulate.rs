@@ -43,10 +43,8 @@ pub struct SimulateArgs {
     /// Format of the time series.
     #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
     pub format: TableFormat,
-    /// Allow a run estimated at over a minute or a million rows (refused otherwise, with the
-    /// estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 fn dyn_err(e: DynamicsError) -> Failure {
@@ -112,7 +110,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         &sim.work(steps)
             .and(&camkin::work::Work::sweep(&mech, 1441 + outputs, 1))
             .with_bytes(outputs as f64 * 200.0),
-        args.large,
+        args.work.large,
         ", or simulate fewer --revolutions",
     )?;
     let w = mech.cam().speed();

@@ -6,7 +6,7 @@ use crate::draw::svaj;
 use crate::output::write_atomic;
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
-use camkin::table::{AngleUnit, Per, Units};
+use camkin::table::{Per, Units};
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -22,19 +22,14 @@ pub struct SynthArgs {
     /// Largest acceptable pressure angle, degrees.
     #[arg(long, value_name = "DEG", default_value_t = 30.0, value_parser = crate::args::real, allow_negative_numbers = true)]
     pub pressure_limit: f64,
-    /// Derivatives on the SVAJ page per second of time, or per degree of cam angle.
-    #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
-    pub per: Per,
-    /// Unit of an oscillating follower's arm angle.
-    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
-    pub angle_unit: AngleUnit,
+    #[command(flatten)]
+    pub units: crate::args::MotionUnitArgs,
     /// Radius of the cutter or grinding wheel whose centre path to write (cutter.csv and a
     /// layer of profile.dxf), in the file's length unit.
     #[arg(long, value_name = "R", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub tool_radius: Option<f64>,
-    /// Allow a run estimated at over 30 s or 1 GB (refused otherwise, with the estimate).
-    #[arg(long)]
-    pub large: bool,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 /// Bytes written per profile point, about (CSV, DXF, SVG and the four SVAJ SVGs; measured:
@@ -80,11 +75,11 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     let points = (360.0 / step).round();
     let loaded = load_mechanism(Some(&args.mechanism))?;
     let mech = &loaded.mech;
-    let u = Units::new(mech, loaded.unit, args.angle_unit, args.per);
+    let u = Units::new(mech, loaded.unit, args.units.angle_unit, args.units.per);
     // the files written
     crate::refuse_large(
         &camkin::work::Work::sweep(mech, points as usize, 1).with_bytes(points * BYTES_PER_POINT),
-        args.large,
+        args.work.large,
         ", or use a coarser --step",
     )?;
     let profile = mech.cam().profile();
@@ -183,7 +178,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         )
     };
     // the round trip is in time derivatives whatever --per says
-    let ut = Units::new(mech, loaded.unit, args.angle_unit, Per::S);
+    let ut = Units::new(mech, loaded.unit, args.units.angle_unit, Per::S);
     let (su, vu, au) = (
         ut.motion_symbol(0),
         ut.motion_symbol(1),
