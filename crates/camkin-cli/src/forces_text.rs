@@ -1,7 +1,6 @@
 //! The force report ([`camkin::report::ForceReport`]) in words, for people: every number rounded
 //! to four significant digits with its unit, angles to 0.01°.
 
-use camkin::dynamics::ForceState;
 use camkin::human::human;
 use camkin::report::{rpm, ForceCheck, ForceReport, FormClosed, HertzReport};
 
@@ -244,9 +243,4 @@ pub fn failures(r: &ForceReport) -> Option<String> {
         })
         .collect();
     (!all.is_empty()).then(|| format!("check failed: {}", all.join("; ")))
-}
-
-/// The force the second curve carries at one angle (0 without one), for plots.
-pub fn second_force(s: &ForceState) -> f64 {
-    s.second.map_or(0.0, |c| c.contact_force)
 }

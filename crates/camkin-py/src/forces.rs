@@ -86,19 +86,6 @@ impl PyMechanism {
             Some(m) => self::materials(m)?,
             None => Materials::default(),
         };
-        let n = 360.0 / step_deg;
-        if !(step_deg.is_finite() && step_deg > 0.0 && step_deg <= 90.0)
-            || (n - n.round()).abs() > 1e-9 * n
-        {
-            return Err(errors::input(
-                "step_deg",
-                Some(camkin::human::human(step_deg)),
-                format!(
-                    "step_deg: {}° must be in (0°, 90°] and divide 360°",
-                    camkin::human::human(step_deg)
-                ),
-            ));
-        }
         let (built, params) = self.built_si("forces")?;
         let mech = built.mechanism;
         let req = ForceRequest {

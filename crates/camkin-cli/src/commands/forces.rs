@@ -160,7 +160,11 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
             if r.closed {
                 vec![
                     series("follower's own curve", false, |s| s.contact_force),
-                    series("second curve", true, forces_text::second_force),
+                    series(
+                        "second curve",
+                        true,
+                        camkin::dynamics::ForceState::second_force,
+                    ),
                 ]
             } else {
                 vec![series("contact force", false, |s| s.contact_force)]

@@ -125,8 +125,7 @@ impl DesignChecks {
     }
 }
 
-/// The design checks at cam angles `thetas` (rad), the pressure angle against
-/// `pressure_limit_deg`.
+/// The body of [`Mechanism::design_checks`] (documented there).
 pub(crate) fn design_checks(
     mech: &Mechanism,
     thetas: &[f64],

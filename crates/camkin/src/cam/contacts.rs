@@ -70,17 +70,12 @@ pub struct Contact {
     pub corner: Option<super::Corner>,
 }
 
-/// Every contact at cam angle `theta` (rad): the first touch of [`Mechanism::analyze`]
-/// first, then each other place where the follower's curve touches the cam at that position
-/// (see [`Mechanism::contacts_at`]).
+/// The body of [`Mechanism::contacts`] (documented there).
 pub(crate) fn contacts(mech: &Mechanism, theta: f64) -> Result<Vec<Contact>, CamError> {
     contacts_at(mech, &mech.analyze(theta)?)
 }
 
-/// About how many seconds finding every contact at `angles` cam angles takes: the sweep,
-/// and per angle one more search (about 1.5 ms for a follower carrying a curve, twice what
-/// the 20/42 gear pair measured; 50 µs for a named kind, a cold query's cost at 100 000
-/// nodes).
+/// The body of [`Mechanism::contacts_seconds_estimate`] (documented there).
 pub(crate) fn contacts_seconds_estimate(mech: &Mechanism, angles: usize) -> f64 {
     let per_angle = if mech.touch.carried().is_some() {
         1.5e-3
@@ -90,14 +85,7 @@ pub(crate) fn contacts_seconds_estimate(mech: &Mechanism, angles: usize) -> f64 
     mech.sweep_seconds_estimate(angles) + angles as f64 * per_angle
 }
 
-/// Every contact with the follower at the state `s` (from [`Mechanism::analyze`] or a
-/// [`Sweep`](super::Sweep)): its own contact first, then the other tangencies (in the order of
-/// the cam's parameter) within the
-/// touch tolerance of its position, found from the same starts as the first-touch search (the
-/// local maxima of the sampled first-touch function; a carried curve's covered cam samples)
-/// and refined by Newton, then a conjugate follower's second curve where its play is within
-/// the touch tolerance or negative. Each has its kinematics at the state's velocity and
-/// acceleration.
+/// The body of [`Mechanism::contacts_at`] (documented there).
 pub(crate) fn contacts_at(mech: &Mechanism, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
     let at = &Instant::new(mech.cam(), s.cam_angle);
     let frame = &at.frame;

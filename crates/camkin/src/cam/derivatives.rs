@@ -40,10 +40,7 @@ fn turned((c, s): (Jet, Jet), v: V2<Jet>) -> V2<Jet> {
     V2::new(c * v.x - s * v.y, s * v.x + c * v.y)
 }
 
-/// `(dq/dθ, d²q/dθ², d³q/dθ³)` at cam angle `theta` (rad) by implicit differentiation of the
-/// first-touch conditions (see the `jet` module). This is independent of the paper's method
-/// and gives the jerk; `d³q/dθ³` takes the profile's third derivative on the segment that
-/// holds the contact (at a spline node it jumps).
+/// The body of [`Mechanism::angle_derivatives`] (documented there).
 pub(crate) fn angle_derivatives(mech: &Mechanism, theta: f64) -> Result<[f64; 3], CamError> {
     let at = &Instant::new(mech.cam(), theta);
     let touch = mech.touch.global_touch(at)?;

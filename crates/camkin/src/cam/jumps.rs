@@ -52,10 +52,7 @@ pub fn contact_jumps_with(
     out
 }
 
-/// Cam angles (degrees, in `[0, 360)`) at which the contact jumps over a revolution sampled
-/// every `step_deg` degrees: the end angle of every step across which the contact left one
-/// part of the profile for another (see [`contact_jumps`]). Empty for a follower that stays
-/// on the profile all round.
+/// The body of [`Mechanism::jump_angles`] (documented there).
 pub(crate) fn jump_angles(mech: &Mechanism, step_deg: f64) -> Vec<f64> {
     // on a convex profile the first touch moves continuously: nothing to scan
     if mech.touch.convex {

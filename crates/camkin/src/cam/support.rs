@@ -65,21 +65,12 @@ struct Support {
     u: f64,
 }
 
-/// The follower's position at cam angle `theta` (rad) computed independently of the contact
-/// method (the support function: see [`Mechanism::independent_check`]) and the profile
-/// parameter of the cam point realising it, or `None` when the follower touches no cam point.
+/// The body of [`Mechanism::support_position`] (documented there).
 pub(crate) fn support_position(mech: &Mechanism, theta: f64) -> Option<(f64, f64)> {
     support(mech, theta).map(|s| (s.q, s.u))
 }
 
-/// Compares the contact method's position, velocity and acceleration at `thetas` (rad) with
-/// an independent computation: the follower's position as the cam's *support function* (for
-/// every cam point, the coordinate at which the follower's boundary passes through it,
-/// entering the follower in its closing sense; the extreme of that over the profile, by
-/// sampling and golden-section search; a knife edge's over the crossings of its path, by
-/// bisection), its velocity and acceleration by seven-point differences in the cam angle.
-/// No tangency condition, Newton solve or curvature is involved. Fails only when the contact
-/// method fails.
+/// The body of [`Mechanism::independent_check`] (documented there).
 pub(crate) fn independent_check(
     mech: &Mechanism,
     thetas: &[f64],

@@ -35,12 +35,7 @@ impl Travel {
 /// Samples per revolution of the coarse scan.
 const SAMPLES: usize = 720;
 
-/// The rest and farthest positions of the follower over a revolution, each located to
-/// rounding: a scan at 0.5° steps, then the zero of the velocity (exact, by the contact
-/// method) between the neighbours of the extreme sample, by bisection. Where the velocity
-/// does not change sign there (a dwell, or an extreme at a jump of the contact) the extreme
-/// sample stands. The scan is a warm-started sweep: the cost is about that of analysing
-/// 720 angles plus some 100 global searches.
+/// The body of [`Mechanism::travel`] (documented there).
 pub(crate) fn travel(mech: &Mechanism) -> Result<Travel, CamError> {
     let step = std::f64::consts::TAU / SAMPLES as f64;
     let mut sweep = mech.sweep();

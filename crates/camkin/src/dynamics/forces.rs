@@ -72,6 +72,13 @@ pub struct ForceState {
     pub second: Option<SecondContact>,
 }
 
+impl ForceState {
+    /// The force a form-closed follower's second curve carries, N (0 without one).
+    pub fn second_force(&self) -> f64 {
+        self.second.map_or(0.0, |c| c.contact_force)
+    }
+}
+
 /// The second curve of a form-closed follower at one cam angle ([`ForceState::second`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]

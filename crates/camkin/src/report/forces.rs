@@ -223,12 +223,16 @@ impl ForceRequest {
             unit,
             reason,
         };
-        if !(self.step_deg.is_finite() && self.step_deg > 0.0 && self.step_deg <= 360.0) {
+        // the revolution cut into equal steps, as every front end's step is
+        let n = 360.0 / self.step_deg;
+        if !(self.step_deg.is_finite() && self.step_deg > 0.0 && self.step_deg <= 90.0)
+            || (n - n.round()).abs() > 1e-9 * n
+        {
             return Err(bad(
                 ForceField::Step,
                 self.step_deg,
                 "°",
-                "must be in (0, 360]",
+                "must be in (0°, 90°] and divide 360°",
             ));
         }
         if !(self.margin.is_finite() && self.margin >= 0.0) {
@@ -476,16 +480,14 @@ impl ForceReport {
 
     /// The force–speed table (`force_speed.csv`).
     pub fn force_speed_table(&self) -> (Vec<String>, Vec<Vec<Cell>>) {
+        let names: &[&str] = if self.closed {
+            &["max_contact_force_N", "max_second_contact_force_N"]
+        } else {
+            &["min_contact_force_N"]
+        };
+        let curves = names.len();
         let mut columns = vec!["speed_rpm".to_string()];
-        let curves = if self.closed { 2 } else { 1 };
-        columns.extend(
-            ["max_contact_force_N", "max_second_contact_force_N"][..curves]
-                .iter()
-                .map(|c| c.to_string()),
-        );
-        if !self.closed {
-            columns[1] = "min_contact_force_N".into();
-        }
+        columns.extend(names.iter().map(|c| c.to_string()));
         let rows = self
             .force_speed
             .iter()
@@ -535,11 +537,6 @@ fn spring_sizing(
     }
 }
 
-/// The force the second curve of a form-closed follower carries (0 without one).
-fn second_force(s: &ForceState) -> f64 {
-    s.second.map_or(0.0, |c| c.contact_force)
-}
-
 fn form_closed_loads(
     mech: &Mechanism,
     states: &[ForceState],
@@ -552,14 +549,14 @@ fn form_closed_loads(
             .expect("a revolution has angles");
         Extreme::of(g(s), s)
     };
-    let (p1, p2) = (peak(|s| s.contact_force), peak(second_force));
+    let (p1, p2) = (peak(|s| s.contact_force), peak(ForceState::second_force));
     // which curve carries, angle by angle (neither, or a force at rounding level of the peak:
     // the last one's), around the revolution
     let small = 1e-9 * p1.value.max(p2.value);
     let side = |s: &ForceState| {
         if s.contact_force > small {
             Some(false)
-        } else if second_force(s) > small {
+        } else if s.second_force() > small {
             Some(true)
         } else {
             None
