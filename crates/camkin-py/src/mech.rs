@@ -559,7 +559,9 @@ impl PyMechanism {
     /// (contact method against its motion law), radii of curvature at the contact (smallest
     /// convex, sharpest concave, with their cam angles), undercut angles, the pressure angle's
     /// peak and the angles beyond the limit, the face width a flat face needs. Lengths in the
-    /// file's unit (an arm's motion in rad), angles in degrees.
+    /// file's unit (an arm's motion in rad), angles in degrees. ``verdicts`` lists each check's
+    /// ``check``, ``passed``, ``lines`` (the words of ``camkin synth``'s ``checks.txt``, which
+    /// ``text`` holds whole), ``angles_deg`` and ``stretches``.
     #[pyo3(signature = (*, step_deg = 0.5, pressure_limit_deg = 30.0))]
     fn checks<'py>(
         &self,
@@ -582,13 +584,25 @@ impl PyMechanism {
         let thetas: Vec<f64> = (0..n).map(|k| (k as f64 * step_deg).to_radians()).collect();
         let mech = self.mech();
         let checks = py.detach(|| mech.design_checks(&thetas, pressure_limit_deg));
-        let text = serde_json::to_string(&checks)
+        let report = camkin::report::DesignReport::new(
+            checks,
+            self.built.length_unit.name(),
+            mech.follower().is_oscillating(),
+        );
+        let undercut = report.checks.undercut();
+        let text = serde_json::to_string(&report.checks)
             .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
         let d = json_module(py)?.call_method1("loads", (text,))?;
-        let failures = checks.failures();
-        d.set_item("passed", failures.is_empty())?;
-        d.set_item("failures", PyList::new(py, failures)?)?;
-        d.set_item("undercut", checks.undercut())?;
+        let verdicts = serde_json::to_string(&report.verdicts)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+        d.set_item(
+            "verdicts",
+            json_module(py)?.call_method1("loads", (verdicts,))?,
+        )?;
+        d.set_item("text", report.text())?;
+        d.set_item("passed", report.passed())?;
+        d.set_item("failures", PyList::new(py, report.failures())?)?;
+        d.set_item("undercut", undercut)?;
         d.set_item("length_unit", self.built.length_unit.name())?;
         Ok(d)
     }

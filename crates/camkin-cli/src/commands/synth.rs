@@ -6,7 +6,8 @@ use crate::draw::svaj;
 use crate::output::write_atomic;
 use crate::{load_mechanism, Failure};
 use anyhow::anyhow;
-use camkin::table::{Per, Units};
+use camkin::report::DesignReport;
+use camkin::table::Units;
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -165,137 +166,14 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
 
     // analysis of the synthesised profile: the round trip and the design checks
     let checks = mech.design_checks(&thetas, args.pressure_limit);
-    let mut report = String::new();
-    let rt = checks
-        .round_trip
-        .ok_or_else(|| Failure::Internal(anyhow!("a motion profile without its round trip")))?;
-    let rel = if rt.has_peak {
-        format!("{:.1e} of the peak", rt.acceleration / rt.scale)
-    } else {
-        format!(
-            "{:.1e} of ω² × the cam's size; the program has no acceleration",
-            rt.acceleration / rt.scale
-        )
-    };
-    // the round trip is in time derivatives whatever --per says
-    let ut = Units::new(mech, loaded.unit, args.units.angle_unit, Per::S);
-    let (su, vu, au) = (
-        ut.motion_symbol(0),
-        ut.motion_symbol(1),
-        ut.motion_symbol(2),
-    );
-    let cv = |x: f64| u.coord_value(x);
-    report += &format!(
-        "round trip (contact method against the motion law): |Δs| ≤ {:.2e} {su}, |Δv| ≤ {:.2e} {vu}, |Δa| ≤ {:.2e} {au} ({rel})\n",
-        cv(rt.position),
-        cv(rt.velocity),
-        cv(rt.acceleration)
-    );
-    if !rt.passed {
-        report += "round trip FAILED: the follower does not follow the synthesised profile (see the checks below)\n";
+    if checks.round_trip.is_none() {
+        return Err(Failure::Internal(anyhow!(
+            "a motion profile without its round trip"
+        )));
     }
+    let design = DesignReport::new(checks, loaded.unit.name(), mech.follower().is_oscillating());
     let h = camkin::human::human;
-    let len = loaded.unit.name();
-    if let Some((rho, at)) = checks.convex_min {
-        report += &format!(
-            "smallest convex radius of curvature of the profile: {} {len} at {}°\n",
-            h(rho),
-            h(at)
-        );
-    }
-    report += &match checks.concave_sharpest {
-        Some((rho, at)) => format!(
-            "sharpest concave radius of curvature of the profile: {} {len} at {}° (negative: concave)\n",
-            h(rho),
-            h(at)
-        ),
-        None => "the profile is convex at every contact\n".to_string(),
-    };
-    let folded = &checks.undercut_deg;
-    let bad_span = |v: &[f64]| {
-        if v.is_empty() {
-            String::new()
-        } else {
-            format!(
-                " at {} angles, from {}° to {}°",
-                v.len(),
-                camkin::human::human(v[0]),
-                camkin::human::human(v[v.len() - 1])
-            )
-        }
-    };
-    let broken = checks.undercut();
-    if let (Some(r), Some(pitch_min)) = (checks.roller_radius, checks.pitch_convex_min()) {
-        // the pitch curve (the roller centre's path) has radius of curvature ρ + r: where it
-        // is convex with a radius below r, the profile folds back (undercut)
-        let pitch_concave = checks
-            .concave_sharpest
-            .and_then(|(c, _)| (c + r < 0.0).then_some(c + r));
-        report +=
-            &format!(
-            "pitch curve (roller centre path): smallest convex radius of curvature {} {len}{}\n",
-            if pitch_min.is_finite() { h(pitch_min) } else { "∞".into() },
-            pitch_concave.map_or(String::new(), |c| format!(", sharpest concave {} {len}", h(c)))
-        );
-        report += &if broken {
-            format!("undercut: the profile is concave more sharply than the roller (radius {} {len}){}\n", h(r), bad_span(folded))
-        } else {
-            format!(
-                "undercut: none (the roller's radius {} {len} fits everywhere)\n",
-                h(r)
-            )
-        };
-    } else if checks.flat_face {
-        report += &if broken {
-            format!(
-                "concave stretches under the flat face: the follower cannot follow the profile{}\n",
-                bad_span(folded)
-            )
-        } else {
-            "concave stretches under the flat face: none\n".to_string()
-        };
-        if let Some((umin, umax)) = checks.face_range {
-            report += &format!(
-                "face width needed: {} {len} (contact from {} to {} {len} along the face)\n",
-                h(umax - umin),
-                h(umin),
-                h(umax)
-            );
-        }
-    }
-    let (pa_peak, over, failed) = (
-        checks.pressure_peak,
-        &checks.pressure_over_deg,
-        checks.failed,
-    );
-    let peak = format!(
-        "peak {}° at {}°",
-        h((pa_peak.0 * 100.0).round() / 100.0),
-        h((pa_peak.1 * 100.0).round() / 100.0)
-    );
-    report += &if over.is_empty() {
-        format!(
-            "pressure angle: {peak}, within ±{}° everywhere\n",
-            h(args.pressure_limit)
-        )
-    } else {
-        format!(
-            "pressure angle: {peak}, beyond ±{}° at {} angles, from {}° to {}°\n",
-            h(args.pressure_limit),
-            over.len(),
-            h(over[0]),
-            h(over[over.len() - 1])
-        )
-    };
-    if let Some(c) = checks.conjugate_play {
-        report += &format!(
-            "conjugate play: {}\n",
-            conjugate_line(&c, mech.follower().is_oscillating(), len)
-        );
-    }
-    if failed > 0 {
-        report += &format!("{failed} angles could not be analysed\n");
-    }
+    let mut report = design.text();
     for j in synth.discontinuities() {
         report += &format!(
             "program junction at {}°: {} jumps\n",
@@ -309,7 +187,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     .map_err(Failure::output)?;
     print!("{report}{}", made.report);
     eprintln!("camkin: wrote {}", args.out.display());
-    let failures = checks.failures();
+    let failures = design.failures();
     if failures.is_empty() {
         Ok(())
     } else {
@@ -318,42 +196,5 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             failures.join(", "),
             out("checks.txt").display()
         )))
-    }
-}
-
-/// The conjugate check's words (`camkin synth`, the studio): the play's range (an arm's in
-/// degrees) and what it means.
-pub(crate) fn conjugate_line(c: &camkin::cam::ConjugatePlay, arm: bool, len: &str) -> String {
-    let h = camkin::human::human;
-    let (k, unit) = if arm {
-        (1f64.to_degrees(), "°")
-    } else {
-        (1.0, len)
-    };
-    let v = |x: f64| format!("{} {unit}", h(k * x)).replace(" °", "°");
-    let at = |x: f64| h((x * 100.0).round() / 100.0);
-    let (lo, hi) = (c.min, c.max);
-    let range = format!(
-        "from {} at {}° to {} at {}°",
-        v(lo.0),
-        at(lo.1),
-        v(hi.0),
-        at(hi.1)
-    );
-    if c.failed > 0 {
-        format!("{range}; {} angles could not be computed", c.failed)
-    } else if lo.0 < -c.tolerance && hi.0 - lo.0 <= c.tolerance {
-        format!("the second curve cuts {} into the cam everywhere", v(-lo.0))
-    } else if lo.0 < -c.tolerance {
-        format!("{range}: the second curve cuts into the cam")
-    } else if hi.0 - lo.0 > c.tolerance {
-        format!("{range}: it varies, so the second curve loses touch (the program does not suit the conjugate)")
-    } else if hi.0 > c.tolerance {
-        format!("a constant clearance of {}", v(hi.0))
-    } else {
-        format!(
-            "none: both curves touch everywhere (|play| ≤ {})",
-            v(lo.0.abs().max(hi.0.abs()))
-        )
     }
 }

@@ -10,7 +10,7 @@ use camkin::cam::Mechanism;
 use camkin::curve::Domain;
 use camkin::geometry::deg_to_rad;
 use camkin::interp::{max_and_mean, relative_errors, Interpolated};
-use camkin::report::{ForceReport, ForceRequest};
+use camkin::report::{DesignReport, ForceReport, ForceRequest};
 use camkin::spec::{BuildOptions, MechanismSpec};
 use camkin::table::{AnalysisRow, AnalysisSweep, AngleUnit, Per, Units};
 use serde::Serialize;
@@ -143,8 +143,8 @@ pub struct Frame {
 /// A design check, marked at its cam angles.
 #[derive(Debug, Serialize)]
 pub struct Check {
-    /// `pressure`, `undercut`, `jump`, `failed`, `round-trip`, `curvature`
-    pub kind: &'static str,
+    /// which check (`pressure-angle`, `undercut`, `jumps`, `analysed`, `round-trip`, …)
+    pub kind: camkin::report::Check,
     /// the check passed (a statement of a value) or failed
     pub ok: bool,
     /// what a person reads
@@ -387,14 +387,7 @@ pub fn analyze(
             false,
         ),
     };
-    let checks = checks(
-        mech,
-        &angles,
-        &rows,
-        &sweep,
-        pressure_limit_deg,
-        unit.name(),
-    );
+    let checks = checks(mech, &angles, &sweep, pressure_limit_deg, unit.name());
     let dynamics = dynamics(text, source, &parsed.spec, &angles)?;
     let first_error = rows.iter().find_map(|r| r.error.clone());
     Ok(Analysis {
@@ -428,159 +421,42 @@ pub fn analyze(
     })
 }
 
-/// The design checks, each with the cam angles (and profile stretches) to mark.
+/// The design checks (the library's [`DesignReport`], with the contact's jumps of the sweep),
+/// each with the cam angles and profile stretches to mark.
 fn checks(
     mech: &Mechanism,
     angles: &[f64],
-    rows: &[AnalysisRow],
     sweep: &AnalysisSweep<'_>,
     pressure_limit_deg: f64,
     unit: &str,
 ) -> Vec<Check> {
-    let h = camkin::human::human;
-    // angles for people: hundredths of a degree (no rounding noise such as -6e-14°)
-    let deg = |x: f64| {
-        let r = (x * 100.0).round() / 100.0;
-        h(if r == 0.0 { 0.0 } else { r })
-    };
     let thetas: Vec<f64> = angles.iter().map(|&a| deg_to_rad(a)).collect();
     let c = mech.design_checks(&thetas, pressure_limit_deg);
-    let mut out = Vec::new();
-    let (peak, peak_at) = c.pressure_peak;
-    out.push(Check {
-        kind: "pressure",
-        ok: c.pressure_over_deg.is_empty(),
-        message: if c.pressure_over_deg.is_empty() {
-            format!(
-                "pressure angle within ±{}°: peak {}° at {}°",
-                h(pressure_limit_deg),
-                deg(peak),
-                deg(peak_at)
-            )
-        } else {
-            format!(
-                "pressure angle over ±{}° at {} angles: peak {}° at {}°",
-                h(pressure_limit_deg),
-                c.pressure_over_deg.len(),
-                deg(peak),
-                deg(peak_at)
-            )
-        },
-        angles_deg: c.pressure_over_deg.clone(),
-        stretches: Vec::new(),
-    });
-    let profile = mech.cam().profile();
-    let stretches: Vec<Vec<[f64; 2]>> = c
-        .stretches
-        .iter()
-        .map(|&(a, b)| {
-            (0..=32)
-                .map(|k| {
-                    let p = profile.position(a + (b - a) * k as f64 / 32.0);
-                    [p.x, p.y]
-                })
-                .collect()
-        })
-        .collect();
-    let what = if c.roller_radius.is_some() {
-        "undercut: the roller does not fit a concave stretch"
-    } else if c.flat_face {
-        "a concave stretch under the flat face"
-    } else {
-        "the follower cannot follow the profile"
-    };
-    out.push(Check {
-        kind: "undercut",
-        ok: !c.undercut(),
-        message: if c.undercut() {
-            format!(
-                "{what} ({} stretches, {} angles)",
-                c.stretches.len(),
-                c.undercut_deg.len()
-            )
-        } else {
-            match (c.convex_min, c.concave_sharpest) {
-                (Some((r, at)), None) => format!(
-                    "no undercut: smallest radius of curvature {} {unit} at {}°",
-                    h(r),
-                    deg(at)
-                ),
-                (_, Some((r, at))) => format!(
-                    "no undercut: sharpest concave radius {} {unit} at {}°",
-                    h(r),
-                    deg(at)
-                ),
-                _ => "no undercut".into(),
-            }
-        },
-        angles_deg: c.undercut_deg.clone(),
-        stretches,
-    });
     let jumps: Vec<f64> = sweep.jump_at().iter().map(|&k| angles[k]).collect();
-    out.push(Check {
-        kind: "jump",
-        ok: sweep.jumps() == 0,
-        message: if sweep.jumps() == 0 {
-            "the contact moves continuously (no jumps)".into()
-        } else {
-            format!(
-                "the contact jumps at {} angles (the acceleration is impulsive there)",
-                sweep.jumps()
-            )
-        },
-        angles_deg: jumps,
-        stretches: Vec::new(),
-    });
-    if let Some(p) = c.conjugate_play {
-        let arm = mech.follower().is_oscillating();
-        out.push(Check {
-            kind: "conjugate",
-            ok: p.passed,
-            message: format!(
-                "conjugate play: {}",
-                crate::commands::synth::conjugate_line(&p, arm, unit)
-            ),
-            angles_deg: if p.passed {
-                Vec::new()
-            } else {
-                vec![p.min.1, p.max.1]
-            },
-            stretches: Vec::new(),
-        });
-    }
-    if let Some(rt) = c.round_trip {
-        out.push(Check {
-            kind: "round-trip",
-            ok: rt.passed,
-            message: format!(
-                "round trip against the motion law: largest acceleration difference {} of the peak",
-                camkin::human::human(rt.acceleration / rt.scale)
-            ),
-            angles_deg: Vec::new(),
-            stretches: Vec::new(),
-        });
-    }
-    if sweep.failed() > 0 {
-        let failed: Vec<f64> = rows
-            .iter()
-            .filter(|r| r.error.is_some())
-            .map(|r| r.angle_deg)
-            .collect();
-        out.push(Check {
-            kind: "failed",
-            ok: false,
-            message: format!(
-                "{} angles could not be analysed: {}",
-                failed.len(),
-                rows.iter()
-                    .find_map(|r| r.error.clone())
-                    .unwrap_or_default()
-            ),
-            angles_deg: failed,
-            stretches: Vec::new(),
-        });
-    }
-    out
+    let report = DesignReport::new(c, unit, mech.follower().is_oscillating()).with_jumps(jumps);
+    let profile = mech.cam().profile();
+    report
+        .verdicts
+        .into_iter()
+        .map(|v| Check {
+            kind: v.check,
+            ok: v.passed,
+            message: v.message(),
+            stretches: v
+                .stretches
+                .iter()
+                .map(|&(a, b)| {
+                    (0..=32)
+                        .map(|k| {
+                            let p = profile.position(a + (b - a) * k as f64 / 32.0);
+                            [p.x, p.y]
+                        })
+                        .collect()
+                })
+                .collect(),
+            angles_deg: v.angles_deg,
+        })
+        .collect()
 }
 
 /// The forces over the revolution when the file has `[dynamics]`.

@@ -4,8 +4,8 @@
 //! concave stretch, a concave stretch under a flat face), the pressure angle against a limit, the
 //! face width a flat follower needs.
 //!
-//! The checks are data; front ends word them (`camkin synth` prints and writes `checks.txt`, the
-//! Python package returns them as attributes).
+//! The checks are data; [`crate::report::DesignReport`] gives each its verdict and its words,
+//! which every front end prints.
 
 use super::{CamError, FollowerCurve, Mechanism, StopReason};
 
@@ -41,6 +41,10 @@ pub struct DesignChecks {
     pub angles: usize,
     /// angles that could not be analysed
     pub failed: usize,
+    /// the cam angles (degrees) that could not be analysed, with the first one's reason
+    pub failed_deg: Vec<f64>,
+    /// why the first of them could not be analysed
+    pub first_failure: Option<String>,
     /// the round trip, for a synthesised (`kind = "motion"`) profile
     pub round_trip: Option<RoundTrip>,
     /// the smallest convex radius of curvature of the profile at a contact (length) and its cam
@@ -100,29 +104,6 @@ impl DesignChecks {
         self.roller_radius
             .map(|r| self.convex_min.map_or(f64::INFINITY, |(rho, _)| rho + r))
     }
-
-    /// The names of the checks that failed: `round trip`, `undercut`, `concave stretch under the
-    /// flat face`, `pressure angle`, `conjugate play`.
-    pub fn failures(&self) -> Vec<&'static str> {
-        let mut f = Vec::new();
-        if self.round_trip.is_some_and(|r| !r.passed) {
-            f.push("round trip");
-        }
-        if self.undercut() {
-            if self.roller_radius.is_some() {
-                f.push("undercut");
-            } else if self.flat_face {
-                f.push("concave stretch under the flat face");
-            }
-        }
-        if !self.pressure_over_deg.is_empty() {
-            f.push("pressure angle");
-        }
-        if self.conjugate_play.is_some_and(|c| !c.passed) {
-            f.push("conjugate play");
-        }
-        f
-    }
 }
 
 /// The body of [`Mechanism::design_checks`] (documented there).
@@ -136,6 +117,7 @@ pub(crate) fn design_checks(
     let w = mech.cam().speed();
     let (mut eq, mut ev, mut ea, mut amax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     let mut failed = 0;
+    let (mut failed_deg, mut first_failure) = (Vec::new(), None);
     let mut over = Vec::new();
     let mut pa_peak = (0.0f64, 0.0f64);
     let mut folded = Vec::new();
@@ -159,6 +141,8 @@ pub(crate) fn design_checks(
             Ok(s) => s,
             Err(e) => {
                 failed += 1;
+                failed_deg.push(t.to_degrees());
+                first_failure.get_or_insert_with(|| e.to_string());
                 // resting on a cusp of a folded profile: the follower cannot follow it
                 if matches!(
                     e,
@@ -221,6 +205,8 @@ pub(crate) fn design_checks(
         pressure_limit_deg,
         angles: thetas.len(),
         failed,
+        failed_deg,
+        first_failure,
         round_trip,
         convex_min: convex_min.is_finite().then_some((convex_min, convex_at)),
         concave_sharpest: concave_min.is_finite().then_some((concave_min, concave_at)),

@@ -4,12 +4,16 @@
 //!
 //! - [`ForceReport`]: forces, torque, jump speed, spring sizing and Hertz stress over a
 //!   revolution under permanent contact (`camkin forces`, `Mechanism.forces()` in Python).
+//! - [`DesignReport`]: each design check of a revolution with its verdict and its words
+//!   (`camkin synth`'s `checks.txt`, the studio's checks, `Mechanism.checks()` in Python).
 //! - [`Materials`]: elastic constants for the Hertz stress, presets and `E=…:nu=…`, checked for
 //!   plausibility.
 
+mod design;
 mod forces;
 mod materials;
 
+pub use design::{Check, DesignReport, Verdict};
 pub use forces::{
     rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport, HertzSide, Jump,
     SpringSizing,

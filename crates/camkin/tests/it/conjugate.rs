@@ -346,7 +346,13 @@ fn the_design_check_of_the_play() {
     .unwrap();
     let c = m.design_checks(&thetas, 30.0);
     let p = c.conjugate_play.unwrap();
-    assert!(!p.passed && c.failures().contains(&"conjugate play"));
+    let report = camkin::report::DesignReport::new(c, "mm", false);
+    assert!(!p.passed && report.failures().contains(&"conjugate play"));
+    assert!(
+        report.text().contains("the second curve cuts into the cam"),
+        "{}",
+        report.text()
+    );
     let chord_min = 2.0 * (rho * rho - ECC * ECC).sqrt();
     assert!((p.max.0 - (l - chord_min)).abs() < 1e-9, "{p:?}");
     assert!((p.min.0 - (l - 2.0 * rho)).abs() < 1e-9, "{p:?}");
