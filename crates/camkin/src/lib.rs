@@ -84,6 +84,7 @@ pub mod reference;
 pub mod report;
 pub mod spec;
 pub mod table;
+mod valid;
 pub mod work;
 
 pub use body::{BodyState, CurveInFrame, Pose};

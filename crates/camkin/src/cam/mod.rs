@@ -58,6 +58,7 @@ use crate::body::BodyState;
 use crate::curve::{Curve, Domain};
 use crate::field::{CamField, Field};
 use crate::geometry::Point2;
+use crate::valid::Rule;
 use std::sync::Arc;
 
 /// A cam: a closed profile in the cam frame, whose origin is the rotation axis.
@@ -87,21 +88,21 @@ impl Cam {
         if !matches!(profile.domain(), Domain::Periodic { .. }) {
             return Err(CamError::OpenProfile);
         }
-        if !(pivot.x.is_finite() && pivot.y.is_finite()) {
-            return Err(CamError::InvalidVector {
+        Rule::Finite
+            .check_point(pivot)
+            .map_err(|reason| CamError::InvalidVector {
                 field: Field::Cam(CamField::Pivot),
                 x: pivot.x,
                 y: pivot.y,
-                reason: "must be finite",
-            });
-        }
-        if !(speed.is_finite() && speed > 0.0) {
-            return Err(CamError::Invalid {
+                reason,
+            })?;
+        Rule::Positive
+            .check(speed)
+            .map_err(|reason| CamError::Invalid {
                 field: Field::Cam(CamField::Speed),
                 value: speed,
-                reason: "must be positive and finite",
-            });
-        }
+                reason,
+            })?;
         Ok(Self {
             profile,
             pivot,
@@ -121,13 +122,13 @@ impl Cam {
         direction: Sense,
         rpm: f64,
     ) -> Result<Self, CamError> {
-        if !(rpm.is_finite() && rpm > 0.0) {
-            return Err(CamError::Invalid {
+        Rule::Positive
+            .check(rpm)
+            .map_err(|reason| CamError::Invalid {
                 field: Field::Cam(CamField::SpeedRpm),
                 value: rpm,
-                reason: "must be positive and finite",
-            });
-        }
+                reason,
+            })?;
         // τ/60 first: rpm · τ would overflow near f64::MAX
         let mut cam = Self::new(
             profile,
@@ -142,13 +143,13 @@ impl Cam {
     /// With a constant angular acceleration `θ̈` (rad/s², in the cam's direction of motion); the
     /// speed given is then the speed at the instant analysed.
     pub fn with_angular_acceleration(mut self, alpha: f64) -> Result<Self, CamError> {
-        if !alpha.is_finite() {
-            return Err(CamError::Invalid {
+        Rule::Finite
+            .check(alpha)
+            .map_err(|reason| CamError::Invalid {
                 field: Field::Cam(CamField::AngularAcceleration),
                 value: alpha,
-                reason: "must be finite",
-            });
-        }
+                reason,
+            })?;
         self.angular_acceleration = alpha;
         self.alpha_given = (alpha, 1.0);
         Ok(self)

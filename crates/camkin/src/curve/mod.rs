@@ -35,6 +35,7 @@ pub use points_file::{
 pub use spline::{ClosedSpline, Parameterization};
 
 use crate::geometry::{cross, rot90, Point2, Vec2};
+use crate::valid::Rule;
 
 /// Position and derivatives of a curve at one parameter value, in the curve's (body) frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -256,7 +257,7 @@ pub enum CurveError {
         /// y of the repeated point
         y: f64,
     },
-    /// A size (radius, semi-axis) is not positive and finite.
+    /// A size (radius, semi-axis) is not positive and finite ([`crate::valid`]'s words).
     #[error("{field} must be positive and finite, got {}", crate::human::human(*.value))]
     NonPositive {
         /// the field
@@ -355,19 +356,15 @@ pub(crate) fn piece_samples(
 }
 
 pub(crate) fn check_positive(field: CurveField, value: f64) -> Result<f64, CurveError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(CurveError::NonPositive { field, value })
-    }
+    Rule::Positive
+        .check(value)
+        .map_err(|_| CurveError::NonPositive { field, value })
 }
 
 pub(crate) fn check_finite(field: CurveField, value: f64) -> Result<f64, CurveError> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(CurveError::NonFinite { field, value })
-    }
+    Rule::Finite
+        .check(value)
+        .map_err(|_| CurveError::NonFinite { field, value })
 }
 
 pub(crate) fn check_point(field: CurveField, p: Point2) -> Result<Point2, CurveError> {

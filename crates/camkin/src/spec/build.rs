@@ -1,9 +1,10 @@
 //! Validation of a [`MechanismSpec`] and the mechanism it describes.
 
-use super::{DynamicsSpec, FollowerSpec, MechanismSpec};
+use super::{DynamicsSpec, FollowerKind, FollowerSpec, MechanismSpec};
 use crate::cam::{Cam, CamError, Follower, Mechanism, Sense};
 use crate::dynamics::FollowerDynamics;
 use crate::field::{CamField, DynamicsField, Field, FollowerField, Key, ProfileField};
+use crate::valid::Rule;
 use crate::{Point2, Vec2};
 use std::path::PathBuf;
 
@@ -281,53 +282,35 @@ pub(super) fn need<T: Copy>(
     })
 }
 
+/// `x` when it keeps `rule`, else the refusal naming `field` and `x`.
+fn rule(rule: Rule, field: Field, x: f64) -> Result<f64, SpecError> {
+    rule.check(x).map_err(|reason| SpecError::Invalid {
+        field,
+        value: crate::human::human(x),
+        reason: reason.into(),
+    })
+}
+
 pub(super) fn finite(field: Field, x: f64) -> Result<f64, SpecError> {
-    if x.is_finite() {
-        Ok(x)
-    } else {
-        Err(SpecError::Invalid {
-            field,
-            value: crate::human::human(x),
-            reason: "must be a finite number".into(),
-        })
-    }
+    rule(Rule::Finite, field, x)
 }
 
 pub(super) fn positive(field: Field, x: f64) -> Result<f64, SpecError> {
-    if x.is_finite() && x > 0.0 {
-        Ok(x)
-    } else {
-        Err(SpecError::Invalid {
-            field,
-            value: crate::human::human(x),
-            reason: "must be positive and finite".into(),
-        })
-    }
+    rule(Rule::Positive, field, x)
 }
 
 pub(super) fn non_negative(field: Field, x: f64) -> Result<f64, SpecError> {
-    let x = finite(field, x)?;
-    if x >= 0.0 {
-        Ok(x)
-    } else {
-        Err(SpecError::Invalid {
-            field,
-            value: crate::human::human(x),
-            reason: "must not be negative".into(),
-        })
-    }
+    rule(Rule::NonNegative, field, x)
 }
 
 pub(super) fn point(field: Field, v: [f64; 2]) -> Result<Point2, SpecError> {
-    if v[0].is_finite() && v[1].is_finite() {
-        Ok(Point2::new(v[0], v[1]))
-    } else {
-        Err(SpecError::Invalid {
+    Rule::Finite
+        .check_point(Point2::new(v[0], v[1]))
+        .map_err(|reason| SpecError::Invalid {
             field,
             value: vector(v),
-            reason: "must be finite".into(),
+            reason: reason.into(),
         })
-    }
 }
 
 pub(super) fn direction(field: Field, v: [f64; 2]) -> Result<Vec2, SpecError> {
@@ -448,17 +431,17 @@ impl FollowerSpec {
         use FollowerField as F;
         let f = |x| Field::Follower(x);
         let kind_field = f(F::Kind);
-        let kind = self.kind.as_str();
-        let present: &Present = &[
-            (f(F::Direction), self.direction.is_some()),
-            (f(F::Offset), self.offset.is_some()),
-            (f(F::RollerRadius), self.roller_radius.is_some()),
-            (f(F::Pivot), self.pivot.is_some()),
-            (f(F::ArmLength), self.arm_length.is_some()),
-            (f(F::Closing), self.closing.is_some()),
-            (f(F::InitialAngle), self.initial_angle_deg.is_some()),
-            (f(F::Profile), self.profile.is_some()),
-        ];
+        let k = FollowerKind::parse(&self.kind).ok_or_else(|| SpecError::Unknown {
+            field: kind_field,
+            value: self.kind.clone(),
+            what: "a follower kind",
+            known: FollowerKind::names(),
+        })?;
+        let kind = k.name();
+        let allowed: Vec<Field> = k.fields().iter().map(|&x| f(x)).collect();
+        let present: Vec<(Field, bool)> =
+            self.present().into_iter().map(|(x, b)| (f(x), b)).collect();
+        check_kind(kind, &present, &allowed)?;
         let mut carried = || -> Result<crate::cam::FollowerProfile, SpecError> {
             let p = self.profile.as_ref().ok_or_else(|| SpecError::Missing {
                 field: kind_field,
@@ -501,47 +484,20 @@ impl FollowerSpec {
         let len = |field: F, v: Option<f64>| -> Result<f64, SpecError> {
             Ok(scale * positive(f(field), need(kind_field, kind, f(field), v)?)?)
         };
-        Ok(match kind {
-            "translating" => {
-                check_kind(
-                    kind,
-                    present,
-                    &[f(F::Direction), f(F::Offset), f(F::Profile)],
-                )?;
-                Follower::Translating {
-                    direction: dir()?,
-                    offset: offset()?,
-                    profile: carried()?,
-                }
-            }
-            "rotating" => {
-                check_kind(
-                    kind,
-                    present,
-                    &[
-                        f(F::Pivot),
-                        f(F::Closing),
-                        f(F::InitialAngle),
-                        f(F::Profile),
-                    ],
-                )?;
-                Follower::Rotating {
-                    pivot: pivot()?,
-                    closing,
-                    initial_angle: initial()?,
-                    profile: carried()?,
-                }
-            }
-            "translating-flat" => {
-                check_kind(kind, present, &[f(F::Direction)])?;
-                Follower::TranslatingFlat { direction: dir()? }
-            }
-            "translating-roller" => {
-                check_kind(
-                    kind,
-                    present,
-                    &[f(F::Direction), f(F::Offset), f(F::RollerRadius)],
-                )?;
+        Ok(match k {
+            FollowerKind::Translating => Follower::Translating {
+                direction: dir()?,
+                offset: offset()?,
+                profile: carried()?,
+            },
+            FollowerKind::Rotating => Follower::Rotating {
+                pivot: pivot()?,
+                closing,
+                initial_angle: initial()?,
+                profile: carried()?,
+            },
+            FollowerKind::TranslatingFlat => Follower::TranslatingFlat { direction: dir()? },
+            FollowerKind::TranslatingRoller => {
                 let r = len(F::RollerRadius, self.roller_radius)?;
                 Follower::TranslatingRoller {
                     direction: dir()?,
@@ -549,38 +505,17 @@ impl FollowerSpec {
                     roller_radius: r,
                 }
             }
-            "translating-knife" => {
-                check_kind(kind, present, &[f(F::Direction), f(F::Offset)])?;
-                Follower::TranslatingKnife {
-                    direction: dir()?,
-                    offset: offset()?,
-                }
-            }
-            "oscillating-flat" => {
-                check_kind(
-                    kind,
-                    present,
-                    &[f(F::Pivot), f(F::Offset), f(F::Closing), f(F::InitialAngle)],
-                )?;
-                Follower::OscillatingFlat {
-                    pivot: pivot()?,
-                    face_offset: offset()?,
-                    closing,
-                    initial_angle: initial()?,
-                }
-            }
-            "oscillating-roller" => {
-                check_kind(
-                    kind,
-                    present,
-                    &[
-                        f(F::Pivot),
-                        f(F::ArmLength),
-                        f(F::RollerRadius),
-                        f(F::Closing),
-                        f(F::InitialAngle),
-                    ],
-                )?;
+            FollowerKind::TranslatingKnife => Follower::TranslatingKnife {
+                direction: dir()?,
+                offset: offset()?,
+            },
+            FollowerKind::OscillatingFlat => Follower::OscillatingFlat {
+                pivot: pivot()?,
+                face_offset: offset()?,
+                closing,
+                initial_angle: initial()?,
+            },
+            FollowerKind::OscillatingRoller => {
                 let pivot = pivot()?;
                 let l = len(F::ArmLength, self.arm_length)?;
                 let r = len(F::RollerRadius, self.roller_radius)?;
@@ -591,14 +526,6 @@ impl FollowerSpec {
                     closing,
                     initial_angle: initial()?,
                 }
-            }
-            other => {
-                return Err(SpecError::Unknown {
-                    field: kind_field,
-                    value: other.to_string(),
-                    what: "a follower kind",
-                    known: Follower::KIND_NAMES.join(", "),
-                })
             }
         })
     }

@@ -38,6 +38,7 @@
 //! ```
 
 mod build;
+mod kinds;
 #[cfg(feature = "serde")]
 mod pair;
 mod profile;
@@ -48,6 +49,7 @@ pub use crate::field::{
     CamField, DynamicsField, Field, FollowerField, Key, ProfileField, SegmentField,
 };
 pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
+pub use kinds::{FollowerKind, ProfileKind};
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;
@@ -109,160 +111,115 @@ pub struct CamSpec {
     pub profile: ProfileSpec,
 }
 
-/// `[cam.profile]`: every field of every kind; the kind decides which belong.
-///
-/// Kinds: `spline` (`points`, `parameterization`), `circle` (`center`, `radius`), `ellipse`
-/// (`center`, `semi_axes`, `rotation_deg`), `points-file` (`path`, `parameterization`), `motion`
-/// (`base_radius`, `segments`).
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
-#[allow(missing_docs)]
-pub struct ProfileSpec {
-    pub kind: String,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option_list"
-        )
-    )]
-    pub points: Option<Vec<[f64; 2]>>,
-    /// where the nodes sit in the parameter: `uniform` by default for `spline` (the paper's),
-    /// `chord-length` for `points-file`; uneven nodes under `uniform` draw a
-    /// [`SpecWarning::UnevenNodes`]
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub parameterization: Option<Parameterization>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
-    )]
-    pub center: Option<[f64; 2]>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub radius: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
-    )]
-    pub semi_axes: Option<[f64; 2]>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub rotation_deg: Option<f64>,
-    /// a points file, relative to [`BuildOptions::base_dir`]
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub path: Option<String>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub base_radius: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub segments: Option<Vec<SegmentSpec>>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub module: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub teeth: Option<u32>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub pressure_angle_deg: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub addendum: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub dedendum: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub profile_shift: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub backlash: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub fillet_radius: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub tip_relief: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub tip_relief_length: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub tip_relief_shape: Option<crate::curve::ReliefShape>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
-    )]
-    pub anchor: Option<[f64; 2]>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
-    )]
-    pub direction: Option<[f64; 2]>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
-    )]
-    pub at: Option<[f64; 2]>,
+/// Declares a table of the schema whose `kind` decides which keys belong: each optional key
+/// written once, with the [`Field`] variant that names it in errors (`present` lists which are
+/// given; [`ProfileKind::fields`] and [`FollowerKind::fields`] which each kind takes), then the
+/// keys that every kind takes.
+macro_rules! spec_table {
+    (
+        $(#[$sm:meta])*
+        pub struct $name:ident by $fe:ident {
+            $(#[$km:meta])*
+            pub kind: String,
+            $( $(#[$m:meta])* $f:ident: $t:ty => $v:ident, )*
+            $( ; every kind $( $(#[$am:meta])* $af:ident: $at:ty, )* )?
+        }
+    ) => {
+        $(#[$sm])*
+        #[derive(Debug, Clone, PartialEq, Default)]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+        #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+        pub struct $name {
+            $(#[$km])*
+            pub kind: String,
+            $(
+                $(#[$m])*
+                #[cfg_attr(
+                    feature = "serde",
+                    serde(default, skip_serializing_if = "Option::is_none")
+                )]
+                pub $f: Option<$t>,
+            )*
+            $($(
+                $(#[$am])*
+                #[cfg_attr(
+                    feature = "serde",
+                    serde(default, skip_serializing_if = "Option::is_none")
+                )]
+                pub $af: Option<$at>,
+            )*)?
+        }
+        impl $name {
+            /// Each optional key by its field, and whether it is given.
+            pub(crate) fn present(&self) -> Vec<($fe, bool)> {
+                vec![$(($fe::$v, self.$f.is_some())),*]
+            }
+        }
+    };
+}
+
+spec_table! {
+    /// `[cam.profile]` (and a follower's `profile` or `conjugate`): every key of every kind; the
+    /// kind ([`ProfileKind`], by its name) decides which belong.
+    pub struct ProfileSpec by ProfileField {
+        /// the kind's name: `spline`, `circle`, `ellipse`, `points-file`, `motion`,
+        /// `involute-gear`, or a follower's `line` or `point`
+        pub kind: String,
+        /// `spline`: the nodes, cam frame
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option_list"))]
+        points: Vec<[f64; 2]> => Points,
+        /// where the nodes sit in the parameter: `uniform` by default for `spline` (the paper's),
+        /// `chord-length` for `points-file`; uneven nodes under `uniform` draw a
+        /// [`SpecWarning::UnevenNodes`]
+        parameterization: Parameterization => Parameterization,
+        /// `circle`, `ellipse`: the centre
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        center: [f64; 2] => Center,
+        /// `circle`: the radius
+        radius: f64 => Radius,
+        /// `ellipse`: the semi-axes along its own x and y
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        semi_axes: [f64; 2] => SemiAxes,
+        /// `ellipse`: its turn, degrees counter-clockwise (default 0)
+        rotation_deg: f64 => RotationDeg,
+        /// `points-file`: a points file, relative to [`BuildOptions::base_dir`]
+        path: String => Path,
+        /// `motion`: the base circle's radius
+        base_radius: f64 => BaseRadius,
+        /// `motion`: the program's segments
+        segments: Vec<SegmentSpec> => Segments,
+        /// `involute-gear`: the module
+        module: f64 => Module,
+        /// `involute-gear`: the number of teeth
+        teeth: u32 => Teeth,
+        /// `involute-gear`: the pressure angle, degrees
+        pressure_angle_deg: f64 => PressureAngle,
+        /// `involute-gear`: the addendum coefficient (default 1)
+        addendum: f64 => Addendum,
+        /// `involute-gear`: the dedendum coefficient (default 1.25)
+        dedendum: f64 => Dedendum,
+        /// `involute-gear`: the profile shift coefficient (default 0)
+        profile_shift: f64 => ProfileShift,
+        /// `involute-gear`: the backlash, a length along the pitch circle (default 0)
+        backlash: f64 => Backlash,
+        /// `involute-gear`: the root fillet's radius (default the rack's)
+        fillet_radius: f64 => FilletRadius,
+        /// `involute-gear`: tip relief, the amount at the tip
+        tip_relief: f64 => TipRelief,
+        /// `involute-gear`: tip relief, its length along the line of action
+        tip_relief_length: f64 => TipReliefLength,
+        /// `involute-gear`: tip relief, its shape (default linear)
+        tip_relief_shape: crate::curve::ReliefShape => TipReliefShape,
+        /// `line`: a point on it (default the origin)
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        anchor: [f64; 2] => Anchor,
+        /// `line`: its direction, the follower's material on its left
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        direction: [f64; 2] => Direction,
+        /// `point`: where it is (default the origin)
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        at: [f64; 2] => At,
+    }
 }
 
 /// One segment of a `kind = "motion"` profile.
@@ -282,75 +239,38 @@ pub struct SegmentSpec {
     pub degrees: f64,
 }
 
-/// `[follower]`: every field of every kind; the kind decides which belong.
-///
-/// Kinds: `translating-flat` (`direction`), `translating-roller` (`direction`, `offset`,
-/// `roller_radius`), `translating-knife` (`direction`, `offset`), `oscillating-flat` (`pivot`,
-/// `offset`, `closing`, `initial_angle_deg`), `oscillating-roller` (`pivot`, `arm_length`,
-/// `roller_radius`, `closing`, `initial_angle_deg`).
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
-#[allow(missing_docs)]
-pub struct FollowerSpec {
-    pub kind: String,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
-    )]
-    pub direction: Option<[f64; 2]>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub offset: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub roller_radius: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
-    )]
-    pub pivot: Option<[f64; 2]>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub arm_length: Option<f64>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub closing: Option<Sense>,
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub initial_angle_deg: Option<f64>,
-    /// the curve a general follower (`translating`, `rotating`) carries, in its own frame
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub profile: Option<Box<ProfileSpec>>,
-    /// a second curve on the follower, in the same frame, that touches the cam from the other
-    /// side (a conjugate, form-closed follower: the second roller of a yoke or a bell crank);
-    /// the first curve sets the position, this one's play is reported
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub conjugate: Option<Box<ProfileSpec>>,
+spec_table! {
+    /// `[follower]`: every key of every kind; the kind ([`FollowerKind`], by its name) decides
+    /// which belong.
+    pub struct FollowerSpec by FollowerField {
+        /// the kind's name: `translating`, `rotating` (carrying `profile`), or one of the named
+        /// kinds `translating-flat`, `translating-roller`, `translating-knife`,
+        /// `oscillating-flat`, `oscillating-roller`
+        pub kind: String,
+        /// a slide's direction of travel (default the x axis)
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        direction: [f64; 2] => Direction,
+        /// a slide's offset from the cam axis, or a flat arm's face offset from its pivot
+        offset: f64 => Offset,
+        /// a roller's radius
+        roller_radius: f64 => RollerRadius,
+        /// an arm's pivot, world
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        pivot: [f64; 2] => Pivot,
+        /// an arm's length to the roller's centre
+        arm_length: f64 => ArmLength,
+        /// the sense in which the load turns an arm onto the cam (default clockwise)
+        closing: Sense => Closing,
+        /// the arm angle is reported within ±180° of it, degrees (default 0)
+        initial_angle_deg: f64 => InitialAngle,
+        /// the curve a general follower (`translating`, `rotating`) carries, in its own frame
+        profile: Box<ProfileSpec> => Profile,
+        ; every kind
+        /// a second curve on the follower, in the same frame, that touches the cam from the other
+        /// side (a conjugate, form-closed follower: the second roller of a yoke or a bell crank);
+        /// the first curve sets the position, this one's play is reported
+        conjugate: Box<ProfileSpec>,
+    }
 }
 
 /// `[dynamics]`: the follower's mass properties, spring and damper, SI units.

@@ -1,9 +1,9 @@
 //! Validation of `[cam.profile]`: the profile kinds, inline and file points, motion programs.
 
 use super::build::{
-    check_kind, finite, key, need, point, positive, vector, Present, SpecError, SpecWarning,
+    check_kind, finite, key, need, point, positive, vector, SpecError, SpecWarning,
 };
-use super::ProfileSpec;
+use super::{ProfileKind, ProfileSpec};
 use crate::cam::synthesis::synthesize;
 use crate::cam::{Follower, Sense};
 use crate::curve::{
@@ -151,32 +151,30 @@ impl ProfileSpec {
             Place::Conjugate => Field::FollowerConjugate,
         };
         let kind_field = f(P::Kind);
-        let kind = self.kind.as_str();
-        let present: &Present = &[
-            (f(P::BaseRadius), self.base_radius.is_some()),
-            (f(P::Segments), self.segments.is_some()),
-            (f(P::Points), self.points.is_some()),
-            (f(P::Parameterization), self.parameterization.is_some()),
-            (f(P::Center), self.center.is_some()),
-            (f(P::Radius), self.radius.is_some()),
-            (f(P::SemiAxes), self.semi_axes.is_some()),
-            (f(P::RotationDeg), self.rotation_deg.is_some()),
-            (f(P::Path), self.path.is_some()),
-            (f(P::Module), self.module.is_some()),
-            (f(P::Teeth), self.teeth.is_some()),
-            (f(P::PressureAngle), self.pressure_angle_deg.is_some()),
-            (f(P::Addendum), self.addendum.is_some()),
-            (f(P::Dedendum), self.dedendum.is_some()),
-            (f(P::ProfileShift), self.profile_shift.is_some()),
-            (f(P::Backlash), self.backlash.is_some()),
-            (f(P::FilletRadius), self.fillet_radius.is_some()),
-            (f(P::TipRelief), self.tip_relief.is_some()),
-            (f(P::TipReliefLength), self.tip_relief_length.is_some()),
-            (f(P::TipReliefShape), self.tip_relief_shape.is_some()),
-            (f(P::Anchor), self.anchor.is_some()),
-            (f(P::Direction), self.direction.is_some()),
-            (f(P::At), self.at.is_some()),
-        ];
+        let k = ProfileKind::parse(&self.kind).ok_or_else(|| SpecError::Unknown {
+            field: kind_field,
+            value: self.kind.clone(),
+            what: "a profile kind",
+            known: format!("{} (line and point: a follower's)", ProfileKind::names()),
+        })?;
+        let kind = k.name();
+        let refuse = |reason: &str| {
+            Err(SpecError::Rule {
+                field: kind_field,
+                reason: reason.into(),
+            })
+        };
+        match (k, &place) {
+            (ProfileKind::Line, Place::Cam(..)) => return refuse("a cam's profile is a closed curve: a line can only be carried by a follower"),
+            (ProfileKind::Point, Place::Cam(..)) => return refuse("a cam's profile is a closed curve: a point can only be carried by a follower (a knife edge)"),
+            (ProfileKind::Point, Place::Conjugate) => return refuse("a point (a knife edge) cannot be a follower's second curve: give a circle of small radius"),
+            (ProfileKind::Motion, Place::Follower | Place::Conjugate) => return refuse("a motion program is synthesised into a cam's profile: a follower cannot carry one"),
+            _ => {}
+        }
+        let allowed: Vec<Field> = k.fields().iter().map(|&x| f(x)).collect();
+        let present: Vec<(Field, bool)> =
+            self.present().into_iter().map(|(x, b)| (f(x), b)).collect();
+        check_kind(kind, &present, &allowed)?;
         let param = self.parameterization.unwrap_or_default();
         let scaled = |p: Point2| Point2::new(scale * p.x, scale * p.y);
         let center = || -> Result<Point2, SpecError> {
@@ -185,9 +183,8 @@ impl ProfileSpec {
                 need(kind_field, kind, f(P::Center), self.center)?,
             )?))
         };
-        let curve: Arc<dyn Curve> = match kind {
-            "spline" => {
-                check_kind(kind, present, &[f(P::Points), f(P::Parameterization)])?;
+        let curve: Arc<dyn Curve> = match k {
+            ProfileKind::Spline => {
                 let pts = self.points.as_ref().ok_or_else(|| SpecError::Missing {
                     field: kind_field,
                     kind: kind.to_string(),
@@ -209,18 +206,19 @@ impl ProfileSpec {
                     .collect::<Result<Vec<_>, _>>()?;
                 spline(&nodes, param, &Nodes::Inline(f), warnings)?
             }
-            "circle" => {
-                check_kind(kind, present, &[f(P::Center), f(P::Radius)])?;
+            ProfileKind::Circle => {
                 let c = center()?;
-                let r =
-                    scale * positive(f(P::Radius), need(kind_field, kind, f(P::Radius), self.radius)?)?;
+                let r = scale
+                    * positive(
+                        f(P::Radius),
+                        need(kind_field, kind, f(P::Radius), self.radius)?,
+                    )?;
                 Arc::new(Circle::new(c, r).map_err(|e| SpecError::Rule {
                     field: kind_field,
                     reason: e.to_string(),
                 })?)
             }
-            "ellipse" => {
-                check_kind(kind, present, &[f(P::Center), f(P::SemiAxes), f(P::RotationDeg)])?;
+            ProfileKind::Ellipse => {
                 let c = center()?;
                 let ax = need(kind_field, kind, f(P::SemiAxes), self.semi_axes)?;
                 let [a, b] = ax;
@@ -245,40 +243,22 @@ impl ProfileSpec {
                     })?,
                 )
             }
-            "involute-gear" => {
-                check_kind(kind, present, &[f(P::Module), f(P::Teeth), f(P::PressureAngle), f(P::Addendum), f(P::Dedendum), f(P::ProfileShift), f(P::Backlash), f(P::FilletRadius), f(P::TipRelief), f(P::TipReliefLength), f(P::TipReliefShape)])?;
-                Arc::new(self.gear(scale, f)?)
-            }
-            "line" => {
-                let (Place::Follower | Place::Conjugate) = place else {
-                    return Err(SpecError::Rule {
-                        field: kind_field,
-                        reason: "a cam's profile is a closed curve: a line can only be carried by a follower".into(),
-                    });
-                };
-                check_kind(kind, present, &[f(P::Anchor), f(P::Direction)])?;
+            ProfileKind::InvoluteGear => Arc::new(self.gear(scale, f)?),
+            ProfileKind::Line => {
                 let a = point(f(P::Anchor), self.anchor.unwrap_or([0.0, 0.0]))?;
                 let d = need(kind_field, kind, f(P::Direction), self.direction)?;
-                let line = Line::new(Point2::new(scale * a.x, scale * a.y), crate::Vec2::new(d[0], d[1]))
-                    .map_err(|e| SpecError::Invalid {
-                        field: f(P::Direction),
-                        value: vector(d),
-                        reason: e.to_string(),
-                    })?;
+                let line = Line::new(
+                    Point2::new(scale * a.x, scale * a.y),
+                    crate::Vec2::new(d[0], d[1]),
+                )
+                .map_err(|e| SpecError::Invalid {
+                    field: f(P::Direction),
+                    value: vector(d),
+                    reason: e.to_string(),
+                })?;
                 Arc::new(line)
             }
-            "point" => {
-                let Place::Follower = place else {
-                    return Err(SpecError::Rule {
-                        field: kind_field,
-                        reason: match place {
-                            Place::Cam(..) => "a cam's profile is a closed curve: a point can only be carried by a follower (a knife edge)",
-                            _ => "a point (a knife edge) cannot be a follower's second curve: give a circle of small radius",
-                        }
-                        .into(),
-                    });
-                };
-                check_kind(kind, present, &[f(P::At)])?;
+            ProfileKind::Point => {
                 let a = point(f(P::At), self.at.unwrap_or([0.0, 0.0]))?;
                 Arc::new(
                     PointCurve::new(Point2::new(scale * a.x, scale * a.y)).map_err(|e| {
@@ -290,14 +270,10 @@ impl ProfileSpec {
                     })?,
                 )
             }
-            "motion" => {
+            ProfileKind::Motion => {
                 let Place::Cam(follower, sense) = place else {
-                    return Err(SpecError::Rule {
-                        field: kind_field,
-                        reason: "a motion program is synthesised into a cam's profile: a follower cannot carry one".into(),
-                    });
+                    unreachable!("refused above")
                 };
-                check_kind(kind, present, &[f(P::BaseRadius), f(P::Segments)])?;
                 let rb = scale
                     * positive(
                         f(P::BaseRadius),
@@ -378,8 +354,7 @@ impl ProfileSpec {
                 let prof = Arc::new(synthesize(program, rb, follower, sense)?);
                 return Ok((prof.clone(), Some(prof)));
             }
-            "points-file" => {
-                check_kind(kind, present, &[f(P::Path), f(P::Parameterization)])?;
+            ProfileKind::PointsFile => {
                 let path = self.path.as_ref().ok_or_else(|| SpecError::Missing {
                     field: kind_field,
                     kind: kind.to_string(),
@@ -428,14 +403,6 @@ impl ProfileSpec {
                     },
                     warnings,
                 )?
-            }
-            other => {
-                return Err(SpecError::Unknown {
-                    field: kind_field,
-                    value: other.to_string(),
-                    what: "a profile kind",
-                    known: "spline, circle, ellipse, points-file, motion, involute-gear, line and point (a follower's)".into(),
-                })
             }
         };
         Ok((curve, None))

@@ -411,9 +411,9 @@ fn the_schemas_keys_are_the_field_enums_names() {
 
 #[test]
 fn spec_errors_are_not_panics_for_any_kind_without_its_fields() {
-    for kind in Follower::KIND_NAMES {
+    for kind in camkin::spec::FollowerKind::ALL {
         let e = Mechanism::try_from(circle_spec(FollowerSpec {
-            kind: kind.into(),
+            kind: kind.name().into(),
             ..Default::default()
         }));
         if let Err(e) = e {

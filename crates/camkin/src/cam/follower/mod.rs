@@ -266,17 +266,6 @@ impl Follower {
         })
     }
 
-    /// The kinds' names, as in mechanism files.
-    pub const KIND_NAMES: [&'static str; 7] = [
-        "translating",
-        "rotating",
-        "translating-flat",
-        "translating-roller",
-        "translating-knife",
-        "oscillating-flat",
-        "oscillating-roller",
-    ];
-
     /// The same follower described relative to a cam axis at `cam_pivot`: an arm's pivot moved
     /// by `−cam_pivot` (translating followers are already placed relative to the cam's axis).
     /// [`crate::cam::synthesis::synthesize`] takes its follower this way.
@@ -340,77 +329,53 @@ fn carried_point(profile: &FollowerProfile) -> Result<Option<Vec2>, CamError> {
     Ok(Some(at.coords))
 }
 
-/// Largest length the computation takes (it squares lengths): see [`LENGTH_RANGE`].
-const BIG: f64 = 1e100;
-
-/// The lengths the computation keeps full accuracy for, in any unit: a cam's size and a
-/// follower's lengths from `1e-100` to `1e100` (lengths are squared inside, and squares of
-/// lengths beyond overflow or underflow `f64`).
-pub const LENGTH_RANGE: (f64, f64) = (1e-100, 1e100);
+use crate::valid::Rule;
+pub use crate::valid::LENGTH_RANGE;
 
 /// An offset or coordinate: finite and at most [`LENGTH_RANGE`]'s upper end in magnitude.
 fn finite(field: Field, v: f64) -> Result<f64, CamError> {
-    if v.is_finite() && v.abs() <= BIG {
-        Ok(v)
-    } else {
-        Err(CamError::Invalid {
-            field,
-            value: v,
-            reason: if v.is_finite() {
-                "must be at most 1e100 in magnitude"
-            } else {
-                "must be finite"
-            },
-        })
-    }
+    Rule::Bounded.check(v).map_err(|reason| CamError::Invalid {
+        field,
+        value: v,
+        reason,
+    })
 }
 
 /// A length: within [`LENGTH_RANGE`].
 fn positive(field: Field, v: f64) -> Result<f64, CamError> {
-    if v.is_finite() && v > 0.0 && (LENGTH_RANGE.0..=LENGTH_RANGE.1).contains(&v) {
-        Ok(v)
-    } else {
-        Err(CamError::Invalid {
-            field,
-            value: v,
-            reason: if v.is_finite() && v > 0.0 {
-                "must be from 1e-100 to 1e100"
-            } else {
-                "must be positive and finite"
-            },
-        })
-    }
+    Rule::Size.check(v).map_err(|reason| CamError::Invalid {
+        field,
+        value: v,
+        reason,
+    })
 }
 
 /// An arm's initial angle, rad: within ±10 turns (the arm angle is reported within ±180° of
 /// it, so a larger one would cost the reported angle its accuracy).
 fn arm_angle(field: Field, v: f64) -> Result<f64, CamError> {
-    if v.is_finite() && v.abs() <= 20.0 * std::f64::consts::PI {
-        Ok(v)
-    } else {
-        Err(CamError::Invalid {
-            field,
-            value: v.to_degrees(),
-            reason: "must be finite and within ±3600°",
-        })
-    }
+    Rule::ArmAngle.check(v).map_err(|reason| CamError::Invalid {
+        field,
+        value: v.to_degrees(),
+        reason,
+    })
 }
 
 fn point(field: Field, p: Point2) -> Result<Point2, CamError> {
-    if p.x.is_finite() && p.y.is_finite() && p.x.abs().max(p.y.abs()) <= BIG {
-        Ok(p)
+    // the larger coordinate decides the words (a NaN beside 1e200 is "not finite")
+    let worse = if p.x.is_finite() && p.y.is_finite() {
+        p.x.abs().max(p.y.abs())
     } else {
-        Err(CamError::InvalidVector {
+        f64::NAN
+    };
+    Rule::Bounded
+        .check(worse)
+        .map(|_| p)
+        .map_err(|reason| CamError::InvalidVector {
             field,
             x: p.x,
             y: p.y,
-            reason: if p.x.is_finite() && p.y.is_finite() {
-                "must be at most 1e100 in magnitude"
-            } else {
-                "must be finite"
-            },
+            reason,
         })
-    }
 }
 
 /// `(oriented score, φ)` of an arm angle `phi`: the score on the branch within ±180° of
