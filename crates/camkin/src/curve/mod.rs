@@ -257,7 +257,7 @@ pub enum CurveError {
         /// y of the repeated point
         y: f64,
     },
-    /// A size (radius, semi-axis) is not positive and finite ([`crate::valid`]'s words).
+    /// A size (radius, semi-axis) is not positive and finite.
     #[error("{field} must be positive and finite, got {}", crate::human::human(*.value))]
     NonPositive {
         /// the field
