@@ -56,6 +56,10 @@
 //! - **Normal accelerations** `a_n^A`, `a_n^B` are components along `ν_A` (eqs. 1, 2, 11).
 //! - **Units.** Lengths in any one unit `L` chosen by the user; time in seconds. Velocities are
 //!   `L/s` and `rad/s`, accelerations `L/s²` and `rad/s²`, curvature `1/L`.
+//! - **Pressure angle** ([`cam::FollowerState::pressure_angle`]): from the direction of motion of
+//!   the follower's reference point (a roller's centre, a knife's tip, a flat face's contact
+//!   point) to the line of the contact force, oriented along the motion, counter-clockwise
+//!   positive.
 //! - **Cam angle** `θ` (see [`cam`]) is how far the cam has turned in its own direction of motion,
 //!   always increasing with time: a counter-clockwise cam's frame is at `+θ`, a clockwise cam's at
 //!   `−θ`.

@@ -219,6 +219,7 @@ impl Mechanism {
         let g = &self.touch.geometry;
         let c = ea.p;
         let body_b = g.joint.body(touch.q, qd, qdd);
+        let reference_point = reference_point(c, nu, &k);
         let kappa_conv = self.touch.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
         // none where a curve's third derivative jumps (a spline node, a piece joint of the
@@ -255,6 +256,8 @@ impl Mechanism {
             normal: UnitVec2::new_unchecked(nu),
             sigma: k.sigma,
             follower_motion: jb,
+            reference_point,
+            reference_motion: g.joint.velocity_jacobian(reference_point),
             radius_of_curvature: 1.0 / kappa_conv,
             at_breakpoint,
             corner: touch.corner,
@@ -297,5 +300,21 @@ impl Mechanism {
             bp[0] + self.touch.period
         };
         u - below < tol || above - u < tol
+    }
+}
+
+/// The follower's reference point at a contact `c` with common normal `nu` (the cam's left
+/// normal): the centre of curvature of the follower's curve there where that curve is convex
+/// (`κ_B > 0`: a roller's centre, at `c + σ ν_A / κ_B`, since the follower's left normal is
+/// `σ ν_A`), else `c` (a point, a line, a concave stretch).
+fn reference_point(
+    c: crate::geometry::Point2,
+    nu: Vec2,
+    k: &ContactKinematics,
+) -> crate::geometry::Point2 {
+    if k.kappa_b > 0.0 && k.kappa_b.is_finite() {
+        c + (k.sigma / k.kappa_b) * nu
+    } else {
+        c
     }
 }

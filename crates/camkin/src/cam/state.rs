@@ -52,8 +52,15 @@ pub struct FollowerState {
     pub sigma: f64,
     /// direction of motion of the follower's material point under the contact per unit rate of
     /// its coordinate (`∂v_B^P/∂q̇`: `d` for translating followers, `k × (c − O)` for
-    /// oscillating ones), world frame; see [`FollowerState::pressure_angle`]
+    /// oscillating ones), world frame: what the contact force does work along
     pub follower_motion: Vec2,
+    /// the follower's reference point, world: the centre of curvature of its curve at the
+    /// contact where that curve is convex there (a roller's centre), else the contact point (a
+    /// knife's tip, a flat face); see [`FollowerState::pressure_angle`]
+    pub reference_point: Point2,
+    /// direction of motion of the reference point per unit rate of the follower's coordinate,
+    /// world (`d` for translating followers, `k × (R − O)` for oscillating ones)
+    pub reference_motion: Vec2,
     /// radius of curvature of the cam profile at the contact, positive where convex (∞ on a
     /// straight stretch), length
     pub radius_of_curvature: f64,
@@ -132,10 +139,15 @@ impl FollowerState {
         }
     }
 
-    /// Pressure angle: from the direction of motion of the follower's point at the contact
-    /// ([`FollowerState::follower_motion`]) to the contact normal oriented towards the follower,
-    /// rad, counter-clockwise positive.
+    /// Pressure angle, the textbook's: from the direction of motion of the follower's
+    /// reference point ([`FollowerState::reference_motion`]: a roller's centre, a knife's tip,
+    /// a flat face's contact point) to the line of the contact force (the common normal, which
+    /// passes through a roller's centre), oriented along the motion; rad, counter-clockwise
+    /// positive. For a translating follower every point moves along `d`, so the reference
+    /// does not matter; for an arm the roller's centre and the contact point move in different
+    /// directions (Norton, *Cam Design and Manufacturing Handbook*, §7; Rothbart, *Cam Design
+    /// Handbook*, §5).
     pub fn pressure_angle(&self) -> f64 {
-        pressure_angle(self.follower_motion, *self.normal)
+        pressure_angle(self.reference_motion, *self.normal)
     }
 }

@@ -26,6 +26,7 @@ mod motion_closed_form;
 mod oscillating_branch;
 mod paper_cam;
 mod point_follower;
+mod pressure_angle;
 mod properties;
 mod several_contacts;
 mod spec;
