@@ -16,6 +16,13 @@ use std::f64::consts::TAU;
 /// The most harmonics a fit uses (a profile detail of 1°: 2π/360 … 3° here).
 pub const MAX_HARMONICS: usize = 120;
 
+/// The widest stretch of polar angle without a measured point that a fit accepts, degrees. The
+/// series is periodic: across a gap it is not measured but extrapolated from both sides, and a
+/// deviation reported there would describe nothing that was measured. A fit with `K` harmonics
+/// also needs a point every `180°/K` (half the period of its highest harmonic), or the
+/// harmonic is free inside the gap; the smaller of the two limits applies.
+pub const MAX_GAP_DEG: f64 = 10.0;
+
 /// A smooth radius function fitted to measured points.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FourierRadius {
@@ -40,6 +47,18 @@ pub enum MeasuredError {
     AtAxis {
         /// 0-based
         index: usize,
+    },
+    /// The points leave a stretch of the profile unmeasured (see [`MAX_GAP_DEG`]).
+    #[error("no point measured between polar angles {from_deg:.1}° and {to_deg:.1}° (a gap of {gap_deg:.1}°; the most a fit takes is {limit_deg:.1}°): measure the whole profile round")]
+    Gap {
+        /// where the gap starts, degrees counter-clockwise from the cam frame's x axis
+        from_deg: f64,
+        /// where it ends
+        to_deg: f64,
+        /// its width, degrees
+        gap_deg: f64,
+        /// the widest accepted, degrees
+        limit_deg: f64,
     },
     /// No series within the tolerance with the harmonics the points allow.
     #[error("no fit within the tolerance {tolerance}: the best, with {harmonics} harmonics, leaves an RMS residual of {rms}")]
@@ -119,6 +138,20 @@ impl FourierRadius {
             phi.push(p.y.atan2(p.x).rem_euclid(TAU));
             r.push(rr);
         }
+        let gap = widest_gap(&phi);
+        let refuse = |limit_deg: f64| {
+            if gap.2 > limit_deg.to_radians() {
+                Err(MeasuredError::Gap {
+                    from_deg: gap.0.to_degrees(),
+                    to_deg: gap.1.to_degrees(),
+                    gap_deg: gap.2.to_degrees(),
+                    limit_deg,
+                })
+            } else {
+                Ok(())
+            }
+        };
+        refuse(MAX_GAP_DEG)?;
         let kmax = (points.len() / 4).clamp(1, MAX_HARMONICS);
         let fit = |k: usize| Self::fit_harmonics(&phi, &r, k);
         // doubling to a fit within the tolerance, then bisection for the fewest harmonics
@@ -166,8 +199,28 @@ impl FourierRadius {
                 _ => lo = m,
             }
         }
+        refuse(MAX_GAP_DEG.min(180.0 / best.harmonics().max(1) as f64))?;
         Ok(best)
     }
+}
+
+/// The widest stretch of polar angle between neighbouring angles of `phi` (each in `[0, 2π)`),
+/// round the full turn: `(from, to, width)`, rad, `to` reduced to `[0, 2π)`.
+fn widest_gap(phi: &[f64]) -> (f64, f64, f64) {
+    let mut s = phi.to_vec();
+    s.sort_by(f64::total_cmp);
+    let mut best = (0.0, 0.0, -1.0);
+    for (i, &a) in s.iter().enumerate() {
+        let b = if i + 1 < s.len() {
+            s[i + 1]
+        } else {
+            s[0] + TAU
+        };
+        if b - a > best.2 {
+            best = (a, b.rem_euclid(TAU), b - a);
+        }
+    }
+    best
 }
 
 #[cfg(test)]
@@ -189,6 +242,61 @@ mod tests {
         for k in 0..50 {
             let p = k as f64 * 0.13;
             assert!((f.radius(p) - truth(p)).abs() < 1e-9);
+        }
+    }
+
+    /// Points on part of the profile only: refused, naming the unmeasured stretch, wherever it
+    /// is (across the x axis too), and a gap just inside the limit is taken.
+    #[test]
+    fn a_gap_in_the_scan_is_refused_naming_it() {
+        let on = |deg: f64| {
+            let p = deg.to_radians();
+            Point2::new(40.0 * p.cos(), 40.0 * p.sin())
+        };
+        // a quarter of the cam measured
+        let quarter: Vec<Point2> = (0..=90).map(|d| on(d as f64)).collect();
+        match FourierRadius::fit(&quarter, 1e-6) {
+            Err(MeasuredError::Gap {
+                from_deg,
+                to_deg,
+                gap_deg,
+                ..
+            }) => {
+                assert!((from_deg - 90.0).abs() < 1e-9 && to_deg.abs() < 1e-9);
+                assert!((gap_deg - 270.0).abs() < 1e-9);
+            }
+            other => panic!("{other:?}"),
+        }
+        // everything but 350°…20° (across the x axis)
+        let most: Vec<Point2> = (20..=350).map(|d| on(d as f64)).collect();
+        let e = FourierRadius::fit(&most, 1e-6).unwrap_err();
+        assert!(e.to_string().contains("350.0° and 20.0°"), "{e}");
+        // every 9.5°: within the 10° limit (a circle: no harmonic needed)
+        let sparse: Vec<Point2> = (0..38).map(|k| on(k as f64 * 9.5)).collect();
+        assert!(FourierRadius::fit(&sparse, 1e-6).is_ok());
+    }
+
+    /// A fit whose highest harmonic has a half period shorter than the widest gap is refused:
+    /// that harmonic is free inside the gap.
+    #[test]
+    fn a_gap_wider_than_the_highest_harmonic_resolves_is_refused() {
+        let truth = |p: f64| 40.0 + 0.5 * (25.0 * p).cos();
+        // 2.5° spacing everywhere, 9° across one stretch: within 10°, beyond 180°/25 = 7.2°
+        let mut angles: Vec<f64> = (0..144)
+            .map(|k| k as f64 * 2.5)
+            .filter(|d| !(101.0..=109.0).contains(d))
+            .collect();
+        angles.push(109.0);
+        let pts: Vec<Point2> = angles
+            .iter()
+            .map(|d| {
+                let p = d.to_radians();
+                Point2::new(truth(p) * p.cos(), truth(p) * p.sin())
+            })
+            .collect();
+        match FourierRadius::fit(&pts, 1e-6) {
+            Err(MeasuredError::Gap { limit_deg, .. }) => assert!(limit_deg < 7.3, "{limit_deg}"),
+            other => panic!("{other:?}"),
         }
     }
 }

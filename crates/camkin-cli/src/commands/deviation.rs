@@ -71,10 +71,13 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
         )));
     }
     let fit = FourierRadius::fit(&pts, tol).map_err(|e| {
-        fail(format!(
-            "{}: {e} (raise --tolerance to the measurement's noise)",
-            args.measured.display()
-        ))
+        let hint = match e {
+            camkin::measured::MeasuredError::NoFit { .. } => {
+                " (raise --tolerance to the measurement's noise)"
+            }
+            _ => "",
+        };
+        fail(format!("{}: {e}{hint}", args.measured.display()))
     })?;
     // deviation in radius at the measured points
     let phis: Vec<f64> = pts.iter().map(|p| p.y.atan2(p.x).rem_euclid(TAU)).collect();

@@ -503,6 +503,38 @@ fn measured_profiles_are_smoothed_within_the_noise() {
     }
 }
 
+/// Issue 44: a scan of part of the cam is refused (exit 2) naming the unmeasured stretch, and
+/// writes nothing; it used to extrapolate the fit round the cam and report a lift deviation at
+/// 257° where nothing was measured.
+#[test]
+fn deviation_refuses_a_scan_of_part_of_the_cam() {
+    let dir = tempfile::tempdir().unwrap();
+    let meas = dir.path().join("quarter.csv");
+    let (e, rr) = (0.5, 2.0);
+    let mut text = String::from("x,y\n");
+    for i in 0..=90 {
+        let t = (i as f64).to_radians();
+        text += &format!("{},{}\n", e + rr * t.cos(), rr * t.sin());
+    }
+    std::fs::write(&meas, &text).unwrap();
+    let out = dir.path().join("out");
+    camkin()
+        .arg("deviation")
+        .arg(&meas)
+        .arg("--against")
+        .arg(examples().join("eccentric-roller.toml"))
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "no point measured between polar angles",
+        ))
+        .stderr(predicate::str::contains("measure the whole profile round"))
+        .stderr(predicate::str::contains("--tolerance").not());
+    assert!(!out.exists());
+}
+
 /// Issue 13, item 9: the README's mechanism-file reference is a complete file that runs as it is
 /// (it used to fail with "takes no `offset`").
 #[test]
