@@ -501,7 +501,9 @@ impl PyMechanism {
             use camkin::gears::GearError;
             let field = match e {
                 GearError::DriverNotGear => "cam.profile.kind",
-                GearError::TooClose { .. } => "follower.pivot",
+                GearError::TooClose { .. }
+                | GearError::Interference { .. }
+                | GearError::NoMesh { .. } => "follower.pivot",
                 GearError::BasePitch { .. } => "follower.profile.module",
                 _ => "follower.profile.kind",
             };

@@ -43,6 +43,26 @@ pub enum GearError {
         /// `r_b1 + r_b2`, length
         base_radii: f64,
     },
+    /// the centre distance is below the tight-mesh distance: the teeth overlap (interfere)
+    #[error("the centre distance {centre_distance} is below the tight-mesh (zero-backlash) distance {tight:.9}: the teeth overlap by {overlap:.3e} along the line of action and cannot turn; move the centres apart to at least {tight:.9}, or thin the teeth (backlash, profile shift)", centre_distance = crate::human::human(*.centre_distance))]
+    Interference {
+        /// `a`, length
+        centre_distance: f64,
+        /// the tight-mesh distance, where the teeth touch on both flanks, length
+        tight: f64,
+        /// how far the teeth overlap along the line of action, length
+        overlap: f64,
+    },
+    /// the centre distance leaves no path of contact on the involutes
+    #[error("the centre distance {centre_distance} leaves the teeth no path of contact on their involutes (contact ratio {contact_ratio:.3}): they touch at most tip to tip; a contact ratio of 1 needs a centre distance of at most {for_one:.6}", centre_distance = crate::human::human(*.centre_distance))]
+    NoMesh {
+        /// `a`, length
+        centre_distance: f64,
+        /// the contact ratio there (≤ 0)
+        contact_ratio: f64,
+        /// the largest centre distance with a contact ratio of 1, length
+        for_one: f64,
+    },
     /// the base pitches differ: the teeth cannot hand over
     #[error("the gears' base pitches differ ({driver:.6} and {driven:.6}, π m cos α): give both the same module and pressure angle")]
     BasePitch {
@@ -134,15 +154,75 @@ pub fn contact_ratio(
     driven: &InvoluteGear,
     centre_distance: f64,
 ) -> Result<f64, GearError> {
-    let (rb1, rb2) = (driver.base_radius(), driven.base_radius());
     check(driver, driven, centre_distance)?;
+    Ok(path_over_pitch(driver, driven, centre_distance))
+}
+
+/// The contact ratio's formula, unchecked (negative when the path of contact is empty).
+fn path_over_pitch(driver: &InvoluteGear, driven: &InvoluteGear, centre_distance: f64) -> f64 {
+    let (rb1, rb2) = (driver.base_radius(), driven.base_radius());
     let g = (centre_distance * centre_distance - (rb1 + rb2).powi(2)).sqrt();
     let roll = |r: f64, rb: f64| (r * r - rb * rb).max(0.0).sqrt();
     let pb = TAU * rb1 / f64::from(driver.teeth());
     // the contact's roll length on the driver, from T₁: within both flanks' involutes
     let end = roll(driver.tip_radius(), rb1).min(g - roll(driven.form_radius(), rb2));
     let start = (g - roll(driven.tip_radius(), rb2)).max(roll(driver.form_radius(), rb1));
-    Ok((end - start) / pb)
+    (end - start) / pb
+}
+
+/// The tight-mesh (zero-backlash) centre distance of two external gears with equal base
+/// pitches: where the teeth touch on both flanks at once. From the teeth's half angles at the
+/// base circle `γ₁, γ₂` ([`InvoluteGear::base_half_angle`], the thickness as built: shifts and
+/// backlash allowances included), the operating pressure angle has
+/// `inv α_w = (z₁γ₁ + z₂γ₂ − π)/(z₁ + z₂)` and the distance is `(r_b1 + r_b2)/cos α_w` (for
+/// standard gears without allowances, `inv α_w = inv α` and the distance is `m(z₁ + z₂)/2`).
+/// Closer than it the teeth overlap.
+pub fn tight_mesh_distance(driver: &InvoluteGear, driven: &InvoluteGear) -> f64 {
+    let (z1, z2) = (f64::from(driver.teeth()), f64::from(driven.teeth()));
+    let y = (z1 * driver.base_half_angle() + z2 * driven.base_half_angle() - std::f64::consts::PI)
+        / (z1 + z2);
+    let base = driver.base_radius() + driven.base_radius();
+    if !(y > 0.0) {
+        return base;
+    }
+    // inv α = y by Newton from the series' first term (inv α ≈ α³/3), monotone from above
+    let mut alpha = (3.0 * y).cbrt().min(1.5);
+    for _ in 0..60 {
+        let t = alpha.tan();
+        let step = (t - alpha - y) / (t * t);
+        alpha -= step;
+        if step.abs() <= 1e-15 * alpha {
+            break;
+        }
+    }
+    base / alpha.cos()
+}
+
+/// The largest centre distance at which the contact ratio is at least `ratio` (between the
+/// tight-mesh distance and the tips' reach), or `None` when even the tight mesh falls short.
+pub fn distance_for_contact_ratio(
+    driver: &InvoluteGear,
+    driven: &InvoluteGear,
+    ratio: f64,
+) -> Option<f64> {
+    let lo0 = tight_mesh_distance(driver, driven).max(driver.base_radius() + driven.base_radius());
+    let (mut lo, mut hi) = (lo0, driver.tip_radius() + driven.tip_radius());
+    if !(path_over_pitch(driver, driven, lo) >= ratio) {
+        return None;
+    }
+    // the path of contact shortens as the centres move apart
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if path_over_pitch(driver, driven, mid) >= ratio {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+        if hi - lo <= 1e-13 * hi {
+            break;
+        }
+    }
+    Some(lo)
 }
 
 fn check(driver: &InvoluteGear, driven: &InvoluteGear, a: f64) -> Result<(), GearError> {
@@ -159,6 +239,32 @@ fn check(driver: &InvoluteGear, driven: &InvoluteGear, a: f64) -> Result<(), Gea
         return Err(GearError::BasePitch {
             driver: p1,
             driven: p2,
+        });
+    }
+    mesh_check(driver, driven, a)
+}
+
+/// Refuses a centre distance at which two gears of equal base pitch interfere (closer than the
+/// tight mesh, beyond a rounding of 1e-9 of it) or have no path of contact on their involutes.
+pub fn mesh_check(driver: &InvoluteGear, driven: &InvoluteGear, a: f64) -> Result<(), GearError> {
+    let tight = tight_mesh_distance(driver, driven);
+    if a < tight * (1.0 - 1e-9) {
+        // the overlap along the line of action: the normal backlash 2(r_b1 + r_b2)(inv α_a −
+        // inv α_tight), negative here, with cos α_d = (r_b1 + r_b2)/d
+        let base = driver.base_radius() + driven.base_radius();
+        let inv = |d: f64| crate::curve::involute_function((base / d).min(1.0).acos());
+        return Err(GearError::Interference {
+            centre_distance: a,
+            tight,
+            overlap: 2.0 * base * (inv(tight) - inv(a)).abs(),
+        });
+    }
+    let eps = path_over_pitch(driver, driven, a);
+    if !(eps > 0.0) {
+        return Err(GearError::NoMesh {
+            centre_distance: a,
+            contact_ratio: eps,
+            for_one: distance_for_contact_ratio(driver, driven, 1.0).unwrap_or(tight),
         });
     }
     Ok(())

@@ -147,6 +147,18 @@ fn summary(pair: &GearPair, loaded: &Loaded, rows: &[MeshRow]) {
         human((pair.contact_ratio() * 1e4).round() / 1e4),
         human((pair.base_pitch() * 1e4).round() / 1e4),
     );
+    let eps = pair.contact_ratio();
+    if eps < 1.0 {
+        let one = camkin::gears::distance_for_contact_ratio(pair.driver(), pair.driven(), 1.0);
+        eprintln!(
+            "camkin: warning: contact ratio {} is below 1: between handovers no tooth pair is in contact on the involutes, and the next tooth strikes{}",
+            human((eps * 1e4).round() / 1e4),
+            one.map_or(String::new(), |d| format!(
+                "; a ratio of 1 needs a centre distance of at most {} {l}",
+                human((d * 1e6).floor() / 1e6)
+            ))
+        );
+    }
     let (mu, k) = micro_length(loaded.unit);
     let te: Vec<f64> = rows
         .iter()

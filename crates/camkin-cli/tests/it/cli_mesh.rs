@@ -185,3 +185,59 @@ fn not_a_gear_pair_is_refused_and_writes_nothing() {
         ));
     assert!(!out.exists());
 }
+
+/// Issue 44: gears whose teeth overlap (closer than the tight mesh: the FZG C pair at its
+/// nominal 91.5 mm) or never meet on their involutes are refused by every command that reads
+/// the file (exit 2, at `follower.pivot`, naming the distance that would work), not analysed
+/// with failures about tip corners or a negative contact ratio; a ratio below 1 is warned of.
+#[test]
+fn interfering_or_distant_gears_are_refused_naming_the_distance() {
+    let dir = tempfile::tempdir().unwrap();
+    let fzg = dir.path().join("fzg.toml");
+    std::fs::write(
+        &fzg,
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000.0\n[cam.profile]\nkind = \"involute-gear\"\nmodule = 4.5\nteeth = 16\npressure_angle_deg = 20.0\nprofile_shift = 0.1817\n[follower]\nkind = \"rotating\"\npivot = [91.5, 0.0]\nclosing = \"ccw\"\ninitial_angle_deg = 187.5\n[follower.profile]\nkind = \"involute-gear\"\nmodule = 4.5\nteeth = 24\npressure_angle_deg = 20.0\nprofile_shift = 0.1715\n",
+    )
+    .unwrap();
+    for cmd in ["analyze", "mesh", "contacts"] {
+        camkin()
+            .arg(cmd)
+            .arg(&fzg)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("fzg.toml:12:9: follower.pivot"))
+            .stderr(predicate::str::contains(
+                "tight-mesh (zero-backlash) distance 91.500078596",
+            ))
+            .stderr(predicate::str::contains("overlap by 6.000e-5"));
+    }
+    let text = std::fs::read_to_string(examples().join("gear-pair-20-42.toml")).unwrap();
+    let far = dir.path().join("far.toml");
+    std::fs::write(
+        &far,
+        text.replace("pivot = [62.0, 0.0]", "pivot = [70.0, 0.0]"),
+    )
+    .unwrap();
+    camkin()
+        .args(["mesh"])
+        .arg(&far)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("no path of contact"))
+        .stderr(predicate::str::contains("at most 63.39167"));
+    let low = dir.path().join("low.toml");
+    std::fs::write(
+        &low,
+        text.replace("pivot = [62.0, 0.0]", "pivot = [64.0, 0.0]"),
+    )
+    .unwrap();
+    camkin()
+        .args(["mesh"])
+        .arg(&low)
+        .args(["--angles", "0:18:1"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains(
+            "warning: contact ratio 0.745 is below 1",
+        ));
+}

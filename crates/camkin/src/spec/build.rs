@@ -4,6 +4,7 @@ use super::{DynamicsSpec, FollowerKind, FollowerSpec, MechanismSpec};
 use crate::cam::{Cam, CamError, Follower, Mechanism, Sense};
 use crate::dynamics::FollowerDynamics;
 use crate::field::{CamField, DynamicsField, Field, FollowerField, Key, ProfileField};
+use crate::gears::{GearError, GearPair};
 use crate::valid::Rule;
 use crate::{Point2, Vec2};
 use std::path::PathBuf;
@@ -396,6 +397,16 @@ impl MechanismSpec {
             },
             e => e,
         })?;
+        // two involute gears of one base pitch: refused where their teeth overlap (closer than
+        // the tight mesh) or never mesh on their involutes, naming the distance that would
+        if let Err(e @ (GearError::Interference { .. } | GearError::NoMesh { .. })) =
+            GearPair::new(&mechanism)
+        {
+            return Err(SpecError::Rule {
+                field: Field::Follower(FollowerField::Pivot),
+                reason: format!("{e} (lengths in {lengths})"),
+            });
+        }
         if let Some(c) = &self.follower.conjugate {
             let (curve, _) = c.build(
                 scale,
