@@ -403,12 +403,16 @@ pub fn write(
     if let Some(r) = opts.tool_radius {
         let samples = 64 * starts.len().max(16);
         let mut bad: Vec<f64> = Vec::new();
-        let mut sharpest = f64::NEG_INFINITY;
-        for k in 0..samples {
-            let u = period * k as f64 / samples as f64;
-            let rho = convex_radius(profile, orient, u);
-            if rho < 0.0 {
-                sharpest = sharpest.max(rho);
+        let us: Vec<f64> = (0..samples)
+            .map(|k| period * k as f64 / samples as f64)
+            .collect();
+        let concave = |u: f64| Some(convex_radius(profile, orient, u)).filter(|&x| x < 0.0);
+        let values: Vec<Option<f64>> = us.iter().map(|&u| concave(u)).collect();
+        // the sharpest concave radius where it is, refined between the samples
+        let sharpest = camkin::extreme::best_refined(&us, &values, 1.0, Some(period), concave)
+            .map_or(f64::NEG_INFINITY, |(_, v)| v);
+        for (&u, rho) in us.iter().zip(&values) {
+            if let Some(rho) = *rho {
                 if rho > -r {
                     let p = profile.position(u);
                     bad.push(p.y.atan2(p.x).to_degrees().rem_euclid(360.0));

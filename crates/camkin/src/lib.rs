@@ -76,6 +76,7 @@ pub mod contact;
 pub mod curve;
 pub mod dynamics;
 mod error;
+pub mod extreme;
 pub mod field;
 pub mod gears;
 pub mod geometry;

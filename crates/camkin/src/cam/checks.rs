@@ -7,7 +7,7 @@
 //! The checks are data; [`crate::report::DesignReport`] gives each its verdict and its words,
 //! which every front end prints.
 
-use super::{CamError, FollowerCurve, Mechanism, StopReason};
+use super::{CamError, FollowerCurve, FollowerState, Mechanism, StopReason};
 
 /// The round trip of a synthesised profile: the follower's motion by the contact method against
 /// the motion law it was synthesised from, largest differences over the checked angles.
@@ -119,7 +119,6 @@ pub(crate) fn design_checks(
     let mut failed = 0;
     let (mut failed_deg, mut first_failure) = (Vec::new(), None);
     let mut over = Vec::new();
-    let mut pa_peak = (0.0f64, 0.0f64);
     let mut folded = Vec::new();
     // the profile at the contact concave more sharply than the follower can follow (a flat
     // face: any concave stretch, ρ ≤ 0; a roller of radius r: −r < ρ ≤ 0; a knife any)
@@ -128,9 +127,6 @@ pub(crate) fn design_checks(
         FollowerCurve::Line(_) => (0.0, None, true),
         _ => (f64::NEG_INFINITY, None, false),
     };
-    let (mut convex_min, mut convex_at) = (f64::INFINITY, 0.0);
-    let (mut concave_min, mut concave_at) = (f64::NEG_INFINITY, 0.0);
-    let (mut umin, mut umax) = (f64::INFINITY, f64::NEG_INFINITY);
     for (t, s) in thetas.iter().zip(&states) {
         if let Some(synth) = synth {
             // the program's peak over every angle, not only those analysed
@@ -166,22 +162,36 @@ pub(crate) fn design_checks(
         if pa.abs() > pressure_limit_deg {
             over.push(t.to_degrees());
         }
-        if pa.abs() > pa_peak.0.abs() {
-            pa_peak = (pa, t.to_degrees());
-        }
         let rho = s.radius_of_curvature;
         if concave_limit > f64::NEG_INFINITY && !(rho > 0.0 || rho < concave_limit) {
             folded.push(t.to_degrees());
         }
-        if rho > 0.0 && rho < convex_min {
-            (convex_min, convex_at) = (rho, t.to_degrees());
-        }
-        if rho < 0.0 && rho > concave_min {
-            (concave_min, concave_at) = (rho, t.to_degrees());
-        }
-        umin = umin.min(s.follower_param);
-        umax = umax.max(s.follower_param);
     }
+    // the extremes where they are, refined between the samples on the exact curve
+    let period = crate::extreme::is_revolution(thetas).then_some(std::f64::consts::TAU);
+    let best = |g: &dyn Fn(&FollowerState) -> Option<f64>, sign: f64| {
+        let values: Vec<Option<f64>> = states.iter().map(|s| s.as_ref().ok().and_then(g)).collect();
+        crate::extreme::best_refined(thetas, &values, sign, period, |t| {
+            mech.analyze(t).ok().as_ref().and_then(g)
+        })
+        .map(|(t, v)| (v, t.rem_euclid(std::f64::consts::TAU).to_degrees()))
+    };
+    let convex_min = best(&|s| Some(s.radius_of_curvature).filter(|&r| r > 0.0), -1.0);
+    let concave_sharpest = best(&|s| Some(s.radius_of_curvature).filter(|&r| r < 0.0), 1.0);
+    let pa_peak = best(&|s| Some(s.pressure_angle().abs()), 1.0).map_or((0.0, 0.0), |(_, at)| {
+        // the signed angle at the refined peak
+        let signed = mech
+            .analyze(at.to_radians())
+            .map_or(f64::NAN, |s| s.pressure_angle().to_degrees());
+        (signed, at)
+    });
+    let face_range = if flat_face {
+        let lo = best(&|s| Some(s.follower_param), -1.0);
+        let hi = best(&|s| Some(s.follower_param), 1.0);
+        lo.zip(hi).map(|((a, _), (b, _))| (a, b))
+    } else {
+        None
+    };
     let round_trip = synth.map(|_| {
         let natural = if mech.follower().is_oscillating() {
             w * w
@@ -208,11 +218,11 @@ pub(crate) fn design_checks(
         failed_deg,
         first_failure,
         round_trip,
-        convex_min: convex_min.is_finite().then_some((convex_min, convex_at)),
-        concave_sharpest: concave_min.is_finite().then_some((concave_min, concave_at)),
+        convex_min,
+        concave_sharpest,
         roller_radius,
         flat_face,
-        face_range: (flat_face && umin <= umax).then_some((umin, umax)),
+        face_range,
         pressure_peak: pa_peak,
         pressure_over_deg: over,
         undercut_deg: folded,

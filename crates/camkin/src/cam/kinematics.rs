@@ -219,7 +219,12 @@ impl Mechanism {
         let g = &self.touch.geometry;
         let c = ea.p;
         let body_b = g.joint.body(touch.q, qd, qdd);
-        let reference_point = reference_point(c, nu, &k);
+        // a roller's centre (a circle on the follower turns on its pin: the force passes through
+        // it), else the contact point
+        let reference_point = g
+            .curve
+            .circle()
+            .map_or(c, |r| body_b.pose.to_world(r.center()));
         let kappa_conv = self.touch.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
         // none where a curve's third derivative jumps (a spline node, a piece joint of the
@@ -300,21 +305,5 @@ impl Mechanism {
             bp[0] + self.touch.period
         };
         u - below < tol || above - u < tol
-    }
-}
-
-/// The follower's reference point at a contact `c` with common normal `nu` (the cam's left
-/// normal): the centre of curvature of the follower's curve there where that curve is convex
-/// (`κ_B > 0`: a roller's centre, at `c + σ ν_A / κ_B`, since the follower's left normal is
-/// `σ ν_A`), else `c` (a point, a line, a concave stretch).
-fn reference_point(
-    c: crate::geometry::Point2,
-    nu: Vec2,
-    k: &ContactKinematics,
-) -> crate::geometry::Point2 {
-    if k.kappa_b > 0.0 && k.kappa_b.is_finite() {
-        c + (k.sigma / k.kappa_b) * nu
-    } else {
-        c
     }
 }

@@ -54,9 +54,10 @@ pub struct FollowerState {
     /// its coordinate (`∂v_B^P/∂q̇`: `d` for translating followers, `k × (c − O)` for
     /// oscillating ones), world frame: what the contact force does work along
     pub follower_motion: Vec2,
-    /// the follower's reference point, world: the centre of curvature of its curve at the
-    /// contact where that curve is convex there (a roller's centre), else the contact point (a
-    /// knife's tip, a flat face); see [`FollowerState::pressure_angle`]
+    /// the follower's reference point, world: a roller's centre (the follower's curve is a
+    /// circle, named or carried: it turns on its pin, and the force passes through it), else the
+    /// contact point (a knife's tip, a flat or curved face, a gear's flank); see
+    /// [`FollowerState::pressure_angle`]
     pub reference_point: Point2,
     /// direction of motion of the reference point per unit rate of the follower's coordinate,
     /// world (`d` for translating followers, `k × (R − O)` for oscillating ones)
@@ -140,13 +141,14 @@ impl FollowerState {
     }
 
     /// Pressure angle, the textbook's: from the direction of motion of the follower's
-    /// reference point ([`FollowerState::reference_motion`]: a roller's centre, a knife's tip,
-    /// a flat face's contact point) to the line of the contact force (the common normal, which
-    /// passes through a roller's centre), oriented along the motion; rad, counter-clockwise
-    /// positive. For a translating follower every point moves along `d`, so the reference
-    /// does not matter; for an arm the roller's centre and the contact point move in different
-    /// directions (Norton, *Cam Design and Manufacturing Handbook*, §7; Rothbart, *Cam Design
-    /// Handbook*, §5).
+    /// reference point ([`FollowerState::reference_motion`]: a roller's centre, else the contact
+    /// point — a knife's tip, a face, a gear's flank, where it is the involute's profile angle
+    /// `cos α = r_b/r`) to the line of the contact force (the common normal, which passes
+    /// through a roller's centre), oriented along the motion; rad, counter-clockwise positive.
+    /// For a translating follower every point moves along `d`, so the reference does not
+    /// matter; on an arm the roller's centre and the contact point move in different directions
+    /// (Norton, *Cam Design and Manufacturing Handbook*, ch. 7; Rothbart, *Cam Design
+    /// Handbook*, ch. 5).
     pub fn pressure_angle(&self) -> f64 {
         pressure_angle(self.reference_motion, *self.normal)
     }

@@ -29,6 +29,9 @@ impl Circle {
 }
 
 impl Curve for Circle {
+    fn as_circle(&self) -> Option<&Circle> {
+        Some(self)
+    }
     fn eval(&self, u: f64) -> Derivs {
         let (s, c) = u.sin_cos();
         let r = self.radius;

@@ -139,6 +139,12 @@ pub trait Curve: std::fmt::Debug + Send + Sync {
         None
     }
 
+    /// The curve as a circle, when it is one (a circle on a follower is a roller: the pressure
+    /// angle is taken at its centre).
+    fn as_circle(&self) -> Option<&Circle> {
+        None
+    }
+
     /// `r(u)`.
     fn position(&self, u: f64) -> Point2 {
         self.eval(u).p

@@ -8,6 +8,7 @@
 use super::{Extreme, ForceField, Materials, ReportError};
 use crate::cam::Mechanism;
 use crate::dynamics::{hertz_line_pressure, FollowerDynamics, ForceState, Forces};
+use crate::extreme::best_refined;
 use crate::spec::LengthUnit;
 use crate::table::Cell;
 use crate::work::Work;
@@ -319,18 +320,19 @@ impl ForceReport {
         let closed = mech.is_conjugate();
         let speed = mech.cam().speed();
         let target = req.target_rpm.map_or(speed, |r| r * TAU / 60.0);
-        let extreme = |g: &dyn Fn(&ForceState) -> f64| {
-            let (mut lo, mut hi) = (&states[0], &states[0]);
-            for s in &states {
-                if g(s) < g(lo) {
-                    lo = s;
-                }
-                if g(s) > g(hi) {
-                    hi = s;
-                }
+        // an extreme where it is: the best sample refined between its neighbours on the exact
+        // state (the grid alone misses a peak between samples)
+        let at = |t: f64| f.at(t).ok();
+        let refined = |g: &dyn Fn(&ForceState) -> f64, sign: f64| {
+            let values: Vec<Option<f64>> = states.iter().map(|s| Some(g(s))).collect();
+            let (t, v) = best_refined(&thetas, &values, sign, Some(TAU), |t| at(t).map(|s| g(&s)))
+                .unwrap_or((states[0].cam_angle, g(&states[0])));
+            Extreme {
+                value: v,
+                cam_angle: t.rem_euclid(TAU),
             }
-            (Extreme::of(g(lo), lo), Extreme::of(g(hi), hi))
         };
+        let extreme = |g: &dyn Fn(&ForceState) -> f64| (refined(g, -1.0), refined(g, 1.0));
         let contact_force = extreme(&|s| s.contact_force);
         let camshaft_torque = extreme(&|s| s.camshaft_torque);
         let torque_rms = (states
@@ -352,24 +354,22 @@ impl ForceReport {
         } else {
             dmax
         };
-        let mut jump = Jump {
-            speed: f64::INFINITY,
-            cam_angle: 0.0,
-            index: 0,
+        let leave = |s: &ForceState| f.leave_speed(s, req.margin);
+        let lowest = refined(&leave, -1.0);
+        let jump = Jump {
+            speed: lowest.value,
+            cam_angle: lowest.cam_angle,
+            // the sample nearest the refined angle
+            index: ((lowest.cam_angle / TAU * n as f64).round() as usize) % n,
         };
-        for (index, s) in states.iter().enumerate() {
-            let v = f.leave_speed(s, req.margin);
-            if v < jump.speed {
-                jump = Jump {
-                    speed: v,
-                    cam_angle: s.cam_angle,
-                    index,
-                };
-            }
-        }
         let mut failures = Vec::new();
         let (spring, form_closed) = if closed {
-            (None, Some(form_closed_loads(mech, &states, &thetas)?))
+            (
+                None,
+                Some(form_closed_loads(mech, &states, &thetas, &|g| {
+                    refined(g, 1.0)
+                })?),
+            )
         } else {
             let min = contact_force.0;
             if min.value < req.margin {
@@ -385,11 +385,13 @@ impl ForceReport {
                 });
             }
             (
-                Some(spring_sizing(&f, &states, &params, req.margin, target)),
+                Some(spring_sizing(
+                    &f, &states, &thetas, &params, req.margin, target,
+                )),
                 None,
             )
         };
-        let (stress_mpa, hertz) = hertz(&states, req, closed);
+        let (stress_mpa, hertz) = hertz(&states, &thetas, &at, req, closed);
         if let Some(h) = &hertz {
             if let Some(al) = h.allowable_mpa.filter(|&al| h.worst_mpa > al) {
                 failures.push(ForceCheck::StressOverAllowable {
@@ -509,47 +511,44 @@ pub fn rpm(w: f64) -> f64 {
 fn spring_sizing(
     f: &Forces<'_>,
     states: &[ForceState],
+    thetas: &[f64],
     params: &FollowerDynamics,
     margin: f64,
     target: f64,
 ) -> SpringSizing {
-    let preload = states
-        .iter()
-        .map(|s| f.preload_needed(s, margin, target))
-        .fold(f64::NEG_INFINITY, f64::max);
-    let mut stiffness = f64::NEG_INFINITY;
-    let mut possible = true;
-    for s in states {
-        match f.stiffness_needed(s, margin, target) {
-            Some(k) => stiffness = stiffness.max(k),
-            None => {
-                if f.preload_needed(s, margin, target) > params.spring_preload {
-                    possible = false;
-                }
-            }
-        }
-    }
+    // the largest need over the revolution, refined between the samples
+    let worst = |g: &dyn Fn(&ForceState) -> Option<f64>| {
+        let values: Vec<Option<f64>> = states.iter().map(g).collect();
+        best_refined(thetas, &values, 1.0, Some(TAU), |t| {
+            f.at(t).ok().as_ref().and_then(g)
+        })
+        .map(|(_, v)| v)
+    };
+    let preload = worst(&|s| Some(f.preload_needed(s, margin, target))).unwrap_or(0.0);
+    let stiffness = worst(&|s| f.stiffness_needed(s, margin, target));
+    // where the lift is zero only the preload acts: no stiffness helps if it falls short there
+    let possible = states.iter().all(|s| {
+        f.stiffness_needed(s, margin, target).is_some()
+            || f.preload_needed(s, margin, target) <= params.spring_preload
+    });
     SpringSizing {
         preload: preload.max(0.0),
-        stiffness: possible.then_some(stiffness.max(0.0)),
+        stiffness: possible.then_some(stiffness.unwrap_or(0.0).max(0.0)),
         file_preload: params.spring_preload,
         file_stiffness: params.spring_stiffness,
     }
 }
 
+/// The greatest of a quantity over the revolution, refined between the samples.
+type Peak<'a> = dyn Fn(&dyn Fn(&ForceState) -> f64) -> Extreme + 'a;
+
 fn form_closed_loads(
     mech: &Mechanism,
     states: &[ForceState],
     thetas: &[f64],
+    peak: &Peak<'_>,
 ) -> Result<FormClosed, ReportError> {
-    let peak = |g: fn(&ForceState) -> f64| {
-        let s = states
-            .iter()
-            .max_by(|a, b| g(a).total_cmp(&g(b)))
-            .expect("a revolution has angles");
-        Extreme::of(g(s), s)
-    };
-    let (p1, p2) = (peak(|s| s.contact_force), peak(ForceState::second_force));
+    let (p1, p2) = (peak(&|s| s.contact_force), peak(&ForceState::second_force));
     // which curve carries, angle by angle (neither, or a force at rounding level of the peak:
     // the last one's), around the revolution
     let small = 1e-9 * p1.value.max(p2.value);
@@ -608,6 +607,8 @@ fn form_closed_loads(
 /// The Hertz stress at each angle and contact, and its summary (none without a face width).
 fn hertz(
     states: &[ForceState],
+    thetas: &[f64],
+    at: &dyn Fn(f64) -> Option<ForceState>,
     req: &ForceRequest,
     closed: bool,
 ) -> (Vec<[Option<f64>; 2]>, Option<HertzReport>) {
@@ -651,6 +652,19 @@ fn hertz(
                 None if force > 0.0 => h.conformal += 1,
                 None => {}
             }
+        }
+        // the worst where it is, refined between the samples
+        let pressure = |s: &ForceState| {
+            let (force, rc, rf) = contact(s)?;
+            hertz_line_pressure(force.max(0.0), width, rc, rf?, es)
+        };
+        let values: Vec<Option<f64>> = states.iter().map(pressure).collect();
+        if let Some((t, p)) = best_refined(thetas, &values, 1.0, Some(TAU), |t| {
+            at(t).as_ref().and_then(pressure)
+        }) {
+            let t = t.rem_euclid(TAU);
+            let rc = at(t).and_then(|s| contact(&s)).map_or(f64::NAN, |c| c.1);
+            h.worst = Some((p, t, rc));
         }
         if let Some((p, ..)) = h.worst {
             worst_mpa = worst_mpa.max(p / 1e6);

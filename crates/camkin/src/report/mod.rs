@@ -21,7 +21,7 @@ pub use forces::{
 pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
 
 use crate::cam::CamError;
-use crate::dynamics::{DynamicsError, ForceState};
+use crate::dynamics::DynamicsError;
 use std::fmt;
 
 /// A value of a report and the cam angle where it is.
@@ -32,15 +32,6 @@ pub struct Extreme {
     pub value: f64,
     /// the cam angle, rad
     pub cam_angle: f64,
-}
-
-impl Extreme {
-    fn of(value: f64, s: &ForceState) -> Self {
-        Self {
-            value,
-            cam_angle: s.cam_angle,
-        }
-    }
 }
 
 /// The inputs of a force report, named by enum: each front end words them its own way (the

@@ -15,6 +15,7 @@ mod dynamics_multibody;
 mod dynamics_reduced;
 mod eccentric_circle;
 mod ellipse_flat;
+mod extremes;
 mod forces;
 mod gear_mesh;
 mod general_follower;

@@ -197,3 +197,43 @@ fn a_translating_rollers_signed_pressure_angle_has_its_closed_form() {
     // both signs were reached: a mirrored sign would fail
     assert!(signs[0] > 20 && signs[1] > 20, "{signs:?}");
 }
+
+/// A gear carried by an arm is not a roller: its pressure angle is at the contact point, the
+/// involute's profile angle there, `cos α = r_b/r` (r: the contact's distance from the driven
+/// gear's centre), on both flanks.
+#[test]
+fn a_gears_pressure_angle_is_its_profile_angle_at_the_contact() {
+    use camkin::cam::{Cam, Mechanism};
+    use camkin::curve::{InvoluteGear, InvoluteGearSpec};
+    let alpha = 20f64.to_radians();
+    let g1 = InvoluteGear::new(InvoluteGearSpec::new(2.0, 20, alpha)).unwrap();
+    let g2 = InvoluteGear::new(InvoluteGearSpec::new(2.0, 42, alpha)).unwrap();
+    let rb2 = g2.base_radius();
+    for (driver, closing) in [(Sense::Ccw, Sense::Ccw), (Sense::Cw, Sense::Cw)] {
+        let cam = Cam::from_rpm(Arc::new(g1.clone()), Point2::origin(), driver, 1000.0).unwrap();
+        let follower = Follower::Rotating {
+            pivot: Point2::new(62.0, 0.0),
+            closing,
+            initial_angle: std::f64::consts::PI + std::f64::consts::PI / 42.0,
+            profile: FollowerProfile(Arc::new(g2.clone())),
+        };
+        let m = Mechanism::new(cam, follower).unwrap();
+        let mut checked = 0;
+        for k in 0..36 {
+            let s = m.analyze(k as f64 * 0.5f64.to_radians()).unwrap();
+            if s.corner.is_some() {
+                continue;
+            }
+            let r = (s.contact_world - Point2::new(62.0, 0.0)).norm();
+            let expect = (rb2 / r).acos();
+            assert!(
+                (s.pressure_angle().abs() - expect).abs() < 1e-9,
+                "{driver:?}: {} against {}",
+                s.pressure_angle(),
+                expect
+            );
+            checked += 1;
+        }
+        assert!(checked > 30);
+    }
+}

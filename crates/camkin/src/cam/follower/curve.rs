@@ -29,6 +29,15 @@ impl FollowerCurve {
         }
     }
 
+    /// The curve as a circle when it is one (a roller, named or carried).
+    pub fn circle(&self) -> Option<&Circle> {
+        match self {
+            FollowerCurve::Circle(c) => Some(c),
+            FollowerCurve::Carried(c) => c.as_circle(),
+            _ => None,
+        }
+    }
+
     /// The curve as a shared trait object (for the dynamics).
     pub fn to_arc(self) -> std::sync::Arc<dyn crate::curve::Curve> {
         match self {

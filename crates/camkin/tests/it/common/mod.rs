@@ -45,6 +45,12 @@ pub fn eccentric_circle(r: f64, e: f64) -> Arc<dyn Curve> {
     Arc::new(Circle::new(Point2::new(e, 0.0), r).unwrap())
 }
 
+/// Eccentric circular cam: radius `r`, centre at distance `e` in direction `beta` (rad).
+#[allow(dead_code)]
+pub fn eccentric_circle_at(r: f64, e: f64, beta: f64) -> Arc<dyn Curve> {
+    Arc::new(Circle::new(Point2::new(e * beta.cos(), e * beta.sin()), r).unwrap())
+}
+
 pub fn ellipse(a: f64, b: f64, center: Point2, rot: f64) -> Arc<dyn Curve> {
     Arc::new(Ellipse::new(center, a, b, rot).unwrap())
 }
