@@ -112,17 +112,33 @@ pub fn angles_from(
     field: &str,
 ) -> PyResult<(Vec<f64>, bool)> {
     let np = py.import("numpy")?;
+    let not_numbers = |why: String| {
+        errors::input(
+            field,
+            x.repr().ok().map(|r| r.to_string()),
+            format!("{field}: not a real number or an array of real numbers ({why})"),
+        )
+    };
+    // the array as given first: only integers and reals are angles (a complex number would
+    // lose its imaginary part, a string "45" would be read as a number, a bool as 0 or 1)
+    let raw = np
+        .call_method1("asarray", (x,))
+        .map_err(|e| not_numbers(e.to_string()))?;
+    let kind: String = raw.getattr("dtype")?.getattr("kind")?.extract()?;
+    if !matches!(kind.as_str(), "i" | "u" | "f") {
+        let what = match kind.as_str() {
+            "c" => "complex numbers",
+            "U" | "S" => "text",
+            "b" => "booleans",
+            _ => "values of mixed or other types",
+        };
+        return Err(not_numbers(format!("{what} given")));
+    }
     let kwargs = PyDict::new(py);
     kwargs.set_item("dtype", np.getattr("float64")?)?;
     let arr = np
-        .call_method("asarray", (x,), Some(&kwargs))
-        .map_err(|e| {
-            errors::input(
-                field,
-                x.repr().ok().map(|r| r.to_string()),
-                format!("{field}: not a number or an array of numbers ({e})"),
-            )
-        })?;
+        .call_method("asarray", (raw,), Some(&kwargs))
+        .map_err(|e| not_numbers(e.to_string()))?;
     let ndim: usize = arr.getattr("ndim")?.extract()?;
     if ndim > 1 {
         let shape: Vec<usize> = arr.getattr("shape")?.extract()?;

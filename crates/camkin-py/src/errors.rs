@@ -54,6 +54,7 @@ pub fn text(e: camkin::spec::text::TextError) -> PyErr {
     let (field, value) = match &e.problem {
         TextProblem::Spec(s) => field_value(s),
         TextProblem::Read => ("source".to_string(), Some(e.name.clone())),
+        TextProblem::Syntax { value } => (e.path.clone().unwrap_or_default(), value.clone()),
         _ => (e.path.clone().unwrap_or_default(), None),
     };
     input_at(&field, value, e.message, e.at)

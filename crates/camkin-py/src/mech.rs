@@ -245,19 +245,8 @@ impl PyMechanism {
                 "Mechanism.from_dict takes a dict with the mechanism file's schema".into(),
             ));
         }
-        let text: String = json_module(py)?
-            .call_method1("dumps", (d,))
-            .map_err(|e| {
-                errors::input(
-                    "",
-                    None,
-                    format!(
-                        "the dict holds a value that is not a number, string, list or dict: {e}"
-                    ),
-                )
-            })?
-            .extract()?;
-        let spec = parse_json(&text)?;
+        let value = crate::dict::to_value(d, "", 0)?;
+        let spec = camkin::spec::text::from_value(value, "mechanism dict").map_err(errors::text)?;
         let m = Self::build(
             spec,
             base_dir.unwrap_or_else(|| PathBuf::from(".")),

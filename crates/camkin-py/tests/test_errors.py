@@ -53,6 +53,8 @@ def test_toml_errors_give_line_and_key():
     with pytest.raises(camkin.InputError) as e:
         camkin.Mechanism.from_toml(PAPER.replace("speed_rpm = 1000.0", 'speed_rpm = "fast"'))
     assert e.value.field == "cam.speed_rpm" and "line 6" in str(e.value)
+    # the value of the wrong type as written (it used to be None)
+    assert e.value.value == "fast"
     with pytest.raises(camkin.InputError) as e:
         camkin.Mechanism.from_toml(PAPER + "\nnonsense = \n")
     assert "line" in str(e.value)
@@ -174,3 +176,61 @@ def test_the_bound_on_a_file_counts_the_bytes_read_not_its_reported_size():
     # a device reports size 0; reading it must still stop at the bound
     with pytest.raises(camkin.InputError, match="more than 8388608 bytes"):
         camkin.Mechanism.from_toml("/dev/zero")
+
+
+@pytest.mark.parametrize(
+    "angles,words",
+    [
+        (45 + 2j, "complex"),
+        ([0.0, 1j], "complex"),
+        ("45", "text"),
+        (["0", "90"], "text"),
+        ([True, False], "booleans"),
+        ([1.0, None], "mixed"),
+    ],
+)
+def test_angles_that_are_not_real_numbers_are_refused(angles, words):
+    # a complex angle used to lose its imaginary part, a string to be read as a number
+    with pytest.raises(camkin.InputError) as e:
+        camkin.paper_cam().analyze(angles)
+    assert e.value.field == "angles_deg" and words in str(e.value), str(e.value)
+
+
+def test_numpy_integer_and_real_angles_are_angles():
+    m = camkin.paper_cam()
+    a = m.analyze(np.array([0, 45], dtype=np.int32))
+    b = m.analyze(np.array([0.0, 45.0], dtype=np.float32))
+    assert np.array_equal(a["acceleration_cm_s2"], b["acceleration_cm_s2"])
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -float("inf")])
+def test_a_non_finite_number_in_a_dict_names_its_field(bad):
+    # it used to be "expected value at line 1 column 44" of JSON the user never wrote
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_dict(spec(cam__speed_rpm=bad))
+    assert e.value.field == "cam.speed_rpm", str(e.value)
+    assert "line 1" not in str(e.value) and "must be positive and finite" in str(e.value)
+
+
+@pytest.mark.parametrize(
+    "change,field,value",
+    [
+        ({"cam__speed_rpm": "fast"}, "cam.speed_rpm", "fast"),
+        ({"cam__profile__points": [[1, 0], [0, "x"], [-1, 0]]}, "cam.profile.points[1][1]", "x"),
+        ({"follower__kind": 3}, "follower.kind", "3"),
+        ({"cam__speed_rpm": 2j}, "cam.speed_rpm", "2j"),
+    ],
+)
+def test_a_value_of_the_wrong_type_in_a_dict_is_named_with_its_value(change, field, value):
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_dict(spec(**change))
+    assert e.value.field == field and e.value.value == value, (e.value.field, e.value.value, str(e.value))
+
+
+def test_a_dict_may_hold_numpy_arrays_and_leave_out_none():
+    d = spec()
+    d["cam"]["profile"]["points"] = np.array(d["cam"]["profile"]["points"])
+    d["cam"]["speed_rpm"] = np.float64(1000.0)
+    d["cam"]["angular_acceleration_deg_s2"] = None
+    m = camkin.Mechanism.from_dict(d)
+    assert m.to_dict() == camkin.paper_cam().to_dict()

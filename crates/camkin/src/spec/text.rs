@@ -17,8 +17,12 @@ pub const MAX_TEXT_BYTES: u64 = 8 << 20;
 pub enum TextProblem {
     /// the file could not be read, is too large or is not UTF-8 text
     Read,
-    /// the text is not TOML (JSON), or a value has the wrong type
-    Syntax,
+    /// the text is not TOML (JSON), or a value has the wrong type: `value` is that value as the
+    /// user wrote it (`fast` where a number belongs), when known
+    Syntax {
+        /// the value at fault, a string without its quotes
+        value: Option<String>,
+    },
     /// the spec is not valid ([`SpecError`])
     Spec(Box<SpecError>),
 }
@@ -122,6 +126,12 @@ pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
         let inner = e.into_inner();
         let path = (!path.is_empty() && path != ".").then_some(path);
         let at = inner.span().map(|s| line_column(text, s.start));
+        // the value's own text, for a value of the wrong type (not a whole table)
+        let value = inner
+            .span()
+            .and_then(|s| text.get(s))
+            .filter(|v| !v.contains('\n') && path.is_some())
+            .map(|v| v.trim().trim_matches('"').to_string());
         TextError {
             message: match &path {
                 Some(p) => format!("{name}: {p}: {inner}"),
@@ -129,7 +139,7 @@ pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
             },
             at,
             path,
-            problem: TextProblem::Syntax,
+            problem: TextProblem::Syntax { value },
             name: name.to_string(),
         }
     })
@@ -151,9 +161,51 @@ pub fn parse_json(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
             },
             at: (inner.line() > 0).then(|| (inner.line(), inner.column())),
             path,
-            problem: TextProblem::Syntax,
+            problem: TextProblem::Syntax { value: None },
             name: name.to_string(),
         }
+    })
+}
+
+/// The spec in a TOML value tree (`name` for messages): what a Python dict becomes, its floats
+/// kept as they are (a NaN reaches the spec's validation, which names its field, instead of
+/// failing JSON's syntax); a type error names the key path.
+pub fn from_value(value: toml::Value, name: &str) -> Result<MechanismSpec, TextError> {
+    serde_path_to_error::deserialize(value.clone()).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        let path = (!path.is_empty() && path != ".").then_some(path);
+        TextError {
+            message: match &path {
+                Some(p) => format!("{name}: {p}: {inner}"),
+                None => format!("{name}: {inner}"),
+            },
+            at: None,
+            problem: TextProblem::Syntax {
+                value: path.as_deref().and_then(|p| value_at(&value, p)),
+            },
+            path,
+            name: name.to_string(),
+        }
+    })
+}
+
+/// The value at `path` (`cam.profile.points[1]`) in `v`, written as in a file (a string
+/// without its quotes).
+fn value_at(v: &toml::Value, path: &str) -> Option<String> {
+    let mut cur = v;
+    for part in path.split('.') {
+        let (name, rest) = part.split_once('[').unwrap_or((part, ""));
+        if !name.is_empty() {
+            cur = cur.get(name)?;
+        }
+        for idx in rest.split('[').filter(|s| !s.is_empty()) {
+            cur = cur.get(idx.trim_end_matches(']').parse::<usize>().ok()?)?;
+        }
+    }
+    Some(match cur {
+        toml::Value::String(s) => s.clone(),
+        other => other.to_string(),
     })
 }
 
@@ -286,7 +338,21 @@ mod tests {
         let e = err(&PAPER.replace("speed_rpm = 1000.0", "speed_rpm = \"fast\""));
         assert_eq!(e.path.as_deref(), Some("cam.speed_rpm"), "{e}");
         assert_eq!(e.at.map(|a| a.0), Some(6), "{e}");
-        assert_eq!(e.problem, TextProblem::Syntax);
+        // the value as written, for a value of the wrong type
+        assert_eq!(
+            e.problem,
+            TextProblem::Syntax {
+                value: Some("fast".into())
+            }
+        );
+        let e = err(&PAPER.replace("speed_rpm = 1000.0", "speed_rpm = [1, 2]"));
+        assert_eq!(
+            e.problem,
+            TextProblem::Syntax {
+                value: Some("[1, 2]".into())
+            },
+            "{e}"
+        );
     }
 
     #[test]
