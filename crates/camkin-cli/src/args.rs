@@ -80,6 +80,17 @@ pub struct TableArgs {
     pub output: Option<std::path::PathBuf>,
 }
 
+impl TableArgs {
+    /// Refuses, before any work, an output file that is an input of this run (the mechanism
+    /// file, one of its points files).
+    pub fn check(&self) -> Result<(), crate::Failure> {
+        match &self.output {
+            Some(p) => crate::output::refuse_input(p, "-o").map_err(crate::Failure::Input),
+            None => Ok(()),
+        }
+    }
+}
+
 /// The units of the follower's motion on a page or in a table (`analyze`, `plot`, `synth`).
 #[derive(Debug, Clone, Copy, clap::Args)]
 pub struct MotionUnitArgs {

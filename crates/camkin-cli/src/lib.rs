@@ -8,6 +8,7 @@ pub mod draw;
 pub mod forces_text;
 pub mod manufacture;
 pub mod mechfile;
+pub mod out_dir;
 pub mod output;
 pub mod studio;
 pub mod study;

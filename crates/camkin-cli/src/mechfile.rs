@@ -69,7 +69,9 @@ impl From<TextError> for InputError {
 /// Reads a mechanism file's text (at most [`MAX_FILE_BYTES`] counted while reading, a byte-order
 /// mark dropped): `(name for messages, text)`.
 pub fn read_text(path: &Path) -> Result<(String, String), InputError> {
-    Ok(text::read_file(path)?)
+    let read = text::read_file(path)?;
+    crate::output::note_input(path);
+    Ok(read)
 }
 
 /// Reads and builds a mechanism file; every error is bad input (exit code 2).
@@ -147,6 +149,10 @@ fn build_spec(
         si,
         confine: false,
     };
+    // its points files are inputs of the run too: no output may replace them
+    for f in spec.files() {
+        crate::output::note_input(&base.join(f));
+    }
     let (built, warnings) = build_placed(spec, text, name, &options)?;
     for w in warnings {
         eprintln!("camkin: warning: {}", w.message);

@@ -9,20 +9,86 @@ use std::path::Path;
 /// interrupted (Ctrl-C, SIGTERM), which would otherwise leave them behind.
 static TEMPORARIES: std::sync::Mutex<Vec<std::path::PathBuf>> = std::sync::Mutex::new(Vec::new());
 
-/// Removes the temporary files of writes in progress (called from the interrupt handler).
+/// Removes the temporary files and folders of writes in progress (called from the interrupt
+/// handler).
 pub fn remove_temporaries() {
     if let Ok(list) = TEMPORARIES.lock() {
         for p in list.iter() {
-            let _ = std::fs::remove_file(p);
+            if p.is_dir() {
+                let _ = std::fs::remove_dir_all(p);
+            } else {
+                let _ = std::fs::remove_file(p);
+            }
         }
     }
 }
 
-/// Registers a temporary file for the interrupt handler while it exists.
-struct Registered(std::path::PathBuf);
+/// The files this run reads (canonical paths): the mechanism file, its points files, a measured
+/// profile. No output may be written over one of them.
+static INPUTS: std::sync::Mutex<Vec<std::path::PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// Notes `p` as an input of this run (nothing when it cannot be resolved: it was not read).
+pub fn note_input(p: &Path) {
+    if let (Ok(c), Ok(mut list)) = (std::fs::canonicalize(p), INPUTS.lock()) {
+        if !list.contains(&c) {
+            list.push(c);
+        }
+    }
+}
+
+/// The inputs noted so far (canonical paths).
+pub fn inputs() -> Vec<std::path::PathBuf> {
+    INPUTS.lock().map(|l| l.clone()).unwrap_or_default()
+}
+
+/// Where writing `p` would put bytes: `p` itself, or the file a symbolic link points to (followed
+/// through every link, a dangling one included: its target is created, the link kept).
+pub fn write_target(p: &Path) -> std::path::PathBuf {
+    let mut cur = p.to_path_buf();
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&cur) {
+            Ok(m) if m.file_type().is_symlink() => match std::fs::read_link(&cur) {
+                Ok(t) => {
+                    cur = match cur.parent() {
+                        Some(d) if t.is_relative() => d.join(t),
+                        _ => t,
+                    }
+                }
+                Err(_) => break,
+            },
+            _ => break,
+        }
+    }
+    cur
+}
+
+/// The input of this run that writing `p` would overwrite, if any.
+pub fn input_at(p: &Path) -> Option<std::path::PathBuf> {
+    let target = write_target(p);
+    // an absent file is no input; a present one is compared by its canonical path
+    let canon = std::fs::canonicalize(&target).ok()?;
+    INPUTS.lock().ok()?.iter().find(|i| **i == canon).cloned()
+}
+
+/// Refuses an output path that is an input of this run (checked before the work starts, and
+/// again by every write).
+pub fn refuse_input(p: &Path, flag: &str) -> Result<()> {
+    match input_at(p) {
+        Some(i) => Err(anyhow::anyhow!(
+            "{flag} {}: that is an input of this run ({}); camkin never writes over its inputs: choose another path",
+            p.display(),
+            i.display()
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Registers a temporary file or folder for the interrupt handler while it exists.
+#[derive(Debug)]
+pub(crate) struct Registered(std::path::PathBuf);
 
 impl Registered {
-    fn new(p: &Path) -> Self {
+    pub(crate) fn new(p: &Path) -> Self {
         if let Ok(mut list) = TEMPORARIES.lock() {
             list.push(p.to_path_buf());
         }
@@ -49,6 +115,9 @@ pub fn write_atomic(
     fill: impl FnOnce(&mut dyn Write) -> Result<()>,
 ) -> Result<()> {
     let resolved;
+    if let Some(p) = path {
+        refuse_input(p, "output")?;
+    }
     let path = match path {
         Some(p) => match std::fs::metadata(p) {
             Ok(m) if m.is_dir() => {
@@ -72,6 +141,11 @@ pub fn write_atomic(
             Ok(_) if std::fs::symlink_metadata(p).is_ok_and(|l| l.file_type().is_symlink()) => {
                 resolved = std::fs::canonicalize(p)
                     .with_context(|| format!("cannot resolve {}", p.display()))?;
+                Some(resolved.as_path())
+            }
+            // a dangling link: its target is written (created), the link kept
+            Err(_) if std::fs::symlink_metadata(p).is_ok_and(|l| l.file_type().is_symlink()) => {
+                resolved = write_target(p);
                 Some(resolved.as_path())
             }
             _ => Some(p),

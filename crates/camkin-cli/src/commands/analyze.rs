@@ -85,6 +85,7 @@ const BYTES_PER_ROW: f64 = 380.0;
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let loaded = load_mechanism(args.mechanism.as_ref())?;
+    args.table.check()?;
     let mech = &loaded.mech;
     let units = Units::new(mech, loaded.unit, args.units.angle_unit, args.units.per);
     let columns = analysis_columns(&units);

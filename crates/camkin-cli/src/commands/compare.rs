@@ -38,6 +38,8 @@ pub struct PaperArgs {
     pub format: Format,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 #[derive(Debug, clap::Args)]
@@ -61,6 +63,8 @@ pub struct CompareArgs {
     pub format: Format,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 /// Writes the study's CSV files and plots into `dir`.
@@ -316,6 +320,7 @@ fn json_summary(study: &Study) -> Value {
 pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let (nodes, step) = (&args.nodes.0, args.step.deg());
     study::check_bounds(nodes, step, 2, true, args.work.large).map_err(Failure::Input)?;
+    let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
     let mut md =
         String::from("# The paper's study: contact method against interpolated displacement\n\n");
     let mut csv = Vec::new();
@@ -328,16 +333,17 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
         let study = study::run(&mech, nodes, step, title).map_err(Failure::Internal)?;
         let zoom = if revised { Some((5.0, 10.0)) } else { None };
         let u = Units::plain(&mech, LengthUnit::Cm);
-        write_files(&study, &args.out.join(key), title, &u, zoom).map_err(Failure::output)?;
+        write_files(&study, &od.path().join(key), title, &u, zoom).map_err(Failure::output)?;
         md += &table(&study, title, &u);
         md.push('\n');
         csv.extend(summary_rows(&study, key));
         js.insert(key.to_string(), json_summary(&study));
     }
-    write_atomic(Some(&args.out.join("summary.md")), |w| {
+    write_atomic(Some(&od.path().join("summary.md")), |w| {
         Ok(w.write_all(md.as_bytes())?)
     })
     .map_err(Failure::output)?;
+    od.commit().map_err(Failure::output)?;
     print_summary(args.format, &md, &csv, &Value::Object(js))?;
     eprintln!("camkin: wrote {}", args.out.display());
     Ok(())
@@ -364,9 +370,14 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
         1,
         args.work.large,
     )?;
+    let od = args
+        .out
+        .as_ref()
+        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
+        .transpose()?;
     let study = study::run(&mech, nodes, step, &title).map_err(Failure::Input)?;
-    if let Some(dir) = &args.out {
-        write_files(&study, dir, &title, &u, zoom).map_err(Failure::output)?;
+    if let Some(od) = &od {
+        write_files(&study, od.path(), &title, &u, zoom).map_err(Failure::output)?;
     }
     let md = table(&study, &title, &u);
     let csv = summary_rows(&study, &title);
@@ -377,11 +388,12 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
             json!(args.mechanism.display().to_string()),
         );
     }
-    if let Some(dir) = &args.out {
-        write_atomic(Some(&dir.join("summary.md")), |w| {
+    if let Some(od) = od {
+        write_atomic(Some(&od.path().join("summary.md")), |w| {
             Ok(w.write_all(md.as_bytes())?)
         })
         .map_err(Failure::output)?;
+        od.commit().map_err(Failure::output)?;
     }
     print_summary(args.format, &md, &csv, &js)
 }

@@ -31,6 +31,7 @@ pub struct ContactsArgs {
 
 pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
     let loaded = load_mechanism(args.mechanism.as_ref())?;
+    args.table.check()?;
     let mech = &loaded.mech;
     let angles = match (&args.at, args.angles) {
         (Some(list), _) => list.0.clone(),

@@ -40,6 +40,8 @@ pub struct DeviationArgs {
     pub out: Option<PathBuf>,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 fn fail(m: String) -> Failure {
@@ -60,6 +62,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
     let unit = design.length_unit;
     let l = unit.name();
     let mech = &design.mechanism;
+    crate::output::note_input(&args.measured);
     let (pts, _) = camkin::curve::read_points_file(&args.measured)
         .map_err(|e| fail(format!("{}: {e}", args.measured.display())))?;
     let size = mech.size();
@@ -130,6 +133,11 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
         args.work.large,
         ", or use a coarser --step",
     )?;
+    let od = args
+        .out
+        .as_ref()
+        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
+        .transpose()?;
     let thetas: Vec<f64> = (0..m).map(|k| (k as f64 * step).to_radians()).collect();
     let sweep = |mm: &Mechanism| -> Result<Vec<[f64; 4]>, Failure> {
         let t = mm
@@ -199,9 +207,8 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
         );
     }
     print!("{report}");
-    if let Some(dir) = &args.out {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| fail(format!("cannot create {}: {e}", dir.display())))?;
+    if let Some(od) = od {
+        let dir = od.path().to_path_buf();
         let cols: Vec<String> = vec![
             "polar_angle_deg".into(),
             format!("measured_radius_{l}"),
@@ -224,6 +231,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
             write_cell_table(w, TableFormat::Csv, &cols, motion_rows)
         })
         .map_err(Failure::output)?;
+        let dir = od.commit().map_err(Failure::output)?;
         eprintln!("camkin: wrote {}", dir.display());
     }
     Ok(())

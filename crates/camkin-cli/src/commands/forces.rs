@@ -58,6 +58,8 @@ pub struct ForcesArgs {
     /// Directory for forces.csv, force_speed.csv and their plots.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 /// The flag that sets a field of the request.
@@ -81,17 +83,15 @@ fn input_error(e: ReportError) -> Failure {
 }
 
 pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
-    // a folder is written: a file in its place is refused before any work
-    if let Some(dir) = &args.out {
-        if dir.exists() && !dir.is_dir() {
-            return Err(Failure::Input(anyhow!(
-                "--out {}: a file is in the way (the folder for forces.csv, force_speed.csv and their plots)",
-                dir.display()
-            )));
-        }
-    }
     let (mech, params, unit) =
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    // the folder is checked before any work (a file in its place, an input in it, someone
+    // else's files)
+    let od = args
+        .out
+        .as_ref()
+        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
+        .transpose()?;
     let req = ForceRequest {
         step_deg: args.step.deg(),
         margin: args.margin,
@@ -115,8 +115,9 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         "{}",
         forces_text::summary(&report, &args.mechanism.display().to_string(), lu)
     );
-    if let Some(dir) = &args.out {
-        write_files(dir, &report).map_err(Failure::output)?;
+    if let Some(od) = od {
+        write_files(od.path(), &report).map_err(Failure::output)?;
+        let dir = od.commit().map_err(Failure::output)?;
         eprintln!("camkin: wrote {}", dir.display());
     }
     match forces_text::failures(&report) {
@@ -126,7 +127,6 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
 }
 
 fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
-    std::fs::create_dir_all(dir).map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
     let (columns, rows) = r.table();
     write_atomic(Some(&dir.join("forces.csv")), |w| {
         write_cell_table(w, TableFormat::Csv, &columns, rows)

@@ -7,7 +7,7 @@ use crate::draw::svaj;
 use crate::mechfile;
 use crate::output::{write_atomic, write_cells};
 use crate::{load_mechanism, Failure, Loaded};
-use anyhow::{anyhow, Context};
+use anyhow::anyhow;
 use camkin::gears::GearPair;
 use camkin::human::human;
 use camkin::spec::LengthUnit;
@@ -39,6 +39,8 @@ pub struct MeshArgs {
     pub plot: Option<PathBuf>,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 /// The built-in pair.
@@ -70,6 +72,12 @@ fn micro_length(unit: LengthUnit) -> (&'static str, f64) {
 
 pub fn run(args: &MeshArgs) -> Result<(), Failure> {
     let loaded = load(args.mechanism.as_ref())?;
+    args.table.check()?;
+    let od = args
+        .plot
+        .as_ref()
+        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
+        .transpose()?;
     let mech = &loaded.mech;
     let pair = GearPair::new(mech).map_err(|e| {
         Failure::Input(anyhow!(
@@ -117,12 +125,11 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
         }
     })?;
     summary(&pair, &loaded, &rows);
-    if let Some(dir) = &args.plot {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("cannot create {}", dir.display()))
-            .map_err(Failure::Input)?;
-        let written = plot(&pair, &loaded, &rows, dir).map_err(Failure::output)?;
-        for p in written {
+    if let Some(od) = od {
+        let written = plot(&pair, &loaded, &rows, od.path()).map_err(Failure::output)?;
+        let shown: Vec<_> = written.iter().map(|p| od.shown(p)).collect();
+        od.commit().map_err(Failure::output)?;
+        for p in shown {
             eprintln!("camkin: wrote {}", p.display());
         }
     }

@@ -5,7 +5,7 @@ use crate::draw::chart::{self, Chart, Series};
 use crate::draw::mechanism::{self as scene, Shape};
 use crate::draw::svaj;
 use crate::{load_mechanism, Failure, Loaded};
-use anyhow::{anyhow, Context, Result};
+use anyhow::{anyhow, Result};
 use camkin::cam::{FollowerState, Mechanism};
 use camkin::table::{Per, Units};
 use camkin::Point2;
@@ -38,6 +38,8 @@ pub struct PlotArgs {
     pub units: crate::args::MotionUnitArgs,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 fn rgb(c: scene::Rgb) -> RGBColor {
@@ -401,9 +403,8 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         args.work.large,
         ", or use a coarser --step",
     )?;
-    std::fs::create_dir_all(&args.out)
-        .with_context(|| format!("cannot create {}", args.out.display()))
-        .map_err(Failure::Input)?;
+    let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
+    let dir = od.path().to_path_buf();
     let n = (360.0 / step).round() as usize;
     let grid: Vec<f64> = (0..n).map(|k| k as f64 * step).collect();
     let thetas: Vec<f64> = grid
@@ -419,8 +420,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     if failed == states.len() {
         return Err(Failure::Input(anyhow!("the follower cannot be analysed at any cam angle (try `camkin analyze` for the reasons)")));
     }
-    let mut written =
-        kinematics(&loaded, &units, &grid, &states, &args.out).map_err(Failure::output)?;
+    let mut written = kinematics(&loaded, &units, &grid, &states, &dir).map_err(Failure::output)?;
 
     // one box for every drawing and frame, so the scale does not jump
     let frame_angles: Vec<f64> = (0..args.frames)
@@ -461,8 +461,8 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         } else {
             format!("cam angle {}° ≡ {reduced}°", camkin::human::human(*a))
         };
-        let svg = args.out.join(format!("{name}.svg"));
-        let png = args.out.join(format!("{name}.png"));
+        let svg = dir.join(format!("{name}.svg"));
+        let png = dir.join(format!("{name}.png"));
         chart::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
             .map_err(Failure::output)?;
         chart::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
@@ -479,7 +479,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         .map(|a| format!("cam angle {a:.1}° (one revolution in 6 s)"))
         .collect();
     let svg = scene::animated_svg(&frames, &titles, bbox, 6.0);
-    let anim = args.out.join("animation.svg");
+    let anim = dir.join("animation.svg");
     crate::output::write_atomic(Some(&anim), |w| Ok(w.write_all(svg.as_bytes())?))
         .map_err(Failure::output)?;
     written.push(anim);
@@ -488,6 +488,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             "camkin: {failed} of {n} angles could not be analysed; their points are left out"
         );
     }
+    od.commit().map_err(Failure::output)?;
     eprintln!(
         "camkin: wrote {} files to {}",
         written.len(),

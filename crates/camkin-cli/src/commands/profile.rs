@@ -27,6 +27,8 @@ pub struct ProfileArgs {
     pub tolerance: Option<f64>,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
@@ -49,10 +51,11 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
         args.work.large,
         ", or use a coarser --step",
     )?;
+    let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
     let made = manufacture::write(
         &loaded.mech,
         loaded.unit,
-        &args.out,
+        od.path(),
         &Options {
             step_deg: args.step.deg(),
             tool_radius: args.tool_radius,
@@ -63,6 +66,7 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
         Error::Input(e) => Failure::Input(e),
         Error::Output(e) => Failure::output(e),
     })?;
+    od.commit().map_err(Failure::output)?;
     print!("{}", made.report);
     eprintln!(
         "camkin: wrote {} files to {}",

@@ -55,6 +55,12 @@ fn open(path: Option<&PathBuf>) -> Result<Session, Failure> {
                     }
                 })
                 .unwrap_or_else(|| PathBuf::from("."));
+            // its points files are inputs too
+            if let Ok(spec) = mechfile::parse_spec(&text, "") {
+                for f in spec.files() {
+                    crate::output::note_input(&folder.join(f));
+                }
+            }
             Ok(Session {
                 text,
                 source: Source {
@@ -118,6 +124,7 @@ pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
 
 pub fn run_report(args: &ReportArgs) -> Result<(), Failure> {
     let session = open(args.mechanism.as_ref())?;
+    crate::output::refuse_input(&args.output, "-o").map_err(Failure::Input)?;
     let limit = crate::studio::pressure_limit(Some(args.pressure_limit)).map_err(|_| {
         Failure::Input(anyhow!(
             "--pressure-limit: {} must be in (0, 90) degrees",

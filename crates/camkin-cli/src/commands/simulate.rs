@@ -45,6 +45,8 @@ pub struct SimulateArgs {
     pub format: TableFormat,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 fn dyn_err(e: DynamicsError) -> Failure {
@@ -113,6 +115,11 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         args.work.large,
         ", or simulate fewer --revolutions",
     )?;
+    let od = args
+        .out
+        .as_ref()
+        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
+        .transpose()?;
     let w = mech.cam().speed();
     let h = step.to_radians() / w / args.substeps as f64;
     // the damping and the spring must be resolved by the time step (the library refuses a longer
@@ -183,11 +190,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             }
         }
     };
-    match &args.out {
+    match od {
         None => write_atomic(None, series).map_err(Failure::Internal)?,
-        Some(dir) => {
-            std::fs::create_dir_all(dir)
-                .map_err(|e| Failure::Input(anyhow!("cannot create {}: {e}", dir.display())))?;
+        Some(od) => {
+            let dir = &od.path().to_path_buf();
             let ext = if args.format == TableFormat::Json {
                 "json"
             } else {
@@ -200,6 +206,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             })
             .map_err(Failure::output)?;
             plot(&samples, &rows, dir, &units, k_len).map_err(Failure::output)?;
+            od.commit().map_err(Failure::output)?;
         }
     }
     report(&events, unit, mech.is_conjugate());

@@ -31,6 +31,8 @@ pub struct SynthArgs {
     pub tool_radius: Option<f64>,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
+    #[command(flatten)]
+    pub force: crate::out_dir::ForceArg,
 }
 
 /// Bytes written per profile point, about (CSV, DXF, SVG and the four SVAJ SVGs; measured:
@@ -90,8 +92,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
             args.mechanism.display()
         )));
     };
-    std::fs::create_dir_all(&args.out)
-        .map_err(|e| Failure::Input(anyhow!("cannot create {}: {e}", args.out.display())))?;
+    let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
     let n = (360.0 / step).round() as usize;
     let thetas: Vec<f64> = (0..n).map(|k| (k as f64 * step).to_radians()).collect();
     let pts: Vec<(f64, f64)> = thetas
@@ -99,11 +100,11 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         .map(|&t| profile.position(t))
         .map(|p| (p.x, p.y))
         .collect();
-    let out = |name: &str| args.out.join(name);
+    let out = |name: &str| od.path().join(name);
     let made = crate::manufacture::write(
         mech,
         loaded.unit,
-        &args.out,
+        od.path(),
         &crate::manufacture::Options {
             step_deg: step,
             tool_radius: args.tool_radius,
@@ -185,6 +186,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         Ok(w.write_all(format!("{report}{}", made.report).as_bytes())?)
     })
     .map_err(Failure::output)?;
+    od.commit().map_err(Failure::output)?;
     print!("{report}{}", made.report);
     eprintln!("camkin: wrote {}", args.out.display());
     let failures = design.failures();
@@ -194,7 +196,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         Err(Failure::Check(anyhow!(
             "design checks failed: {} (the files are written; see {})",
             failures.join(", "),
-            out("checks.txt").display()
+            args.out.join("checks.txt").display()
         )))
     }
 }

@@ -174,7 +174,7 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
         .arg("forces")
         .arg(&slow)
         .args(["--target-rpm", "1000", "--face-width", "10", "--out"])
-        .arg(dir.path())
+        .arg(dir.path().join("out"))
         .assert()
         .success()
         .get_output()
@@ -183,7 +183,7 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
     let report = String::from_utf8(out).unwrap();
     let (m, e, k, f0) = (0.3, 0.01, 2000.0, 20.0);
     let w = 1000.0 * std::f64::consts::TAU / 60.0;
-    let (h, rows) = forces_csv(dir.path());
+    let (h, rows) = forces_csv(&dir.path().join("out"));
     let (fc, tq) = (col(&h, "contact_force_N"), col(&h, "camshaft_torque_N_m"));
     assert_eq!(rows.len(), 720);
     for r in &rows {
@@ -210,7 +210,7 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
         "camshaft_torque.svg",
         "force_speed.png",
     ] {
-        assert!(dir.path().join(f).exists(), "{f}");
+        assert!(dir.path().join("out").join(f).exists(), "{f}");
     }
     // at the file's 1380 rpm the follower leaves the cam: exit 3, with the spring that would do
     camkin()
@@ -627,6 +627,6 @@ fn forces_refuses_implausible_materials_widths_and_outputs_up_front() {
         .arg(&file)
         .assert()
         .code(2)
-        .stderr(predicate::str::contains("a file is in the way"));
+        .stderr(predicate::str::contains("a file, not a folder"));
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep me");
 }

@@ -111,8 +111,10 @@ fn plot_defaults_to_the_paper_cam() {
         .assert()
         .success()
         .stderr(predicate::str::contains("paper"));
-    // four default drawings, kinematics (2), the SVAJ page (2), animation
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 13);
+    // four default drawings, kinematics (2), the SVAJ page (2), animation, and the list of
+    // the files camkin wrote there
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 14);
+    assert!(dir.path().join(".camkin-results").exists());
 }
 
 #[test]

@@ -38,6 +38,18 @@ impl Cmd {
         self.0.env(k, v);
         self
     }
+    /// Runs the command in `dir`.
+    pub fn current_dir(&mut self, dir: impl AsRef<std::path::Path>) -> &mut Self {
+        self.0.current_dir(dir);
+        self
+    }
+    /// Runs the command to its end, stdin closed, and returns its output unchecked.
+    pub fn output_of(&mut self) -> Output {
+        self.0
+            .stdin(std::process::Stdio::null())
+            .output()
+            .expect("camkin runs")
+    }
     /// Sends standard output to `file` instead of capturing it.
     pub fn stdout_to(&mut self, file: std::fs::File) -> &mut Self {
         self.0.stdout(file);

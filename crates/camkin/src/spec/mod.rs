@@ -78,6 +78,18 @@ pub struct MechanismSpec {
     pub dynamics: Option<DynamicsSpec>,
 }
 
+impl MechanismSpec {
+    /// The points files the spec reads (`kind = "points-file"`), as written: relative to
+    /// [`BuildOptions::base_dir`] unless absolute.
+    pub fn files(&self) -> Vec<&str> {
+        let follower = [&self.follower.profile, &self.follower.conjugate];
+        std::iter::once(&self.cam.profile)
+            .chain(follower.into_iter().flatten().map(|b| b.as_ref()))
+            .filter_map(|p| p.path.as_deref())
+            .collect()
+    }
+}
+
 /// `[cam]`: the cam's motion and profile.
 #[derive(Debug, Clone, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]

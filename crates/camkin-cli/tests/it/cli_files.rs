@@ -1,0 +1,290 @@
+//! Issue 44: no run loses a file. An output that is an input of the run (the mechanism file, a
+//! points file, a measured profile, through a link or not) is refused before any work, for
+//! every command that writes; a dangling link is written through, not replaced; a results
+//! folder changes as a whole or not at all (someone else's files refused without `--force`,
+//! an interrupted run leaves the old folder as it was and no staging folder).
+
+use crate::common::predicate;
+use crate::common::*;
+use std::path::{Path, PathBuf};
+
+/// A folder holding copies of the examples a command reads.
+fn workspace() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    for f in [
+        "paper.toml",
+        "motion-roller.toml",
+        "eccentric-flat-dynamics.toml",
+        "eccentric-roller.toml",
+        "measured-eccentric.csv",
+        "gear-pair-20-42.toml",
+    ] {
+        std::fs::copy(examples().join(f), dir.path().join(f)).unwrap();
+    }
+    // a mechanism reading a points file
+    std::fs::write(
+        dir.path().join("p.csv"),
+        (0..24)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / 24.0;
+                format!("{},{}\n", 3.0 * t.cos() + 0.5, 3.0 * t.sin())
+            })
+            .collect::<String>(),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("points.toml"),
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"points-file\"\npath = \"p.csv\"\n[follower]\nkind = \"translating-flat\"\n",
+    )
+    .unwrap();
+    dir
+}
+
+fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut v: Vec<(PathBuf, Vec<u8>)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_file())
+        .map(|p| (p.clone(), std::fs::read(&p).unwrap()))
+        .collect();
+    v.sort();
+    v
+}
+
+/// Every command writing a table or a page, `-o` onto each of its inputs (directly or through a
+/// link): exit 2 before any work, every file as it was.
+#[test]
+fn an_output_onto_an_input_is_refused_for_every_command() {
+    let ws = workspace();
+    let d = ws.path();
+    std::os::unix::fs::symlink(d.join("paper.toml"), d.join("link.csv")).unwrap();
+    let before = snapshot(d);
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["analyze", "paper.toml", "-o", "paper.toml"],
+            "paper.toml",
+        ),
+        (vec!["analyze", "paper.toml", "-o", "link.csv"], "link.csv"),
+        (vec!["analyze", "points.toml", "-o", "p.csv"], "p.csv"),
+        (
+            vec!["contacts", "paper.toml", "-o", "paper.toml"],
+            "paper.toml",
+        ),
+        (vec!["contacts", "points.toml", "-o", "./p.csv"], "p.csv"),
+        (
+            vec!["mesh", "gear-pair-20-42.toml", "-o", "gear-pair-20-42.toml"],
+            "gear-pair",
+        ),
+        (
+            vec!["report", "paper.toml", "-o", "paper.toml"],
+            "paper.toml",
+        ),
+        (vec!["report", "points.toml", "-o", "p.csv"], "p.csv"),
+    ];
+    for (args, named) in cases {
+        camkin()
+            .current_dir(d)
+            .args(&args)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("an input of this run"))
+            .stderr(predicate::str::contains(named));
+        assert_eq!(snapshot(d), before, "{args:?} changed a file");
+    }
+}
+
+/// Every command writing a folder, into the folder that holds its input: refused (the swap
+/// would remove the input); into a folder with someone else's file: refused naming it, and with
+/// `--force` replaced; twice into its own folder: the second run replaces the first whole.
+#[test]
+fn results_folders_change_whole_and_never_take_an_input_or_a_strangers_file() {
+    let ws = workspace();
+    let d = ws.path();
+    let commands: Vec<Vec<&str>> = vec![
+        vec![
+            "plot",
+            "paper.toml",
+            "--step",
+            "10",
+            "--frames",
+            "2",
+            "--out",
+        ],
+        vec!["synth", "motion-roller.toml", "--step", "2", "--out"],
+        vec!["profile", "paper.toml", "--step", "2", "--out"],
+        vec![
+            "simulate",
+            "eccentric-flat-dynamics.toml",
+            "--revolutions",
+            "1",
+            "--out",
+        ],
+        vec![
+            "forces",
+            "eccentric-flat-dynamics.toml",
+            "--step",
+            "2",
+            "--out",
+        ],
+        vec![
+            "deviation",
+            "measured-eccentric.csv",
+            "--against",
+            "eccentric-roller.toml",
+            "--out",
+        ],
+        vec![
+            "compare",
+            "paper.toml",
+            "--nodes",
+            "100",
+            "--step",
+            "2",
+            "--out",
+        ],
+        vec![
+            "mesh",
+            "gear-pair-20-42.toml",
+            "--angles",
+            "0:18:2",
+            "-o",
+            "/dev/null",
+            "--plot",
+        ],
+    ];
+    let before = snapshot(d);
+    for (k, c) in commands.iter().enumerate() {
+        // the input's own folder
+        camkin()
+            .current_dir(d)
+            .args(c)
+            .arg(".")
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("holds an input of this run"));
+        assert_eq!(snapshot(d), before, "{c:?}");
+        // a folder with someone else's file
+        let out = d.join(format!("out{k}"));
+        std::fs::create_dir(&out).unwrap();
+        std::fs::write(out.join("notes.txt"), "mine").unwrap();
+        camkin()
+            .current_dir(d)
+            .args(c)
+            .arg(&out)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("notes.txt"))
+            .stderr(predicate::str::contains("--force"));
+        assert_eq!(
+            std::fs::read_to_string(out.join("notes.txt")).unwrap(),
+            "mine"
+        );
+        // --force replaces it whole; its own folder is replaced without it, stale files gone
+        let ok = |extra: &[&str]| {
+            let o = camkin()
+                .current_dir(d)
+                .args(c)
+                .arg(&out)
+                .args(extra)
+                .output_of();
+            assert!(
+                matches!(o.status.code(), Some(0) | Some(3)),
+                "{c:?}: {}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+        };
+        ok(&["--force"]);
+        assert!(!out.join("notes.txt").exists(), "{c:?}");
+        assert!(out.join(".camkin-results").exists(), "{c:?}");
+        std::fs::write(out.join("stale.csv"), "old").unwrap();
+        let listed = std::fs::read_to_string(out.join(".camkin-results")).unwrap();
+        std::fs::write(out.join(".camkin-results"), format!("{listed}stale.csv\n")).unwrap();
+        ok(&[]);
+        assert!(
+            !out.join("stale.csv").exists(),
+            "{c:?}: a stale result survived"
+        );
+        // no staging folder left beside it
+        let strays: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.contains(".camkin-"))
+            .collect();
+        assert!(strays.is_empty(), "{c:?}: {strays:?}");
+    }
+}
+
+/// `-o` onto a dangling link writes the file it points to and keeps the link.
+#[test]
+fn a_dangling_link_is_written_through() {
+    let ws = workspace();
+    let d = ws.path();
+    std::os::unix::fs::symlink("made.csv", d.join("link.csv")).unwrap();
+    camkin()
+        .current_dir(d)
+        .args(["analyze", "paper.toml", "--at", "0", "-o", "link.csv"])
+        .assert()
+        .success();
+    assert!(std::fs::symlink_metadata(d.join("link.csv"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::read_to_string(d.join("made.csv"))
+        .unwrap()
+        .starts_with("angle_deg"));
+}
+
+/// A run interrupted while it computes (Ctrl-C) leaves its old results folder as it was and no
+/// staging folder.
+#[test]
+fn an_interrupted_run_leaves_the_old_folder() {
+    let ws = workspace();
+    let d = ws.path();
+    let out = d.join("plots");
+    camkin()
+        .current_dir(d)
+        .args([
+            "plot",
+            "paper.toml",
+            "--step",
+            "10",
+            "--frames",
+            "2",
+            "--out",
+        ])
+        .arg(&out)
+        .assert()
+        .success();
+    let before = snapshot(&out);
+    // a slow run into the same folder, interrupted
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_camkin"))
+        .current_dir(d)
+        .args([
+            "plot",
+            "paper.toml",
+            "--step",
+            "0.01",
+            "--frames",
+            "3600",
+            "--large",
+            "--out",
+        ])
+        .arg(&out)
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(700));
+    std::process::Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    let status = child.wait().unwrap();
+    assert!(!status.success());
+    assert_eq!(snapshot(&out), before);
+    let strays: Vec<String> = std::fs::read_dir(d)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".camkin-"))
+        .collect();
+    assert!(strays.is_empty(), "{strays:?}");
+}
