@@ -2,6 +2,29 @@
 //! output. `main.rs` only parses the arguments and maps failures to exit codes (0 success,
 //! 1 internal failure, 2 bad input, 3 a design check failed).
 
+/// `eprintln!` that cannot panic: a message to stderr, dropped when stderr cannot take it (a
+/// closed pipe, `/dev/full`) — the run still ends with its own exit code.
+#[macro_export]
+macro_rules! say {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($t)*);
+    }};
+}
+
+/// `print!` that cannot panic: the text to stdout, or a [`Failure::Internal`] saying why it could
+/// not be written (a closed pipe ends the run quietly, see `main`).
+#[macro_export]
+macro_rules! out {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let mut o = std::io::stdout().lock();
+        write!(o, $($t)*)
+            .and_then(|_| o.flush())
+            .map_err(|e| $crate::Failure::Internal(anyhow::Error::new(e).context("writing to standard output")))
+    }};
+}
+
 pub mod args;
 pub mod commands;
 pub mod draw;
@@ -95,7 +118,7 @@ pub fn load_mechanism(path: Option<&PathBuf>) -> Result<Loaded, Failure> {
             })
         }
         None => {
-            eprintln!(
+            crate::say!(
                 "camkin: no mechanism file given; using the paper's cam (examples/paper.toml, lengths in cm)"
             );
             Ok(Loaded {

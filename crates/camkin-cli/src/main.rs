@@ -151,15 +151,15 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::Input(e) | Failure::Internal(e)) if broken_pipe(&e) => ExitCode::SUCCESS,
         Err(Failure::Input(e)) => {
-            eprintln!("error: {e:#}");
+            camkin_cli::say!("error: {e:#}");
             ExitCode::from(2)
         }
         Err(Failure::Internal(e)) => {
-            eprintln!("internal error: {e:#}");
+            camkin_cli::say!("internal error: {e:#}");
             ExitCode::from(1)
         }
         Err(Failure::Check(e)) => {
-            eprintln!("camkin: {e:#}");
+            camkin_cli::say!("camkin: {e:#}");
             ExitCode::from(3)
         }
     }

@@ -155,7 +155,7 @@ fn build_spec(
     }
     let (built, warnings) = build_placed(spec, text, name, &options)?;
     for w in warnings {
-        eprintln!("camkin: warning: {}", w.message);
+        crate::say!("camkin: warning: {}", w.message);
     }
     Ok(built)
 }

@@ -53,7 +53,7 @@ fn report_degenerate(
     let p = mech.cam().profile();
     for &(a, b) in stretches {
         let (pa, pb) = (p.position(a), p.position(b));
-        eprintln!(
+        crate::say!(
             "camkin: warning: the cam profile from u = {a:.4} ({:.4}, {:.4}) {unit} to u = {b:.4} ({:.4}, {:.4}) {unit} is {what}: the follower cannot follow it, the contact jumps across and the acceleration is impulsive there",
             pa.x, pa.y, pb.x, pb.y
         );
@@ -74,7 +74,7 @@ fn report_degenerate(
         } else {
             String::new()
         };
-        eprintln!("camkin: warning: the contact jumps between cam angles {}{more} (rows marked `jump` in the found column)", at.join(", "));
+        crate::say!("camkin: warning: the contact jumps between cam angles {}{more} (rows marked `jump` in the found column)", at.join(", "));
     }
 }
 
@@ -107,7 +107,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let mut rows = AnalysisSweep::new(mech, &angles, contiguous, CHUNK);
     // lift is measured from the lowest position over the revolution
     if let Err(e) = rows.travel() {
-        eprintln!("camkin: warning: no lift column: the lowest position over the revolution could not be found ({e})");
+        crate::say!("camkin: warning: no lift column: the lowest position over the revolution could not be found ({e})");
     }
     let pb = if angles.len() > 5 * CHUNK {
         indicatif::ProgressBar::new(angles.len() as u64)
@@ -141,7 +141,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     );
     let failed = rows.failed();
     if failed > 0 {
-        eprintln!(
+        crate::say!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",
             angles.len()
         );

@@ -323,40 +323,40 @@ pub fn run(args: &BenchArgs) -> Result<(), Failure> {
         out["instructions"] = Value::Object(i.clone());
     }
     if args.json {
-        println!("{out}");
+        crate::out!("{out}\n")?;
     } else {
-        println!(
-            "camkin bench — {} ({}), median of {r} runs",
+        crate::out!(
+            "camkin bench — {} ({}), median of {r} runs\n",
             out["mechanism"].as_str().unwrap_or(""),
             mech.follower().kind_name()
-        );
-        println!(
-            "  single cold query (search + velocity + acceleration) {:>12.1} ns",
+        )?;
+        crate::out!(
+            "  single cold query (search + velocity + acceleration) {:>12.1} ns\n",
             single * 1e9
-        );
-        println!(
-            "  warm sweep, one thread, per angle                   {:>12.1} ns",
+        )?;
+        crate::out!(
+            "  warm sweep, one thread, per angle                   {:>12.1} ns\n",
             sweep * 1e9
-        );
-        println!("  warm sweep, {threads} threads, per angle                  {:>12.1} ns  (speed-up {:.2}×)", parallel * 1e9, sweep / parallel);
+        )?;
+        crate::out!("  warm sweep, {threads} threads, per angle                  {:>12.1} ns  (speed-up {:.2}×)\n", parallel * 1e9, sweep / parallel)?;
         for nodes in NODES {
             let k = nodes.to_string();
-            println!(
-                "  interpolation baseline, N = {nodes:>5}: {:>12.0} ns per angle, {:>8.0}× the single query, max relative error {:.2e}",
+            crate::out!(
+                "  interpolation baseline, N = {nodes:>5}: {:>12.0} ns per angle, {:>8.0}× the single query, max relative error {:.2e}\n",
                 base_ns[&k].as_f64().unwrap_or(f64::NAN),
                 ratio[&k].as_f64().unwrap_or(f64::NAN),
                 base_err[&k].as_f64().unwrap_or(f64::NAN)
-            );
+            )?;
         }
-        println!(
-            "  independent check (support function, differences in θ) at {} angles: position {:.1e} of the cam's size, velocity {:.1e}, acceleration {:.1e} of their peaks",
+        crate::out!(
+            "  independent check (support function, differences in θ) at {} angles: position {:.1e} of the cam's size, velocity {:.1e}, acceleration {:.1e} of their peaks\n",
             check.angles, check.position, check.velocity, check.acceleration
-        );
+        )?;
         if let Some(i) = &instructions {
-            println!(
-                "  instructions (callgrind): cold query {}, warm step {}, warm step with every output {}",
+            crate::out!(
+                "  instructions (callgrind): cold query {}, warm step {}, warm step with every output {}\n",
                 i["cold_query"], i["warm_step"], i["warm_step_full_state"]
-            );
+            )?;
         }
     }
     Ok(())

@@ -345,7 +345,7 @@ pub fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     .map_err(Failure::output)?;
     od.commit().map_err(Failure::output)?;
     print_summary(args.format, &md, &csv, &Value::Object(js))?;
-    eprintln!("camkin: wrote {}", args.out.display());
+    crate::say!("camkin: wrote {}", args.out.display());
     Ok(())
 }
 

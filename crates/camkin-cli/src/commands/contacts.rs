@@ -93,14 +93,14 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
         .count();
     let plural = |n: usize| if n == 1 { "" } else { "s" };
     let (found, n) = (rows.len() - failed, angles.len());
-    eprintln!(
+    crate::say!(
         "camkin: {found} contact{} at {n} cam angle{}; {several} angle{} with more than one contact, at most {most} at once",
         plural(found),
         plural(n),
         plural(several),
     );
     if failed > 0 {
-        eprintln!(
+        crate::say!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",
             angles.len()
         );

@@ -206,7 +206,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
             u.motion_symbol(j)
         );
     }
-    print!("{report}");
+    crate::out!("{report}")?;
     if let Some(od) = od {
         let dir = od.path().to_path_buf();
         let cols: Vec<String> = vec![
@@ -232,7 +232,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
         })
         .map_err(Failure::output)?;
         let dir = od.commit().map_err(Failure::output)?;
-        eprintln!("camkin: wrote {}", dir.display());
+        crate::say!("camkin: wrote {}", dir.display());
     }
     Ok(())
 }

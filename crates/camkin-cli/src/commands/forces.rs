@@ -111,14 +111,14 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         name: unit.name(),
         metres: unit.metres(),
     };
-    print!(
+    crate::out!(
         "{}",
         forces_text::summary(&report, &args.mechanism.display().to_string(), lu)
-    );
+    )?;
     if let Some(od) = od {
         write_files(od.path(), &report).map_err(Failure::output)?;
         let dir = od.commit().map_err(Failure::output)?;
-        eprintln!("camkin: wrote {}", dir.display());
+        crate::say!("camkin: wrote {}", dir.display());
     }
     match forces_text::failures(&report) {
         None => Ok(()),

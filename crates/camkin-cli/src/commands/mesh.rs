@@ -50,7 +50,7 @@ fn load(path: Option<&PathBuf>) -> Result<Loaded, Failure> {
     match path {
         Some(_) => load_mechanism(path),
         None => {
-            eprintln!("camkin: no mechanism file given; using the built-in 20/42 gear pair (examples/gear-pair-20-42.toml, lengths in mm)");
+            crate::say!("camkin: no mechanism file given; using the built-in 20/42 gear pair (examples/gear-pair-20-42.toml, lengths in mm)");
             let mech = mechfile::parse(GEAR_PAIR_TOML, "gear-pair-20-42.toml", Path::new("."))
                 .map_err(|e| Failure::Internal(anyhow!(e)))?;
             Ok(Loaded {
@@ -130,12 +130,12 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
         let shown: Vec<_> = written.iter().map(|p| od.shown(p)).collect();
         od.commit().map_err(Failure::output)?;
         for p in shown {
-            eprintln!("camkin: wrote {}", p.display());
+            crate::say!("camkin: wrote {}", p.display());
         }
     }
     let failed = rows.iter().filter(|r| r.error.is_some()).count();
     if failed > 0 {
-        eprintln!(
+        crate::say!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",
             rows.len()
         );
@@ -147,7 +147,7 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
 fn summary(pair: &GearPair, loaded: &Loaded, rows: &[MeshRow]) {
     let l = loaded.unit.name();
     let (z1, z2) = (pair.driver().teeth(), pair.driven().teeth());
-    eprintln!(
+    crate::say!(
         "camkin: {z1}/{z2} teeth, centre distance {} {l}, operating pressure angle {}°, contact ratio {}, base pitch {} {l}",
         human((pair.centre_distance() * 1e6).round() / 1e6),
         human((pair.operating_pressure_angle().to_degrees() * 1e4).round() / 1e4),
@@ -157,7 +157,7 @@ fn summary(pair: &GearPair, loaded: &Loaded, rows: &[MeshRow]) {
     let eps = pair.contact_ratio();
     if eps < 1.0 {
         let one = camkin::gears::distance_for_contact_ratio(pair.driver(), pair.driven(), 1.0);
-        eprintln!(
+        crate::say!(
             "camkin: warning: contact ratio {} is below 1: between handovers no tooth pair is in contact on the involutes, and the next tooth strikes{}",
             human((eps * 1e4).round() / 1e4),
             one.map_or(String::new(), |d| format!(
@@ -180,7 +180,7 @@ fn summary(pair: &GearPair, loaded: &Loaded, rows: &[MeshRow]) {
             .filter(|r| r.found == Some(camkin::table::FoundBy::Jump))
             .count();
         let most = rows.iter().filter_map(|r| r.pairs_in_contact).max();
-        eprintln!(
+        crate::say!(
             "camkin: over these angles the transmission error along the line of action is {} to {} {mu} (peak to peak {} {mu}); {handovers} handover{} to another tooth pair (rows marked jump); at most {} tooth pair{} in contact",
             human((lo * k * 1e4).round() / 1e4),
             human((hi * k * 1e4).round() / 1e4),

@@ -484,12 +484,12 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         .map_err(Failure::output)?;
     written.push(anim);
     if failed > 0 {
-        eprintln!(
+        crate::say!(
             "camkin: {failed} of {n} angles could not be analysed; their points are left out"
         );
     }
     od.commit().map_err(Failure::output)?;
-    eprintln!(
+    crate::say!(
         "camkin: wrote {} files to {}",
         written.len(),
         args.out.display()

@@ -67,8 +67,8 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
         Error::Output(e) => Failure::output(e),
     })?;
     od.commit().map_err(Failure::output)?;
-    print!("{}", made.report);
-    eprintln!(
+    crate::out!("{}", made.report)?;
+    crate::say!(
         "camkin: wrote {} files to {}",
         made.files.len(),
         args.out.display()

@@ -88,7 +88,7 @@ pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
             StudioError::Input { message, .. } => message,
             other => format!("{other:?}"),
         };
-        eprintln!(
+        crate::say!(
             "camkin: warning: the mechanism has an error; the studio opens it to be mended: {e}"
         );
     }
@@ -113,8 +113,8 @@ pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
         _ => local,
     };
     // the URL on stdout (scripts read it); the rest on stderr
-    println!("http://{shown}/");
-    eprintln!(
+    crate::out!("http://{shown}/\n")?;
+    crate::say!(
         "camkin studio: {} at http://{shown}/ — open it in a browser; Ctrl-C stops the server",
         session.source.name
     );
@@ -151,7 +151,7 @@ pub fn run_report(args: &ReportArgs) -> Result<(), Failure> {
     )?;
     write_atomic(Some(&args.output), |w| Ok(w.write_all(html.as_bytes())?))
         .map_err(Failure::output)?;
-    eprintln!(
+    crate::say!(
         "camkin: wrote {} ({} kB): open it in any browser, no network needed",
         args.output.display(),
         html.len() / 1000

@@ -216,10 +216,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
 /// The events as a table on stderr.
 fn report(events: &[Event], unit: camkin::spec::LengthUnit, conjugate: bool) {
     if events.is_empty() {
-        eprintln!("camkin: no lift-off: the follower stays on the cam");
+        crate::say!("camkin: no lift-off: the follower stays on the cam");
         return;
     }
-    eprintln!(
+    crate::say!(
         "{:>9} {:>14} {:>15} {:>18}{}",
         "event",
         "time (s)",
@@ -229,7 +229,7 @@ fn report(events: &[Event], unit: camkin::spec::LengthUnit, conjugate: bool) {
     );
     for e in events.iter().take(50) {
         let row = EventRow::from(e);
-        eprintln!(
+        crate::say!(
             "{:>9} {:>14.9} {:>15.6} {:>18.6}{}",
             row.event,
             e.time,
@@ -243,7 +243,7 @@ fn report(events: &[Event], unit: camkin::spec::LengthUnit, conjugate: bool) {
         );
     }
     if events.len() > 50 {
-        eprintln!(
+        crate::say!(
             "… {} events in all (see events.csv with --out)",
             events.len()
         );

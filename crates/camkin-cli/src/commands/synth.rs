@@ -187,8 +187,8 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     })
     .map_err(Failure::output)?;
     od.commit().map_err(Failure::output)?;
-    print!("{report}{}", made.report);
-    eprintln!("camkin: wrote {}", args.out.display());
+    crate::out!("{report}{}", made.report)?;
+    crate::say!("camkin: wrote {}", args.out.display());
     let failures = design.failures();
     if failures.is_empty() {
         Ok(())

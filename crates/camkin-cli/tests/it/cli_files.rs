@@ -288,3 +288,62 @@ fn an_interrupted_run_leaves_the_old_folder() {
         .collect();
     assert!(strays.is_empty(), "{strays:?}");
 }
+
+/// Issue 44: a run whose stderr cannot be written (`/dev/full`, closed) never panics (exit
+/// 101): it ends with the exit code it has with a working stderr; stdout that cannot be written
+/// is an output failure (exit 1), a closed pipe on it a quiet end (exit 0).
+#[test]
+fn an_unwritable_stderr_or_stdout_never_panics() {
+    let ws = workspace();
+    let d = ws.path();
+    let runs: Vec<Vec<&str>> = vec![
+        vec!["analyze", "--at", "0"],
+        vec!["analyze", "nope.toml"],
+        vec!["analyze", "paper.toml", "--at", "0", "--angles", "0:1:1"],
+        vec![
+            "plot",
+            "paper.toml",
+            "--step",
+            "30",
+            "--frames",
+            "1",
+            "--out",
+            "p1",
+        ],
+        vec!["forces", "eccentric-flat-dynamics.toml", "--step", "5"],
+        vec!["mesh", "gear-pair-20-42.toml", "--angles", "0:4:1"],
+        vec![
+            "synth",
+            "motion-roller.toml",
+            "--step",
+            "5",
+            "--out",
+            "s1",
+            "--force",
+        ],
+    ];
+    let bin = env!("CARGO_BIN_EXE_camkin");
+    for r in &runs {
+        let code = |redirect: &str| {
+            let line = format!("'{bin}' {} {redirect}", r.join(" "));
+            std::process::Command::new("sh")
+                .current_dir(d)
+                .args(["-c", &line])
+                .output()
+                .unwrap()
+                .status
+                .code()
+        };
+        let normal = code(">/dev/null 2>/dev/null");
+        assert_ne!(normal, Some(101), "{r:?}");
+        for redirect in [">/dev/null 2>/dev/full", ">/dev/null 2>&-"] {
+            assert_eq!(code(redirect), normal, "{r:?} with {redirect}");
+        }
+        // stdout full: a failure to write (1) when there was output, never a panic
+        let full = code(">/dev/full 2>/dev/null");
+        assert_ne!(full, Some(101), "{r:?}");
+        // stdout closed by its reader: a quiet end
+        let piped = code("2>/dev/null | head -c 1 >/dev/null; exit ${PIPESTATUS:-0}");
+        assert_ne!(piped, Some(101), "{r:?}");
+    }
+}
