@@ -60,6 +60,13 @@ pub fn text(e: camkin::spec::text::TextError) -> PyErr {
     input_at(&field, value, e.message, e.at)
 }
 
+/// Whether Python has a signal pending (Ctrl-C): its exception (`KeyboardInterrupt`), checked
+/// between chunks of work done with the GIL released, so that a long call can be interrupted
+/// (called on the thread that called into camkin, Python's main thread when the user's is).
+pub fn interrupted() -> PyResult<()> {
+    Python::attach(|py| py.check_signals())
+}
+
 /// `ContactError(message)`: the numerics stopped, and why.
 pub fn contact(message: String) -> PyErr {
     Python::attach(|py| raise(py, "ContactError", message, vec![]))

@@ -369,7 +369,7 @@ impl PyMechanism {
         let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
         let mech = self.mech();
         let parts = &self.parts;
-        let (cols, jumps, jump_at, first_error) = py.detach(|| {
+        let (cols, jumps, jump_at, first_error) = py.detach(|| -> PyResult<_> {
             let (travel, stretches) = parts
                 .get_or_init(|| (mech.travel(), mech.unfollowable_stretches()))
                 .clone();
@@ -379,6 +379,7 @@ impl PyMechanism {
                 AnalysisSweep::with_parts(mech, &angles, contiguous, CHUNK, travel, stretches);
             let mut first_error = None;
             for chunk in rows.by_ref() {
+                errors::interrupted()?;
                 for r in &chunk {
                     if first_error.is_none() {
                         if let Some(e) = &r.error {
@@ -388,8 +389,8 @@ impl PyMechanism {
                     cols.push(camkin::table::analysis_cells(r, &units));
                 }
             }
-            (cols, rows.jumps(), rows.jump_at().to_vec(), first_error)
-        });
+            Ok((cols, rows.jumps(), rows.jump_at().to_vec(), first_error))
+        })?;
         if strict {
             raise_first(first_error, "cam")?;
         }
@@ -441,13 +442,17 @@ impl PyMechanism {
         let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
         let mech = self.mech();
         let units = Units::plain(mech, self.built.length_unit);
-        let (cols, first_error) = py.detach(|| {
+        let (cols, first_error) = py.detach(|| -> PyResult<_> {
             let mut cols = Columns::new(camkin::table::contact_columns(&units), angles.len());
             let mut first_error = None;
-            for (&a, state) in angles
+            for (k, (&a, state)) in angles
                 .iter()
                 .zip(mech.analyze_deg_each(&angles, contiguous))
+                .enumerate()
             {
+                if k % 4096 == 0 {
+                    errors::interrupted()?;
+                }
                 let found = state.and_then(|s| mech.contacts_at(&s));
                 for r in camkin::table::ContactRow::of(a, &found) {
                     if first_error.is_none() {
@@ -458,8 +463,8 @@ impl PyMechanism {
                     cols.push(camkin::table::contact_cells(&r, &units));
                 }
             }
-            (cols, first_error)
-        });
+            Ok((cols, first_error))
+        })?;
         if strict {
             raise_first(first_error, "cam")?;
         }

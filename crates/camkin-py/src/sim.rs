@@ -99,18 +99,28 @@ impl PyMechanism {
                 ),
             ));
         }
-        let (samples, events) = py
-            .detach(|| -> Result<_, DynamicsError> {
-                let run = sim.run(outputs, substeps, h, |_| {})?;
-                let thetas: Vec<f64> = run.samples.iter().map(|s| s.cam_angle).collect();
-                let kin = mech.analyze_all(&thetas);
-                let mut cols = Columns::new(sample_columns(&units), run.samples.len());
-                for (s, k) in run.samples.iter().zip(&kin) {
-                    cols.push(sample_cells(&SampleRow::new(s, k.as_ref().ok()), &units));
+        // Ctrl-C stops the run between output intervals: its KeyboardInterrupt, kept here
+        let mut interrupt: Option<PyErr> = None;
+        let result = py.detach(|| -> Result<_, DynamicsError> {
+            let run = sim.run(outputs, substeps, h, |_| match errors::interrupted() {
+                Ok(()) => std::ops::ControlFlow::Continue(()),
+                Err(e) => {
+                    interrupt = Some(e);
+                    std::ops::ControlFlow::Break(())
                 }
-                Ok((cols, run.events))
-            })
-            .map_err(dyn_err)?;
+            })?;
+            let thetas: Vec<f64> = run.samples.iter().map(|s| s.cam_angle).collect();
+            let kin = mech.analyze_all(&thetas);
+            let mut cols = Columns::new(sample_columns(&units), run.samples.len());
+            for (s, k) in run.samples.iter().zip(&kin) {
+                cols.push(sample_cells(&SampleRow::new(s, k.as_ref().ok()), &units));
+            }
+            Ok((cols, run.events))
+        });
+        if let Some(e) = interrupt {
+            return Err(e);
+        }
+        let (samples, events) = result.map_err(dyn_err)?;
         let names = event_columns(&units);
         let ev = PyList::empty(py);
         for e in &events {

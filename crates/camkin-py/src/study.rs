@@ -123,6 +123,22 @@ fn failed_summary(angles: usize) -> Summary {
     }
 }
 
+/// `f` over `items` in parallel on `pool`, in batches of four per thread, between which a
+/// pending Ctrl-C is raised (`KeyboardInterrupt`): the caller holds no GIL meanwhile.
+fn par_batches<T: Sync, R: Send>(
+    pool: &rayon::ThreadPool,
+    items: &[T],
+    f: impl Fn(&T) -> R + Sync + Send,
+) -> PyResult<Vec<R>> {
+    let batch = 4 * pool.current_num_threads().max(1);
+    let mut out = Vec::with_capacity(items.len());
+    for b in items.chunks(batch) {
+        errors::interrupted()?;
+        out.extend(pool.install(|| b.par_iter().map(&f).collect::<Vec<_>>()));
+    }
+    Ok(out)
+}
+
 fn pool(threads: Option<usize>) -> PyResult<rayon::ThreadPool> {
     let n = match threads {
         Some(0) => {
@@ -257,24 +273,19 @@ pub fn spline_variants<'py>(
         .map(|d| d.rows().into_iter().map(|r| [r[0], r[1]]).collect())
         .collect();
     let rows = py.detach(|| {
-        pool.install(|| {
-            owned
-                .par_iter()
-                .map(|pts| {
-                    let s = with_points(spec, pts.clone());
-                    let opts = camkin::spec::BuildOptions {
-                        base_dir: dir.clone(),
-                        si: false,
-                        confine: false,
-                    };
-                    match s.build(&opts) {
-                        Ok(b) => (summarize_one(&b.mechanism, &u, &angles), None),
-                        Err(e) => (failed_summary(angles.len()), Some(e.to_string())),
-                    }
-                })
-                .collect::<Vec<_>>()
+        par_batches(&pool, &owned, |pts| {
+            let s = with_points(spec, pts.clone());
+            let opts = camkin::spec::BuildOptions {
+                base_dir: dir.clone(),
+                si: false,
+                confine: false,
+            };
+            match s.build(&opts) {
+                Ok(b) => (summarize_one(&b.mechanism, &u, &angles), None),
+                Err(e) => (failed_summary(angles.len()), Some(e.to_string())),
+            }
         })
-    });
+    })?;
     into_dict(py, &u, rows)
 }
 
@@ -328,13 +339,10 @@ pub fn summarize<'py>(
     )?;
     let pool = pool(threads)?;
     let rows = py.detach(|| {
-        pool.install(|| {
-            mechs
-                .par_iter()
-                .map(|m| (summarize_one(m, &Units::plain(m, u.length), &angles), None))
-                .collect::<Vec<_>>()
+        par_batches(&pool, &mechs, |m| {
+            (summarize_one(m, &Units::plain(m, u.length), &angles), None)
         })
-    });
+    })?;
     into_dict(py, &u, rows)
 }
 

@@ -142,7 +142,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     }
     let pb = indicatif::ProgressBar::new(outputs as u64);
     let run = sim
-        .run(outputs, args.substeps, h, |k| pb.set_position(k as u64))
+        .run(outputs, args.substeps, h, |k| {
+            pb.set_position(k as u64);
+            std::ops::ControlFlow::Continue(())
+        })
         .map_err(dyn_err)?;
     let (samples, events) = (run.samples, run.events);
     pb.finish_and_clear();

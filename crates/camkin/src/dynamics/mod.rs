@@ -86,6 +86,14 @@ pub enum DynamicsError {
         /// the analysis error
         source: crate::cam::CamError,
     },
+    /// The caller stopped the run (its progress callback broke off: an interrupt).
+    #[error("stopped by its caller after {done} of {outputs} output intervals")]
+    Stopped {
+        /// intervals done
+        done: usize,
+        /// intervals asked for
+        outputs: usize,
+    },
     /// A conjugate follower's second curve cuts into the cam: a rigid follower cannot be there.
     #[error("follower.conjugate: the second curve cuts {} {unit} into the cam at cam angle {}°: a rigid follower cannot be there; give the second curve clearance (the design checks report its play over a revolution)", crate::human::human(*.depth), crate::human::human(*.angle_deg))]
     Interference {

@@ -14,13 +14,14 @@ pub struct Run {
 
 impl Simulation<'_> {
     /// Samples the state now and after each of `outputs` intervals of `substeps` steps of `h`
-    /// seconds; `progress` is told how many intervals are done, every 1000 of them.
+    /// seconds; `progress` is told how many intervals are done, every 1000 of them, and stops
+    /// the run ([`DynamicsError::Stopped`]) by breaking (a front end's interrupt).
     pub fn run(
         &mut self,
         outputs: usize,
         substeps: usize,
         h: f64,
-        mut progress: impl FnMut(usize),
+        mut progress: impl FnMut(usize) -> std::ops::ControlFlow<()>,
     ) -> Result<Run, DynamicsError> {
         let mut samples = Vec::with_capacity(outputs + 1);
         samples.push(self.sample()?);
@@ -30,8 +31,8 @@ impl Simulation<'_> {
                 events.extend(self.advance(h)?);
             }
             samples.push(self.sample()?);
-            if k % 1000 == 0 {
-                progress(k);
+            if k % 1000 == 0 && progress(k).is_break() {
+                return Err(DynamicsError::Stopped { done: k, outputs });
             }
         }
         Ok(Run { samples, events })

@@ -374,7 +374,11 @@ fn a_follower_across_the_dents_is_struck_at_each_jump() {
             }
             let mut sim = Simulation::new(&m, params, AugmentedLagrangian::default()).unwrap();
             assert!(matches!(sim, Simulation::Reduced(_)));
-            let run = sim.run(720, 1, 0.5f64.to_radians() / w, |_| {}).unwrap();
+            let run = sim
+                .run(720, 1, 0.5f64.to_radians() / w, |_| {
+                    std::ops::ControlFlow::Continue(())
+                })
+                .unwrap();
             let s = |t: f64| m.support_position(t).unwrap().0;
             let away = m.travel().unwrap().away;
             for x in &run.samples {
