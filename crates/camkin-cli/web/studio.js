@@ -249,6 +249,16 @@
       } else if (s.t === "dot") {
         const q = view.tx(s.p);
         g.beginPath(); g.arc(q[0], q[1], s.px, 0, 2 * Math.PI); g.fill();
+      } else if (s.t === "curve") {
+        // a closed curve of the follower, kept once in its body frame, placed at this pose
+        const [ox, oy, an] = s.pose, c = Math.cos(an), sn = Math.sin(an);
+        g.beginPath();
+        r.curves[s.i].forEach((p, i) => {
+          const q = view.tx([ox + c * p[0] - sn * p[1], oy + sn * p[0] + c * p[1]]);
+          if (i === 0) g.moveTo(q[0], q[1]); else g.lineTo(q[0], q[1]);
+        });
+        g.closePath();
+        g.stroke();
       }
     }
     // marks of failed checks at this angle's neighbourhood: contacts where a check fails

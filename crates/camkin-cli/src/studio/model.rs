@@ -72,6 +72,9 @@ pub struct Series {
     pub values: Vec<Option<f64>>,
 }
 
+/// Polylines longer than this, closed, are drawn once in the body frame ([`ShapeOut::Curve`]).
+const SHARED_POINTS: usize = 500;
+
 /// A shape of the drawing in world coordinates.
 #[derive(Debug, Serialize)]
 #[serde(tag = "t", rename_all = "lowercase")]
@@ -92,6 +95,15 @@ pub enum ShapeOut {
     },
     /// a dot of a size in pixels
     Dot { p: [f64; 2], color: String, px: u32 },
+    /// a closed curve of the follower, drawn once in its body frame (`Analysis::curves[i]`) and
+    /// placed at `pose` (origin and angle, rad) in each frame: a carried gear or spline would
+    /// otherwise repeat thousands of points in every frame
+    Curve {
+        i: usize,
+        pose: [f64; 3],
+        color: String,
+        width: u32,
+    },
 }
 
 fn rgb(c: (u8, u8, u8)) -> String {
@@ -203,6 +215,8 @@ pub struct Analysis {
     pub series: Vec<Series>,
     /// the drawing at every angle
     pub frames: Vec<Frame>,
+    /// the follower's closed curves in its body frame, which frames place by their pose
+    pub curves: Vec<Vec<[f64; 2]>>,
     /// the cam profile in the cam frame, closed polyline
     pub profile: Vec<[f64; 2]>,
     /// the spline's nodes (cam frame): draggable when `nodes_editable`
@@ -330,18 +344,57 @@ pub fn analyze(
         lo = [lo[0].min(p[0] - r), lo[1].min(p[1] - r)];
         hi = [hi[0].max(p[0] + r), hi[1].max(p[1] + r)];
     };
+    let mut curves: Vec<Vec<[f64; 2]>> = Vec::new();
     for (r, &a) in rows.iter().zip(&angles) {
         let pose = cam.state(deg_to_rad(a)).pose;
         let mut shapes = Vec::new();
+        let mut body = None;
         if let (Some(q), Some(x), Some(y)) = (r.position, r.contact_x, r.contact_y) {
             follower_shapes(mech, q, camkin::Point2::new(x, y), size, &mut shapes);
+            body = Some(mech.follower_body(q).0);
         }
-        let follower: Vec<ShapeOut> = shapes.into_iter().map(ShapeOut::from).collect();
+        // a long closed polyline is a carried curve: kept once in the body frame
+        let mut k = 0;
+        let follower: Vec<ShapeOut> = shapes
+            .into_iter()
+            .map(|s| match (s, body) {
+                (
+                    crate::draw::mechanism::Shape::Polyline {
+                        pts,
+                        color,
+                        width,
+                        closed: true,
+                    },
+                    Some(b),
+                ) if pts.len() > SHARED_POINTS => {
+                    if curves.len() <= k {
+                        curves.push(
+                            pts.iter()
+                                .map(|p| {
+                                    let l = b.to_body(*p);
+                                    [l.x, l.y]
+                                })
+                                .collect(),
+                        );
+                    }
+                    pts.iter().for_each(|p| grow([p.x, p.y], 0.0));
+                    k += 1;
+                    ShapeOut::Curve {
+                        i: k - 1,
+                        pose: [b.origin.x, b.origin.y, b.angle],
+                        color: format!("rgb({},{},{})", color.0, color.1, color.2),
+                        width,
+                    }
+                }
+                (s, _) => ShapeOut::from(s),
+            })
+            .collect();
         for s in &follower {
             match s {
                 ShapeOut::Line { pts, .. } => pts.iter().for_each(|p| grow(*p, 0.0)),
                 ShapeOut::Circle { c, r, .. } => grow(*c, *r),
                 ShapeOut::Dot { p, .. } => grow(*p, 0.0),
+                ShapeOut::Curve { .. } => {}
             }
         }
         frames.push(Frame {
@@ -399,6 +452,7 @@ pub fn analyze(
         angles_deg: angles.clone(),
         series,
         frames,
+        curves,
         profile,
         nodes,
         nodes_editable,
