@@ -159,6 +159,22 @@ def test_properties_and_travel():
     t = camkin.Mechanism.from_dict(d).travel()
     e = math.hypot(*d["cam"]["profile"]["center"])
     assert abs(t[f"stroke_{u}"] - 2 * e) < 1e-9 * d["cam"]["profile"]["radius"]
+    # the rest and peak angles in degrees, where the lift is least and greatest (the disc's
+    # centre turned away from and towards the roller: 180° apart), against a scan of analyze
+    mech = camkin.Mechanism.from_dict(d)
+    grid = np.arange(0.0, 360.0, 0.01)
+    lift = mech.analyze(grid)[f"lift_{u}"]
+    for key, k in (("rest_angle_deg", np.argmin(lift)), ("peak_angle_deg", np.argmax(lift))):
+        assert abs((t[key] - grid[k] + 180.0) % 360.0 - 180.0) < 0.02, (key, t[key], grid[k])
+    assert abs((t["peak_angle_deg"] - t["rest_angle_deg"]) % 360.0 - 180.0) < 1e-6
+    # an arm's positions in degrees too
+    arm = camkin.Mechanism.from_toml(EXAMPLES / "oscillating-roller.toml")
+    ta = arm.travel()
+    r = arm.analyze(grid)
+    pos = [k for k in r if k.startswith("position_")][0]
+    assert pos == "position_deg"
+    k = np.argmin(np.abs(grid - ta["rest_angle_deg"]))
+    assert abs(ta["rest_deg"] - r[pos][k]) < 1e-3, (ta, r[pos][k])
 
 
 def test_mechanisms_are_immutable_and_pickle():

@@ -186,3 +186,48 @@ fn the_force_reports_extremes_are_the_closed_forms() {
         h.worst_mpa
     );
 }
+
+/// Issue 44: the radius of curvature at the contact carries its sign: negative on a concave
+/// stretch. A knife on the polar curve `r = 30 + 6 cos 3φ` (a spline through 1440 of its
+/// points) touches where the curve is concave (φ = 60°, `κ = (r² + 2r'² − r r'')/(r² + r'²)^{3/2}`
+/// < 0) and convex (φ = 0°): the library's radius against the closed form, with its sign.
+#[test]
+fn the_radius_of_curvature_is_negative_where_the_profile_is_concave() {
+    use camkin::curve::ClosedSpline;
+    use std::sync::Arc;
+    let r = |p: f64| 30.0 + 6.0 * (3.0 * p).cos();
+    let nodes: Vec<Point2> = (0..1440)
+        .map(|k| {
+            let p = k as f64 * std::f64::consts::TAU / 1440.0;
+            Point2::new(r(p) * p.cos(), r(p) * p.sin())
+        })
+        .collect();
+    let profile = Arc::new(ClosedSpline::new(&nodes).unwrap());
+    for deg in [60.0f64, 0.0, 180.0] {
+        let p = deg.to_radians();
+        let (r0, r1, r2) = (r(p), -18.0 * (3.0 * p).sin(), -54.0 * (3.0 * p).cos());
+        let kappa = (r0 * r0 + 2.0 * r1 * r1 - r0 * r2) / (r0 * r0 + r1 * r1).powf(1.5);
+        let m = mechanism(
+            profile.clone(),
+            Point2::origin(),
+            Sense::Ccw,
+            100.0,
+            Follower::TranslatingKnife {
+                direction: Vec2::new(p.cos(), p.sin()),
+                offset: 0.0,
+            },
+        );
+        let s = m.analyze(0.0).unwrap();
+        let rho = s.radius_of_curvature;
+        assert_eq!(
+            rho.signum(),
+            kappa.signum(),
+            "at {deg}°: {rho} against 1/{kappa}"
+        );
+        assert!(
+            (rho - 1.0 / kappa).abs() < 1e-4 * (1.0 / kappa).abs(),
+            "at {deg}°: {rho} against {}",
+            1.0 / kappa
+        );
+    }
+}

@@ -207,3 +207,65 @@ fn hertz_line_contact_matches_the_half_width_form() {
     let p = hertz_line_pressure(1000.0, 0.01, 0.02, 0.01, steel).unwrap();
     assert!((p / 1e6 - 735.14).abs() < 0.01, "{p}");
 }
+
+/// Issue 44: with damping the force at an angle is a full quadratic in the speed,
+/// `c₂ω² + c₁ω + c₀`, which can fall below the margin between two positive speeds: the follower
+/// leaves at the smaller. The jump speed at every angle is checked against a scan of the force
+/// upward in speed (bisected where it first falls below the margin), which shares no root
+/// formula; the angles with two positive roots are counted, so the case is reached.
+#[test]
+fn with_damping_the_jump_speed_is_the_smaller_positive_root() {
+    let disc = Arc::new(camkin::curve::Circle::new(Point2::new(E, 0.0), R).unwrap());
+    let mech = mechanism(
+        disc,
+        Point2::origin(),
+        Sense::Ccw,
+        1000.0,
+        Follower::TranslatingFlat {
+            direction: Vec2::y(),
+        },
+    );
+    let mut two_roots = 0;
+    for (c, margin) in [(40.0, 0.0), (15.0, 2.0), (60.0, 5.0)] {
+        let f = Forces::new(&mech, params(M, 1.0, K, F0, c)).unwrap();
+        for k in 0..180 {
+            let s = f.at(k as f64 * 2f64.to_radians()).unwrap();
+            let [c2, c1, c0] = f.force_coefficients(&s);
+            let c0m = c0 - margin * s.lever;
+            if c2 > 0.0 && c1 < 0.0 && c0m > 0.0 && c1 * c1 > 4.0 * c2 * c0m {
+                two_roots += 1;
+            }
+            // the first speed at which the force falls below the margin, by scanning
+            let below = |w: f64| f.force_at_speed(&s, w) < margin;
+            let expect = if below(0.0) {
+                0.0
+            } else {
+                let mut w = 1e-3;
+                while w < 1e7 && !below(w) {
+                    w *= 1.001;
+                }
+                if w >= 1e7 {
+                    f64::INFINITY
+                } else {
+                    let (mut lo, mut hi) = (w / 1.001, w);
+                    for _ in 0..200 {
+                        let mid = 0.5 * (lo + hi);
+                        if below(mid) {
+                            hi = mid;
+                        } else {
+                            lo = mid;
+                        }
+                    }
+                    0.5 * (lo + hi)
+                }
+            };
+            let got = f.leave_speed(&s, margin);
+            assert!(
+                (got == expect) || (got - expect).abs() <= 1e-9 * expect,
+                "c = {c}, at {}°: {got} against {expect}",
+                2 * k
+            );
+        }
+    }
+    assert!(two_roots > 5, "{two_roots}");
+}

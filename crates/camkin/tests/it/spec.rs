@@ -421,3 +421,54 @@ fn spec_errors_are_not_panics_for_any_kind_without_its_fields() {
         }
     }
 }
+
+/// Issue 44: each length unit's size, not only its name. One cam and follower written in metres,
+/// millimetres, centimetres and inches (the lengths divided by the unit's size, written here:
+/// 1e-3, 1e-2, 0.0254 m), built in SI as a simulation builds it: the same positions, velocities
+/// and accelerations in metres, to rounding.
+#[test]
+fn every_length_units_size_is_its_own() {
+    use camkin::spec::BuildOptions;
+    let spec_in = |unit: &str, size: f64| MechanismSpec {
+        length_unit: Some(unit.into()),
+        cam: CamSpec {
+            speed_rpm: 600.0,
+            profile: ProfileSpec {
+                kind: "circle".into(),
+                center: Some([0.007 / size, 0.003 / size]),
+                radius: Some(0.02 / size),
+                ..Default::default()
+            },
+            ..Default::default()
+        },
+        follower: FollowerSpec {
+            kind: "translating-roller".into(),
+            offset: Some(0.004 / size),
+            roller_radius: Some(0.005 / size),
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let si = BuildOptions {
+        si: true,
+        ..Default::default()
+    };
+    let metres = spec_in("m", 1.0).build(&si).unwrap().mechanism;
+    for (unit, size) in [("mm", 1e-3), ("cm", 1e-2), ("in", 0.0254)] {
+        let m = spec_in(unit, size).build(&si).unwrap().mechanism;
+        for k in 0..12 {
+            let t = k as f64 * 0.5;
+            let (a, b) = (metres.analyze(t).unwrap(), m.analyze(t).unwrap());
+            for (x, y) in [
+                (a.position, b.position),
+                (a.velocity, b.velocity),
+                (a.acceleration, b.acceleration),
+            ] {
+                assert!(
+                    (x - y).abs() <= 1e-12 * x.abs().max(1e-3),
+                    "{unit} at {t}: {x} against {y}"
+                );
+            }
+        }
+    }
+}
