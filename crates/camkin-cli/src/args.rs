@@ -170,7 +170,10 @@ impl FromStr for AngleRange {
         );
         if step == 0.0 || (stop - start) * step <= 0.0 {
             return Err(bad(format!(
-                "STEP {step}° does not lead from START {start}° to STOP {stop}°"
+                "STEP {}° does not lead from START {}° to STOP {}°",
+                parts[2].trim(),
+                parts[0].trim(),
+                parts[1].trim()
             )));
         }
         let count = ((stop - start) / step).ceil();
@@ -186,6 +189,9 @@ impl FromStr for AngleRange {
 pub struct RevolutionStep(pub f64);
 
 impl RevolutionStep {
+    /// The finest step, degrees: 360° over the most angles.
+    pub const MIN_DEG: f64 = 360.0 / MAX_ANGLES as f64;
+
     /// The step, degrees.
     pub fn deg(self) -> f64 {
         self.0
@@ -196,17 +202,20 @@ impl FromStr for RevolutionStep {
     type Err = BadValue;
     fn from_str(s: &str) -> Result<Self, BadValue> {
         let step = number("step", s)?;
+        // the value as written, not Rust's digits of it (1e300 would print 301 of them)
+        let s = s.trim();
         if !(step > 0.0 && step <= 90.0) {
-            return Err(bad(format!("{step}° is not in (0°, 90°]")));
+            return Err(bad(format!("{s}° is not in (0°, 90°]")));
         }
         let n = 360.0 / step;
         if n > MAX_ANGLES as f64 {
             return Err(bad(format!(
-                "{step}° gives more than {MAX_ANGLES} angles per revolution"
+                "{s}° gives more than {MAX_ANGLES} angles per revolution (the finest step is {}°)",
+                RevolutionStep::MIN_DEG
             )));
         }
         if (n - n.round()).abs() > 1e-9 * n {
-            return Err(bad(format!("{step}° does not divide 360°")));
+            return Err(bad(format!("{s}° does not divide 360°")));
         }
         Ok(Self(step))
     }
@@ -254,7 +263,11 @@ impl FromStr for AngleWindow {
         }
         let (start, stop) = (number("START", p[0])?, number("STOP", p[1])?);
         if start >= stop {
-            return Err(bad(format!("START {start}° is not below STOP {stop}°")));
+            return Err(bad(format!(
+                "START {}° is not below STOP {}°",
+                camkin::human::human(start),
+                camkin::human::human(stop)
+            )));
         }
         Ok(Self { start, stop })
     }

@@ -316,7 +316,8 @@ pub fn write(
     if let Some(r) = opts.tool_radius {
         if !(r.is_finite() && r > 0.0 && r < 1e3 * size) {
             return Err(Error::Input(anyhow!(
-                "--tool-radius: {r} {l} must be positive, finite and below 1000 times the cam's size ({} {l})",
+                "--tool-radius: {} {l} must be positive, finite and below 1000 times the cam's size ({} {l})",
+                h(r),
                 h(size)
             )));
         }

@@ -4,7 +4,7 @@
 use crate::columns::Columns;
 use crate::errors;
 use crate::mech::PyMechanism;
-use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Simulation};
+use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Simulation, StepAdvice};
 use camkin::table::{
     event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow, Units,
 };
@@ -47,7 +47,7 @@ impl PyMechanism {
             errors::input(
                 field,
                 Some(camkin::human::human(v)),
-                format!("{field} = {v}: {what}"),
+                format!("{field} = {}: {what}", camkin::human::human(v)),
             )
         };
         if !(revolutions.is_finite() && revolutions > 0.0 && revolutions <= 1e4) {
@@ -84,18 +84,30 @@ impl PyMechanism {
             large,
             ", or simulate fewer revolutions",
         )?;
-        let h = step_deg.to_radians() / mech.cam().speed() / substeps as f64;
-        if h > sim.max_step() {
+        let w = mech.cam().speed();
+        let h = step_deg.to_radians() / w / substeps as f64;
+        if let Some(advice) = sim.step_advice(step_deg, substeps, w, 1000, 360.0 / 1e7) {
             let (rate, field, value) = sim.fastest_rate();
-            let need = (h / sim.max_step() * substeps as f64).ceil();
+            let hu = camkin::human::human;
+            let fix = match advice {
+                StepAdvice::Substeps(n) => format!("use substeps={n} or more"),
+                StepAdvice::FinerStep { step_deg } => {
+                    format!("use substeps=1000 and step_deg={} or finer", hu(step_deg))
+                }
+                StepAdvice::FasterCam { rpm } => format!(
+                    "the cam turns too slowly for outputs by cam angle: raise cam.speed_rpm to at least {} rpm",
+                    hu(rpm)
+                ),
+                _ => "use a finer step_deg".into(),
+            };
             return Err(errors::input(
                 &field.to_string(),
-                Some(camkin::human::human(value)),
+                Some(hu(value)),
                 format!(
-                    "{field} = {}: too stiff for the time step {} s; the follower's fastest rate is {} /s: use substeps={need} or more, or a finer step_deg",
-                    camkin::human::human(value),
-                    camkin::human::human(h),
-                    camkin::human::human(rate)
+                    "{field} = {}: too stiff for the time step {} s; the follower's fastest rate is {} /s: {fix}",
+                    hu(value),
+                    hu(h),
+                    hu(rate)
                 ),
             ));
         }

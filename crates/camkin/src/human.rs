@@ -28,6 +28,14 @@ pub fn human(x: f64) -> String {
             s
         }
     } else {
+        // the shortest form that reads back as `x` when it is short (5e-324, not 4.94066e-324)
+        let shortest = format!("{x:e}");
+        if shortest
+            .split_once('e')
+            .is_some_and(|(m, _)| m.trim_start_matches('-').len() <= 7)
+        {
+            return shortest;
+        }
         let s = format!("{x:.5e}");
         // 1.23400e200 → 1.234e200
         match s.split_once('e') {
@@ -59,5 +67,7 @@ mod tests {
         assert_eq!(human(f64::INFINITY), "inf");
         assert_eq!(human(-0.0), "0");
         assert_eq!(human(123456.7), "123457");
+        assert_eq!(human(5e-324), "5e-324");
+        assert_eq!(human(-2.5e-120), "-2.5e-120");
     }
 }

@@ -61,7 +61,7 @@ pub enum MeasuredError {
         limit_deg: f64,
     },
     /// No series within the tolerance with the harmonics the points allow.
-    #[error("no fit within the tolerance {tolerance}: the best, with {harmonics} harmonics, leaves an RMS residual of {rms}")]
+    #[error("no fit within the tolerance {}: the best, with {harmonics} harmonics, leaves an RMS residual of {}", crate::human::human(*.tolerance), crate::human::human(*.rms))]
     NoFit {
         /// asked for
         tolerance: f64,

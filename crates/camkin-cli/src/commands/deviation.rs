@@ -69,7 +69,8 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
     let tol = args.tolerance.unwrap_or(1e-4 * size);
     if !(tol.is_finite() && tol > 0.0 && tol < 0.1 * size) {
         return Err(fail(format!(
-            "--tolerance: {tol} {l} must be positive and below 0.1 of the cam's size ({} {l})",
+            "--tolerance: {} {l} must be positive and below 0.1 of the cam's size ({} {l})",
+            human(tol),
             human(size)
         )));
     }

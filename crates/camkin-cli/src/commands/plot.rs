@@ -452,7 +452,13 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let mut names = std::collections::BTreeSet::new();
     for (a, shapes) in scenes.iter().take(angles.len()) {
         let reduced = a.rem_euclid(360.0);
-        let name = format!("drawing_{reduced}");
+        // the angle's shortest form that reads back (`drawing_1e-300`, not 300 zeros)
+        let text = format!("{reduced}");
+        let name = if text.len() > 24 {
+            format!("drawing_{reduced:e}")
+        } else {
+            format!("drawing_{text}")
+        };
         if !names.insert(name.clone()) {
             continue; // the same cam angle as an earlier one: the same drawing
         }

@@ -37,7 +37,8 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
         let size = loaded.mech.size();
         if !(t.is_finite() && t >= 1e-12 * size && t <= 0.1 * size) {
             return Err(Failure::Input(anyhow!(
-                "--tolerance: {t} {} must be from 1e-12 to 0.1 of the cam's size ({} {})",
+                "--tolerance: {} {} must be from 1e-12 to 0.1 of the cam's size ({} {})",
+                camkin::human::human(t),
                 loaded.unit.name(),
                 camkin::human::human(size),
                 loaded.unit.name()

@@ -128,7 +128,7 @@ pub fn run_report(args: &ReportArgs) -> Result<(), Failure> {
     let limit = crate::studio::pressure_limit(Some(args.pressure_limit)).map_err(|_| {
         Failure::Input(anyhow!(
             "--pressure-limit: {} must be in (0, 90) degrees",
-            args.pressure_limit
+            camkin::human::human(args.pressure_limit)
         ))
     })?;
     let limits = Limits {
@@ -139,7 +139,7 @@ pub fn run_report(args: &ReportArgs) -> Result<(), Failure> {
     let step_deg = crate::studio::step(Some(args.step.deg()), &limits).map_err(|_| {
         Failure::Input(anyhow!(
             "--step: {}° must be from {}° to 10° and divide 360°",
-            args.step.deg(),
+            camkin::human::human(args.step.deg()),
             limits.min_step_deg
         ))
     })?;

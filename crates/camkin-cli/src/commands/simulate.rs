@@ -6,7 +6,7 @@ use crate::mechfile;
 use crate::output::{write_atomic, write_cell_table, Cell, Keyed, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, Sample, Simulation};
+use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Event, Sample, Simulation, StepAdvice};
 use camkin::table::Units;
 use camkin::table::{
     event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow,
@@ -66,7 +66,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     if !(args.revolutions.is_finite() && args.revolutions > 0.0 && args.revolutions <= 1e4) {
         return Err(Failure::Input(anyhow!(
             "--revolutions: {} must be in (0, 10000]",
-            args.revolutions
+            camkin::human::human(args.revolutions)
         )));
     }
     let step = args.step.deg();
@@ -123,21 +123,31 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     let w = mech.cam().speed();
     let h = step.to_radians() / w / args.substeps as f64;
     // the damping and the spring must be resolved by the time step (the library refuses a longer
-    // one): say how many substeps would do
-    let max_step = sim.max_step();
-    if h > max_step {
+    // one): say what would do it, within the flags' ranges
+    if let Some(advice) = sim.step_advice(step, args.substeps, w, 1000, RevolutionStep::MIN_DEG) {
         let (rate, field, value) = sim.fastest_rate();
-        let need = (h / max_step * args.substeps as f64).ceil();
+        let h_ = camkin::human::human;
+        let fix = match advice {
+            StepAdvice::Substeps(n) => format!("use --substeps {n} or more"),
+            StepAdvice::FinerStep { step_deg } => {
+                format!("use --substeps 1000 and --step {}° or finer", h_(step_deg))
+            }
+            StepAdvice::FasterCam { rpm } => format!(
+                "the cam turns too slowly for outputs by cam angle (at most 1000 substeps of a {}° step): raise cam.speed_rpm to at least {} rpm",
+                h_(RevolutionStep::MIN_DEG),
+                h_(rpm)
+            ),
+            _ => "use a finer --step".into(),
+        };
         return Err(Failure::Input(anyhow!(
-            "{field} = {}: too stiff for the time step {} s ({}° / ω / {} substeps): the follower's fastest rate is {} /s (c/m = {} /s, √(k/m) = {} /s); use --substeps {} or more, or a finer --step",
-            camkin::human::human(value),
-            camkin::human::human(h),
-            camkin::human::human(step),
+            "{field} = {}: too stiff for the time step {} s ({}° / ω / {} substeps): the follower's fastest rate is {} /s (c/m = {} /s, √(k/m) = {} /s); {fix}",
+            h_(value),
+            h_(h),
+            h_(step),
             args.substeps,
-            camkin::human::human(rate),
-            camkin::human::human(params.damping / params.moving_mass(&mech.follower_joint())),
-            camkin::human::human((params.spring_stiffness / params.moving_mass(&mech.follower_joint())).sqrt()),
-            need
+            h_(rate),
+            h_(params.damping / params.moving_mass(&mech.follower_joint())),
+            h_((params.spring_stiffness / params.moving_mass(&mech.follower_joint())).sqrt()),
         )));
     }
     let pb = indicatif::ProgressBar::new(outputs as u64);

@@ -72,7 +72,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     {
         return Err(Failure::Input(anyhow!(
             "--pressure-limit: {} must be in (0, 90) degrees",
-            args.pressure_limit
+            camkin::human::human(args.pressure_limit)
         )));
     }
     let points = (360.0 / step).round();

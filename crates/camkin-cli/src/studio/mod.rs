@@ -213,7 +213,10 @@ pub fn pressure_limit(limit: Option<f64>) -> Result<f64, StudioError> {
         Ok(l)
     } else {
         Err(StudioError::BadRequest {
-            message: format!("pressure_limit_deg = {l}: must be in (0°, 90°)"),
+            message: format!(
+                "pressure_limit_deg = {}: must be in (0°, 90°)",
+                camkin::human::human(l)
+            ),
         })
     }
 }

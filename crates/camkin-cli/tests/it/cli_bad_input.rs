@@ -613,7 +613,7 @@ fn lengths_and_arm_angles_beyond_their_range_are_refused_by_field() {
         (
             "huge cam",
             CIRCLE.replace("radius = 2", "radius = 2e100") + FLAT,
-            "cam.profile = 2e100: the cam's size",
+            "cam.profile.radius = 2e100: must be from 1e-100 to 1e100",
         ),
         (
             "tiny cam",
@@ -621,7 +621,7 @@ fn lengths_and_arm_angles_beyond_their_range_are_refused_by_field() {
                 .replace("radius = 2", "radius = 2e-101")
                 .replace("[0.5, 0]", "[0, 0]")
                 + FLAT,
-            "cam.profile = 2e-101: the cam's size",
+            "cam.profile.radius = 2e-101: must be from 1e-100 to 1e100",
         ),
         (
             "tiny roller",
@@ -758,4 +758,174 @@ fn numeric_options_take_a_sign_and_refuse_a_unit_in_the_number() {
             "{flag} -7: {err}"
         );
     }
+}
+
+/// Issue 44: a number in a message is the user's or rounded for people: every numeric flag of
+/// every command, given extreme values, answers (or refuses) without a run of 25 digits (1e300
+/// printed as 301 of them) and without a panic.
+#[test]
+fn extreme_numbers_are_never_printed_digit_by_digit() {
+    let e = examples();
+    let ex = |f: &str| e.join(f).display().to_string();
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o").display().to_string();
+    let html = dir.path().join("r.html").display().to_string();
+    let cases: Vec<Vec<String>> = vec![
+        vec![
+            "plot".into(),
+            ex("paper.toml"),
+            "--out".into(),
+            out.clone(),
+            "--force".into(),
+            "--at".into(),
+        ],
+        vec![
+            "simulate".into(),
+            ex("eccentric-flat-dynamics.toml"),
+            "--revolutions".into(),
+        ],
+        vec![
+            "simulate".into(),
+            ex("eccentric-flat-dynamics.toml"),
+            "--start-angle".into(),
+        ],
+        vec![
+            "profile".into(),
+            ex("paper.toml"),
+            "--out".into(),
+            out.clone(),
+            "--force".into(),
+            "--tool-radius".into(),
+        ],
+        vec![
+            "profile".into(),
+            ex("paper.toml"),
+            "--out".into(),
+            out.clone(),
+            "--force".into(),
+            "--tolerance".into(),
+        ],
+        vec![
+            "synth".into(),
+            ex("motion-roller.toml"),
+            "--out".into(),
+            out.clone(),
+            "--force".into(),
+            "--pressure-limit".into(),
+        ],
+        vec![
+            "deviation".into(),
+            ex("measured-eccentric.csv"),
+            "--against".into(),
+            ex("eccentric-roller.toml"),
+            "--tolerance".into(),
+        ],
+        vec![
+            "report".into(),
+            ex("paper.toml"),
+            "-o".into(),
+            html,
+            "--pressure-limit".into(),
+        ],
+        vec![
+            "forces".into(),
+            ex("eccentric-flat-dynamics.toml"),
+            "--margin".into(),
+        ],
+        vec![
+            "forces".into(),
+            ex("eccentric-flat-dynamics.toml"),
+            "--face-width".into(),
+        ],
+        vec![
+            "forces".into(),
+            ex("eccentric-flat-dynamics.toml"),
+            "--target-rpm".into(),
+        ],
+        vec!["analyze".into(), ex("paper.toml"), "--at".into()],
+        vec![
+            "plot".into(),
+            ex("paper.toml"),
+            "--out".into(),
+            out,
+            "--force".into(),
+            "--step".into(),
+        ],
+    ];
+    for c in &cases {
+        for v in ["1e300", "-1e300", "1e-300", "-1e-300"] {
+            let o = camkin().args(c).arg(v).output_of();
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert_ne!(o.status.code(), Some(101), "{c:?} {v}: {err}");
+            let run = err
+                .as_bytes()
+                .split(|b| !b.is_ascii_digit())
+                .map(<[u8]>::len)
+                .max()
+                .unwrap_or(0);
+            assert!(run < 25, "{c:?} {v}: {err}");
+        }
+    }
+}
+
+/// Issue 44: each error names the key the user wrote, on its line, with the value the user
+/// wrote: a gear's negative tip relief at `tip_relief` (it was placed at `kind`), a module of
+/// 1e300 at `module` (it was "cam.profile = 0"), a speed of 5e-324 rpm at `speed_rpm` (it was
+/// "cam.speed = 0"), a radius of 1e200 at `radius` (it was "cam.profile = inf"), a motion
+/// program of 1001 segments at `segments`; and `[1e-300, 0]` is the x axis, as the library takes
+/// it.
+#[test]
+fn errors_name_the_key_and_value_the_user_wrote() {
+    let gear = std::fs::read_to_string(examples().join("gear-pair-20-42.toml")).unwrap();
+    let relief = gear.replacen(
+        "pressure_angle_deg = 20.0\n",
+        "pressure_angle_deg = 20.0\ntip_relief = -0.02\ntip_relief_length = 1.0\n",
+        1,
+    );
+    bad(
+        "relief",
+        &relief,
+        &[],
+        &["m.toml:18:14: cam.profile.tip_relief = -0.02: must be positive"],
+    );
+    bad(
+        "module",
+        &gear.replacen("module = 2.0", "module = 1e300", 1),
+        &[],
+        &["m.toml:15:10: cam.profile.module = 1e300: must be from 1e-100 to 1e100"],
+    );
+    bad(
+        "slow",
+        &gear.replace("speed_rpm = 1000.0", "speed_rpm = 5e-324"),
+        &[],
+        &["cam.speed_rpm = 5e-324: is too slow"],
+    );
+    bad(
+        "huge radius",
+        &format!("{}{FLAT}", CIRCLE.replace("radius = 2", "radius = 1e200")),
+        &[],
+        &["m.toml:7:10: cam.profile.radius = 1e200: must be from 1e-100 to 1e100"],
+    );
+    let segs: String = (0..1001)
+        .map(|_| "[[cam.profile.segments]]\nlaw = \"dwell\"\ndegrees = 0.3\n".to_string())
+        .collect();
+    bad(
+        "segments",
+        &format!("length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40\n{segs}[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n"),
+        &[],
+        &["cam.profile.segments: 1001 segments is more than the 1000"],
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let m = dir.path().join("m.toml");
+    std::fs::write(
+        &m,
+        format!("{CIRCLE}[follower]\nkind = \"translating-flat\"\ndirection = [1e-300, 0]\n"),
+    )
+    .unwrap();
+    camkin()
+        .arg("analyze")
+        .arg(&m)
+        .args(["--at", "0"])
+        .assert()
+        .success();
 }

@@ -129,7 +129,14 @@ impl Cam {
                 value: rpm,
                 reason,
             })?;
-        // τ/60 first: rpm · τ would overflow near f64::MAX
+        // τ/60 first: rpm · τ would overflow near f64::MAX; a speed that underflows is the rpm's
+        if !(rpm * (std::f64::consts::TAU / 60.0) >= LENGTH_RANGE.0) {
+            return Err(CamError::Invalid {
+                field: Field::Cam(CamField::SpeedRpm),
+                value: rpm,
+                reason: "is too slow: the speed must be at least 1e-100 rad/s",
+            });
+        }
         let mut cam = Self::new(
             profile,
             pivot,

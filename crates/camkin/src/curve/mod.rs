@@ -361,6 +361,18 @@ pub(crate) fn piece_samples(
     wrapped.chain(pieces)
 }
 
+impl CurveError {
+    /// The field at fault, with the value given, where the error names one.
+    pub fn field(&self) -> Option<(CurveField, f64)> {
+        match *self {
+            CurveError::NonPositive { field, value }
+            | CurveError::NonFinite { field, value }
+            | CurveError::Gear { field, value, .. } => Some((field, value)),
+            _ => None,
+        }
+    }
+}
+
 pub(crate) fn check_positive(field: CurveField, value: f64) -> Result<f64, CurveError> {
     Rule::Positive
         .check(value)

@@ -45,7 +45,7 @@ pub use forces::{
 };
 pub use model::{Constraint, ForceElement, RigidBody, System};
 pub use reduced::Reduced;
-pub use run::Run;
+pub use run::{Run, StepAdvice};
 pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
 

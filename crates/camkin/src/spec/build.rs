@@ -300,12 +300,22 @@ pub(super) fn positive(field: Field, x: f64) -> Result<f64, SpecError> {
     rule(Rule::Positive, field, x)
 }
 
+/// A length or a speed the computation takes: from 1e-100 to 1e100 (its squares stay in `f64`).
+pub(super) fn length(field: Field, x: f64) -> Result<f64, SpecError> {
+    rule(Rule::Size, field, x)
+}
+
+/// A coordinate or an offset: finite, at most 1e100 in magnitude.
+pub(super) fn coordinate(field: Field, x: f64) -> Result<f64, SpecError> {
+    rule(Rule::Bounded, field, x)
+}
+
 pub(super) fn non_negative(field: Field, x: f64) -> Result<f64, SpecError> {
     rule(Rule::NonNegative, field, x)
 }
 
 pub(super) fn point(field: Field, v: [f64; 2]) -> Result<Point2, SpecError> {
-    Rule::Finite
+    Rule::Bounded
         .check_point(Point2::new(v[0], v[1]))
         .map_err(|reason| SpecError::Invalid {
             field,
@@ -316,7 +326,8 @@ pub(super) fn point(field: Field, v: [f64; 2]) -> Result<Point2, SpecError> {
 
 pub(super) fn direction(field: Field, v: [f64; 2]) -> Result<Vec2, SpecError> {
     let p = point(field, v)?;
-    if p.coords.norm() > 0.0 {
+    // by its largest component: [1e-300, 0] is the x axis (its norm's square underflows)
+    if p.x.abs().max(p.y.abs()) > 0.0 {
         Ok(p.coords)
     } else {
         Err(SpecError::Invalid {
@@ -474,7 +485,7 @@ impl FollowerSpec {
         };
         let offset = || -> Result<f64, SpecError> {
             self.offset
-                .map_or(Ok(0.0), |o| finite(f(F::Offset), o).map(|v| scale * v))
+                .map_or(Ok(0.0), |o| coordinate(f(F::Offset), o).map(|v| scale * v))
         };
         let closing = self.closing.unwrap_or(Sense::Cw);
         let initial = || -> Result<f64, SpecError> {
@@ -493,7 +504,7 @@ impl FollowerSpec {
             Ok(Point2::new(scale * p.x, scale * p.y))
         };
         let len = |field: F, v: Option<f64>| -> Result<f64, SpecError> {
-            Ok(scale * positive(f(field), need(kind_field, kind, f(field), v)?)?)
+            Ok(scale * length(f(field), need(kind_field, kind, f(field), v)?)?)
         };
         Ok(match k {
             FollowerKind::Translating => Follower::Translating {

@@ -1,7 +1,7 @@
 //! Validation of `[cam.profile]`: the profile kinds, inline and file points, motion programs.
 
 use super::build::{
-    check_kind, finite, key, need, point, positive, vector, SpecError, SpecWarning,
+    check_kind, finite, key, length, need, point, positive, vector, SpecError, SpecWarning,
 };
 use super::{ProfileKind, ProfileSpec};
 use crate::cam::synthesis::synthesize;
@@ -12,6 +12,7 @@ use crate::curve::{
 };
 use crate::field::{Field, ProfileField, SegmentField};
 use crate::motion::{Law, Program, Segment};
+use crate::valid::Rule;
 use crate::Point2;
 use std::path::Path;
 use std::sync::Arc;
@@ -113,6 +114,9 @@ fn spline(
     Ok(Arc::new(s))
 }
 
+/// The most segments a motion program may have.
+pub const MAX_SEGMENTS: usize = 1000;
+
 /// Longest over shortest chord between neighbouring nodes above which the uniform
 /// parameterisation draws a warning. Measured on a circle of 24 nodes at alternating angular
 /// steps: at a ratio of 1.5 the uniform spline's accelerations under a flat face are off by 17
@@ -209,7 +213,7 @@ impl ProfileSpec {
             ProfileKind::Circle => {
                 let c = center()?;
                 let r = scale
-                    * positive(
+                    * length(
                         f(P::Radius),
                         need(kind_field, kind, f(P::Radius), self.radius)?,
                     )?;
@@ -222,11 +226,11 @@ impl ProfileSpec {
                 let c = center()?;
                 let ax = need(kind_field, kind, f(P::SemiAxes), self.semi_axes)?;
                 let [a, b] = ax;
-                if !(a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0) {
+                if let Err(why) = Rule::Size.check(a).and(Rule::Size.check(b)) {
                     return Err(SpecError::Invalid {
                         field: f(P::SemiAxes),
                         value: vector(ax),
-                        reason: "both must be positive and finite".into(),
+                        reason: format!("both {why}"),
                     });
                 }
                 let rot = self
@@ -275,7 +279,7 @@ impl ProfileSpec {
                     unreachable!("refused above")
                 };
                 let rb = scale
-                    * positive(
+                    * length(
                         f(P::BaseRadius),
                         need(kind_field, kind, f(P::BaseRadius), self.base_radius)?,
                     )?;
@@ -284,6 +288,17 @@ impl ProfileSpec {
                     kind: kind.to_string(),
                     missing: key(f(P::Segments)),
                 })?;
+                // a program's work grows with its segments (each is checked and synthesised): a
+                // cam has a handful; thousands are a mistake, refused before the work
+                if segs.len() > MAX_SEGMENTS {
+                    return Err(SpecError::Rule {
+                        field: f(P::Segments),
+                        reason: format!(
+                            "{} segments is more than the {MAX_SEGMENTS} a motion program may have",
+                            segs.len()
+                        ),
+                    });
+                }
                 // rises: lengths for translating followers, degrees of arm angle for oscillating
                 let rise_scale = if follower.is_oscillating() {
                     1f64.to_radians()
@@ -416,7 +431,7 @@ impl ProfileSpec {
         let kind_field = f(P::Kind);
         let kind = "involute-gear";
         let module = scale
-            * positive(
+            * length(
                 f(P::Module),
                 need(kind_field, kind, f(P::Module), self.module)?,
             )?;
@@ -464,12 +479,14 @@ impl ProfileSpec {
                 })
             }
         }
-        InvoluteGear::new(g).map_err(|e| match e {
-            CurveError::Gear {
-                field,
-                value,
-                reason,
-            } => {
+        InvoluteGear::new(g).map_err(|e| match e.field() {
+            Some((field, value)) => {
+                let reason = match &e {
+                    CurveError::Gear { reason, .. } => reason.clone(),
+                    CurveError::NonPositive { .. } => "must be positive and finite".into(),
+                    CurveError::NonFinite { .. } => "must be finite".into(),
+                    other => other.to_string(),
+                };
                 let at = match field {
                     CurveField::Teeth => P::Teeth,
                     CurveField::PressureAngle => P::PressureAngle,
@@ -489,9 +506,9 @@ impl ProfileSpec {
                     reason,
                 }
             }
-            other => SpecError::Rule {
+            None => SpecError::Rule {
                 field: kind_field,
-                reason: other.to_string(),
+                reason: e.to_string(),
             },
         })
     }

@@ -171,3 +171,65 @@ fn energy_balance_and_no_drift_over_a_hundred_revolutions() {
     assert!(worst <= 5e-7 * swing, "{worst} vs {swing}");
     assert!(drift <= 2e-13 * m.size(), "{drift}");
 }
+
+/// Issue 44: the advice for a time step too long for the follower's fastest rate works when
+/// followed, for a cam from fast to very slow: the substeps it names resolve the rate and one
+/// fewer does not; the finer step it names, with the most substeps, resolves it and divides the
+/// revolution; the faster cam it names resolves it at the finest step.
+#[test]
+fn the_time_step_advice_works_when_followed() {
+    use camkin::dynamics::StepAdvice;
+    let (max_sub, min_step) = (1000, 360.0 / 1e7);
+    let mut seen = [false; 3];
+    for rpm in [1000.0, 10.0, 0.1, 1e-3, 1e-9] {
+        let m = mechanism(
+            eccentric_circle(0.03, 0.005),
+            Point2::origin(),
+            Sense::Ccw,
+            rpm,
+            Follower::TranslatingFlat {
+                direction: Vec2::y(),
+            },
+        );
+        let sim = Simulation::new(&m, params(false), AugmentedLagrangian::default()).unwrap();
+        let w = m.cam().speed();
+        match sim.step_advice(1.0, 1, w, max_sub, min_step) {
+            None => {}
+            Some(StepAdvice::Substeps(n)) => {
+                seen[0] = true;
+                assert!(n <= max_sub);
+                assert_eq!(sim.step_advice(1.0, n, w, max_sub, min_step), None, "{rpm}");
+                assert!(
+                    sim.step_advice(1.0, n - 1, w, max_sub, min_step).is_some(),
+                    "{rpm}"
+                );
+            }
+            Some(StepAdvice::FinerStep { step_deg }) => {
+                seen[1] = true;
+                assert_eq!(
+                    sim.step_advice(step_deg, max_sub, w, max_sub, min_step),
+                    None,
+                    "{rpm}"
+                );
+                let n = 360.0 / step_deg;
+                assert!(
+                    (n - n.round()).abs() < 1e-9 * n,
+                    "{step_deg} does not divide 360"
+                );
+                assert!(step_deg >= min_step);
+            }
+            Some(StepAdvice::FasterCam { rpm: faster }) => {
+                seen[2] = true;
+                assert!(faster > rpm);
+                let wf = faster * std::f64::consts::TAU / 60.0;
+                assert_eq!(
+                    sim.step_advice(min_step, max_sub, wf, max_sub, min_step),
+                    None,
+                    "{rpm}"
+                );
+            }
+            Some(other) => panic!("{other:?}"),
+        }
+    }
+    assert_eq!(seen, [true; 3], "each advice reached");
+}
