@@ -42,6 +42,11 @@ pub struct Limits {
     pub workers: usize,
     /// the longest a request waits for its turn before it is refused (503), s
     pub max_wait_seconds: f64,
+    /// the longest a client may take to send a request's headers, s (its connection is closed
+    /// then: clients that never finish cannot hold the server)
+    pub header_seconds: f64,
+    /// the most connections open at once (a new one beyond is closed at once)
+    pub max_connections: usize,
 }
 
 impl Default for Limits {
@@ -54,6 +59,8 @@ impl Default for Limits {
             max_compare_runs: 4,
             workers: std::thread::available_parallelism().map_or(2, |n| n.get()),
             max_wait_seconds: 30.0,
+            header_seconds: 10.0,
+            max_connections: 256,
         }
     }
 }

@@ -91,8 +91,14 @@ pub fn router(session: Session, limits: Limits) -> Router {
         .with_state(state)
 }
 
+/// How long a connection may stay open, requests and idle time together.
+pub const CONNECTION_TIMEOUT: Duration = Duration::from_secs(600);
+
 /// Serves the studio on `listener` until the process ends (a runtime of as many threads as
-/// computations run at once).
+/// computations run at once). Each connection is served by hyper with a header timeout
+/// ([`Limits::header_seconds`]) and a lifetime ([`CONNECTION_TIMEOUT`]); at most
+/// [`Limits::max_connections`] are open at once, well within the process's file descriptors,
+/// so that accepting never fails for lack of them.
 pub fn serve(
     listener: std::net::TcpListener,
     session: Session,
@@ -105,7 +111,34 @@ pub fn serve(
         .build()?;
     runtime.block_on(async move {
         let listener = tokio::net::TcpListener::from_std(listener)?;
-        axum::serve(listener, router(session, limits)).await
+        let app = router(session, limits);
+        let open = Arc::new(Semaphore::new(limits.max_connections.max(1)));
+        let header = Duration::from_secs_f64(limits.header_seconds.max(0.001));
+        loop {
+            let stream = match listener.accept().await {
+                Ok((stream, _)) => stream,
+                // out of descriptors, a connection reset before it was taken: try again shortly
+                Err(_) => {
+                    tokio::time::sleep(Duration::from_millis(20)).await;
+                    continue;
+                }
+            };
+            let Ok(permit) = open.clone().try_acquire_owned() else {
+                drop(stream);
+                continue;
+            };
+            let service = hyper_util::service::TowerToHyperService::new(app.clone());
+            tokio::spawn(async move {
+                let io = hyper_util::rt::TokioIo::new(stream);
+                let mut http = hyper::server::conn::http1::Builder::new();
+                http.timer(hyper_util::rt::TokioTimer::new())
+                    .header_read_timeout(header);
+                let _ =
+                    tokio::time::timeout(CONNECTION_TIMEOUT, http.serve_connection(io, service))
+                        .await;
+                drop(permit);
+            });
+        }
     })
 }
 

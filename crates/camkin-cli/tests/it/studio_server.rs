@@ -350,3 +350,53 @@ fn a_dragged_node_is_written_into_the_text_analysed() {
     assert_eq!(again["result"]["series"], v["result"]["series"]);
     assert_eq!(v["result"]["nodes"], json!(nodes));
 }
+
+/// Issue 44: clients that open connections and never finish their headers cannot lock anyone
+/// out: each is closed after the header timeout, connections beyond the cap are closed at once,
+/// and a normal client is answered within a few timeouts (1 100 such clients used to hold the
+/// server for good).
+#[test]
+fn clients_that_never_finish_their_headers_cannot_lock_anyone_out() {
+    let limits = Limits {
+        header_seconds: 1.0,
+        max_connections: 64,
+        ..Limits::default()
+    };
+    let addr = start(None, limits);
+    let slow: Vec<TcpStream> = (0..300)
+        .filter_map(|_| {
+            let mut s = TcpStream::connect(addr).ok()?;
+            let _ = s.write_all(b"GET /api/session HTTP/1.1\r\nHost: x\r\n");
+            Some(s)
+        })
+        .collect();
+    assert!(slow.len() > 64);
+    let t0 = std::time::Instant::now();
+    loop {
+        let (status, _) = raw(
+            addr,
+            b"GET /api/session HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n",
+        );
+        if status == 200 {
+            break;
+        }
+        assert!(t0.elapsed() < Duration::from_secs(10), "locked out");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    // the slow clients' connections were closed by the server
+    let mut closed = 0;
+    for mut s in slow {
+        s.set_read_timeout(Some(Duration::from_secs(5))).unwrap();
+        let mut buf = [0u8; 256];
+        // closed: an end of file (or a reset), not a read that times out waiting
+        match s.read(&mut buf) {
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut
+                ) => {}
+            _ => closed += 1,
+        }
+    }
+    assert_eq!(closed, 300);
+}
