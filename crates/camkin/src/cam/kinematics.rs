@@ -37,7 +37,7 @@ impl Mechanism {
         let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
         // a named kind: the closed-form rates at the contact (no normal, body states or
         // constraint row); declined near a refusal, where the paper's method says why
-        if self.touch.geometry.carried.is_none() {
+        if self.touch.geometry.carried.is_none() && touch.corner.is_none() {
             let profile = self.touch.cam.profile.as_ref();
             let fast = dispatch!(&self.touch.geometry.model, k => {
                 let at = curve_in(frame, profile, touch.u);
@@ -159,6 +159,14 @@ impl Mechanism {
                 let corner = PointCurve::new(self.touch.cam.profile.position(t.u))?;
                 let a = Surface::new(&corner, cam);
                 let b = Surface::new(carried.curve.as_ref(), body_b);
+                ContactKinematics::new(&a, &b, &pairing, tol)
+            }
+            // a named follower resting on a corner of the cam: the corner is a point of the cam
+            (Some(Corner::Cam), None) => {
+                let corner = PointCurve::new(self.touch.cam.profile.position(t.u))?;
+                let curve = g.curve.clone().to_arc();
+                let a = Surface::new(&corner, cam);
+                let b = Surface::new(curve.as_ref(), body_b);
                 ContactKinematics::new(&a, &b, &pairing, tol)
             }
             (corner, _) => {

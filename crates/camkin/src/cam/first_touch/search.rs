@@ -415,6 +415,17 @@ impl FirstTouch {
                 Err(e) => last_err = Some(e),
             }
         }
+        // a corner of the cam (a gear's tip, a relief's start) on which the follower rests has
+        // no tangency: it is the first touch when it is ahead of every tangency found and of
+        // every sample (the first-touch function peaks at it)
+        let corner = self.best_corner(frame).filter(|c| {
+            let ahead = self.oriented(c.q) + self.touch_slack();
+            ahead >= best_sample
+                && best.is_none_or(|b| self.oriented(c.q) > self.oriented(b.q) + self.touch_slack())
+        });
+        if let Some(c) = corner {
+            return Ok(c);
+        }
         let best = best.ok_or_else(|| {
             last_err.unwrap_or(CamError::NoConvergence {
                 angle_deg: theta.to_degrees(),
@@ -430,6 +441,29 @@ impl FirstTouch {
             });
         }
         Ok(best)
+    }
+
+    /// The cam corner a named follower touches first, as a touch at that corner (the follower's
+    /// first-touch position through the corner's point).
+    fn best_corner(&self, frame: &Frame) -> Option<Touch> {
+        let mut best: Option<(f64, Touch)> = None;
+        for &(u, p) in &self.corners.at {
+            let world = frame * p;
+            if let Some((score, q)) = self.geometry.model.score(world) {
+                if best.as_ref().is_none_or(|b| score > b.0) {
+                    best = Some((
+                        score,
+                        Touch {
+                            u,
+                            q,
+                            v: 0.0,
+                            corner: Some(crate::cam::Corner::Cam),
+                        },
+                    ));
+                }
+            }
+        }
+        best.map(|b| b.1)
     }
 }
 
