@@ -229,10 +229,10 @@ impl Mechanism {
         let body_b = g.joint.body(touch.q, qd, qdd);
         // a roller's centre (a circle on the follower turns on its pin: the force passes through
         // it), else the contact point
-        let reference_point = g
-            .curve
-            .circle()
-            .map_or(c, |r| body_b.pose.to_world(r.center()));
+        let reference_motion = match g.curve.circle() {
+            Some(r) => g.joint.velocity_jacobian(body_b.pose.to_world(r.center())),
+            None => jb,
+        };
         let kappa_conv = self.touch.orientation * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
         // none where a curve's third derivative jumps (a spline node, a piece joint of the
@@ -269,8 +269,7 @@ impl Mechanism {
             normal: UnitVec2::new_unchecked(nu),
             sigma: k.sigma,
             follower_motion: jb,
-            reference_point,
-            reference_motion: g.joint.velocity_jacobian(reference_point),
+            reference_motion,
             radius_of_curvature: 1.0 / kappa_conv,
             at_breakpoint,
             corner: touch.corner,

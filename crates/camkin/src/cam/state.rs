@@ -54,13 +54,11 @@ pub struct FollowerState {
     /// its coordinate (`∂v_B^P/∂q̇`: `d` for translating followers, `k × (c − O)` for
     /// oscillating ones), world frame: what the contact force does work along
     pub follower_motion: Vec2,
-    /// the follower's reference point, world: a roller's centre (the follower's curve is a
-    /// circle, named or carried: it turns on its pin, and the force passes through it), else the
-    /// contact point (a knife's tip, a flat or curved face, a gear's flank); see
-    /// [`FollowerState::pressure_angle`]
-    pub reference_point: Point2,
-    /// direction of motion of the reference point per unit rate of the follower's coordinate,
-    /// world (`d` for translating followers, `k × (R − O)` for oscillating ones)
+    /// direction of motion of the follower's reference point per unit rate of its coordinate,
+    /// world (`d` for translating followers, `k × (R − O)` for oscillating ones): the reference
+    /// point is a roller's centre (the follower's curve is a circle, named or carried: it turns
+    /// on its pin, and the force passes through it), else the contact point (a knife's tip, a
+    /// flat or curved face, a gear's flank); see [`FollowerState::pressure_angle`]
     pub reference_motion: Vec2,
     /// radius of curvature of the cam profile at the contact, positive where convex (∞ on a
     /// straight stretch), length
