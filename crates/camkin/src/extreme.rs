@@ -20,36 +20,16 @@ pub fn refine(
     if !(b > a) {
         return at;
     }
-    let (a0, b0) = (a, b);
     let score = |t: f64| {
         f(t).filter(|v| v.is_finite())
             .map_or(f64::NEG_INFINITY, |v| sign * v)
     };
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut a, mut b) = (a, b);
-    let mut c = b - g * (b - a);
-    let mut d = a + g * (b - a);
-    let (mut fc, mut fd) = (score(c), score(d));
-    for _ in 0..STEPS {
-        if fc >= fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - g * (b - a);
-            fc = score(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + g * (b - a);
-            fd = score(d);
-        }
-    }
-    let (t, s) = if fc >= fd { (c, fc) } else { (d, fd) };
+    let (t, worst) = crate::cam::golden::golden_min(|t| -score(t), a, b, STEPS, |_| false);
+    let s = -worst;
     // the search locates an extreme to about 1e-8 of its bracket (the quantity is flat there):
     // a move below 1e-5 of it is the sample itself (the value differs by 1e-10 of the bracket's
     // curvature there)
-    if s > sign * at.1 && (t - at.0).abs() > 1e-5 * (b0 - a0) {
+    if s > sign * at.1 && (t - at.0).abs() > 1e-5 * (b - a) {
         (t, sign * s)
     } else {
         at

@@ -40,6 +40,15 @@ fn workspace() -> tempfile::TempDir {
     dir
 }
 
+/// Staging folders left in `d`.
+fn strays(d: &Path) -> Vec<String> {
+    std::fs::read_dir(d)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".camkin-"))
+        .collect()
+}
+
 fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
     let mut v: Vec<(PathBuf, Vec<u8>)> = std::fs::read_dir(dir)
         .unwrap()
@@ -205,12 +214,7 @@ fn results_folders_change_whole_and_never_take_an_input_or_a_strangers_file() {
             "{c:?}: a stale result survived"
         );
         // no staging folder left beside it
-        let strays: Vec<String> = std::fs::read_dir(d)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .filter(|n| n.contains(".camkin-"))
-            .collect();
-        assert!(strays.is_empty(), "{c:?}: {strays:?}");
+        assert!(strays(d).is_empty(), "{c:?}: {:?}", strays(d));
     }
 }
 
@@ -281,12 +285,7 @@ fn an_interrupted_run_leaves_the_old_folder() {
     let status = child.wait().unwrap();
     assert!(!status.success());
     assert_eq!(snapshot(&out), before);
-    let strays: Vec<String> = std::fs::read_dir(d)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n.contains(".camkin-"))
-        .collect();
-    assert!(strays.is_empty(), "{strays:?}");
+    assert!(strays(d).is_empty(), "{:?}", strays(d));
 }
 
 /// Issue 44: a run whose stderr cannot be written (`/dev/full`, closed) never panics (exit

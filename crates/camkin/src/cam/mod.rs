@@ -21,7 +21,7 @@ mod derivatives;
 mod error;
 mod first_touch;
 mod follower;
-mod golden;
+pub(crate) mod golden;
 mod instant;
 mod jet;
 mod jumps;

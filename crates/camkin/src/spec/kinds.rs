@@ -35,6 +35,10 @@ macro_rules! kinds {
             pub fn parse(s: &str) -> Option<Self> {
                 Self::ALL.iter().copied().find(|k| k.name() == s)
             }
+            /// The kinds' names for a message: `spline, circle, …`.
+            pub fn names() -> String {
+                Self::ALL.iter().map(|k| k.name()).collect::<Vec<_>>().join(", ")
+            }
         }
         impl std::fmt::Display for $name {
             fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -85,28 +89,6 @@ kinds! {
         /// a roller on an arm
         OscillatingRoller = "oscillating-roller" [Pivot, ArmLength, RollerRadius, Closing,
             InitialAngle],
-    }
-}
-
-impl ProfileKind {
-    /// The kinds' names for a message: `spline, circle, …, line, point`.
-    pub fn names() -> String {
-        Self::ALL
-            .iter()
-            .map(|k| k.name())
-            .collect::<Vec<_>>()
-            .join(", ")
-    }
-}
-
-impl FollowerKind {
-    /// The kinds' names for a message.
-    pub fn names() -> String {
-        Self::ALL
-            .iter()
-            .map(|k| k.name())
-            .collect::<Vec<_>>()
-            .join(", ")
     }
 }
 

@@ -153,18 +153,33 @@ pub fn parse_json(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
     serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
-        let path = (!path.is_empty() && path != ".").then_some(path);
-        TextError {
-            message: match &path {
-                Some(p) => format!("{name}: {p}: {inner}"),
-                None => format!("{name}: {inner}"),
-            },
-            at: (inner.line() > 0).then(|| (inner.line(), inner.column())),
-            path,
-            problem: TextProblem::Syntax { value: None },
-            name: name.to_string(),
-        }
+        let at = (inner.line() > 0).then(|| (inner.line(), inner.column()));
+        syntax(name, path, &inner, at, |_| None)
     })
+}
+
+/// A value of the wrong type or shape at key path `path` (`.` or empty: the whole text), with
+/// where it is and, when `value` finds it, the value as written.
+fn syntax(
+    name: &str,
+    path: String,
+    inner: &dyn std::fmt::Display,
+    at: Option<(usize, usize)>,
+    value: impl FnOnce(&str) -> Option<String>,
+) -> TextError {
+    let path = (!path.is_empty() && path != ".").then_some(path);
+    TextError {
+        message: match &path {
+            Some(p) => format!("{name}: {p}: {inner}"),
+            None => format!("{name}: {inner}"),
+        },
+        at,
+        problem: TextProblem::Syntax {
+            value: path.as_deref().and_then(value),
+        },
+        path,
+        name: name.to_string(),
+    }
 }
 
 /// The spec in a TOML value tree (`name` for messages): what a Python dict becomes, its floats
@@ -173,20 +188,7 @@ pub fn parse_json(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
 pub fn from_value(value: toml::Value, name: &str) -> Result<MechanismSpec, TextError> {
     serde_path_to_error::deserialize(value.clone()).map_err(|e| {
         let path = e.path().to_string();
-        let inner = e.into_inner();
-        let path = (!path.is_empty() && path != ".").then_some(path);
-        TextError {
-            message: match &path {
-                Some(p) => format!("{name}: {p}: {inner}"),
-                None => format!("{name}: {inner}"),
-            },
-            at: None,
-            problem: TextProblem::Syntax {
-                value: path.as_deref().and_then(|p| value_at(&value, p)),
-            },
-            path,
-            name: name.to_string(),
-        }
+        syntax(name, path, &e.into_inner(), None, |p| value_at(&value, p))
     })
 }
 
