@@ -45,6 +45,23 @@ fn pair(field: &str, v: &[f64]) -> PyResult<Point2> {
     }
 }
 
+/// A size the computation takes, as in a mechanism file: from 1e-100 to 1e100.
+fn size(field: &str, v: f64) -> PyResult<f64> {
+    let (lo, hi) = camkin::cam::LENGTH_RANGE;
+    if v.is_finite() && (lo..=hi).contains(&v) {
+        Ok(v)
+    } else {
+        Err(errors::input(
+            field,
+            Some(camkin::human::human(v)),
+            format!(
+                "{field} = {}: must be from 1e-100 to 1e100",
+                camkin::human::human(v)
+            ),
+        ))
+    }
+}
+
 impl PyCurve {
     fn make(kind: &str, args: &[f64], chord: bool) -> PyResult<Self> {
         let (kind, curve): (&'static str, Arc<dyn Curve>) = match kind {
@@ -55,23 +72,47 @@ impl PyCurve {
                 } else {
                     Parameterization::Uniform
                 };
-                (
-                    "spline",
-                    Arc::new(
-                        ClosedSpline::with_parameterization(&pts, p)
-                            .map_err(|e| curve_err("points", e))?,
-                    ),
-                )
+                let s = ClosedSpline::with_parameterization(&pts, p)
+                    .map_err(|e| curve_err("points", e))?;
+                // the file's rules: points that enclose no area (collinear: the spline runs out
+                // and back along a line) and a spline that crosses itself are no profile
+                let size = pts.iter().map(|p| p.coords.norm()).fold(0.0, f64::max);
+                let area2: f64 = (0..pts.len())
+                    .map(|i| {
+                        let (a, b) = (pts[i], pts[(i + 1) % pts.len()]);
+                        a.x * b.y - a.y * b.x
+                    })
+                    .sum();
+                if !(area2.abs() > 1e-9 * size * size) {
+                    return Err(errors::input(
+                        "points",
+                        None,
+                        "points: they enclose no area: are they collinear?".into(),
+                    ));
+                }
+                if let Some((_, _, x)) = s.self_intersection() {
+                    return Err(errors::input(
+                        "points",
+                        None,
+                        format!(
+                            "points: the spline through the points crosses itself near ({}, {})",
+                            camkin::human::human(x.x),
+                            camkin::human::human(x.y)
+                        ),
+                    ));
+                }
+                ("spline", Arc::new(s))
             }
-            "circle" => (
-                "circle",
+            "circle" => ("circle", {
+                size("radius", args[2])?;
                 Arc::new(
                     Circle::new(Point2::new(args[0], args[1]), args[2])
                         .map_err(|e| curve_err("radius", e))?,
-                ),
-            ),
-            "ellipse" => (
-                "ellipse",
+                )
+            }),
+            "ellipse" => ("ellipse", {
+                size("semi_axes[0]", args[2])?;
+                size("semi_axes[1]", args[3])?;
                 Arc::new(
                     Ellipse::new(
                         Point2::new(args[0], args[1]),
@@ -80,8 +121,8 @@ impl PyCurve {
                         args[4].to_radians(),
                     )
                     .map_err(|e| curve_err("semi_axes", e))?,
-                ),
-            ),
+                )
+            }),
             "line" => (
                 "line",
                 Arc::new(

@@ -111,3 +111,23 @@ def test_curve_eval_against_the_circle():
     assert np.allclose(e["r"], [1 + 2 * math.cos(0.5), 2 * math.sin(0.5)], atol=1e-15)
     assert e["curvature"] == pytest.approx(0.5)
     assert c.domain == ("periodic", 0.0, pytest.approx(2 * math.pi))
+
+
+def test_curves_take_what_a_mechanism_file_takes():
+    # issue 44: collinear points fold the spline (the file refuses them; Python took them), and a
+    # semi-axis of 1e-300 is below the sizes the computation keeps (every row failed later)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Spline([[0, 0], [1, 0], [2, 0], [3, 0]])
+    assert e.value.field == "points" and "collinear" in str(e.value)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Spline([[0, 0], [2, 2], [2, 0], [0, 2], [-1, 1]])
+    assert e.value.field == "points" and "crosses itself" in str(e.value)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Ellipse((0, 0), (1e-300, 1))
+    assert e.value.field == "semi_axes[0]" and "1e-100" in str(e.value)
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Circle((0, 0), 1e101)
+    assert e.value.field == "radius"
+    # at the edges of the range they are taken
+    camkin.Circle((0, 0), 1e-100)
+    camkin.Ellipse((0, 0), (1e100, 1.0))
