@@ -62,6 +62,7 @@ impl Mechanism {
                 prepared: Default::default(),
                 index: Arc::default(),
                 sample_points: Vec::new(),
+                sample_chord: 0.0,
                 period,
                 size,
                 orientation,

@@ -292,3 +292,77 @@ fn the_estimate_of_a_carried_curves_sweep_is_not_below_its_time() {
         );
     }
 }
+
+/// Issue 44: a carried curve far smaller than the cam's sample spacing is found at every angle
+/// (a 0.03 mm circle on a 40 × 30 mm ellipse was refused as "cannot reach the cam" at 23 of 24
+/// angles): the band of levels it spans falls between samples, and the cam's own point in it
+/// is found by bisection. Against the named roller of the same radius (exact to 1e-15 there),
+/// and a 0.04 × 0.025 mm carried ellipse between the rollers of its two semi-axes.
+#[test]
+fn a_tiny_carried_curve_is_found_between_the_cams_samples() {
+    let cam = || {
+        Cam::from_rpm(
+            ellipse(40.0, 30.0, Point2::origin(), 0.0),
+            Point2::origin(),
+            Sense::Ccw,
+            100.0,
+        )
+        .unwrap()
+    };
+    let carried = |c: Arc<dyn camkin::curve::Curve>| {
+        Mechanism::new(
+            cam(),
+            Follower::Translating {
+                direction: Vec2::y(),
+                offset: 0.0,
+                profile: FollowerProfile(c),
+            },
+        )
+        .unwrap()
+    };
+    let roller = |r: f64| {
+        Mechanism::new(
+            cam(),
+            Follower::TranslatingRoller {
+                direction: Vec2::y(),
+                offset: 0.0,
+                roller_radius: r,
+            },
+        )
+        .unwrap()
+    };
+    let circle = carried(Arc::new(
+        camkin::curve::Circle::new(Point2::origin(), 0.03).unwrap(),
+    ));
+    let small = carried(Arc::new(
+        camkin::curve::Ellipse::new(Point2::origin(), 0.04, 0.025, 0.0).unwrap(),
+    ));
+    let (named, lo, hi) = (roller(0.03), roller(0.025), roller(0.04));
+    for k in 0..72 {
+        let t = (k as f64 * 5.0 + 0.3).to_radians();
+        let (a, b) = (circle.analyze(t).unwrap(), named.analyze(t).unwrap());
+        assert!(
+            (a.position - b.position).abs() < 1e-9,
+            "at {k}: {} against {}",
+            a.position,
+            b.position
+        );
+        assert!(
+            (a.velocity - b.velocity).abs() < 1e-7 * b.velocity.abs().max(1.0),
+            "at {k}"
+        );
+        assert!(
+            (a.acceleration - b.acceleration).abs() < 1e-6 * b.acceleration.abs().max(1.0),
+            "at {k}"
+        );
+        let q = small.analyze(t).unwrap().position;
+        let (ql, qh) = (
+            lo.analyze(t).unwrap().position,
+            hi.analyze(t).unwrap().position,
+        );
+        assert!(
+            q >= ql - 1e-9 && q <= qh + 1e-9,
+            "at {k}: {q} not in [{ql}, {qh}]"
+        );
+    }
+}

@@ -53,7 +53,9 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
         let (lo, hi) = self.c.level_range;
         let joint = &self.m.geometry.joint;
         let level = joint.level(x - joint.origin());
-        let slack = r * (1.0 + 1e-12);
+        // grown by the longest chord: a band narrower than the samples' spacing may be crossed
+        // between a leaf's last sample and the next leaf's first
+        let slack = (r + self.m.sample_chord) * (1.0 + 1e-12);
         (level + slack >= lo && level - slack <= hi).then_some(0.0)
     }
     fn floor(&self) -> f64 {
@@ -64,14 +66,48 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
         let joint = &m.geometry.joint;
         let (lo, hi) = c.level_range;
         let params = &m.index.dense.params[first..last];
+        let all = &m.index.dense.params;
         for (k, (&u, &y)) in params.iter().zip(&m.sample_points[first..last]).enumerate() {
             let x = self.frame * y;
             // the level first: most points of a large driver are beyond an arm's reach (and an
             // arm's `along` is an arctangent)
-            let y = x - joint.origin();
-            let level = joint.level(y);
+            let mut y = x - joint.origin();
+            let mut level = joint.level(y);
+            let mut u = u;
             if !(level >= lo && level <= hi) {
-                continue;
+                // a band narrower than the samples' spacing (a tiny carried curve) may fall
+                // between this sample and the next: the cam's own point within it, by bisection
+                // on the chord's stretch of the profile
+                let next = first + k + 1;
+                let (un, yn) = match (all.get(next), m.sample_points.get(next)) {
+                    (Some(&un), Some(&yn)) => (un, yn),
+                    _ if !all.is_empty() => (all[0] + m.period, m.sample_points[0]),
+                    _ => continue,
+                };
+                let ln = joint.level(self.frame * yn - joint.origin());
+                if !((level < lo && ln > hi) || (level > hi && ln < lo)) {
+                    continue;
+                }
+                let profile = m.cam.profile.as_ref();
+                let at = |t: f64| joint.level(self.frame * profile.position(t) - joint.origin());
+                let (mut a, mut b, rising) = (u, un, level < lo);
+                let mut found = None;
+                for _ in 0..80 {
+                    let mid = 0.5 * (a + b);
+                    let l = at(mid);
+                    if l >= lo && l <= hi {
+                        found = Some((mid, l));
+                        break;
+                    }
+                    if (l < lo) == rising {
+                        a = mid;
+                    } else {
+                        b = mid;
+                    }
+                }
+                let Some((um, lm)) = found else { continue };
+                (u, level) = (um.rem_euclid(m.period), lm);
+                y = self.frame * profile.position(u) - joint.origin();
             }
             let (along, scale) = (joint.along(y), joint.along_length(level));
             self.inside.clear();

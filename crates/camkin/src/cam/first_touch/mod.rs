@@ -31,6 +31,8 @@ pub(crate) struct FirstTouch {
     pub(crate) index: Arc<starts::SearchIndex>,
     /// the profile's points at the dense samples (cam frame), for the coverage of a carried curve
     pub(crate) sample_points: Vec<Point2>,
+    /// the longest chord between neighbouring `sample_points` (0 without them)
+    pub(crate) sample_chord: f64,
     pub(crate) period: f64,
     pub(crate) size: f64,
     pub(crate) orientation: f64,
@@ -68,6 +70,10 @@ impl FirstTouch {
         } else {
             Vec::new()
         };
+        let n = self.sample_points.len();
+        self.sample_chord = (0..n)
+            .map(|i| (self.sample_points[(i + 1) % n] - self.sample_points[i]).norm())
+            .fold(0.0, f64::max);
         let coarse = search::bracket_samples(
             &self.breakpoints,
             self.period,
