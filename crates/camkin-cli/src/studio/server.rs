@@ -203,7 +203,19 @@ fn parse<T: serde::de::DeserializeOwned>(
     body: Result<Bytes, BytesRejection>,
     limits: &Limits,
 ) -> Result<T, StudioError> {
-    let bytes = body.map_err(|r| {
+    from_json(&read_body(body, limits)?)
+}
+
+/// The bytes as the JSON of a request of type `T`.
+fn from_json<T: serde::de::DeserializeOwned>(bytes: &[u8]) -> Result<T, StudioError> {
+    serde_json::from_slice(bytes).map_err(|e| StudioError::BadRequest {
+        message: format!("the request is not the JSON expected: {e}"),
+    })
+}
+
+/// The body's bytes, or why they could not be read (too large, cut off).
+fn read_body(body: Result<Bytes, BytesRejection>, limits: &Limits) -> Result<Bytes, StudioError> {
+    body.map_err(|r| {
         if r.status() == StatusCode::PAYLOAD_TOO_LARGE {
             StudioError::TooLarge {
                 message: format!(
@@ -216,9 +228,6 @@ fn parse<T: serde::de::DeserializeOwned>(
                 message: format!("cannot read the request: {}", r.body_text()),
             }
         }
-    })?;
-    serde_json::from_slice(&bytes).map_err(|e| StudioError::BadRequest {
-        message: format!("the request is not the JSON expected: {e}"),
     })
 }
 
@@ -258,6 +267,19 @@ fn request_text(req: &AnalyzeRequest) -> Result<String, StudioError> {
     }
 }
 
+/// An analysis request's body read and checked as the server does before any work: the JSON,
+/// the step, the pressure-angle limit and the dragged nodes written into the text. Returns
+/// `(text, step, limit)`. Public for the fuzz target of the request parsing.
+pub fn check_analysis_request(
+    body: &[u8],
+    limits: &Limits,
+) -> Result<(String, f64, f64), StudioError> {
+    let req: AnalyzeRequest = from_json(body)?;
+    let step_deg = step(req.step_deg, limits)?;
+    let limit = pressure_limit(req.pressure_limit_deg)?;
+    Ok((request_text(&req)?, step_deg, limit))
+}
+
 /// Runs `work` on an analysis request's text (with its dragged nodes written in), step and
 /// pressure-angle limit, all checked first.
 async fn with_analysis_request<T: Send + 'static>(
@@ -265,15 +287,10 @@ async fn with_analysis_request<T: Send + 'static>(
     body: Result<Bytes, BytesRejection>,
     work: impl FnOnce(String, &Source, f64, f64, &Limits) -> Result<T, StudioError> + Send + 'static,
 ) -> Result<T, StudioError> {
-    let req: AnalyzeRequest = parse(body, &state.limits)?;
-    let step_deg = step(req.step_deg, &state.limits)?;
-    let limit = pressure_limit(req.pressure_limit_deg)?;
+    let bytes = read_body(body, &state.limits)?;
+    let (toml, step_deg, limit) = check_analysis_request(&bytes, &state.limits)?;
     let (source, limits) = (state.session.source.clone(), state.limits);
-    run(state, move || {
-        let toml = request_text(&req)?;
-        work(toml, &source, step_deg, limit, &limits)
-    })
-    .await
+    run(state, move || work(toml, &source, step_deg, limit, &limits)).await
 }
 
 /// A download: `body` of `content_type`, saved as `filename`.
