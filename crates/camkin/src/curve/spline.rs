@@ -179,6 +179,33 @@ impl ClosedSpline {
             hi = Point2::new(hi.x.max(a.x), hi.y.max(a.y));
             max_len = max_len.max((b - a).norm());
         }
+        // the whole test in coordinates scaled to the nodes' extent: a spline near f64's limits
+        // (a points file of 1e300s) has a width or chords that overflow, and a grid of them no
+        // cells (found by fuzzing: an index out of bounds)
+        let extent = self
+            .nodes
+            .iter()
+            .fold(0.0f64, |e, p| e.max(p.x.abs()).max(p.y.abs()));
+        if !(extent.is_finite() && extent > 0.0) {
+            return None;
+        }
+        if extent > 1e100 || !(max_len.is_finite() && (hi - lo).norm().is_finite()) {
+            let k = 1.0 / extent;
+            let scaled: Vec<Point2> = self
+                .nodes
+                .iter()
+                .map(|p| Point2::new(k * p.x, k * p.y))
+                .collect();
+            let small = ClosedSpline::with_parameterization(&scaled, self.parameterization).ok()?;
+            // chord-length parameters scale with the lengths; uniform ones do not
+            let u = match self.parameterization {
+                Parameterization::ChordLength => extent,
+                Parameterization::Uniform => 1.0,
+            };
+            return small
+                .self_intersection()
+                .map(|(a, b, p)| (a * u, b * u, Point2::new(p.x * extent, p.y * extent)));
+        }
         // cells about as large as the longest chord, at most ~4m of them
         let (w, h) = (hi.x - lo.x, hi.y - lo.y);
         let mut cell = max_len.max(1e-300);
@@ -377,6 +404,39 @@ mod tests {
             .self_intersection()
             .expect("crossing");
         assert!(p.coords.norm() < 1e-2, "{p}");
+        // the same near f64's limits (found by fuzzing: the grid's width overflowed to an
+        // index out of bounds), both parameterisations, the crossing's parameters unscaled
+        for param in [Parameterization::Uniform, Parameterization::ChordLength] {
+            let (a0, b0, p0) = ClosedSpline::with_parameterization(&eight, param)
+                .unwrap()
+                .self_intersection()
+                .unwrap();
+            let big: Vec<Point2> = eight
+                .iter()
+                .map(|p| Point2::new(4e300 * p.x, 4e300 * p.y))
+                .collect();
+            let s = ClosedSpline::with_parameterization(&big, param).unwrap();
+            let (a, b, p) = s.self_intersection().expect("crossing");
+            assert!((p.coords / 4e300 - p0.coords).norm() < 1e-9, "{p} {p0}");
+            // the same places on the curve: the parameters of the unscaled spline's, scaled
+            // with the chord lengths when the parameterisation follows them
+            let k = if param == Parameterization::ChordLength {
+                4e300
+            } else {
+                1.0
+            };
+            assert!(
+                (a - k * a0).abs() <= 1e-9 * k * a0.abs().max(1.0),
+                "{a} {a0}"
+            );
+            assert!(
+                (b - k * b0).abs() <= 1e-9 * k * b0.abs().max(1.0),
+                "{b} {b0}"
+            );
+        }
+        let mut far = paper_nodes();
+        far[3] = Point2::new(-4.4e300, 0.6);
+        let _ = ClosedSpline::new(&far).map(|s| s.self_intersection());
     }
 
     #[test]
