@@ -59,6 +59,11 @@ impl OutDir {
         })
     }
 
+    /// [`OutDir::begin`] when an optional `--out` (or `--plot`) folder is given.
+    pub fn begin_if(target: Option<&Path>, force: bool) -> Result<Option<Self>, crate::Failure> {
+        target.map(|t| Self::begin(t, force)).transpose()
+    }
+
     fn check(target: &Path, force: bool) -> Result<()> {
         let meta = std::fs::symlink_metadata(target);
         if let Ok(m) = &meta {

@@ -370,11 +370,7 @@ pub fn run_compare(args: &CompareArgs) -> Result<(), Failure> {
         1,
         args.work.large,
     )?;
-    let od = args
-        .out
-        .as_ref()
-        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
-        .transpose()?;
+    let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let study = study::run(&mech, nodes, step, &title).map_err(Failure::Input)?;
     if let Some(od) = &od {
         write_files(&study, od.path(), &title, &u, zoom).map_err(Failure::output)?;

@@ -134,11 +134,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
         args.work.large,
         ", or use a coarser --step",
     )?;
-    let od = args
-        .out
-        .as_ref()
-        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
-        .transpose()?;
+    let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let thetas: Vec<f64> = (0..m).map(|k| (k as f64 * step).to_radians()).collect();
     let sweep = |mm: &Mechanism| -> Result<Vec<[f64; 4]>, Failure> {
         let t = mm

@@ -87,11 +87,7 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     // the folder is checked before any work (a file in its place, an input in it, someone
     // else's files)
-    let od = args
-        .out
-        .as_ref()
-        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
-        .transpose()?;
+    let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let req = ForceRequest {
         step_deg: args.step.deg(),
         margin: args.margin,

@@ -73,11 +73,7 @@ fn micro_length(unit: LengthUnit) -> (&'static str, f64) {
 pub fn run(args: &MeshArgs) -> Result<(), Failure> {
     let loaded = load(args.mechanism.as_ref())?;
     args.table.check()?;
-    let od = args
-        .plot
-        .as_ref()
-        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
-        .transpose()?;
+    let od = crate::out_dir::OutDir::begin_if(args.plot.as_deref(), args.force.force)?;
     let mech = &loaded.mech;
     let pair = GearPair::new(mech).map_err(|e| {
         Failure::Input(anyhow!(

@@ -115,11 +115,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         args.work.large,
         ", or simulate fewer --revolutions",
     )?;
-    let od = args
-        .out
-        .as_ref()
-        .map(|d| crate::out_dir::OutDir::begin(d, args.force.force))
-        .transpose()?;
+    let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let w = mech.cam().speed();
     let h = step.to_radians() / w / args.substeps as f64;
     // the damping and the spring must be resolved by the time step (the library refuses a longer
