@@ -41,6 +41,7 @@ use crate::geometry::{Point2, Vec2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use trochoid::Trochoid;
 
+mod joints;
 mod trochoid;
 
 /// How tip relief grows from its start to the tip.
@@ -519,19 +520,7 @@ impl InvoluteGear {
                 (a.cos(), a.sin())
             })
             .collect();
-        let mut breakpoints = Vec::with_capacity(z as usize * 2 * half.len());
-        for k in 0..z {
-            let base = f64::from(k) * 2.0 * half_len;
-            // the joints of the half tooth and their mirror images; the middle of the space and
-            // of the tip circle are smooth
-            for p in &half[1..] {
-                breakpoints.push(base + p.start);
-            }
-            for p in half[1..].iter().rev() {
-                breakpoints.push(base + 2.0 * half_len - p.start);
-            }
-        }
-        Ok(Self {
+        let mut gear = Self {
             spec,
             rb,
             ra,
@@ -543,8 +532,10 @@ impl InvoluteGear {
             half,
             half_len,
             turns,
-            breakpoints,
-        })
+            breakpoints: Vec::new(),
+        };
+        gear.breakpoints = gear.joints();
+        Ok(gear)
     }
 
     /// The data the gear was built from.

@@ -306,3 +306,48 @@ fn flat_face_on_a_gear_rests_on_its_tip_corners() {
         "{on_corner} on corners, {on_land} on lands"
     );
 }
+
+/// Regression (issue 44): at a tip land's edge the face rests on the land (`r_a`) until the
+/// face's normal leaves the land, then on its corner (`r_a cos δ`). Just inside the edge the best
+/// sample is the corner, and Newton started there wandered down the flank: the named face
+/// answered the corner, 1.2e-5 mm below the land, with no warning, and the face carried as a line
+/// refused those angles (a joint's rounding hid one tip corner in ten). Both, at every land's
+/// two edges, from 0.1° inside to 0.1° outside in steps of 0.001°, against the closed form.
+#[test]
+fn a_flat_face_at_a_tip_lands_edge_rests_on_the_land_or_the_corner() {
+    let face = face_on_a_spur_gear();
+    let (ra, psi_a) = (face.ra, face.psi_a);
+    let named = mechanism(
+        Arc::new(InvoluteGear::new(InvoluteGearSpec::new(2.0, 20, 20f64.to_radians())).unwrap()),
+        Point2::origin(),
+        Sense::Ccw,
+        1000.0,
+        Follower::TranslatingFlat {
+            direction: Vec2::x(),
+        },
+    );
+    let mut checked = 0;
+    for (name, mech) in [("named", &named), ("carried", &face.mech)] {
+        for c in &face.centres {
+            for side in [-1.0, 1.0] {
+                for j in -100..=100 {
+                    // the face's normal (+x) seen from the gear is at −θ, `dist` from the centre
+                    let dist = psi_a + f64::from(j) * 0.001f64.to_radians();
+                    let theta = -(c + side * dist);
+                    let delta = (dist - psi_a).max(0.0);
+                    let s = mech.analyze(theta).unwrap();
+                    assert!(
+                        (s.position - ra * delta.cos()).abs() <= 1e-12 * ra,
+                        "{name} at {:.4}° ({j} thousandths of a degree past the edge): {} \
+                         against {}",
+                        theta.to_degrees(),
+                        s.position,
+                        ra * delta.cos()
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 2 * 20 * 2 * 201);
+}

@@ -384,9 +384,11 @@ impl FirstTouch {
         let mut best: Option<Touch> = None;
         let mut last_err = None;
         let spacing = self.period / self.index.dense.params.len().max(1) as f64;
-        for &(_, u0, q0) in starts.as_slice() {
-            // a start from which Newton wanders (the profile turning sharply near it) is first
-            // moved to the sampled maximum's peak by golden-section search on the score
+        for &(score, u0, q0) in starts.as_slice() {
+            // a start from which Newton wanders (the profile turning sharply near it, or a
+            // corner next to a tangency) is first moved to the sampled maximum's peak by
+            // golden-section search on the score. A wander shows as a failure or as a tangency
+            // behind the sample it started from (a local maximum is never below its samples)
             let refined = || {
                 let (u1, q1) = self.score_peak(frame, u0 - spacing, u0 + spacing)?;
                 self.newton(at, u1, q1).ok()
@@ -398,6 +400,9 @@ impl FirstTouch {
                         ..
                     },
                 ) if !on_path => refined().ok_or(e),
+                Ok(t) if !on_path && self.oriented(t.q) < score - self.touch_slack() => {
+                    Ok(refined().unwrap_or(t))
+                }
                 other => other,
             };
             match attempt {
