@@ -106,12 +106,21 @@ pub(crate) fn fit(knots: &Knots, values: &[f64]) -> Vec<[f64; 4]> {
     let delta: Vec<f64> = (0..n)
         .map(|i| (values[(i + 1) % n] - values[i]) / h[i])
         .collect();
-    // Row i: sub[i] M_{i−1} + diag[i] M_i + sup[i] M_{i+1} = rhs[i]
-    let sub: Vec<f64> = (0..n).map(|i| h[(i + n - 1) % n]).collect();
-    let sup: Vec<f64> = h.clone();
+    // Row i: sub[i] M_{i−1} + diag[i] M_i + sup[i] M_{i+1} = rhs[i], every row divided by a
+    // power of two near the longest segment: the elimination multiplies coefficients in pairs,
+    // which overflowed for segments from about 1e154 (chord lengths of a spline 1e160 across);
+    // a power of two changes no bit of the solution
+    let longest = h.iter().fold(0.0f64, |a, &b| a.max(b));
+    let scale = if longest > 0.0 && longest.is_finite() {
+        2f64.powi(longest.log2().round() as i32)
+    } else {
+        1.0
+    };
+    let sub: Vec<f64> = (0..n).map(|i| h[(i + n - 1) % n] / scale).collect();
+    let sup: Vec<f64> = h.iter().map(|&x| x / scale).collect();
     let diag: Vec<f64> = (0..n).map(|i| 2.0 * (sub[i] + sup[i])).collect();
     let rhs: Vec<f64> = (0..n)
-        .map(|i| 6.0 * (delta[i] - delta[(i + n - 1) % n]))
+        .map(|i| 6.0 * (delta[i] - delta[(i + n - 1) % n]) / scale)
         .collect();
     let m = solve_cyclic_tridiagonal(&sub, &diag, &sup, &rhs);
     (0..n)

@@ -32,7 +32,7 @@ pub use point::PointCurve;
 pub use points_file::{
     parse_points, parse_points_with_lines, read_points_file, MAX_FILE_BYTES, MAX_POINTS,
 };
-pub use spline::{ClosedSpline, Parameterization};
+pub use spline::{ClosedSpline, Parameterization, MAX_COORDINATE};
 
 use crate::geometry::{cross, rot90, Point2, Vec2};
 use crate::valid::Rule;
@@ -250,6 +250,27 @@ pub enum CurveError {
         x: f64,
         /// its y
         y: f64,
+    },
+    /// A node too far from the origin for the spline's arithmetic.
+    #[error("point {index} = ({}, {}) is too far out: a spline's coordinates must be at most 1e300 in magnitude (its chords and coefficients must stay finite)", crate::human::human(*.x), crate::human::human(*.y))]
+    FarPoint {
+        /// the point's index
+        index: usize,
+        /// its x
+        x: f64,
+        /// its y
+        y: f64,
+    },
+    /// A chord of a chord-length spline outside the range its derivatives can be represented
+    /// in (the third derivative grows as 1/chord²).
+    #[error("points {index} and {next} are {} apart: a chord-length spline needs chords from 1e-150 to 1e150", crate::human::human(*.length))]
+    ChordLength {
+        /// the first point's index
+        index: usize,
+        /// the next point's index
+        next: usize,
+        /// the distance between them
+        length: f64,
     },
     /// Two consecutive nodes coincide (the last and the first count as consecutive).
     #[error("points {index} and {next} coincide at ({}, {})", crate::human::human(*.x), crate::human::human(*.y))]

@@ -4,6 +4,14 @@ use super::{Curve, CurveError, Derivs, Domain};
 use crate::geometry::{Point2, Vec2};
 use crate::periodic::{fit, Knots};
 
+/// The largest coordinate of a spline's node (in magnitude): the chords (up to 2.9e300), their
+/// sum over 100 000 nodes and the coefficients stay finite.
+pub const MAX_COORDINATE: f64 = 1e300;
+
+/// The chords a chord-length spline takes: its derivatives (the third about size / chord³)
+/// stay within f64's normal range.
+pub const CHORD_RANGE: (f64, f64) = (1e-150, 1e150);
+
 /// Where the nodes sit in the parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -66,8 +74,9 @@ impl ClosedSpline {
 
     /// The closed spline through `nodes` with the given parameterisation.
     ///
-    /// Errors: fewer than three nodes, a non-finite coordinate, two consecutive nodes that
-    /// coincide (the last and the first count as consecutive).
+    /// Errors: fewer than three nodes, a non-finite coordinate or one beyond
+    /// [`MAX_COORDINATE`], two consecutive nodes that coincide (the last and the first count as
+    /// consecutive), with chord lengths a chord outside [`CHORD_RANGE`].
     pub fn with_parameterization(
         nodes: &[Point2],
         parameterization: Parameterization,
@@ -79,6 +88,15 @@ impl ClosedSpline {
         for (index, p) in nodes.iter().enumerate() {
             if !(p.x.is_finite() && p.y.is_finite()) {
                 return Err(CurveError::NonFinitePoint {
+                    index,
+                    x: p.x,
+                    y: p.y,
+                });
+            }
+            // a chord between nodes near f64's limit, or the sum of the chords, overflows: the
+            // curve came out NaN everywhere (chord lengths from 1e160, uniform near 1.7e308)
+            if p.x.abs().max(p.y.abs()) > MAX_COORDINATE {
+                return Err(CurveError::FarPoint {
                     index,
                     x: p.x,
                     y: p.y,
@@ -99,9 +117,25 @@ impl ClosedSpline {
         let knots = match parameterization {
             Parameterization::Uniform => Knots::uniform(n, 1.0),
             Parameterization::ChordLength => {
+                // hypot: a chord's square overflows from about 1e154
                 let h: Vec<f64> = (0..n)
-                    .map(|i| (nodes[(i + 1) % n] - nodes[i]).norm())
+                    .map(|i| {
+                        let d = nodes[(i + 1) % n] - nodes[i];
+                        d.x.hypot(d.y)
+                    })
                     .collect();
+                // the third derivative is about (size / chord³): chords from 1e154 left it
+                // below f64's normal range, and the curve came out wrong, not NaN
+                if let Some(index) = h
+                    .iter()
+                    .position(|l| !(CHORD_RANGE.0..=CHORD_RANGE.1).contains(l))
+                {
+                    return Err(CurveError::ChordLength {
+                        index,
+                        next: (index + 1) % n,
+                        length: h[index],
+                    });
+                }
                 Knots::from_lengths(&h)
             }
         };
@@ -411,17 +445,23 @@ mod tests {
                 .unwrap()
                 .self_intersection()
                 .unwrap();
+            // as large as each parameterisation takes (CHORD_RANGE, MAX_COORDINATE)
+            let big_k = if param == Parameterization::ChordLength {
+                4e139
+            } else {
+                4e299
+            };
             let big: Vec<Point2> = eight
                 .iter()
-                .map(|p| Point2::new(4e300 * p.x, 4e300 * p.y))
+                .map(|p| Point2::new(big_k * p.x, big_k * p.y))
                 .collect();
             let s = ClosedSpline::with_parameterization(&big, param).unwrap();
             let (a, b, p) = s.self_intersection().expect("crossing");
-            assert!((p.coords / 4e300 - p0.coords).norm() < 1e-9, "{p} {p0}");
+            assert!((p.coords / big_k - p0.coords).norm() < 1e-9, "{p} {p0}");
             // the same places on the curve: the parameters of the unscaled spline's, scaled
             // with the chord lengths when the parameterisation follows them
             let k = if param == Parameterization::ChordLength {
-                4e300
+                big_k
             } else {
                 1.0
             };
@@ -435,8 +475,81 @@ mod tests {
             );
         }
         let mut far = paper_nodes();
-        far[3] = Point2::new(-4.4e300, 0.6);
+        far[3] = Point2::new(-4.4e299, 0.6);
         let _ = ClosedSpline::new(&far).map(|s| s.self_intersection());
+    }
+
+    /// A spline is finite everywhere and the same curve at any scale its nodes may have: from
+    /// 1e-100 to [`MAX_COORDINATE`] uniform, to 1e140 by chord length (chord lengths overflowed
+    /// to a NaN curve from 1e160, and the third derivative left f64's normal range; the
+    /// uniform fit overflowed near 1.7e308); beyond, refused, naming the node or the chord.
+    #[test]
+    fn a_spline_is_the_same_curve_at_every_scale_up_to_its_limit() {
+        let unit = paper_nodes();
+        for param in [Parameterization::Uniform, Parameterization::ChordLength] {
+            let s0 = ClosedSpline::with_parameterization(&unit, param).unwrap();
+            let Domain::Periodic { period: p0 } = s0.domain() else {
+                unreachable!()
+            };
+            let reach = unit
+                .iter()
+                .map(|p| p.x.abs().max(p.y.abs()))
+                .fold(0.0, f64::max);
+            let top = if param == Parameterization::ChordLength {
+                140
+            } else {
+                300
+            };
+            for e in (-100..=top).step_by(20) {
+                // the nodes' largest coordinate is just under 1e{e}
+                let k = 0.999 * 10f64.powi(e) / reach;
+                let nodes: Vec<Point2> = unit.iter().map(|p| Point2::from(p.coords * k)).collect();
+                let s = ClosedSpline::with_parameterization(&nodes, param).unwrap();
+                let Domain::Periodic { period } = s.domain() else {
+                    unreachable!()
+                };
+                // the parameter scales with the chords (chord length) or not at all (uniform)
+                let ku = if param == Parameterization::ChordLength {
+                    k
+                } else {
+                    1.0
+                };
+                assert!((period / ku - p0).abs() <= 1e-12 * p0, "1e{e} {param:?}");
+                for j in 0..200 {
+                    let u = p0 * f64::from(j) / 200.0;
+                    let (a, b) = (s0.eval(u), s.eval(u * ku));
+                    for (x, y, scale) in [
+                        (a.p.coords, b.p.coords, k),
+                        (a.d1, b.d1, k / ku),
+                        (a.d2, b.d2, k / ku / ku),
+                        (a.d3, b.d3, k / ku / ku / ku),
+                    ] {
+                        let y = y / scale;
+                        assert!(
+                            y.iter().all(|v| v.is_finite())
+                                && (x - y).norm() <= 1e-9 * x.norm().max(1.0),
+                            "1e{e} {param:?} at {u}: {x} against {y}"
+                        );
+                    }
+                }
+            }
+            let mut far = unit.clone();
+            far[4] = Point2::new(2.0 * MAX_COORDINATE, 0.0);
+            assert!(matches!(
+                ClosedSpline::with_parameterization(&far, param),
+                Err(CurveError::FarPoint { index: 4, .. })
+            ));
+            if param == Parameterization::ChordLength {
+                for k in [1e-155, 1e155] {
+                    let nodes: Vec<Point2> =
+                        unit.iter().map(|p| Point2::from(p.coords * k)).collect();
+                    assert!(matches!(
+                        ClosedSpline::with_parameterization(&nodes, param),
+                        Err(CurveError::ChordLength { .. })
+                    ));
+                }
+            }
+        }
     }
 
     #[test]

@@ -72,6 +72,9 @@ fn spline(
         CurveError::NonFinitePoint { index, x, y } => {
             from.error(index, format!("point {index} = ({x}, {y}) is not finite"))
         }
+        e @ (CurveError::FarPoint { index, .. } | CurveError::ChordLength { index, .. }) => {
+            from.error(index, e.to_string())
+        }
         other => from.whole(other.to_string()),
     })?;
     if let Some((ua, ub, p)) = s.self_intersection() {
