@@ -131,6 +131,24 @@ fn main() -> ExitCode {
         std::process::exit(130);
     });
     let cli = Cli::parse();
+    // `--large` also lets a mechanism be built whose search index is over the work limits
+    let large = match &cli.command {
+        Command::Analyze(a) => a.work.large,
+        Command::Mesh(a) => a.work.large,
+        Command::Contacts(a) => a.work.large,
+        Command::Paper(a) => a.work.large,
+        Command::Compare(a) => a.work.large,
+        Command::Plot(a) => a.work.large,
+        Command::Bench(a) => a.work.large,
+        Command::Simulate(a) => a.work.large,
+        Command::Synth(a) => a.work.large,
+        Command::Profile(a) => a.work.large,
+        Command::Forces(a) => a.work.large,
+        Command::Deviation(a) => a.work.large,
+        Command::Report(a) => a.work.large,
+        Command::Serve(_) => false,
+    };
+    camkin_cli::mechfile::allow_large(large);
     let result = match cli.command {
         Command::Analyze(args) => analyze::run(&args),
         Command::Mesh(args) => mesh::run(&args),

@@ -14,6 +14,25 @@ pub const MAX_FILE_BYTES: u64 = text::MAX_TEXT_BYTES;
 /// Most nodal points of a spline profile (inline or from a points file).
 pub const MAX_POINTS: usize = camkin::curve::MAX_POINTS;
 
+/// Whether the user allowed large work (`--large`): set once by the command from its
+/// arguments, read when a mechanism is built (a profile whose search index would take over
+/// the library's limits is refused without it).
+static LARGE: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Allows (or not) building mechanisms over the library's work limits, for this run.
+pub fn allow_large(large: bool) {
+    LARGE.store(large, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// The work limits of building a mechanism in this run.
+pub fn build_limits() -> camkin::work::Limits {
+    if LARGE.load(std::sync::atomic::Ordering::Relaxed) {
+        camkin::work::Limits::NONE
+    } else {
+        camkin::work::Limits::default()
+    }
+}
+
 /// Bad input, with where it is.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct InputError {
@@ -21,11 +40,18 @@ pub struct InputError {
     pub message: String,
     /// the place in the text, 1-based `(line, column)` (column in characters), when known
     pub at: Option<(usize, usize)>,
+    /// the mechanism is valid but building it would take over the work limits (each front end
+    /// says how to run it anyway)
+    pub too_much: bool,
 }
 
 impl InputError {
     fn new(message: String) -> Self {
-        Self { message, at: None }
+        Self {
+            message,
+            at: None,
+            too_much: false,
+        }
     }
 }
 
@@ -59,9 +85,14 @@ impl std::error::Error for InputError {}
 
 impl From<TextError> for InputError {
     fn from(e: TextError) -> Self {
+        let too_much = matches!(
+            &e.problem,
+            text::TextProblem::Spec(s) if matches!(**s, camkin::spec::SpecError::TooMuch { .. })
+        );
         Self {
             message: e.message,
             at: e.at,
+            too_much,
         }
     }
 }
@@ -148,12 +179,18 @@ fn build_spec(
         base_dir: base.to_path_buf(),
         si,
         confine: false,
+        limits: build_limits(),
     };
     // its points files are inputs of the run too: no output may replace them
     for f in spec.files() {
         crate::output::note_input(&base.join(f));
     }
-    let (built, warnings) = build_placed(spec, text, name, &options)?;
+    let (built, warnings) = build_placed(spec, text, name, &options).map_err(|mut e| {
+        if e.too_much {
+            e.message.push_str("; pass --large to build it anyway");
+        }
+        e
+    })?;
     for w in warnings {
         crate::say!("camkin: warning: {}", w.message);
     }

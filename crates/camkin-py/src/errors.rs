@@ -51,6 +51,11 @@ pub fn input_at(
 /// with the field, the value and the place in the text.
 pub fn text(e: camkin::spec::text::TextError) -> PyErr {
     use camkin::spec::text::TextProblem;
+    if let TextProblem::Spec(s) = &e.problem {
+        if let camkin::spec::SpecError::TooMuch { .. } = **s {
+            return resource(format!("{}; pass large=True to build it anyway", e.message));
+        }
+    }
     let (field, value) = match &e.problem {
         TextProblem::Spec(s) => field_value(s),
         TextProblem::Read => ("source".to_string(), Some(e.name.clone())),
@@ -91,6 +96,9 @@ pub fn refuse_large(work: &camkin::work::Work, large: bool, otherwise: &str) -> 
 
 /// A spec error as an `InputError` on its field.
 pub fn spec(e: &SpecError) -> PyErr {
+    if let SpecError::TooMuch { .. } = e {
+        return resource(format!("{e}; pass large=True to build it anyway"));
+    }
     let (field, value) = field_value(e);
     input(&field, value, e.to_string())
 }

@@ -44,12 +44,19 @@ type SweepParts = (
 
 impl PyMechanism {
     /// Builds a spec in its own units.
-    pub fn build(spec: MechanismSpec, base_dir: PathBuf, name: String) -> PyResult<Self> {
+    /// `large`: build a profile whose search index is over the library's limits.
+    pub fn build(
+        spec: MechanismSpec,
+        base_dir: PathBuf,
+        name: String,
+        large: bool,
+    ) -> PyResult<Self> {
         let built = spec
             .build(&BuildOptions {
                 base_dir: base_dir.clone(),
                 si: false,
                 confine: false,
+                limits: limits(large),
             })
             .map_err(|e| errors::spec(&e))?;
         Ok(Self::of(spec, base_dir, built, name))
@@ -63,11 +70,13 @@ impl PyMechanism {
         file: &str,
         base_dir: PathBuf,
         name: String,
+        large: bool,
     ) -> PyResult<Self> {
         let options = BuildOptions {
             base_dir: base_dir.clone(),
             si: false,
             confine: false,
+            limits: limits(large),
         };
         let (built, _) =
             camkin::spec::text::build_placed(&spec, text, file, &options).map_err(errors::text)?;
@@ -93,6 +102,8 @@ impl PyMechanism {
                 base_dir: self.base_dir.clone(),
                 si: true,
                 confine: false,
+                // built once already, within the limits or with large=True
+                limits: camkin::work::Limits::NONE,
             })
             .map_err(|e| errors::spec(&e))?;
         let params = built.dynamics.ok_or_else(|| {
@@ -168,15 +179,18 @@ pub const PAPER_TOML: &str = include_str!("../../../examples/paper.toml");
 
 #[pymethods]
 impl PyMechanism {
-    /// Mechanism.from_toml(source) -> Mechanism
+    /// Mechanism.from_toml(source, *, large=False) -> Mechanism
     ///
     /// A mechanism from a mechanism file (a path, ``str`` or ``os.PathLike``) or from TOML text
     /// (a ``str`` with a line break, or with ``=`` that names no file: a path may hold ``=``). A
     /// relative points-file path is read from the file's folder (the current folder for text).
     /// Bad input raises ``camkin.InputError`` naming the field, the value, and the line and
-    /// column in the text (``.line``, ``.column``), as the command does.
+    /// column in the text (``.line``, ``.column``), as the command does. A profile whose search
+    /// index would take over 1 GB or 30 s to build raises ``camkin.ResourceError`` with the
+    /// estimate, unless ``large=True``.
     #[staticmethod]
-    fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>) -> PyResult<Self> {
+    #[pyo3(signature = (source, *, large = false))]
+    fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>, large: bool) -> PyResult<Self> {
         // text: a str with a line break, or a line of TOML that names no file (a path may hold
         // `=`: `a=b/cam.toml` is a path, read or refused as one)
         let is_text = source
@@ -197,6 +211,7 @@ impl PyMechanism {
                 "<text>",
                 PathBuf::from("."),
                 "mechanism".into(),
+                large,
             )?;
             m.warn_spec(py)?;
             return Ok(m);
@@ -222,21 +237,23 @@ impl PyMechanism {
         let name = path
             .file_stem()
             .map_or_else(|| "mechanism".into(), |s| s.to_string_lossy().into_owned());
-        let m = Self::build_text(spec, &text, &file, base, name)?;
+        let m = Self::build_text(spec, &text, &file, base, name, large)?;
         m.warn_spec(py)?;
         Ok(m)
     }
 
-    /// Mechanism.from_dict(d, base_dir=".") -> Mechanism
+    /// Mechanism.from_dict(d, base_dir=".", *, large=False) -> Mechanism
     ///
     /// A mechanism from a dict with the mechanism file's schema (``length_unit``, ``cam``,
-    /// ``follower``, optional ``dynamics``). ``base_dir`` resolves a relative points-file path.
+    /// ``follower``, optional ``dynamics``). ``base_dir`` resolves a relative points-file path;
+    /// ``large`` as in ``from_toml``.
     #[staticmethod]
-    #[pyo3(signature = (d, base_dir = None))]
+    #[pyo3(signature = (d, base_dir = None, *, large = false))]
     fn from_dict(
         py: Python<'_>,
         d: &Bound<'_, PyAny>,
         base_dir: Option<PathBuf>,
+        large: bool,
     ) -> PyResult<Self> {
         if !d.is_instance_of::<PyDict>() {
             return Err(errors::input(
@@ -251,6 +268,7 @@ impl PyMechanism {
             spec,
             base_dir.unwrap_or_else(|| PathBuf::from(".")),
             "mechanism".into(),
+            large,
         )?;
         m.warn_spec(py)?;
         Ok(m)
@@ -635,10 +653,12 @@ impl PyMechanism {
     }
 
     /// with_nodes(points) -> Mechanism: the same mechanism with the spline profile's nodes
-    /// replaced (an (N, 2) array in the file's length unit); validated as a file would be.
-    fn with_nodes(&self, points: numpy::PyReadonlyArray2<'_, f64>) -> PyResult<Self> {
+    /// replaced (an (N, 2) array in the file's length unit); validated as a file would be
+    /// (``large`` as in ``from_toml``).
+    #[pyo3(signature = (points, *, large = false))]
+    fn with_nodes(&self, points: numpy::PyReadonlyArray2<'_, f64>, large: bool) -> PyResult<Self> {
         let spec = crate::study::spec_with_nodes(&self.spec, points.as_array())?;
-        Self::build(spec, self.base_dir.clone(), self.name.clone())
+        Self::build(spec, self.base_dir.clone(), self.name.clone(), large)
     }
 }
 
@@ -669,11 +689,21 @@ pub fn revolution_steps(step_deg: f64, field: &str) -> PyResult<usize> {
     Ok(n as usize)
 }
 
+/// The work limits of building a mechanism: the library's, or none with `large=True`.
+pub(crate) fn limits(large: bool) -> camkin::work::Limits {
+    if large {
+        camkin::work::Limits::NONE
+    } else {
+        camkin::work::Limits::default()
+    }
+}
+
 /// For pickle: a mechanism rebuilt from its spec's JSON.
 #[pyfunction]
 pub fn _mechanism_from_json(text: &str, base_dir: &str, name: &str) -> PyResult<PyMechanism> {
     let spec = parse_json(text)?;
-    PyMechanism::build(spec, PathBuf::from(base_dir), name.into())
+    // it was built once, within the limits or with large=True
+    PyMechanism::build(spec, PathBuf::from(base_dir), name.into(), true)
 }
 
 /// paper_cam() -> Mechanism: the paper's cam (section 3; ``examples/paper.toml``): a 9-node
@@ -681,7 +711,7 @@ pub fn _mechanism_from_json(text: &str, base_dir: &str, name: &str) -> PyResult<
 #[pyfunction]
 pub fn paper_cam() -> PyResult<PyMechanism> {
     let spec = parse_toml(PAPER_TOML, "paper.toml")?;
-    PyMechanism::build(spec, PathBuf::from("."), "paper".into())
+    PyMechanism::build(spec, PathBuf::from("."), "paper".into(), false)
 }
 
 /// `camkin.ContactError` for the first row that could not be computed, `(angle, reason)`, if any

@@ -279,6 +279,7 @@ pub fn spline_variants<'py>(
                 base_dir: dir.clone(),
                 si: false,
                 confine: false,
+                limits: crate::mech::limits(large),
             };
             match s.build(&opts) {
                 Ok(b) => (summarize_one(&b.mechanism, &u, &angles), None),

@@ -298,3 +298,23 @@ def test_a_conjugate_follower_from_python():
     with pytest.raises(camkin.InputError) as e:
         camkin.Mechanism.from_dict(d).simulate()
     assert e.value.field == "follower.conjugate"
+
+
+def test_a_mechanism_too_large_to_index_is_refused_unless_large():
+    """Issue 44: two 100 000-node splines (a cam and the curve its follower carries) would hold
+    about 1.4 GB of search index: refused before it is built, with the estimate, naming
+    large=True."""
+    t = np.linspace(0.0, 2.0 * np.pi, 100_000, endpoint=False)
+    ring = lambda r, x: np.column_stack([x + r * np.cos(t), 0.8 * r * np.sin(t)]).tolist()
+    d = {
+        "length_unit": "mm",
+        "cam": {"speed_rpm": 1000.0, "profile": {"kind": "spline", "points": ring(40.0, 0.0)}},
+        "follower": {
+            "kind": "translating",
+            "direction": [1.0, 0.0],
+            "offset": 0.0,
+            "profile": {"kind": "spline", "points": ring(2.0, 3.0)},
+        },
+    }
+    with pytest.raises(camkin.ResourceError, match=r"would take about .* GB.*large=True"):
+        camkin.Mechanism.from_dict(d)

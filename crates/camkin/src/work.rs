@@ -16,6 +16,34 @@ pub const SECONDS_LIMIT: f64 = 30.0;
 /// Above this many bytes (memory held, or files written) work is refused without the override.
 pub const BYTES_LIMIT: f64 = 1e9;
 
+/// The most work an entry point does without being asked to: the library's
+/// ([`SECONDS_LIMIT`], [`BYTES_LIMIT`]) by default, a server's per-request limits, or
+/// [`Limits::NONE`] when the user asked for large work (`--large`, `large=True`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limits {
+    /// seconds of wall time on one core
+    pub seconds: f64,
+    /// bytes of memory held or files written
+    pub bytes: f64,
+}
+
+impl Limits {
+    /// No limit: the user asked for the work however large.
+    pub const NONE: Limits = Limits {
+        seconds: f64::INFINITY,
+        bytes: f64::INFINITY,
+    };
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Self {
+            seconds: SECONDS_LIMIT,
+            bytes: BYTES_LIMIT,
+        }
+    }
+}
+
 /// An estimate of the work an entry point is about to do.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -64,11 +92,17 @@ impl Work {
     }
 
     /// `sweeps` warm-started sweeps of `angles` cam angles of `mech`
-    /// ([`Mechanism::sweep_seconds_estimate`]), with the reason when each angle also searches.
+    /// ([`Mechanism::sweep_seconds_estimate`]), each with the follower's travel that its lift
+    /// is measured from ([`Mechanism::travel_seconds_estimate`]), with the reason when each
+    /// angle also searches.
     pub fn sweep(mech: &Mechanism, angles: usize, sweeps: usize) -> Self {
+        let n = angles * sweeps;
         let work = Self::new(
-            format!("{} cam angles on this profile", angles * sweeps),
-            mech.sweep_seconds_estimate(angles) * sweeps as f64,
+            format!(
+                "{n} cam angle{} on this profile, with the follower's travel,",
+                if n == 1 { "" } else { "s" }
+            ),
+            (mech.sweep_seconds_estimate(angles) + mech.travel_seconds_estimate()) * sweeps as f64,
         );
         match mech.search_cost_reason() {
             Some(why) => work.because(why),
@@ -91,6 +125,11 @@ impl Work {
         self.refusal_within(SECONDS_LIMIT, BYTES_LIMIT)
     }
 
+    /// The refusal under `limits`, `None` within them.
+    pub fn refusal_under(&self, limits: &Limits) -> Option<Refusal> {
+        self.refusal_within(limits.seconds, limits.bytes)
+    }
+
     /// The refusal under other limits (a server's per-request time).
     pub fn refusal_within(&self, seconds: f64, bytes: f64) -> Option<Refusal> {
         // NaN (an estimate of nonsense) is refused too
@@ -111,7 +150,8 @@ impl fmt::Display for Refusal {
             w.what,
             human(w.seconds.ceil())
         )?;
-        if w.bytes > 0.0 {
+        // memory below a megabyte is not worth a word
+        if w.bytes >= 1e6 {
             write!(f, " and {}", bytes(w.bytes))?;
         }
         if let Some(why) = &w.why {

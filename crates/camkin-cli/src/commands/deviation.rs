@@ -58,6 +58,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
             .to_path_buf(),
         si: false,
         confine: false,
+        limits: mechfile::build_limits(),
     };
     let unit = design.length_unit;
     let l = unit.name();

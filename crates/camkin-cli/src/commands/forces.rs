@@ -60,6 +60,8 @@ pub struct ForcesArgs {
     pub out: Option<PathBuf>,
     #[command(flatten)]
     pub force: crate::out_dir::ForceArg,
+    #[command(flatten)]
+    pub work: crate::args::WorkArgs,
 }
 
 /// The flag that sets a field of the request.
@@ -99,8 +101,10 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         force_speed: true,
     };
     req.validate(&mech).map_err(input_error)?;
-    if let Some(refusal) = req.work(&mech).refusal() {
-        return Err(Failure::Input(anyhow!("{refusal}; use a coarser --step")));
+    if let Some(refusal) = req.work(&mech).refusal().filter(|_| !args.work.large) {
+        return Err(Failure::Input(anyhow!(
+            "{refusal}; use a coarser --step, or pass --large to run it anyway"
+        )));
     }
     let report = ForceReport::new(&mech, params, &req).map_err(input_error)?;
     let lu = LengthUnit {

@@ -47,6 +47,9 @@ pub struct Limits {
     pub header_seconds: f64,
     /// the most connections open at once (a new one beyond is closed at once)
     pub max_connections: usize,
+    /// the most memory one request may be estimated to hold, bytes (a mechanism whose search
+    /// indexes would take more is refused before it is built)
+    pub max_request_bytes: f64,
 }
 
 impl Default for Limits {
@@ -61,6 +64,7 @@ impl Default for Limits {
             max_wait_seconds: 30.0,
             header_seconds: 10.0,
             max_connections: 256,
+            max_request_bytes: 5e8,
         }
     }
 }
@@ -105,6 +109,9 @@ pub enum StudioError {
 
 impl From<InputError> for StudioError {
     fn from(e: InputError) -> Self {
+        if e.too_much {
+            return StudioError::TooMuch { message: e.message };
+        }
         StudioError::Input {
             message: e.message,
             at: e.at,

@@ -29,7 +29,12 @@ pub struct Source {
 
 /// How a spec from `source` is built: points files confined to the source's folder (the
 /// built-in cam has none, so it may read no file at all).
-fn options(spec: &MechanismSpec, source: &Source, si: bool) -> Result<BuildOptions, StudioError> {
+fn options(
+    spec: &MechanismSpec,
+    source: &Source,
+    si: bool,
+    limits: &Limits,
+) -> Result<BuildOptions, StudioError> {
     let base_dir = match &source.folder {
         Some(f) => f.clone(),
         None if spec.cam.profile.path.is_some() => {
@@ -44,14 +49,18 @@ fn options(spec: &MechanismSpec, source: &Source, si: bool) -> Result<BuildOptio
         base_dir,
         si,
         confine: true,
+        limits: camkin::work::Limits {
+            seconds: limits.max_seconds,
+            bytes: limits.max_request_bytes,
+        },
     })
 }
 
 /// Builds the mechanism in `text` (in its own units), errors and warnings placed in the text.
-pub fn build(text: &str, source: &Source) -> Result<FromText, StudioError> {
+pub fn build(text: &str, source: &Source, limits: &Limits) -> Result<FromText, StudioError> {
     let spec = mechfile::parse_spec(text, &source.name)?;
-    let (built, warnings) =
-        mechfile::build_placed(&spec, text, &source.name, &options(&spec, source, false)?)?;
+    let options = options(&spec, source, false, limits)?;
+    let (built, warnings) = mechfile::build_placed(&spec, text, &source.name, &options)?;
     Ok(FromText {
         spec,
         built,
@@ -274,7 +283,7 @@ pub fn analyze(
     limits: &Limits,
 ) -> Result<Analysis, StudioError> {
     let t0 = Instant::now();
-    let parsed = build(text, source)?;
+    let parsed = build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
     let unit = parsed.built.length_unit;
     let angles = revolution(step_deg);
@@ -441,7 +450,7 @@ pub fn analyze(
         ),
     };
     let checks = checks(mech, &angles, &sweep, pressure_limit_deg, unit.name());
-    let dynamics = dynamics(text, source, &parsed.spec, &angles)?;
+    let dynamics = dynamics(text, source, &parsed.spec, &angles, limits)?;
     let first_error = rows.iter().find_map(|r| r.error.clone());
     Ok(Analysis {
         name: source.name.clone(),
@@ -519,12 +528,14 @@ fn dynamics(
     source: &Source,
     spec: &MechanismSpec,
     angles: &[f64],
+    limits: &Limits,
 ) -> Result<Option<DynamicsOut>, StudioError> {
     if spec.dynamics.is_none() {
         return Ok(None);
     }
     // the spec already read, built again in SI units
-    let (si, _) = mechfile::build_placed(spec, text, &source.name, &options(spec, source, true)?)?;
+    let options = options(spec, source, true, limits)?;
+    let (si, _) = mechfile::build_placed(spec, text, &source.name, &options)?;
     let (Some(params), mech) = (si.dynamics, &si.mechanism) else {
         return Ok(None);
     };
@@ -604,7 +615,7 @@ pub fn compare(
     limits: &Limits,
 ) -> Result<Compare, StudioError> {
     let t0 = Instant::now();
-    let parsed = build(text, source)?;
+    let parsed = build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
     let angles = revolution(step_deg);
     let total_nodes: usize = nodes.iter().sum();

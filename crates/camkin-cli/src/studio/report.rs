@@ -20,7 +20,7 @@ pub fn csv(
     step_deg: f64,
     limits: &Limits,
 ) -> Result<String, StudioError> {
-    let parsed = model::build(text, source)?;
+    let parsed = model::build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
     let angles = model::revolution(step_deg);
     model::check_work(mech, angles.len(), limits)?;

@@ -327,7 +327,7 @@ fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains(
-            "10000000 cam angles on this profile would take about 10 s and 3.8 GB",
+            "10000000 cam angles on this profile, with the follower's travel, would take about 11 s and 3.8 GB",
         ))
         .stderr(predicate::str::contains("--large"));
 }

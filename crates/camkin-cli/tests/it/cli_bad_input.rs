@@ -929,3 +929,57 @@ fn errors_name_the_key_and_value_the_user_wrote() {
         .assert()
         .success();
 }
+
+/// Issue 44: a mechanism whose search indexes would hold more than the library's memory limit
+/// (a 100 000-node spline cam carrying a 100 000-node spline follower: about 1.4 GB) is refused
+/// before they are built, at the cam's profile, with the estimate and `--large`, for every
+/// command that reads a mechanism; the studio's report refuses it too.
+#[test]
+fn a_mechanism_too_large_to_index_is_refused_before_it_is_built() {
+    let n = 100_000;
+    let ring = |r: f64, x: f64| -> String {
+        (0..n)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / n as f64;
+                format!("[{:.6},{:.6}]", x + r * t.cos(), 0.8 * r * t.sin())
+            })
+            .collect::<Vec<_>>()
+            .join(",")
+    };
+    let toml = format!(
+        "{SPLINE_HEAD}points = [{}]\n[follower]\nkind = \"translating\"\ndirection = [1.0, 0.0]\n\
+         offset = 0.0\n[follower.profile]\nkind = \"spline\"\npoints = [{}]\n",
+        ring(40.0, 0.0),
+        ring(2.0, 3.0)
+    );
+    bad(
+        "two 100 000-node splines",
+        &toml,
+        &[],
+        &["cam.profile", "would take about", "GB", "--large"],
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let mech = dir.path().join("m.toml");
+    std::fs::write(&mech, &toml).unwrap();
+    for args in [
+        vec!["report", "-o"],
+        vec!["plot", "--out"],
+        vec!["forces", "--out"],
+    ] {
+        let out = dir.path().join("out");
+        let a = camkin()
+            .arg(args[0])
+            .arg(&mech)
+            .arg(args[1])
+            .arg(&out)
+            .assert()
+            .code(2);
+        let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
+        assert!(
+            err.contains("would take about") && err.contains("--large"),
+            "{}: {err}",
+            args[0]
+        );
+        assert!(!out.exists(), "{}", args[0]);
+    }
+}

@@ -219,6 +219,43 @@ fn work_over_the_time_limit_is_refused_with_the_estimate() {
     assert!(t.elapsed() < Duration::from_secs(30));
 }
 
+/// Issue 44: the server caps the memory one request may hold. A mechanism whose search index
+/// would be over the cap (here 10 MB; a 2 000-node spline cam, about 10.4 MB) is refused with
+/// the estimate before it is built, for the analysis, the table and the report alike, and the
+/// server goes on answering.
+#[test]
+fn a_request_over_the_memory_cap_is_refused_before_it_is_built() {
+    let addr = start(
+        None,
+        Limits {
+            max_request_bytes: 1e7,
+            ..Limits::default()
+        },
+    );
+    let pts: Vec<String> = (0..2_000)
+        .map(|k| {
+            let t = k as f64 * std::f64::consts::TAU / 2_000.0;
+            format!("[{:.6}, {:.6}]", 40.0 * t.cos(), 30.0 * t.sin())
+        })
+        .collect();
+    let text = format!(
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"spline\"\npoints = [{}]\n[follower]\nkind = \"translating-flat\"\n",
+        pts.join(", ")
+    );
+    for route in ["/api/analyze", "/api/csv", "/api/report"] {
+        let (s, v) = post(addr, route, &json!({ "toml": text }));
+        assert_eq!(error(s, &v).1, "too-much-work", "{route}: {v}");
+        assert_eq!(s, 422);
+        let msg = v["error"]["message"].as_str().unwrap();
+        assert!(
+            msg.contains("cam.profile") && msg.contains("would take about") && msg.contains("MB"),
+            "{route}: {msg}"
+        );
+    }
+    let (s, v) = post(addr, "/api/analyze", &json!({ "toml": paper() }));
+    assert_eq!(s, 200, "{v}");
+}
+
 #[test]
 fn points_files_are_read_only_inside_the_opened_folder() {
     let dir = tempfile::tempdir().unwrap();
@@ -399,4 +436,84 @@ fn clients_that_never_finish_their_headers_cannot_lock_anyone_out() {
         }
     }
     assert_eq!(closed, 300);
+}
+
+/// Issue 44: the server survives any one request. Under a memory cap (`ulimit -v`, 700 MB of
+/// address space) a request within the server's own estimate (an 80 000-node cam, about 420 MB
+/// estimated) runs out of memory and aborts the server process; `camkin serve` starts it again on
+/// the same port, says so, and the next request is answered. Killing `camkin serve` leaves no
+/// server behind.
+#[cfg(unix)]
+#[test]
+fn the_server_survives_a_request_that_runs_out_of_memory() {
+    use std::io::BufRead;
+    let mut child = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v 700000; exec '{}' serve --port 0",
+            env!("CARGO_BIN_EXE_camkin")
+        ))
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut url = String::new();
+    std::io::BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut url)
+        .unwrap();
+    let addr: SocketAddr = url
+        .trim()
+        .trim_start_matches("http://")
+        .trim_end_matches('/')
+        .parse()
+        .unwrap();
+    let n = 80_000;
+    let pts: Vec<String> = (0..n)
+        .map(|k| {
+            let t = k as f64 * std::f64::consts::TAU / n as f64;
+            format!("[{:.6}, {:.6}]", 40.0 * t.cos(), 30.0 * t.sin())
+        })
+        .collect();
+    let text = format!(
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"spline\"\npoints = [{}]\n[follower]\nkind = \"translating-flat\"\n",
+        pts.join(", ")
+    );
+    let (s, _) = post(addr, "/api/analyze", &json!({ "toml": text }));
+    assert_ne!(
+        s, 200,
+        "the request was expected to run out of memory under the cap"
+    );
+    // the next request is answered by the server started again (it may take a moment)
+    let mut answered = false;
+    for _ in 0..50 {
+        if std::net::TcpStream::connect(addr).is_ok() {
+            let (s, v) = post(addr, "/api/analyze", &json!({ "toml": paper() }));
+            assert_eq!(s, 200, "{v}");
+            answered = true;
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    assert!(answered);
+    let watcher = child.id();
+    child.kill().unwrap();
+    let _ = child.wait();
+    let mut err = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    assert!(err.contains("starting it again on port"), "{err}");
+    // the server process notices its watcher is gone and ends, freeing the port
+    let mut freed = false;
+    for _ in 0..50 {
+        std::thread::sleep(Duration::from_millis(100));
+        if TcpStream::connect(addr).is_err() {
+            freed = true;
+            break;
+        }
+    }
+    assert!(freed, "a server was left behind by watcher {watcher}");
 }

@@ -183,6 +183,13 @@ impl Mechanism {
         }
     }
 
+    /// A rough estimate of the seconds [`Mechanism::travel`] takes (every table's lift column
+    /// needs it): a warm sweep of 720 angles and about 130 cold searches refining the rest and
+    /// peak positions.
+    pub fn travel_seconds_estimate(&self) -> f64 {
+        self.sweep_seconds_estimate(720) + 130.0 * self.search_seconds_estimate()
+    }
+
     /// The number of dense samples of the profile the global search looks among.
     pub fn sample_count(&self) -> usize {
         self.touch.index.dense.params.len()

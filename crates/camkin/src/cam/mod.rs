@@ -13,6 +13,7 @@
 //! the world frame with its origin on the rotation axis. Other conventions: see the
 //! [crate docs](crate#sign-conventions).
 
+mod build_work;
 mod checks;
 mod conjugate;
 mod contacts;
@@ -37,6 +38,7 @@ mod sweep;
 pub mod synthesis;
 mod travel;
 
+pub use build_work::build_work;
 pub use checks::{ConjugatePlay, DesignChecks, RoundTrip};
 pub use conjugate::ConjugateSweep;
 pub use contacts::Contact;

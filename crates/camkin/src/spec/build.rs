@@ -62,6 +62,10 @@ pub struct BuildOptions {
     /// folder): an absolute path, a `..` component, or a path that resolves (through symbolic
     /// links) outside the folder is refused
     pub confine: bool,
+    /// the most work building may take (the library's limits by default): a profile whose
+    /// search index would take more memory or time is refused before it is built
+    /// ([`crate::cam::build_work`])
+    pub limits: crate::work::Limits,
 }
 
 /// A built mechanism with what else its spec said.
@@ -148,6 +152,15 @@ pub enum SpecError {
         /// what is wrong
         reason: String,
     },
+    /// Building the mechanism would take more memory or time than allowed
+    /// ([`BuildOptions::limits`]); the field is the curve that costs most.
+    #[error("{field}: {refusal}")]
+    TooMuch {
+        /// the cam's profile or the follower's curve
+        field: Field,
+        /// the estimate refused
+        refusal: crate::work::Refusal,
+    },
     /// A points file is malformed or its points do not make a profile.
     #[error("{path}{}: {message}", line.map(|l| format!(":{l}")).unwrap_or_default())]
     PointsFile {
@@ -168,7 +181,8 @@ impl SpecError {
             | SpecError::Unknown { field, .. }
             | SpecError::Missing { field, .. }
             | SpecError::Foreign { field, .. }
-            | SpecError::Rule { field, .. } => *field,
+            | SpecError::Rule { field, .. }
+            | SpecError::TooMuch { field, .. } => *field,
             SpecError::PointsFile { .. } => Field::Profile(ProfileField::Path),
         }
     }
@@ -394,6 +408,33 @@ impl MechanismSpec {
             cam_obj.set_synthesis(s);
         }
         let oscillating = follower.is_oscillating();
+        let conjugate = match &self.follower.conjugate {
+            Some(c) => Some(
+                c.build(
+                    scale,
+                    &options.base_dir,
+                    options.confine,
+                    super::profile::Place::Conjugate,
+                    &mut warnings,
+                )?
+                .0,
+            ),
+            None => None,
+        };
+        // the search indexes' memory and time, before they are built
+        let work = crate::cam::build_work(&cam_obj, &follower, conjugate.as_deref());
+        if let Some(refusal) = work.refusal_under(&options.limits) {
+            let cam_pieces = cam_obj.profile().breakpoints().len();
+            let carried_pieces = follower
+                .carried_profile()
+                .map_or(0, |c| c.breakpoints().len());
+            let field = if carried_pieces > cam_pieces {
+                Field::Follower(FollowerField::Profile)
+            } else {
+                Field::Profile(ProfileField::Table)
+            };
+            return Err(SpecError::TooMuch { field, refusal });
+        }
         // the lengths an unreachable follower's reason gives are in the file's unit (or metres)
         let lengths = if options.si { "m" } else { unit.name() };
         let mut mechanism = Mechanism::new(cam_obj, follower).map_err(|e| match e {
@@ -418,14 +459,7 @@ impl MechanismSpec {
                 reason: format!("{e} (lengths in {lengths})"),
             });
         }
-        if let Some(c) = &self.follower.conjugate {
-            let (curve, _) = c.build(
-                scale,
-                &options.base_dir,
-                options.confine,
-                super::profile::Place::Conjugate,
-                &mut warnings,
-            )?;
+        if let Some(curve) = conjugate {
             mechanism = mechanism.with_conjugate(curve)?;
         }
         let dynamics = self

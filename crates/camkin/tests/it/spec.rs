@@ -4,8 +4,8 @@
 use crate::common::*;
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
 use camkin::spec::{
-    CamField, CamSpec, DynamicsField, DynamicsSpec, Field, FollowerField, FollowerSpec,
-    MechanismSpec, ProfileField, ProfileSpec, SegmentField, SegmentSpec, SpecError,
+    BuildOptions, CamField, CamSpec, DynamicsField, DynamicsSpec, Field, FollowerField,
+    FollowerSpec, MechanismSpec, ProfileField, ProfileSpec, SegmentField, SegmentSpec, SpecError,
 };
 use camkin::Point2;
 
@@ -470,5 +470,68 @@ fn every_length_units_size_is_its_own() {
                 );
             }
         }
+    }
+}
+
+/// Issue 44: a profile whose search index would hold more memory than the limits is refused
+/// before it is built, naming the curve that costs most (the cam's, or the follower's when it
+/// carries the larger), with the estimate; the same spec builds with no limit. The estimate
+/// counts the samples from the nodes (16 a piece for the cam, 48 for a carried curve).
+#[test]
+fn a_profile_over_the_memory_limit_is_refused_before_it_is_built() {
+    use camkin::work::Limits;
+    let ring = |n: usize, r: f64, x: f64| -> Vec<[f64; 2]> {
+        (0..n)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / n as f64;
+                [x + r * t.cos(), 0.8 * r * t.sin()]
+            })
+            .collect()
+    };
+    let spline = |points| ProfileSpec {
+        kind: "spline".into(),
+        points: Some(points),
+        ..Default::default()
+    };
+    let spec = |cam_nodes: usize, carried_nodes: usize| {
+        let mut s = circle_spec(FollowerSpec {
+            kind: "translating".into(),
+            direction: Some([1.0, 0.0]),
+            offset: Some(0.0),
+            profile: Some(Box::new(spline(ring(carried_nodes, 2.0, 3.0)))),
+            ..Default::default()
+        });
+        s.cam.profile = spline(ring(cam_nodes, 40.0, 0.0));
+        s
+    };
+    let tight = BuildOptions {
+        limits: Limits {
+            seconds: 30.0,
+            bytes: 5e6,
+        },
+        ..Default::default()
+    };
+    // 2 000 cam nodes: 40 000 samples, about 10 MB; a 100-node carried curve, about 0.8 MB
+    for (cam_nodes, carried_nodes, field) in [
+        (2_000, 100, Field::Profile(ProfileField::Table)),
+        (100, 2_000, Field::Follower(FollowerField::Profile)),
+    ] {
+        let s = spec(cam_nodes, carried_nodes);
+        match s.build(&tight) {
+            Err(SpecError::TooMuch { field: f, refusal }) => {
+                assert_eq!(f, field);
+                let words = refusal.to_string();
+                assert!(words.contains("MB"), "{words}");
+                assert!(refusal.0.bytes > 5e6 && refusal.0.bytes < 1e8, "{words}");
+            }
+            other => panic!("{cam_nodes}/{carried_nodes}: {:?}", other.map(|_| ())),
+        }
+        let free = BuildOptions {
+            limits: Limits::NONE,
+            ..Default::default()
+        };
+        assert!(s.build(&free).is_ok());
+        // the library's own limits (1 GB) take it too
+        assert!(s.build(&BuildOptions::default()).is_ok());
     }
 }
