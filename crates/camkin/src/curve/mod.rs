@@ -32,7 +32,7 @@ pub use point::PointCurve;
 pub use points_file::{
     parse_points, parse_points_with_lines, read_points_file, MAX_FILE_BYTES, MAX_POINTS,
 };
-pub use spline::{ClosedSpline, Parameterization, MAX_COORDINATE};
+pub use spline::{ClosedSpline, Parameterization, CHORD_RANGE, MAX_COORDINATE};
 
 use crate::geometry::{cross, rot90, Point2, Vec2};
 use crate::valid::Rule;
