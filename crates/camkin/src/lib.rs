@@ -88,6 +88,7 @@ pub(crate) mod periodic;
 pub mod reference;
 pub mod report;
 pub mod spec;
+pub mod system;
 pub mod table;
 mod valid;
 pub mod work;

@@ -36,4 +36,6 @@ mod spline_finite_differences;
 mod support_check;
 mod sweep;
 mod synthesis_round_trip;
+mod system_cam;
+mod system_linkages;
 mod thin_geometry;

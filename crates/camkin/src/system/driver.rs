@@ -1,0 +1,90 @@
+//! Driven coordinates: a body's angle or position as a function of time, `q_k − f(t) = 0`, with
+//! `Φ_t = −ḟ` and `γ = f̈`.
+
+use super::BodyId;
+
+/// Which coordinate of a body a driver sets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Coordinate {
+    /// the frame origin's x
+    X,
+    /// the frame origin's y
+    Y,
+    /// the angle, rad
+    Angle,
+}
+
+impl Coordinate {
+    /// Its index in a body's `(x, y, θ)`.
+    pub(crate) fn index(self) -> usize {
+        match self {
+            Coordinate::X => 0,
+            Coordinate::Y => 1,
+            Coordinate::Angle => 2,
+        }
+    }
+}
+
+impl std::fmt::Display for Coordinate {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Coordinate::X => "x",
+            Coordinate::Y => "y",
+            Coordinate::Angle => "angle",
+        })
+    }
+}
+
+/// How a driven coordinate moves in time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Law {
+    /// `f(t) = start + rate t + acceleration t²/2` (a cam at constant speed: `acceleration` 0)
+    Quadratic {
+        /// `f(0)`
+        start: f64,
+        /// `ḟ(0)`
+        rate: f64,
+        /// `f̈`
+        acceleration: f64,
+    },
+}
+
+impl Law {
+    /// A coordinate at constant rate.
+    pub fn linear(start: f64, rate: f64) -> Self {
+        Law::Quadratic {
+            start,
+            rate,
+            acceleration: 0.0,
+        }
+    }
+
+    /// `(f, ḟ, f̈)` at time `t`.
+    pub fn at(&self, t: f64) -> [f64; 3] {
+        match *self {
+            Law::Quadratic {
+                start,
+                rate,
+                acceleration,
+            } => [
+                start + rate * t + 0.5 * acceleration * t * t,
+                rate + acceleration * t,
+                acceleration,
+            ],
+        }
+    }
+}
+
+/// A named driver: `body`'s `coordinate` follows `law`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Driver {
+    /// its name
+    pub name: String,
+    /// the driven body (not the ground)
+    pub body: BodyId,
+    /// which of its coordinates
+    pub coordinate: Coordinate,
+    /// how it moves
+    pub law: Law,
+}

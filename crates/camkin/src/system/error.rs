@@ -1,0 +1,76 @@
+//! What can go wrong assembling or analysing a system: each error names the element (body,
+//! joint, driver or contact) as the system names it, and the instant.
+
+use super::Coordinate;
+
+/// Why a system cannot be analysed, or an instant of it cannot be solved.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SystemError {
+    /// An element names a body the system does not have.
+    #[error("{element:?} names a body the system does not have")]
+    UnknownBody {
+        /// the element's name
+        element: String,
+    },
+    /// A joint or contact joins a body to itself.
+    #[error("{element:?} joins {body:?} to itself")]
+    SameBody {
+        /// the element's name
+        element: String,
+        /// the body's name
+        body: String,
+    },
+    /// Two drivers set the same coordinate.
+    #[error(
+        "{element:?} drives the {coordinate} of {body:?}, which another driver already drives"
+    )]
+    DrivenTwice {
+        /// the second driver's name
+        element: String,
+        /// the body's name
+        body: String,
+        /// the coordinate
+        coordinate: Coordinate,
+    },
+    /// The rows cannot determine the coordinates: a kinematic analysis needs as many rows
+    /// (joints', drivers', contacts') as coordinates (three a body).
+    #[error("the system has {coordinates} coordinates (three a body) and {rows} constraint rows: a kinematic analysis needs one row for each (drive every degree of freedom, or remove a redundant joint)")]
+    NotSquare {
+        /// three a body
+        coordinates: usize,
+        /// joints', drivers' and contacts' rows
+        rows: usize,
+    },
+    /// The rows are dependent at this instant: a dead point or toggle, or redundant joints.
+    #[error("at t = {time} s the constraints are singular (a dead point, a toggle, or redundant joints): {rows}")]
+    Singular {
+        /// the instant, s
+        time: f64,
+        /// the rows involved, named
+        rows: String,
+    },
+    /// Newton on the positions did not converge: the system cannot assemble at this instant
+    /// (a closed loop that does not close, a contact lost).
+    #[error("at t = {time} s the system cannot be assembled: {reason} (largest residual {residual:e}, in {row})")]
+    NoAssembly {
+        /// the instant, s
+        time: f64,
+        /// why Newton stopped
+        reason: &'static str,
+        /// the largest row residual left
+        residual: f64,
+        /// that row, named
+        row: String,
+    },
+    /// A contact's pairing or kinematics failed.
+    #[error("at t = {time} s, contact {contact:?}: {reason}")]
+    Contact {
+        /// the instant, s
+        time: f64,
+        /// the contact's name
+        contact: String,
+        /// what failed
+        reason: String,
+    },
+}

@@ -1,0 +1,287 @@
+//! Planar multibody systems: rigid bodies, joints between any two of them (or a body and the
+//! ground), driven coordinates, and contacts between curves carried by any two bodies, each
+//! contact imposed as the paper's one linear row (eq. 11) with its exact `γ`.
+//!
+//! # Coordinates and rows
+//!
+//! Body `i` has `q_i = (x_i, y_i, θ_i)`: its frame's origin and angle in the world
+//! (counter-clockwise positive); the ground has none. Every joint, driver and contact gives rows
+//! of `Φ(q, t) = 0`, and at one instant the analysis solves, in turn (Haug 1989, ch. 3):
+//!
+//! ```text
+//! Φ(q, t) = 0                  positions: Newton from the previous instant (or the initial poses,
+//!                              each contact's pairing found first by a global search)
+//! Φ_q q̇ = −Φ_t                 velocities
+//! Φ_q q̈ = γ                    accelerations
+//! ```
+//!
+//! with one `Φ_q`. A contact's row is its gap along the common normal, `ν_A·(x_A − x_B)`, at the
+//! pairing points (re-solved at every Newton step, so its derivative is the row
+//! [`crate::contact::ContactKinematics::phi_q`]); its `γ` is the paper's, with the Coriolis
+//! (`2 ω ṡ`) and relative (`κ ṡ²`) terms from the exact sliding rates: no difference in time, no
+//! interpolation. The joints' rows (see [`JointKind`]) and the drivers' (`q_k − f(t)`) are the
+//! textbook ones. See `multibody-systems.md` for the conventions.
+//!
+//! A system must have as many rows as coordinates (each degree of freedom driven): the analysis
+//! says which rows are redundant or singular (a dead point, a toggle) at which instant, never an
+//! answer from a singular matrix.
+
+mod driver;
+mod error;
+mod joint;
+mod solve;
+
+pub use driver::{Coordinate, Driver, Law};
+pub use error::SystemError;
+pub use joint::{Joint, JointKind};
+pub use solve::{ContactState, SystemState, SystemSweep};
+
+use crate::body::Pose;
+use crate::curve::Curve;
+use crate::geometry::Point2;
+use std::sync::Arc;
+
+/// A body of a [`System`], or the ground.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct BodyId(pub(crate) usize);
+
+impl BodyId {
+    /// The ground: fixed, no coordinates.
+    pub const GROUND: BodyId = BodyId(usize::MAX);
+
+    /// Whether this is the ground.
+    pub fn is_ground(self) -> bool {
+        self == Self::GROUND
+    }
+
+    /// The index of a moving body (`None` for the ground).
+    pub fn index(self) -> Option<usize> {
+        (!self.is_ground()).then_some(self.0)
+    }
+}
+
+/// A rigid body: its name, its mass properties (for dynamics) and where it starts (the first
+/// Newton iteration's guess: near its assembled pose).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Body {
+    /// its name, as errors and results name it
+    pub name: String,
+    /// mass
+    pub mass: f64,
+    /// moment of inertia about its frame's origin
+    pub inertia: f64,
+    /// its pose at the start, a guess
+    pub pose: Pose,
+}
+
+/// A contact between a curve on body `a` and a curve on body `b` (either may be the ground): one
+/// row, the gap along the common normal, with the paper's `γ`. The curves are in their bodies'
+/// frames, material on the left (see the crate's sign conventions).
+#[derive(Debug, Clone)]
+pub struct Contact {
+    /// its name
+    pub name: String,
+    /// the body carrying curve A
+    pub a: BodyId,
+    /// curve A, in `a`'s frame
+    pub curve_a: Arc<dyn Curve>,
+    /// the body carrying curve B
+    pub b: BodyId,
+    /// curve B, in `b`'s frame
+    pub curve_b: Arc<dyn Curve>,
+}
+
+/// A planar multibody system: bodies, joints, drivers and contacts. Build it with
+/// [`System::new`] and the `add_` methods; [`System::analyze`] solves one instant,
+/// [`System::sweep`] many, warm-started.
+#[derive(Debug, Clone, Default)]
+pub struct System {
+    pub(crate) bodies: Vec<Body>,
+    pub(crate) joints: Vec<Joint>,
+    pub(crate) drivers: Vec<Driver>,
+    pub(crate) contacts: Vec<Contact>,
+}
+
+impl System {
+    /// An empty system (the ground alone).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Adds a body; returns its id.
+    pub fn add_body(&mut self, body: Body) -> BodyId {
+        self.bodies.push(body);
+        BodyId(self.bodies.len() - 1)
+    }
+
+    /// Adds a joint.
+    pub fn add_joint(&mut self, joint: Joint) {
+        self.joints.push(joint);
+    }
+
+    /// Adds a driver.
+    pub fn add_driver(&mut self, driver: Driver) {
+        self.drivers.push(driver);
+    }
+
+    /// Adds a contact.
+    pub fn add_contact(&mut self, contact: Contact) {
+        self.contacts.push(contact);
+    }
+
+    /// The bodies, in the order they were added.
+    pub fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    /// The joints.
+    pub fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    /// The drivers.
+    pub fn drivers(&self) -> &[Driver] {
+        &self.drivers
+    }
+
+    /// The contacts.
+    pub fn contacts(&self) -> &[Contact] {
+        &self.contacts
+    }
+
+    /// The body of `id`'s name (`ground` for the ground).
+    pub fn body_name(&self, id: BodyId) -> &str {
+        match id.index() {
+            Some(i) => self.bodies.get(i).map_or("?", |b| b.name.as_str()),
+            None => "ground",
+        }
+    }
+
+    /// A length of the system's size: the largest distance of a body's start, a joint's point
+    /// or a curve's point from the world's origin (at least 1e-300), for tolerances.
+    pub fn size(&self) -> f64 {
+        let mut s: f64 = 0.0;
+        for b in &self.bodies {
+            s = s.max(b.pose.origin.coords.norm());
+        }
+        for j in &self.joints {
+            for p in j.kind.points() {
+                s = s.max(p.coords.norm());
+            }
+        }
+        for c in &self.contacts {
+            for curve in [&c.curve_a, &c.curve_b] {
+                for k in 0..16 {
+                    let u = match curve.domain() {
+                        crate::curve::Domain::Periodic { period } => period * k as f64 / 16.0,
+                        crate::curve::Domain::Interval { min, max }
+                            if min.is_finite() && max.is_finite() =>
+                        {
+                            min + (max - min) * k as f64 / 16.0
+                        }
+                        _ => 0.0,
+                    };
+                    s = s.max(curve.position(u).coords.norm());
+                }
+            }
+        }
+        s.max(1e-300)
+    }
+
+    /// Checks that every joint, driver and contact names bodies of this system and that the
+    /// rows can determine the coordinates (as many rows as coordinates).
+    pub fn check(&self) -> Result<(), SystemError> {
+        let n = self.bodies.len();
+        let known = |id: BodyId| id.is_ground() || id.0 < n;
+        for j in &self.joints {
+            for id in j.kind.bodies() {
+                if !known(id) {
+                    return Err(SystemError::UnknownBody {
+                        element: j.name.clone(),
+                    });
+                }
+            }
+            let [a, b] = j.kind.bodies();
+            if a == b {
+                return Err(SystemError::SameBody {
+                    element: j.name.clone(),
+                    body: self.body_name(a).to_string(),
+                });
+            }
+        }
+        for c in &self.contacts {
+            if !known(c.a) || !known(c.b) {
+                return Err(SystemError::UnknownBody {
+                    element: c.name.clone(),
+                });
+            }
+            if c.a == c.b {
+                return Err(SystemError::SameBody {
+                    element: c.name.clone(),
+                    body: self.body_name(c.a).to_string(),
+                });
+            }
+        }
+        let mut driven = std::collections::HashSet::new();
+        for d in &self.drivers {
+            if d.body.is_ground() || !known(d.body) {
+                return Err(SystemError::UnknownBody {
+                    element: d.name.clone(),
+                });
+            }
+            if !driven.insert((d.body, d.coordinate)) {
+                return Err(SystemError::DrivenTwice {
+                    element: d.name.clone(),
+                    body: self.body_name(d.body).to_string(),
+                    coordinate: d.coordinate,
+                });
+            }
+        }
+        let rows = self.rows();
+        if rows != 3 * n {
+            return Err(SystemError::NotSquare {
+                coordinates: 3 * n,
+                rows,
+            });
+        }
+        Ok(())
+    }
+
+    /// The number of constraint rows: every joint's, driver's and contact's.
+    pub fn rows(&self) -> usize {
+        self.joints.iter().map(|j| j.kind.rows()).sum::<usize>()
+            + self.drivers.len()
+            + self.contacts.len()
+    }
+
+    /// The name of row `r` and what it constrains (`joint "pivot" (x)`), for messages.
+    pub fn row_name(&self, r: usize) -> String {
+        let mut k = r;
+        for j in &self.joints {
+            let n = j.kind.rows();
+            if k < n {
+                return format!("joint {:?} ({})", j.name, j.kind.row_label(k));
+            }
+            k -= n;
+        }
+        if k < self.drivers.len() {
+            return format!("driver {:?}", self.drivers[k].name);
+        }
+        k -= self.drivers.len();
+        match self.contacts.get(k) {
+            Some(c) => format!("contact {:?}", c.name),
+            None => format!("row {r}"),
+        }
+    }
+}
+
+/// Points a joint is made from, for [`System::size`].
+impl JointKind {
+    fn points(&self) -> Vec<Point2> {
+        match self {
+            JointKind::Revolute { at_a, at_b, .. }
+            | JointKind::Prismatic { at_a, at_b, .. }
+            | JointKind::Fixed { at_a, at_b, .. } => vec![*at_a, *at_b],
+        }
+    }
+}

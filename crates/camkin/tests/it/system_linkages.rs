@@ -1,0 +1,220 @@
+//! Issue 45: linkages as systems, against their closed-form loop equations: a four-bar
+//! crank-rocker and an offset slider-crank, the crank driven at constant speed. Positions from
+//! the loop closure (two circles' intersection; a circle and a line), velocities and
+//! accelerations by five-point differences of those closed-form positions — no formula shared
+//! with the method. Tolerances: positions 1e-12 of the size, velocities 1e-9 and accelerations
+//! 1e-7 of their peaks.
+
+use camkin::body::Pose;
+use camkin::system::{Body, BodyId, Coordinate, Driver, Joint, JointKind, Law, System};
+use camkin::{Point2, Vec2};
+
+fn body(name: &str, x: f64, y: f64, angle: f64) -> Body {
+    Body {
+        name: name.into(),
+        mass: 1.0,
+        inertia: 1.0,
+        pose: Pose::new(Point2::new(x, y), angle),
+    }
+}
+
+fn pin(name: &str, a: BodyId, at_a: [f64; 2], b: BodyId, at_b: [f64; 2]) -> Joint {
+    Joint {
+        name: name.into(),
+        kind: JointKind::Revolute {
+            a,
+            at_a: Point2::new(at_a[0], at_a[1]),
+            b,
+            at_b: Point2::new(at_b[0], at_b[1]),
+        },
+    }
+}
+
+/// Five-point central differences of `f` at `t`: first and second derivatives.
+fn derivatives(f: impl Fn(f64) -> f64, t: f64, h: f64) -> (f64, f64) {
+    let (m2, m1, z, p1, p2) = (f(t - 2.0 * h), f(t - h), f(t), f(t + h), f(t + 2.0 * h));
+    (
+        (m2 - 8.0 * m1 + 8.0 * p1 - p2) / (12.0 * h),
+        (-m2 + 16.0 * m1 - 30.0 * z + 16.0 * p1 - p2) / (12.0 * h * h),
+    )
+}
+
+/// The angle `b` turned to be within π of `a`.
+fn near(a: f64, b: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    b + ((a - b) / tau).round() * tau
+}
+
+/// Crank 1, coupler 3.5, rocker 2.5, ground 3 (Grashof: the crank turns fully), the crank at
+/// 10 rad/s: every angle of the crank over a revolution in 2° steps, swept (warm), and every
+/// fifth one also solved cold.
+#[test]
+fn a_four_bar_follows_its_loop_equations() {
+    let (a, b, c, d, w) = (1.0, 3.5, 2.5, 3.0, 10.0);
+    // the closed form: the coupler's and the rocker's angles at crank angle θ (the open branch,
+    // the coupler's far end above the line of the ground pivots)
+    let closed = |th: f64| -> (f64, f64) {
+        let pa = Vec2::new(a * th.cos(), a * th.sin());
+        let e = Vec2::new(d, 0.0) - pa;
+        let l = e.norm();
+        let x = (b * b - c * c + l * l) / (2.0 * l);
+        let h = (b * b - x * x).sqrt();
+        let u = e / l;
+        let pb = pa + x * u + h * Vec2::new(-u.y, u.x);
+        (
+            (pb - pa).y.atan2((pb - pa).x),
+            (pb - Vec2::new(d, 0.0)).y.atan2((pb - Vec2::new(d, 0.0)).x),
+        )
+    };
+    let mut sys = System::new();
+    let (t3, t4) = closed(0.0);
+    let crank = sys.add_body(body("crank", 0.0, 0.0, 0.0));
+    // the coupler and the rocker start a little off their assembled poses
+    let coupler = sys.add_body(body("coupler", a + 0.05, -0.03, t3 + 0.05));
+    let rocker = sys.add_body(body("rocker", d, 0.02, t4 - 0.04));
+    let g = BodyId::GROUND;
+    sys.add_joint(pin("O2", g, [0.0, 0.0], crank, [0.0, 0.0]));
+    sys.add_joint(pin("A", crank, [a, 0.0], coupler, [0.0, 0.0]));
+    sys.add_joint(pin("B", coupler, [b, 0.0], rocker, [c, 0.0]));
+    sys.add_joint(pin("O4", rocker, [0.0, 0.0], g, [d, 0.0]));
+    sys.add_driver(Driver {
+        name: "motor".into(),
+        body: crank,
+        coordinate: Coordinate::Angle,
+        law: Law::linear(0.0, w),
+    });
+    let mut sweep = sys.sweep().unwrap();
+    let size = d + a;
+    // peaks of the closed form's rates, for the tolerances
+    let (mut vpeak, mut apeak) = (0.0f64, 0.0f64);
+    let steps = 180;
+    let mut rows = Vec::new();
+    for k in 0..steps {
+        let t = k as f64 * std::f64::consts::TAU / steps as f64 / w;
+        let th = w * t;
+        let s = sweep.step(t).unwrap();
+        let (e3, e4) = closed(th);
+        let angle = |f: &dyn Fn(f64) -> f64| {
+            let base = f(t);
+            derivatives(|x| near(base, f(x)), t, 1e-4)
+        };
+        let f3 = |x: f64| closed(w * x).0;
+        let f4 = |x: f64| closed(w * x).1;
+        let (v3, a3) = angle(&f3);
+        let (v4, a4) = angle(&f4);
+        vpeak = vpeak.max(v3.abs()).max(v4.abs());
+        apeak = apeak.max(a3.abs()).max(a4.abs());
+        rows.push((k, s, [e3, e4], [v3, v4], [a3, a4]));
+        if k % 5 == 0 {
+            let cold = sys.analyze(t).unwrap();
+            for i in 0..3 {
+                let (p, q) = (&cold.bodies[i].pose, &rows[k].1.bodies[i].pose);
+                assert!((p.origin - q.origin).norm() <= 1e-12 * size, "cold at {k}");
+            }
+        }
+    }
+    for (k, s, e, v, acc) in rows {
+        for (i, id) in [coupler, rocker].iter().enumerate() {
+            let b = &s.bodies[id.index().unwrap()];
+            let what = format!("body {i} at step {k}");
+            assert!(
+                (near(e[i], b.pose.angle) - e[i]).abs() * size <= 1e-12 * size,
+                "{what}: angle {} against {}",
+                b.pose.angle,
+                e[i]
+            );
+            assert!(
+                (b.omega - v[i]).abs() <= 1e-9 * vpeak,
+                "{what}: ω {} against {}",
+                b.omega,
+                v[i]
+            );
+            assert!(
+                (b.alpha - acc[i]).abs() <= 1e-7 * apeak,
+                "{what}: α {} against {}",
+                b.alpha,
+                acc[i]
+            );
+        }
+        // the pins hold: the coupler's far end is the rocker's
+        let (cb, rb) = (&s.bodies[1], &s.bodies[2]);
+        let far = cb.pose.to_world(Point2::new(b, 0.0));
+        let tip = rb.pose.to_world(Point2::new(c, 0.0));
+        assert!((far - tip).norm() <= 1e-12 * size);
+        assert!(s.contacts.is_empty());
+    }
+}
+
+/// An offset slider-crank (crank 1.2, rod 4, the slider's line 0.5 above the crank's pivot), the
+/// crank at 30 rad/s and accelerating at 200 rad/s²: the slider's position
+/// `x = a cos θ + √(l² − (a sin θ − e)²)` and its rates by differences in time.
+#[test]
+fn an_offset_slider_crank_follows_its_closed_form() {
+    let (a, l, e, w, al) = (1.2, 4.0, 0.5, 30.0, 200.0);
+    let x_of = |t: f64| {
+        let th = w * t + 0.5 * al * t * t;
+        a * th.cos() + (l * l - (a * th.sin() - e).powi(2)).sqrt()
+    };
+    let mut sys = System::new();
+    let g = BodyId::GROUND;
+    let crank = sys.add_body(body("crank", 0.0, 0.0, 0.0));
+    let rod = sys.add_body(body("rod", a, 0.0, 0.1));
+    let slider = sys.add_body(body("slider", x_of(0.0) + 0.1, e, 0.0));
+    sys.add_joint(pin("O", g, [0.0, 0.0], crank, [0.0, 0.0]));
+    sys.add_joint(pin("A", crank, [a, 0.0], rod, [0.0, 0.0]));
+    sys.add_joint(pin("B", rod, [l, 0.0], slider, [0.0, 0.0]));
+    sys.add_joint(Joint {
+        name: "guide".into(),
+        kind: JointKind::Prismatic {
+            a: g,
+            at_a: Point2::new(0.0, e),
+            axis: Vec2::new(1.0, 0.0),
+            b: slider,
+            at_b: Point2::origin(),
+            angle: 0.0,
+        },
+    });
+    sys.add_driver(Driver {
+        name: "motor".into(),
+        body: crank,
+        coordinate: Coordinate::Angle,
+        law: Law::Quadratic {
+            start: 0.0,
+            rate: w,
+            acceleration: al,
+        },
+    });
+    let mut sweep = sys.sweep().unwrap();
+    let mut checked = 0;
+    let (mut vpeak, mut apeak) = (0.0f64, 0.0f64);
+    let mut rows = Vec::new();
+    for k in 0..200 {
+        let t = k as f64 * 1e-3;
+        let s = sweep.step(t).unwrap();
+        let (v, acc) = derivatives(x_of, t, 1e-5);
+        vpeak = vpeak.max(v.abs());
+        apeak = apeak.max(acc.abs());
+        rows.push((s, x_of(t), v, acc));
+    }
+    for (s, x, v, acc) in rows {
+        let b = &s.bodies[slider.index().unwrap()];
+        assert!(
+            (b.pose.origin.x - x).abs() <= 1e-12 * l,
+            "{} {x}",
+            b.pose.origin.x
+        );
+        assert!((b.pose.origin.y - e).abs() <= 1e-12 * l);
+        assert!(
+            (b.velocity.x - v).abs() <= 1e-9 * vpeak,
+            "{} {v}",
+            b.velocity.x
+        );
+        assert!(
+            (b.acceleration.x - acc).abs() <= 1e-7 * apeak,
+            "{} {acc}",
+            b.acceleration.x
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 200);
+}
