@@ -423,6 +423,12 @@ pub fn find_contact_indexed(
         match refine(a, b, ua, ub, opts) {
             Ok(p) => {
                 if p.gap < -opts.contact_tolerance {
+                    // a pair with normals opposed across a space (a gear's flank and the next
+                    // tooth's tip) has a negative gap too: only points inside each other's
+                    // outline are an overlap
+                    if !penetrates(a, ia, b, ib, &p) {
+                        continue;
+                    }
                     if deepest.is_none_or(|d| p.gap < d.gap) {
                         deepest = Some(p);
                     }
@@ -442,6 +448,29 @@ pub fn find_contact_indexed(
         Some(p) => Ok(Proximity::Apart(p)),
         None => Err(last_err.unwrap_or(ContactError::Unsupported("curves with no pairing points"))),
     }
+}
+
+/// Whether a pair with a negative gap is a real overlap: each point inside the other curve's
+/// outline (for a closed curve, by its sample polygon; an overlap shallower than the polygon's
+/// longest side, where the polygon may differ from the curve, is taken as the local geometry
+/// says, and an open curve's side is its material side there).
+fn penetrates(
+    a: &Surface<'_>,
+    ia: Option<&CurveIndex>,
+    b: &Surface<'_>,
+    ib: Option<&CurveIndex>,
+    p: &Pairing,
+) -> bool {
+    let depth = -p.gap;
+    let inside = |s: &Surface<'_>, i: Option<&CurveIndex>, x: Point2| {
+        let closed = matches!(s.curve.domain(), Domain::Periodic { .. });
+        let local = s.frame.inverse_transform_point(&x);
+        match i.and_then(|i| i.polygon_contains(closed, local)) {
+            Some((inside, longest)) => inside || depth <= longest,
+            None => true,
+        }
+    };
+    inside(a, ia, p.point_b) && inside(b, ib, p.point_a)
 }
 
 /// The parameter of the foot of the perpendicular from `x` onto the surface's curve (Newton from

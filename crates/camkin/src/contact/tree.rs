@@ -66,6 +66,30 @@ impl CurveIndex {
         self.params[i]
     }
 
+    /// For a closed curve, whether the point `x` (in the curve's own frame) is inside the
+    /// polygon of its samples (even-odd rule), and the longest side of that polygon (within
+    /// which of the curve the polygon's answer may differ from the curve's); `None` for an open
+    /// curve.
+    pub(crate) fn polygon_contains(&self, closed: bool, x: Point2) -> Option<(bool, f64)> {
+        if !closed || self.points.len() < 3 {
+            return None;
+        }
+        let n = self.points.len();
+        let mut inside = false;
+        let mut longest: f64 = 0.0;
+        for i in 0..n {
+            let (p, q) = (self.points[i], self.points[(i + 1) % n]);
+            longest = longest.max((q - p).norm());
+            if (p.y > x.y) != (q.y > x.y) {
+                let at = p.x + (x.y - p.y) / (q.y - p.y) * (q.x - p.x);
+                if x.x < at {
+                    inside = !inside;
+                }
+            }
+        }
+        Some((inside, longest))
+    }
+
     /// The sampled points at a pose (world frame).
     #[cfg(test)]
     pub(crate) fn world_points(&self, frame: &Frame) -> Vec<Point2> {

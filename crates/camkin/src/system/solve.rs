@@ -6,7 +6,9 @@
 use super::joint::RowEval;
 use super::{BodyId, System, SystemError};
 use crate::body::{BodyState, Pose};
-use crate::contact::{self, ContactKinematics, Pairing, Proximity, SearchOptions, Surface};
+use crate::contact::{
+    self, ContactKinematics, CurveIndex, Pairing, Proximity, SearchOptions, Surface,
+};
 use crate::geometry::{rot90, Point2, Vec2};
 use nalgebra::{DMatrix, DVector};
 
@@ -33,6 +35,10 @@ pub struct ContactState {
     pub pairing: Pairing,
     /// the paper's kinematics at it
     pub kinematics: ContactKinematics,
+    /// the contact moved to another pair of points since the last instant (the pair it
+    /// followed would have let the curves overlap elsewhere: a gear's next tooth, a cam's
+    /// concave stretch bridged); the acceleration is impulsive there
+    pub jumped: bool,
 }
 
 /// Every body's pose, velocity and acceleration and every contact's kinematics at one instant.
@@ -59,6 +65,13 @@ struct Solved {
     rates: Vec<(f64, f64)>,
 }
 
+/// A contact's gap beyond this times the size, at a Newton step, has the global search check
+/// that no nearer pair of points is the contact (a warm-started step predicts gaps far smaller).
+const SUSPECT_GAP: f64 = 1e-6;
+
+/// Most times one instant moves its contacts to other pairs of points.
+const MAX_JUMPS: usize = 8;
+
 /// Instants of a system in order, each warm-started from the last.
 #[derive(Debug)]
 pub struct SystemSweep<'a> {
@@ -66,6 +79,11 @@ pub struct SystemSweep<'a> {
     opts: SearchOptions,
     size: f64,
     last: Option<Solved>,
+    /// each contact's curves' search indexes, for the check that no other pair of points
+    /// overlaps
+    indexes: Vec<(Option<CurveIndex>, Option<CurveIndex>)>,
+    /// the contacts that jumped in any instant solved on the way to the one asked for
+    jumps: Vec<bool>,
 }
 
 impl System {
@@ -79,11 +97,24 @@ impl System {
     pub fn sweep(&self) -> Result<SystemSweep<'_>, SystemError> {
         self.check()?;
         let size = self.size();
+        let opts = SearchOptions::for_length_scale(size);
+        let indexes = self
+            .contacts
+            .iter()
+            .map(|c| {
+                (
+                    CurveIndex::new(c.curve_a.as_ref(), &opts),
+                    CurveIndex::new(c.curve_b.as_ref(), &opts),
+                )
+            })
+            .collect();
         Ok(SystemSweep {
             sys: self,
-            opts: SearchOptions::for_length_scale(size),
+            opts,
             size,
             last: None,
+            indexes,
+            jumps: vec![false; self.contacts.len()],
         })
     }
 }
@@ -129,6 +160,7 @@ impl SystemSweep<'_> {
         t: f64,
         st: &[BodyState],
         pairings: &mut [(f64, f64)],
+        jumped: &mut [bool],
         with_kinematics: bool,
     ) -> Result<Assembly, SystemError> {
         let sys = self.sys;
@@ -176,7 +208,7 @@ impl SystemSweep<'_> {
             r += 1;
         }
         let mut contacts = Vec::with_capacity(sys.contacts.len());
-        for (c, pair) in sys.contacts.iter().zip(pairings.iter_mut()) {
+        for (k, (c, pair)) in sys.contacts.iter().zip(pairings.iter_mut()).enumerate() {
             let (sa, sb) = (get(st, c.a), get(st, c.b));
             let (fa, fb) = (
                 Surface::new(c.curve_a.as_ref(), &sa),
@@ -187,8 +219,38 @@ impl SystemSweep<'_> {
                 contact: c.name.clone(),
                 reason,
             };
-            let p = contact::refine(&fa, &fb, pair.0, pair.1, &self.opts)
-                .map_err(|e| fail(e.to_string()))?;
+            // Newton from the pairing followed, or, where it wanders off (a corner, a pairing
+            // far from the new poses), from the nearest or deepest pair the global search finds
+            let global = || -> Result<Pairing, SystemError> {
+                let (ia, ib) = &self.indexes[k];
+                let found =
+                    contact::find_contact_indexed(&fa, ia.as_ref(), &fb, ib.as_ref(), &self.opts)
+                        .map_err(|e| fail(e.to_string()))?;
+                let (Proximity::Apart(g) | Proximity::Touching(g) | Proximity::Overlapping(g)) =
+                    found;
+                Ok(g)
+            };
+            let p = match contact::refine(&fa, &fb, pair.0, pair.1, &self.opts) {
+                // a pairing that converged far from contact may have left the pair followed for
+                // another tangency (past a gear's tip, Newton finds the tip circle against some
+                // flank): the contact is the first touch, so a nearer pair found globally wins
+                Ok(p) if p.gap.abs() > SUSPECT_GAP * size => {
+                    let g = global()?;
+                    if g.gap < p.gap - self.opts.contact_tolerance {
+                        jumped[k] = true;
+                        contact::refine(&fa, &fb, g.u_a, g.u_b, &self.opts).unwrap_or(g)
+                    } else {
+                        p
+                    }
+                }
+                Ok(p) => p,
+                Err(_) => {
+                    let g = global()?;
+                    jumped[k] = true;
+                    contact::refine(&fa, &fb, g.u_a, g.u_b, &self.opts)
+                        .map_err(|e| fail(e.to_string()))?
+                }
+            };
             *pair = (p.u_a, p.u_b);
             let nu = p.normal.into_inner();
             // the gap's gradient: ν on A's point, −ν on B's (the pairing is stationary)
@@ -254,12 +316,13 @@ impl SystemSweep<'_> {
         t: f64,
         mut q: DVector<f64>,
         pairings: &mut [(f64, f64)],
+        jumped: &mut [bool],
     ) -> Result<(DVector<f64>, u32), SystemError> {
         let nb = self.sys.bodies.len();
         let size = self.size;
         for it in 1..=MAX_ITERATIONS {
             let st = states(&q, None, nb);
-            let a = self.assemble(t, &st, pairings, false)?;
+            let a = self.assemble(t, &st, pairings, jumped, false)?;
             let lu = self.factor(t, &a.jac)?;
             let step = lu.solve(&(-&a.phi)).ok_or_else(|| SystemError::Singular {
                 time: t,
@@ -292,7 +355,7 @@ impl SystemSweep<'_> {
             }
         }
         let st = states(&q, None, nb);
-        let a = self.assemble(t, &st, pairings, false)?;
+        let a = self.assemble(t, &st, pairings, jumped, false)?;
         let r = a.phi.iamax();
         Err(SystemError::NoAssembly {
             time: t,
@@ -308,9 +371,21 @@ impl SystemSweep<'_> {
     /// (the drivers moved a long way) is reached through instants between: the answer is the
     /// assembly continuously connected to the start, on its branch.
     pub fn step(&mut self, t: f64) -> Result<SystemState, SystemError> {
-        if self.last.is_none() && t != 0.0 {
+        let first = self.last.is_none();
+        if first && t != 0.0 {
             self.step_once(0.0)?;
         }
+        self.jumps.iter_mut().for_each(|j| *j = false);
+        let mut s = self.step_reached(t)?;
+        // a jump in an instant between (the continuation's) is this step's
+        for (c, &j) in s.contacts.iter_mut().zip(&self.jumps) {
+            c.jumped = j && !first;
+        }
+        Ok(s)
+    }
+
+    /// `t` from the last instant, through instants between where Newton needs them.
+    fn step_reached(&mut self, t: f64) -> Result<SystemState, SystemError> {
         match self.step_once(t) {
             Ok(s) => Ok(s),
             Err(e @ (SystemError::NoAssembly { .. } | SystemError::Contact { .. })) => {
@@ -373,10 +448,45 @@ impl SystemSweep<'_> {
                 (q, p)
             }
         };
-        let (q, iterations) = self.positions(t, q0, &mut pairings)?;
+        let predicted = pairings.clone();
+        let mut jumped = vec![false; sys.contacts.len()];
+        let (mut q, mut iterations) = self.positions(t, q0, &mut pairings, &mut jumped)?;
+        // a contact is unilateral: where the curves overlap at another pair of points, that pair
+        // is the contact (the one followed has left), and the instant is solved again with it
+        for _ in 0..MAX_JUMPS {
+            let moved = self.overlaps(t, &q, &mut pairings, &mut jumped)?;
+            if !moved {
+                break;
+            }
+            let (q2, it2) = self.positions(t, q.clone(), &mut pairings, &mut jumped)?;
+            q = q2;
+            iterations += it2;
+        }
         // velocities: Φ_q q̇ = −Φ_t (the drivers' rates)
+        // the first instant's pairings are where the search started, not a jump; after it, a
+        // pairing that Newton moved far beyond its prediction went to another pair of points
+        // (a gear's next tooth pair, touching too)
+        match &self.last {
+            None => jumped.iter_mut().for_each(|j| *j = false),
+            Some(last) => {
+                for (k, c) in sys.contacts.iter().enumerate() {
+                    let (was, guess, now) = (last.pairings[k], predicted[k], pairings[k]);
+                    let far = |curve: &dyn crate::curve::Curve, a: f64, b: f64, c: f64| {
+                        let (pa, pb, pc) =
+                            (curve.position(a), curve.position(b), curve.position(c));
+                        (pc - pb).norm() > 10.0 * (pb - pa).norm() + 1e-9 * size
+                    };
+                    if far(c.curve_a.as_ref(), was.0, guess.0, now.0)
+                        || far(c.curve_b.as_ref(), was.1, guess.1, now.1)
+                    {
+                        jumped[k] = true;
+                    }
+                }
+            }
+        }
+        let mut still = vec![false; sys.contacts.len()];
         let st = states(&q, None, nb);
-        let a = self.assemble(t, &st, &mut pairings, false)?;
+        let a = self.assemble(t, &st, &mut pairings, &mut still, false)?;
         let residual = a.phi.amax();
         if residual > RESIDUAL_TOLERANCE * size {
             let r = a.phi.iamax();
@@ -401,7 +511,7 @@ impl SystemSweep<'_> {
         let qd = unscale(lu.solve(&a.rate).ok_or_else(singular)?);
         // accelerations: Φ_q q̈ = γ, every contact's γ from its exact sliding rates
         let st = states(&q, Some(&qd), nb);
-        let b = self.assemble(t, &st, &mut pairings, true)?;
+        let b = self.assemble(t, &st, &mut pairings, &mut still, true)?;
         let qdd = unscale(lu.solve(&b.gamma).ok_or_else(singular)?);
         let bodies: Vec<BodyState> = (0..nb)
             .map(|i| {
@@ -411,13 +521,18 @@ impl SystemSweep<'_> {
                 s
             })
             .collect();
+        for (all, &j) in self.jumps.iter_mut().zip(&jumped) {
+            *all |= j;
+        }
         let contacts: Vec<ContactState> = b
             .contacts
             .iter()
-            .filter_map(|(p, k)| {
+            .zip(&jumped)
+            .filter_map(|((p, k), &jumped)| {
                 k.map(|k| ContactState {
                     pairing: *p,
                     kinematics: k,
+                    jumped,
                 })
             })
             .collect();
@@ -439,6 +554,40 @@ impl SystemSweep<'_> {
             contacts,
             iterations,
         })
+    }
+
+    /// Whether any contact's curves overlap at another pair of points at positions `q` (by the
+    /// global search over their indexes); each that does takes the deepest such pair.
+    fn overlaps(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        pairings: &mut [(f64, f64)],
+        jumped: &mut [bool],
+    ) -> Result<bool, SystemError> {
+        let st = states(q, None, self.sys.bodies.len());
+        let mut moved = false;
+        for (k, c) in self.sys.contacts.iter().enumerate() {
+            let (sa, sb) = (get(&st, c.a), get(&st, c.b));
+            let fa = Surface::new(c.curve_a.as_ref(), &sa);
+            let fb = Surface::new(c.curve_b.as_ref(), &sb);
+            let (ia, ib) = &self.indexes[k];
+            let found =
+                contact::find_contact_indexed(&fa, ia.as_ref(), &fb, ib.as_ref(), &self.opts)
+                    .map_err(|e| SystemError::Contact {
+                        time: t,
+                        contact: c.name.clone(),
+                        reason: e.to_string(),
+                    })?;
+            if let Proximity::Overlapping(p) = found {
+                if p.gap < -self.opts.contact_tolerance {
+                    pairings[k] = (p.u_a, p.u_b);
+                    jumped[k] = true;
+                    moved = true;
+                }
+            }
+        }
+        Ok(moved)
     }
 
     /// Each contact's pairing at the starting poses, by a global search: the touching pair, or

@@ -390,3 +390,43 @@ fn indexed_search_answers_as_the_plain_one_and_refuses_a_foreign_index() {
         assert!(matches!(e, ContactError::Unsupported(_)), "{e}");
     }
 }
+
+/// Regression (issue 45): two meshing spur gears (20 and 31 teeth, module 2, 20°) at their
+/// standard centre distance touch on their flanks; the global search used to report them
+/// overlapping by 5.9 mm, at a pair of points across a tooth space whose normals are opposed (a
+/// flank and the next tooth's tip): a negative gap, but neither point inside the other gear. The
+/// same gears 0.3 mm closer do overlap, and the deepest pair found has each point inside the
+/// other gear's outline.
+#[test]
+fn meshing_gears_touch_and_do_not_overlap_across_a_space() {
+    use camkin::curve::{InvoluteGear, InvoluteGearSpec};
+    use std::f64::consts::PI;
+    let (m, alpha) = (2.0, 20f64.to_radians());
+    let g1 = InvoluteGear::new(InvoluteGearSpec::new(m, 20, alpha)).unwrap();
+    let g2 = InvoluteGear::new(InvoluteGearSpec::new(m, 31, alpha)).unwrap();
+    let s1 = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
+    let opts = SearchOptions::for_length_scale(50.0);
+    for turn in [0.0, 0.05, 0.11] {
+        // gear 2's space faces gear 1's tooth 0, both turned by the ratio
+        let s1 = BodyState::at_rest(Pose::new(Point2::origin(), turn));
+        let s2 = BodyState::at_rest(Pose::new(
+            Point2::new(51.0, 0.0),
+            PI + PI / 31.0 - turn * 20.0 / 31.0,
+        ));
+        match find_contact(&Surface::new(&g1, &s1), &Surface::new(&g2, &s2), &opts).unwrap() {
+            Proximity::Touching(p) => assert!(p.gap.abs() <= 1e-9, "{p:?}"),
+            other => panic!("turned {turn}: {other:?}"),
+        }
+    }
+    let closer = BodyState::at_rest(Pose::new(Point2::new(50.7, 0.0), PI + PI / 31.0));
+    match find_contact(&Surface::new(&g1, &s1), &Surface::new(&g2, &closer), &opts).unwrap() {
+        Proximity::Overlapping(p) => {
+            assert!(p.gap < 0.0 && p.gap > -0.3, "{p:?}");
+            // each point inside the other gear: within its tip circle, beyond its root circle
+            let r1 = p.point_b.coords.norm();
+            let r2 = (p.point_a - closer.pose.origin).norm();
+            assert!(r1 < g1.tip_radius() && r2 < g2.tip_radius(), "{p:?}");
+        }
+        other => panic!("{other:?}"),
+    }
+}

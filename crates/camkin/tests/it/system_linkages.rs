@@ -218,3 +218,92 @@ fn an_offset_slider_crank_follows_its_closed_form() {
     }
     assert_eq!(checked, 200);
 }
+
+/// A train of three involute gears, 20, 31 and 42 teeth (module 2, 20°), at their standard
+/// centre distances on one line, the 31 an idler: the first driven at 100 rad/s. The second
+/// turns at −z1/z2 of it, the third at +z1/z3 — the same sense as the first, exactly, with zero
+/// angular acceleration (ideal involutes at the standard distance), through every handover of the
+/// teeth (the contacts jump to the next pair where the pair followed leaves its flank).
+#[test]
+fn a_three_gear_train_turns_at_the_tooth_ratios() {
+    use camkin::curve::{InvoluteGear, InvoluteGearSpec};
+    use camkin::system::Contact;
+    use std::f64::consts::PI;
+    use std::sync::Arc;
+    let (m, alpha) = (2.0, 20f64.to_radians());
+    let gear = |z: u32| Arc::new(InvoluteGear::new(InvoluteGearSpec::new(m, z, alpha)).unwrap());
+    let (z1, z2, z3) = (20.0, 31.0, 42.0);
+    let (a12, a23) = (m * (z1 + z2) / 2.0, m * (z2 + z3) / 2.0);
+    let w = 100.0;
+    let mut sys = System::new();
+    let g = BodyId::GROUND;
+    // gear 2's space faces gear 1's tooth 0 (along +x); gear 2 then has a tooth along +x, and
+    // gear 3's space faces it
+    let (p2, p3) = (PI + PI / z2, PI + PI / z3);
+    let b1 = sys.add_body(body("driver", 0.0, 0.0, 0.0));
+    let b2 = sys.add_body(body("idler", a12, 0.0, p2));
+    let b3 = sys.add_body(body("output", a12 + a23, 0.0, p3));
+    sys.add_joint(pin("shaft 1", g, [0.0, 0.0], b1, [0.0, 0.0]));
+    sys.add_joint(pin("shaft 2", g, [a12, 0.0], b2, [0.0, 0.0]));
+    sys.add_joint(pin("shaft 3", g, [a12 + a23, 0.0], b3, [0.0, 0.0]));
+    sys.add_driver(Driver {
+        name: "motor".into(),
+        body: b1,
+        coordinate: Coordinate::Angle,
+        law: Law::linear(0.0, w),
+    });
+    sys.add_contact(Contact {
+        name: "mesh 1-2".into(),
+        a: b1,
+        curve_a: gear(20),
+        b: b2,
+        curve_b: gear(31),
+    });
+    sys.add_contact(Contact {
+        name: "mesh 2-3".into(),
+        a: b2,
+        curve_a: gear(31),
+        b: b3,
+        curve_b: gear(42),
+    });
+    let mut sweep = sys.sweep().unwrap();
+    let mut jumps = [0, 0];
+    let first = sweep.step(0.0).unwrap();
+    let (s2, s3) = (first.bodies[1].pose.angle, first.bodies[2].pose.angle);
+    // three pitches of gear 1 (54°) in 0.25° steps
+    for k in 0..=216 {
+        let th = f64::from(k) * 0.25f64.to_radians();
+        let s = sweep.step(th / w).unwrap();
+        let what = format!("at {:.2}°", th.to_degrees());
+        let (o2, o3) = (&s.bodies[1], &s.bodies[2]);
+        assert!(
+            (o2.omega + z1 / z2 * w).abs() <= 1e-9 * w,
+            "{what}: ω2 {}",
+            o2.omega
+        );
+        assert!(
+            (o3.omega - z1 / z3 * w).abs() <= 1e-9 * w,
+            "{what}: ω3 {}",
+            o3.omega
+        );
+        assert!(o2.alpha.abs() <= 1e-7 * w * w, "{what}: α2 {}", o2.alpha);
+        assert!(o3.alpha.abs() <= 1e-7 * w * w, "{what}: α3 {}", o3.alpha);
+        assert!(
+            (o2.pose.angle - s2 + z1 / z2 * th).abs() <= 1e-12 * 2.0 * PI,
+            "{what}: φ2 {} from {s2}, θ {th}",
+            o2.pose.angle
+        );
+        assert!(
+            (o3.pose.angle - s3 - z1 / z3 * th).abs() <= 1e-12 * 2.0 * PI,
+            "{what}: φ3 {} from {s3}, expected {}",
+            o3.pose.angle,
+            s3 + z1 / z3 * th
+        );
+        for (j, c) in s.contacts.iter().enumerate() {
+            jumps[j] += usize::from(c.jumped);
+        }
+    }
+    // over three pitches of gear 1 each mesh hands over to the next pair at least twice (once a
+    // pitch: a pitch of any of the three gears is 18° of gear 1)
+    assert!(jumps[0] >= 2 && jumps[1] >= 2, "{jumps:?}");
+}
