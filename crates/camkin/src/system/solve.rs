@@ -63,6 +63,8 @@ struct Solved {
     qdd: DVector<f64>,
     pairings: Vec<(f64, f64)>,
     rates: Vec<(f64, f64)>,
+    /// each contact's sliding rates along A and B, length/s
+    slides: Vec<(f64, f64)>,
 }
 
 /// A contact's gap beyond this times the size, at a Newton step, has the global search check
@@ -448,7 +450,6 @@ impl SystemSweep<'_> {
                 (q, p)
             }
         };
-        let predicted = pairings.clone();
         let mut jumped = vec![false; sys.contacts.len()];
         let (mut q, mut iterations) = self.positions(t, q0, &mut pairings, &mut jumped)?;
         // a contact is unilateral: where the curves overlap at another pair of points, that pair
@@ -463,26 +464,9 @@ impl SystemSweep<'_> {
             iterations += it2;
         }
         // velocities: Φ_q q̇ = −Φ_t (the drivers' rates)
-        // the first instant's pairings are where the search started, not a jump; after it, a
-        // pairing that Newton moved far beyond its prediction went to another pair of points
-        // (a gear's next tooth pair, touching too)
-        match &self.last {
-            None => jumped.iter_mut().for_each(|j| *j = false),
-            Some(last) => {
-                for (k, c) in sys.contacts.iter().enumerate() {
-                    let (was, guess, now) = (last.pairings[k], predicted[k], pairings[k]);
-                    let far = |curve: &dyn crate::curve::Curve, a: f64, b: f64, c: f64| {
-                        let (pa, pb, pc) =
-                            (curve.position(a), curve.position(b), curve.position(c));
-                        (pc - pb).norm() > 10.0 * (pb - pa).norm() + 1e-9 * size
-                    };
-                    if far(c.curve_a.as_ref(), was.0, guess.0, now.0)
-                        || far(c.curve_b.as_ref(), was.1, guess.1, now.1)
-                    {
-                        jumped[k] = true;
-                    }
-                }
-            }
+        // the first instant's pairings are where the search started, not a jump
+        if self.last.is_none() {
+            jumped.iter_mut().for_each(|j| *j = false);
         }
         let mut still = vec![false; sys.contacts.len()];
         let st = states(&q, None, nb);
@@ -521,6 +505,34 @@ impl SystemSweep<'_> {
                 s
             })
             .collect();
+        // a contact point that moved along its curve much farther than its sliding rates at
+        // both ends say (their mean times the step: third-order accurate) went to another pair
+        // of points that was touching too (a gear's next tooth pair)
+        if let Some(last) = &self.last {
+            let dt = t - last.time;
+            for (k, c) in sys.contacts.iter().enumerate() {
+                let Some(now) = b.contacts[k].1 else { continue };
+                let (was, slid) = (last.pairings[k], last.slides[k]);
+                let moved = |curve: &dyn crate::curve::Curve, a: f64, b: f64, rates: (f64, f64)| {
+                    let chord = (curve.position(b) - curve.position(a)).norm();
+                    let expected = (0.5 * (rates.0 + rates.1) * dt).abs();
+                    chord > 2.0 * expected + 1e-3 * size
+                };
+                if moved(
+                    c.curve_a.as_ref(),
+                    was.0,
+                    pairings[k].0,
+                    (slid.0, now.sliding_rate_a),
+                ) || moved(
+                    c.curve_b.as_ref(),
+                    was.1,
+                    pairings[k].1,
+                    (slid.1, now.sliding_rate_b),
+                ) {
+                    jumped[k] = true;
+                }
+            }
+        }
         for (all, &j) in self.jumps.iter_mut().zip(&jumped) {
             *all |= j;
         }
@@ -540,6 +552,10 @@ impl SystemSweep<'_> {
             .iter()
             .map(|c| (c.kinematics.param_rate_a, c.kinematics.param_rate_b))
             .collect();
+        let slides = contacts
+            .iter()
+            .map(|c| (c.kinematics.sliding_rate_a, c.kinematics.sliding_rate_b))
+            .collect();
         self.last = Some(Solved {
             time: t,
             q,
@@ -547,6 +563,7 @@ impl SystemSweep<'_> {
             qdd,
             pairings,
             rates,
+            slides,
         });
         Ok(SystemState {
             time: t,

@@ -38,4 +38,5 @@ mod sweep;
 mod synthesis_round_trip;
 mod system_cam;
 mod system_linkages;
+mod system_valve_train;
 mod thin_geometry;
