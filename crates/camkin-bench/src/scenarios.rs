@@ -217,6 +217,11 @@ pub fn all() -> Vec<Scenario> {
         50,
     );
     add(
+        "system/valve-train-warm".into(),
+        "a warm instant of the single-valve train (3 bodies, 2 contacts), 0.25° steps",
+        200,
+    );
+    add(
         "dynamics/step-1deg".into(),
         "a simulated 1° step of the paper's cam (advance and sample)",
         360,
@@ -405,6 +410,19 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
                 let (t1, t2) = (Surface::new(&s1, &b1), Surface::new(&s2, &b2));
                 find_contact_indexed(&t1, i1.as_ref(), &t2, i2.as_ref(), &o)
                     .map_or(f64::NAN, |c| c.pairing().gap)
+            })
+        }
+        ("system", "valve-train-warm") => {
+            let w = 3000.0 * std::f64::consts::TAU / 60.0;
+            let (sys, [_, _, valve]) = camkin::reference::single_valve_train(w);
+            let mut sweep = sys.sweep().expect("system");
+            let dt = 0.25f64.to_radians() / w;
+            let _ = sweep.step(0.0);
+            let i = valve.index().unwrap_or(0);
+            counted_repetitions(reps, |k| {
+                sweep
+                    .step((k + 1) as f64 * dt)
+                    .map_or(f64::NAN, |s| s.bodies[i].acceleration.y)
             })
         }
         ("dynamics", "step-1deg") => {

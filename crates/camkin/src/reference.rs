@@ -5,8 +5,10 @@
 //! along +x. Reference values (exact, to the digits shown): θ = 0: s = 5 cm,
 //! a = −26 961.97 cm/s²; θ = 45°: s = 4.448456 cm, a = −6 291.918 cm/s².
 
+use crate::body::Pose;
 use crate::cam::{Cam, Follower, Mechanism, Sense};
-use crate::curve::ClosedSpline;
+use crate::curve::{Circle, ClosedSpline, Ellipse, Line};
+use crate::system::{Body, BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
 use crate::{Point2, Vec2};
 use std::sync::Arc;
 
@@ -48,4 +50,81 @@ pub fn paper_mechanism(revised: bool) -> Mechanism {
         },
     )
     .expect("valid mechanism")
+}
+
+/// A body of the valve train (its mass properties are placeholders for the kinematics).
+fn valve_body(name: &str, x: f64, y: f64, angle: f64) -> Body {
+    Body {
+        name: name.into(),
+        mass: 1.0,
+        inertia: 1.0,
+        pose: Pose::new(Point2::new(x, y), angle),
+    }
+}
+
+/// A single-valve train (mm, rad/s): a camshaft turning at `w` about the origin (an ellipse
+/// 15 × 20 mm, its centre 4 mm below the axis: one lobe, full lift at angle 0) above a roller
+/// finger follower pivoting on a lash adjuster's ball at (−35, −30), its 6 mm roller at (35, 0) and
+/// its pad (a 15 mm arc centred at (60, 12)) in its own frame, the pad on the flat tip of a valve
+/// sliding along x = 25. Returns the system and the ids of the camshaft, the finger and the valve.
+pub fn single_valve_train(w: f64) -> (System, [BodyId; 3]) {
+    let mut sys = System::new();
+    let g = BodyId::GROUND;
+    let cam = sys.add_body(valve_body("camshaft", 0.0, 0.0, 0.0));
+    // the finger and the valve start a little off their assembled poses
+    let finger = sys.add_body(valve_body("finger", -35.0, -30.0, 0.02));
+    let valve = sys.add_body(valve_body("valve", 25.0, -32.5, 0.0));
+    sys.add_joint(Joint {
+        name: "camshaft bearing".into(),
+        kind: JointKind::Revolute {
+            a: g,
+            at_a: Point2::origin(),
+            b: cam,
+            at_b: Point2::origin(),
+        },
+    });
+    sys.add_joint(Joint {
+        name: "lash adjuster".into(),
+        kind: JointKind::Revolute {
+            a: g,
+            at_a: Point2::new(-35.0, -30.0),
+            b: finger,
+            at_b: Point2::origin(),
+        },
+    });
+    sys.add_joint(Joint {
+        name: "valve guide".into(),
+        kind: JointKind::Prismatic {
+            a: g,
+            at_a: Point2::new(25.0, 0.0),
+            axis: Vec2::y(),
+            b: valve,
+            at_b: Point2::origin(),
+            angle: 0.0,
+        },
+    });
+    sys.add_driver(Driver {
+        name: "crank".into(),
+        body: cam,
+        coordinate: Coordinate::Angle,
+        law: Law::linear(0.0, w),
+    });
+    sys.add_contact(Contact {
+        name: "cam on roller".into(),
+        a: cam,
+        curve_a: Arc::new(
+            Ellipse::new(Point2::new(0.0, -4.0), 15.0, 20.0, 0.0).expect("a valid ellipse"),
+        ),
+        b: finger,
+        curve_b: Arc::new(Circle::new(Point2::new(35.0, 0.0), 6.0).expect("a valid circle")),
+    });
+    sys.add_contact(Contact {
+        name: "pad on valve".into(),
+        a: finger,
+        curve_a: Arc::new(Circle::new(Point2::new(60.0, 12.0), 15.0).expect("a valid circle")),
+        b: valve,
+        // the tip, the valve below it
+        curve_b: Arc::new(Line::new(Point2::origin(), Vec2::new(-1.0, 0.0)).expect("a valid line")),
+    });
+    (sys, [cam, finger, valve])
 }

@@ -26,9 +26,12 @@
 //! says which rows are redundant or singular (a dead point, a toggle) at which instant, never an
 //! answer from a singular matrix.
 
+mod assemble;
 mod driver;
 mod error;
 mod joint;
+mod lu;
+mod search;
 mod solve;
 
 pub use driver::{Coordinate, Driver, Law};

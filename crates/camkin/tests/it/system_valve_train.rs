@@ -1,4 +1,5 @@
-//! Issue 45: a single-valve train as a system — a camshaft (an offset ellipse, 15 × 20 mm, its
+//! Issue 45: a single-valve train as a system ([`camkin::reference::single_valve_train`]; the
+//! geometry restated here for the reference) — a camshaft (an offset ellipse, 15 × 20 mm, its
 //! centre 4 mm below the axis: one lobe) above a roller finger follower pivoting on a lash
 //! adjuster's ball, its 6 mm roller on the cam and its pad (a 15 mm arc) on the flat tip of a
 //! valve sliding in its guide: three moving bodies, two contacts. Checked against a reference
@@ -7,14 +8,9 @@
 //! the valve's position from the pad's lowest point, and their rates by five-point differences;
 //! the rocker ratio at full lift against the lever arms' closed form.
 
-use camkin::body::Pose;
-use camkin::curve::{Circle, Ellipse, Line};
-use camkin::system::{
-    Body, BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System, SystemState,
-};
+use camkin::system::SystemState;
 use camkin::{Point2, Vec2};
 use std::f64::consts::TAU;
-use std::sync::Arc;
 
 /// The lash adjuster's ball: the finger's pivot, world.
 const PIVOT: [f64; 2] = [-35.0, -30.0];
@@ -26,75 +22,6 @@ const PAD: ([f64; 2], f64) = ([60.0, 12.0], 15.0);
 const VALVE_X: f64 = 25.0;
 /// The cam: semi-axes along x and y, and its centre below the axis (cam frame).
 const CAM: (f64, f64, f64) = (15.0, 20.0, -4.0);
-
-fn body(name: &str, x: f64, y: f64, angle: f64) -> Body {
-    Body {
-        name: name.into(),
-        mass: 1.0,
-        inertia: 1.0,
-        pose: Pose::new(Point2::new(x, y), angle),
-    }
-}
-
-fn valve_train(w: f64) -> (System, [BodyId; 3]) {
-    let mut sys = System::new();
-    let g = BodyId::GROUND;
-    let cam = sys.add_body(body("camshaft", 0.0, 0.0, 0.0));
-    // the finger and the valve start a little off their assembled poses
-    let finger = sys.add_body(body("finger", PIVOT[0], PIVOT[1], 0.02));
-    let valve = sys.add_body(body("valve", VALVE_X, -32.5, 0.0));
-    sys.add_joint(Joint {
-        name: "camshaft bearing".into(),
-        kind: JointKind::Revolute {
-            a: g,
-            at_a: Point2::origin(),
-            b: cam,
-            at_b: Point2::origin(),
-        },
-    });
-    sys.add_joint(Joint {
-        name: "lash adjuster".into(),
-        kind: JointKind::Revolute {
-            a: g,
-            at_a: Point2::new(PIVOT[0], PIVOT[1]),
-            b: finger,
-            at_b: Point2::origin(),
-        },
-    });
-    sys.add_joint(Joint {
-        name: "valve guide".into(),
-        kind: JointKind::Prismatic {
-            a: g,
-            at_a: Point2::new(VALVE_X, 0.0),
-            axis: Vec2::y(),
-            b: valve,
-            at_b: Point2::origin(),
-            angle: 0.0,
-        },
-    });
-    sys.add_driver(Driver {
-        name: "crank".into(),
-        body: cam,
-        coordinate: Coordinate::Angle,
-        law: Law::linear(0.0, w),
-    });
-    sys.add_contact(Contact {
-        name: "cam on roller".into(),
-        a: cam,
-        curve_a: Arc::new(Ellipse::new(Point2::new(0.0, CAM.2), CAM.0, CAM.1, 0.0).unwrap()),
-        b: finger,
-        curve_b: Arc::new(Circle::new(Point2::new(ROLLER.0[0], ROLLER.0[1]), ROLLER.1).unwrap()),
-    });
-    sys.add_contact(Contact {
-        name: "pad on valve".into(),
-        a: finger,
-        curve_a: Arc::new(Circle::new(Point2::new(PAD.0[0], PAD.0[1]), PAD.1).unwrap()),
-        b: valve,
-        // the tip, the valve below it
-        curve_b: Arc::new(Line::new(Point2::origin(), Vec2::new(-1.0, 0.0)).unwrap()),
-    });
-    (sys, [cam, finger, valve])
-}
 
 /// A finger-frame point in the world at finger angle `phi`.
 fn on_finger(p: [f64; 2], phi: f64) -> Vec2 {
@@ -176,7 +103,7 @@ fn five_point(v: &[f64], h: f64) -> (f64, f64) {
 #[test]
 fn a_single_valve_train_follows_its_independent_reference() {
     let w = 3000.0 * TAU / 60.0;
-    let (sys, [_, finger, valve]) = valve_train(w);
+    let (sys, [_, finger, valve]) = camkin::reference::single_valve_train(w);
     let mut sweep = sys.sweep().unwrap();
     let size = 100.0;
     let steps = 180;
