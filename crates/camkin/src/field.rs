@@ -22,6 +22,111 @@ pub enum Field {
     FollowerConjugate(ProfileField),
     /// a field of `[dynamics]`
     Dynamics(DynamicsField),
+    /// a field of an element of a system file (`joint[2].bodies`)
+    System(SystemField),
+}
+
+/// A field of an element of a system file: which table, which element (0-based, in the file's
+/// order) and which key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SystemField {
+    /// the array of tables
+    pub table: SystemTable,
+    /// the element's index in it
+    pub index: usize,
+    /// the key
+    pub key: SystemKey,
+}
+
+/// The arrays of tables of a system file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum SystemTable {
+    /// `[[body]]`
+    Body,
+    /// `[[joint]]`
+    Joint,
+    /// `[[driver]]`
+    Driver,
+    /// `[[contact]]`
+    Contact,
+}
+
+impl SystemTable {
+    /// Its name in the file.
+    pub fn name(self) -> &'static str {
+        match self {
+            SystemTable::Body => "body",
+            SystemTable::Joint => "joint",
+            SystemTable::Driver => "driver",
+            SystemTable::Contact => "contact",
+        }
+    }
+}
+
+/// The keys of a system file's elements.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum SystemKey {
+    /// the element as a whole
+    Table,
+    /// `name`
+    Name,
+    /// `mass`
+    Mass,
+    /// `inertia`
+    Inertia,
+    /// `position`
+    Position,
+    /// `angle_deg`
+    AngleDeg,
+    /// `kind`
+    Kind,
+    /// `bodies`
+    Bodies,
+    /// `at`
+    At,
+    /// `axis`
+    Axis,
+    /// `body`
+    Body,
+    /// `coordinate`
+    Coordinate,
+    /// `start`
+    Start,
+    /// `speed_rpm`
+    SpeedRpm,
+    /// `speed`
+    Speed,
+    /// `acceleration`
+    Acceleration,
+    /// a key of `curve_a`
+    CurveA(ProfileField),
+    /// a key of `curve_b`
+    CurveB(ProfileField),
+}
+
+impl SystemKey {
+    fn name(self) -> Option<&'static str> {
+        Some(match self {
+            SystemKey::Table | SystemKey::CurveA(_) | SystemKey::CurveB(_) => return None,
+            SystemKey::Name => "name",
+            SystemKey::Mass => "mass",
+            SystemKey::Inertia => "inertia",
+            SystemKey::Position => "position",
+            SystemKey::AngleDeg => "angle_deg",
+            SystemKey::Kind => "kind",
+            SystemKey::Bodies => "bodies",
+            SystemKey::At => "at",
+            SystemKey::Axis => "axis",
+            SystemKey::Body => "body",
+            SystemKey::Coordinate => "coordinate",
+            SystemKey::Start => "start",
+            SystemKey::SpeedRpm => "speed_rpm",
+            SystemKey::Speed => "speed",
+            SystemKey::Acceleration => "acceleration",
+        })
+    }
 }
 
 /// Fields of `[cam]`.
@@ -173,6 +278,20 @@ impl Field {
             Field::FollowerProfile(_) => Field::FollowerProfile(ProfileField::Table),
             Field::FollowerConjugate(_) => Field::FollowerConjugate(ProfileField::Table),
             Field::Dynamics(_) => Field::Dynamics(DynamicsField::Table),
+            Field::System(f) => match f.key {
+                SystemKey::CurveA(_) => Field::System(SystemField {
+                    key: SystemKey::CurveA(ProfileField::Table),
+                    ..f
+                }),
+                SystemKey::CurveB(_) => Field::System(SystemField {
+                    key: SystemKey::CurveB(ProfileField::Table),
+                    ..f
+                }),
+                _ => Field::System(SystemField {
+                    key: SystemKey::Table,
+                    ..f
+                }),
+            },
         }
     }
 
@@ -209,6 +328,23 @@ impl Field {
             Field::Dynamics(f) => {
                 p.push(Name("dynamics"));
                 p.extend(f.name().map(Name));
+            }
+            Field::System(f) => {
+                p.extend([Name(f.table.name()), Index(f.index)]);
+                match f.key {
+                    SystemKey::CurveA(c) | SystemKey::CurveB(c) => {
+                        p.push(Name(if matches!(f.key, SystemKey::CurveA(_)) {
+                            "curve_a"
+                        } else {
+                            "curve_b"
+                        }));
+                        match c {
+                            ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),
+                            other => p.extend(other.name().map(Name)),
+                        }
+                    }
+                    k => p.extend(k.name().map(Name)),
+                }
             }
         }
         p

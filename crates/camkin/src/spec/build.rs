@@ -352,27 +352,30 @@ pub(super) fn direction(field: Field, v: [f64; 2]) -> Result<Vec2, SpecError> {
     }
 }
 
+/// The file's `length_unit`, required.
+pub(super) fn length_unit(u: Option<&str>) -> Result<LengthUnit, SpecError> {
+    match u {
+        None => Err(SpecError::Rule {
+            field: Field::LengthUnit,
+            reason: "missing: a mechanism says the unit of its lengths, e.g. length_unit = \"mm\" (mm, cm, m or in)".into(),
+        }),
+        Some(u) => LengthUnit::ALL
+            .iter()
+            .find(|(_, n)| *n == u)
+            .map(|(x, _)| *x)
+            .ok_or_else(|| SpecError::Unknown {
+                field: Field::LengthUnit,
+                value: u.to_string(),
+                what: "a unit",
+                known: "mm, cm, m, in".into(),
+            }),
+    }
+}
+
 impl MechanismSpec {
     /// Validates the spec and builds its mechanism (and dynamics). Every error names its field.
     pub fn build(&self, options: &BuildOptions) -> Result<Built, SpecError> {
-        let unit = match &self.length_unit {
-            None => {
-                return Err(SpecError::Rule {
-                    field: Field::LengthUnit,
-                    reason: "missing: a mechanism says the unit of its lengths, e.g. length_unit = \"mm\" (mm, cm, m or in)".into(),
-                })
-            }
-            Some(u) => LengthUnit::ALL
-                .iter()
-                .find(|(_, n)| n == u)
-                .map(|(x, _)| *x)
-                .ok_or_else(|| SpecError::Unknown {
-                    field: Field::LengthUnit,
-                    value: u.clone(),
-                    what: "a unit",
-                    known: "mm, cm, m, in".into(),
-                })?,
-        };
+        let unit = length_unit(self.length_unit.as_deref())?;
         let scale = if options.si { unit.metres() } else { 1.0 };
         let cam = &self.cam;
         let mut warnings = Vec::new();

@@ -42,14 +42,17 @@ mod kinds;
 #[cfg(feature = "serde")]
 mod pair;
 mod profile;
+mod system;
 #[cfg(feature = "text")]
 pub mod text;
 
 pub use crate::field::{
-    CamField, DynamicsField, Field, FollowerField, Key, ProfileField, SegmentField,
+    CamField, DynamicsField, Field, FollowerField, Key, ProfileField, SegmentField, SystemField,
+    SystemKey, SystemTable,
 };
 pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
 pub use kinds::{FollowerKind, ProfileKind};
+pub use system::{BodySpec, BuiltSystem, ContactSpec, DriverSpec, JointSpec, SystemSpec};
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;

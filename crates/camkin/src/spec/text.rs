@@ -118,6 +118,38 @@ fn bounded<'t>(text: &'t str, name: &str) -> Result<&'t str, TextError> {
 /// The spec in a mechanism file's TOML `text` (`name` for messages): a syntax or type error is
 /// placed at toml's line and column, with the key path of the value that failed.
 pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
+    parse_toml_as(text, name)
+}
+
+/// Whether TOML `text` is a system file (`[[body]]`, `[[joint]]`, …) rather than a mechanism
+/// file (`[cam]` and `[follower]`).
+pub fn is_system(text: &str) -> bool {
+    toml_edit::ImDocument::parse(text).is_ok_and(|d| {
+        let t = d.as_table();
+        ["body", "joint", "driver", "contact"]
+            .iter()
+            .any(|k| t.contains_key(k))
+            && !t.contains_key("cam")
+    })
+}
+
+/// The spec in a system file's TOML `text`, errors placed as [`parse_toml`]'s.
+pub fn parse_system_toml(text: &str, name: &str) -> Result<super::SystemSpec, TextError> {
+    parse_toml_as(text, name)
+}
+
+/// Builds a system spec parsed from `text` with `options`, placing the error at the key of the
+/// element it names.
+pub fn build_system_placed(
+    spec: &super::SystemSpec,
+    text: &str,
+    name: &str,
+    options: &BuildOptions,
+) -> Result<super::BuiltSystem, TextError> {
+    spec.build(options).map_err(|e| place(text, name, e))
+}
+
+fn parse_toml_as<T: serde::de::DeserializeOwned>(text: &str, name: &str) -> Result<T, TextError> {
     let text = bounded(text, name)?;
     // the path of the value that failed (`follower.direction`), which the TOML error's own
     // message does not name for a value of the wrong shape

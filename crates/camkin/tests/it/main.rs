@@ -37,6 +37,8 @@ mod support_check;
 mod sweep;
 mod synthesis_round_trip;
 mod system_cam;
+#[cfg(feature = "text")]
+mod system_files;
 mod system_linkages;
 mod system_valve_train;
 mod thin_geometry;

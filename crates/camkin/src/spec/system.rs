@@ -1,0 +1,497 @@
+//! System files: bodies, joints, drivers and contacts as plain data (`[[body]]`, `[[joint]]`,
+//! `[[driver]]`, `[[contact]]`), validated and built into a [`crate::system::System`]. Every
+//! error names the element by its table, index and name, at its key ([`SystemField`]).
+//!
+//! ```toml
+//! length_unit = "mm"
+//!
+//! [[body]]
+//! name = "cam"                  # position = [x, y] and angle_deg: where it starts (a guess)
+//!
+//! [[joint]]
+//! name = "camshaft"
+//! kind = "revolute"             # revolute, prismatic (axis, angle_deg) or fixed (angle_deg)
+//! bodies = ["ground", "cam"]
+//! at = [[0, 0], [0, 0]]         # the joint's point in each body's frame
+//!
+//! [[driver]]
+//! name = "drive"
+//! body = "cam"
+//! coordinate = "angle"          # angle (speed_rpm, start in degrees) or x, y (speed, start)
+//! speed_rpm = 3000
+//!
+//! [[contact]]
+//! name = "cam on roller"
+//! bodies = ["cam", "finger"]
+//! curve_a = { kind = "ellipse", center = [0, -4], semi_axes = [15, 20] }
+//! curve_b = { kind = "circle", center = [35, 0], radius = 6 }
+//! ```
+
+use super::build::{
+    coordinate, direction, finite, length_unit, point, positive, BuildOptions, LengthUnit,
+    SpecError, SpecWarning,
+};
+use super::profile::Place;
+use super::ProfileSpec;
+use crate::body::Pose;
+use crate::field::{Field, ProfileField, SystemField, SystemKey, SystemTable};
+use crate::geometry::Point2;
+use crate::system::{Body, BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
+use std::collections::HashMap;
+
+/// A system file.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct SystemSpec {
+    /// the unit of every length: "mm", "cm", "m" or "in" (required)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub length_unit: Option<String>,
+    /// `[[body]]`: the moving bodies (the ground is `"ground"`)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub body: Vec<BodySpec>,
+    /// `[[joint]]`
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub joint: Vec<JointSpec>,
+    /// `[[driver]]`
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub driver: Vec<DriverSpec>,
+    /// `[[contact]]`
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub contact: Vec<ContactSpec>,
+}
+
+/// `[[body]]`.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct BodySpec {
+    /// its name (unique; not "ground")
+    pub name: String,
+    /// kg (default 1; for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub mass: Option<f64>,
+    /// kg·m² about its frame's origin (default 1; for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub inertia: Option<f64>,
+    /// where its frame's origin starts (a guess for the first instant; default the origin)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub position: Option<[f64; 2]>,
+    /// its frame's starting angle, degrees (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub angle_deg: Option<f64>,
+}
+
+/// `[[joint]]`.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct JointSpec {
+    /// its name
+    pub name: String,
+    /// "revolute", "prismatic" or "fixed"
+    pub kind: String,
+    /// the two bodies (either may be "ground")
+    pub bodies: [String; 2],
+    /// the joint's point in each body's frame (default the origins)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub at: Option<[[f64; 2]; 2]>,
+    /// prismatic: the guide's direction in the first body's frame
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub axis: Option<[f64; 2]>,
+    /// prismatic and fixed: the second body's angle to the first, degrees (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub angle_deg: Option<f64>,
+}
+
+/// `[[driver]]`.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct DriverSpec {
+    /// its name
+    pub name: String,
+    /// the driven body
+    pub body: String,
+    /// "angle", "x" or "y"
+    pub coordinate: String,
+    /// angle: rpm (counter-clockwise positive)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub speed_rpm: Option<f64>,
+    /// x or y: length/s
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub speed: Option<f64>,
+    /// the value at time 0: degrees for an angle, length for x or y (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub start: Option<f64>,
+    /// a constant acceleration: deg/s² for an angle, length/s² for x or y (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub acceleration: Option<f64>,
+}
+
+/// `[[contact]]`.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct ContactSpec {
+    /// its name
+    pub name: String,
+    /// the bodies carrying curve A and curve B
+    pub bodies: [String; 2],
+    /// curve A in the first body's frame (any curve a follower may carry: spline, circle,
+    /// ellipse, points-file, involute-gear, line, point), material on its left
+    pub curve_a: ProfileSpec,
+    /// curve B in the second body's frame
+    pub curve_b: ProfileSpec,
+}
+
+/// A system built from its file, with what else the file said.
+#[derive(Debug, Clone)]
+pub struct BuiltSystem {
+    /// the system, in the file's length unit
+    pub system: System,
+    /// the file's length unit
+    pub length_unit: LengthUnit,
+    /// what is valid but probably not meant
+    pub warnings: Vec<SpecWarning>,
+}
+
+/// The field `key` of element `index` of `table`.
+fn at(table: SystemTable, index: usize, key: SystemKey) -> Field {
+    Field::System(SystemField { table, index, key })
+}
+
+/// A spec error of a carried curve, moved from the follower's profile (where the curve builder
+/// names it) to the contact's curve.
+fn moved(e: SpecError, to: impl Fn(ProfileField) -> Field) -> SpecError {
+    let re = |f: Field| match f {
+        Field::FollowerProfile(p) => to(p),
+        other => other,
+    };
+    match e {
+        SpecError::Invalid {
+            field,
+            value,
+            reason,
+        } => SpecError::Invalid {
+            field: re(field),
+            value,
+            reason,
+        },
+        SpecError::Unknown {
+            field,
+            value,
+            what,
+            known,
+        } => SpecError::Unknown {
+            field: re(field),
+            value,
+            what,
+            known,
+        },
+        SpecError::Missing {
+            field,
+            kind,
+            missing,
+        } => SpecError::Missing {
+            field: re(field),
+            kind,
+            missing,
+        },
+        SpecError::Foreign {
+            field,
+            name,
+            kind,
+            allowed,
+        } => SpecError::Foreign {
+            field: re(field),
+            name,
+            kind,
+            allowed,
+        },
+        SpecError::Rule { field, reason } => SpecError::Rule {
+            field: re(field),
+            reason,
+        },
+        other => other,
+    }
+}
+
+impl SystemSpec {
+    /// Validates the spec and builds its system (lengths in the file's unit, or metres with
+    /// [`BuildOptions::si`]). Every error names the element and its key.
+    pub fn build(&self, options: &BuildOptions) -> Result<BuiltSystem, SpecError> {
+        use SystemKey as K;
+        use SystemTable as T;
+        let unit = length_unit(self.length_unit.as_deref())?;
+        let scale = if options.si { unit.metres() } else { 1.0 };
+        let mut sys = System::new();
+        let mut ids: HashMap<&str, BodyId> = HashMap::new();
+        ids.insert("ground", BodyId::GROUND);
+        let named = |t: T, i: usize, name: &str| -> Result<(), SpecError> {
+            if name.trim().is_empty() {
+                return Err(SpecError::Rule {
+                    field: at(t, i, K::Name),
+                    reason: format!("[[{}]] number {} needs a name", t.name(), i + 1),
+                });
+            }
+            Ok(())
+        };
+        for (i, b) in self.body.iter().enumerate() {
+            named(T::Body, i, &b.name)?;
+            if ids.contains_key(b.name.as_str()) {
+                return Err(SpecError::Rule {
+                    field: at(T::Body, i, K::Name),
+                    reason: format!(
+                        "{:?}: {}",
+                        b.name,
+                        if b.name == "ground" {
+                            "the ground is there already: it needs no [[body]]"
+                        } else {
+                            "another body has this name"
+                        }
+                    ),
+                });
+            }
+            let mass = positive(at(T::Body, i, K::Mass), b.mass.unwrap_or(1.0))?;
+            let inertia = positive(at(T::Body, i, K::Inertia), b.inertia.unwrap_or(1.0))?;
+            let p = point(
+                at(T::Body, i, K::Position),
+                b.position.unwrap_or([0.0, 0.0]),
+            )?;
+            let angle = finite(at(T::Body, i, K::AngleDeg), b.angle_deg.unwrap_or(0.0))?;
+            let id = sys.add_body(Body {
+                name: b.name.clone(),
+                mass,
+                inertia,
+                pose: Pose::new(Point2::new(scale * p.x, scale * p.y), angle.to_radians()),
+            });
+            ids.insert(b.name.as_str(), id);
+        }
+        let body = |t: T, i: usize, key: K, name: &str| -> Result<BodyId, SpecError> {
+            ids.get(name).copied().ok_or_else(|| SpecError::Unknown {
+                field: at(t, i, key),
+                value: name.to_string(),
+                what: "a body of this file",
+                known: std::iter::once("ground")
+                    .chain(self.body.iter().map(|b| b.name.as_str()))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
+        };
+        let two = |t: T, i: usize, names: &[String; 2]| -> Result<[BodyId; 2], SpecError> {
+            let (a, b) = (
+                body(t, i, K::Bodies, &names[0])?,
+                body(t, i, K::Bodies, &names[1])?,
+            );
+            if a == b {
+                return Err(SpecError::Rule {
+                    field: at(t, i, K::Bodies),
+                    reason: format!("joins {:?} to itself", names[0]),
+                });
+            }
+            Ok([a, b])
+        };
+        for (i, j) in self.joint.iter().enumerate() {
+            named(T::Joint, i, &j.name)?;
+            let [a, b] = two(T::Joint, i, &j.bodies)?;
+            let pts = j.at.unwrap_or([[0.0, 0.0], [0.0, 0.0]]);
+            let (pa, pb) = (
+                point(at(T::Joint, i, K::At), pts[0])?,
+                point(at(T::Joint, i, K::At), pts[1])?,
+            );
+            let (at_a, at_b) = (
+                Point2::new(scale * pa.x, scale * pa.y),
+                Point2::new(scale * pb.x, scale * pb.y),
+            );
+            let angle =
+                finite(at(T::Joint, i, K::AngleDeg), j.angle_deg.unwrap_or(0.0))?.to_radians();
+            let foreign = |key: K, present: bool, kind: &str| -> Result<(), SpecError> {
+                if present {
+                    return Err(SpecError::Rule {
+                        field: at(T::Joint, i, key),
+                        reason: format!("a {kind} joint takes no {}", at(T::Joint, i, key)),
+                    });
+                }
+                Ok(())
+            };
+            let kind = match j.kind.as_str() {
+                "revolute" => {
+                    foreign(K::Axis, j.axis.is_some(), "revolute")?;
+                    foreign(K::AngleDeg, j.angle_deg.is_some(), "revolute")?;
+                    JointKind::Revolute { a, at_a, b, at_b }
+                }
+                "prismatic" => {
+                    let axis = j.axis.ok_or_else(|| SpecError::Rule {
+                        field: at(T::Joint, i, K::Kind),
+                        reason: "a prismatic joint needs `axis`, the guide's direction in the first body's frame".into(),
+                    })?;
+                    JointKind::Prismatic {
+                        a,
+                        at_a,
+                        axis: direction(at(T::Joint, i, K::Axis), axis)?,
+                        b,
+                        at_b,
+                        angle,
+                    }
+                }
+                "fixed" => {
+                    foreign(K::Axis, j.axis.is_some(), "fixed")?;
+                    JointKind::Fixed {
+                        a,
+                        at_a,
+                        b,
+                        at_b,
+                        angle,
+                    }
+                }
+                other => {
+                    return Err(SpecError::Unknown {
+                        field: at(T::Joint, i, K::Kind),
+                        value: other.to_string(),
+                        what: "a joint kind",
+                        known: "revolute, prismatic, fixed".into(),
+                    })
+                }
+            };
+            sys.add_joint(Joint {
+                name: j.name.clone(),
+                kind,
+            });
+        }
+        for (i, d) in self.driver.iter().enumerate() {
+            named(T::Driver, i, &d.name)?;
+            let id = body(T::Driver, i, K::Body, &d.body)?;
+            if id.is_ground() {
+                return Err(SpecError::Rule {
+                    field: at(T::Driver, i, K::Body),
+                    reason: "the ground does not move: drive a body".into(),
+                });
+            }
+            let start = finite(at(T::Driver, i, K::Start), d.start.unwrap_or(0.0))?;
+            let acc = finite(
+                at(T::Driver, i, K::Acceleration),
+                d.acceleration.unwrap_or(0.0),
+            )?;
+            let (coordinate, law) = match d.coordinate.as_str() {
+                "angle" => {
+                    if d.speed.is_some() {
+                        return Err(SpecError::Rule {
+                            field: at(T::Driver, i, K::Speed),
+                            reason: "an angle's driver takes speed_rpm, not speed".into(),
+                        });
+                    }
+                    let rpm = finite(
+                        at(T::Driver, i, K::SpeedRpm),
+                        d.speed_rpm.ok_or_else(|| SpecError::Rule {
+                            field: at(T::Driver, i, K::Coordinate),
+                            reason: "an angle's driver needs speed_rpm".into(),
+                        })?,
+                    )?;
+                    (
+                        Coordinate::Angle,
+                        Law::Quadratic {
+                            start: start.to_radians(),
+                            rate: rpm * std::f64::consts::TAU / 60.0,
+                            acceleration: acc.to_radians(),
+                        },
+                    )
+                }
+                c @ ("x" | "y") => {
+                    if d.speed_rpm.is_some() {
+                        return Err(SpecError::Rule {
+                            field: at(T::Driver, i, K::SpeedRpm),
+                            reason: format!(
+                                "a driver of {c} takes speed (length/s), not speed_rpm"
+                            ),
+                        });
+                    }
+                    let v = coordinate(at(T::Driver, i, K::Speed), d.speed.unwrap_or(0.0))?;
+                    (
+                        if c == "x" {
+                            Coordinate::X
+                        } else {
+                            Coordinate::Y
+                        },
+                        Law::Quadratic {
+                            start: scale * start,
+                            rate: scale * v,
+                            acceleration: scale * acc,
+                        },
+                    )
+                }
+                other => {
+                    return Err(SpecError::Unknown {
+                        field: at(T::Driver, i, K::Coordinate),
+                        value: other.to_string(),
+                        what: "a coordinate",
+                        known: "angle, x, y".into(),
+                    })
+                }
+            };
+            if let Some((k, _)) = self.driver[..i]
+                .iter()
+                .enumerate()
+                .find(|(_, e)| e.body == d.body && e.coordinate == d.coordinate)
+            {
+                return Err(SpecError::Rule {
+                    field: at(T::Driver, i, K::Coordinate),
+                    reason: format!(
+                        "the {} of {:?} is driven already, by {:?}",
+                        d.coordinate, d.body, self.driver[k].name
+                    ),
+                });
+            }
+            sys.add_driver(Driver {
+                name: d.name.clone(),
+                body: id,
+                coordinate,
+                law,
+            });
+        }
+        let mut warnings = Vec::new();
+        for (i, c) in self.contact.iter().enumerate() {
+            named(T::Contact, i, &c.name)?;
+            let [a, b] = two(T::Contact, i, &c.bodies)?;
+            let curve = |spec: &ProfileSpec,
+                         to: fn(ProfileField) -> SystemKey,
+                         warnings: &mut Vec<SpecWarning>| {
+                spec.build(
+                    scale,
+                    &options.base_dir,
+                    options.confine,
+                    Place::Follower,
+                    warnings,
+                )
+                .map(|(c, _)| c)
+                .map_err(|e| moved(e, |p| at(T::Contact, i, to(p))))
+            };
+            let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
+            let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;
+            sys.add_contact(Contact {
+                name: c.name.clone(),
+                a,
+                curve_a,
+                b,
+                curve_b,
+            });
+        }
+        // as many rows as coordinates: the one rule of the whole
+        let (rows, coords) = (sys.rows(), 3 * sys.bodies().len());
+        if rows != coords {
+            return Err(SpecError::Rule {
+                // at the last driver: the rule is most often met by driving one more coordinate
+                field: at(T::Driver, self.driver.len().saturating_sub(1), K::Table),
+                reason: format!(
+                    "the system has {coords} coordinates (three for each of its {} bodies) and {rows} constraint rows (revolute and prismatic joints 2 each, fixed 3, drivers and contacts 1): a kinematic analysis needs as many rows as coordinates (drive each degree of freedom, or remove a redundant joint)",
+                    sys.bodies().len()
+                ),
+            });
+        }
+        Ok(BuiltSystem {
+            system: sys,
+            length_unit: unit,
+            warnings,
+        })
+    }
+}
