@@ -55,7 +55,7 @@ fn bad_system_files_name_the_element_and_its_line() {
             .nth(k - 1)
             .map_or(0, |(i, _)| i + 1)
     };
-    let cases: [Case; 6] = [
+    let cases: [Case<'_>; 6] = [
         (
             "a joint naming a missing body",
             VALVE_TRAIN.replace(
