@@ -12,7 +12,9 @@ use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Mechanism file (TOML); without it, the paper's built-in cam.
+    /// Mechanism file (TOML); without it, the paper's built-in cam. A system file ([[body]],
+    /// [[joint]], [[driver]], [[contact]]: see examples/valve-train.toml) is swept over its
+    /// first driver's angle, one row an instant with every body and contact.
     pub mechanism: Option<PathBuf>,
     /// Cam angles in degrees, comma-separated (e.g. 0,45,90).
     #[arg(
@@ -84,6 +86,14 @@ const CHUNK: usize = 65_536;
 const BYTES_PER_ROW: f64 = 380.0;
 
 pub fn run(args: &Args) -> Result<(), Failure> {
+    // a system file ([[body]], [[joint]], …) is analysed as a system
+    if let Some(path) = &args.mechanism {
+        let (name, text) =
+            crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
+        if camkin::spec::text::is_system(&text) {
+            return super::system::analyze(args, path, &name, &text);
+        }
+    }
     let loaded = load_mechanism(args.mechanism.as_ref())?;
     args.table.check()?;
     let mech = &loaded.mech;

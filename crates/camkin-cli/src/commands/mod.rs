@@ -12,3 +12,4 @@ pub mod profile;
 pub mod serve;
 pub mod simulate;
 pub mod synth;
+pub mod system;

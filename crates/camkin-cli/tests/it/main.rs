@@ -14,6 +14,7 @@ mod cli_simulate;
 mod cli_studio;
 mod cli_study;
 mod cli_synth;
+mod cli_system;
 mod common;
 mod properties;
 mod studio_server;

@@ -250,6 +250,26 @@ impl System {
         Ok(())
     }
 
+    /// The time at which the first driver, an angle at constant rate, is at `angle` (rad): how a
+    /// sweep over a driver angle maps to instants; `None` when the first driver is not an angle
+    /// or its rate is zero or changes.
+    pub fn driver_time(&self, angle: f64) -> Option<f64> {
+        let d = self.drivers.first()?;
+        match (d.coordinate, d.law) {
+            (
+                Coordinate::Angle,
+                Law::Quadratic {
+                    start,
+                    rate,
+                    acceleration,
+                },
+            ) if acceleration == 0.0 && rate != 0.0 && rate.is_finite() => {
+                Some((angle - start) / rate)
+            }
+            _ => None,
+        }
+    }
+
     /// The number of constraint rows: every joint's, driver's and contact's.
     pub fn rows(&self) -> usize {
         self.joints.iter().map(|j| j.kind.rows()).sum::<usize>()

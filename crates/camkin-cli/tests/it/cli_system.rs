@@ -1,0 +1,75 @@
+//! Issue 45: `camkin analyze` on a system file. The valve train's table holds every body's pose,
+//! velocity and acceleration and every contact's row, equal (to the last bit printed) to the
+//! library's answer at the same instants; a bad system file exits 2 naming the element and its
+//! line.
+
+use crate::common::*;
+use std::f64::consts::TAU;
+
+#[test]
+fn the_valve_train_file_is_analysed_as_a_system() {
+    let out = camkin()
+        .arg("analyze")
+        .arg(examples().join("valve-train.toml"))
+        .args(["--angles", "0:360:15"])
+        .assert()
+        .success();
+    let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    // two leading columns, nine a body, seven a contact, the error
+    assert_eq!(header.len(), 2 + 9 * 3 + 7 * 2 + 1);
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (vy, vay, fa) = (
+        col("valve_y_mm"),
+        col("valve_ay_mm_s2"),
+        col("finger_angle_deg"),
+    );
+    let w = 3000.0 * TAU / 60.0;
+    let (sys, [_, finger, valve]) = camkin::reference::single_valve_train(w);
+    let mut sweep = sys.sweep().unwrap();
+    let mut n = 0;
+    for (k, line) in lines.enumerate() {
+        let cells: Vec<&str> = line.split(',').collect();
+        let s = sweep.step((15.0 * k as f64).to_radians() / w).unwrap();
+        let (f, v) = (
+            &s.bodies[finger.index().unwrap()],
+            &s.bodies[valve.index().unwrap()],
+        );
+        let num = |i: usize| cells[i].parse::<f64>().unwrap();
+        assert!((num(vy) - v.pose.origin.y).abs() <= 1e-12 * 100.0, "{line}");
+        assert!(
+            (num(fa) - f.pose.angle.to_degrees()).abs() <= 1e-10,
+            "{line}"
+        );
+        assert!(
+            (num(vay) - v.acceleration.y).abs() <= 1e-9 * v.acceleration.y.abs().max(1.0),
+            "{line}"
+        );
+        assert_eq!(*cells.last().unwrap(), "", "{line}");
+        n += 1;
+    }
+    assert_eq!(n, 24);
+}
+
+#[test]
+fn a_bad_system_file_exits_2_naming_the_element() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("s.toml");
+    let text = std::fs::read_to_string(examples().join("valve-train.toml"))
+        .unwrap()
+        .replace(
+            "bodies = [\"finger\", \"valve\"]",
+            "bodies = [\"finger\", \"vlave\"]",
+        );
+    std::fs::write(&f, &text).unwrap();
+    let line = text.lines().position(|l| l.contains("\"vlave\"")).unwrap() + 1;
+    camkin()
+        .arg("analyze")
+        .arg(&f)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(format!("s.toml:{line}:")))
+        .stderr(predicate::str::contains("contact[1].bodies"))
+        .stderr(predicate::str::contains("\"vlave\""));
+}

@@ -1,0 +1,111 @@
+//! The system table (`camkin analyze SYSTEM.toml`): one row an instant, each body's pose,
+//! velocity and acceleration and each contact's point, gap, sliding rates and `γ`, named by the
+//! elements' names with their units; angles in degrees.
+
+use super::columns::Cell;
+use crate::system::{System, SystemError, SystemState};
+
+/// A name made safe for a column: letters, digits and `_`.
+fn key(name: &str) -> String {
+    name.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// The columns of `sys`'s table, lengths in `unit`.
+pub fn system_columns(sys: &System, unit: &str) -> Vec<String> {
+    let mut c = vec!["driver_angle_deg".to_string(), "time_s".to_string()];
+    for b in sys.bodies() {
+        let n = key(&b.name);
+        for (q, u) in [
+            ("x", unit.to_string()),
+            ("y", unit.to_string()),
+            ("angle", "deg".into()),
+            ("vx", format!("{unit}_s")),
+            ("vy", format!("{unit}_s")),
+            ("omega", "deg_s".into()),
+            ("ax", format!("{unit}_s2")),
+            ("ay", format!("{unit}_s2")),
+            ("alpha", "deg_s2".into()),
+        ] {
+            c.push(format!("{n}_{q}_{u}"));
+        }
+    }
+    for k in sys.contacts() {
+        let n = key(&k.name);
+        for (q, u) in [
+            ("x", unit.to_string()),
+            ("y", unit.to_string()),
+            ("gap", unit.to_string()),
+            ("sliding_rate_a", format!("{unit}_s")),
+            ("sliding_rate_b", format!("{unit}_s")),
+            ("gamma", format!("{unit}_s2")),
+        ] {
+            c.push(format!("{n}_{q}_{u}"));
+        }
+        c.push(format!("{n}_jump"));
+    }
+    c.push("error".into());
+    c
+}
+
+/// One row: the instant at driver angle `angle_deg` (time `t`), or its error in the last column.
+pub fn system_cells(
+    sys: &System,
+    angle_deg: f64,
+    t: f64,
+    state: &Result<SystemState, SystemError>,
+) -> Vec<Cell> {
+    let mut c = vec![Cell::Num(Some(angle_deg)), Cell::Num(Some(t))];
+    let nb = sys.bodies().len();
+    let nc = sys.contacts().len();
+    match state {
+        Ok(s) => {
+            for b in &s.bodies {
+                for v in [
+                    b.pose.origin.x,
+                    b.pose.origin.y,
+                    b.pose.angle.to_degrees(),
+                    b.velocity.x,
+                    b.velocity.y,
+                    b.omega.to_degrees(),
+                    b.acceleration.x,
+                    b.acceleration.y,
+                    b.alpha.to_degrees(),
+                ] {
+                    c.push(Cell::Num(Some(v)));
+                }
+            }
+            for k in &s.contacts {
+                let m = &k.kinematics;
+                for v in [
+                    m.point.x,
+                    m.point.y,
+                    k.pairing.gap,
+                    m.sliding_rate_a,
+                    m.sliding_rate_b,
+                    m.gamma,
+                ] {
+                    c.push(Cell::Num(Some(v)));
+                }
+                c.push(Cell::Flag(Some(k.jumped)));
+            }
+            c.push(Cell::Text(None));
+        }
+        Err(e) => {
+            c.extend((0..9 * nb).map(|_| Cell::Num(None)));
+            for _ in 0..nc {
+                c.extend((0..6).map(|_| Cell::Num(None)));
+                c.push(Cell::Flag(None));
+            }
+            c.push(Cell::Text(Some(e.to_string())));
+        }
+    }
+    c
+}
