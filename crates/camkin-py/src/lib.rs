@@ -11,6 +11,7 @@ mod mech;
 mod motion;
 mod sim;
 mod study;
+mod system;
 
 use pyo3::prelude::*;
 
@@ -18,6 +19,7 @@ use pyo3::prelude::*;
 #[pymodule]
 fn _camkin(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<mech::PyMechanism>()?;
+    m.add_class::<system::PySystem>()?;
     m.add_class::<geometry::PyCurve>()?;
     m.add_class::<geometry::PyBody>()?;
     m.add_function(wrap_pyfunction!(mech::paper_cam, m)?)?;

@@ -161,6 +161,72 @@ pub fn parse_toml(text: &str, name: &str) -> PyResult<MechanismSpec> {
     camkin::spec::text::parse_toml(text, name).map_err(errors::text)
 }
 
+/// TOML given to a `from_toml`: its text, its name for messages, the folder relative paths in it
+/// are read from, and a name for titles.
+pub struct TomlSource {
+    pub text: String,
+    pub file: String,
+    pub base: PathBuf,
+    pub name: String,
+}
+
+impl TomlSource {
+    /// `source` as text (a str with a line break, or a line of TOML that names no file: a path
+    /// may hold `=`, so `a=b/cam.toml` is a path, read or refused as one) or as a path (str or
+    /// os.PathLike) read with the library's bound; `what` names the caller in messages and
+    /// `default` is the title of text.
+    pub fn read(
+        py: Python<'_>,
+        source: &Bound<'_, PyAny>,
+        what: &str,
+        default: &str,
+    ) -> PyResult<Self> {
+        let is_text = source
+            .extract::<String>()
+            .map(|s| {
+                s.contains('\n')
+                    || (s.contains('=')
+                        && !Path::new(&s).exists()
+                        && s.parse::<toml::Table>().is_ok())
+            })
+            .unwrap_or(false);
+        if is_text {
+            return Ok(Self {
+                text: source.extract()?,
+                file: "<text>".into(),
+                base: PathBuf::from("."),
+                name: default.into(),
+            });
+        }
+        let path: PathBuf = py
+            .import("os")?
+            .call_method1("fspath", (source,))
+            .and_then(|p| p.extract())
+            .map_err(|_| {
+                errors::input(
+                    "source",
+                    source.repr().ok().map(|r| r.to_string()),
+                    format!("{what} takes a path (str or os.PathLike) or TOML text"),
+                )
+            })?;
+        let (file, text) = camkin::spec::text::read_file(&path).map_err(errors::text)?;
+        let base = path
+            .parent()
+            .map(Path::to_path_buf)
+            .unwrap_or_else(|| PathBuf::from("."));
+        let base = std::fs::canonicalize(&base).unwrap_or(base);
+        let name = path
+            .file_stem()
+            .map_or_else(|| default.into(), |s| s.to_string_lossy().into_owned());
+        Ok(Self {
+            text,
+            file,
+            base,
+            name,
+        })
+    }
+}
+
 /// Parses JSON text (a dict dumped by Python's json) into a spec; errors name the key path (the
 /// JSON's own lines and columns are not the user's: the user wrote a dict).
 pub fn parse_json(text: &str) -> PyResult<MechanismSpec> {
@@ -191,53 +257,9 @@ impl PyMechanism {
     #[staticmethod]
     #[pyo3(signature = (source, *, large = false))]
     fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>, large: bool) -> PyResult<Self> {
-        // text: a str with a line break, or a line of TOML that names no file (a path may hold
-        // `=`: `a=b/cam.toml` is a path, read or refused as one)
-        let is_text = source
-            .extract::<String>()
-            .map(|s| {
-                s.contains('\n')
-                    || (s.contains('=')
-                        && !Path::new(&s).exists()
-                        && s.parse::<toml::Table>().is_ok())
-            })
-            .unwrap_or(false);
-        if is_text {
-            let text: String = source.extract()?;
-            let spec = parse_toml(&text, "<text>")?;
-            let m = Self::build_text(
-                spec,
-                &text,
-                "<text>",
-                PathBuf::from("."),
-                "mechanism".into(),
-                large,
-            )?;
-            m.warn_spec(py)?;
-            return Ok(m);
-        }
-        let path: PathBuf = py
-            .import("os")?
-            .call_method1("fspath", (source,))
-            .and_then(|p| p.extract())
-            .map_err(|_| {
-                errors::input(
-                    "source",
-                    source.repr().ok().map(|r| r.to_string()),
-                    "Mechanism.from_toml takes a path (str or os.PathLike) or TOML text".into(),
-                )
-            })?;
-        let (file, text) = camkin::spec::text::read_file(&path).map_err(errors::text)?;
-        let spec = parse_toml(&text, &file)?;
-        let base = path
-            .parent()
-            .map(Path::to_path_buf)
-            .unwrap_or_else(|| PathBuf::from("."));
-        let base = std::fs::canonicalize(&base).unwrap_or(base);
-        let name = path
-            .file_stem()
-            .map_or_else(|| "mechanism".into(), |s| s.to_string_lossy().into_owned());
-        let m = Self::build_text(spec, &text, &file, base, name, large)?;
+        let s = TomlSource::read(py, source, "Mechanism.from_toml", "mechanism")?;
+        let spec = parse_toml(&s.text, &s.file)?;
+        let m = Self::build_text(spec, &s.text, &s.file, s.base, s.name, large)?;
         m.warn_spec(py)?;
         Ok(m)
     }

@@ -12,7 +12,8 @@ import camkin
 from conftest import EXAMPLES, csv_columns, run_cli
 
 # every example the command analyses (the dynamics examples share their geometry)
-EXAMPLE_FILES = sorted(p.name for p in EXAMPLES.glob("*.toml"))
+# mechanism files (a system file, [[body]] …, is camkin.System's)
+EXAMPLE_FILES = sorted(p.name for p in EXAMPLES.glob("*.toml") if "[[body]]" not in p.read_text())
 
 
 def same_cells(py_col, cli_cells, name):
@@ -318,3 +319,31 @@ def test_a_mechanism_too_large_to_index_is_refused_unless_large():
     }
     with pytest.raises(camkin.ResourceError, match=r"would take about .* GB.*large=True"):
         camkin.Mechanism.from_dict(d)
+
+
+def test_a_system_file_in_python_equals_the_command():
+    """Issue 45: camkin.System reads a system file and analyses it over its driver's angle with
+    the command's columns, the same numbers to the last bit."""
+    sys = camkin.System.from_toml(EXAMPLES / "valve-train.toml")
+    assert sys.bodies == ["camshaft", "finger", "valve"]
+    assert sys.contacts == ["cam on roller", "pad on valve"]
+    angles = np.arange(0.0, 360.0, 15.0)
+    r = sys.analyze(angles)
+    cli = csv_columns(run_cli("analyze", EXAMPLES / "valve-train.toml", "--angles", "0:360:15"))
+    assert list(r) == list(cli)
+    for key, cells in cli.items():
+        if key == "error":
+            assert all(e is None for e in r[key])
+        elif key.endswith("_jump"):
+            assert [bool(x) for x in r[key]] == [c == "true" for c in cells]
+        else:
+            assert list(r[key]) == [float(c) for c in cells], key
+    # the valve opens 16 mm: its tip from -33 mm at full lift
+    assert r["valve_y_mm"][0] == -33.0 or abs(r["valve_y_mm"][0] + 33.0) < 1e-12
+    with pytest.raises(camkin.InputError) as e:
+        camkin.System.from_toml(
+            (EXAMPLES / "valve-train.toml").read_text().replace('"fixed"', '"fixed"').replace(
+                'kind = "prismatic"', 'kind = "slider"'
+            )
+        )
+    assert e.value.line is not None and "joint[2].kind" in str(e.value)

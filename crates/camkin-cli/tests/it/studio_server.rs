@@ -483,18 +483,20 @@ fn the_server_survives_a_request_that_runs_out_of_memory() {
         s, 200,
         "the request was expected to run out of memory under the cap"
     );
-    // the next request is answered by the server started again (it may take a moment)
+    // the next request is answered by the server started again (it may take a moment: a
+    // request sent while the old process is still dying is lost with it)
     let mut answered = false;
     for _ in 0..50 {
         if std::net::TcpStream::connect(addr).is_ok() {
-            let (s, v) = post(addr, "/api/analyze", &json!({ "toml": paper() }));
-            assert_eq!(s, 200, "{v}");
-            answered = true;
-            break;
+            let (s, _) = post(addr, "/api/analyze", &json!({ "toml": paper() }));
+            if s == 200 {
+                answered = true;
+                break;
+            }
         }
         std::thread::sleep(Duration::from_millis(100));
     }
-    assert!(answered);
+    assert!(answered, "no answer within 5 s of the crash");
     let watcher = child.id();
     child.kill().unwrap();
     let _ = child.wait();

@@ -10,6 +10,17 @@ MAX_ANGLES: int
 
 ArrayLike = Union[float, Sequence[float], npt.NDArray[np.floating[Any]]]
 
+class System:
+    @staticmethod
+    def from_toml(source: Union[str, PathLike[str]], *, large: bool = False) -> System: ...
+    @property
+    def bodies(self) -> List[str]: ...
+    @property
+    def contacts(self) -> List[str]: ...
+    def analyze(
+        self, angles_deg: ArrayLike, *, strict: bool = False, large: bool = False
+    ) -> Dict[str, Any]: ...
+
 class Mechanism:
     @staticmethod
     def from_toml(source: Union[str, PathLike[str]], *, large: bool = False) -> Mechanism: ...

@@ -118,6 +118,17 @@ fn bounded<'t>(text: &'t str, name: &str) -> Result<&'t str, TextError> {
 /// The spec in a mechanism file's TOML `text` (`name` for messages): a syntax or type error is
 /// placed at toml's line and column, with the key path of the value that failed.
 pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
+    if is_system(text) {
+        return Err(TextError {
+            message: format!(
+                "{name}: a system file ([[body]], [[joint]], [[driver]], [[contact]]), not a mechanism file ([cam], [follower]): `camkin analyze` and Python's camkin.System read systems"
+            ),
+            at: None,
+            path: None,
+            problem: TextProblem::Syntax { value: None },
+            name: name.to_string(),
+        });
+    }
     parse_toml_as(text, name)
 }
 

@@ -1,0 +1,147 @@
+//! `camkin.System`: a planar multibody system read from a system file, analysed over its first
+//! driver's angle with the command's columns.
+
+use crate::columns::{angles_from, Columns};
+use crate::errors;
+use crate::mech::TomlSource;
+use camkin::spec::text::{build_system_placed, parse_system_toml};
+use camkin::spec::{BuildOptions, BuiltSystem};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// A planar multibody system: bodies, joints, drivers and contacts, as a system file describes
+/// them (``[[body]]``, ``[[joint]]``, ``[[driver]]``, ``[[contact]]``; see the README). Every
+/// contact is the paper's exact row. Build one with ``System.from_toml(path_or_text)``.
+#[pyclass(frozen, module = "camkin", name = "System")]
+#[derive(Debug, Clone)]
+pub struct PySystem {
+    built: BuiltSystem,
+    name: String,
+}
+
+#[pymethods]
+impl PySystem {
+    /// System.from_toml(source, *, large=False) -> System
+    ///
+    /// A system from a system file (a path, ``str`` or ``os.PathLike``) or its TOML text. Bad
+    /// input raises ``camkin.InputError`` naming the element, its key and the value, with the
+    /// line and column (``.line``, ``.column``), as the command does.
+    #[staticmethod]
+    #[pyo3(signature = (source, *, large = false))]
+    fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>, large: bool) -> PyResult<Self> {
+        let s = TomlSource::read(py, source, "System.from_toml", "system")?;
+        let spec = parse_system_toml(&s.text, &s.file).map_err(errors::text)?;
+        let options = BuildOptions {
+            base_dir: s.base,
+            si: false,
+            confine: false,
+            limits: crate::mech::limits(large),
+        };
+        let built = build_system_placed(&spec, &s.text, &s.file, &options).map_err(errors::text)?;
+        Ok(Self {
+            built,
+            name: s.name,
+        })
+    }
+
+    /// The bodies' names, in the file's order.
+    #[getter]
+    fn bodies(&self) -> Vec<String> {
+        self.built
+            .system
+            .bodies()
+            .iter()
+            .map(|b| b.name.clone())
+            .collect()
+    }
+
+    /// The contacts' names, in the file's order.
+    #[getter]
+    fn contacts(&self) -> Vec<String> {
+        self.built
+            .system
+            .contacts()
+            .iter()
+            .map(|c| c.name.clone())
+            .collect()
+    }
+
+    /// analyze(angles_deg, *, strict=False, large=False) -> dict
+    ///
+    /// The system at its first driver's angles (degrees; a number or a 1-D array), swept in
+    /// order, each instant warm-started from the last: a dict of NumPy arrays keyed by the
+    /// columns of ``camkin analyze SYSTEM.toml`` — each body's ``x``, ``y``, ``angle`` and their
+    /// rates and accelerations, each contact's point, gap, sliding rates, ``gamma`` and ``jump``,
+    /// and ``error``. An instant that cannot be solved has NaN and its reason in ``error``;
+    /// ``strict=True`` raises ``camkin.ContactError`` instead.
+    #[pyo3(signature = (angles_deg, *, strict = false, large = false))]
+    fn analyze<'py>(
+        &self,
+        py: Python<'py>,
+        angles_deg: &Bound<'py, PyAny>,
+        strict: bool,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let (angles, scalar) = angles_from(py, angles_deg, "angles_deg")?;
+        let sys = &self.built.system;
+        let times: Vec<f64> = angles
+            .iter()
+            .map(|a| {
+                sys.driver_time(a.to_radians()).ok_or_else(|| {
+                    errors::input(
+                        "driver",
+                        None,
+                        "a system is analysed at its first driver's angles: [[driver]] number 1 must drive an angle at a constant speed_rpm".into(),
+                    )
+                })
+            })
+            .collect::<PyResult<_>>()?;
+        errors::refuse_large(
+            &camkin::work::Work::new(
+                format!("{} instants of this system", angles.len()),
+                angles.len() as f64 * 1e-4,
+            ),
+            large,
+            ", or use fewer angles",
+        )?;
+        let unit = self.built.length_unit.name();
+        let (cols, first_error) = py.detach(|| -> PyResult<_> {
+            let mut sweep = sys
+                .sweep()
+                .map_err(|e| errors::input("", None, e.to_string()))?;
+            let mut cols = Columns::new(camkin::table::system_columns(sys, unit), angles.len());
+            let mut first_error = None;
+            for (k, (&a, &t)) in angles.iter().zip(&times).enumerate() {
+                if k % 4096 == 0 {
+                    errors::interrupted()?;
+                }
+                let s = sweep.step(t);
+                if let Err(e) = &s {
+                    first_error.get_or_insert((a, e.to_string()));
+                }
+                cols.push(camkin::table::system_cells(sys, a, t, &s));
+            }
+            Ok((cols, first_error))
+        })?;
+        if let (true, Some((a, e))) = (strict, &first_error) {
+            return Err(errors::contact(format!(
+                "at driver angle {}°: {e}",
+                camkin::human::human(*a)
+            )));
+        }
+        cols.into_dict(py, scalar)
+    }
+
+    fn __repr__(&self) -> String {
+        let s = &self.built.system;
+        format!(
+            "<camkin.System {:?}: {} bodies, {} joints, {} drivers, {} contacts, lengths in {}>",
+            self.name,
+            s.bodies().len(),
+            s.joints().len(),
+            s.drivers().len(),
+            s.contacts().len(),
+            self.built.length_unit.name()
+        )
+    }
+}
