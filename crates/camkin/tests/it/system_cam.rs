@@ -193,3 +193,67 @@ fn an_arm_carrying_a_roller_as_a_system_gives_the_cam_paths_answers() {
         );
     }
 }
+
+/// Two followers on one cam (two contacts on one body): an eccentric disc (radius 2,
+/// eccentricity 0.5) under two flat-faced followers sliding along +x and +y. Each face rests on
+/// the disc's support function, `s(θ) = r + e cos(θ − β)` with `β` the face's direction, so
+/// `ṡ = −e ω sin(θ − β)` and `s̈ = −e ω² cos(θ − β)`: closed forms, to 1e-12.
+#[test]
+fn one_cam_drives_two_followers() {
+    let (r, e) = (2.0, 0.5);
+    let w = 600.0 * std::f64::consts::TAU / 60.0;
+    let (mut sys, cam) = cam_system(w);
+    let disc = || Arc::new(Circle::new(Point2::new(e, 0.0), r).unwrap());
+    let mut faces = Vec::new();
+    for (name, dir) in [("x face", Vec2::x()), ("y face", Vec2::y())] {
+        let start = (r + 0.3) * dir;
+        let f = sys.add_body(body(name, start.x, start.y, 0.0));
+        sys.add_joint(Joint {
+            name: format!("{name} guide"),
+            kind: JointKind::Prismatic {
+                a: BodyId::GROUND,
+                at_a: Point2::origin(),
+                axis: dir,
+                b: f,
+                at_b: Point2::origin(),
+                angle: 0.0,
+            },
+        });
+        // the face: a line through the follower's origin, across the direction of travel, the
+        // follower beyond it
+        sys.add_contact(Contact {
+            name: format!("disc on {name}"),
+            a: cam,
+            curve_a: disc(),
+            b: f,
+            curve_b: Arc::new(Line::new(Point2::origin(), Vec2::new(dir.y, -dir.x)).unwrap()),
+        });
+        faces.push((f, dir));
+    }
+    let mut sweep = sys.sweep().unwrap();
+    for k in 0..360 {
+        let th = f64::from(k).to_radians();
+        let s = sweep.step(th / w).unwrap();
+        for &(f, dir) in &faces {
+            let beta = dir.y.atan2(dir.x);
+            let b = &s.bodies[f.index().unwrap()];
+            let q = b.pose.origin.coords.dot(&dir);
+            let what = format!("at {k}°, face along {dir:?}");
+            assert!(
+                (q - (r + e * (th - beta).cos())).abs() <= 1e-12 * r,
+                "{what}"
+            );
+            let v = b.velocity.dot(&dir);
+            assert!(
+                (v + e * w * (th - beta).sin()).abs() <= 1e-12 * e * w,
+                "{what}: {v}"
+            );
+            let a = b.acceleration.dot(&dir);
+            assert!(
+                (a + e * w * w * (th - beta).cos()).abs() <= 1e-11 * e * w * w,
+                "{what}: {a}"
+            );
+        }
+        assert_eq!(s.contacts.len(), 2);
+    }
+}

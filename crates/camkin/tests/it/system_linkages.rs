@@ -307,3 +307,139 @@ fn a_three_gear_train_turns_at_the_tooth_ratios() {
     // pitch: a pitch of any of the three gears is 18° of gear 1)
     assert!(jumps[0] >= 2 && jumps[1] >= 2, "{jumps:?}");
 }
+
+/// A cam driving an oscillating arm that is the input link of a four-bar: an eccentric disc
+/// (radius 20, eccentricity 4, 300 rpm) under a roller (radius 5) at 20 from the arm's pivot
+/// P = (30, 25); a point 12 across the arm drives a coupler (30) to an output rocker (20) pivoted
+/// at (65, 30). Reference: the arm's angle by bisection on the roller centre's distance from the
+/// disc's centre (`|C(φ) − E(θ)| = 25`), the output's by the four-bar's loop closure (two
+/// circles' intersection), rates by five-point differences; to 1e-12, 1e-9 and 1e-7.
+#[test]
+fn a_cam_drives_a_four_bar_through_its_arm() {
+    use camkin::curve::Circle;
+    use camkin::system::Contact;
+    use std::sync::Arc;
+    let (r, e, rr, len) = (20.0, 4.0, 5.0, 20.0);
+    let p = Vec2::new(30.0, 25.0);
+    let (across, b, c) = (12.0, 30.0, 20.0);
+    let o4 = Vec2::new(65.0, 30.0);
+    let w = 300.0 * std::f64::consts::TAU / 60.0;
+    let arm_point = |phi: f64, q: Vec2| {
+        let (s, co) = phi.sin_cos();
+        p + Vec2::new(co * q.x - s * q.y, s * q.x + co * q.y)
+    };
+    // the arm's angle at cam angle θ: near `guess`, the roller centre at r + rr from the disc's
+    let arm_angle = |theta: f64, guess: f64| {
+        let centre = Vec2::new(e * theta.cos(), e * theta.sin());
+        let f = |phi: f64| (arm_point(phi, Vec2::new(len, 0.0)) - centre).norm() - (r + rr);
+        let (mut lo, mut hi) = (guess - 0.3, guess + 0.3);
+        assert!(f(lo) * f(hi) < 0.0, "no bracket at {theta}");
+        for _ in 0..200 {
+            let m = 0.5 * (lo + hi);
+            if m <= lo || m >= hi {
+                break;
+            }
+            if (f(m) < 0.0) == (f(lo) < 0.0) {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    // the output rocker's angle at arm angle φ (the branch with B below the line A–O4)
+    let output = |phi: f64| {
+        let a = arm_point(phi, Vec2::new(0.0, across));
+        let d = o4 - a;
+        let l = d.norm();
+        let x = (b * b - c * c + l * l) / (2.0 * l);
+        let h = (b * b - x * x).sqrt();
+        let u = d / l;
+        let bb = a + x * u - h * Vec2::new(-u.y, u.x);
+        (bb - o4).y.atan2((bb - o4).x)
+    };
+    let phi0 = arm_angle(0.0, (-174f64).to_radians());
+    let psi0 = output(phi0);
+    let mut sys = System::new();
+    let g = BodyId::GROUND;
+    let cam = sys.add_body(body("cam", 0.0, 0.0, 0.0));
+    let arm = sys.add_body(body("arm", p.x, p.y, phi0 + 0.02));
+    let a0 = arm_point(phi0, Vec2::new(0.0, across));
+    let bb0 = o4 + c * Vec2::new(psi0.cos(), psi0.sin());
+    let coupler = sys.add_body(body(
+        "coupler",
+        a0.x,
+        a0.y,
+        (bb0 - a0).y.atan2((bb0 - a0).x) - 0.02,
+    ));
+    let rocker = sys.add_body(body("rocker", o4.x, o4.y, psi0 + 0.01));
+    sys.add_joint(pin("camshaft", g, [0.0, 0.0], cam, [0.0, 0.0]));
+    sys.add_joint(pin("arm pivot", g, [p.x, p.y], arm, [0.0, 0.0]));
+    sys.add_joint(pin("A", arm, [0.0, across], coupler, [0.0, 0.0]));
+    sys.add_joint(pin("B", coupler, [b, 0.0], rocker, [c, 0.0]));
+    sys.add_joint(pin("O4", g, [o4.x, o4.y], rocker, [0.0, 0.0]));
+    sys.add_driver(Driver {
+        name: "drive".into(),
+        body: cam,
+        coordinate: Coordinate::Angle,
+        law: Law::linear(0.0, w),
+    });
+    sys.add_contact(Contact {
+        name: "disc on roller".into(),
+        a: cam,
+        curve_a: Arc::new(Circle::new(Point2::new(e, 0.0), r).unwrap()),
+        b: arm,
+        curve_b: Arc::new(Circle::new(Point2::new(len, 0.0), rr).unwrap()),
+    });
+    let mut sweep = sys.sweep().unwrap();
+    let (mut guess, h) = (phi0, 1e-3);
+    let mut rows = Vec::new();
+    let (mut vpeak, mut apeak) = ([0.0f64; 2], [0.0f64; 2]);
+    for k in 0..120 {
+        let th = f64::from(k) * 3f64.to_radians();
+        let s = sweep.step(th / w).unwrap();
+        let phis: Vec<f64> = (-2..=2)
+            .map(|j| arm_angle(th + f64::from(j) * h, guess))
+            .collect();
+        guess = phis[2];
+        let psis: Vec<f64> = phis.iter().map(|&f| output(f)).collect();
+        let five = |v: &[f64]| {
+            (
+                (v[0] - 8.0 * v[1] + 8.0 * v[3] - v[4]) / (12.0 * h) * w,
+                (-v[0] + 16.0 * v[1] - 30.0 * v[2] + 16.0 * v[3] - v[4]) / (12.0 * h * h) * w * w,
+            )
+        };
+        let (d1, dd1) = five(&phis);
+        let (d2, dd2) = five(&psis);
+        vpeak = [vpeak[0].max(d1.abs()), vpeak[1].max(d2.abs())];
+        apeak = [apeak[0].max(dd1.abs()), apeak[1].max(dd2.abs())];
+        rows.push((k, s, [phis[2], d1, dd1], [psis[2], d2, dd2]));
+    }
+    let turn = std::f64::consts::TAU;
+    for (k, s, f, o) in rows {
+        for (i, (id, r)) in [(arm, f), (rocker, o)].into_iter().enumerate() {
+            let bs = &s.bodies[id.index().unwrap()];
+            let angle = bs.pose.angle + ((r[0] - bs.pose.angle) / turn).round() * turn;
+            let what = format!("body {i} at {}°", 3 * k);
+            assert!(
+                (angle - r[0]).abs() <= 1e-12 * 100.0,
+                "{what}: {angle} {}",
+                r[0]
+            );
+            assert!(
+                (bs.omega - r[1]).abs() <= 1e-9 * vpeak[i],
+                "{what}: {} {}",
+                bs.omega,
+                r[1]
+            );
+            assert!(
+                (bs.alpha - r[2]).abs() <= 1e-7 * apeak[i],
+                "{what}: {} {}",
+                bs.alpha,
+                r[2]
+            );
+        }
+    }
+    // the output swings: the four-bar is driven, not at rest
+    assert!(vpeak[1] > 0.1 * w, "{vpeak:?}");
+}
