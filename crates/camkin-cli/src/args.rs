@@ -81,6 +81,28 @@ pub struct TableArgs {
 }
 
 impl TableArgs {
+    /// Writes the table (`columns`, rows from `next_chunk` a chunk at a time) to `-o FILE`
+    /// (atomically) or standard output, in the chosen format. A file that cannot be written is
+    /// the user's (exit 2); standard output that cannot be written is not (exit 1).
+    pub fn write(
+        &self,
+        columns: &[String],
+        mut next_chunk: impl FnMut() -> Option<Vec<Vec<camkin::table::Cell>>>,
+    ) -> Result<(), crate::Failure> {
+        crate::output::write_atomic(self.output.as_deref(), |w| {
+            crate::output::write_cells(w, self.format, columns, &mut next_chunk)
+        })
+        .map_err(|e| {
+            if self.output.is_some() {
+                crate::Failure::output(e)
+            } else {
+                crate::Failure::Internal(e)
+            }
+        })
+    }
+}
+
+impl TableArgs {
     /// Refuses, before any work, an output file that is an input of this run (the mechanism
     /// file, one of its points files).
     pub fn check(&self) -> Result<(), crate::Failure> {

@@ -1,7 +1,7 @@
 //! `camkin analyze`: the one-instant analysis at a list or range of cam angles, as CSV.
 
 use crate::args::{AngleList, AngleRange};
-use crate::output::{write_atomic, write_cells, TableFormat};
+use crate::output::TableFormat;
 use crate::{load_mechanism, Failure};
 use anyhow::Result;
 use camkin::cam::Mechanism;
@@ -129,17 +129,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         pb.inc(chunk.len() as u64);
         Some(chunk.iter().map(|r| analysis_cells(r, &units)).collect())
     };
-    write_atomic(args.table.output.as_deref(), |w| {
-        write_cells(w, args.table.format, &columns, &mut next_chunk)
-    })
-    .map_err(|e| {
-        if args.table.output.is_some() {
-            Failure::output(e)
-        } else {
-            // standard output that cannot be written is not the user's input
-            Failure::Internal(e)
-        }
-    })?;
+    args.table.write(&columns, &mut next_chunk)?;
     pb.finish_and_clear();
     report_degenerate(
         mech,

@@ -3,7 +3,6 @@
 //! constraint row `Φ_θ θ̈ + Φ_q q̈ = γ`; CSV or JSON.
 
 use crate::args::{AngleList, AngleRange};
-use crate::output::{write_atomic, write_cells};
 use crate::{load_mechanism, Failure};
 use camkin::table::{contact_cells, contact_columns, ContactRow, Units};
 use std::path::PathBuf;
@@ -62,16 +61,7 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
             .map(|r| contact_cells(r, &units))
             .collect::<Vec<_>>(),
     );
-    write_atomic(args.table.output.as_deref(), |w| {
-        write_cells(w, args.table.format, &columns, &mut || chunk.take())
-    })
-    .map_err(|e| {
-        if args.table.output.is_some() {
-            Failure::output(e)
-        } else {
-            Failure::Internal(e)
-        }
-    })?;
+    args.table.write(&columns, || chunk.take())?;
     let failed = rows.iter().filter(|r| r.error.is_some()).count();
     let most = angles
         .iter()

@@ -5,7 +5,6 @@
 use crate::args::{AngleList, AngleRange};
 use crate::draw::svaj;
 use crate::mechfile;
-use crate::output::{write_atomic, write_cells};
 use crate::{load_mechanism, Failure, Loaded};
 use anyhow::anyhow;
 use camkin::gears::GearPair;
@@ -110,16 +109,7 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
     let units = Units::plain(mech, loaded.unit);
     let columns = mesh_columns(&units);
     let mut chunk = Some(rows.iter().map(mesh_cells).collect::<Vec<_>>());
-    write_atomic(args.table.output.as_deref(), |w| {
-        write_cells(w, args.table.format, &columns, &mut || chunk.take())
-    })
-    .map_err(|e| {
-        if args.table.output.is_some() {
-            Failure::output(e)
-        } else {
-            Failure::Internal(e)
-        }
-    })?;
+    args.table.write(&columns, || chunk.take())?;
     summary(&pair, &loaded, &rows);
     if let Some(od) = od {
         let written = plot(&pair, &loaded, &rows, od.path()).map_err(Failure::output)?;

@@ -3,7 +3,6 @@
 
 use super::analyze::Args;
 use crate::args::AngleRange;
-use crate::output::{write_atomic, write_cells};
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::spec::text::{build_system_placed, parse_system_toml};
@@ -81,16 +80,7 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
         k = end;
         Some(rows)
     };
-    write_atomic(args.table.output.as_deref(), |w| {
-        write_cells(w, args.table.format, &columns, &mut next_chunk)
-    })
-    .map_err(|e| {
-        if args.table.output.is_some() {
-            Failure::output(e)
-        } else {
-            Failure::Internal(e)
-        }
-    })?;
+    args.table.write(&columns, &mut next_chunk)?;
     if !jumps.is_empty() {
         let h = camkin::human::human;
         let shown: Vec<String> = jumps

@@ -45,6 +45,20 @@ fn cam_system(w: f64) -> (System, BodyId) {
     (sys, cam)
 }
 
+/// The cam path's answers at `n` angles over a revolution, with the peaks of its velocity and
+/// acceleration (the tolerances' scale).
+fn cam_path(mech: &Mechanism, n: u32) -> (Vec<(f64, camkin::cam::FollowerState)>, f64, f64) {
+    let rows: Vec<_> = (0..n)
+        .map(|k| f64::from(k) * std::f64::consts::TAU / f64::from(n))
+        .map(|th| (th, mech.analyze(th).unwrap()))
+        .collect();
+    let peak = |f: fn(&camkin::cam::FollowerState) -> f64| {
+        rows.iter().map(|r| f(&r.1).abs()).fold(0.0, f64::max)
+    };
+    let (v, a) = (peak(|s| s.velocity), peak(|s| s.acceleration));
+    (rows, v, a)
+}
+
 #[test]
 fn the_papers_cam_as_a_system_gives_the_cam_paths_answers() {
     let mech = paper_mechanism(false);
@@ -72,15 +86,7 @@ fn the_papers_cam_as_a_system_gives_the_cam_paths_answers() {
         curve_b: Arc::new(Line::new(Point2::origin(), Vec2::new(0.0, -1.0)).unwrap()),
     });
     let size = mech.size();
-    let rows: Vec<_> = (0..720)
-        .map(|k| f64::from(k) * 0.5f64.to_radians())
-        .map(|th| (th, mech.analyze(th).unwrap()))
-        .collect();
-    let vpeak = rows.iter().map(|r| r.1.velocity.abs()).fold(0.0, f64::max);
-    let apeak = rows
-        .iter()
-        .map(|r| r.1.acceleration.abs())
-        .fold(0.0, f64::max);
+    let (rows, vpeak, apeak) = cam_path(&mech, 720);
     let mut sweep = sys.sweep().unwrap();
     for (th, m) in &rows {
         let s = sweep.step(th / w).unwrap();
@@ -159,15 +165,7 @@ fn an_arm_carrying_a_roller_as_a_system_gives_the_cam_paths_answers() {
         b: arm,
         curve_b: Arc::new(Circle::new(Point2::new(len, 0.0), rr).unwrap()),
     });
-    let rows: Vec<_> = (0..360)
-        .map(|k| f64::from(k).to_radians())
-        .map(|th| (th, mech.analyze(th).unwrap()))
-        .collect();
-    let vpeak = rows.iter().map(|r| r.1.velocity.abs()).fold(0.0, f64::max);
-    let apeak = rows
-        .iter()
-        .map(|r| r.1.acceleration.abs())
-        .fold(0.0, f64::max);
+    let (rows, vpeak, apeak) = cam_path(&mech, 360);
     let mut sweep = sys.sweep().unwrap();
     for (th, m) in &rows {
         let s = sweep.step(th / w).unwrap();
