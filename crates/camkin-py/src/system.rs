@@ -104,6 +104,20 @@ impl PySystem {
             large,
             ", or use fewer angles",
         )?;
+        // a system that cannot be analysed at its first instant (a loop that does not close)
+        // is bad input, named by its element
+        if let Some(&t0) = times.first() {
+            if let Err(e) = sys.analyze(t0) {
+                return Err(errors::input(
+                    "",
+                    None,
+                    format!(
+                        "the system cannot be analysed at its first instant ({}°): {e}",
+                        camkin::human::human(angles[0])
+                    ),
+                ));
+            }
+        }
         let unit = self.built.length_unit.name();
         let (cols, first_error) = py.detach(|| -> PyResult<_> {
             let mut sweep = sys

@@ -50,6 +50,12 @@ pub enum SystemTable {
     Driver,
     /// `[[contact]]`
     Contact,
+    /// `[[spring]]`
+    Spring,
+    /// `[[damper]]`
+    Damper,
+    /// `[[torsion_spring]]`
+    TorsionSpring,
 }
 
 impl SystemTable {
@@ -60,6 +66,9 @@ impl SystemTable {
             SystemTable::Joint => "joint",
             SystemTable::Driver => "driver",
             SystemTable::Contact => "contact",
+            SystemTable::Spring => "spring",
+            SystemTable::Damper => "damper",
+            SystemTable::TorsionSpring => "torsion_spring",
         }
     }
 }
@@ -100,6 +109,16 @@ pub enum SystemKey {
     Speed,
     /// `acceleration`
     Acceleration,
+    /// `stiffness`
+    Stiffness,
+    /// `free_length`
+    FreeLength,
+    /// `free_angle_deg`
+    FreeAngleDeg,
+    /// `preload`
+    Preload,
+    /// `damping`
+    Damping,
     /// a key of `curve_a`
     CurveA(ProfileField),
     /// a key of `curve_b`
@@ -125,6 +144,11 @@ impl SystemKey {
             SystemKey::SpeedRpm => "speed_rpm",
             SystemKey::Speed => "speed",
             SystemKey::Acceleration => "acceleration",
+            SystemKey::Stiffness => "stiffness",
+            SystemKey::FreeLength => "free_length",
+            SystemKey::FreeAngleDeg => "free_angle_deg",
+            SystemKey::Preload => "preload",
+            SystemKey::Damping => "damping",
         })
     }
 }

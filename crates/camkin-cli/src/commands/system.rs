@@ -51,6 +51,17 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
         ", or use fewer angles",
     )?;
     let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
+    // a system that cannot be analysed at its first instant (a loop that does not close, a
+    // redundant joint, a driver on a coordinate a joint fixes) is a bad file, named by its
+    // element
+    if let Some(&t0) = times.first() {
+        if let Err(e) = sys.analyze(t0) {
+            return Err(bad(format!(
+                "{name}: the system cannot be analysed at its first instant ({}°): {e}",
+                camkin::human::human(angles[0])
+            )));
+        }
+    }
     let unit = built.length_unit.name();
     let columns = system_columns(sys, unit);
     let mut jumps = Vec::new();

@@ -73,3 +73,86 @@ fn a_bad_system_file_exits_2_naming_the_element() {
         .stderr(predicate::str::contains("contact[1].bodies"))
         .stderr(predicate::str::contains("\"vlave\""));
 }
+
+/// Issue 45's bad system files: a closed loop that cannot assemble (a four-bar whose coupler is
+/// too short to reach its rocker) and a spring with both ends at one point of one body exit 2
+/// naming the element.
+#[test]
+fn a_loop_that_cannot_close_and_a_spring_on_one_point_exit_2() {
+    let four_bar = |coupler: f64| {
+        format!(
+            r#"length_unit = "mm"
+[[body]]
+name = "crank"
+[[body]]
+name = "coupler"
+position = [10.0, 0.0]
+[[body]]
+name = "rocker"
+position = [40.0, 0.0]
+angle_deg = 90.0
+[[joint]]
+name = "O2"
+kind = "revolute"
+bodies = ["ground", "crank"]
+[[joint]]
+name = "A"
+kind = "revolute"
+bodies = ["crank", "coupler"]
+at = [[10.0, 0.0], [0.0, 0.0]]
+[[joint]]
+name = "B"
+kind = "revolute"
+bodies = ["coupler", "rocker"]
+at = [[{coupler}, 0.0], [25.0, 0.0]]
+[[joint]]
+name = "O4"
+kind = "revolute"
+bodies = ["ground", "rocker"]
+at = [[40.0, 0.0], [0.0, 0.0]]
+[[driver]]
+name = "motor"
+body = "crank"
+coordinate = "angle"
+speed_rpm = 60.0
+"#
+        )
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("s.toml");
+    // it closes with a coupler of 35 (10 + 35 > 30 + 25 > …)
+    std::fs::write(&f, four_bar(35.0)).unwrap();
+    camkin()
+        .arg("analyze")
+        .arg(&f)
+        .args(["--at", "0,90"])
+        .assert()
+        .success();
+    std::fs::write(&f, four_bar(3.0)).unwrap();
+    camkin()
+        .arg("analyze")
+        .arg(&f)
+        .args(["--at", "0,90"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("cannot be"))
+        .stderr(predicate::str::contains("joint \""));
+    let spring = format!(
+        "{}[[spring]]\nname = \"return spring\"\nbodies = [\"rocker\", \"rocker\"]\nat = [[5.0, 0.0], [5.0, 0.0]]\nstiffness = 10.0\nfree_length = 20.0\n",
+        four_bar(35.0)
+    );
+    std::fs::write(&f, &spring).unwrap();
+    let line = spring
+        .lines()
+        .position(|l| l.starts_with("at = [[5.0"))
+        .unwrap()
+        + 1;
+    camkin()
+        .arg("analyze")
+        .arg(&f)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(format!("s.toml:{line}:")))
+        .stderr(predicate::str::contains("spring[0].at"))
+        .stderr(predicate::str::contains("one point of \"rocker\""));
+}

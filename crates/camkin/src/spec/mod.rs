@@ -52,7 +52,10 @@ pub use crate::field::{
 };
 pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
 pub use kinds::{FollowerKind, ProfileKind};
-pub use system::{BodySpec, BuiltSystem, ContactSpec, DriverSpec, JointSpec, SystemSpec};
+pub use system::{
+    BodySpec, BuiltSystem, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
+    TorsionSpringSpec,
+};
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;

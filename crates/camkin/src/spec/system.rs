@@ -36,7 +36,10 @@ use super::ProfileSpec;
 use crate::body::Pose;
 use crate::field::{Field, ProfileField, SystemField, SystemKey, SystemTable};
 use crate::geometry::Point2;
-use crate::system::{Body, BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
+use crate::system::{
+    Body, BodyId, Contact, Coordinate, Driver, ForceElement, ForceKind, Joint, JointKind, Law,
+    System,
+};
 use std::collections::HashMap;
 
 /// A system file.
@@ -59,6 +62,69 @@ pub struct SystemSpec {
     /// `[[contact]]`
     #[cfg_attr(feature = "serde", serde(default))]
     pub contact: Vec<ContactSpec>,
+    /// `[[spring]]`: linear springs between two points (for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub spring: Vec<SpringSpec>,
+    /// `[[damper]]`: linear dampers between two points (for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub damper: Vec<DamperSpec>,
+    /// `[[torsion_spring]]`: between two bodies' angles (for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub torsion_spring: Vec<TorsionSpringSpec>,
+}
+
+/// `[[spring]]`: `stiffness` N per length, `free_length` (length), `preload` N at it.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct SpringSpec {
+    /// its name
+    pub name: String,
+    /// the two bodies its ends are on
+    pub bodies: [String; 2],
+    /// its ends, each in its body's frame
+    pub at: [[f64; 2]; 2],
+    /// N per length unit
+    pub stiffness: f64,
+    /// length unit
+    pub free_length: f64,
+    /// N (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub preload: Option<f64>,
+}
+
+/// `[[damper]]`: `damping` N·s per length.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct DamperSpec {
+    /// its name
+    pub name: String,
+    /// the two bodies its ends are on
+    pub bodies: [String; 2],
+    /// its ends, each in its body's frame
+    pub at: [[f64; 2]; 2],
+    /// N·s per length unit
+    pub damping: f64,
+}
+
+/// `[[torsion_spring]]`: `stiffness` N·length per rad, `free_angle_deg`, `preload` N·length.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct TorsionSpringSpec {
+    /// its name
+    pub name: String,
+    /// the two bodies whose relative angle it resists
+    pub bodies: [String; 2],
+    /// N·length unit per rad
+    pub stiffness: f64,
+    /// degrees (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub free_angle_deg: Option<f64>,
+    /// N·length unit (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub preload: Option<f64>,
 }
 
 /// `[[body]]`.
@@ -474,6 +540,97 @@ impl SystemSpec {
                 curve_a,
                 b,
                 curve_b,
+            });
+        }
+        let non_negative = |f: Field, x: f64| -> Result<f64, SpecError> {
+            if x >= 0.0 && x.is_finite() {
+                Ok(x)
+            } else {
+                Err(SpecError::Invalid {
+                    field: f,
+                    value: crate::human::human(x),
+                    reason: "must be zero or more, and finite".into(),
+                })
+            }
+        };
+        // a spring or damper with both ends at one point of one body does nothing: a mistake
+        let ends = |t: T, i: usize, names: &[String; 2], pts: [[f64; 2]; 2]| {
+            let [a, b] = [
+                body(t, i, K::Bodies, &names[0])?,
+                body(t, i, K::Bodies, &names[1])?,
+            ];
+            let (pa, pb) = (
+                point(at(t, i, K::At), pts[0])?,
+                point(at(t, i, K::At), pts[1])?,
+            );
+            if a == b && pa == pb {
+                return Err(SpecError::Rule {
+                    field: at(t, i, K::At),
+                    reason: format!(
+                        "both ends at one point of {:?}: it would never stretch",
+                        names[0]
+                    ),
+                });
+            }
+            Ok((
+                a,
+                Point2::new(scale * pa.x, scale * pa.y),
+                b,
+                Point2::new(scale * pb.x, scale * pb.y),
+            ))
+        };
+        for (i, sp) in self.spring.iter().enumerate() {
+            named(T::Spring, i, &sp.name)?;
+            let (a, at_a, b, at_b) = ends(T::Spring, i, &sp.bodies, sp.at)?;
+            sys.add_force(ForceElement {
+                name: sp.name.clone(),
+                kind: ForceKind::Spring {
+                    a,
+                    at_a,
+                    b,
+                    at_b,
+                    stiffness: non_negative(at(T::Spring, i, K::Stiffness), sp.stiffness)? / scale,
+                    free_length: scale
+                        * non_negative(at(T::Spring, i, K::FreeLength), sp.free_length)?,
+                    preload: finite(at(T::Spring, i, K::Preload), sp.preload.unwrap_or(0.0))?,
+                },
+            });
+        }
+        for (i, d) in self.damper.iter().enumerate() {
+            named(T::Damper, i, &d.name)?;
+            let (a, at_a, b, at_b) = ends(T::Damper, i, &d.bodies, d.at)?;
+            sys.add_force(ForceElement {
+                name: d.name.clone(),
+                kind: ForceKind::Damper {
+                    a,
+                    at_a,
+                    b,
+                    at_b,
+                    damping: non_negative(at(T::Damper, i, K::Damping), d.damping)? / scale,
+                },
+            });
+        }
+        for (i, ts) in self.torsion_spring.iter().enumerate() {
+            named(T::TorsionSpring, i, &ts.name)?;
+            let [a, b] = two(T::TorsionSpring, i, &ts.bodies)?;
+            sys.add_force(ForceElement {
+                name: ts.name.clone(),
+                kind: ForceKind::TorsionSpring {
+                    a,
+                    b,
+                    stiffness: scale
+                        * non_negative(at(T::TorsionSpring, i, K::Stiffness), ts.stiffness)?,
+                    free_angle: finite(
+                        at(T::TorsionSpring, i, K::FreeAngleDeg),
+                        ts.free_angle_deg.unwrap_or(0.0),
+                    )?
+                    .to_radians(),
+                    preload: scale
+                        * finite(
+                            at(T::TorsionSpring, i, K::Preload),
+                            ts.preload.unwrap_or(0.0),
+                        )?,
+                },
             });
         }
         // as many rows as coordinates: the one rule of the whole

@@ -94,6 +94,67 @@ pub struct Contact {
     pub curve_b: Arc<dyn Curve>,
 }
 
+/// A force element between two bodies (or a body and the ground): for dynamics; the kinematic
+/// analysis does not need them, but a system carries them so that one file describes the whole
+/// mechanism.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum ForceKind {
+    /// A linear spring between two points: tension `stiffness (length − free_length) + preload`.
+    Spring {
+        /// the first body
+        a: BodyId,
+        /// its end on `a`, in `a`'s frame
+        at_a: Point2,
+        /// the second body
+        b: BodyId,
+        /// its end on `b`, in `b`'s frame
+        at_b: Point2,
+        /// N per length
+        stiffness: f64,
+        /// the length at which the spring force is the preload
+        free_length: f64,
+        /// N at the free length
+        preload: f64,
+    },
+    /// A linear damper between two points: force `damping × the rate of its length`.
+    Damper {
+        /// the first body
+        a: BodyId,
+        /// its end on `a`
+        at_a: Point2,
+        /// the second body
+        b: BodyId,
+        /// its end on `b`
+        at_b: Point2,
+        /// N·s per length
+        damping: f64,
+    },
+    /// A torsion spring between two bodies' angles: torque
+    /// `stiffness (θ_b − θ_a − free_angle) + preload`.
+    TorsionSpring {
+        /// the first body
+        a: BodyId,
+        /// the second body
+        b: BodyId,
+        /// N·length per rad
+        stiffness: f64,
+        /// rad
+        free_angle: f64,
+        /// N·length at the free angle
+        preload: f64,
+    },
+}
+
+/// A named force element.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ForceElement {
+    /// its name
+    pub name: String,
+    /// what it is
+    pub kind: ForceKind,
+}
+
 /// A planar multibody system: bodies, joints, drivers and contacts. Build it with
 /// [`System::new`] and the `add_` methods; [`System::analyze`] solves one instant,
 /// [`System::sweep`] many, warm-started.
@@ -103,6 +164,7 @@ pub struct System {
     pub(crate) joints: Vec<Joint>,
     pub(crate) drivers: Vec<Driver>,
     pub(crate) contacts: Vec<Contact>,
+    pub(crate) forces: Vec<ForceElement>,
 }
 
 impl System {
@@ -130,6 +192,16 @@ impl System {
     /// Adds a contact.
     pub fn add_contact(&mut self, contact: Contact) {
         self.contacts.push(contact);
+    }
+
+    /// Adds a force element.
+    pub fn add_force(&mut self, force: ForceElement) {
+        self.forces.push(force);
+    }
+
+    /// The force elements.
+    pub fn forces(&self) -> &[ForceElement] {
+        &self.forces
     }
 
     /// The bodies, in the order they were added.
