@@ -12,9 +12,9 @@ use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Mechanism file (TOML); without it, the paper's built-in cam. A system file ([[body]],
-    /// [[joint]], [[driver]], [[contact]]: see examples/valve-train.toml) is swept over its
-    /// first driver's angle, one row an instant with every body and contact.
+    /// Mechanism file (TOML); without it, the paper's built-in cam. A system file (arrays of
+    /// tables `body`, `joint`, `driver`, `contact`: see examples/valve-train.toml) is swept over
+    /// its first driver's angle, one row an instant with every body and contact.
     pub mechanism: Option<PathBuf>,
     /// Cam angles in degrees, comma-separated (e.g. 0,45,90).
     #[arg(
