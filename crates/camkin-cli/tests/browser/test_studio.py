@@ -162,7 +162,11 @@ def test_the_speed_slider_shows_where_the_follower_jumps(serve, page):
 import pytest  # noqa: E402
 
 
-@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
+# every mechanism file (system files, [[body]] …, are not yet drawn by the studio: issue 45)
+@pytest.mark.parametrize(
+    "example",
+    sorted(p.name for p in EXAMPLES.glob("*.toml") if "[[body]]" not in p.read_text()),
+)
 def test_every_example_opens_and_draws(serve, page, example, tmp_path):
     shutil.copytree(EXAMPLES, tmp_path / "ex")
     loaded(page, serve(tmp_path / "ex" / example))
