@@ -24,6 +24,32 @@ pub enum Field {
     Dynamics(DynamicsField),
     /// a field of an element of a system file (`joint[2].bodies`)
     System(SystemField),
+    /// a field of `[gear_pair]`
+    GearPair(GearPairField),
+}
+
+/// Fields of `[gear_pair]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum GearPairField {
+    /// the whole table
+    Table,
+    /// `teeth[i]`
+    Teeth(usize),
+    /// `module`
+    Module,
+    /// `pressure_angle_deg`
+    PressureAngle,
+    /// `profile_shift[i]`
+    ProfileShift(usize),
+    /// `centre_distance`
+    CentreDistance,
+    /// `backlash`
+    Backlash,
+    /// `speed_rpm`
+    SpeedRpm,
+    /// `direction`
+    Direction,
 }
 
 /// A field of an element of a system file: which table, which element (0-based, in the file's
@@ -302,6 +328,7 @@ impl Field {
             Field::FollowerProfile(_) => Field::FollowerProfile(ProfileField::Table),
             Field::FollowerConjugate(_) => Field::FollowerConjugate(ProfileField::Table),
             Field::Dynamics(_) => Field::Dynamics(DynamicsField::Table),
+            Field::GearPair(_) => Field::GearPair(GearPairField::Table),
             Field::System(f) => match f.key {
                 SystemKey::CurveA(_) => Field::System(SystemField {
                     key: SystemKey::CurveA(ProfileField::Table),
@@ -352,6 +379,21 @@ impl Field {
             Field::Dynamics(f) => {
                 p.push(Name("dynamics"));
                 p.extend(f.name().map(Name));
+            }
+            Field::GearPair(g) => {
+                p.push(Name("gear_pair"));
+                use GearPairField as G;
+                match g {
+                    G::Table => {}
+                    G::Teeth(i) => p.extend([Name("teeth"), Index(i)]),
+                    G::ProfileShift(i) => p.extend([Name("profile_shift"), Index(i)]),
+                    G::Module => p.push(Name("module")),
+                    G::PressureAngle => p.push(Name("pressure_angle_deg")),
+                    G::CentreDistance => p.push(Name("centre_distance")),
+                    G::Backlash => p.push(Name("backlash")),
+                    G::SpeedRpm => p.push(Name("speed_rpm")),
+                    G::Direction => p.push(Name("direction")),
+                }
             }
             Field::System(f) => {
                 p.extend([Name(f.table.name()), Index(f.index)]);

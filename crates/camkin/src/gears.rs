@@ -36,7 +36,7 @@ pub enum GearError {
     #[error("the follower is not a gear: it must be kind = \"rotating\" carrying a profile of kind = \"involute-gear\"")]
     DrivenNotGear,
     /// the base circles overlap: no external line of action
-    #[error("the centre distance {centre_distance:.6} is not more than the sum of the base radii {base_radii:.6}: the gears cannot mesh")]
+    #[error("the centre distance {} is not more than the sum of the base radii {}: the gears' base circles overlap, they cannot mesh", crate::human::human(*.centre_distance), format!("{:.4}", .base_radii))]
     TooClose {
         /// `a`, length
         centre_distance: f64,

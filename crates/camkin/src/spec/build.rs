@@ -174,6 +174,62 @@ pub enum SpecError {
 }
 
 impl SpecError {
+    /// The same error about the field `f` maps its field to (a gear pair's mechanism named by
+    /// the `gear_pair` keys, a contact's curve by its element).
+    pub fn map_field(self, f: impl Fn(Field) -> Field) -> Self {
+        match self {
+            SpecError::Invalid {
+                field,
+                value,
+                reason,
+            } => SpecError::Invalid {
+                field: f(field),
+                value,
+                reason,
+            },
+            SpecError::Unknown {
+                field,
+                value,
+                what,
+                known,
+            } => SpecError::Unknown {
+                field: f(field),
+                value,
+                what,
+                known,
+            },
+            SpecError::Missing {
+                field,
+                kind,
+                missing,
+            } => SpecError::Missing {
+                field: f(field),
+                kind,
+                missing,
+            },
+            SpecError::Foreign {
+                field,
+                name,
+                kind,
+                allowed,
+            } => SpecError::Foreign {
+                field: f(field),
+                name,
+                kind,
+                allowed,
+            },
+            SpecError::Rule { field, reason } => SpecError::Rule {
+                field: f(field),
+                reason,
+            },
+            SpecError::TooMuch { field, refusal } => SpecError::TooMuch {
+                field: f(field),
+                refusal,
+            },
+            other => other,
+        }
+    }
+
     /// The field the error is about (for a points file: `cam.profile.path`).
     pub fn field(&self) -> Field {
         match self {
@@ -375,6 +431,15 @@ pub(super) fn length_unit(u: Option<&str>) -> Result<LengthUnit, SpecError> {
 impl MechanismSpec {
     /// Validates the spec and builds its mechanism (and dynamics). Every error names its field.
     pub fn build(&self, options: &BuildOptions) -> Result<Built, SpecError> {
+        let built = self.build_mechanism(options);
+        if self.from_gear_pair {
+            // read from [gear_pair]: its errors name the keys that were written
+            return built.map_err(|e| e.map_field(super::gear_pair::gear_field));
+        }
+        built
+    }
+
+    fn build_mechanism(&self, options: &BuildOptions) -> Result<Built, SpecError> {
         let unit = length_unit(self.length_unit.as_deref())?;
         let scale = if options.si { unit.metres() } else { 1.0 };
         let cam = &self.cam;
@@ -453,9 +518,13 @@ impl MechanismSpec {
             e => e,
         })?;
         // two involute gears of one base pitch: refused where their teeth overlap (closer than
-        // the tight mesh) or never mesh on their involutes, naming the distance that would
-        if let Err(e @ (GearError::Interference { .. } | GearError::NoMesh { .. })) =
-            GearPair::new(&mechanism)
+        // the tight mesh, or their base circles), or never mesh on their involutes, naming the
+        // distance that would
+        if let Err(
+            e @ (GearError::Interference { .. }
+            | GearError::NoMesh { .. }
+            | GearError::TooClose { .. }),
+        ) = GearPair::new(&mechanism)
         {
             return Err(SpecError::Rule {
                 field: Field::Follower(FollowerField::Pivot),

@@ -38,6 +38,7 @@
 //! ```
 
 mod build;
+mod gear_pair;
 mod kinds;
 #[cfg(feature = "serde")]
 mod pair;
@@ -47,10 +48,11 @@ mod system;
 pub mod text;
 
 pub use crate::field::{
-    CamField, DynamicsField, Field, FollowerField, Key, ProfileField, SegmentField, SystemField,
-    SystemKey, SystemTable,
+    CamField, DynamicsField, Field, FollowerField, GearPairField, Key, ProfileField, SegmentField,
+    SystemField, SystemKey, SystemTable,
 };
 pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
+pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
 pub use system::{
     BodySpec, BuiltSystem, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
@@ -82,6 +84,10 @@ pub struct MechanismSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub dynamics: Option<DynamicsSpec>,
+    /// read from a `[gear_pair]` file ([`GearPairFile::to_mechanism`]): errors then name the
+    /// `gear_pair` keys
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub from_gear_pair: bool,
 }
 
 impl MechanismSpec {

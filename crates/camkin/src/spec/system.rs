@@ -230,57 +230,10 @@ fn at(table: SystemTable, index: usize, key: SystemKey) -> Field {
 /// A spec error of a carried curve, moved from the follower's profile (where the curve builder
 /// names it) to the contact's curve.
 fn moved(e: SpecError, to: impl Fn(ProfileField) -> Field) -> SpecError {
-    let re = |f: Field| match f {
+    e.map_field(|f| match f {
         Field::FollowerProfile(p) => to(p),
         other => other,
-    };
-    match e {
-        SpecError::Invalid {
-            field,
-            value,
-            reason,
-        } => SpecError::Invalid {
-            field: re(field),
-            value,
-            reason,
-        },
-        SpecError::Unknown {
-            field,
-            value,
-            what,
-            known,
-        } => SpecError::Unknown {
-            field: re(field),
-            value,
-            what,
-            known,
-        },
-        SpecError::Missing {
-            field,
-            kind,
-            missing,
-        } => SpecError::Missing {
-            field: re(field),
-            kind,
-            missing,
-        },
-        SpecError::Foreign {
-            field,
-            name,
-            kind,
-            allowed,
-        } => SpecError::Foreign {
-            field: re(field),
-            name,
-            kind,
-            allowed,
-        },
-        SpecError::Rule { field, reason } => SpecError::Rule {
-            field: re(field),
-            reason,
-        },
-        other => other,
-    }
+    })
 }
 
 impl SystemSpec {

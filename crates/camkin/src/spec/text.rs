@@ -129,7 +129,16 @@ pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
             name: name.to_string(),
         });
     }
+    if is_gear_pair(text) {
+        let file: super::GearPairFile = parse_toml_as(text, name)?;
+        return file.to_mechanism().map_err(|e| place(text, name, e));
+    }
     parse_toml_as(text, name)
+}
+
+/// Whether TOML `text` is a gear-pair file (`[gear_pair]`).
+pub fn is_gear_pair(text: &str) -> bool {
+    toml_edit::ImDocument::parse(text).is_ok_and(|d| d.as_table().contains_key("gear_pair"))
 }
 
 /// Whether TOML `text` is a system file (`[[body]]`, `[[joint]]`, …) rather than a mechanism

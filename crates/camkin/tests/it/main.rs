@@ -19,6 +19,8 @@ mod ellipse_flat;
 mod extremes;
 mod forces;
 mod gear_mesh;
+#[cfg(feature = "text")]
+mod gear_pair_files;
 mod general_follower;
 mod hyperdual_selfcheck;
 mod interpolation_study;
