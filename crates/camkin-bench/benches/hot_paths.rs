@@ -139,5 +139,24 @@ fn dynamics(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, spline, contact, followers_bench, dynamics);
+/// A revolution of the single-valve train at 0.25° (1440 warm instants, three bodies, two
+/// contacts): issue 45's target is under 10 ms.
+fn systems(c: &mut Criterion) {
+    let w = 3000.0 * std::f64::consts::TAU / 60.0;
+    let (sys, _) = camkin::reference::single_valve_train(w);
+    let dt = 0.25f64.to_radians() / w;
+    let mut g = c.benchmark_group("system");
+    g.sample_size(10);
+    g.bench_function("valve_train_revolution_0.25deg", |b| {
+        b.iter(|| {
+            let mut sweep = sys.sweep().expect("system");
+            for k in 0..1440 {
+                black_box(sweep.step(f64::from(k) * dt).expect("instant"));
+            }
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, spline, contact, followers_bench, dynamics, systems);
 criterion_main!(benches);

@@ -62,8 +62,10 @@ pub use system::{
 use crate::cam::Sense;
 use crate::curve::Parameterization;
 
-/// A mechanism: the cam, the follower and, for simulations, the follower's dynamics.
-#[derive(Debug, Clone, PartialEq, Default)]
+/// A mechanism: the cam, the follower and, for simulations, the follower's dynamics. Two specs
+/// are equal when they describe the same mechanism (whether it was read from a `[gear_pair]`
+/// only changes how errors are named).
+#[derive(Debug, Clone, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct MechanismSpec {
@@ -88,6 +90,15 @@ pub struct MechanismSpec {
     /// `gear_pair` keys
     #[cfg_attr(feature = "serde", serde(skip))]
     pub from_gear_pair: bool,
+}
+
+impl PartialEq for MechanismSpec {
+    fn eq(&self, other: &Self) -> bool {
+        self.length_unit == other.length_unit
+            && self.cam == other.cam
+            && self.follower == other.follower
+            && self.dynamics == other.dynamics
+    }
 }
 
 impl MechanismSpec {

@@ -61,7 +61,9 @@ pub(super) fn get(states: &[BodyState], id: BodyId) -> BodyState {
 }
 
 impl SystemSweep<'_> {
-    /// Assembles the rows at the states `st` into `out`.
+    /// Assembles the rows at the states `st` into `out`. `with_kinematics`: the states carry
+    /// velocities, the contacts' kinematics and `γ` are computed, and the positions are those the
+    /// last assembly refined the pairings at (taken as they are).
     pub(super) fn assemble(
         &self,
         t: f64,
@@ -147,7 +149,14 @@ impl SystemSweep<'_> {
                     found;
                 Ok(g)
             };
-            let p = match contact::refine(&fa, &fb, pair.0, pair.1, &self.opts) {
+            // at the positions the last assembly refined the pairings for (the kinematics'
+            // assembly), the pairing is taken as it is: a Newton step would not move it
+            let followed = if with_kinematics {
+                Ok(contact::pairing_at(&fa, &fb, pair.0, pair.1))
+            } else {
+                contact::refine(&fa, &fb, pair.0, pair.1, &self.opts)
+            };
+            let p = match followed {
                 // a pairing that converged far from contact may have left the pair followed for
                 // another tangency (past a gear's tip, Newton finds the tip circle against some
                 // flank): the contact is the first touch, so a nearer pair found globally wins
