@@ -47,7 +47,7 @@ fn rgb(c: scene::Rgb) -> RGBColor {
 }
 
 /// Draws shapes with equal axis scales in the box `(lo, hi)`.
-fn draw_scene<DB: DrawingBackend>(
+pub(crate) fn draw_scene<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     shapes: &[Shape],
     (lo, hi): (Point2, Point2),
@@ -378,6 +378,14 @@ fn jump_order(motion: &[Vec<Option<f64>>; 4], k: usize) -> Option<usize> {
 }
 
 pub fn run(args: &PlotArgs) -> Result<(), Failure> {
+    // a system file ([[body]], [[joint]], …) is drawn as a system
+    if let Some(path) = &args.mechanism {
+        let (name, text) =
+            crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow!(e)))?;
+        if camkin::spec::text::is_system(&text) {
+            return super::system::plot(args, path, &name, &text);
+        }
+    }
     let angles = args.at.0.clone();
     if angles.len() > 360 {
         return Err(Failure::Input(anyhow!(

@@ -1,5 +1,6 @@
 //! `camkin analyze SYSTEM.toml`: a system of bodies, joints, drivers and contacts, swept over
 //! its first driver's angle; one CSV row an instant ([`camkin::table::system_columns`]).
+//! `camkin plot SYSTEM.toml`: its drawings at driver angles and an animation of a revolution.
 
 use super::analyze::Args;
 use crate::args::AngleRange;
@@ -14,10 +15,12 @@ use std::path::Path;
 /// with a margin for larger systems and their searches.
 const SECONDS_PER_INSTANT: f64 = 1e-4;
 
-/// Analyses the system in `text` (read from `path`, `name` for messages).
-pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), Failure> {
-    args.table.check()?;
-    let bad = |m: String| Failure::Input(anyhow!(m));
+fn bad(m: String) -> Failure {
+    Failure::Input(anyhow!(m))
+}
+
+/// The system in `text` (read from `path`, `name` for messages), built; errors at their keys.
+fn load(path: &Path, name: &str, text: &str) -> Result<camkin::spec::BuiltSystem, Failure> {
     let spec = parse_system_toml(text, name).map_err(|e| bad(e.message))?;
     let options = BuildOptions {
         base_dir: path.parent().unwrap_or(Path::new(".")).to_path_buf(),
@@ -25,13 +28,12 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
         confine: false,
         limits: crate::mechfile::build_limits(),
     };
-    let built = build_system_placed(&spec, text, name, &options).map_err(|e| bad(e.message))?;
-    let sys = &built.system;
-    let angles = match (&args.at, args.angles) {
-        (Some(list), _) => list.0.clone(),
-        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
-    };
-    let times: Vec<f64> = angles
+    build_system_placed(&spec, text, name, &options).map_err(|e| bad(e.message))
+}
+
+/// The instants at the first driver's angles (degrees).
+fn times_of(sys: &camkin::system::System, name: &str, angles: &[f64]) -> Result<Vec<f64>, Failure> {
+    angles
         .iter()
         .map(|a| {
             sys.driver_time(a.to_radians()).ok_or_else(|| {
@@ -40,7 +42,19 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
                 ))
             })
         })
-        .collect::<Result<_, _>>()?;
+        .collect()
+}
+
+/// Analyses the system in `text` (read from `path`, `name` for messages).
+pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), Failure> {
+    args.table.check()?;
+    let built = load(path, name, text)?;
+    let sys = &built.system;
+    let angles = match (&args.at, args.angles) {
+        (Some(list), _) => list.0.clone(),
+        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
+    };
+    let times = times_of(sys, name, &angles)?;
     crate::refuse_large(
         &camkin::work::Work::new(
             format!("{} instants of this system", angles.len()),
@@ -114,4 +128,141 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
         );
     }
     Ok(())
+}
+
+/// Draws the system in `text` at the driver angles `--at` (`drawing_<angle>.svg/png`) and over a
+/// revolution in `--frames` frames (`animation.svg`), into `--out`.
+pub fn plot(
+    args: &super::plot::PlotArgs,
+    path: &Path,
+    name: &str,
+    text: &str,
+) -> Result<(), Failure> {
+    use crate::draw::mechanism::{animated_svg, bounds, Shape};
+    use crate::draw::{chart, system::system_scene};
+    let built = load(path, name, text)?;
+    let sys = &built.system;
+    let angles = args.at.0.clone();
+    if angles.len() > 360 || !(1..=3600).contains(&args.frames) {
+        return Err(bad(format!(
+            "--at: at most 360 drawings, --frames: 1 to 3600 (given {} and {})",
+            angles.len(),
+            args.frames
+        )));
+    }
+    let frames: Vec<f64> = (0..args.frames)
+        .map(|k| 360.0 * k as f64 / args.frames as f64)
+        .collect();
+    let all: Vec<f64> = angles.iter().chain(&frames).copied().collect();
+    crate::refuse_large(
+        &camkin::work::Work::new(
+            format!("{} drawings of this system", all.len()),
+            all.len() as f64 * 5e-3,
+        ),
+        args.work.large,
+        ", or use fewer --frames",
+    )?;
+    let times = times_of(sys, name, &all)?;
+    let size = sys.size();
+    // the drawings at --at, then a revolution's frames, from one sweep in order through
+    // instants at most half a degree of the driver apart (a contact is followed, not guessed
+    // afresh after a long jump: a gear's tooth pairs hand over every pitch)
+    let mut scenes: Vec<(f64, Vec<Shape>)> = Vec::new();
+    let mut order: Vec<usize> = (0..all.len()).collect();
+    order.sort_by(|&i, &j| times[i].total_cmp(&times[j]));
+    let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
+    let mut by_index: Vec<Option<Vec<Shape>>> = vec![None; all.len()];
+    let per_degree =
+        sys.driver_time(1f64.to_radians()).unwrap_or(0.0) - sys.driver_time(0.0).unwrap_or(0.0);
+    let mut at: Option<f64> = None;
+    for i in order {
+        let to = times[i];
+        if let Some(from) = at {
+            let n = ((to - from) / (0.5 * per_degree).abs())
+                .abs()
+                .ceil()
+                .min(1e6) as usize;
+            for k in 1..n {
+                let _ = sweep.step(from + (to - from) * k as f64 / n as f64);
+            }
+        }
+        let s = sweep
+            .step(to)
+            .map_err(|e| bad(format!("{name}: at {}°: {e}", camkin::human::human(all[i]))))?;
+        at = Some(to);
+        by_index[i] = Some(system_scene(sys, &s, size));
+    }
+    for (i, shapes) in by_index.into_iter().enumerate() {
+        scenes.push((all[i], shapes.unwrap_or_default()));
+    }
+    let (lo, hi) = bounds(scenes.iter().flat_map(|(_, s)| s.iter()));
+    let pad = 0.05 * (hi - lo).norm();
+    let bbox = (
+        lo - camkin::Vec2::new(pad, pad),
+        hi + camkin::Vec2::new(pad, pad),
+    );
+    let aspect = (bbox.1.y - bbox.0.y) / (bbox.1.x - bbox.0.x);
+    let px = (
+        800u32,
+        (800.0 * aspect + 40.0).round().clamp(200.0, 2400.0) as u32,
+    );
+    let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
+    let dir = od.path().to_path_buf();
+    chart::register_font();
+    let mut written = Vec::new();
+    let mut names = std::collections::BTreeSet::new();
+    for (a, shapes) in scenes.iter().take(angles.len()) {
+        let reduced = a.rem_euclid(360.0);
+        let file = format!("drawing_{reduced}");
+        if !names.insert(file.clone()) {
+            continue;
+        }
+        let title = format!(
+            "{} at driver angle {}°",
+            built_name(path),
+            camkin::human::human(reduced)
+        );
+        let (svg, png) = (
+            dir.join(format!("{file}.svg")),
+            dir.join(format!("{file}.png")),
+        );
+        chart::write_svg(&svg, px, |root| {
+            super::plot::draw_scene(root, shapes, bbox, &title)
+        })
+        .map_err(Failure::output)?;
+        chart::write_png(&png, px, |root| {
+            super::plot::draw_scene(root, shapes, bbox, &title)
+        })
+        .map_err(Failure::output)?;
+        written.extend([svg, png]);
+    }
+    let frame_shapes: Vec<Vec<Shape>> = scenes
+        .iter()
+        .skip(angles.len())
+        .map(|(_, s)| s.clone())
+        .collect();
+    let titles: Vec<String> = frames
+        .iter()
+        .map(|a| format!("driver angle {a:.1}° (one revolution in 6 s)"))
+        .collect();
+    let svg = animated_svg(&frame_shapes, &titles, bbox, 6.0);
+    let anim = dir.join("animation.svg");
+    crate::output::write_atomic(Some(&anim), |w| Ok(w.write_all(svg.as_bytes())?))
+        .map_err(Failure::output)?;
+    written.push(anim);
+    od.commit().map_err(Failure::output)?;
+    crate::say!(
+        "camkin: wrote {} files to {}",
+        written.len(),
+        args.out.display()
+    );
+    Ok(())
+}
+
+/// The file's name without its folder and extension, for titles.
+fn built_name(path: &Path) -> String {
+    path.file_stem().map_or_else(
+        || path.display().to_string(),
+        |s| s.to_string_lossy().into(),
+    )
 }

@@ -3,3 +3,4 @@
 pub mod chart;
 pub mod mechanism;
 pub mod svaj;
+pub mod system;

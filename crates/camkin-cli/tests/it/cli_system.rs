@@ -156,3 +156,36 @@ speed_rpm = 60.0
         .stderr(predicate::str::contains("spring[0].at"))
         .stderr(predicate::str::contains("one point of \"rocker\""));
 }
+
+/// `camkin plot` on a system file draws it at the driver angles asked (SVG and PNG) and over a
+/// revolution (an animation), following its contacts through half-degree instants between.
+#[test]
+fn a_system_is_drawn_at_its_driver_angles() {
+    let dir = tempfile::tempdir().unwrap();
+    for example in ["valve-train.toml", "gear-train.toml"] {
+        let out = dir.path().join(example);
+        camkin()
+            .arg("plot")
+            .arg(examples().join(example))
+            .arg("--out")
+            .arg(&out)
+            .args(["--at", "0,90", "--frames", "8"])
+            .assert()
+            .success();
+        for f in [
+            "drawing_0.svg",
+            "drawing_0.png",
+            "drawing_90.svg",
+            "drawing_90.png",
+            "animation.svg",
+        ] {
+            let p = out.join(f);
+            assert!(
+                std::fs::metadata(&p).is_ok_and(|m| m.len() > 1000),
+                "{example}: {f}"
+            );
+        }
+        let svg = std::fs::read_to_string(out.join("drawing_90.svg")).unwrap();
+        assert!(svg.contains("driver angle 90°"), "{example}");
+    }
+}

@@ -1,0 +1,171 @@
+//! A system drawn at one instant, as shapes in world coordinates: each contact's two curves on
+//! their bodies, the contact point and its common normal, every joint's point, and each body's
+//! joint points joined (a link drawn as the bar between its pins).
+
+use super::mechanism::{Rgb, Shape, CONTACT, FOLLOWER, NORMAL};
+use camkin::curve::{Curve, Domain};
+use camkin::system::{BodyId, JointKind, System, SystemState};
+use camkin::{Frame, Point2};
+
+/// A colour for each body, in turn.
+const PALETTE: [Rgb; 6] = [
+    (31, 119, 180),
+    (255, 127, 14),
+    (148, 103, 189),
+    (140, 86, 75),
+    (227, 119, 194),
+    (23, 190, 207),
+];
+
+fn color(id: BodyId) -> Rgb {
+    id.index().map_or(FOLLOWER, |i| PALETTE[i % PALETTE.len()])
+}
+
+fn frame(s: &SystemState, id: BodyId) -> Frame {
+    id.index()
+        .map_or_else(Frame::identity, |i| s.bodies[i].pose.frame())
+}
+
+/// The curve on body `id` in the world: a closed curve whole, an open one over `size` either
+/// side of `at` (its pairing parameter), a point as a dot.
+fn curve_shape(curve: &dyn Curve, f: &Frame, at: f64, size: f64, color: Rgb) -> Shape {
+    match curve.domain() {
+        Domain::Periodic { period } => Shape::Polyline {
+            pts: (0..720)
+                .map(|k| f * curve.position(period * f64::from(k) / 720.0))
+                .collect(),
+            color,
+            width: 2,
+            closed: true,
+        },
+        Domain::Interval { min, max } => {
+            // a line's parameter is a length; an open curve's stretch around the contact
+            let speed = curve.eval(at).d1.norm().max(1e-300);
+            let (lo, hi) = ((at - size / speed).max(min), (at + size / speed).min(max));
+            Shape::Polyline {
+                pts: (0..=64)
+                    .map(|k| f * curve.position(lo + (hi - lo) * f64::from(k) / 64.0))
+                    .collect(),
+                color,
+                width: 2,
+                closed: false,
+            }
+        }
+        Domain::Point => Shape::Dot {
+            p: f * curve.position(0.0),
+            color,
+            px: 4,
+        },
+    }
+}
+
+/// The shapes of `sys` at the instant `s`; `size` the system's size (for the lengths drawn).
+pub fn system_scene(sys: &System, s: &SystemState, size: f64) -> Vec<Shape> {
+    let mut shapes = Vec::new();
+    for (c, k) in sys.contacts().iter().zip(&s.contacts) {
+        for (id, curve, u) in [
+            (c.a, &c.curve_a, k.pairing.u_a),
+            (c.b, &c.curve_b, k.pairing.u_b),
+        ] {
+            shapes.push(curve_shape(
+                curve.as_ref(),
+                &frame(s, id),
+                u,
+                0.6 * size,
+                color(id),
+            ));
+        }
+    }
+    // each body's pins, joined: the bar of a link
+    let mut pins: Vec<Vec<Point2>> = vec![Vec::new(); sys.bodies().len()];
+    for j in sys.joints() {
+        let (a, at_a, b, at_b) = match j.kind {
+            JointKind::Revolute { a, at_a, b, at_b }
+            | JointKind::Prismatic {
+                a, at_a, b, at_b, ..
+            }
+            | JointKind::Fixed {
+                a, at_a, b, at_b, ..
+            } => (a, at_a, b, at_b),
+            _ => continue,
+        };
+        let pin = matches!(j.kind, JointKind::Revolute { .. });
+        for (id, at) in [(a, at_a), (b, at_b)] {
+            let p = frame(s, id) * at;
+            if let Some(i) = id.index() {
+                pins[i].push(p);
+            }
+            // a pin is a small circle; a slide's guide is drawn below
+            if pin {
+                shapes.push(Shape::Circle {
+                    c: p,
+                    r: 0.012 * size,
+                    color: FOLLOWER,
+                    width: 2,
+                });
+            }
+        }
+        if let JointKind::Prismatic { a, at_a, axis, .. } = j.kind {
+            // the guide: a line through its point along its axis
+            let f = frame(s, a);
+            let d = f.rotation * (axis / axis.norm());
+            let p = f * at_a;
+            shapes.push(Shape::Polyline {
+                pts: vec![p - 0.5 * size * d, p + 0.5 * size * d],
+                color: (150, 150, 150),
+                width: 1,
+                closed: false,
+            });
+        }
+    }
+    // a body's contact curves hang on its bar too: a closed curve by its centre (the mean of
+    // its samples), an open one by the contact point
+    for (c, k) in sys.contacts().iter().zip(&s.contacts) {
+        for (id, curve, u) in [
+            (c.a, &c.curve_a, k.pairing.u_a),
+            (c.b, &c.curve_b, k.pairing.u_b),
+        ] {
+            let Some(i) = id.index() else { continue };
+            let f = frame(s, id);
+            let p = match curve.domain() {
+                Domain::Periodic { period } => {
+                    let n = 64;
+                    let sum = (0..n).fold(camkin::Vec2::zeros(), |acc, k| {
+                        acc + curve.position(period * f64::from(k) / f64::from(n)).coords
+                    });
+                    f * Point2::from(sum / f64::from(n))
+                }
+                _ => f * curve.position(u),
+            };
+            if !pins[i].iter().any(|q| (q - p).norm() < 1e-9 * size) {
+                pins[i].push(p);
+            }
+        }
+    }
+    for (i, p) in pins.iter().enumerate() {
+        if p.len() >= 2 {
+            shapes.push(Shape::Polyline {
+                pts: p.clone(),
+                color: PALETTE[i % PALETTE.len()],
+                width: 4,
+                closed: false,
+            });
+        }
+    }
+    for k in &s.contacts {
+        let c = k.kinematics.point;
+        let n = k.kinematics.normal.into_inner();
+        shapes.push(Shape::Polyline {
+            pts: vec![c - 0.08 * size * n, c + 0.08 * size * n],
+            color: NORMAL,
+            width: 2,
+            closed: false,
+        });
+        shapes.push(Shape::Dot {
+            p: c,
+            color: CONTACT,
+            px: 5,
+        });
+    }
+    shapes
+}
