@@ -33,6 +33,31 @@ pub(super) fn is_convex(curve: &dyn crate::curve::Curve, size: f64) -> bool {
     }
 }
 
+/// The smallest radius of curvature of `curve` (16 samples a piece; a point's is zero; at most
+/// `size`).
+pub(super) fn sharpest_radius(curve: &dyn crate::curve::Curve, size: f64) -> f64 {
+    use crate::curve::Domain;
+    let radius = |u: f64| {
+        let d = curve.eval(u);
+        d.d1.norm().powi(3) / crate::geometry::cross(d.d1, d.d2).abs()
+    };
+    match curve.domain() {
+        Domain::Point => 0.0,
+        Domain::Interval { min, max } => {
+            let (lo, hi) = (min.max(-size), max.min(size));
+            (0..=16)
+                .map(|k| radius(lo + (hi - lo) * f64::from(k) / 16.0))
+                .fold(size, f64::min)
+        }
+        Domain::Periodic { period } => {
+            let bp = curve.breakpoints();
+            crate::curve::piece_samples(&bp, period, 16, 256)
+                .map(radius)
+                .fold(size, f64::min)
+        }
+    }
+}
+
 impl SystemSweep<'_> {
     /// Whether any contact's curves overlap at another pair of points at positions `q` (by the
     /// global search over their indexes); each that does takes the deepest such pair.

@@ -63,6 +63,9 @@ struct Solved {
     rates: Vec<(f64, f64)>,
     /// each contact's sliding rates along A and B, length/s
     slides: Vec<(f64, f64)>,
+    /// the coordinates' third derivative, from this instant's accelerations and the last's
+    /// (zero at the first): the predictor's cubic term
+    qddd: Vec<f64>,
 }
 
 /// A contact's gap beyond this times the size, at a Newton step, has the global search check
@@ -85,6 +88,8 @@ pub struct SystemSweep<'a> {
     /// whether each contact's curves are both convex (a closed convex curve, a line, a point):
     /// two convex bodies touching at a point overlap nowhere else, so the check is not needed
     pub(super) convex: Vec<bool>,
+    /// the smallest radius of curvature of the contacts' curves (sampled; at most the size)
+    pub(super) sharpest: f64,
     /// the contacts that jumped in any instant solved on the way to the one asked for
     jumps: Vec<bool>,
     /// buffers an instant reuses
@@ -118,6 +123,12 @@ impl System {
             .iter()
             .map(|c| is_convex(c.curve_a.as_ref(), size) && is_convex(c.curve_b.as_ref(), size))
             .collect();
+        let sharpest = self
+            .contacts
+            .iter()
+            .flat_map(|c| [c.curve_a.as_ref(), c.curve_b.as_ref()])
+            .map(|c| super::search::sharpest_radius(c, size))
+            .fold(size, f64::min);
         Ok(SystemSweep {
             sys: self,
             opts,
@@ -125,6 +136,7 @@ impl System {
             last: None,
             indexes,
             convex,
+            sharpest,
             jumps: vec![false; self.contacts.len()],
             scratch: Scratch::default(),
         })
@@ -202,8 +214,9 @@ impl SystemSweep<'_> {
         let (q0, mut pairings) = match &self.last {
             Some(s) => {
                 let dt = t - s.time;
+                // a cubic prediction: Newton then needs one iteration (its step about dt⁴)
                 let q: Vec<f64> = (0..s.q.len())
-                    .map(|i| s.q[i] + s.qd[i] * dt + 0.5 * s.qdd[i] * dt * dt)
+                    .map(|i| s.q[i] + dt * (s.qd[i] + dt * (0.5 * s.qdd[i] + dt * s.qddd[i] / 6.0)))
                     .collect();
                 let p = s
                     .pairings
@@ -327,6 +340,13 @@ impl SystemSweep<'_> {
             .iter()
             .map(|c| (c.kinematics.sliding_rate_a, c.kinematics.sliding_rate_b))
             .collect();
+        let qddd = match &self.last {
+            Some(l) if t != l.time && l.qdd.len() == qdd.len() => {
+                let h = t - l.time;
+                qdd.iter().zip(&l.qdd).map(|(a, b)| (a - b) / h).collect()
+            }
+            _ => vec![0.0; qdd.len()],
+        };
         self.last = Some(Solved {
             time: t,
             q,
@@ -335,6 +355,7 @@ impl SystemSweep<'_> {
             pairings,
             rates,
             slides,
+            qddd,
         });
         Ok(SystemState {
             time: t,
