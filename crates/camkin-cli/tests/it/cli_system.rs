@@ -17,8 +17,8 @@ fn the_valve_train_file_is_analysed_as_a_system() {
     let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    // two leading columns, nine a body, seven a contact, the error
-    assert_eq!(header.len(), 2 + 9 * 3 + 7 * 2 + 1);
+    // two leading columns, nine a body, thirteen a contact, the error
+    assert_eq!(header.len(), 2 + 9 * 3 + 13 * 2 + 1);
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
     let (vy, vay, fa) = (
         col("valve_y_mm"),
@@ -47,6 +47,24 @@ fn the_valve_train_file_is_analysed_as_a_system() {
             "{line}"
         );
         assert_eq!(*cells.last().unwrap(), "", "{line}");
+        // each contact's row holds: a_n on A is a_n on B (eq. 11), to rounding
+        for c in ["cam_on_roller", "pad_on_valve"] {
+            let r = num(col(&format!("{c}_residual_mm_s2")));
+            let terms = [
+                "normal_acceleration",
+                "coriolis_a",
+                "relative_a",
+                "coriolis_b",
+                "relative_b",
+            ]
+            .iter()
+            .map(|t| num(col(&format!("{c}_{t}_mm_s2"))).abs())
+            .fold(1.0, f64::max);
+            assert!(
+                r.abs() <= 1e-14 * terms,
+                "{c}: residual {r} against terms of {terms}"
+            );
+        }
         n += 1;
     }
     assert_eq!(n, 24);

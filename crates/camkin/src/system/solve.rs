@@ -167,7 +167,11 @@ impl SystemSweep<'_> {
     fn step_reached(&mut self, t: f64) -> Result<SystemState, SystemError> {
         match self.step_once(t) {
             Ok(s) => Ok(s),
-            Err(e @ (SystemError::NoAssembly { .. } | SystemError::Contact { .. })) => {
+            Err(
+                e @ (SystemError::NoAssembly { .. }
+                | SystemError::Contact { .. }
+                | SystemError::Singular { .. }),
+            ) => {
                 let Some(from) = self.last.as_ref().map(|l| l.time) else {
                     return Err(e);
                 };
@@ -340,8 +344,10 @@ impl SystemSweep<'_> {
             .iter()
             .map(|c| (c.kinematics.sliding_rate_a, c.kinematics.sliding_rate_b))
             .collect();
+        // the third derivative, for the next prediction: not across a jump of a contact (the
+        // accelerations change there at once)
         let qddd = match &self.last {
-            Some(l) if t != l.time && l.qdd.len() == qdd.len() => {
+            Some(l) if t != l.time && l.qdd.len() == qdd.len() && !jumped.iter().any(|&j| j) => {
                 let h = t - l.time;
                 qdd.iter().zip(&l.qdd).map(|(a, b)| (a - b) / h).collect()
             }

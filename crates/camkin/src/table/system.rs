@@ -1,6 +1,8 @@
 //! The system table (`camkin analyze SYSTEM.toml`): one row an instant, each body's pose,
-//! velocity and acceleration and each contact's point, gap, sliding rates and `γ`, named by the
-//! elements' names with their units; angles in degrees.
+//! velocity and acceleration and each contact's point, gap, sliding rates, the normal
+//! acceleration of the contact point with its Coriolis and relative terms on each curve (the
+//! paper's eqs. 1 and 2), `γ` and the residual of its row (eq. 11), named by the elements' names
+//! with their units; angles in degrees.
 
 use super::columns::Cell;
 use crate::system::{System, SystemError, SystemState};
@@ -45,7 +47,13 @@ pub fn system_columns(sys: &System, unit: &str) -> Vec<String> {
             ("gap", unit.to_string()),
             ("sliding_rate_a", format!("{unit}_s")),
             ("sliding_rate_b", format!("{unit}_s")),
+            ("normal_acceleration", format!("{unit}_s2")),
+            ("coriolis_a", format!("{unit}_s2")),
+            ("relative_a", format!("{unit}_s2")),
+            ("coriolis_b", format!("{unit}_s2")),
+            ("relative_b", format!("{unit}_s2")),
             ("gamma", format!("{unit}_s2")),
+            ("residual", format!("{unit}_s2")),
         ] {
             c.push(format!("{n}_{q}_{u}"));
         }
@@ -82,15 +90,34 @@ pub fn system_cells(
                     c.push(Cell::Num(Some(v)));
                 }
             }
-            for k in &s.contacts {
+            let body = |id: crate::system::BodyId| {
+                id.index().map_or_else(
+                    || {
+                        crate::body::BodyState::at_rest(crate::body::Pose::new(
+                            crate::Point2::origin(),
+                            0.0,
+                        ))
+                    },
+                    |i| s.bodies[i],
+                )
+            };
+            for (k, spec) in s.contacts.iter().zip(sys.contacts()) {
                 let m = &k.kinematics;
+                let (ba, bb) = (body(spec.a), body(spec.b));
+                let (na, nb) = (m.normal_acceleration_a(&ba), m.normal_acceleration_b(&bb));
                 for v in [
                     m.point.x,
                     m.point.y,
                     k.pairing.gap,
                     m.sliding_rate_a,
                     m.sliding_rate_b,
+                    na.total(),
+                    na.coriolis,
+                    na.relative,
+                    nb.coriolis,
+                    nb.relative,
                     m.gamma,
+                    m.acceleration_residual(&ba, &bb),
                 ] {
                     c.push(Cell::Num(Some(v)));
                 }
@@ -101,7 +128,7 @@ pub fn system_cells(
         Err(e) => {
             c.extend((0..9 * nb).map(|_| Cell::Num(None)));
             for _ in 0..nc {
-                c.extend((0..6).map(|_| Cell::Num(None)));
+                c.extend((0..12).map(|_| Cell::Num(None)));
                 c.push(Cell::Flag(None));
             }
             c.push(Cell::Text(Some(e.to_string())));
