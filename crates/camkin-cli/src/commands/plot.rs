@@ -47,6 +47,76 @@ fn rgb(c: scene::Rgb) -> RGBColor {
 }
 
 /// Draws shapes with equal axis scales in the box `(lo, hi)`.
+/// Writes the drawings (`scenes[..drawings]`: `drawing_<angle>.svg/png`, one per distinct angle
+/// modulo 360°) and the animation of the rest (`animation.svg`, one revolution in 6 s) into
+/// `dir`, all in one box so that the scale does not jump; `what` names the angle in titles
+/// (`cam angle`, `driver angle`). Returns the files written.
+pub(crate) fn draw_all(
+    dir: &Path,
+    scenes: &[(f64, Vec<Shape>)],
+    drawings: usize,
+    what: &str,
+) -> Result<Vec<PathBuf>, Failure> {
+    let (lo, hi) = scene::bounds(scenes.iter().flat_map(|(_, s)| s.iter()));
+    let pad = 0.05 * (hi - lo).norm();
+    let bbox = (
+        lo - camkin::Vec2::new(pad, pad),
+        hi + camkin::Vec2::new(pad, pad),
+    );
+    let aspect = (bbox.1.y - bbox.0.y) / (bbox.1.x - bbox.0.x);
+    let size = (
+        800u32,
+        (800.0 * aspect + 40.0).round().clamp(200.0, 2400.0) as u32,
+    );
+    chart::register_font();
+    let mut written = Vec::new();
+    // one drawing per distinct angle modulo 360°, named by it (`drawing_0.5.svg`: the name is
+    // built whole, since a `.5` would be taken for an extension; 1e300 is named by its 280-ish
+    // residue, not by 301 digits)
+    let mut names = std::collections::BTreeSet::new();
+    for (a, shapes) in scenes.iter().take(drawings) {
+        let reduced = a.rem_euclid(360.0);
+        // the angle's shortest form that reads back (`drawing_1e-300`, not 300 zeros)
+        let text = format!("{reduced}");
+        let name = if text.len() > 24 {
+            format!("drawing_{reduced:e}")
+        } else {
+            format!("drawing_{text}")
+        };
+        if !names.insert(name.clone()) {
+            continue; // the same angle as an earlier one: the same drawing
+        }
+        let title = if reduced == *a {
+            format!("{what} {a}°")
+        } else {
+            format!("{what} {}° ≡ {reduced}°", camkin::human::human(*a))
+        };
+        let svg = dir.join(format!("{name}.svg"));
+        let png = dir.join(format!("{name}.png"));
+        chart::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
+            .map_err(Failure::output)?;
+        chart::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
+            .map_err(Failure::output)?;
+        written.extend([svg, png]);
+    }
+    let frames: Vec<Vec<Shape>> = scenes
+        .iter()
+        .skip(drawings)
+        .map(|(_, s)| s.clone())
+        .collect();
+    let titles: Vec<String> = scenes
+        .iter()
+        .skip(drawings)
+        .map(|(a, _)| format!("{what} {a:.1}° (one revolution in 6 s)"))
+        .collect();
+    let svg = scene::animated_svg(&frames, &titles, bbox, 6.0);
+    let anim = dir.join("animation.svg");
+    crate::output::write_atomic(Some(&anim), |w| Ok(w.write_all(svg.as_bytes())?))
+        .map_err(Failure::output)?;
+    written.push(anim);
+    Ok(written)
+}
+
 pub(crate) fn draw_scene<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     shapes: &[Shape],
@@ -442,61 +512,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             scene::scene(mech, camkin::geometry::deg_to_rad(a), st.as_ref()),
         ));
     }
-    let (lo, hi) = scene::bounds(scenes.iter().flat_map(|(_, s)| s.iter()));
-    let pad = 0.05 * (hi - lo).norm();
-    let bbox = (
-        lo - camkin::Vec2::new(pad, pad),
-        hi + camkin::Vec2::new(pad, pad),
-    );
-    let aspect = (bbox.1.y - bbox.0.y) / (bbox.1.x - bbox.0.x);
-    let size = (
-        800u32,
-        (800.0 * aspect + 40.0).round().clamp(200.0, 2400.0) as u32,
-    );
-    chart::register_font();
-    // one drawing per distinct angle modulo 360°, named by it (`drawing_0.5.svg`: the name is
-    // built whole, since a `.5` would be taken for an extension; 1e300 is named by its 280-ish
-    // residue, not by 301 digits)
-    let mut names = std::collections::BTreeSet::new();
-    for (a, shapes) in scenes.iter().take(angles.len()) {
-        let reduced = a.rem_euclid(360.0);
-        // the angle's shortest form that reads back (`drawing_1e-300`, not 300 zeros)
-        let text = format!("{reduced}");
-        let name = if text.len() > 24 {
-            format!("drawing_{reduced:e}")
-        } else {
-            format!("drawing_{text}")
-        };
-        if !names.insert(name.clone()) {
-            continue; // the same cam angle as an earlier one: the same drawing
-        }
-        let title = if reduced == *a {
-            format!("cam angle {a}°")
-        } else {
-            format!("cam angle {}° ≡ {reduced}°", camkin::human::human(*a))
-        };
-        let svg = dir.join(format!("{name}.svg"));
-        let png = dir.join(format!("{name}.png"));
-        chart::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
-            .map_err(Failure::output)?;
-        chart::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
-            .map_err(Failure::output)?;
-        written.extend([svg, png]);
-    }
-    let frames: Vec<Vec<Shape>> = scenes
-        .iter()
-        .skip(angles.len())
-        .map(|(_, s)| s.clone())
-        .collect();
-    let titles: Vec<String> = frame_angles
-        .iter()
-        .map(|a| format!("cam angle {a:.1}° (one revolution in 6 s)"))
-        .collect();
-    let svg = scene::animated_svg(&frames, &titles, bbox, 6.0);
-    let anim = dir.join("animation.svg");
-    crate::output::write_atomic(Some(&anim), |w| Ok(w.write_all(svg.as_bytes())?))
-        .map_err(Failure::output)?;
-    written.push(anim);
+    written.extend(draw_all(&dir, &scenes, angles.len(), "cam angle")?);
     if failed > 0 {
         crate::say!(
             "camkin: {failed} of {n} angles could not be analysed; their points are left out"

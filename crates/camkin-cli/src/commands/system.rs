@@ -138,8 +138,8 @@ pub fn plot(
     name: &str,
     text: &str,
 ) -> Result<(), Failure> {
-    use crate::draw::mechanism::{animated_svg, bounds, Shape};
-    use crate::draw::{chart, system::system_scene};
+    use crate::draw::mechanism::Shape;
+    use crate::draw::system::system_scene;
     let built = load(path, name, text)?;
     let sys = &built.system;
     let angles = args.at.0.clone();
@@ -195,61 +195,9 @@ pub fn plot(
     for (i, shapes) in by_index.into_iter().enumerate() {
         scenes.push((all[i], shapes.unwrap_or_default()));
     }
-    let (lo, hi) = bounds(scenes.iter().flat_map(|(_, s)| s.iter()));
-    let pad = 0.05 * (hi - lo).norm();
-    let bbox = (
-        lo - camkin::Vec2::new(pad, pad),
-        hi + camkin::Vec2::new(pad, pad),
-    );
-    let aspect = (bbox.1.y - bbox.0.y) / (bbox.1.x - bbox.0.x);
-    let px = (
-        800u32,
-        (800.0 * aspect + 40.0).round().clamp(200.0, 2400.0) as u32,
-    );
     let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
-    let dir = od.path().to_path_buf();
-    chart::register_font();
-    let mut written = Vec::new();
-    let mut names = std::collections::BTreeSet::new();
-    for (a, shapes) in scenes.iter().take(angles.len()) {
-        let reduced = a.rem_euclid(360.0);
-        let file = format!("drawing_{reduced}");
-        if !names.insert(file.clone()) {
-            continue;
-        }
-        let title = format!(
-            "{} at driver angle {}°",
-            built_name(path),
-            camkin::human::human(reduced)
-        );
-        let (svg, png) = (
-            dir.join(format!("{file}.svg")),
-            dir.join(format!("{file}.png")),
-        );
-        chart::write_svg(&svg, px, |root| {
-            super::plot::draw_scene(root, shapes, bbox, &title)
-        })
-        .map_err(Failure::output)?;
-        chart::write_png(&png, px, |root| {
-            super::plot::draw_scene(root, shapes, bbox, &title)
-        })
-        .map_err(Failure::output)?;
-        written.extend([svg, png]);
-    }
-    let frame_shapes: Vec<Vec<Shape>> = scenes
-        .iter()
-        .skip(angles.len())
-        .map(|(_, s)| s.clone())
-        .collect();
-    let titles: Vec<String> = frames
-        .iter()
-        .map(|a| format!("driver angle {a:.1}° (one revolution in 6 s)"))
-        .collect();
-    let svg = animated_svg(&frame_shapes, &titles, bbox, 6.0);
-    let anim = dir.join("animation.svg");
-    crate::output::write_atomic(Some(&anim), |w| Ok(w.write_all(svg.as_bytes())?))
-        .map_err(Failure::output)?;
-    written.push(anim);
+    let what = format!("{} at driver angle", built_name(path));
+    let written = super::plot::draw_all(od.path(), &scenes, angles.len(), &what)?;
     od.commit().map_err(Failure::output)?;
     crate::say!(
         "camkin: wrote {} files to {}",
