@@ -97,27 +97,10 @@ impl PySystem {
             })
             .collect::<PyResult<_>>()?;
         errors::refuse_large(
-            &camkin::work::Work::new(
-                format!("{} instants of this system", angles.len()),
-                angles.len() as f64 * 1e-4,
-            ),
+            &camkin::work::Work::system(sys, angles.len()),
             large,
             ", or use fewer angles",
         )?;
-        // a system that cannot be analysed at its first instant (a loop that does not close)
-        // is bad input, named by its element
-        if let Some(&t0) = times.first() {
-            if let Err(e) = sys.analyze(t0) {
-                return Err(errors::input(
-                    "",
-                    None,
-                    format!(
-                        "the system cannot be analysed at its first instant ({}°): {e}",
-                        camkin::human::human(angles[0])
-                    ),
-                ));
-            }
-        }
         let unit = self.built.length_unit.name();
         let (cols, first_error) = py.detach(|| -> PyResult<_> {
             let mut sweep = sys
@@ -125,11 +108,29 @@ impl PySystem {
                 .map_err(|e| errors::input("", None, e.to_string()))?;
             let mut cols = Columns::new(camkin::table::system_columns(sys, unit), angles.len());
             let mut first_error = None;
+            // a system that cannot be analysed at its first instant (a loop that does not
+            // close) is bad input, named by its element; the sweep starts there
+            let mut first = match times.first() {
+                Some(&t0) => Some(sweep.step(t0).map_err(|e| {
+                    errors::input(
+                        "",
+                        None,
+                        format!(
+                            "the system cannot be analysed at its first instant ({}°): {e}",
+                            camkin::human::human(angles[0])
+                        ),
+                    )
+                })?),
+                None => None,
+            };
             for (k, (&a, &t)) in angles.iter().zip(&times).enumerate() {
                 if k % 4096 == 0 {
                     errors::interrupted()?;
                 }
-                let s = sweep.step(t);
+                let s = match first.take() {
+                    Some(state) => Ok(state),
+                    None => sweep.step(t),
+                };
                 if let Err(e) = &s {
                     first_error.get_or_insert((a, e.to_string()));
                 }

@@ -11,10 +11,6 @@ use camkin::spec::BuildOptions;
 use camkin::table::{system_cells, system_columns};
 use std::path::Path;
 
-/// Seconds an instant takes, about (a warm instant of the valve train: 47 000 instructions),
-/// with a margin for larger systems and their searches.
-const SECONDS_PER_INSTANT: f64 = 1e-4;
-
 fn bad(m: String) -> Failure {
     Failure::Input(anyhow!(m))
 }
@@ -56,11 +52,7 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
     };
     let times = times_of(sys, name, &angles)?;
     crate::refuse_large(
-        &camkin::work::Work::new(
-            format!("{} instants of this system", angles.len()),
-            angles.len() as f64 * SECONDS_PER_INSTANT,
-        )
-        .with_bytes(angles.len() as f64 * 40.0 * (sys.bodies().len() * 9 + 8) as f64),
+        &camkin::work::Work::system(sys, angles.len()),
         args.work.large,
         ", or use fewer angles",
     )?;
@@ -68,14 +60,16 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
     // a system that cannot be analysed at its first instant (a loop that does not close, a
     // redundant joint, a driver on a coordinate a joint fixes) is a bad file, named by its
     // element
-    if let Some(&t0) = times.first() {
-        if let Err(e) = sys.analyze(t0) {
-            return Err(bad(format!(
+    // element; the sweep starts there, and its first row is that instant
+    let mut first = match times.first() {
+        Some(&t0) => Some(sweep.step(t0).map_err(|e| {
+            bad(format!(
                 "{name}: the system cannot be analysed at its first instant ({}°): {e}",
                 camkin::human::human(angles[0])
-            )));
-        }
-    }
+            ))
+        })?),
+        None => None,
+    };
     let unit = built.length_unit.name();
     let columns = system_columns(sys, unit);
     let mut jumps = Vec::new();
@@ -88,7 +82,10 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
         let end = (k + 4096).min(angles.len());
         let rows = (k..end)
             .map(|i| {
-                let s = sweep.step(times[i]);
+                let s = match first.take() {
+                    Some(state) => Ok(state),
+                    None => sweep.step(times[i]),
+                };
                 match &s {
                     Ok(state) => {
                         if state.contacts.iter().any(|c| c.jumped) {
@@ -155,10 +152,11 @@ pub fn plot(
         .collect();
     let all: Vec<f64> = angles.iter().chain(&frames).copied().collect();
     crate::refuse_large(
-        &camkin::work::Work::new(
-            format!("{} drawings of this system", all.len()),
+        // the instants drawn and those half a degree apart between them, and the pictures
+        &camkin::work::Work::system(sys, all.len() + 720).and(&camkin::work::Work::new(
+            "the pictures",
             all.len() as f64 * 5e-3,
-        ),
+        )),
         args.work.large,
         ", or use fewer --frames",
     )?;

@@ -128,7 +128,13 @@ impl Mechanism {
     /// cam's samples within its reach and its corners, about 0.2 ms a step (twice what the
     /// 20/42 gear pair measured).
     pub fn sweep_seconds_estimate(&self, angles: usize) -> f64 {
-        let per_step = if self.touch.carried().is_some() {
+        angles as f64 * self.step_seconds_estimate(angles)
+    }
+
+    /// Seconds a step of a warm-started sweep of `angles` angles over a revolution takes (for a
+    /// carried curve, timed here: see [`Mechanism::sweep_seconds_estimate`]).
+    pub fn step_seconds_estimate(&self, angles: usize) -> f64 {
+        if self.touch.carried().is_some() {
             // a carried curve's cost depends on both curves' sizes, over orders of magnitude:
             // measured, on this machine, by a few steps at the spacing asked (the first cold)
             let step = std::f64::consts::TAU / angles.clamp(8, 1 << 20) as f64;
@@ -137,8 +143,7 @@ impl Mechanism {
             1e-6
         } else {
             2e-6 + 2e-6 * (self.touch.index.dense.params.len().max(2) as f64).log2()
-        };
-        angles as f64 * per_step
+        }
     }
 
     /// Seconds a step of a sweep at `step` (rad) takes here: six steps timed, the first cold.
@@ -187,7 +192,13 @@ impl Mechanism {
     /// needs it): a warm sweep of 720 angles and about 130 cold searches refining the rest and
     /// peak positions.
     pub fn travel_seconds_estimate(&self) -> f64 {
-        self.sweep_seconds_estimate(720) + 130.0 * self.search_seconds_estimate()
+        self.travel_seconds_with(self.step_seconds_estimate(720))
+    }
+
+    /// [`Mechanism::travel_seconds_estimate`] with a warm step's seconds already known (a
+    /// carried curve's are timed: once is enough).
+    pub(crate) fn travel_seconds_with(&self, step_seconds: f64) -> f64 {
+        720.0 * step_seconds + 130.0 * self.search_seconds_estimate()
     }
 
     /// The number of dense samples of the profile the global search looks among.

@@ -6,54 +6,46 @@ use super::solve::SystemSweep;
 use super::SystemError;
 use crate::contact::{self, Proximity, Surface};
 
-/// Whether `curve` bounds a convex body: a point, a straight line, or a closed curve turning one
-/// way only (its curvature, sampled 16 times a piece, nowhere below −1e-9 of 1/`size`).
-pub(super) fn is_convex(curve: &dyn crate::curve::Curve, size: f64) -> bool {
+/// How a contact's curve bends, from one pass over its samples (16 a piece, at least 256; an
+/// open curve 17 over `size` either side): whether it bounds a convex body (a point, a straight
+/// line, or a closed curve turning one way only, its corners too), and its smallest radius of
+/// curvature (a point's zero; at most `size`).
+pub(super) fn bending(curve: &dyn crate::curve::Curve, size: f64) -> (bool, f64) {
     use crate::curve::Domain;
-    let bent = |u: f64| {
+    let kappa = |u: f64| {
         let d = curve.eval(u);
         crate::geometry::cross(d.d1, d.d2) / d.d1.norm().powi(3)
     };
-    match curve.domain() {
-        Domain::Point => true,
-        Domain::Interval { min, max } => {
-            // a line: no curvature anywhere (sampled over a stretch when unbounded)
-            let (lo, hi) = (min.max(-size), max.min(size));
-            (0..=16).all(|k| bent(lo + (hi - lo) * f64::from(k) / 16.0).abs() <= 1e-12 / size)
+    // (the most negative curvature, the largest magnitude)
+    let fold = |ks: &mut dyn Iterator<Item = f64>| {
+        ks.fold((f64::INFINITY, 0.0f64), |(lo, big), k| {
+            (lo.min(k), big.max(k.abs()))
+        })
+    };
+    let radius = |big: f64| {
+        if big > 0.0 {
+            (1.0 / big).min(size)
+        } else {
+            size
         }
-        Domain::Periodic { period } => {
-            let bp = curve.breakpoints();
-            crate::curve::piece_samples(&bp, period, 16, 256).all(|u| bent(u) >= -1e-9 / size)
-                && bp.iter().all(|&b| {
-                    // a corner turns the tangent the same way
-                    let (t0, t1) = (curve.tangent(b.next_down()), curve.tangent(b.next_up()));
-                    crate::geometry::cross(t0, t1) >= -1e-12
-                })
-        }
-    }
-}
-
-/// The smallest radius of curvature of `curve` (16 samples a piece; a point's is zero; at most
-/// `size`).
-pub(super) fn sharpest_radius(curve: &dyn crate::curve::Curve, size: f64) -> f64 {
-    use crate::curve::Domain;
-    let radius = |u: f64| {
-        let d = curve.eval(u);
-        d.d1.norm().powi(3) / crate::geometry::cross(d.d1, d.d2).abs()
     };
     match curve.domain() {
-        Domain::Point => 0.0,
+        Domain::Point => (true, 0.0),
         Domain::Interval { min, max } => {
             let (lo, hi) = (min.max(-size), max.min(size));
-            (0..=16)
-                .map(|k| radius(lo + (hi - lo) * f64::from(k) / 16.0))
-                .fold(size, f64::min)
+            let (_, big) = fold(&mut (0..=16).map(|k| kappa(lo + (hi - lo) * f64::from(k) / 16.0)));
+            // a line: no curvature anywhere
+            (big <= 1e-12 / size, radius(big))
         }
         Domain::Periodic { period } => {
             let bp = curve.breakpoints();
-            crate::curve::piece_samples(&bp, period, 16, 256)
-                .map(radius)
-                .fold(size, f64::min)
+            let (least, big) =
+                fold(&mut crate::curve::piece_samples(&bp, period, 16, 256).map(kappa));
+            let corners_turn_one_way = bp.iter().all(|&b| {
+                let (t0, t1) = (curve.tangent(b.next_down()), curve.tangent(b.next_up()));
+                crate::geometry::cross(t0, t1) >= -1e-12
+            });
+            (least >= -1e-9 / size && corners_turn_one_way, radius(big))
         }
     }
 }

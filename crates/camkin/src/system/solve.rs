@@ -4,7 +4,7 @@
 //! (positions predicted by the last velocities and accelerations, pairings by their rates).
 
 use super::assemble::{iamax, states, Scratch};
-use super::search::is_convex;
+use super::search::bending;
 use super::{System, SystemError};
 use crate::body::BodyState;
 use crate::contact::{ContactKinematics, CurveIndex, Pairing, SearchOptions};
@@ -118,17 +118,16 @@ impl System {
                 )
             })
             .collect();
-        let convex = self
-            .contacts
-            .iter()
-            .map(|c| is_convex(c.curve_a.as_ref(), size) && is_convex(c.curve_b.as_ref(), size))
-            .collect();
-        let sharpest = self
-            .contacts
-            .iter()
-            .flat_map(|c| [c.curve_a.as_ref(), c.curve_b.as_ref()])
-            .map(|c| super::search::sharpest_radius(c, size))
-            .fold(size, f64::min);
+        // each contact's curves, sampled once: both convex (no overlap check needed) and the
+        // sharpest radius of curvature (Newton's one-step rule)
+        let mut convex = Vec::with_capacity(self.contacts.len());
+        let mut sharpest = size;
+        for c in &self.contacts {
+            let (ca, ra) = bending(c.curve_a.as_ref(), size);
+            let (cb, rb) = bending(c.curve_b.as_ref(), size);
+            convex.push(ca && cb);
+            sharpest = sharpest.min(ra).min(rb);
+        }
         Ok(SystemSweep {
             sys: self,
             opts,

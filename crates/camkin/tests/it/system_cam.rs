@@ -6,22 +6,13 @@
 //! contact's row and `γ` with them. And the same with an offset roller carried as a circle on an
 //! arm pivoted to the ground.
 
-use camkin::body::Pose;
+use crate::common::system_body as body;
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
 use camkin::curve::{Circle, Line};
 use camkin::reference::{paper_mechanism, paper_profile};
-use camkin::system::{Body, BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
+use camkin::system::{BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
 use camkin::{Point2, Vec2};
 use std::sync::Arc;
-
-fn body(name: &str, x: f64, y: f64, angle: f64) -> Body {
-    Body {
-        name: name.into(),
-        mass: 1.0,
-        inertia: 1.0,
-        pose: Pose::new(Point2::new(x, y), angle),
-    }
-}
 
 /// The cam on a driven pin; returns the system and the cam's id.
 fn cam_system(w: f64) -> (System, BodyId) {

@@ -5,18 +5,9 @@
 //! with the method. Tolerances: positions 1e-12 of the size, velocities 1e-9 and accelerations
 //! 1e-7 of their peaks.
 
-use camkin::body::Pose;
-use camkin::system::{Body, BodyId, Coordinate, Driver, Joint, JointKind, Law, System};
+use crate::common::system_body as body;
+use camkin::system::{BodyId, Coordinate, Driver, Joint, JointKind, Law, System};
 use camkin::{Point2, Vec2};
-
-fn body(name: &str, x: f64, y: f64, angle: f64) -> Body {
-    Body {
-        name: name.into(),
-        mass: 1.0,
-        inertia: 1.0,
-        pose: Pose::new(Point2::new(x, y), angle),
-    }
-}
 
 fn pin(name: &str, a: BodyId, at_a: [f64; 2], b: BodyId, at_b: [f64; 2]) -> Joint {
     Joint {

@@ -357,3 +357,13 @@ pub fn base_pitches_inside(x: f64, pb: f64, start: f64, end: f64) -> (Vec<f64>, 
         .any(|y| (y - start).abs() < 1e-7 || (y - end).abs() < 1e-7);
     (inside, near_end)
 }
+
+/// A body of a test system starting at `(x, y)` and `angle` (rad), unit mass properties.
+pub fn system_body(name: &str, x: f64, y: f64, angle: f64) -> camkin::system::Body {
+    camkin::system::Body {
+        name: name.into(),
+        mass: 1.0,
+        inertia: 1.0,
+        pose: camkin::body::Pose::new(Point2::new(x, y), angle),
+    }
+}
