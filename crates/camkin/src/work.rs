@@ -214,7 +214,10 @@ mod tests {
         let (sys, _) = crate::reference::single_valve_train(300.0);
         assert!(Work::system(&sys, 1440).refusal().is_none());
         let r = Work::system(&sys, 1_000_000).refusal().unwrap().to_string();
-        assert!(r.starts_with("1000000 instants of this system would take about 100 s"), "{r}");
+        assert!(
+            r.starts_with("1000000 instants of this system would take about 100 s"),
+            "{r}"
+        );
     }
 
     #[test]
