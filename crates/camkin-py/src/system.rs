@@ -4,7 +4,7 @@
 use crate::columns::{angles_from, Columns};
 use crate::errors;
 use crate::mech::TomlSource;
-use camkin::spec::text::{build_system_placed, parse_system_toml};
+use camkin::spec::text::read_system;
 use camkin::spec::{BuildOptions, BuiltSystem};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -23,21 +23,22 @@ pub struct PySystem {
 impl PySystem {
     /// System.from_toml(source, *, large=False) -> System
     ///
-    /// A system from a system file (a path, ``str`` or ``os.PathLike``) or its TOML text. Bad
+    /// A system from a system file (a path, ``str`` or ``os.PathLike``) or its TOML text. A
+    /// cam-follower or gear-pair file is its mechanism as a system (bodies ``cam`` and
+    /// ``follower``, one contact), analysed at cam angles: ``camkin analyze --system``. Bad
     /// input raises ``camkin.InputError`` naming the element, its key and the value, with the
     /// line and column (``.line``, ``.column``), as the command does.
     #[staticmethod]
     #[pyo3(signature = (source, *, large = false))]
     fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>, large: bool) -> PyResult<Self> {
         let s = TomlSource::read(py, source, "System.from_toml", "system")?;
-        let spec = parse_system_toml(&s.text, &s.file).map_err(errors::text)?;
         let options = BuildOptions {
             base_dir: s.base,
             si: false,
             confine: false,
             limits: crate::mech::limits(large),
         };
-        let built = build_system_placed(&spec, &s.text, &s.file, &options).map_err(errors::text)?;
+        let built = read_system(&s.text, &s.file, &options).map_err(errors::text)?;
         Ok(Self {
             built,
             name: s.name,
@@ -87,12 +88,17 @@ impl PySystem {
         let times: Vec<f64> = angles
             .iter()
             .map(|a| {
-                sys.driver_time(a.to_radians()).ok_or_else(|| {
-                    errors::input(
+                self.built.time_of(a.to_radians()).ok_or_else(|| match self.built.sweep_angle {
+                    camkin::spec::SweepAngle::FirstDriver => errors::input(
                         "driver",
                         None,
                         "a system is analysed at its first driver's angles: [[driver]] number 1 must drive an angle at a constant speed_rpm".into(),
-                    )
+                    ),
+                    _ => errors::input(
+                        "angles_deg",
+                        Some(camkin::human::human(*a)),
+                        "the cam, slowing down, never turns so far".into(),
+                    ),
                 })
             })
             .collect::<PyResult<_>>()?;
@@ -101,12 +107,11 @@ impl PySystem {
             large,
             ", or use fewer angles",
         )?;
-        let unit = self.built.length_unit.name();
         let (cols, first_error) = py.detach(|| -> PyResult<_> {
             let mut sweep = sys
                 .sweep()
                 .map_err(|e| errors::input("", None, e.to_string()))?;
-            let mut cols = Columns::new(camkin::table::system_columns(sys, unit), angles.len());
+            let mut cols = Columns::new(camkin::table::system_columns(&self.built), angles.len());
             let mut first_error = None;
             // a system that cannot be analysed at its first instant (a loop that does not
             // close) is bad input, named by its element; the sweep starts there

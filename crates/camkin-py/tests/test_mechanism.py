@@ -347,3 +347,33 @@ def test_a_system_file_in_python_equals_the_command():
             )
         )
     assert e.value.line is not None and "joint[2].kind" in str(e.value)
+
+
+def test_a_cam_file_as_a_system_in_python():
+    """Issue 45: a cam file read by camkin.System is its mechanism as a system (bodies cam and
+    follower): the command's --system columns to the last bit, and the follower's motion the
+    cam path's to 1e-12 of the size (a clockwise cam under an offset roller)."""
+    path = EXAMPLES / "eccentric-roller.toml"
+    sys = camkin.System.from_toml(path)
+    assert sys.bodies == ["cam", "follower"]
+    angles = np.arange(0.0, 360.0, 15.0)
+    r = sys.analyze(angles)
+    cli = csv_columns(run_cli("analyze", path, "--system", "--angles", "0:360:15"))
+    assert list(r) == list(cli)
+    assert list(r)[0] == "angle_deg"
+    for key, cells in cli.items():
+        if key == "error":
+            assert all(e is None for e in r[key])
+        elif key.endswith("_jump"):
+            assert [bool(x) for x in r[key]] == [c == "true" for c in cells]
+        else:
+            assert list(r[key]) == [float(c) for c in cells], key
+    cam = camkin.Mechanism.from_toml(path).analyze(angles)
+    w = 600.0 * 2.0 * np.pi / 60.0
+    size = 5.0
+    # the roller travels along +y from x = -0.5: its frame's y is the cam path's position
+    assert np.max(np.abs(r["follower_y_cm"] - cam["position_cm"])) <= 1e-12 * size
+    assert np.max(np.abs(r["follower_vy_cm_s"] - cam["velocity_cm_s"])) <= 1e-12 * w * size
+    assert np.max(np.abs(r["follower_ay_cm_s2"] - cam["acceleration_cm_s2"])) <= 1e-12 * w * w * size
+    # the clockwise cam's body turns clockwise
+    assert np.all(r["cam_omega_deg_s"] == -3600.0) or np.allclose(r["cam_omega_deg_s"], -3600.0, rtol=1e-15)

@@ -6,8 +6,8 @@ use super::analyze::Args;
 use crate::args::AngleRange;
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::spec::text::{build_system_placed, parse_system_toml};
-use camkin::spec::BuildOptions;
+use camkin::spec::text::read_system;
+use camkin::spec::{BuildOptions, BuiltSystem};
 use camkin::table::{system_cells, system_columns};
 use std::path::Path;
 
@@ -16,41 +16,45 @@ fn bad(m: String) -> Failure {
 }
 
 /// The system in `text` (read from `path`, `name` for messages), built; errors at their keys.
-fn load(path: &Path, name: &str, text: &str) -> Result<camkin::spec::BuiltSystem, Failure> {
-    let spec = parse_system_toml(text, name).map_err(|e| bad(e.message))?;
+/// A cam-follower or gear-pair file is its mechanism as a system.
+pub fn load(path: &Path, name: &str, text: &str) -> Result<BuiltSystem, Failure> {
     let options = BuildOptions {
         base_dir: path.parent().unwrap_or(Path::new(".")).to_path_buf(),
         si: false,
         confine: false,
         limits: crate::mechfile::build_limits(),
     };
-    build_system_placed(&spec, text, name, &options).map_err(|e| bad(e.message))
+    read_system(text, name, &options).map_err(|e| bad(e.message))
 }
 
-/// The instants at the first driver's angles (degrees).
-fn times_of(sys: &camkin::system::System, name: &str, angles: &[f64]) -> Result<Vec<f64>, Failure> {
+/// The instants at the sweep's angles (degrees): the first driver's, or a cam's.
+fn times_of(built: &BuiltSystem, name: &str, angles: &[f64]) -> Result<Vec<f64>, Failure> {
     angles
         .iter()
         .map(|a| {
-            sys.driver_time(a.to_radians()).ok_or_else(|| {
-                bad(format!(
+            built.time_of(a.to_radians()).ok_or_else(|| match built.sweep_angle {
+                camkin::spec::SweepAngle::FirstDriver => bad(format!(
                     "{name}: a system is swept over its first driver's angle (--at, --angles): [[driver]] number 1 must drive an angle at a constant speed_rpm"
-                ))
+                )),
+                _ => bad(format!(
+                    "--at, --angles: {}: the cam, slowing down, never turns {}°",
+                    camkin::human::human(*a),
+                    camkin::human::human(*a)
+                )),
             })
         })
         .collect()
 }
 
-/// Analyses the system in `text` (read from `path`, `name` for messages).
-pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), Failure> {
+/// Analyses the system `built` (read from `name`).
+pub fn analyze(args: &Args, name: &str, built: &BuiltSystem) -> Result<(), Failure> {
     args.table.check()?;
-    let built = load(path, name, text)?;
     let sys = &built.system;
     let angles = match (&args.at, args.angles) {
         (Some(list), _) => list.0.clone(),
         (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
     };
-    let times = times_of(sys, name, &angles)?;
+    let times = times_of(built, name, &angles)?;
     crate::refuse_large(
         &camkin::work::Work::system(sys, angles.len()),
         args.work.large,
@@ -70,8 +74,7 @@ pub fn analyze(args: &Args, path: &Path, name: &str, text: &str) -> Result<(), F
         })?),
         None => None,
     };
-    let unit = built.length_unit.name();
-    let columns = system_columns(sys, unit);
+    let columns = system_columns(built);
     let mut jumps = Vec::new();
     let mut failed = None;
     let mut k = 0;
@@ -160,7 +163,7 @@ pub fn plot(
         args.work.large,
         ", or use fewer --frames",
     )?;
-    let times = times_of(sys, name, &all)?;
+    let times = times_of(&built, name, &all)?;
     let size = sys.size();
     // the drawings at --at, then a revolution's frames, from one sweep in order through
     // instants at most half a degree of the driver apart (a contact is followed, not guessed
@@ -171,7 +174,7 @@ pub fn plot(
     let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
     let mut by_index: Vec<Option<Vec<Shape>>> = vec![None; all.len()];
     let per_degree =
-        sys.driver_time(1f64.to_radians()).unwrap_or(0.0) - sys.driver_time(0.0).unwrap_or(0.0);
+        built.time_of(1f64.to_radians()).unwrap_or(0.0) - built.time_of(0.0).unwrap_or(0.0);
     let mut at: Option<f64> = None;
     for i in order {
         let to = times[i];

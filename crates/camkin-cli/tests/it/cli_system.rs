@@ -207,3 +207,90 @@ fn a_system_is_drawn_at_its_driver_angles() {
         assert!(svg.contains("driver angle 90°"), "{example}");
     }
 }
+
+/// A cam file analysed with `--system`: the cam and the follower as bodies of a system. For
+/// each follower kind (the translating flat face of the paper, an oscillating roller, a
+/// clockwise cam under an offset roller) the follower's coordinate read from its body's columns
+/// is the cam path's `position`, `velocity` and `acceleration` in the same run's other table, to
+/// 1e-12 of the size (ω × size, ω² × size), at the cam angles asked; the sweep's column is the
+/// cam angle.
+#[test]
+fn a_cam_file_as_a_system_gives_the_cam_paths_motion() {
+    let table = |file: &str, system: bool| -> Vec<std::collections::HashMap<String, f64>> {
+        let mut cmd = camkin();
+        cmd.arg("analyze")
+            .arg(examples().join(file))
+            .args(["--angles", "0:360:7.5"]);
+        if system {
+            cmd.arg("--system");
+        }
+        let out = cmd.assert().success();
+        let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+        let mut lines = text.lines();
+        let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+        lines
+            .map(|l| {
+                header
+                    .iter()
+                    .cloned()
+                    .zip(l.split(',').map(|c| c.parse::<f64>().unwrap_or(f64::NAN)))
+                    .collect()
+            })
+            .collect()
+    };
+    // (file, its length unit, the follower's coordinate from its body's columns, size, rpm)
+    type Coordinate = fn(&std::collections::HashMap<String, f64>, &str) -> [f64; 3];
+    let slide_x: Coordinate = |r, u| {
+        [
+            r[&format!("follower_x_{u}")],
+            r[&format!("follower_vx_{u}_s")],
+            r[&format!("follower_ax_{u}_s2")],
+        ]
+    };
+    let slide_y: Coordinate = |r, u| {
+        [
+            r[&format!("follower_y_{u}")],
+            r[&format!("follower_vy_{u}_s")],
+            r[&format!("follower_ay_{u}_s2")],
+        ]
+    };
+    let arm: Coordinate = |r, _| {
+        [
+            r["follower_angle_deg"],
+            r["follower_omega_deg_s"],
+            r["follower_alpha_deg_s2"],
+        ]
+    };
+    for (file, unit, coordinate, size, rpm) in [
+        ("paper.toml", "cm", slide_x, 5.0, 1000.0),
+        ("oscillating-roller.toml", "cm", arm, 360.0, 1000.0),
+        ("eccentric-roller.toml", "cm", slide_y, 5.0, 600.0),
+    ] {
+        let (sys, cam) = (table(file, true), table(file, false));
+        assert_eq!(sys.len(), 48, "{file}");
+        let w: f64 = rpm * TAU / 60.0;
+        // the cam body turns at the cam's speed in its own sense
+        assert!((sys[0]["cam_omega_deg_s"].abs().to_radians() - w).abs() <= 1e-12 * w);
+        for (s, c) in sys.iter().zip(&cam) {
+            assert_eq!(s["angle_deg"], c["angle_deg"], "{file}");
+            let [q, v, a] = coordinate(s, unit);
+            let (cq, cv, ca) = if file.starts_with("oscillating") {
+                (
+                    c["position_deg"],
+                    c["velocity_deg_s"],
+                    c["acceleration_deg_s2"],
+                )
+            } else {
+                (
+                    c[&format!("position_{unit}")],
+                    c[&format!("velocity_{unit}_s")],
+                    c[&format!("acceleration_{unit}_s2")],
+                )
+            };
+            // the eccentric roller travels along +y from x = -0.5: its y is its position
+            assert!((q - cq).abs() <= 1e-12 * size, "{file}: {q} {cq}");
+            assert!((v - cv).abs() <= 1e-12 * w * size, "{file}: {v} {cv}");
+            assert!((a - ca).abs() <= 1e-12 * w * w * size, "{file}: {a} {ca}");
+        }
+    }
+}

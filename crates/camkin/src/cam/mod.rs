@@ -31,6 +31,7 @@ mod linear;
 mod mechanism;
 mod options;
 mod pose;
+mod preset;
 mod state;
 mod summary;
 mod support;
@@ -48,6 +49,7 @@ pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGT
 pub use jumps::{contact_jumps, contact_jumps_with};
 pub use mechanism::SWEEP_CHUNK;
 pub use options::AnalysisOptions;
+pub use preset::CamFollowerSystem;
 pub use state::{Corner, FollowerState, Motion};
 pub use support::IndependentCheck;
 pub use sweep::{Found, Sweep};

@@ -55,8 +55,8 @@ pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
 pub use system::{
-    BodySpec, BuiltSystem, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
-    TorsionSpringSpec,
+    BodySpec, BuiltSystem, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SweepAngle,
+    SystemSpec, TorsionSpringSpec,
 };
 
 use crate::cam::Sense;

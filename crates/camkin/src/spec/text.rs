@@ -169,6 +169,27 @@ pub fn build_system_placed(
     spec.build(options).map_err(|e| place(text, name, e))
 }
 
+/// The system a file describes, for the front ends that take either kind of file (one reader
+/// of both): a system file's bodies, joints, drivers and contacts; or a cam-follower or
+/// gear-pair file's mechanism as a system ([`crate::cam::Mechanism::to_system`]), swept over
+/// its cam angle.
+pub fn read_system(
+    text: &str,
+    name: &str,
+    options: &BuildOptions,
+) -> Result<super::BuiltSystem, TextError> {
+    if is_system(text) {
+        let spec = parse_system_toml(text, name)?;
+        return build_system_placed(&spec, text, name, options);
+    }
+    let spec = parse_toml(text, name)?;
+    let (built, _) = build_placed(&spec, text, name, options)?;
+    let mut system = super::BuiltSystem::from_mechanism(&built.mechanism, built.length_unit)
+        .map_err(|e| place(text, name, e.into()))?;
+    system.warnings = built.warnings;
+    Ok(system)
+}
+
 fn parse_toml_as<T: serde::de::DeserializeOwned>(text: &str, name: &str) -> Result<T, TextError> {
     let text = bounded(text, name)?;
     // the path of the value that failed (`follower.direction`), which the TOML error's own

@@ -20,9 +20,17 @@ fn key(name: &str) -> String {
         .collect()
 }
 
-/// The columns of `sys`'s table, lengths in `unit`.
-pub fn system_columns(sys: &System, unit: &str) -> Vec<String> {
-    let mut c = vec!["driver_angle_deg".to_string(), "time_s".to_string()];
+/// The columns of a system's table, lengths in its unit: first the sweep's angle
+/// (`driver_angle_deg`, or a cam file's `angle_deg`, the cam angle as `camkin analyze` names
+/// it without `--system`) and the time.
+pub fn system_columns(built: &crate::spec::BuiltSystem) -> Vec<String> {
+    let sys = &built.system;
+    let unit = built.length_unit.name();
+    let first = match built.sweep_angle {
+        crate::spec::SweepAngle::FirstDriver => "driver_angle_deg",
+        _ => "angle_deg",
+    };
+    let mut c = vec![first.to_string(), "time_s".to_string()];
     for b in sys.bodies() {
         let n = key(&b.name);
         for (q, u) in [

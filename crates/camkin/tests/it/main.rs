@@ -42,5 +42,7 @@ mod system_cam;
 #[cfg(feature = "text")]
 mod system_files;
 mod system_linkages;
+#[cfg(feature = "text")]
+mod system_presets;
 mod system_valve_train;
 mod thin_geometry;
