@@ -149,12 +149,20 @@ pub enum SystemKey {
     CurveA(ProfileField),
     /// a key of `curve_b`
     CurveB(ProfileField),
+    /// a key of `motion_follower`
+    MotionFollower(FollowerField),
+    /// `motion_direction`
+    MotionDirection,
 }
 
 impl SystemKey {
     fn name(self) -> Option<&'static str> {
         Some(match self {
-            SystemKey::Table | SystemKey::CurveA(_) | SystemKey::CurveB(_) => return None,
+            SystemKey::Table
+            | SystemKey::CurveA(_)
+            | SystemKey::CurveB(_)
+            | SystemKey::MotionFollower(_) => return None,
+            SystemKey::MotionDirection => "motion_direction",
             SystemKey::Name => "name",
             SystemKey::Mass => "mass",
             SystemKey::Inertia => "inertia",
@@ -338,6 +346,10 @@ impl Field {
                     key: SystemKey::CurveB(ProfileField::Table),
                     ..f
                 }),
+                SystemKey::MotionFollower(_) => Field::System(SystemField {
+                    key: SystemKey::MotionFollower(FollowerField::Table),
+                    ..f
+                }),
                 _ => Field::System(SystemField {
                     key: SystemKey::Table,
                     ..f
@@ -406,8 +418,15 @@ impl Field {
                         }));
                         match c {
                             ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),
+                            ProfileField::Segment(i, s) => {
+                                p.extend([Name("segments"), Index(i), Name(s.name())]);
+                            }
                             other => p.extend(other.name().map(Name)),
                         }
+                    }
+                    SystemKey::MotionFollower(k) => {
+                        p.push(Name("motion_follower"));
+                        p.extend(k.name().map(Name));
                     }
                     k => p.extend(k.name().map(Name)),
                 }

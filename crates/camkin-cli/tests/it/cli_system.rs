@@ -294,3 +294,116 @@ fn a_cam_file_as_a_system_gives_the_cam_paths_motion() {
         }
     }
 }
+
+/// A cam synthesised from a motion program drives a rocker whose other arm drives a slider
+/// through a rod (`examples/cam-rocker-slider.toml`), checked through the command against a
+/// reference that shares no formula with the method: the rocker's angle is the program's
+/// (`φ₀ + s(θ)`, the textbook cycloidal and 3-4-5 laws and their derivatives written out here,
+/// `φ₀` where the roller centre meets the prime circle), and the slider's height is the rod's
+/// loop closed by hand, `y = P_y − √(l² − (x_g − P_x)²)`, differentiated by five-point
+/// differences. Positions to 1e-12 of the size, velocities to 1e-9 and accelerations to 1e-7
+/// of their peaks.
+#[test]
+fn a_cam_rocker_and_slider_against_the_program_and_the_loop() {
+    use std::f64::consts::PI;
+    let out = camkin()
+        .arg("analyze")
+        .arg(examples().join("cam-rocker-slider.toml"))
+        .args(["--angles", "0:360:1.5"])
+        .assert()
+        .success();
+    let (header, rows) = parse_csv(&out.get_output().stdout);
+    let col = columns(&header);
+    let w = 600.0 * TAU / 60.0;
+    // the program, in degrees of arm angle against degrees of cam angle: (s, s', s'') in rad
+    let program = |th: f64| -> [f64; 3] {
+        let deg = th.to_degrees().rem_euclid(360.0);
+        let b = 120f64.to_radians();
+        let h = 15f64.to_radians();
+        if deg < 120.0 {
+            let x = deg / 120.0;
+            [
+                h * (x - (2.0 * PI * x).sin() / (2.0 * PI)),
+                h / b * (1.0 - (2.0 * PI * x).cos()),
+                2.0 * PI * h / (b * b) * (2.0 * PI * x).sin(),
+            ]
+        } else if deg < 180.0 {
+            [h, 0.0, 0.0]
+        } else if deg < 300.0 {
+            let x = (deg - 180.0) / 120.0;
+            let p = 10.0 * x.powi(3) - 15.0 * x.powi(4) + 6.0 * x.powi(5);
+            let dp = 30.0 * x * x - 60.0 * x.powi(3) + 30.0 * x.powi(4);
+            let ddp = 60.0 * x - 180.0 * x * x + 120.0 * x.powi(3);
+            [h * (1.0 - p), -h / b * dp, -h / (b * b) * ddp]
+        } else {
+            [0.0, 0.0, 0.0]
+        }
+    };
+    // φ₀: the roller centre (60 mm from the pivot at (−60, 40)) on the prime circle (38 mm),
+    // the branch nearest 0°
+    let (ox, oy, arm, prime): (f64, f64, f64, f64) = (-60.0, 40.0, 60.0, 38.0);
+    let d = ox.hypot(oy);
+    let a = (prime * prime - arm * arm + d * d) / (2.0 * d);
+    let hh = (prime * prime - a * a).sqrt();
+    let (ux, uy) = (ox / d, oy / d);
+    let phi0 = [1.0, -1.0]
+        .map(|s| {
+            let (cx, cy) = (a * ux - s * hh * uy, a * uy + s * hh * ux);
+            (cy - oy).atan2(cx - ox)
+        })
+        .into_iter()
+        .min_by(|p, q| p.abs().total_cmp(&q.abs()))
+        .unwrap();
+    // the slider's height at cam angle θ: the rod (30 mm) from the rocker's pin (−30, 10) in
+    // its frame to the guide x = −100, the slider below the pin
+    let slider = |th: f64| -> f64 {
+        let phi = phi0 + program(th)[0];
+        let (c, s) = (phi.cos(), phi.sin());
+        let (px, py) = (ox + c * -30.0 - s * 10.0, oy + s * -30.0 + c * 10.0);
+        py - (30.0f64 * 30.0 - (-100.0 - px).powi(2)).sqrt()
+    };
+    let num = |r: &Vec<String>, k: &str| r[col[k]].parse::<f64>().unwrap();
+    let (mut peak_v, mut peak_a) = (0.0f64, 0.0f64);
+    let mut worst = [0.0f64; 5];
+    let mut worst_a = 0.0f64;
+    let size = 100.0;
+    for r in &rows {
+        let th = num(r, "driver_angle_deg").to_radians();
+        assert_eq!(r[col["error"]], "", "{r:?}");
+        let [s, ds, dds] = program(th);
+        worst[0] = worst[0].max((num(r, "rocker_angle_deg").to_radians() - phi0 - s).abs());
+        worst[1] = worst[1].max((num(r, "rocker_omega_deg_s").to_radians() - ds * w).abs() / w);
+        worst[2] = worst[2]
+            .max((num(r, "rocker_alpha_deg_s2").to_radians() - dds * w * w).abs() / (w * w));
+        // the slider: its height, and five-point differences in θ away from the program's
+        // joins (where the 3-4-5 law's acceleration, and so the slider's, has a corner)
+        let y = slider(th);
+        worst[3] = worst[3].max((num(r, "slider_y_mm") - y).abs() / size);
+        let deg = th.to_degrees();
+        let near_join = [0.0, 120.0, 180.0, 300.0, 360.0]
+            .iter()
+            .any(|j| (deg - j).abs() < 0.5);
+        if !near_join {
+            let e = 1e-3;
+            let f = |k: f64| slider(th + k * e);
+            let d1 = (f(-2.0) - 8.0 * f(-1.0) + 8.0 * f(1.0) - f(2.0)) / (12.0 * e) * w;
+            let d2 = (-f(-2.0) + 16.0 * f(-1.0) - 30.0 * f(0.0) + 16.0 * f(1.0) - f(2.0))
+                / (12.0 * e * e)
+                * w
+                * w;
+            peak_v = peak_v.max(d1.abs());
+            peak_a = peak_a.max(d2.abs());
+            worst[4] = worst[4].max((num(r, "slider_vy_mm_s") - d1).abs());
+            worst_a = worst_a.max((num(r, "slider_ay_mm_s2") - d2).abs());
+        }
+    }
+    eprintln!("rocker {:.1e} rad, {:.1e}, {:.1e}; slider {:.1e} of the size, velocity {:.1e} mm/s of {peak_v:.0}, acceleration {worst_a:.1e} mm/s² of {peak_a:.0}", worst[0], worst[1], worst[2], worst[3], worst[4]);
+    assert!(
+        worst[0] <= 1e-12 && worst[1] <= 1e-12 && worst[2] <= 1e-12,
+        "{worst:?}"
+    );
+    assert!(worst[3] <= 1e-12, "{worst:?}");
+    assert!(worst[4] <= 1e-9 * peak_v, "{worst:?} {peak_v}");
+    assert!(worst_a <= 1e-7 * peak_a, "{worst_a} {peak_a}");
+    assert!(peak_a > 1e4, "{peak_a}");
+}

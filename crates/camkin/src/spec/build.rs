@@ -549,7 +549,7 @@ impl MechanismSpec {
 }
 
 impl FollowerSpec {
-    fn build(
+    pub(super) fn build(
         &self,
         scale: f64,
         base: &std::path::Path,

@@ -34,7 +34,7 @@ use super::build::{
 use super::profile::Place;
 use super::ProfileSpec;
 use crate::body::Pose;
-use crate::field::{Field, ProfileField, SystemField, SystemKey, SystemTable};
+use crate::field::{Field, FollowerField, ProfileField, SystemField, SystemKey, SystemTable};
 use crate::geometry::Point2;
 use crate::system::{
     Body, BodyId, Contact, Coordinate, Driver, ForceElement, ForceKind, Joint, JointKind, Law,
@@ -209,6 +209,21 @@ pub struct ContactSpec {
     pub curve_a: ProfileSpec,
     /// curve B in the second body's frame
     pub curve_b: ProfileSpec,
+    /// for a `kind = "motion"` curve: the follower its program is written for, as a
+    /// mechanism file's `[follower]`, in that curve's body's frame (whose origin is the cam's
+    /// axis)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub motion_follower: Option<super::FollowerSpec>,
+    /// for a `kind = "motion"` curve: the sense the cam turns in for its program (`ccw` by
+    /// default)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub motion_direction: Option<crate::cam::Sense>,
 }
 
 /// A system built from its file, with what else the file said.
@@ -291,7 +306,8 @@ fn at(table: SystemTable, index: usize, key: SystemKey) -> Field {
 /// names it) to the contact's curve.
 fn moved(e: SpecError, to: impl Fn(ProfileField) -> Field) -> SpecError {
     e.map_field(|f| match f {
-        Field::FollowerProfile(p) => to(p),
+        // a follower's curve, or a cam's (a motion program)
+        Field::FollowerProfile(p) | Field::Profile(p) => to(p),
         other => other,
     })
 }
@@ -532,18 +548,64 @@ impl SystemSpec {
         for (i, c) in self.contact.iter().enumerate() {
             named(T::Contact, i, &c.name)?;
             let [a, b] = two(T::Contact, i, &c.bodies)?;
+            // a motion program is synthesised for the follower the contact names
+            let motion = [&c.curve_a, &c.curve_b]
+                .iter()
+                .any(|p| p.kind == super::ProfileKind::Motion.name());
+            let program_follower = match (&c.motion_follower, motion) {
+                (Some(f), true) => Some(
+                    f.build(scale, &options.base_dir, options.confine, &mut warnings)
+                        .map_err(|e| {
+                            e.map_field(|f| match f {
+                                Field::Follower(k) => at(T::Contact, i, K::MotionFollower(k)),
+                                Field::FollowerProfile(_) | Field::FollowerConjugate(_) => {
+                                    at(T::Contact, i, K::MotionFollower(FollowerField::Table))
+                                }
+                                other => other,
+                            })
+                        })?,
+                ),
+                (None, true) => {
+                    return Err(SpecError::Rule {
+                        field: at(T::Contact, i, K::Table),
+                        reason: "a kind = \"motion\" curve is a cam synthesised from its program for a follower: give the follower as motion_follower = { kind = ..., ... } (a mechanism file's [follower], in the cam body's frame, its origin the cam's axis)".into(),
+                    })
+                }
+                (Some(_), false) => {
+                    return Err(SpecError::Rule {
+                        field: at(T::Contact, i, K::MotionFollower(FollowerField::Table)),
+                        reason: "is for a kind = \"motion\" curve, and neither curve of this contact is one".into(),
+                    })
+                }
+                (None, false) => None,
+            };
+            if c.motion_direction.is_some() && !motion {
+                return Err(SpecError::Rule {
+                    field: at(T::Contact, i, K::MotionDirection),
+                    reason:
+                        "is for a kind = \"motion\" curve, and neither curve of this contact is one"
+                            .into(),
+                });
+            }
+            let sense = c.motion_direction.unwrap_or(crate::cam::Sense::Ccw);
             let curve = |spec: &ProfileSpec,
                          to: fn(ProfileField) -> SystemKey,
                          warnings: &mut Vec<SpecWarning>| {
-                spec.build(
-                    scale,
-                    &options.base_dir,
-                    options.confine,
-                    Place::Follower,
-                    warnings,
-                )
-                .map(|(c, _)| c)
-                .map_err(|e| moved(e, |p| at(T::Contact, i, to(p))))
+                let place = match &program_follower {
+                    Some(f) if spec.kind == super::ProfileKind::Motion.name() => {
+                        Place::Cam(f, sense)
+                    }
+                    _ => Place::Follower,
+                };
+                spec.build(scale, &options.base_dir, options.confine, place, warnings)
+                    .map(|(c, _)| c)
+                    .map_err(|e| {
+                        // a synthesis that the follower's geometry refuses names its key
+                        moved(e, |p| at(T::Contact, i, to(p))).map_field(|f| match f {
+                            Field::Follower(k) => at(T::Contact, i, K::MotionFollower(k)),
+                            other => other,
+                        })
+                    })
             };
             let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
             let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;

@@ -138,3 +138,76 @@ fn bad_system_files_name_the_element_and_its_line() {
         assert!(e.contains(n), "{e}");
     }
 }
+
+const CAM_ROCKER_SLIDER: &str = include_str!("../../../../examples/cam-rocker-slider.toml");
+
+/// A `kind = "motion"` curve on a body is a cam synthesised for the follower the contact
+/// names (`motion_follower`): without one, with one and no program, or with a key the
+/// follower's rules refuse (checked by the program's synthesis too), the file is refused at the
+/// key written.
+#[test]
+fn a_motion_program_on_a_body_names_its_follower() {
+    let line = |text: &str, needle: &str| {
+        text.lines()
+            .position(|l| l.contains(needle))
+            .map_or(0, |i| i + 1)
+    };
+    let no_follower: String = CAM_ROCKER_SLIDER
+        .lines()
+        .filter(|l| !l.starts_with("motion_follower"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let cases: [(&str, String, &[&str], &str); 4] = [
+        (
+            "a program with no follower",
+            no_follower.clone(),
+            &["contact[0]", "motion_follower = {"],
+            "[[contact]]",
+        ),
+        (
+            "a follower's negative arm",
+            CAM_ROCKER_SLIDER.replace("arm_length = 60.0", "arm_length = -60.0"),
+            &["contact[0].motion_follower.arm_length", "-60"],
+            "arm_length = -60.0",
+        ),
+        (
+            "a roller that cannot rest on the base circle (found by the synthesis)",
+            CAM_ROCKER_SLIDER.replace("pivot = [-60.0, 40.0], arm", "pivot = [-60.0, 140.0], arm"),
+            &["contact[0].motion_follower.arm_length", "base circle"],
+            "pivot = [-60.0, 140.0], arm",
+        ),
+        (
+            "a program's bad segment",
+            CAM_ROCKER_SLIDER.replace("law = \"cycloidal\"", "law = \"cycloid\""),
+            &["contact[0].curve_a.segments[0].law", "\"cycloid\""],
+            "law = \"cycloid\"",
+        ),
+    ];
+    for (what, text, needles, at) in cases {
+        let e = build(&text).map(|_| ()).unwrap_err();
+        for n in needles {
+            assert!(e.message.contains(n), "{what}: {}", e.message);
+        }
+        assert_eq!(
+            e.at.map(|a| a.0),
+            Some(line(&text, at)),
+            "{what}: {}",
+            e.message
+        );
+    }
+    // a follower beside a contact of two circles: no program to write it for
+    let text = format!(
+        "{}\nmotion_follower = {{ kind = \"translating-roller\", roller_radius = 8.0 }}\n",
+        no_follower.replace(
+            "kind = \"motion\", base_radius = 30.0, segments = [\n    { law = \"cycloidal\", rise = 15.0, degrees = 120 },\n    { law = \"dwell\", degrees = 60 },\n    { law = \"3-4-5\", rise = -15.0, degrees = 120 },\n    { law = \"dwell\", degrees = 60 },\n] }",
+            "kind = \"circle\", center = [0.0, 0.0], radius = 30.0 }"
+        )
+    );
+    let e = build(&text).map(|_| ()).unwrap_err();
+    assert!(
+        e.message.contains("contact[0].motion_follower") && e.message.contains("neither curve"),
+        "{}",
+        e.message
+    );
+    assert_eq!(e.at.map(|a| a.0), Some(line(&text, "motion_follower = {")));
+}
