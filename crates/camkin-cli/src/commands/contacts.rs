@@ -9,7 +9,9 @@ use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub struct ContactsArgs {
-    /// Mechanism file (TOML); without it, the paper's built-in cam.
+    /// Mechanism file (TOML); without it, the paper's built-in cam. A system file gives each
+    /// of its contacts at each instant of its first driver's angle, with its constraint row in
+    /// its two bodies' coordinates.
     pub mechanism: Option<PathBuf>,
     /// Cam angles in degrees, comma-separated (each a cold query).
     #[arg(
@@ -29,6 +31,14 @@ pub struct ContactsArgs {
 }
 
 pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
+    if let Some(path) = &args.mechanism {
+        let (name, text) =
+            crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
+        if camkin::spec::text::is_system(&text) {
+            let built = super::system::load(path, &name, &text)?;
+            return super::system::contacts(args, &name, &built);
+        }
+    }
     let loaded = load_mechanism(args.mechanism.as_ref())?;
     args.table.check()?;
     let mech = &loaded.mech;

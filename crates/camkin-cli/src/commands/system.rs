@@ -130,6 +130,77 @@ pub fn analyze(args: &Args, name: &str, built: &BuiltSystem) -> Result<(), Failu
     Ok(())
 }
 
+/// Every contact of the system `built` (read from `name`) at each instant, one row per contact
+/// ([`camkin::table::system_contact_columns`]): its point, normal, gap, sliding rates, normal
+/// accelerations with their terms and its acceleration constraint row.
+pub fn contacts(
+    args: &super::contacts::ContactsArgs,
+    name: &str,
+    built: &BuiltSystem,
+) -> Result<(), Failure> {
+    use camkin::table::{system_contact_cells, system_contact_columns};
+    args.table.check()?;
+    let sys = &built.system;
+    let angles = match (&args.at, args.angles) {
+        (Some(list), _) => list.0.clone(),
+        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
+    };
+    let times = times_of(built, name, &angles)?;
+    crate::refuse_large(
+        &camkin::work::Work::system(sys, angles.len()),
+        args.work.large,
+        ", or use fewer angles",
+    )?;
+    let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
+    let mut first = match times.first() {
+        Some(&t0) => Some(sweep.step(t0).map_err(|e| {
+            bad(format!(
+                "{name}: the system cannot be analysed at its first instant ({}°): {e}",
+                camkin::human::human(angles[0])
+            ))
+        })?),
+        None => None,
+    };
+    let mut failed = None;
+    let mut k = 0;
+    let mut next_chunk = || {
+        if k >= angles.len() {
+            return None;
+        }
+        let end = (k + 4096).min(angles.len());
+        let mut rows = Vec::new();
+        for i in k..end {
+            let s = match first.take() {
+                Some(state) => Ok(state),
+                None => sweep.step(times[i]),
+            };
+            if let Err(e) = &s {
+                failed.get_or_insert((angles[i], e.to_string()));
+            }
+            rows.extend(system_contact_cells(sys, angles[i], times[i], &s));
+        }
+        k = end;
+        Some(rows)
+    };
+    args.table
+        .write(&system_contact_columns(built), &mut next_chunk)?;
+    let n = sys.contacts().len();
+    crate::say!(
+        "camkin: {n} contact{} at {} instant{} of {}",
+        if n == 1 { "" } else { "s" },
+        angles.len(),
+        if angles.len() == 1 { "" } else { "s" },
+        built.angle_name()
+    );
+    if let Some((a, e)) = failed {
+        crate::say!(
+            "camkin: warning: some instants could not be solved (the first at {}°: {e}); their rows hold the reason in the error column",
+            camkin::human::human(a)
+        );
+    }
+    Ok(())
+}
+
 /// Draws the system in `text` at the driver angles `--at` (`drawing_<angle>.svg/png`) and over a
 /// revolution in `--frames` frames (`animation.svg`), into `--out`.
 pub fn plot(

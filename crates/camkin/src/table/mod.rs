@@ -23,7 +23,7 @@ pub use columns::{
 pub use contacts::{contact_cells, contact_columns, ContactRow};
 pub use mesh::{mesh_cells, mesh_columns, MeshRow};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
-pub use system::{system_cells, system_columns};
+pub use system::{system_cells, system_columns, system_contact_cells, system_contact_columns};
 pub use units::{AngleUnit, Per, Units, UnknownUnit};
 
 /// How a row's contact was found.

@@ -144,3 +144,124 @@ pub fn system_cells(
     }
     c
 }
+
+/// The columns of a system's contacts table (`camkin contacts SYSTEM.toml`): one row per contact
+/// per instant, with its acceleration constraint row `Φ_q q̈ = γ` in the coordinates
+/// `(x_a, y_a, θ_a, x_b, y_b, θ_b)` of its two bodies (θ in rad: the angle entries are lengths
+/// per radian), so that a solver of its own can stack the rows.
+pub fn system_contact_columns(built: &crate::spec::BuiltSystem) -> Vec<String> {
+    let u = built.length_unit.name();
+    let first = match built.sweep_angle {
+        crate::spec::SweepAngle::FirstDriver => "driver_angle_deg",
+        _ => "angle_deg",
+    };
+    let mut c: Vec<String> = [first, "time_s", "contact", "body_a", "body_b"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    for (q, unit) in [
+        ("x", u.to_string()),
+        ("y", u.to_string()),
+        ("normal_x", String::new()),
+        ("normal_y", String::new()),
+        ("gap", u.to_string()),
+        ("normal_velocity", format!("{u}_s")),
+        ("sliding_rate_a", format!("{u}_s")),
+        ("sliding_rate_b", format!("{u}_s")),
+        ("normal_accel_a", format!("{u}_s2")),
+        ("coriolis_a", format!("{u}_s2")),
+        ("relative_a", format!("{u}_s2")),
+        ("normal_accel_b", format!("{u}_s2")),
+        ("coriolis_b", format!("{u}_s2")),
+        ("relative_b", format!("{u}_s2")),
+        ("row_x_a", String::new()),
+        ("row_y_a", String::new()),
+        ("row_angle_a", u.to_string()),
+        ("row_x_b", String::new()),
+        ("row_y_b", String::new()),
+        ("row_angle_b", u.to_string()),
+        ("gamma", format!("{u}_s2")),
+        ("residual", format!("{u}_s2")),
+    ] {
+        c.push(if unit.is_empty() {
+            q.to_string()
+        } else {
+            format!("{q}_{unit}")
+        });
+    }
+    c.push("jump".into());
+    c.push("error".into());
+    c
+}
+
+/// The contacts table's rows at one instant (see [`system_contact_columns`]): one per contact,
+/// or, for an instant that failed, one per contact with the reason.
+pub fn system_contact_cells(
+    sys: &System,
+    angle_deg: f64,
+    t: f64,
+    state: &Result<SystemState, SystemError>,
+) -> Vec<Vec<Cell>> {
+    let body = |s: &SystemState, id: crate::system::BodyId| {
+        id.index().map_or_else(
+            || {
+                crate::body::BodyState::at_rest(crate::body::Pose::new(
+                    crate::Point2::origin(),
+                    0.0,
+                ))
+            },
+            |i| s.bodies[i],
+        )
+    };
+    sys.contacts()
+        .iter()
+        .enumerate()
+        .map(|(i, spec)| {
+            let mut c = vec![
+                Cell::Num(Some(angle_deg)),
+                Cell::Num(Some(t)),
+                Cell::Text(Some(spec.name.clone())),
+                Cell::Text(Some(sys.body_name(spec.a).to_string())),
+                Cell::Text(Some(sys.body_name(spec.b).to_string())),
+            ];
+            match state {
+                Ok(s) => {
+                    let k = &s.contacts[i];
+                    let m = &k.kinematics;
+                    let (ba, bb) = (body(s, spec.a), body(s, spec.b));
+                    let (na, nb) = (m.normal_acceleration_a(&ba), m.normal_acceleration_b(&bb));
+                    for v in [
+                        m.point.x,
+                        m.point.y,
+                        m.normal.x,
+                        m.normal.y,
+                        k.pairing.gap,
+                        m.normal_velocity,
+                        m.sliding_rate_a,
+                        m.sliding_rate_b,
+                        na.total(),
+                        na.coriolis,
+                        na.relative,
+                        nb.total(),
+                        nb.coriolis,
+                        nb.relative,
+                    ]
+                    .into_iter()
+                    .chain(m.phi_q)
+                    .chain([m.gamma, m.acceleration_residual(&ba, &bb)])
+                    {
+                        c.push(Cell::Num(Some(v)));
+                    }
+                    c.push(Cell::Flag(Some(k.jumped)));
+                    c.push(Cell::Text(None));
+                }
+                Err(e) => {
+                    c.extend((0..22).map(|_| Cell::Num(None)));
+                    c.push(Cell::Flag(None));
+                    c.push(Cell::Text(Some(e.to_string())));
+                }
+            }
+            c
+        })
+        .collect()
+}
