@@ -32,6 +32,8 @@
     return Number(x.toPrecision(digits || 5)).toString();
   }
   function angleAt(i) { return S.result.angles_deg[i]; }
+  // a value below its series' resolution is rounding: shown as 0
+  function snap(s, v) { return s.resolution && v !== null && Math.abs(v) < s.resolution ? 0 : v; }
 
   // ---------- network ----------
   async function post(path, body) {
@@ -131,9 +133,15 @@
     S.index = Math.min(S.index, n - 1);
     $("title").textContent = `studio — ${result.name}`;
     $("file-name").textContent = `${result.name}, lengths in ${result.length_unit}`;
-    $("drag-hint").textContent = result.nodes_editable
-      ? "Drag a blue node to reshape the cam; the plots follow at once."
-      : "This profile is not a spline with inline points: edit the file to change it.";
+    $("drag-hint").textContent = result.system
+      ? "A system of bodies, joints and contacts: the slider turns its first driver; edit the file to change it."
+      : result.nodes_editable
+        ? "Drag a blue node to reshape the cam; the plots follow at once."
+        : "This profile is not a spline with inline points: edit the file to change it.";
+    $("compare-panel").hidden = !!result.system || (REPORT && !REPORT.compare);
+    $("checks-panel").hidden = !!result.system;
+    $("angle").setAttribute("aria-label", result.system ? "driver angle" : "cam angle");
+    $("plots-title").textContent = result.system ? "Over one revolution of the driver" : "Over one revolution";
     buildPlots();
     drawChecks();
     setupDynamics();
@@ -189,6 +197,22 @@
     g.fillStyle = "#fff";
     g.fillRect(0, 0, w, h);
     g.lineJoin = "round";
+    if (!r.system) drawCam(g, r, f, view, x0, y0, x1, y1);
+    // the follower, from the server's model of it (a system: every body and contact)
+    drawShapes(g, r, f, view, k);
+    if (!r.system) drawContact(g, r, f, view, Math.max(x1 - x0, y1 - y0));
+    // a scale bar
+    const size = Math.max(x1 - x0, y1 - y0);
+    const bar = Math.pow(10, Math.floor(Math.log10(size / 4)));
+    g.strokeStyle = "#444"; g.lineWidth = 2;
+    g.beginPath(); g.moveTo(12, h - 14); g.lineTo(12 + bar * k, h - 14); g.stroke();
+    g.fillStyle = "#444"; g.font = "12px DejaVu Sans, sans-serif";
+    g.fillText(`${fmt(bar)} ${r.length_unit}`, 16 + bar * k, h - 10);
+    g.fillText(`${r.system ? "driver" : "cam"} angle ${fmt(angleAt(S.index), 4)}°`, 12, 18);
+  }
+
+  // the cam: its profile turned with it, stretches the follower cannot follow, its axis, nodes
+  function drawCam(g, r, f, view, x0, y0, x1, y1) {
     // the profile, turned with the cam
     g.beginPath();
     r.profile.forEach((p, i) => {
@@ -233,7 +257,9 @@
       g.fill();
       if (r.nodes_editable) { g.strokeStyle = "#fff"; g.lineWidth = 1.5; g.stroke(); }
     });
-    // the follower, from the server's model of it
+  }
+
+  function drawShapes(g, r, f, view, k) {
     for (const s of f.follower) {
       g.strokeStyle = s.color;
       g.fillStyle = s.color;
@@ -261,6 +287,10 @@
         g.stroke();
       }
     }
+  }
+
+  // the contact point and the common normal, and marks where a check fails
+  function drawContact(g, r, f, view, size) {
     // marks of failed checks at this angle's neighbourhood: contacts where a check fails
     for (const ch of r.checks) {
       if (ch.ok) continue;
@@ -287,18 +317,11 @@
       g.fillStyle = "#d62728";
       g.beginPath(); g.arc(q[0], q[1], 5, 0, 2 * Math.PI); g.fill();
     }
-    // a scale bar
-    const bar = Math.pow(10, Math.floor(Math.log10(size / 4)));
-    g.strokeStyle = "#444"; g.lineWidth = 2;
-    g.beginPath(); g.moveTo(12, h - 14); g.lineTo(12 + bar * k, h - 14); g.stroke();
-    g.fillStyle = "#444"; g.font = "12px DejaVu Sans, sans-serif";
-    g.fillText(`${fmt(bar)} ${r.length_unit}`, 16 + bar * k, h - 10);
-    g.fillText(`cam angle ${fmt(angleAt(S.index), 4)}°`, 12, 18);
   }
 
   function drawValues() {
     const r = S.result, i = S.index;
-    const rows = r.series.map((s) => `<tr><td>${s.label}</td><td class="num">${fmt(s.values[i], 6)}</td><td>${s.unit}</td></tr>`);
+    const rows = r.series.map((s) => `<tr><td>${s.label}</td><td class="num">${fmt(snap(s, s.values[i]), 6)}</td><td>${s.unit}</td></tr>`);
     const f = r.frames[i];
     if (f.contact) rows.push(`<tr><td>contact point</td><td class="num">(${fmt(f.contact[0], 5)}, ${fmt(f.contact[1], 5)})</td><td>${r.length_unit}</td></tr>`);
     $("values").innerHTML = rows.join("");
@@ -344,8 +367,16 @@
   // ---------- plots ----------
   function buildPlots() {
     const box = $("plots");
+    // a cam's six plots, or a system's bodies' coordinates: one plot per series, rebuilt when
+    // the series change (another file)
+    const keys = S.result.series.map((x) => x.key);
+    if (S.plots && S.plots.map((p) => p.key).join("\n") !== keys.join("\n")) {
+      box.innerHTML = "";
+      S.plots = null;
+    }
     if (!S.plots) {
-      S.plots = PLOTS.map(([key, color]) => {
+      const colors = PLOTS.map(([, c]) => c);
+      S.plots = keys.map((key, i) => [key, (PLOTS.find(([k]) => k === key) || [key, colors[i % colors.length]])[1]]).map(([key, color]) => {
         const c = document.createElement("canvas");
         c.height = 118;
         c.dataset.key = key;
@@ -357,11 +388,13 @@
     }
     for (const p of S.plots) {
       const s = S.result.series.find((x) => x.key === p.key);
-      p.series = [{ values: s.values, color: p.color, label: s.label }];
+      p.series = [{ values: s.values, color: p.color, label: s.label, resolution: s.resolution }];
       p.title = s.label;
       p.unit = s.unit;
       p.clip = p.key === "radius_of_curvature" || p.key === "jerk";
       p.minSpan = p.key === "pressure_angle" ? 2 : 0;
+      // a series that is zero but for rounding is drawn on a span that shows it as zero
+      if (s.resolution) p.minSpan = Math.max(p.minSpan, 1e6 * s.resolution);
     }
   }
 
@@ -494,7 +527,7 @@
       const i = at(ev);
       if (i === null) { tip.hidden = true; return; }
       const lines = [`cam angle ${fmt(p.geom.x[i], 5)}°`];
-      for (const s of p.series) lines.push(`${s.label}: ${fmt(s.values[i], 6)} ${p.unit}`);
+      for (const s of p.series) lines.push(`${s.label}: ${fmt(snap(s, s.values[i]), 6)} ${p.unit}`);
       tip.textContent = lines.join("\n");
       tip.hidden = false;
       tip.style.left = ev.clientX + 14 + "px";
@@ -512,6 +545,8 @@
   // The study follows every edit: a study of another text is never shown as this one's.
   function runCompare() {
     if (REPORT) return;
+    // a system has no interpolation study
+    if (S.result && S.result.system) { S.compare = null; S.compareFor = S.toml; return; }
     if (S.comparing) { S.compareAgain = true; return; }
     S.comparing = true;
     const n = Math.round(+$("compare-n").value);

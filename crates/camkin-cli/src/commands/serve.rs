@@ -99,8 +99,12 @@ pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
         return run_worker(args);
     }
     let session = open(args.mechanism.as_ref())?;
-    if let Err(e) = crate::studio::model::build(&session.text, &session.source, &Limits::default())
-    {
+    let checked = if crate::studio::system::is_system(&session.text) {
+        crate::studio::system::check(&session.text, &session.source, &Limits::default())
+    } else {
+        crate::studio::model::build(&session.text, &session.source, &Limits::default()).map(|_| ())
+    };
+    if let Err(e) = checked {
         let e = match e {
             StudioError::Input { message, .. } => message,
             other => format!("{other:?}"),

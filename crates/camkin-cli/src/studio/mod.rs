@@ -11,6 +11,7 @@
 pub mod model;
 pub mod report;
 pub mod server;
+pub mod system;
 
 use crate::mechfile::InputError;
 use serde::{Deserialize, Serialize};

@@ -72,13 +72,17 @@ pub fn build(text: &str, source: &Source, limits: &Limits) -> Result<FromText, S
 #[derive(Debug, Serialize)]
 pub struct Series {
     /// short key (`acceleration`)
-    pub key: &'static str,
+    pub key: String,
     /// what a person reads (`acceleration`)
-    pub label: &'static str,
+    pub label: String,
     /// its unit (`cm/s²`)
     pub unit: String,
     /// one value per angle; `null` where it could not be computed (or is infinite)
     pub values: Vec<Option<f64>>,
+    /// magnitudes below this are rounding (an ideal gear's zero acceleration): the page shows
+    /// them as 0 and draws the plot on a span that shows them as zero
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub resolution: Option<f64>,
 }
 
 /// Polylines longer than this, closed, are drawn once in the body frame ([`ShapeOut::Curve`]).
@@ -246,6 +250,8 @@ pub struct Analysis {
     pub first_error: Option<String>,
     /// forces, when the file has `[dynamics]`
     pub dynamics: Option<DynamicsOut>,
+    /// a system file (bodies, joints, contacts): no cam profile, nodes, checks or study
+    pub system: bool,
     /// server time for this analysis, ms
     pub server_ms: f64,
 }
@@ -282,6 +288,9 @@ pub fn analyze(
     pressure_limit_deg: f64,
     limits: &Limits,
 ) -> Result<Analysis, StudioError> {
+    if super::system::is_system(text) {
+        return super::system::analyze(text, source, step_deg, limits);
+    }
     let t0 = Instant::now();
     let parsed = build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
@@ -308,40 +317,46 @@ pub fn analyze(
         .collect();
     let series = vec![
         Series {
-            key: "lift",
-            label: "lift",
+            key: "lift".into(),
+            label: "lift".into(),
             unit: units.motion_symbol(0),
             values: lift,
+            resolution: None,
         },
         Series {
-            key: "velocity",
-            label: "velocity",
+            key: "velocity".into(),
+            label: "velocity".into(),
             unit: units.motion_symbol(1),
             values: motion.iter().map(|m| finite(m[1])).collect(),
+            resolution: None,
         },
         Series {
-            key: "acceleration",
-            label: "acceleration",
+            key: "acceleration".into(),
+            label: "acceleration".into(),
             unit: units.motion_symbol(2),
             values: motion.iter().map(|m| finite(m[2])).collect(),
+            resolution: None,
         },
         Series {
-            key: "jerk",
-            label: "jerk",
+            key: "jerk".into(),
+            label: "jerk".into(),
             unit: units.motion_symbol(3),
             values: motion.iter().map(|m| finite(m[3])).collect(),
+            resolution: None,
         },
         Series {
-            key: "pressure_angle",
-            label: "pressure angle",
+            key: "pressure_angle".into(),
+            label: "pressure angle".into(),
             unit: "°".into(),
             values: rows.iter().map(|r| finite(r.pressure_angle_deg)).collect(),
+            resolution: None,
         },
         Series {
-            key: "radius_of_curvature",
-            label: "radius of curvature",
+            key: "radius_of_curvature".into(),
+            label: "radius of curvature".into(),
             unit: unit.name().into(),
             values: rows.iter().map(|r| finite(r.radius_of_curvature)).collect(),
+            resolution: None,
         },
     ];
     // the drawing: the cam's pose and the follower at each angle
@@ -480,6 +495,7 @@ pub fn analyze(
         failed: sweep.failed(),
         first_error,
         dynamics,
+        system: false,
         server_ms: t0.elapsed().as_secs_f64() * 1e3,
     })
 }

@@ -20,6 +20,9 @@ pub fn csv(
     step_deg: f64,
     limits: &Limits,
 ) -> Result<String, StudioError> {
+    if super::system::is_system(text) {
+        return super::system::csv(text, source, step_deg, limits);
+    }
     let parsed = model::build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
     let angles = model::revolution(step_deg);
@@ -64,7 +67,11 @@ pub fn html(
 ) -> Result<String, StudioError> {
     let result = model::analyze(text, source, step_deg, pressure_limit_deg, limits)?;
     // a study that cannot be made (an open profile, say) leaves the report without it
-    let compare = model::compare(text, source, &[REPORT_COMPARE_NODES], step_deg, limits).ok();
+    let compare = if super::system::is_system(text) {
+        None
+    } else {
+        model::compare(text, source, &[REPORT_COMPARE_NODES], step_deg, limits).ok()
+    };
     let data = ReportData {
         toml: text,
         result,

@@ -13,7 +13,11 @@ EXAMPLES = ROOT / "examples"
 
 def loaded(page, url):
     page.goto(url)
-    page.wait_for_function("window.studio && window.studio.result && window.studio.compare && window.studio.idle()")
+    # a system file has no interpolation study
+    page.wait_for_function(
+        "window.studio && window.studio.result && (window.studio.compare || window.studio.result.system)"
+        " && window.studio.idle()"
+    )
     return page
 
 
@@ -162,7 +166,7 @@ def test_the_speed_slider_shows_where_the_follower_jumps(serve, page):
 import pytest  # noqa: E402
 
 
-# every mechanism file (system files, [[body]] …, are not yet drawn by the studio: issue 45)
+# every mechanism file (system files below)
 @pytest.mark.parametrize(
     "example",
     sorted(p.name for p in EXAMPLES.glob("*.toml") if "[[body]]" not in p.read_text()),
@@ -209,3 +213,44 @@ def test_a_file_with_an_error_opens_to_be_mended(serve, page, tmp_path):
     page.wait_for_function("window.studio.result && window.studio.idle()")
     assert page.locator("#error").is_hidden()
     assert [e for e in page.errors if "422" not in e] == []
+
+
+# every system file: bodies, joints and contacts drawn, the slider turning the first driver
+@pytest.mark.parametrize(
+    "example",
+    sorted(p.name for p in EXAMPLES.glob("*.toml") if "[[body]]" in p.read_text()),
+)
+def test_every_system_example_opens_draws_and_turns_with_the_slider(serve, page, example, tmp_path):
+    shutil.copytree(EXAMPLES, tmp_path / "ex")
+    loaded(page, serve(tmp_path / "ex" / example))
+    assert page.errors == []
+    assert page.evaluate("window.studio.lastError") is None
+    assert page.evaluate("window.studio.result.system") is True
+    assert page.locator("#compare-panel").is_hidden()
+    assert inked(page, "#drawing") > 2000
+    keys = page.evaluate("window.studio.result.series.map(s => s.key)")
+    assert keys, example
+    for k in keys:
+        assert inked(page, f'#plots canvas[data-key="{k}"]') > 1000, k
+    shot = page.locator("#drawing").screenshot()
+    n = page.evaluate("window.studio.result.frames.length")
+    page.locator("#angle").fill(str(n // 3))
+    assert page.locator("#drawing").screenshot() != shot
+    assert page.evaluate("window.studio.result.failed") == 0
+    page.screenshot(path=str(ROOT / "target" / f"studio-{example}.png"))
+
+
+def test_a_systems_numbers_on_screen_are_the_commands(serve, page, tmp_path):
+    """The valve train in the studio: each plotted series at every angle is the column of
+    `camkin analyze FILE --angles 0:360:0.5` for that body (angles in degrees)."""
+    loaded(page, serve(EXAMPLES / "valve-train.toml"))
+    rows = list(csv.DictReader(camkin("analyze", EXAMPLES / "valve-train.toml", "--angles", "0:360:0.5").stdout.splitlines()))
+    assert page.evaluate("window.studio.result.angles_deg.length") == len(rows) == 720
+    finger = series(page, "finger_angle")
+    valve = series(page, "valve_y")
+    valve_a = series(page, "valve_y_acceleration")
+    for k in range(0, 720, 7):
+        assert finger[k] == float(rows[k]["finger_angle_deg"])
+        assert valve[k] == float(rows[k]["valve_y_mm"])
+        assert valve_a[k] == float(rows[k]["valve_ay_mm_s2"])
+    assert "valve y" in page.locator("#values").inner_text()

@@ -407,3 +407,67 @@ fn a_cam_rocker_and_slider_against_the_program_and_the_loop() {
     assert!(worst_a <= 1e-7 * peak_a, "{worst_a} {peak_a}");
     assert!(peak_a > 1e4, "{peak_a}");
 }
+
+/// `camkin contacts SYSTEM.toml`: one row per contact per instant, whose acceleration
+/// constraint row, applied to the two bodies' accelerations that `analyze` gives at the same
+/// instants, is its `gamma` (eq. 11), and whose normal is the row's `x`, `y` entries of its
+/// first body (the gap's gradient).
+#[test]
+fn a_systems_contacts_are_rows_that_the_accelerations_meet() {
+    let file = examples().join("valve-train.toml");
+    let run = |cmd: &str| {
+        let out = camkin()
+            .arg(cmd)
+            .arg(&file)
+            .args(["--angles", "0:360:10"])
+            .assert()
+            .success();
+        parse_csv(&out.get_output().stdout)
+    };
+    let (ch, crows) = run("contacts");
+    let (ah, arows) = run("analyze");
+    let (c, a) = (columns(&ch), columns(&ah));
+    assert_eq!(crows.len(), 2 * arows.len());
+    let num = |r: &Vec<String>, col: &std::collections::HashMap<&str, usize>, k: &str| {
+        r[col[k]].parse::<f64>().unwrap()
+    };
+    let mut worst: f64 = 0.0;
+    for (k, r) in crows.iter().enumerate() {
+        let instant = &arows[k / 2];
+        assert_eq!(
+            num(r, &c, "driver_angle_deg"),
+            num(instant, &a, "driver_angle_deg")
+        );
+        assert_eq!(r[c["error"]], "");
+        let body = |which: &str| r[c[&format!("body_{which}")[..]]].clone();
+        let accel = |b: &str| -> [f64; 3] {
+            if b == "ground" {
+                return [0.0; 3];
+            }
+            [
+                num(instant, &a, &format!("{b}_ax_mm_s2")),
+                num(instant, &a, &format!("{b}_ay_mm_s2")),
+                num(instant, &a, &format!("{b}_alpha_deg_s2")).to_radians(),
+            ]
+        };
+        let (qa, qb) = (accel(&body("a")), accel(&body("b")));
+        let row = [
+            "row_x_a",
+            "row_y_a",
+            "row_angle_a_mm",
+            "row_x_b",
+            "row_y_b",
+            "row_angle_b_mm",
+        ]
+        .map(|k| num(r, &c, k));
+        let lhs: f64 = (0..3).map(|i| row[i] * qa[i] + row[3 + i] * qb[i]).sum();
+        let gamma = num(r, &c, "gamma_mm_s2");
+        let scale = num(r, &c, "normal_accel_a_mm_s2").abs().max(1.0);
+        worst = worst.max((lhs - gamma).abs() / scale);
+        // the row's x and y entries of body A are the common normal
+        assert!((row[0] - num(r, &c, "normal_x")).abs() <= 1e-12, "{r:?}");
+        assert!((row[1] - num(r, &c, "normal_y")).abs() <= 1e-12, "{r:?}");
+        assert!(num(r, &c, "gap_mm").abs() <= 1e-12 * 100.0);
+    }
+    assert!(worst <= 1e-9, "{worst:e}");
+}

@@ -1,0 +1,334 @@
+//! The studio on a system file (`[[body]]`, `[[joint]]`, …): every body and contact drawn at
+//! each instant of a revolution of its first driver, the slider turning that driver, and each
+//! moving body's main coordinate (the one that moves most) and its acceleration plotted. The
+//! page draws it with the cam's code: the frames' shapes are the command's `plot` drawing
+//! ([`crate::draw::system::system_scene`]), a body's closed curve kept once in its frame.
+
+use super::model::{revolution, Analysis, Frame, Placed, Series, ShapeOut, Source};
+use super::{Limits, StudioError};
+use crate::draw::mechanism::Shape;
+use crate::draw::system::system_scene;
+use crate::output::{write_cells, TableFormat};
+use camkin::curve::Domain;
+use camkin::spec::{BuildOptions, BuiltSystem};
+use camkin::system::{Coordinate, SystemError, SystemState};
+use std::time::Instant;
+
+/// Whether `text` is a system file.
+pub fn is_system(text: &str) -> bool {
+    camkin::spec::text::is_system(text)
+}
+
+/// The system in `text`, its points files read only from the source's folder.
+fn build(text: &str, source: &Source, limits: &Limits) -> Result<BuiltSystem, StudioError> {
+    let options = BuildOptions {
+        base_dir: source.folder.clone().unwrap_or_else(|| ".".into()),
+        si: false,
+        confine: true,
+        limits: camkin::work::Limits {
+            seconds: limits.max_seconds,
+            bytes: limits.max_request_bytes,
+        },
+    };
+    camkin::spec::text::read_system(text, &source.name, &options).map_err(|e| StudioError::Input {
+        message: e.message,
+        at: e.at,
+    })
+}
+
+/// Whether the system in `text` builds (the studio opens a file with an error to be mended).
+pub fn check(text: &str, source: &Source, limits: &Limits) -> Result<(), StudioError> {
+    build(text, source, limits).map(|_| ())
+}
+
+/// The instants of a revolution of the first driver at `step_deg`, each solved in turn; the
+/// work refused over the limits first.
+fn solve(
+    built: &BuiltSystem,
+    step_deg: f64,
+    limits: &Limits,
+) -> Result<(Vec<f64>, Vec<f64>, Vec<Result<SystemState, SystemError>>), StudioError> {
+    let sys = &built.system;
+    let angles = revolution(step_deg);
+    let work = camkin::work::Work::system(sys, angles.len());
+    if let Some(r) = work.refusal_within(limits.max_seconds, camkin::work::BYTES_LIMIT) {
+        return Err(StudioError::TooMuch {
+            message: format!(
+                "{r}, more than the {} s one request may take; use `camkin analyze` for it",
+                limits.max_seconds
+            ),
+        });
+    }
+    let times: Vec<f64> = angles
+        .iter()
+        .map(|a| {
+            built.time_of(a.to_radians()).ok_or_else(|| StudioError::Input {
+                message: format!("{}: the studio turns a system's first driver: [[driver]] number 1 must drive an angle at a constant speed_rpm", built.angle_name()),
+                at: None,
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    let mut sweep = sys.sweep().map_err(|e| StudioError::Input {
+        message: e.to_string(),
+        at: None,
+    })?;
+    let mut states = Vec::with_capacity(times.len());
+    for (k, &t) in times.iter().enumerate() {
+        let s = sweep.step(t);
+        if k == 0 {
+            if let Err(e) = &s {
+                return Err(StudioError::Input {
+                    message: format!("the system cannot be analysed at its first instant: {e}"),
+                    at: None,
+                });
+            }
+        }
+        states.push(s);
+    }
+    Ok((angles, times, states))
+}
+
+/// The studio's analysis of a system file.
+pub fn analyze(
+    text: &str,
+    source: &Source,
+    step_deg: f64,
+    limits: &Limits,
+) -> Result<Analysis, StudioError> {
+    let t0 = Instant::now();
+    let built = build(text, source, limits)?;
+    let sys = &built.system;
+    let unit = built.length_unit.name();
+    let (angles, _, states) = solve(&built, step_deg, limits)?;
+    let size = sys.size();
+    // each contact's closed curves, kept once in their bodies' frames
+    let nc = sys.contacts().len();
+    let curves: Vec<Vec<[f64; 2]>> = sys
+        .contacts()
+        .iter()
+        .flat_map(|c| [&c.curve_a, &c.curve_b])
+        .map(|curve| match curve.domain() {
+            Domain::Periodic { period } => (0..720)
+                .map(|k| {
+                    let p = curve.position(period * f64::from(k) / 720.0);
+                    [p.x, p.y]
+                })
+                .collect(),
+            _ => Vec::new(),
+        })
+        .collect();
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    let mut grow = |p: [f64; 2], r: f64| {
+        lo = [lo[0].min(p[0] - r), lo[1].min(p[1] - r)];
+        hi = [hi[0].max(p[0] + r), hi[1].max(p[1] + r)];
+    };
+    let mut frames = Vec::with_capacity(states.len());
+    for s in &states {
+        let Ok(s) = s else {
+            frames.push(Frame {
+                cam: [0.0, 0.0, 0.0],
+                contact: None,
+                normal: None,
+                follower: Vec::new(),
+            });
+            continue;
+        };
+        let shapes: Vec<ShapeOut> = system_scene(sys, s, size)
+            .into_iter()
+            .enumerate()
+            .map(|(k, shape)| match shape {
+                Shape::Polyline {
+                    color,
+                    width,
+                    closed: true,
+                    pts,
+                } if k < 2 * nc => {
+                    pts.iter().for_each(|p| grow([p.x, p.y], 0.0));
+                    let c = &sys.contacts()[k / 2];
+                    let id = if k % 2 == 0 { c.a } else { c.b };
+                    let pose = id.index().map_or([0.0; 3], |i| {
+                        let p = s.bodies[i].pose;
+                        [p.origin.x, p.origin.y, p.angle]
+                    });
+                    ShapeOut::Curve {
+                        i: k,
+                        pose,
+                        color: format!("rgb({},{},{})", color.0, color.1, color.2),
+                        width,
+                    }
+                }
+                other => ShapeOut::from(other),
+            })
+            .collect();
+        for sh in &shapes {
+            match sh {
+                ShapeOut::Line { pts, .. } => pts.iter().for_each(|p| grow(*p, 0.0)),
+                ShapeOut::Circle { c, r, .. } => grow(*c, *r),
+                ShapeOut::Dot { p, .. } => grow(*p, 0.0),
+                ShapeOut::Curve { .. } => {}
+            }
+        }
+        frames.push(Frame {
+            cam: [0.0, 0.0, 0.0],
+            contact: None,
+            normal: None,
+            follower: shapes,
+        });
+    }
+    let series = body_series(&built, &states, unit);
+    let failed = states.iter().filter(|s| s.is_err()).count();
+    let first_error = states
+        .iter()
+        .find_map(|s| s.as_ref().err().map(|e| e.to_string()));
+    let rpm = built
+        .time_of(std::f64::consts::TAU)
+        .map_or(0.0, |t| 60.0 / t);
+    Ok(Analysis {
+        name: source.name.clone(),
+        length_unit: unit,
+        oscillating: false,
+        rpm,
+        step_deg,
+        angles_deg: angles,
+        series,
+        frames,
+        curves,
+        profile: Vec::new(),
+        nodes: Vec::new(),
+        nodes_editable: false,
+        pivot: [0.0, 0.0],
+        extent: [lo[0], lo[1], hi[0], hi[1]],
+        checks: Vec::new(),
+        warnings: built
+            .warnings
+            .iter()
+            .map(|w| Placed {
+                message: w.to_string(),
+                line: None,
+                column: None,
+            })
+            .collect(),
+        failed,
+        first_error,
+        dynamics: None,
+        system: true,
+        server_ms: t0.elapsed().as_secs_f64() * 1e3,
+    })
+}
+
+/// Each moving body that no driver moves: its coordinate that moves most over the revolution
+/// (an angle counted times the system's size), and that coordinate's acceleration.
+fn body_series(
+    built: &BuiltSystem,
+    states: &[Result<SystemState, SystemError>],
+    unit: &'static str,
+) -> Vec<Series> {
+    let sys = &built.system;
+    let size = sys.size();
+    let mut out = Vec::new();
+    for (i, b) in sys.bodies().iter().enumerate() {
+        if sys.drivers().iter().any(|d| d.body.index() == Some(i)) {
+            continue;
+        }
+        let value = |s: &SystemState, c: Coordinate| -> [f64; 2] {
+            let st = &s.bodies[i];
+            match c {
+                Coordinate::X => [st.pose.origin.x, st.acceleration.x],
+                Coordinate::Y => [st.pose.origin.y, st.acceleration.y],
+                Coordinate::Angle => [st.pose.angle.to_degrees(), st.alpha.to_degrees()],
+            }
+        };
+        let range = |c: Coordinate| {
+            let (mut a, mut z) = (f64::INFINITY, f64::NEG_INFINITY);
+            for s in states.iter().flatten() {
+                let v = value(s, c)[0];
+                a = a.min(v);
+                z = z.max(v);
+            }
+            let r = (z - a).max(0.0);
+            if c == Coordinate::Angle {
+                r.to_radians() * size
+            } else {
+                r
+            }
+        };
+        let coordinate = [Coordinate::X, Coordinate::Y, Coordinate::Angle]
+            .into_iter()
+            .max_by(|p, q| range(*p).total_cmp(&range(*q)))
+            .unwrap_or(Coordinate::Angle);
+        let (u0, u2) = match coordinate {
+            Coordinate::Angle => ("°".to_string(), "°/s²".to_string()),
+            _ => (unit.to_string(), format!("{unit}/s²")),
+        };
+        // rounding: a position to 1e-12 of the size (an angle of a revolution), an acceleration
+        // to 1e-9 of the driver's ω² times the size (ω² for an angle)
+        let w2 = built
+            .time_of(1.0)
+            .filter(|t| *t != 0.0)
+            .map_or(0.0, |t| 1.0 / (t * t));
+        let (r0, r2) = match coordinate {
+            Coordinate::Angle => (1e-12 * 360.0, 1e-9 * w2.to_degrees()),
+            _ => (1e-12 * size, 1e-9 * w2 * size),
+        };
+        let values = |k: usize| -> Vec<Option<f64>> {
+            states
+                .iter()
+                .map(|s| {
+                    s.as_ref()
+                        .ok()
+                        .map(|s| value(s, coordinate)[k])
+                        .filter(|v| v.is_finite())
+                })
+                .collect()
+        };
+        let what = match coordinate {
+            Coordinate::Angle => "angle",
+            Coordinate::X => "x",
+            Coordinate::Y => "y",
+        };
+        out.push(Series {
+            key: format!("{}_{what}", b.name),
+            label: format!("{} {what}", b.name),
+            unit: u0,
+            values: values(0),
+            resolution: Some(r0),
+        });
+        out.push(Series {
+            key: format!("{}_{what}_acceleration", b.name),
+            label: format!("{} {what} acceleration", b.name),
+            unit: u2,
+            values: values(1),
+            resolution: Some(r2),
+        });
+    }
+    out
+}
+
+/// The system table at `step_deg` over a revolution: the bytes `camkin analyze FILE --angles
+/// 0:360:STEP` writes.
+pub fn csv(
+    text: &str,
+    source: &Source,
+    step_deg: f64,
+    limits: &Limits,
+) -> Result<String, StudioError> {
+    let built = build(text, source, limits)?;
+    let (angles, times, states) = solve(&built, step_deg, limits)?;
+    let columns = camkin::table::system_columns(&built);
+    let mut rows = Some(
+        states
+            .iter()
+            .enumerate()
+            .map(|(k, s)| camkin::table::system_cells(&built.system, angles[k], times[k], s))
+            .collect::<Vec<_>>(),
+    );
+    let mut out = Vec::new();
+    write_cells(&mut out, TableFormat::Csv, &columns, || rows.take()).map_err(|e| {
+        StudioError::BadRequest {
+            message: format!("cannot write the table: {e}"),
+        }
+    })?;
+    String::from_utf8(out).map_err(|e| StudioError::BadRequest {
+        message: format!("the table is not text: {e}"),
+    })
+}
