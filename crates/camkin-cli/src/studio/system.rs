@@ -41,13 +41,16 @@ pub fn check(text: &str, source: &Source, limits: &Limits) -> Result<(), StudioE
     build(text, source, limits).map(|_| ())
 }
 
+/// A revolution solved: the driver angles (degrees), their instants (s), each instant's state.
+type Solved = (Vec<f64>, Vec<f64>, Vec<Result<SystemState, SystemError>>);
+
 /// The instants of a revolution of the first driver at `step_deg`, each solved in turn; the
 /// work refused over the limits first.
 fn solve(
     built: &BuiltSystem,
     step_deg: f64,
     limits: &Limits,
-) -> Result<(Vec<f64>, Vec<f64>, Vec<Result<SystemState, SystemError>>), StudioError> {
+) -> Result<Solved, StudioError> {
     let sys = &built.system;
     let angles = revolution(step_deg);
     let work = camkin::work::Work::system(sys, angles.len());
