@@ -46,11 +46,7 @@ type Solved = (Vec<f64>, Vec<f64>, Vec<Result<SystemState, SystemError>>);
 
 /// The instants of a revolution of the first driver at `step_deg`, each solved in turn; the
 /// work refused over the limits first.
-fn solve(
-    built: &BuiltSystem,
-    step_deg: f64,
-    limits: &Limits,
-) -> Result<Solved, StudioError> {
+fn solve(built: &BuiltSystem, step_deg: f64, limits: &Limits) -> Result<Solved, StudioError> {
     let sys = &built.system;
     let angles = revolution(step_deg);
     let work = camkin::work::Work::system(sys, angles.len());

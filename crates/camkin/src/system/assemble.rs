@@ -22,13 +22,18 @@ pub(super) struct Assembly {
     rows: Vec<RowEval>,
 }
 
-/// Buffers an instant reuses: the assembly, the factorisation, the solutions.
+/// Buffers an instant reuses: the assembly, the factorisation, the solutions, the bodies'
+/// states, the positions predicted, the contacts' flags.
 #[derive(Debug, Default)]
 pub(super) struct Scratch {
     pub(super) asm: Assembly,
     pub(super) lu: Lu,
     pub(super) x: Vec<f64>,
     pub(super) neg: Vec<f64>,
+    pub(super) st: Vec<BodyState>,
+    pub(super) q0: Vec<f64>,
+    pub(super) jumped: Vec<bool>,
+    pub(super) still: Vec<bool>,
 }
 
 /// The index of the largest magnitude (0 for none).
@@ -50,6 +55,12 @@ pub(super) fn state_of(q: &[f64], qd: Option<&[f64]>, i: usize) -> BodyState {
 /// The states of every body, and the ground's (at rest at the world's origin).
 pub(super) fn states(q: &[f64], qd: Option<&[f64]>, n: usize) -> Vec<BodyState> {
     (0..n).map(|i| state_of(q, qd, i)).collect()
+}
+
+/// [`states`] into a buffer kept between instants.
+pub(super) fn fill_states(q: &[f64], qd: Option<&[f64]>, n: usize, out: &mut Vec<BodyState>) {
+    out.clear();
+    out.extend((0..n).map(|i| state_of(q, qd, i)));
 }
 
 pub(super) fn ground() -> BodyState {
@@ -238,8 +249,8 @@ impl SystemSweep<'_> {
         let size = self.size;
         let mut previous = f64::INFINITY;
         for it in 1..=MAX_ITERATIONS {
-            let st = states(q, None, nb);
-            self.assemble(t, &st, pairings, jumped, false, &mut w.asm)?;
+            fill_states(q, None, nb, &mut w.st);
+            self.assemble(t, &w.st, pairings, jumped, false, &mut w.asm)?;
             self.factor(t, &w.asm.jac, &mut w.lu)?;
             w.neg.clear();
             w.neg.extend(w.asm.phi.iter().map(|v| -v));

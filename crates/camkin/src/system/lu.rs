@@ -17,23 +17,24 @@ impl Lu {
     pub(crate) fn factor(&mut self, m: &[f64], n: usize) {
         self.n = n;
         self.a.clear();
-        self.a.extend_from_slice(m);
+        self.a.extend_from_slice(&m[..n * n]);
         self.perm.clear();
         self.perm.extend(0..n);
-        let a = &mut self.a;
+        let a = &mut self.a[..];
         let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
         for k in 0..n {
             // the largest entry of column k at or below the diagonal
             let mut p = k;
+            let mut big = a[k * n + k].abs();
             for i in k + 1..n {
-                if a[i * n + k].abs() > a[p * n + k].abs() {
-                    p = i;
+                let v = a[i * n + k].abs();
+                if v > big {
+                    (p, big) = (i, v);
                 }
             }
             if p != k {
-                for j in 0..n {
-                    a.swap(k * n + j, p * n + j);
-                }
+                let (top, bottom) = a.split_at_mut(p * n);
+                top[k * n..k * n + n].swap_with_slice(&mut bottom[..n]);
                 self.perm.swap(k, p);
             }
             let d = a[k * n + k];
@@ -43,12 +44,15 @@ impl Lu {
                 lo = 0.0;
                 continue;
             }
-            for i in k + 1..n {
-                let f = a[i * n + k] / d;
-                a[i * n + k] = f;
+            // rows below k less multiples of row k (the Jacobian is sparse: most are skipped)
+            let (top, rest) = a.split_at_mut((k + 1) * n);
+            let pivot_row = &top[k * n + k + 1..k * n + n];
+            for row in rest.chunks_exact_mut(n) {
+                let f = row[k] / d;
+                row[k] = f;
                 if f != 0.0 {
-                    for j in k + 1..n {
-                        a[i * n + j] -= f * a[k * n + j];
+                    for (x, &y) in row[k + 1..].iter_mut().zip(pivot_row) {
+                        *x -= f * y;
                     }
                 }
             }
@@ -58,24 +62,22 @@ impl Lu {
 
     /// Solves `A x = b` into `x` (`b` permuted, then the two triangles).
     pub(crate) fn solve(&self, b: &[f64], x: &mut Vec<f64>) {
-        let (n, a) = (self.n, &self.a);
+        let (n, a) = (self.n, &self.a[..]);
         x.clear();
         x.extend(self.perm.iter().map(|&p| b[p]));
-        for i in 0..n {
-            let mut s = x[i];
-            for j in 0..i {
-                s -= a[i * n + j] * x[j];
-            }
+        for (i, row) in a.chunks_exact(n).enumerate() {
+            let s = x[i] - dot(&row[..i], &x[..i]);
             x[i] = s;
         }
-        for i in (0..n).rev() {
-            let mut s = x[i];
-            for j in i + 1..n {
-                s -= a[i * n + j] * x[j];
-            }
-            x[i] = s / a[i * n + i];
+        for (i, row) in a.chunks_exact(n).enumerate().rev() {
+            let s = x[i] - dot(&row[i + 1..], &x[i + 1..]);
+            x[i] = s / row[i];
         }
     }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(p, q)| p * q).sum()
 }
 
 #[cfg(test)]

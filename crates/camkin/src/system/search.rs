@@ -60,6 +60,10 @@ impl SystemSweep<'_> {
         pairings: &mut [(f64, f64)],
         jumped: &mut [bool],
     ) -> Result<bool, SystemError> {
+        // two convex curves touching at a point overlap nowhere else: nothing to check
+        if self.convex.iter().all(|&c| c) {
+            return Ok(false);
+        }
         let st = states(q, None, self.sys.bodies.len());
         let mut moved = false;
         for (k, c) in self.sys.contacts.iter().enumerate() {

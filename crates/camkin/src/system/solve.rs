@@ -3,7 +3,7 @@
 //! solve each with the same `Φ_q`. A [`SystemSweep`] warm-starts each instant from the last
 //! (positions predicted by the last velocities and accelerations, pairings by their rates).
 
-use super::assemble::{iamax, states, Scratch};
+use super::assemble::{fill_states, iamax, Scratch};
 use super::search::bending;
 use super::{System, SystemError};
 use crate::body::BodyState;
@@ -68,7 +68,7 @@ impl Solved {
 }
 
 /// What solving the positions keeps for the next instant.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 struct Solved {
     time: f64,
     q: Vec<f64>,
@@ -108,6 +108,8 @@ pub struct SystemSweep<'a> {
     pub(super) opts: SearchOptions,
     pub(super) size: f64,
     last: Option<Solved>,
+    /// the instant before the last's vectors, reused for the next
+    spare: Option<Solved>,
     /// each contact's curves' search indexes, for the check that no other pair of points
     /// overlaps
     pub(super) indexes: Vec<(Option<CurveIndex>, Option<CurveIndex>)>,
@@ -159,6 +161,7 @@ impl System {
             opts,
             size,
             last: None,
+            spare: None,
             indexes,
             convex,
             sharpest,
@@ -256,43 +259,52 @@ impl SystemSweep<'_> {
     fn instant(&mut self, t: f64, w: &mut Scratch) -> Result<SystemState, SystemError> {
         let sys = self.sys;
         let nb = sys.bodies.len();
+        let nc = sys.contacts.len();
         let size = self.size;
-        let (q0, mut pairings) = match &self.last {
+        // this instant's vectors: the last but one's, reused
+        let mut next = self.spare.take().unwrap_or_default();
+        next.time = t;
+        match &self.last {
             Some(s) => {
                 let dt = t - s.time;
                 // a cubic prediction: Newton then needs one iteration (its step about dt⁴)
-                let q: Vec<f64> = (0..s.q.len())
-                    .map(|i| s.q[i] + dt * (s.qd[i] + dt * (0.5 * s.qdd[i] + dt * s.qddd[i] / 6.0)))
-                    .collect();
-                let p = s
-                    .pairings
-                    .iter()
-                    .zip(&s.rates)
-                    .map(|(&(ua, ub), &(ra, rb))| (ua + ra * dt, ub + rb * dt))
-                    .collect();
-                (q, p)
+                next.q.clear();
+                next.q.extend((0..s.q.len()).map(|i| {
+                    s.q[i] + dt * (s.qd[i] + dt * (0.5 * s.qdd[i] + dt * s.qddd[i] / 6.0))
+                }));
+                next.pairings.clear();
+                next.pairings.extend(
+                    s.pairings
+                        .iter()
+                        .zip(&s.rates)
+                        .map(|(&(ua, ub), &(ra, rb))| (ua + ra * dt, ub + rb * dt)),
+                );
             }
             None => {
-                let q: Vec<f64> = sys
+                next.q = sys
                     .bodies
                     .iter()
                     .flat_map(|b| [b.pose.origin.x, b.pose.origin.y, b.pose.angle])
                     .collect();
-                let p = self.global_pairings(t, &q)?;
-                (q, p)
+                next.pairings = self.global_pairings(t, &next.q)?;
             }
         };
-        let mut jumped = vec![false; sys.contacts.len()];
-        let mut q = q0.clone();
-        let mut iterations = self.positions(t, &mut q, &mut pairings, &mut jumped, w)?;
+        w.q0.clear();
+        w.q0.extend_from_slice(&next.q);
+        let mut jumped = std::mem::take(&mut w.jumped);
+        jumped.clear();
+        jumped.resize(nc, false);
+        let q = &mut next.q;
+        let pairings = &mut next.pairings;
+        let mut iterations = self.positions(t, q, pairings, &mut jumped, w)?;
         // a contact is unilateral: where the curves overlap at another pair of points, that pair
         // is the contact (the one followed has left), and the instant is solved again with it
         for _ in 0..MAX_JUMPS {
-            let moved = self.overlaps(t, &q, &mut pairings, &mut jumped)?;
+            let moved = self.overlaps(t, q, pairings, &mut jumped)?;
             if !moved {
                 break;
             }
-            iterations += self.positions(t, &mut q, &mut pairings, &mut jumped, w)?;
+            iterations += self.positions(t, q, pairings, &mut jumped, w)?;
         }
         // positions are continuous in time even where a contact jumps (its rates jump): an
         // assembly farther from the prediction than twice the step's whole move is another one
@@ -301,6 +313,7 @@ impl SystemSweep<'_> {
             let allowed = 2.0 * last.predicted_move(t - last.time, size) + 1e-4 * size;
             let (mut off, mut at) = (0.0f64, 0);
             for i in 0..nb {
+                let q0 = &w.q0;
                 let d = (q[3 * i] - q0[3 * i]).hypot(q[3 * i + 1] - q0[3 * i + 1])
                     + size * (q[3 * i + 2] - q0[3 * i + 2]).abs();
                 if d > off {
@@ -321,9 +334,11 @@ impl SystemSweep<'_> {
         if self.last.is_none() {
             jumped.iter_mut().for_each(|j| *j = false);
         }
-        let mut still = vec![false; sys.contacts.len()];
-        let st = states(&q, None, nb);
-        self.assemble(t, &st, &mut pairings, &mut still, false, &mut w.asm)?;
+        let mut still = std::mem::take(&mut w.still);
+        still.clear();
+        still.resize(nc, false);
+        fill_states(q, None, nb, &mut w.st);
+        self.assemble(t, &w.st, pairings, &mut still, false, &mut w.asm)?;
         let r = iamax(&w.asm.phi);
         let residual = w.asm.phi.get(r).map_or(0.0, |v| v.abs());
         if residual > RESIDUAL_TOLERANCE * size {
@@ -335,23 +350,26 @@ impl SystemSweep<'_> {
             });
         }
         self.factor(t, &w.asm.jac, &mut w.lu)?;
-        let unscale = |mut v: Vec<f64>| {
+        // the angle columns were scaled by the size
+        let unscale = |v: &mut Vec<f64>, x: &[f64]| {
+            v.clear();
+            v.extend_from_slice(x);
             for i in 0..nb {
                 v[3 * i + 2] /= size;
             }
-            v
         };
         w.lu.solve(&w.asm.rate, &mut w.x);
-        let qd = unscale(w.x.clone());
+        unscale(&mut next.qd, &w.x);
         // accelerations: Φ_q q̈ = γ, every contact's γ from its exact sliding rates
-        let st = states(&q, Some(&qd), nb);
-        self.assemble(t, &st, &mut pairings, &mut still, true, &mut w.asm)?;
+        fill_states(&next.q, Some(&next.qd), nb, &mut w.st);
+        self.assemble(t, &w.st, &mut next.pairings, &mut still, true, &mut w.asm)?;
         w.lu.solve(&w.asm.gamma, &mut w.x);
-        let qdd = unscale(w.x.clone());
+        unscale(&mut next.qdd, &w.x);
+        let qdd = &next.qdd;
         let b = &w.asm;
         let bodies: Vec<BodyState> = (0..nb)
             .map(|i| {
-                let mut s = st[i];
+                let mut s = w.st[i];
                 s.acceleration = Vec2::new(qdd[3 * i], qdd[3 * i + 1]);
                 s.alpha = qdd[3 * i + 2];
                 s
@@ -373,12 +391,12 @@ impl SystemSweep<'_> {
                 if moved(
                     c.curve_a.as_ref(),
                     was.0,
-                    pairings[k].0,
+                    next.pairings[k].0,
                     (slid.0, now.sliding_rate_a),
                 ) || moved(
                     c.curve_b.as_ref(),
                     was.1,
-                    pairings[k].1,
+                    next.pairings[k].1,
                     (slid.1, now.sliding_rate_b),
                 ) {
                     jumped[k] = true;
@@ -400,33 +418,32 @@ impl SystemSweep<'_> {
                 })
             })
             .collect();
-        let rates = contacts
-            .iter()
-            .map(|c| (c.kinematics.param_rate_a, c.kinematics.param_rate_b))
-            .collect();
-        let slides = contacts
-            .iter()
-            .map(|c| (c.kinematics.sliding_rate_a, c.kinematics.sliding_rate_b))
-            .collect();
+        next.rates.clear();
+        next.rates.extend(
+            contacts
+                .iter()
+                .map(|c| (c.kinematics.param_rate_a, c.kinematics.param_rate_b)),
+        );
+        next.slides.clear();
+        next.slides.extend(
+            contacts
+                .iter()
+                .map(|c| (c.kinematics.sliding_rate_a, c.kinematics.sliding_rate_b)),
+        );
         // the third derivative, for the next prediction: not across a jump of a contact (the
         // accelerations change there at once)
-        let qddd = match &self.last {
+        next.qddd.clear();
+        match &self.last {
             Some(l) if t != l.time && l.qdd.len() == qdd.len() && !jumped.iter().any(|&j| j) => {
                 let h = t - l.time;
-                qdd.iter().zip(&l.qdd).map(|(a, b)| (a - b) / h).collect()
+                next.qddd
+                    .extend(qdd.iter().zip(&l.qdd).map(|(a, b)| (a - b) / h));
             }
-            _ => vec![0.0; qdd.len()],
+            _ => next.qddd.resize(qdd.len(), 0.0),
         };
-        self.last = Some(Solved {
-            time: t,
-            q,
-            qd,
-            qdd,
-            pairings,
-            rates,
-            slides,
-            qddd,
-        });
+        w.jumped = jumped;
+        w.still = still;
+        self.spare = self.last.replace(next);
         Ok(SystemState {
             time: t,
             bodies,
