@@ -218,10 +218,18 @@ impl SystemSweep<'_> {
         if n == 0 || (lo > SINGULAR * hi && lo.is_finite()) {
             return Ok(());
         }
-        // the rows the smallest singular value's left vector weighs: the dependent ones
+        Err(SystemError::Singular {
+            time: t,
+            rows: self.dependent_rows(jac),
+        })
+    }
+
+    /// The rows the smallest singular value's left vector weighs: the dependent ones, named.
+    pub(super) fn dependent_rows(&self, jac: &[f64]) -> String {
+        let n = 3 * self.sys.bodies.len();
         let svd = nalgebra::DMatrix::from_row_slice(n, n, jac).svd(true, false);
         let k = svd.singular_values.imin();
-        let names = svd.u.map_or_else(String::new, |u| {
+        svd.u.map_or_else(String::new, |u| {
             let col = u.column(k);
             let big = col.amax();
             (0..col.len())
@@ -229,10 +237,6 @@ impl SystemSweep<'_> {
                 .map(|i| self.sys.row_name(i))
                 .collect::<Vec<_>>()
                 .join(", ")
-        });
-        Err(SystemError::Singular {
-            time: t,
-            rows: names,
         })
     }
 

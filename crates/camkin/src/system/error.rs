@@ -43,16 +43,25 @@ pub enum SystemError {
         rows: usize,
     },
     /// The rows are dependent at this instant: a dead point or toggle, or redundant joints.
-    #[error("at t = {time} s the constraints are singular (a dead point, a toggle, or redundant joints): {rows}")]
+    #[error("at t = {} s the constraints are singular (a dead point, a toggle, or redundant joints): {rows}", crate::human::human(*time))]
     Singular {
         /// the instant, s
         time: f64,
         /// the rows involved, named
         rows: String,
     },
+    /// The drivers take the system to a dead point (toggle) and no farther: instants were
+    /// reached ever closer to the one asked for, and there the rows become dependent.
+    #[error("the system reaches a dead point (toggle) at t = {} s and cannot be driven past it: its rows become dependent there ({rows})", crate::human::human(*time))]
+    DeadPoint {
+        /// the last instant reached, s
+        time: f64,
+        /// the rows involved, named
+        rows: String,
+    },
     /// Newton on the positions did not converge: the system cannot assemble at this instant
     /// (a closed loop that does not close, a contact lost).
-    #[error("at t = {time} s the system cannot be assembled: {reason} (largest residual {residual:e}, in {row})")]
+    #[error("at t = {} s the system cannot be assembled: {reason} (largest residual {}, in {row})", crate::human::human(*time), crate::human::human(*residual))]
     NoAssembly {
         /// the instant, s
         time: f64,
@@ -64,7 +73,7 @@ pub enum SystemError {
         row: String,
     },
     /// A contact's pairing or kinematics failed.
-    #[error("at t = {time} s, contact {contact:?}: {reason}")]
+    #[error("at t = {} s, contact {contact:?}: {reason}", crate::human::human(*time))]
     Contact {
         /// the instant, s
         time: f64,

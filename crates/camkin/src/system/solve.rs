@@ -95,6 +95,12 @@ pub(super) const SUSPECT_GAP: f64 = 1e-6;
 /// bound the step is a few degrees of a cam, and a sweep at 0.25° never divides one.
 const MAX_MOVE: f64 = 0.05;
 
+/// The smallest pivot of the rows below this times the largest, at the last instant reached
+/// before one that cannot be solved (and four times below where the step began), is a dead
+/// point: the rows at a toggle are dependent, and an instant 1/4096 of a step before it is
+/// within this (a four-bar driven by its rocker: 1e-3 there, 4e-5 nearer).
+const DEAD_POINT: f64 = 1e-2;
+
 /// Most instants between two asked for.
 const MAX_SUBSTEPS: f64 = 65_536.0;
 
@@ -220,10 +226,50 @@ impl SystemSweep<'_> {
                 let Some(from) = self.last.as_ref().map(|l| l.time) else {
                     return Err(e);
                 };
-                self.continue_to(from, t, 0).map_err(|_| e)
+                let before = self.conditioning(false).map(|c| c.0);
+                self.continue_to(from, t, 0)
+                    .map_err(|_| self.dead_point(before).unwrap_or(e))
             }
             Err(e) => Err(e),
         }
+    }
+
+    /// The last instant's rows: how far from dependent they are (the smallest pivot over the
+    /// largest) and, when they are nearly dependent, which; `None` where they cannot be
+    /// assembled.
+    fn conditioning(&mut self, name: bool) -> Option<(f64, f64, String)> {
+        let last = self.last.as_ref()?;
+        let (time, q, mut pairings) = (last.time, last.q.clone(), last.pairings.clone());
+        let nb = self.sys.bodies.len();
+        let mut w = std::mem::take(&mut self.scratch);
+        fill_states(&q, None, nb, &mut w.st);
+        let mut flags = vec![false; self.sys.contacts.len()];
+        let found = match self.assemble(time, &w.st, &mut pairings, &mut flags, false, &mut w.asm) {
+            Ok(()) => {
+                w.lu.factor(&w.asm.jac, 3 * nb);
+                let (lo, hi) = w.lu.pivots;
+                let rows = if name {
+                    self.dependent_rows(&w.asm.jac)
+                } else {
+                    String::new()
+                };
+                Some((lo / hi, time, rows))
+            }
+            Err(_) => None,
+        };
+        self.scratch = w;
+        found
+    }
+
+    /// After instants were reached ever closer to one that cannot be solved: a dead point
+    /// (toggle) the drivers cannot take the system past, when the rows at the last instant
+    /// reached are nearly dependent and were at least four times less so where the step began (`before`, their
+    /// conditioning there); `None` where the failure is another (a contact lost, a loop that
+    /// does not close).
+    fn dead_point(&mut self, before: Option<f64>) -> Option<SystemError> {
+        let before = before?;
+        let (now, time, rows) = self.conditioning(true)?;
+        (now < DEAD_POINT && now < 0.25 * before).then_some(SystemError::DeadPoint { time, rows })
     }
 
     /// Reaches `t` from the last instant (at `from`) through the midpoint, halving again where

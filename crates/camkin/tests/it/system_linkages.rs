@@ -6,7 +6,7 @@
 //! 1e-7 of their peaks.
 
 use crate::common::system_body as body;
-use camkin::system::{BodyId, Coordinate, Driver, Joint, JointKind, Law, System};
+use camkin::system::{BodyId, Coordinate, Driver, Joint, JointKind, Law, System, SystemError};
 use camkin::{Point2, Vec2};
 
 fn pin(name: &str, a: BodyId, at_a: [f64; 2], b: BodyId, at_b: [f64; 2]) -> Joint {
@@ -442,4 +442,58 @@ fn a_cam_drives_a_four_bar_through_its_arm() {
     }
     // the output swings: the four-bar is driven, not at rest
     assert!(vpeak[1] > 0.1 * w, "{vpeak:?}");
+}
+
+/// A four-bar driven by its rocker (crank 20, coupler 50, rocker 40, ground 60) cannot turn the
+/// rocker past the toggle where crank and coupler fold onto one line, `|O₂B| = 50 − 20`, at the
+/// rocker angle `acos(−0.8958…)` = 153.6°: asked beyond it, the sweep stops at the dead point and
+/// says so, naming the driver, within 0.01° of that angle; never an answer past it. Both from
+/// a sweep in steps and asked at once from the start.
+#[test]
+fn a_rocker_driven_four_bar_stops_at_its_toggle_and_says_so() {
+    let (a, b, c, d) = (20.0, 50.0, 40.0, 60.0);
+    let w = std::f64::consts::TAU; // the rocker at 60 rpm
+    let start = 100f64.to_radians();
+    let mut sys = System::new();
+    let crank = sys.add_body(body("crank", 0.0, 0.0, 5f64.to_radians()));
+    let coupler = sys.add_body(body("coupler", a, 0.0, 60f64.to_radians()));
+    let rocker = sys.add_body(body("rocker", d, 0.0, start));
+    let g = BodyId::GROUND;
+    sys.add_joint(pin("O2", g, [0.0, 0.0], crank, [0.0, 0.0]));
+    sys.add_joint(pin("A", crank, [a, 0.0], coupler, [0.0, 0.0]));
+    sys.add_joint(pin("B", coupler, [b, 0.0], rocker, [c, 0.0]));
+    sys.add_joint(pin("O4", rocker, [0.0, 0.0], g, [d, 0.0]));
+    sys.add_driver(Driver {
+        name: "drive rocker".into(),
+        body: rocker,
+        coordinate: Coordinate::Angle,
+        law: Law::linear(start, w),
+    });
+    // |B|² = (d + c cos φ)² + (c sin φ)² = (b − a)²
+    let toggle = (((b - a) * (b - a) - d * d - c * c) / (2.0 * d * c)).acos();
+    let time_at = |deg: f64| (deg.to_radians() - start) / w;
+    for from_steps in [true, false] {
+        let mut sweep = sys.sweep().unwrap();
+        sweep.step(0.0).unwrap();
+        if from_steps {
+            for deg in [110.0, 130.0, 150.0] {
+                sweep.step(time_at(deg)).unwrap();
+            }
+        }
+        let e = sweep.step(time_at(160.0)).unwrap_err();
+        match &e {
+            SystemError::DeadPoint { time, rows } => {
+                let angle = start + w * time;
+                assert!(
+                    (angle - toggle).abs() <= 0.01f64.to_radians(),
+                    "{} against {}",
+                    angle.to_degrees(),
+                    toggle.to_degrees()
+                );
+                assert!(rows.contains("drive rocker"), "{rows}");
+            }
+            other => panic!("{other}"),
+        }
+        assert!(e.to_string().contains("dead point"), "{e}");
+    }
 }
