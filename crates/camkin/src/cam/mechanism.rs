@@ -281,6 +281,12 @@ impl Mechanism {
         )
     }
 
+    /// This mechanism as a system of bodies, joints, a driver and a contact
+    /// ([`super::CamFollowerSystem::of`]).
+    pub fn to_system(&self) -> Result<super::CamFollowerSystem, CamError> {
+        super::CamFollowerSystem::of(self)
+    }
+
     /// The shared profile.
     pub fn profile_arc(&self) -> Arc<dyn Curve> {
         self.touch.cam.profile.clone()

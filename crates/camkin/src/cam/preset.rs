@@ -41,22 +41,9 @@ impl CamFollowerSystem {
     /// the cam axis along its direction, or an arm's angle within ±180° of the cam path's
     /// reference angle), from a solved instant.
     pub fn follower_coordinate(&self, state: &SystemState) -> [f64; 3] {
-        let Some(i) = self.follower.index() else {
-            return [f64::NAN; 3];
-        };
-        let b = &state.bodies[i];
-        match self.joint {
-            Joint::Translating { origin, direction } => [
-                (b.pose.origin - origin).dot(&direction),
-                b.velocity.dot(&direction),
-                b.acceleration.dot(&direction),
-            ],
-            Joint::Rotating { initial_angle, .. } => {
-                let tau = std::f64::consts::TAU;
-                let d = (b.pose.angle - initial_angle).rem_euclid(tau);
-                let d = if d > std::f64::consts::PI { d - tau } else { d };
-                [initial_angle + d, b.omega, b.alpha]
-            }
+        match self.follower.index() {
+            Some(i) => self.joint.coordinate_of(&state.bodies[i]),
+            None => [f64::NAN; 3],
         }
     }
 
@@ -77,17 +64,17 @@ impl CamFollowerSystem {
     }
 }
 
-impl Mechanism {
-    /// This mechanism as a [`System`] (see the module docs of `cam::preset`). The follower starts where
+impl CamFollowerSystem {
+    /// The mechanism `m` as a [`System`] (see the module docs of `cam::preset`). The follower starts where
     /// the cam path's first touch puts it at cam angle 0, so that both routes follow the same
     /// contact. The cam turns from angle 0 at `t = 0` at its speed, accelerating at its angular
     /// acceleration (the cam path analyses each angle at the speed given instead: the two agree
     /// when it is zero). A form-closed follower's second curve is left out: with it the follower's one
     /// degree of freedom would have two rows, and the system's kinematic analysis needs one
     /// row a coordinate.
-    pub fn to_system(&self) -> Result<CamFollowerSystem, CamError> {
-        let cam = self.cam();
-        let start = self.analyze(0.0)?;
+    pub fn of(m: &Mechanism) -> Result<CamFollowerSystem, CamError> {
+        let cam = m.cam();
+        let start = m.analyze(0.0)?;
         let sense = cam.direction().sign();
         let mut system = System::new();
         let cam_body = system.add_body(Body {
@@ -96,8 +83,8 @@ impl Mechanism {
             inertia: 0.0,
             pose: Pose::new(cam.pivot(), 0.0),
         });
-        let joint = self.follower_joint();
-        let (pose, curve) = self.follower_body(start.position);
+        let joint = m.follower_joint();
+        let (pose, curve) = m.follower_body(start.position);
         let follower = system.add_body(Body {
             name: "follower".into(),
             mass: 0.0,
@@ -115,22 +102,7 @@ impl Mechanism {
         });
         system.add_joint(crate::system::Joint {
             name: "follower joint".into(),
-            kind: match joint {
-                Joint::Translating { origin, direction } => JointKind::Prismatic {
-                    a: BodyId::GROUND,
-                    at_a: origin,
-                    axis: *direction,
-                    b: follower,
-                    at_b: Point2::origin(),
-                    angle: 0.0,
-                },
-                Joint::Rotating { pivot, .. } => JointKind::Revolute {
-                    a: BodyId::GROUND,
-                    at_a: pivot,
-                    b: follower,
-                    at_b: Point2::origin(),
-                },
-            },
+            kind: joint.system_joint(follower),
         });
         system.add_driver(Driver {
             name: "cam drive".into(),
@@ -145,7 +117,7 @@ impl Mechanism {
         system.add_contact(Contact {
             name: "cam on follower".into(),
             a: cam_body,
-            curve_a: self.profile_arc(),
+            curve_a: m.profile_arc(),
             b: follower,
             curve_b: curve,
         });

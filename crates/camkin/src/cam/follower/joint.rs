@@ -170,6 +170,47 @@ impl Joint {
         }
     }
 
+    /// This joint as a system's joint between the ground and the follower's body `follower`
+    /// (whose frame is the follower frame): a slide along the direction, or a pin at the pivot.
+    pub fn system_joint(&self, follower: crate::system::BodyId) -> crate::system::JointKind {
+        use crate::system::{BodyId, JointKind};
+        match *self {
+            Joint::Translating { origin, direction } => JointKind::Prismatic {
+                a: BodyId::GROUND,
+                at_a: origin,
+                axis: *direction,
+                b: follower,
+                at_b: Point2::origin(),
+                angle: 0.0,
+            },
+            Joint::Rotating { pivot, .. } => JointKind::Revolute {
+                a: BodyId::GROUND,
+                at_a: pivot,
+                b: follower,
+                at_b: Point2::origin(),
+            },
+        }
+    }
+
+    /// The coordinate `(q, q̇, q̈)` of a follower body's state (the inverse of
+    /// [`Joint::body`]): a slide's travel along its direction from its origin, or an arm's
+    /// angle within ±180° of the initial angle.
+    pub fn coordinate_of(&self, b: &BodyState) -> [f64; 3] {
+        match *self {
+            Joint::Translating { origin, direction } => [
+                (b.pose.origin - origin).dot(&direction),
+                b.velocity.dot(&direction),
+                b.acceleration.dot(&direction),
+            ],
+            Joint::Rotating { initial_angle, .. } => {
+                let tau = std::f64::consts::TAU;
+                let d = (b.pose.angle - initial_angle).rem_euclid(tau);
+                let d = if d > std::f64::consts::PI { d - tau } else { d };
+                [initial_angle + d, b.omega, b.alpha]
+            }
+        }
+    }
+
     /// `∂v_B^P/∂q̇` at world point `c`: the velocity of the follower's material point under `c`
     /// per unit rate of the coordinate.
     #[inline]
