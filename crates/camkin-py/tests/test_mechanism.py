@@ -321,6 +321,18 @@ def test_a_mechanism_too_large_to_index_is_refused_unless_large():
         camkin.Mechanism.from_dict(d)
 
 
+def same_as_the_command(r, cli):
+    """A system's columns from Python are the command's CSV columns, to the last bit."""
+    assert list(r) == list(cli)
+    for key, cells in cli.items():
+        if key == "error":
+            assert all(e is None for e in r[key])
+        elif key.endswith("_jump"):
+            assert [bool(x) for x in r[key]] == [c == "true" for c in cells]
+        else:
+            assert list(r[key]) == [float(c) for c in cells], key
+
+
 def test_a_system_file_in_python_equals_the_command():
     """Issue 45: camkin.System reads a system file and analyses it over its driver's angle with
     the command's columns, the same numbers to the last bit."""
@@ -331,13 +343,7 @@ def test_a_system_file_in_python_equals_the_command():
     r = sys.analyze(angles)
     cli = csv_columns(run_cli("analyze", EXAMPLES / "valve-train.toml", "--angles", "0:360:15"))
     assert list(r) == list(cli)
-    for key, cells in cli.items():
-        if key == "error":
-            assert all(e is None for e in r[key])
-        elif key.endswith("_jump"):
-            assert [bool(x) for x in r[key]] == [c == "true" for c in cells]
-        else:
-            assert list(r[key]) == [float(c) for c in cells], key
+    same_as_the_command(r, cli)
     # the valve opens 16 mm: its tip from -33 mm at full lift
     assert r["valve_y_mm"][0] == -33.0 or abs(r["valve_y_mm"][0] + 33.0) < 1e-12
     with pytest.raises(camkin.InputError) as e:
@@ -361,13 +367,7 @@ def test_a_cam_file_as_a_system_in_python():
     cli = csv_columns(run_cli("analyze", path, "--system", "--angles", "0:360:15"))
     assert list(r) == list(cli)
     assert list(r)[0] == "angle_deg"
-    for key, cells in cli.items():
-        if key == "error":
-            assert all(e is None for e in r[key])
-        elif key.endswith("_jump"):
-            assert [bool(x) for x in r[key]] == [c == "true" for c in cells]
-        else:
-            assert list(r[key]) == [float(c) for c in cells], key
+    same_as_the_command(r, cli)
     cam = camkin.Mechanism.from_toml(path).analyze(angles)
     w = 600.0 * 2.0 * np.pi / 60.0
     size = 5.0

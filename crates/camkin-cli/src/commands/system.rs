@@ -8,7 +8,8 @@ use crate::Failure;
 use anyhow::anyhow;
 use camkin::spec::text::read_system;
 use camkin::spec::{BuildOptions, BuiltSystem};
-use camkin::table::{system_cells, system_columns};
+use camkin::system::{SystemError, SystemState};
+use camkin::table::{system_cells, system_columns, Cell};
 use std::path::Path;
 
 fn bad(m: String) -> Failure {
@@ -46,112 +47,31 @@ fn times_of(built: &BuiltSystem, name: &str, angles: &[f64]) -> Result<Vec<f64>,
         .collect()
 }
 
-/// Analyses the system `built` (read from `name`).
-pub fn analyze(args: &Args, name: &str, built: &BuiltSystem) -> Result<(), Failure> {
-    args.table.check()?;
-    let sys = &built.system;
-    let angles = match (&args.at, args.angles) {
-        (Some(list), _) => list.0.clone(),
-        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
-    };
-    let times = times_of(built, name, &angles)?;
-    crate::refuse_large(
-        &camkin::work::Work::system(sys, angles.len()),
-        args.work.large,
-        ", or use fewer angles",
-    )?;
-    let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
-    // a system that cannot be analysed at its first instant (a loop that does not close, a
-    // redundant joint, a driver on a coordinate a joint fixes) is a bad file, named by its
-    // element
-    // element; the sweep starts there, and its first row is that instant
-    let mut first = match times.first() {
-        Some(&t0) => Some(sweep.step(t0).map_err(|e| {
-            bad(format!(
-                "{name}: the system cannot be analysed at its first instant ({}°): {e}",
-                camkin::human::human(angles[0])
-            ))
-        })?),
-        None => None,
-    };
-    let columns = system_columns(built);
-    let mut jumps = Vec::new();
-    let mut failed = None;
-    let mut k = 0;
-    let mut next_chunk = || {
-        if k >= angles.len() {
-            return None;
-        }
-        let end = (k + 4096).min(angles.len());
-        let rows = (k..end)
-            .map(|i| {
-                let s = match first.take() {
-                    Some(state) => Ok(state),
-                    None => sweep.step(times[i]),
-                };
-                match &s {
-                    Ok(state) => {
-                        if state.contacts.iter().any(|c| c.jumped) {
-                            jumps.push(angles[i]);
-                        }
-                    }
-                    Err(e) => {
-                        failed.get_or_insert((angles[i], e.to_string()));
-                    }
-                }
-                system_cells(sys, angles[i], times[i], &s)
-            })
-            .collect();
-        k = end;
-        Some(rows)
-    };
-    args.table.write(&columns, &mut next_chunk)?;
-    if !jumps.is_empty() {
-        let h = camkin::human::human;
-        let shown: Vec<String> = jumps
-            .iter()
-            .take(5)
-            .map(|a| format!("{}°", h(*a)))
-            .collect();
-        crate::say!(
-            "camkin: warning: a contact moved to another pair of points at {} instant{} ({}{}): rows marked true in its jump column",
-            jumps.len(),
-            if jumps.len() == 1 { "" } else { "s" },
-            shown.join(", "),
-            if jumps.len() > 5 { ", …" } else { "" }
-        );
-    }
-    if let Some((a, e)) = failed {
-        crate::say!(
-            "camkin: warning: some instants could not be solved (the first at {}°: {e}); their rows hold the reason in the error column",
-            camkin::human::human(a)
-        );
-    }
-    Ok(())
-}
-
-/// Every contact of the system `built` (read from `name`) at each instant, one row per contact
-/// ([`camkin::table::system_contact_columns`]): its point, normal, gap, sliding rates, normal
-/// accelerations with their terms and its acceleration constraint row.
-pub fn contacts(
-    args: &super::contacts::ContactsArgs,
+/// The system `built` (read from `name`) swept in order through `angles` (of `--at` or
+/// `--angles`), each instant's rows made by `cells` and written 4096 instants at a time under
+/// `columns`; the work refused first when it is over the limits. A system that cannot be
+/// analysed at its first instant (a loop that does not close, a redundant joint, a driver on a
+/// coordinate a joint fixes) is a bad file, named by its element. Warns of the first instant
+/// that could not be solved (its rows hold the reason).
+fn write_sweep(
+    table: &crate::args::TableArgs,
+    work: &crate::args::WorkArgs,
     name: &str,
     built: &BuiltSystem,
+    angles: &[f64],
+    columns: &[String],
+    mut cells: impl FnMut(f64, f64, &Result<SystemState, SystemError>) -> Vec<Vec<Cell>>,
 ) -> Result<(), Failure> {
-    use camkin::table::{system_contact_cells, system_contact_columns};
-    args.table.check()?;
+    table.check()?;
     let sys = &built.system;
-    let angles = match (&args.at, args.angles) {
-        (Some(list), _) => list.0.clone(),
-        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
-    };
-    let times = times_of(built, name, &angles)?;
+    let times = times_of(built, name, angles)?;
     crate::refuse_large(
         &camkin::work::Work::system(sys, angles.len()),
-        args.work.large,
+        work.large,
         ", or use fewer angles",
     )?;
     let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
+    // the sweep starts at the first instant, and its first row is that instant
     let mut first = match times.first() {
         Some(&t0) => Some(sweep.step(t0).map_err(|e| {
             bad(format!(
@@ -177,13 +97,88 @@ pub fn contacts(
             if let Err(e) = &s {
                 failed.get_or_insert((angles[i], e.to_string()));
             }
-            rows.extend(system_contact_cells(sys, angles[i], times[i], &s));
+            rows.extend(cells(angles[i], times[i], &s));
         }
         k = end;
         Some(rows)
     };
-    args.table
-        .write(&system_contact_columns(built), &mut next_chunk)?;
+    table.write(columns, &mut next_chunk)?;
+    if let Some((a, e)) = failed {
+        crate::say!(
+            "camkin: warning: some instants could not be solved (the first at {}°: {e}); their rows hold the reason in the error column",
+            camkin::human::human(a)
+        );
+    }
+    Ok(())
+}
+
+/// The angles of `--at` or `--angles` (a revolution by default).
+fn angles_of(at: &Option<crate::args::AngleList>, range: Option<AngleRange>) -> Vec<f64> {
+    match (at, range) {
+        (Some(list), _) => list.0.clone(),
+        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
+    }
+}
+
+/// Analyses the system `built` (read from `name`).
+pub fn analyze(args: &Args, name: &str, built: &BuiltSystem) -> Result<(), Failure> {
+    let sys = &built.system;
+    let angles = angles_of(&args.at, args.angles);
+    let mut jumps = Vec::new();
+    write_sweep(
+        &args.table,
+        &args.work,
+        name,
+        built,
+        &angles,
+        &system_columns(built),
+        |a, t, s| {
+            if s.as_ref()
+                .is_ok_and(|s| s.contacts.iter().any(|c| c.jumped))
+            {
+                jumps.push(a);
+            }
+            vec![system_cells(sys, a, t, s)]
+        },
+    )?;
+    if !jumps.is_empty() {
+        let h = camkin::human::human;
+        let shown: Vec<String> = jumps
+            .iter()
+            .take(5)
+            .map(|a| format!("{}°", h(*a)))
+            .collect();
+        crate::say!(
+            "camkin: warning: a contact moved to another pair of points at {} instant{} ({}{}): rows marked true in its jump column",
+            jumps.len(),
+            if jumps.len() == 1 { "" } else { "s" },
+            shown.join(", "),
+            if jumps.len() > 5 { ", …" } else { "" }
+        );
+    }
+    Ok(())
+}
+
+/// Every contact of the system `built` (read from `name`) at each instant, one row per contact
+/// ([`camkin::table::system_contact_columns`]): its point, normal, gap, sliding rates, normal
+/// accelerations with their terms and its acceleration constraint row.
+pub fn contacts(
+    args: &super::contacts::ContactsArgs,
+    name: &str,
+    built: &BuiltSystem,
+) -> Result<(), Failure> {
+    use camkin::table::{system_contact_cells, system_contact_columns};
+    let sys = &built.system;
+    let angles = angles_of(&args.at, args.angles);
+    write_sweep(
+        &args.table,
+        &args.work,
+        name,
+        built,
+        &angles,
+        &system_contact_columns(built),
+        |a, t, s| system_contact_cells(sys, a, t, s),
+    )?;
     let n = sys.contacts().len();
     crate::say!(
         "camkin: {n} contact{} at {} instant{} of {}",
@@ -192,12 +187,6 @@ pub fn contacts(
         if angles.len() == 1 { "" } else { "s" },
         built.angle_name()
     );
-    if let Some((a, e)) = failed {
-        crate::say!(
-            "camkin: warning: some instants could not be solved (the first at {}°: {e}); their rows hold the reason in the error column",
-            camkin::human::human(a)
-        );
-    }
     Ok(())
 }
 

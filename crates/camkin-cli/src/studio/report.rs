@@ -30,13 +30,22 @@ pub fn csv(
     let units = Units::new(mech, parsed.built.length_unit, AngleUnit::Deg, Per::S);
     let columns = analysis_columns(&units);
     let mut rows = AnalysisSweep::new(mech, &angles, true, angles.len());
-    let mut out = Vec::new();
-    write_cells(&mut out, TableFormat::Csv, &columns, || {
+    csv_text(&columns, || {
         rows.next()
             .map(|chunk| chunk.iter().map(|r| analysis_cells(r, &units)).collect())
     })
-    .map_err(|e| StudioError::BadRequest {
-        message: format!("cannot write the table: {e}"),
+}
+
+/// A table as CSV text, its rows from `chunks` (as the command writes it).
+pub fn csv_text(
+    columns: &[String],
+    chunks: impl FnMut() -> Option<Vec<Vec<camkin::table::Cell>>>,
+) -> Result<String, StudioError> {
+    let mut out = Vec::new();
+    write_cells(&mut out, TableFormat::Csv, columns, chunks).map_err(|e| {
+        StudioError::BadRequest {
+            message: format!("cannot write the table: {e}"),
+        }
     })?;
     String::from_utf8(out).map_err(|e| StudioError::BadRequest {
         message: format!("the table is not text: {e}"),

@@ -8,7 +8,6 @@ use super::model::{revolution, Analysis, Frame, Placed, Series, ShapeOut, Source
 use super::{Limits, StudioError};
 use crate::draw::mechanism::Shape;
 use crate::draw::system::system_scene;
-use crate::output::{write_cells, TableFormat};
 use camkin::curve::Domain;
 use camkin::spec::{BuildOptions, BuiltSystem};
 use camkin::system::{Coordinate, SystemError, SystemState};
@@ -321,13 +320,5 @@ pub fn csv(
             .map(|(k, s)| camkin::table::system_cells(&built.system, angles[k], times[k], s))
             .collect::<Vec<_>>(),
     );
-    let mut out = Vec::new();
-    write_cells(&mut out, TableFormat::Csv, &columns, || rows.take()).map_err(|e| {
-        StudioError::BadRequest {
-            message: format!("cannot write the table: {e}"),
-        }
-    })?;
-    String::from_utf8(out).map_err(|e| StudioError::BadRequest {
-        message: format!("the table is not text: {e}"),
-    })
+    super::report::csv_text(&columns, || rows.take())
 }

@@ -71,6 +71,40 @@ pub fn system_columns(built: &crate::spec::BuiltSystem) -> Vec<String> {
     c
 }
 
+/// Contact `k` of the instant `s`: its state, the normal accelerations seen from each body and
+/// the residual of its row (eq. 11) at the bodies' accelerations.
+fn contact_terms(
+    sys: &System,
+    s: &SystemState,
+    k: usize,
+) -> (
+    crate::system::ContactState,
+    crate::contact::NormalAcceleration,
+    crate::contact::NormalAcceleration,
+    f64,
+) {
+    let body = |id: crate::system::BodyId| {
+        id.index().map_or_else(
+            || {
+                crate::body::BodyState::at_rest(crate::body::Pose::new(
+                    crate::Point2::origin(),
+                    0.0,
+                ))
+            },
+            |i| s.bodies[i],
+        )
+    };
+    let (c, spec) = (s.contacts[k], &sys.contacts()[k]);
+    let m = &c.kinematics;
+    let (ba, bb) = (body(spec.a), body(spec.b));
+    (
+        c,
+        m.normal_acceleration_a(&ba),
+        m.normal_acceleration_b(&bb),
+        m.acceleration_residual(&ba, &bb),
+    )
+}
+
 /// One row: the instant at driver angle `angle_deg` (time `t`), or its error in the last column.
 pub fn system_cells(
     sys: &System,
@@ -98,38 +132,26 @@ pub fn system_cells(
                     c.push(Cell::Num(Some(v)));
                 }
             }
-            let body = |id: crate::system::BodyId| {
-                id.index().map_or_else(
-                    || {
-                        crate::body::BodyState::at_rest(crate::body::Pose::new(
-                            crate::Point2::origin(),
-                            0.0,
-                        ))
-                    },
-                    |i| s.bodies[i],
-                )
-            };
-            for (k, spec) in s.contacts.iter().zip(sys.contacts()) {
-                let m = &k.kinematics;
-                let (ba, bb) = (body(spec.a), body(spec.b));
-                let (na, nb) = (m.normal_acceleration_a(&ba), m.normal_acceleration_b(&bb));
+            for k in 0..s.contacts.len() {
+                let (ks, on_a, on_b, residual) = contact_terms(sys, s, k);
+                let m = &ks.kinematics;
                 for v in [
                     m.point.x,
                     m.point.y,
-                    k.pairing.gap,
+                    ks.pairing.gap,
                     m.sliding_rate_a,
                     m.sliding_rate_b,
-                    na.total(),
-                    na.coriolis,
-                    na.relative,
-                    nb.coriolis,
-                    nb.relative,
+                    on_a.total(),
+                    on_a.coriolis,
+                    on_a.relative,
+                    on_b.coriolis,
+                    on_b.relative,
                     m.gamma,
-                    m.acceleration_residual(&ba, &bb),
+                    residual,
                 ] {
                     c.push(Cell::Num(Some(v)));
                 }
-                c.push(Cell::Flag(Some(k.jumped)));
+                c.push(Cell::Flag(Some(ks.jumped)));
             }
             c.push(Cell::Text(None));
         }
@@ -202,17 +224,6 @@ pub fn system_contact_cells(
     t: f64,
     state: &Result<SystemState, SystemError>,
 ) -> Vec<Vec<Cell>> {
-    let body = |s: &SystemState, id: crate::system::BodyId| {
-        id.index().map_or_else(
-            || {
-                crate::body::BodyState::at_rest(crate::body::Pose::new(
-                    crate::Point2::origin(),
-                    0.0,
-                ))
-            },
-            |i| s.bodies[i],
-        )
-    };
     sys.contacts()
         .iter()
         .enumerate()
@@ -226,10 +237,8 @@ pub fn system_contact_cells(
             ];
             match state {
                 Ok(s) => {
-                    let k = &s.contacts[i];
+                    let (k, on_a, on_b, residual) = contact_terms(sys, s, i);
                     let m = &k.kinematics;
-                    let (ba, bb) = (body(s, spec.a), body(s, spec.b));
-                    let (na, nb) = (m.normal_acceleration_a(&ba), m.normal_acceleration_b(&bb));
                     for v in [
                         m.point.x,
                         m.point.y,
@@ -239,16 +248,16 @@ pub fn system_contact_cells(
                         m.normal_velocity,
                         m.sliding_rate_a,
                         m.sliding_rate_b,
-                        na.total(),
-                        na.coriolis,
-                        na.relative,
-                        nb.total(),
-                        nb.coriolis,
-                        nb.relative,
+                        on_a.total(),
+                        on_a.coriolis,
+                        on_a.relative,
+                        on_b.total(),
+                        on_b.coriolis,
+                        on_b.relative,
                     ]
                     .into_iter()
                     .chain(m.phi_q)
-                    .chain([m.gamma, m.acceleration_residual(&ba, &bb)])
+                    .chain([m.gamma, residual])
                     {
                         c.push(Cell::Num(Some(v)));
                     }
