@@ -122,6 +122,17 @@ fn angles_of(at: &Option<crate::args::AngleList>, range: Option<AngleRange>) -> 
 
 /// Analyses the system `built` (read from `name`).
 pub fn analyze(args: &Args, name: &str, built: &BuiltSystem) -> Result<(), Failure> {
+    // the cam path's unit flags have no meaning here: refused, not ignored
+    if args.units.per != camkin::table::Per::S {
+        return Err(bad(
+            "--per deg: a system's table gives its rates per second (the columns say so: _mm_s, _deg_s2); drop --per".into(),
+        ));
+    }
+    if args.units.angle_unit != camkin::table::AngleUnit::Deg {
+        return Err(bad(
+            "--angle-unit rad: a system's table gives its angles in degrees (the columns say so: _deg); drop --angle-unit".into(),
+        ));
+    }
     let sys = &built.system;
     let angles = angles_of(&args.at, args.angles);
     let mut jumps = Vec::new();

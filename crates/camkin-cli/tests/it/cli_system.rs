@@ -471,3 +471,35 @@ fn a_systems_contacts_are_rows_that_the_accelerations_meet() {
     }
     assert!(worst <= 1e-9, "{worst:e}");
 }
+
+/// The cam path's unit flags mean nothing to a system's table (its rates are per second, its
+/// angles in degrees, as its columns say): given with a system file or `--system`, they are
+/// refused with exit 2 naming the flag and the value, not ignored.
+#[test]
+fn unit_flags_a_system_cannot_honour_are_refused() {
+    for (file, extra, flag) in [
+        ("valve-train.toml", vec!["--per", "deg"], "--per deg"),
+        (
+            "valve-train.toml",
+            vec!["--angle-unit", "rad"],
+            "--angle-unit rad",
+        ),
+        ("paper.toml", vec!["--system", "--per", "deg"], "--per deg"),
+        (
+            "oscillating-roller.toml",
+            vec!["--system", "--angle-unit", "rad"],
+            "--angle-unit rad",
+        ),
+    ] {
+        let out = camkin()
+            .arg("analyze")
+            .arg(examples().join(file))
+            .args(&extra)
+            .args(["--at", "0"])
+            .assert()
+            .code(2);
+        let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+        assert!(err.contains(flag), "{file} {extra:?}: {err}");
+        assert!(out.get_output().stdout.is_empty(), "{file}: wrote a table");
+    }
+}
