@@ -429,6 +429,18 @@ impl SystemSweep<'_> {
             for (k, c) in sys.contacts.iter().enumerate() {
                 let Some(now) = b.contacts[k].1 else { continue };
                 let (was, slid) = (last.pairings[k], last.slides[k]);
+                // parameters that moved as their rates say (within a quarter) moved along the
+                // curves as the sliding rates say: no chord to measure
+                let (ra, rb) = last.rates[k];
+                let as_rates = |from: f64, to: f64, r0: f64, r1: f64| {
+                    let expected = 0.5 * (r0 + r1) * dt;
+                    (to - from - expected).abs() <= 0.25 * expected.abs()
+                };
+                if as_rates(was.0, next.pairings[k].0, ra, now.param_rate_a)
+                    && as_rates(was.1, next.pairings[k].1, rb, now.param_rate_b)
+                {
+                    continue;
+                }
                 let moved = |curve: &dyn crate::curve::Curve, a: f64, b: f64, rates: (f64, f64)| {
                     let chord = (curve.position(b) - curve.position(a)).norm();
                     let expected = (0.5 * (rates.0 + rates.1) * dt).abs();
