@@ -39,6 +39,9 @@ impl PySystem {
             limits: crate::mech::limits(large),
         };
         let built = read_system(&s.text, &s.file, &options).map_err(errors::text)?;
+        for w in &built.warnings {
+            crate::mech::PyMechanism::warn(py, &format!("{}: {w}", s.file))?;
+        }
         Ok(Self {
             built,
             name: s.name,

@@ -377,3 +377,10 @@ def test_a_cam_file_as_a_system_in_python():
     assert np.max(np.abs(r["follower_ay_cm_s2"] - cam["acceleration_cm_s2"])) <= 1e-12 * w * w * size
     # the clockwise cam's body turns clockwise
     assert np.all(r["cam_omega_deg_s"] == -3600.0) or np.allclose(r["cam_omega_deg_s"], -3600.0, rtol=1e-15)
+
+
+def test_a_form_closed_follower_as_a_system_warns_in_python():
+    """Its second curve is left out of the system: a CamkinWarning says so, as the command does."""
+    with pytest.warns(camkin.CamkinWarning, match="second curve is left out"):
+        sys = camkin.System.from_toml(EXAMPLES / "conjugate-yoke.toml")
+    assert sys.contacts == ["cam on follower"]

@@ -25,7 +25,11 @@ pub fn load(path: &Path, name: &str, text: &str) -> Result<BuiltSystem, Failure>
         confine: false,
         limits: crate::mechfile::build_limits(),
     };
-    read_system(text, name, &options).map_err(|e| bad(e.message))
+    let built = read_system(text, name, &options).map_err(|e| bad(e.message))?;
+    for w in &built.warnings {
+        crate::say!("camkin: warning: {name}: {w}");
+    }
+    Ok(built)
 }
 
 /// The instants at the sweep's angles (degrees): the first driver's, or a cam's.

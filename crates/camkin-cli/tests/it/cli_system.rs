@@ -503,3 +503,25 @@ fn unit_flags_a_system_cannot_honour_are_refused() {
         assert!(out.get_output().stdout.is_empty(), "{file}: wrote a table");
     }
 }
+
+/// A form-closed follower read as a system (`--system`) leaves its second curve out, and says
+/// so on stderr; the table still holds the first contact.
+#[test]
+fn a_form_closed_follower_as_a_system_says_its_second_curve_is_left_out() {
+    let out = camkin()
+        .arg("analyze")
+        .arg(examples().join("conjugate-yoke.toml"))
+        .args(["--system", "--at", "0,90"])
+        .assert()
+        .success();
+    let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(
+        err.contains("warning") && err.contains("second curve is left out"),
+        "{err}"
+    );
+    let (header, rows) = parse_csv(&out.get_output().stdout);
+    assert_eq!(rows.len(), 2);
+    assert!(header
+        .iter()
+        .any(|h| h == "cam_on_follower_gamma_mm_s2" || h.starts_with("cam_on_follower_gamma")));
+}

@@ -94,6 +94,10 @@ pub enum SpecWarning {
         /// longest over shortest chord
         ratio: f64,
     },
+    /// A form-closed follower read as a system: its second curve is left out (the follower's
+    /// one degree of freedom takes one row; the second contact is the cam path's check).
+    #[error("follower.conjugate: the form-closed follower's second curve is left out of the system (one row for its one degree of freedom): the system follows the first contact; `camkin analyze` without --system checks the second")]
+    ConjugateLeftOut,
 }
 
 /// What is wrong with a spec. Every variant names the field ([`SpecError::field`]).

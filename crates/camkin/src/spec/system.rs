@@ -263,11 +263,15 @@ impl BuiltSystem {
         length_unit: LengthUnit,
     ) -> Result<Self, crate::cam::CamError> {
         let preset = mechanism.to_system()?;
+        let mut warnings = Vec::new();
+        if mechanism.is_conjugate() {
+            warnings.push(SpecWarning::ConjugateLeftOut);
+        }
         Ok(Self {
             sweep_angle: preset.sweep_angle(),
             system: preset.system,
             length_unit,
-            warnings: Vec::new(),
+            warnings,
         })
     }
 

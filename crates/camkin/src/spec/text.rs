@@ -186,7 +186,7 @@ pub fn read_system(
     let (built, _) = build_placed(&spec, text, name, options)?;
     let mut system = super::BuiltSystem::from_mechanism(&built.mechanism, built.length_unit)
         .map_err(|e| place(text, name, e.into()))?;
-    system.warnings = built.warnings;
+    system.warnings.extend(built.warnings);
     Ok(system)
 }
 
