@@ -88,57 +88,39 @@ impl PySystem {
     ) -> PyResult<Bound<'py, PyDict>> {
         let (angles, scalar) = angles_from(py, angles_deg, "angles_deg")?;
         let sys = &self.built.system;
-        let times: Vec<f64> = angles
-            .iter()
-            .map(|a| {
-                self.built.time_of(a.to_radians()).ok_or_else(|| match self.built.sweep_angle {
-                    camkin::spec::SweepAngle::FirstDriver => errors::input(
-                        "driver",
-                        None,
-                        "a system is analysed at its first driver's angles: [[driver]] number 1 must drive an angle at a constant speed_rpm".into(),
-                    ),
-                    _ => errors::input(
-                        "angles_deg",
-                        Some(camkin::human::human(*a)),
-                        "the cam, slowing down, never turns so far".into(),
-                    ),
-                })
-            })
-            .collect::<PyResult<_>>()?;
+        let times = self.built.times(&angles).map_err(|e| match e {
+            camkin::spec::SweepError::NeverReached { angle_deg } => errors::input(
+                "angles_deg",
+                Some(camkin::human::human(angle_deg)),
+                e.to_string(),
+            ),
+            _ => errors::input("driver", None, e.to_string()),
+        })?;
         errors::refuse_large(
             &camkin::work::Work::system(sys, angles.len()),
             large,
             ", or use fewer angles",
         )?;
         let (cols, first_error) = py.detach(|| -> PyResult<_> {
-            let mut sweep = sys
-                .sweep()
-                .map_err(|e| errors::input("", None, e.to_string()))?;
-            let mut cols = Columns::new(camkin::table::system_columns(&self.built), angles.len());
-            let mut first_error = None;
             // a system that cannot be analysed at its first instant (a loop that does not
             // close) is bad input, named by its element; the sweep starts there
-            let mut first = match times.first() {
-                Some(&t0) => Some(sweep.step(t0).map_err(|e| {
-                    errors::input(
-                        "",
-                        None,
-                        format!(
-                            "the system cannot be analysed at its first instant ({}°): {e}",
-                            camkin::human::human(angles[0])
-                        ),
-                    )
-                })?),
-                None => None,
-            };
+            let mut instants = sys.instants(&times).map_err(|e| {
+                errors::input(
+                    "",
+                    None,
+                    format!(
+                        "the system cannot be analysed at its first instant ({}°): {e}",
+                        camkin::human::human(angles.first().copied().unwrap_or(0.0))
+                    ),
+                )
+            })?;
+            let mut cols = Columns::new(camkin::table::system_columns(&self.built), angles.len());
+            let mut first_error = None;
             for (k, (&a, &t)) in angles.iter().zip(&times).enumerate() {
                 if k % 4096 == 0 {
                     errors::interrupted()?;
                 }
-                let s = match first.take() {
-                    Some(state) => Ok(state),
-                    None => sweep.step(t),
-                };
+                let Some(s) = instants.next() else { break };
                 if let Err(e) = &s {
                     first_error.get_or_insert((a, e.to_string()));
                 }
@@ -148,7 +130,8 @@ impl PySystem {
         })?;
         if let (true, Some((a, e))) = (strict, &first_error) {
             return Err(errors::contact(format!(
-                "at driver angle {}°: {e}",
+                "at {} {}°: {e}",
+                self.built.angle_name(),
                 camkin::human::human(*a)
             )));
         }

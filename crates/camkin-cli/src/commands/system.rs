@@ -34,21 +34,9 @@ pub fn load(path: &Path, name: &str, text: &str) -> Result<BuiltSystem, Failure>
 
 /// The instants at the sweep's angles (degrees): the first driver's, or a cam's.
 fn times_of(built: &BuiltSystem, name: &str, angles: &[f64]) -> Result<Vec<f64>, Failure> {
-    angles
-        .iter()
-        .map(|a| {
-            built.time_of(a.to_radians()).ok_or_else(|| match built.sweep_angle {
-                camkin::spec::SweepAngle::FirstDriver => bad(format!(
-                    "{name}: a system is swept over its first driver's angle (--at, --angles): [[driver]] number 1 must drive an angle at a constant speed_rpm"
-                )),
-                _ => bad(format!(
-                    "--at, --angles: {}: the cam, slowing down, never turns {}°",
-                    camkin::human::human(*a),
-                    camkin::human::human(*a)
-                )),
-            })
-        })
-        .collect()
+    built
+        .times(angles)
+        .map_err(|e| bad(format!("{name}: --at, --angles: {e}")))
 }
 
 /// The system `built` (read from `name`) swept in order through `angles` (of `--at` or
@@ -74,17 +62,12 @@ fn write_sweep(
         work.large,
         ", or use fewer angles",
     )?;
-    let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
-    // the sweep starts at the first instant, and its first row is that instant
-    let mut first = match times.first() {
-        Some(&t0) => Some(sweep.step(t0).map_err(|e| {
-            bad(format!(
-                "{name}: the system cannot be analysed at its first instant ({}°): {e}",
-                camkin::human::human(angles[0])
-            ))
-        })?),
-        None => None,
-    };
+    let mut instants = sys.instants(&times).map_err(|e| {
+        bad(format!(
+            "{name}: the system cannot be analysed at its first instant ({}°): {e}",
+            camkin::human::human(angles.first().copied().unwrap_or(0.0))
+        ))
+    })?;
     let mut failed = None;
     let mut k = 0;
     let mut next_chunk = || {
@@ -94,10 +77,7 @@ fn write_sweep(
         let end = (k + 4096).min(angles.len());
         let mut rows = Vec::new();
         for i in k..end {
-            let s = match first.take() {
-                Some(state) => Ok(state),
-                None => sweep.step(times[i]),
-            };
+            let s = instants.next()?;
             if let Err(e) = &s {
                 failed.get_or_insert((angles[i], e.to_string()));
             }

@@ -35,9 +35,19 @@ fn options(
     si: bool,
     limits: &Limits,
 ) -> Result<BuildOptions, StudioError> {
+    build_options(spec.cam.profile.path.is_some(), source, si, limits)
+}
+
+/// How a file from `source` that reads a points file for its cam (`cam_file`) is built.
+pub(super) fn build_options(
+    cam_file: bool,
+    source: &Source,
+    si: bool,
+    limits: &Limits,
+) -> Result<BuildOptions, StudioError> {
     let base_dir = match &source.folder {
         Some(f) => f.clone(),
-        None if spec.cam.profile.path.is_some() => {
+        None if cam_file => {
             return Err(StudioError::Input {
                 message: "cam.profile.path: no folder is open, so no points file can be read; start `camkin serve FILE.toml` to read points files beside FILE.toml".into(),
                 at: None,

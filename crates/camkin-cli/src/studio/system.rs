@@ -9,7 +9,7 @@ use super::{Limits, StudioError};
 use crate::draw::mechanism::Shape;
 use crate::draw::system::system_scene;
 use camkin::curve::Domain;
-use camkin::spec::{BuildOptions, BuiltSystem};
+use camkin::spec::BuiltSystem;
 use camkin::system::{Coordinate, SystemError, SystemState};
 use std::time::Instant;
 
@@ -20,15 +20,7 @@ pub fn is_system(text: &str) -> bool {
 
 /// The system in `text`, its points files read only from the source's folder.
 fn build(text: &str, source: &Source, limits: &Limits) -> Result<BuiltSystem, StudioError> {
-    let options = BuildOptions {
-        base_dir: source.folder.clone().unwrap_or_else(|| ".".into()),
-        si: false,
-        confine: true,
-        limits: camkin::work::Limits {
-            seconds: limits.max_seconds,
-            bytes: limits.max_request_bytes,
-        },
-    };
+    let options = super::model::build_options(false, source, false, limits)?;
     camkin::spec::text::read_system(text, &source.name, &options).map_err(|e| StudioError::Input {
         message: e.message,
         at: e.at,
@@ -57,32 +49,16 @@ fn solve(built: &BuiltSystem, step_deg: f64, limits: &Limits) -> Result<Solved, 
             ),
         });
     }
-    let times: Vec<f64> = angles
-        .iter()
-        .map(|a| {
-            built.time_of(a.to_radians()).ok_or_else(|| StudioError::Input {
-                message: format!("{}: the studio turns a system's first driver: [[driver]] number 1 must drive an angle at a constant speed_rpm", built.angle_name()),
-                at: None,
-            })
-        })
-        .collect::<Result<_, _>>()?;
-    let mut sweep = sys.sweep().map_err(|e| StudioError::Input {
-        message: e.to_string(),
-        at: None,
-    })?;
-    let mut states = Vec::with_capacity(times.len());
-    for (k, &t) in times.iter().enumerate() {
-        let s = sweep.step(t);
-        if k == 0 {
-            if let Err(e) = &s {
-                return Err(StudioError::Input {
-                    message: format!("the system cannot be analysed at its first instant: {e}"),
-                    at: None,
-                });
-            }
-        }
-        states.push(s);
-    }
+    let input = |message: String| StudioError::Input { message, at: None };
+    let times = built.times(&angles).map_err(|e| input(e.to_string()))?;
+    let states: Vec<_> = sys
+        .instants(&times)
+        .map_err(|e| {
+            input(format!(
+                "the system cannot be analysed at its first instant: {e}"
+            ))
+        })?
+        .collect();
     Ok((angles, times, states))
 }
 

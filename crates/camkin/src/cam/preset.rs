@@ -50,9 +50,9 @@ impl CamFollowerSystem {
     /// The instant at which the cam has turned `theta` rad in its own direction:
     /// `θ = ω t + α t²/2` (NaN when a decelerating cam never gets there).
     pub fn time_of(&self, theta: f64) -> f64 {
-        let (w, a) = (self.speed, self.angular_acceleration);
-        // 2θ/(ω + √(ω² + 2αθ)): no cancellation for small α
-        2.0 * theta / (w + (w * w + 2.0 * a * theta).sqrt())
+        self.sweep_angle()
+            .time(&self.system, theta)
+            .unwrap_or(f64::NAN)
     }
 
     /// The sweep angle of the preset: the cam angle.

@@ -38,6 +38,7 @@
 //! ```
 
 mod build;
+mod built_system;
 mod gear_pair;
 mod kinds;
 #[cfg(feature = "serde")]
@@ -52,11 +53,12 @@ pub use crate::field::{
     SystemField, SystemKey, SystemTable,
 };
 pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
+pub use built_system::{BuiltSystem, SweepAngle, SweepError};
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
 pub use system::{
-    BodySpec, BuiltSystem, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SweepAngle,
-    SystemSpec, TorsionSpringSpec,
+    BodySpec, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
+    TorsionSpringSpec,
 };
 
 use crate::cam::Sense;

@@ -28,11 +28,12 @@
 //! ```
 
 use super::build::{
-    coordinate, direction, finite, length_unit, point, positive, BuildOptions, LengthUnit,
-    SpecError, SpecWarning,
+    coordinate, direction, finite, length_unit, point, positive, BuildOptions, SpecError,
+    SpecWarning,
 };
 use super::profile::Place;
 use super::ProfileSpec;
+use super::{BuiltSystem, SweepAngle};
 use crate::body::Pose;
 use crate::field::{Field, FollowerField, ProfileField, SystemField, SystemKey, SystemTable};
 use crate::geometry::Point2;
@@ -224,81 +225,6 @@ pub struct ContactSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub motion_direction: Option<crate::cam::Sense>,
-}
-
-/// A system built from its file, with what else the file said.
-#[derive(Debug, Clone)]
-pub struct BuiltSystem {
-    /// the system, in the file's length unit
-    pub system: System,
-    /// the file's length unit
-    pub length_unit: LengthUnit,
-    /// what is valid but probably not meant
-    pub warnings: Vec<SpecWarning>,
-    /// what the angles of a sweep are: the first driver's, or a cam's
-    pub sweep_angle: SweepAngle,
-}
-
-/// What the angles a system is swept over mean, and the instant of each.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub enum SweepAngle {
-    /// the first driver's angle (a system file): see [`System::driver_time`]
-    FirstDriver,
-    /// a cam-follower or gear-pair file as a system: how far the cam has turned in its own
-    /// direction (the cam path's cam angle), `θ = ω t + α t²/2`
-    Cam {
-        /// rad/s at `t = 0`
-        speed: f64,
-        /// rad/s², in the cam's direction
-        angular_acceleration: f64,
-    },
-}
-
-impl BuiltSystem {
-    /// A cam-follower or gear-pair mechanism as a system
-    /// ([`crate::cam::Mechanism::to_system`]), swept over its cam angle.
-    pub fn from_mechanism(
-        mechanism: &crate::cam::Mechanism,
-        length_unit: LengthUnit,
-    ) -> Result<Self, crate::cam::CamError> {
-        let preset = mechanism.to_system()?;
-        let mut warnings = Vec::new();
-        if mechanism.is_conjugate() {
-            warnings.push(SpecWarning::ConjugateLeftOut);
-        }
-        Ok(Self {
-            sweep_angle: preset.sweep_angle(),
-            system: preset.system,
-            length_unit,
-            warnings,
-        })
-    }
-
-    /// The instant at the sweep angle `angle` (rad); `None` when the system cannot be swept
-    /// by an angle (its first driver is not an angle at a constant speed) or never reaches it.
-    pub fn time_of(&self, angle: f64) -> Option<f64> {
-        match self.sweep_angle {
-            SweepAngle::FirstDriver => self.system.driver_time(angle),
-            SweepAngle::Cam {
-                speed,
-                angular_acceleration,
-            } => {
-                // 2θ/(ω + √(ω² + 2αθ)): no cancellation for small α
-                let t = 2.0 * angle
-                    / (speed + (speed * speed + 2.0 * angular_acceleration * angle).sqrt());
-                t.is_finite().then_some(t)
-            }
-        }
-    }
-
-    /// What a sweep's angle is, for messages and column headers: `driver angle` or `cam angle`.
-    pub fn angle_name(&self) -> &'static str {
-        match self.sweep_angle {
-            SweepAngle::FirstDriver => "driver angle",
-            SweepAngle::Cam { .. } => "cam angle",
-        }
-    }
 }
 
 /// The field `key` of element `index` of `table`.

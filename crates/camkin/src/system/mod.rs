@@ -37,7 +37,7 @@ mod solve;
 pub use driver::{Coordinate, Driver, Law};
 pub use error::SystemError;
 pub use joint::{Joint, JointKind};
-pub use solve::{ContactState, SystemState, SystemSweep};
+pub use solve::{ContactState, Instants, SystemState, SystemSweep};
 
 use crate::body::Pose;
 use crate::curve::Curve;

@@ -177,6 +177,48 @@ impl System {
     }
 }
 
+/// A system's instants at given times, in order, each warm-started from the last: what every
+/// front end sweeps. The first is solved when the sweep is made ([`System::instants`]), so that
+/// a system that cannot be analysed there (a loop that does not close, a redundant joint, a
+/// driver on a coordinate a joint fixes) is an error before any answer; a later instant that
+/// fails is its own item.
+#[derive(Debug)]
+pub struct Instants<'a> {
+    sweep: SystemSweep<'a>,
+    first: Option<SystemState>,
+    times: std::slice::Iter<'a, f64>,
+}
+
+impl System {
+    /// The instants at `times` (s), in order (see [`Instants`]); the first instant's error if
+    /// it cannot be solved.
+    pub fn instants<'a>(&'a self, times: &'a [f64]) -> Result<Instants<'a>, SystemError> {
+        let mut sweep = self.sweep()?;
+        let mut times = times.iter();
+        let first = match times.next() {
+            Some(&t) => Some(sweep.step(t)?),
+            None => None,
+        };
+        Ok(Instants {
+            sweep,
+            first,
+            times,
+        })
+    }
+}
+
+impl Iterator for Instants<'_> {
+    type Item = Result<SystemState, SystemError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if let Some(s) = self.first.take() {
+            return Some(Ok(s));
+        }
+        let &t = self.times.next()?;
+        Some(self.sweep.step(t))
+    }
+}
+
 impl SystemSweep<'_> {
     /// The system at time `t`, warm-started from the last instant solved. The first instant is
     /// reached from the bodies' starting poses, which are a guess at `t = 0` (each contact's
