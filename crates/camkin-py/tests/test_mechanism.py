@@ -375,6 +375,10 @@ def test_a_cam_file_as_a_system_in_python():
     assert np.max(np.abs(r["follower_y_cm"] - cam["position_cm"])) <= 1e-12 * size
     assert np.max(np.abs(r["follower_vy_cm_s"] - cam["velocity_cm_s"])) <= 1e-12 * w * size
     assert np.max(np.abs(r["follower_ay_cm_s2"] - cam["acceleration_cm_s2"])) <= 1e-12 * w * w * size
+    # the jerk, from the system's rows in time and from the cam path's tangency in the angle
+    j, cj = r["follower_jerk_y_cm_s3"], cam["jerk_cm_s3"]
+    assert np.array_equal(np.isnan(j), np.isnan(cj))
+    assert np.nanmax(np.abs(j - cj)) <= 1e-12 * w**3 * size
     # the clockwise cam's body turns clockwise
     assert np.all(r["cam_omega_deg_s"] == -3600.0) or np.allclose(r["cam_omega_deg_s"], -3600.0, rtol=1e-15)
 

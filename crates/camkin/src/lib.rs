@@ -82,6 +82,7 @@ pub mod gears;
 pub mod geometry;
 pub mod human;
 pub mod interp;
+pub(crate) mod jet;
 pub mod measured;
 pub mod motion;
 pub(crate) mod periodic;

@@ -17,13 +17,14 @@ fn the_valve_train_file_is_analysed_as_a_system() {
     let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    // two leading columns, nine a body, thirteen a contact, the error
-    assert_eq!(header.len(), 2 + 9 * 3 + 13 * 2 + 1);
+    // two leading columns, twelve a body, thirteen a contact, the error
+    assert_eq!(header.len(), 2 + 12 * 3 + 13 * 2 + 1);
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let (vy, vay, fa) = (
+    let (vy, vay, fa, vjy) = (
         col("valve_y_mm"),
         col("valve_ay_mm_s2"),
         col("finger_angle_deg"),
+        col("valve_jerk_y_mm_s3"),
     );
     let w = 3000.0 * TAU / 60.0;
     let (sys, [_, finger, valve]) = camkin::reference::single_valve_train(w);
@@ -46,6 +47,10 @@ fn the_valve_train_file_is_analysed_as_a_system() {
             (num(vay) - v.acceleration.y).abs() <= 1e-9 * v.acceleration.y.abs().max(1.0),
             "{line}"
         );
+        let j = sys.jerk(&s).unwrap()[valve.index().unwrap()].linear.y;
+        // the valve's jerk peaks near 3e9 mm/s³; at rest on the base circle it is zero to
+        // rounding, which differs between the file's system and the reference's
+        assert!((num(vjy) - j).abs() <= 1e-9 * j.abs().max(1e6), "{line}");
         assert_eq!(*cells.last().unwrap(), "", "{line}");
         // each contact's row holds: a_n on A is a_n on B (eq. 11), to rounding
         for c in ["cam_on_roller", "pad_on_valve"] {
@@ -239,12 +244,13 @@ fn a_cam_file_as_a_system_gives_the_cam_paths_motion() {
             .collect()
     };
     // (file, its length unit, the follower's coordinate from its body's columns, size, rpm)
-    type Coordinate = fn(&std::collections::HashMap<String, f64>, &str) -> [f64; 3];
+    type Coordinate = fn(&std::collections::HashMap<String, f64>, &str) -> [f64; 4];
     let slide_x: Coordinate = |r, u| {
         [
             r[&format!("follower_x_{u}")],
             r[&format!("follower_vx_{u}_s")],
             r[&format!("follower_ax_{u}_s2")],
+            r[&format!("follower_jerk_x_{u}_s3")],
         ]
     };
     let slide_y: Coordinate = |r, u| {
@@ -252,6 +258,7 @@ fn a_cam_file_as_a_system_gives_the_cam_paths_motion() {
             r[&format!("follower_y_{u}")],
             r[&format!("follower_vy_{u}_s")],
             r[&format!("follower_ay_{u}_s2")],
+            r[&format!("follower_jerk_y_{u}_s3")],
         ]
     };
     let arm: Coordinate = |r, _| {
@@ -259,6 +266,7 @@ fn a_cam_file_as_a_system_gives_the_cam_paths_motion() {
             r["follower_angle_deg"],
             r["follower_omega_deg_s"],
             r["follower_alpha_deg_s2"],
+            r["follower_jerk_angle_deg_s3"],
         ]
     };
     for (file, unit, coordinate, size, rpm) in [
@@ -273,20 +281,30 @@ fn a_cam_file_as_a_system_gives_the_cam_paths_motion() {
         assert!((sys[0]["cam_omega_deg_s"].abs().to_radians() - w).abs() <= 1e-12 * w);
         for (s, c) in sys.iter().zip(&cam) {
             assert_eq!(s["angle_deg"], c["angle_deg"], "{file}");
-            let [q, v, a] = coordinate(s, unit);
-            let (cq, cv, ca) = if file.starts_with("oscillating") {
+            let [q, v, a, j] = coordinate(s, unit);
+            let (cq, cv, ca, cj) = if file.starts_with("oscillating") {
                 (
                     c["position_deg"],
                     c["velocity_deg_s"],
                     c["acceleration_deg_s2"],
+                    c["jerk_deg_s3"],
                 )
             } else {
                 (
                     c[&format!("position_{unit}")],
                     c[&format!("velocity_{unit}_s")],
                     c[&format!("acceleration_{unit}_s2")],
+                    c[&format!("jerk_{unit}_s3")],
                 )
             };
+            // the jerk: empty (NaN here) in both where the contact is on a spline node
+            assert_eq!(j.is_nan(), cj.is_nan(), "{file}: jerk {j} {cj}");
+            if !j.is_nan() {
+                assert!(
+                    (j - cj).abs() <= 1e-12 * w * w * w * size,
+                    "{file}: {j} {cj}"
+                );
+            }
             // the eccentric roller travels along +y from x = -0.5: its y is its position
             assert!((q - cq).abs() <= 1e-12 * size, "{file}: {q} {cq}");
             assert!((v - cv).abs() <= 1e-12 * w * size, "{file}: {v} {cv}");

@@ -5,40 +5,13 @@
 
 use super::follower::carried::Carried;
 use super::follower::Kind as _;
-use super::jet::{scale, Jet, Num, V2};
 use super::linear::{solve2, solve3};
 use super::{CamError, Joint, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
 use crate::cam::instant::Instant;
 use crate::curve::Derivs;
 use crate::geometry::Rotation;
-
-/// `c0 + c1 δ + c2 δ²/2 + c3 δ³/6` for a jet `δ` without constant term: a curve's coordinate
-/// (or its derivative's) along a parameter that moves by `δ`.
-fn taylor(dl: Jet, [c0, c1, c2, c3]: [f64; 4]) -> Jet {
-    let (d2, d3) = (dl * dl, dl * dl * dl);
-    Jet::c(c0) + scale(dl, c1) + scale(d2, c2 / 2.0) + scale(d3, c3 / 6.0)
-}
-
-/// A curve's point and tangent `(x, x')` (its own frame) as jets in a parameter moving by `dl`;
-/// the tangent without the fourth derivative (it does not reach `q`: see the `jet` module).
-fn curve_jets(r: &Derivs, dl: Jet) -> (V2<Jet>, V2<Jet>) {
-    (
-        V2::new(
-            taylor(dl, [r.p.x, r.d1.x, r.d2.x, r.d3.x]),
-            taylor(dl, [r.p.y, r.d1.y, r.d2.y, r.d3.y]),
-        ),
-        V2::new(
-            taylor(dl, [r.d1.x, r.d2.x, r.d3.x, 0.0]),
-            taylor(dl, [r.d1.y, r.d2.y, r.d3.y, 0.0]),
-        ),
-    )
-}
-
-/// `(cos, sin)` turning `v` (jets) by an angle given by its cosine and sine (jets).
-fn turned((c, s): (Jet, Jet), v: V2<Jet>) -> V2<Jet> {
-    V2::new(c * v.x - s * v.y, s * v.x + c * v.y)
-}
+use crate::jet::{curve_jets, scale, turned, Jet, Num, V2};
 
 /// The body of [`Mechanism::angle_derivatives`] (documented there).
 pub(crate) fn angle_derivatives(mech: &Mechanism, theta: f64) -> Result<[f64; 3], CamError> {

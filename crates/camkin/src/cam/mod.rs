@@ -24,7 +24,6 @@ mod first_touch;
 mod follower;
 pub(crate) mod golden;
 mod instant;
-mod jet;
 mod jumps;
 mod kinematics;
 mod linear;

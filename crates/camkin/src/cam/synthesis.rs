@@ -26,11 +26,11 @@
 
 use super::follower::envelope::{jet_recip, Envelope};
 use super::follower::{Kind as _, Model, Synthesis as _};
-use super::jet::{scale, Jet};
 use super::{CamError, Follower, Sense};
 use crate::curve::{Curve, Derivs, Domain};
 use crate::field::{Field, ProfileField};
 use crate::geometry::{Point2, Rotation, Vec2};
+use crate::jet::{scale, Jet};
 use crate::motion::Program;
 
 /// A profile synthesised from a motion program.

@@ -74,6 +74,15 @@ impl Law {
             ],
         }
     }
+
+    /// Its Taylor coefficients at `t`: `f(t + ε) = c₀ + c₁ ε + c₂ ε² + c₃ ε³ + …` (`c₃` is the
+    /// third derivative over 6), for the jerk.
+    pub fn taylor(&self, t: f64) -> [f64; 4] {
+        let [f, fd, fdd] = self.at(t);
+        match *self {
+            Law::Quadratic { .. } => [f, fd, 0.5 * fdd, 0.0],
+        }
+    }
 }
 
 /// A named driver: `body`'s `coordinate` follows `law`.

@@ -82,4 +82,15 @@ pub enum SystemError {
         /// what failed
         reason: String,
     },
+    /// The jerk is not defined at this instant (a contact on a breakpoint of its curve, where
+    /// the third derivative jumps), or the rows do not determine it (a conformal contact).
+    #[error("at t = {} s the jerk is not defined{}: {reason}", crate::human::human(*time), if element.is_empty() { String::new() } else { format!(" (contact {element:?})") })]
+    NoJerk {
+        /// the instant, s
+        time: f64,
+        /// the contact's name, or empty
+        element: String,
+        /// why
+        reason: &'static str,
+    },
 }

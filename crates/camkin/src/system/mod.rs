@@ -22,6 +22,10 @@
 //! interpolation. The joints' rows (see [`JointKind`]) and the drivers' (`q_k − f(t)`) are the
 //! textbook ones. See `multibody-systems.md` for the conventions.
 //!
+//! The bodies' jerk at a solved instant, [`System::jerk`], differentiates the rows once more in
+//! time, exactly (Taylor jets), with each contact written as its pairing conditions instead of
+//! its gap row; it is not defined where a contact sits on a curve's breakpoint.
+//!
 //! A system must have as many rows as coordinates (each degree of freedom driven): the analysis
 //! says which rows are redundant or singular (a dead point, a toggle) at which instant, never an
 //! answer from a singular matrix.
@@ -29,6 +33,7 @@
 mod assemble;
 mod driver;
 mod error;
+mod jerk;
 mod joint;
 mod lu;
 mod search;
@@ -36,6 +41,7 @@ mod solve;
 
 pub use driver::{Coordinate, Driver, Law};
 pub use error::SystemError;
+pub use jerk::BodyJerk;
 pub use joint::{Joint, JointKind};
 pub use solve::{ContactState, Instants, SystemState, SystemSweep};
 

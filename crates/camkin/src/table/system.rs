@@ -1,5 +1,5 @@
 //! The system table (`camkin analyze SYSTEM.toml`): one row an instant, each body's pose,
-//! velocity and acceleration and each contact's point, gap, sliding rates, the normal
+//! velocity, acceleration and jerk ([`System::jerk`], empty where it is not defined) and each contact's point, gap, sliding rates, the normal
 //! acceleration of the contact point with its Coriolis and relative terms on each curve (the
 //! paper's eqs. 1 and 2), `γ` and the residual of its row (eq. 11), named by the elements' names
 //! with their units; angles in degrees.
@@ -43,6 +43,9 @@ pub fn system_columns(built: &crate::spec::BuiltSystem) -> Vec<String> {
             ("ax", format!("{unit}_s2")),
             ("ay", format!("{unit}_s2")),
             ("alpha", "deg_s2".into()),
+            ("jerk_x", format!("{unit}_s3")),
+            ("jerk_y", format!("{unit}_s3")),
+            ("jerk_angle", "deg_s3".into()),
         ] {
             c.push(format!("{n}_{q}_{u}"));
         }
@@ -117,7 +120,9 @@ pub fn system_cells(
     let nc = sys.contacts().len();
     match state {
         Ok(s) => {
-            for b in &s.bodies {
+            // none where it is not defined (a contact on a spline node): empty cells
+            let jerk = sys.jerk(s).ok();
+            for (i, b) in s.bodies.iter().enumerate() {
                 for v in [
                     b.pose.origin.x,
                     b.pose.origin.y,
@@ -131,6 +136,10 @@ pub fn system_cells(
                 ] {
                     c.push(Cell::Num(Some(v)));
                 }
+                let j = jerk.as_ref().map(|j| j[i]);
+                c.push(Cell::Num(j.map(|j| j.linear.x)));
+                c.push(Cell::Num(j.map(|j| j.linear.y)));
+                c.push(Cell::Num(j.map(|j| j.angular.to_degrees())));
             }
             for k in 0..s.contacts.len() {
                 let (ks, on_a, on_b, residual) = contact_terms(sys, s, k);
@@ -156,7 +165,7 @@ pub fn system_cells(
             c.push(Cell::Text(None));
         }
         Err(e) => {
-            c.extend((0..9 * nb).map(|_| Cell::Num(None)));
+            c.extend((0..12 * nb).map(|_| Cell::Num(None)));
             for _ in 0..nc {
                 c.extend((0..12).map(|_| Cell::Num(None)));
                 c.push(Cell::Flag(None));

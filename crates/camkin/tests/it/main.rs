@@ -41,6 +41,8 @@ mod synthesis_round_trip;
 mod system_cam;
 #[cfg(feature = "text")]
 mod system_files;
+#[cfg(feature = "text")]
+mod system_jerk;
 mod system_linkages;
 #[cfg(feature = "text")]
 mod system_presets;

@@ -32,7 +32,7 @@ fn examples() -> Vec<(String, String)> {
 /// The largest differences of the follower's position, velocity and acceleration between the
 /// system path and the cam path over a revolution at 1° steps, as fractions of the size, `ω ×
 /// size` and `ω² × size`.
-fn differences(name: &str, text: &str) -> [f64; 6] {
+fn differences(name: &str, text: &str) -> [f64; 7] {
     let spec = parse_toml(text, name).unwrap();
     let options = BuildOptions {
         base_dir: Path::new(name).parent().unwrap().to_path_buf(),
@@ -45,8 +45,9 @@ fn differences(name: &str, text: &str) -> [f64; 6] {
     let w = preset.speed;
     let mut cam = mech.sweep();
     let mut sys = preset.system.sweep().unwrap();
-    let mut d = [0.0f64; 6];
+    let mut d = [0.0f64; 7];
     let mut other_pair = 0;
+    let (mut jerks, mut no_jerk) = (0, 0);
     // an arm's angle times the size: a length
     let scale = match mech.follower_joint() {
         camkin::cam::Joint::Rotating { .. } => size,
@@ -64,6 +65,30 @@ fn differences(name: &str, text: &str) -> [f64; 6] {
         d[0] = d[0].max((q - c.position).abs() * scale / size);
         d[1] = d[1].max((v - c.velocity).abs() * scale / (w * size));
         d[2] = d[2].max((a - c.acceleration).abs() * scale / (w * w * size));
+        // the jerk: the system's from its rows in time (the contact as pairing conditions), the
+        // cam path's from its tangency in the cam angle; both none where the contact is on a
+        // breakpoint of a curve
+        match (preset.system.jerk(&s), c.jerk) {
+            (Ok(j), Some(cj)) => {
+                let i = preset.follower.index().unwrap();
+                let sj = match mech.follower_joint() {
+                    camkin::cam::Joint::Translating { direction, .. } => {
+                        j[i].linear.dot(&direction)
+                    }
+                    _ => j[i].angular,
+                };
+                d[6] = d[6].max((sj - cj).abs() * scale / (w * w * w * size));
+                jerks += 1;
+            }
+            (Err(e), None) => {
+                assert!(
+                    matches!(e, camkin::system::SystemError::NoJerk { .. }),
+                    "{name} at {k}°: {e}"
+                );
+                no_jerk += 1;
+            }
+            (j, cj) => panic!("{name} at {k}°: the system's jerk {j:?}, the cam path's {cj:?}"),
+        }
         // the contact: sliding rates on both curves, the normal acceleration seen from the cam;
         // where two pairs of gear teeth touch at once, the cam path names the first contact
         // and the system the pair it has followed: both exact, compared where they are one
@@ -93,15 +118,15 @@ fn differences(name: &str, text: &str) -> [f64; 6] {
         "{name}: the system followed another contact at {other_pair} of 361 angles"
     );
     eprintln!(
-        "{name}: the same contact at {} of 361 angles",
+        "{name}: the same contact at {} of 361 angles; jerk at {jerks}, none at {no_jerk}",
         361 - other_pair
     );
     d
 }
 
 fn check(name: &str, text: &str) {
-    let [dq, dv, da, sa, sb, an] = differences(name, text);
-    eprintln!("{name}: position {dq:.1e}, velocity {dv:.1e}, acceleration {da:.1e}, sliding rates {sa:.1e} {sb:.1e}, normal acceleration {an:.1e}");
+    let [dq, dv, da, sa, sb, an, dj] = differences(name, text);
+    eprintln!("{name}: position {dq:.1e}, velocity {dv:.1e}, acceleration {da:.1e}, sliding rates {sa:.1e} {sb:.1e}, normal acceleration {an:.1e}, jerk {dj:.1e}");
     assert!(
         sa <= 1e-12 && sb <= 1e-12,
         "{name}: sliding rates off by {sa:e}, {sb:e} of ω·size"
@@ -113,6 +138,7 @@ fn check(name: &str, text: &str) {
     assert!(dq <= 1e-12, "{name}: position off by {dq:e} of the size");
     assert!(dv <= 1e-12, "{name}: velocity off by {dv:e} of ω·size");
     assert!(da <= 1e-12, "{name}: acceleration off by {da:e} of ω²·size");
+    assert!(dj <= 1e-12, "{name}: jerk off by {dj:e} of ω³·size");
 }
 
 #[test]

@@ -19,11 +19,11 @@
 use super::envelope::Envelope;
 use super::{Joint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
-use crate::cam::jet::{Num, V2};
 use crate::cam::CamError;
 use crate::curve::{Curve, Derivs, Domain};
 use crate::field::{Field, FollowerField};
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
+use crate::jet::{Num, V2};
 use std::sync::Arc;
 
 /// A carried curve's joint: the `Kind` of a follower carrying any curve. Its first touch is not

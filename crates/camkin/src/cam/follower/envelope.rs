@@ -2,9 +2,9 @@
 //! (the profile's derivatives, or a roller centre's path to offset), and the paths of the points
 //! of a slide or an arm with their derivatives in the cam angle (see `cam::synthesis`).
 
-use crate::cam::jet::Jet;
 use crate::curve::Derivs;
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
+use crate::jet::Jet;
 
 /// What a follower kind's envelope gives: the profile's derivatives, or a path to offset by a
 /// roller's radius.

@@ -34,7 +34,6 @@ pub use curve::FollowerCurve;
 pub use joint::Joint;
 pub(crate) use kind::{dispatch, Kind, Model, Rates, Synthesis};
 
-use super::jet::{Num, V2};
 use super::pose::Pose;
 use super::CamError;
 use crate::body::WorldDerivs;
@@ -42,6 +41,7 @@ use crate::curve::{Circle, Line, PointCurve};
 use crate::field::{Field, FollowerField};
 use crate::geometry::Frame;
 use crate::geometry::{rot90, wrap_angle_near, Point2, Rotation, UnitVec2, Vec2};
+use crate::jet::{Num, V2};
 use envelope::Envelope;
 use oscillating_flat::OscillatingFlat;
 use oscillating_knife::OscillatingKnife;

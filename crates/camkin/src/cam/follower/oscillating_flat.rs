@@ -6,12 +6,12 @@ use super::envelope::{jet_recip, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
-use crate::cam::jet::{scale, Jet, Num, V2};
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
 use crate::curve::{Derivs, Line};
 use crate::field::{Field, FollowerField};
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
+use crate::jet::{scale, Jet, Num, V2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingFlat {

@@ -11,13 +11,13 @@ use super::envelope::{arm_path, rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
 use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
-use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
 use crate::curve::PointCurve;
 use crate::field::{Field, FollowerField, ProfileField};
 use crate::geometry::{rot90, Point2, Rotation, Vec2};
 use crate::human::human;
+use crate::jet::{Num, V2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OscillatingKnife {

@@ -6,11 +6,11 @@ use super::envelope::{rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
 use super::{Joint, Kind, Model, Rates, Synthesis};
 use crate::body::WorldDerivs;
-use crate::cam::jet::{Num, V2};
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
 use crate::curve::Line;
 use crate::geometry::{rot90, Point2, Rotation, UnitVec2, Vec2};
+use crate::jet::{Num, V2};
 
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct TranslatingFlat {

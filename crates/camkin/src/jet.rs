@@ -1,7 +1,8 @@
-//! Truncated Taylor series ("jets") for the derivatives of the follower's position with respect
-//! to the cam angle, by implicit differentiation of the first-touch tangency conditions.
+//! Truncated Taylor series ("jets"): third derivatives by implicit differentiation of conditions
+//! that hold along a motion — a cam's first-touch tangency in the cam angle, a system's rows in
+//! time (the jerk of its bodies).
 //!
-//! With `z = (u, q)` the tangency residual `F(z, θ) = 0` holds at every cam angle. Writing
+//! For the cam, with `z = (u, q)` the tangency residual `F(z, θ) = 0` holds at every cam angle. Writing
 //! `z(θ₀ + ε) = z₀ + z₁ ε + z₂ ε² + z₃ ε³`, the coefficient `z_k` solves `J z_k = −[F(z₀ … z_{k−1})]_k`,
 //! where `J = ∂F/∂z` is the Jacobian of the Newton iteration and `[·]_k` the ε^k coefficient with
 //! `z_k = 0`. So `q' = q₁`, `q'' = 2 q₂`, `q''' = 6 q₃`: the jerk. This is independent of the
@@ -145,6 +146,33 @@ impl<T: Num> Sub for V2<T> {
             y: self.y - o.y,
         }
     }
+}
+
+/// `c0 + c1 δ + c2 δ²/2 + c3 δ³/6` for a jet `δ` without constant term: a curve's coordinate
+/// (or its derivative's) along a parameter that moves by `δ`.
+pub(crate) fn taylor(dl: Jet, [c0, c1, c2, c3]: [f64; 4]) -> Jet {
+    let (d2, d3) = (dl * dl, dl * dl * dl);
+    Jet::c(c0) + scale(dl, c1) + scale(d2, c2 / 2.0) + scale(d3, c3 / 6.0)
+}
+
+/// A curve's point and tangent `(x, x')` (its own frame) as jets in a parameter moving by `dl`;
+/// the tangent without the fourth derivative (it does not reach `q`: see the `jet` module).
+pub(crate) fn curve_jets(r: &crate::curve::Derivs, dl: Jet) -> (V2<Jet>, V2<Jet>) {
+    (
+        V2::new(
+            taylor(dl, [r.p.x, r.d1.x, r.d2.x, r.d3.x]),
+            taylor(dl, [r.p.y, r.d1.y, r.d2.y, r.d3.y]),
+        ),
+        V2::new(
+            taylor(dl, [r.d1.x, r.d2.x, r.d3.x, 0.0]),
+            taylor(dl, [r.d1.y, r.d2.y, r.d3.y, 0.0]),
+        ),
+    )
+}
+
+/// `(cos, sin)` turning `v` (jets) by an angle given by its cosine and sine (jets).
+pub(crate) fn turned((c, s): (Jet, Jet), v: V2<Jet>) -> V2<Jet> {
+    V2::new(c * v.x - s * v.y, s * v.x + c * v.y)
 }
 
 #[cfg(test)]
