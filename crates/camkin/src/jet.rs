@@ -75,8 +75,14 @@ impl Num for Jet {
         Jet([x, 0.0, 0.0, 0.0])
     }
     fn sin_cos(self) -> (Self, Self) {
+        self.sin_cos_with(self.0[0].sin_cos())
+    }
+}
+
+impl Jet {
+    /// [`Num::sin_cos`] with the sine and cosine of the constant term given.
+    pub(crate) fn sin_cos_with(self, (s, c): (f64, f64)) -> (Self, Self) {
         // sin(a + δ) = sin a cos δ + cos a sin δ, δ without constant term
-        let (s, c) = self.0[0].sin_cos();
         let d = Jet([0.0, self.0[1], self.0[2], self.0[3]]);
         let d2 = d * d;
         let d3 = d2 * d;

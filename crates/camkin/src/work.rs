@@ -114,12 +114,12 @@ impl Work {
     }
 
     /// `instants` instants of a system swept warm ([`crate::system::System::sweep`]): about
-    /// 1e-4 s each (a warm instant of the valve train is 36 000 instructions, about 2.4 µs; the
+    /// 1e-4 s each (a row of the valve train's table, its jerk included, is about 9 µs; the
     /// margin is for larger systems and their contacts' global searches), and its table's
-    /// numbers, 24 bytes each written or held (one a body's nine coordinates and rates, thirteen
-    /// a contact's).
+    /// numbers, 24 bytes each written or held (twelve a body's: coordinates, rates,
+    /// accelerations and jerk; thirteen a contact's).
     pub fn system(sys: &crate::system::System, instants: usize) -> Self {
-        let cells = 2 + 9 * sys.bodies().len() + 13 * sys.contacts().len();
+        let cells = 2 + 12 * sys.bodies().len() + 13 * sys.contacts().len();
         Self::new(
             format!("{instants} instants of this system"),
             instants as f64 * 1e-4,

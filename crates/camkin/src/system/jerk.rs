@@ -129,18 +129,14 @@ impl System {
             .chain(params.iter().map(|&(_, u)| u))
             .map(Jet::c)
             .collect();
+        let jac = self.jerk_jacobian(state, &pairs, &row, &col);
         let mut f = Vec::with_capacity(n);
-        // J, column by column: the first coefficient of F along each unknown, time held
-        let mut jac = vec![0.0; n * n];
-        for j in 0..n {
-            let mut zj = z.clone();
-            zj[j].0[1] = 1.0;
-            f.clear();
-            self.jerk_rows(&zj, &pairs, t, false, &mut f);
-            for (i, v) in f.iter().enumerate() {
-                jac[i * n + j] = v.0[1] * row[i] * col[j];
-            }
-        }
+        // the bodies' angles' sines and cosines, once
+        let trig: Vec<(f64, f64)> = state
+            .bodies
+            .iter()
+            .map(|b| b.pose.angle.sin_cos())
+            .collect();
         let mut lu = Lu::default();
         lu.factor(&jac, n);
         let (lo, hi) = lu.pivots;
@@ -153,7 +149,7 @@ impl System {
         let (mut rhs, mut x) = (vec![0.0; n], Vec::with_capacity(n));
         for k in 1..=3 {
             f.clear();
-            self.jerk_rows(&z, &pairs, t, true, &mut f);
+            self.jerk_rows(&z, &trig, &pairs, t, &mut f);
             for i in 0..n {
                 rhs[i] = -f[i].0[k] * row[i];
             }
@@ -168,6 +164,104 @@ impl System {
                 angular: 6.0 * z[3 * i + 2].0[3],
             })
             .collect())
+    }
+
+    /// `J = ∂F/∂z` at the instant, scaled (`row` and `col`, see [`System::jerk`]): the joints'
+    /// gradients as the analysis has them, a driver's unit entry, and each contact's pairing
+    /// conditions differentiated by hand — `x_A − x_B` moves with a body's origin, with its
+    /// angle by the arm turned a quarter (`k × (x − r)`) and with a parameter by the tangent;
+    /// `x_A' × x_B'` with an angle by its tangent turned a quarter and with a parameter by the
+    /// second derivative.
+    fn jerk_jacobian(
+        &self,
+        state: &SystemState,
+        pairs: &[Pair],
+        row: &[f64],
+        col: &[f64],
+    ) -> Vec<f64> {
+        let n = col.len();
+        let mut jac = vec![0.0; n * n];
+        let body = |id: BodyId| {
+            id.index().map_or_else(
+                || crate::body::BodyState::at_rest(crate::body::Pose::new(Point2::origin(), 0.0)),
+                |i| state.bodies[i],
+            )
+        };
+        let put = |jac: &mut [f64], r: usize, id: BodyId, g: [f64; 3]| {
+            if let Some(i) = id.index() {
+                for (c, v) in g.into_iter().enumerate() {
+                    jac[r * n + 3 * i + c] += v;
+                }
+            }
+        };
+        let mut r = 0;
+        let mut rows = Vec::new();
+        for j in &self.joints {
+            let [a, b] = j.kind.bodies();
+            rows.clear();
+            j.kind.eval(&body(a), &body(b), &mut rows);
+            for e in &rows {
+                for (id, g) in e.grads {
+                    put(&mut jac, r, id, g);
+                }
+                r += 1;
+            }
+        }
+        for d in &self.drivers {
+            let mut g = [0.0; 3];
+            g[d.coordinate.index()] = 1.0;
+            put(&mut jac, r, d.body, g);
+            r += 1;
+        }
+        // each side's arm to its point, and its tangent and second derivative in the world
+        let side = |id: BodyId, curve: &dyn Curve, d: &Option<Derivs>| {
+            let s = body(id);
+            let rot = s.pose.frame().rotation;
+            match d {
+                Some(d) => (rot * d.p.coords, Some((rot * d.d1, rot * d.d2))),
+                None => (rot * curve.position(0.0).coords, None),
+            }
+        };
+        let mut k = 3 * self.bodies.len();
+        let mut params = Vec::new();
+        for (c, p) in self.contacts.iter().zip(pairs) {
+            let (arm_a, da) = side(c.a, c.curve_a.as_ref(), &p.a);
+            let (arm_b, db) = side(c.b, c.curve_b.as_ref(), &p.b);
+            let (qa, qb) = (rot90(arm_a), rot90(arm_b));
+            put(&mut jac, r, c.a, [1.0, 0.0, qa.x]);
+            put(&mut jac, r, c.b, [-1.0, 0.0, -qb.x]);
+            put(&mut jac, r + 1, c.a, [0.0, 1.0, qa.y]);
+            put(&mut jac, r + 1, c.b, [0.0, -1.0, -qb.y]);
+            params.clear();
+            if let Some((t, _)) = da {
+                params.push((k, t));
+                k += 1;
+            }
+            if let Some((t, _)) = db {
+                params.push((k, -t));
+                k += 1;
+            }
+            for &(j, t) in &params {
+                jac[r * n + j] = t.x;
+                jac[(r + 1) * n + j] = t.y;
+            }
+            r += 2;
+            if let (Some((ta, ta2)), Some((tb, tb2))) = (da, db) {
+                let cross = |u: Vec2, v: Vec2| u.x * v.y - u.y * v.x;
+                put(&mut jac, r, c.a, [0.0, 0.0, cross(rot90(ta), tb)]);
+                put(&mut jac, r, c.b, [0.0, 0.0, cross(ta, rot90(tb))]);
+                jac[r * n + k - 2] = cross(ta2, tb);
+                jac[r * n + k - 1] = cross(ta, tb2);
+                r += 1;
+            }
+        }
+        debug_assert_eq!(r, n);
+        for i in 0..n {
+            for j in 0..n {
+                jac[i * n + j] *= row[i] * col[j];
+            }
+        }
+        jac
     }
 
     /// Each row's scale to a length: an angle row times the size, a tangency row times the size
@@ -196,13 +290,20 @@ impl System {
         s
     }
 
-    /// The rows at the unknowns `z` (jets in time from the instant `t`): the joints', the
-    /// drivers' (their laws' Taylor coefficients when `timed`, else held at `t`) and each
-    /// contact's pairing conditions.
-    fn jerk_rows(&self, z: &[Jet], pairs: &[Pair], t: f64, timed: bool, out: &mut Vec<Jet>) {
+    /// The rows at the unknowns `z` (jets in time from the instant `t`; `trig` the sines and
+    /// cosines of the bodies' angles there): the joints', the drivers' (their laws' Taylor
+    /// coefficients) and each contact's pairing conditions.
+    fn jerk_rows(
+        &self,
+        z: &[Jet],
+        trig: &[(f64, f64)],
+        pairs: &[Pair],
+        t: f64,
+        out: &mut Vec<Jet>,
+    ) {
         let pose = |id: BodyId| match id.index() {
             Some(i) => {
-                let (sin, cos) = z[3 * i + 2].sin_cos();
+                let (sin, cos) = z[3 * i + 2].sin_cos_with(trig[i]);
                 PoseJet {
                     origin: V2::new(z[3 * i], z[3 * i + 1]),
                     rot: (cos, sin),
@@ -244,12 +345,7 @@ impl System {
         }
         for d in &self.drivers {
             let i = d.body.index().unwrap_or(0);
-            let f = if timed {
-                Jet(d.law.taylor(t))
-            } else {
-                Jet::c(d.law.at(t)[0])
-            };
-            out.push(z[3 * i + d.coordinate.index()] - f);
+            out.push(z[3 * i + d.coordinate.index()] - Jet(d.law.taylor(t)));
         }
         let mut k = 3 * self.bodies.len();
         for (c, p) in self.contacts.iter().zip(pairs) {
@@ -302,4 +398,68 @@ fn at_breakpoint(curve: &dyn Curve, u: f64) -> bool {
         };
         d.abs() <= tol
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::body::Pose;
+    use crate::system::{Body, Driver, Joint, Law};
+
+    /// A crank of length `L` pinned to the ground, its angle driven with an angular
+    /// acceleration: its frame's origin moves on `L (cos θ, sin θ)`, whose third derivative is
+    /// `L (sin θ θ̇³ − 3 cos θ θ̇ θ̈, −cos θ θ̇³ − 3 sin θ θ̇ θ̈)` by hand; `θ⃛ = 0`.
+    #[test]
+    fn a_driven_crank_has_its_closed_form_jerk() {
+        let l = 0.7;
+        let mut sys = System::new();
+        let crank = sys.add_body(Body {
+            name: "crank".into(),
+            mass: 1.0,
+            inertia: 1.0,
+            pose: Pose::new(Point2::new(l, 0.0), 0.0),
+        });
+        sys.add_joint(Joint {
+            name: "pin".into(),
+            kind: JointKind::Revolute {
+                a: BodyId::GROUND,
+                at_a: Point2::origin(),
+                b: crank,
+                at_b: Point2::new(-l, 0.0),
+            },
+        });
+        let (w0, alpha) = (3.0, -5.0);
+        sys.add_driver(Driver {
+            name: "drive".into(),
+            body: crank,
+            coordinate: Coordinate::Angle,
+            law: Law::Quadratic {
+                start: 0.2,
+                rate: w0,
+                acceleration: alpha,
+            },
+        });
+        let mut sweep = sys.sweep().unwrap();
+        for k in 0..20 {
+            let t = 0.05 * f64::from(k);
+            let s = sweep.step(t).unwrap();
+            let j = sys.jerk(&s).unwrap()[0];
+            let (th, w) = (0.2 + w0 * t + 0.5 * alpha * t * t, w0 + alpha * t);
+            let (sin, cos) = th.sin_cos();
+            let x = l * (sin * w * w * w - 3.0 * cos * w * alpha);
+            let y = l * (-cos * w * w * w - 3.0 * sin * w * alpha);
+            let scale = l * (w0.abs() + 5.0).powi(3);
+            assert!(
+                (j.linear.x - x).abs() <= 1e-13 * scale,
+                "{t}: {} {x}",
+                j.linear.x
+            );
+            assert!(
+                (j.linear.y - y).abs() <= 1e-13 * scale,
+                "{t}: {} {y}",
+                j.linear.y
+            );
+            assert!(j.angular.abs() <= 1e-13 * scale, "{t}: {}", j.angular);
+        }
+    }
 }
