@@ -37,17 +37,19 @@ mod reduced;
 mod run;
 mod simulation;
 mod solver;
+mod system;
 
 pub use cam::Multibody;
 pub use follower::{Event, EventKind, FollowerDynamics, Sample, MAX_RATE_STEP, REBOUND_TOLERANCE};
 pub use forces::{
     effective_modulus, hertz_line_pressure, ForceState, ForceSweep, Forces, SecondContact,
 };
-pub use model::{Constraint, ForceElement, RigidBody, System};
+pub use model::{Constraint, ForceElement, RigidBody, System, GROUND};
 pub use reduced::Reduced;
 pub use run::{Run, StepAdvice};
 pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
+pub use system::{ContactEvent, SystemDynamicsOptions, SystemSample, SystemSimulation};
 
 /// What went wrong in a dynamic simulation.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -146,6 +148,22 @@ pub enum DynamicsError {
         /// the longest stable step, s
         max_step: f64,
     },
+    /// An element of a system (a body, a contact) has a dynamic property out of range.
+    #[error("{element}: {key} = {}: {reason}", crate::human::human(*.value))]
+    Element {
+        /// the element, as the system names it (`body "valve"`)
+        element: String,
+        /// the property
+        key: &'static str,
+        /// its value
+        value: f64,
+        /// what it must be
+        reason: &'static str,
+    },
+    /// The system cannot be simulated: an element names a missing body, or the starting
+    /// positions cannot be assembled onto the joints and the contacts in touch.
+    #[error("{0}")]
+    System(#[from] crate::system::SystemError),
     /// A parameter is out of range.
     #[error("{field} = {}: {reason}", crate::human::human(*.value))]
     Invalid {

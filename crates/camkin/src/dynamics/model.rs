@@ -51,7 +51,8 @@ pub enum Constraint {
         /// rad/s²
         acceleration: f64,
     },
-    /// Curve `curve_a` on body `a` touching `curve_b` on body `b`: one row (eq. 11).
+    /// Curve `curve_a` on body `a` touching `curve_b` on body `b` (either may be [`GROUND`]):
+    /// one row (eq. 11).
     Contact {
         /// body carrying curve A
         a: usize,
@@ -62,7 +63,22 @@ pub enum Constraint {
         /// curve B in its body frame
         curve_b: Arc<dyn Curve>,
     },
+    /// A joint of a [`crate::system::System`] between two bodies or a body and the ground (its
+    /// bodies' ids are their indexes here): the kinematic analysis's rows.
+    Joint(crate::system::JointKind),
+    /// `body`'s `coordinate` follows `law` in time: one row, `Φ_t = −ḟ`, `γ = f̈`.
+    Driver {
+        /// the body
+        body: usize,
+        /// which coordinate
+        coordinate: crate::system::Coordinate,
+        /// how it moves
+        law: crate::system::Law,
+    },
 }
+
+/// The ground as a body index of a [`Constraint::Contact`]: fixed, no coordinates.
+pub const GROUND: usize = usize::MAX;
 
 impl Constraint {
     /// Number of rows.
@@ -70,6 +86,21 @@ impl Constraint {
         match self {
             Constraint::Revolute { .. } | Constraint::Translational { .. } => 2,
             Constraint::AngleDriver { .. } | Constraint::Contact { .. } => 1,
+            Constraint::Joint(kind) => kind.rows(),
+            Constraint::Driver { .. } => 1,
+        }
+    }
+
+    /// The rate `Φ_q q̇` must have (`−Φ_t`): a driver's speed at `t`, else 0.
+    pub(crate) fn target_rate(&self, t: f64) -> f64 {
+        match self {
+            Constraint::AngleDriver {
+                speed,
+                acceleration,
+                ..
+            } => speed + acceleration * t,
+            Constraint::Driver { law, .. } => law.at(t)[1],
+            _ => 0.0,
         }
     }
 }
@@ -97,6 +128,9 @@ pub enum ForceElement {
         /// N·s/m
         damping: f64,
     },
+    /// A spring, damper or torsion spring of a [`crate::system::System`] between two bodies or a
+    /// body and the ground (its bodies' ids are their indexes here).
+    Element(crate::system::ForceKind),
     /// A constant torque on body `body`, N·m (counter-clockwise positive): a cam driven by a
     /// motor instead of an angle driver.
     Torque {
@@ -153,8 +187,12 @@ pub struct System {
     pub search: SearchOptions,
 }
 
-/// The state of body `i` as a [`BodyState`] (accelerations zero).
+/// The state of body `i` as a [`BodyState`] (accelerations zero); the ground's ([`GROUND`]) at
+/// rest at the world's origin.
 pub(crate) fn body_state(q: &[f64], qd: &[f64], i: usize) -> BodyState {
+    if i == GROUND {
+        return BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
+    }
     BodyState {
         pose: Pose::new(Point2::new(q[3 * i], q[3 * i + 1]), q[3 * i + 2]),
         velocity: Vec2::new(qd[3 * i], qd[3 * i + 1]),
@@ -191,23 +229,23 @@ impl Row {
     }
 }
 
-/// The rows of one constraint (one or two).
+/// The rows of one constraint (one to three).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Rows {
-    rows: [Row; 2],
+    rows: [Row; 3],
     len: usize,
 }
 
 impl Rows {
     fn one(r: Row) -> Self {
         Self {
-            rows: [r, Row::default()],
+            rows: [r, Row::default(), Row::default()],
             len: 1,
         }
     }
     fn two(a: Row, b: Row) -> Self {
         Self {
-            rows: [a, b],
+            rows: [a, b, Row::default()],
             len: 2,
         }
     }
@@ -254,6 +292,10 @@ impl System {
                     f[3 * body + 1] += mag * axis.y;
                 }
                 ForceElement::Torque { body, torque } => f[3 * body + 2] += torque,
+                ForceElement::Element(kind) => {
+                    let state = |id: crate::system::BodyId| body_state(q, qd, id.0);
+                    kind.add_forces(state, f);
+                }
                 ForceElement::TorsionSpring {
                     body,
                     sign,
@@ -363,12 +405,50 @@ impl System {
                     &p,
                     crate::contact::CONFORMAL_TOLERANCE,
                 )?;
-                let cols = [3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2];
                 let mut jac = [(0, 0.0); 6];
-                for (e, (&c, v)) in jac.iter_mut().zip(cols.iter().zip(k.phi_q)) {
-                    *e = (c, v);
+                let mut len = 0;
+                for (side, body) in [*a, *b].into_iter().enumerate() {
+                    if body == GROUND {
+                        continue;
+                    }
+                    for c in 0..3 {
+                        jac[len] = (3 * body + c, k.phi_q[3 * side + c]);
+                        len += 1;
+                    }
                 }
-                Rows::one(Row::new(p.gap, &jac, k.gamma))
+                Rows::one(Row::new(p.gap, &jac[..len], k.gamma))
+            }
+            Constraint::Joint(kind) => {
+                let [a, b] = kind.bodies();
+                let mut evals = Vec::with_capacity(3);
+                kind.eval(&body_state(q, qd, a.0), &body_state(q, qd, b.0), &mut evals);
+                let mut out = Rows {
+                    rows: [Row::default(); 3],
+                    len: evals.len(),
+                };
+                for (row, e) in out.rows.iter_mut().zip(&evals) {
+                    let mut jac = [(0, 0.0); 6];
+                    let mut len = 0;
+                    for (id, g) in e.grads {
+                        if let Some(i) = id.index() {
+                            for (c, v) in g.into_iter().enumerate() {
+                                jac[len] = (3 * i + c, v);
+                                len += 1;
+                            }
+                        }
+                    }
+                    *row = Row::new(e.value, &jac[..len], e.gamma);
+                }
+                out
+            }
+            Constraint::Driver {
+                body,
+                coordinate,
+                law,
+            } => {
+                let i = 3 * body + coordinate.index();
+                let [f, _, fdd] = law.at(t);
+                Rows::one(Row::new(q[i] - f, &[(i, 1.0)], fdd))
             }
         })
     }

@@ -5,7 +5,7 @@ use super::dense::{
     cholesky, cholesky_solve, dot, lu_solve, small, unit_padding, Buf, Dim, Fixed, KKT, MAT, SMALL,
     VEC,
 };
-use super::model::{Constraint, System};
+use super::model::System;
 use crate::contact::{ContactError, Pairing};
 
 /// The active constraints as dense rows (`m × n`, row-major, padded with zero rows to six for
@@ -59,14 +59,7 @@ impl System {
                     d.jac[r * n + col] += v;
                 }
                 d.phi[r] = row.phi;
-                d.target[r] = match c {
-                    Constraint::AngleDriver {
-                        speed,
-                        acceleration,
-                        ..
-                    } => speed + acceleration * t,
-                    _ => 0.0,
-                };
+                d.target[r] = c.target_rate(t);
                 r += 1;
             }
         }

@@ -4,7 +4,7 @@ use super::dense::{
     cholesky, cholesky_solve, dot, small, unit_padding, Buf, Dim, Fixed, MAT, SMALL, VEC,
 };
 use super::model::System;
-use super::{Constraint, DynamicsError};
+use super::DynamicsError;
 use crate::contact::Pairing;
 
 /// Parameters of the augmented Lagrangian method (see the [module docs](super)).
@@ -182,15 +182,7 @@ impl System {
                 }
                 gamma[r] = row.gamma;
                 phi[r] = row.phi;
-                phi_dot[r] = dot(&jac[r * n..(r + 1) * n], qd);
-                if let Constraint::AngleDriver {
-                    speed,
-                    acceleration,
-                    ..
-                } = c
-                {
-                    phi_dot[r] -= speed + acceleration * t;
-                }
+                phi_dot[r] = dot(&jac[r * n..(r + 1) * n], qd) - c.target_rate(t);
                 r += 1;
             }
         }

@@ -33,6 +33,7 @@
 mod assemble;
 mod driver;
 mod error;
+mod force;
 mod jerk;
 mod joint;
 mod lu;
@@ -150,6 +151,17 @@ pub enum ForceKind {
         /// N·length at the free angle
         preload: f64,
     },
+}
+
+impl ForceKind {
+    /// The two bodies it acts between.
+    pub fn bodies(&self) -> [BodyId; 2] {
+        match *self {
+            ForceKind::Spring { a, b, .. }
+            | ForceKind::Damper { a, b, .. }
+            | ForceKind::TorsionSpring { a, b, .. } => [a, b],
+        }
+    }
 }
 
 /// A named force element.
@@ -272,6 +284,22 @@ impl System {
     /// Checks that every joint, driver and contact names bodies of this system and that the
     /// rows can determine the coordinates (as many rows as coordinates).
     pub fn check(&self) -> Result<(), SystemError> {
+        self.check_elements()?;
+        let rows = self.rows();
+        let n = self.bodies.len();
+        if rows != 3 * n {
+            return Err(SystemError::NotSquare {
+                coordinates: 3 * n,
+                rows,
+            });
+        }
+        Ok(())
+    }
+
+    /// Checks that every joint, driver, contact and force element names bodies of this system,
+    /// two different ones, and that no coordinate is driven twice: what a simulation needs
+    /// (its degrees of freedom need not be driven).
+    pub fn check_elements(&self) -> Result<(), SystemError> {
         let n = self.bodies.len();
         let known = |id: BodyId| id.is_ground() || id.0 < n;
         for j in &self.joints {
@@ -318,12 +346,13 @@ impl System {
                 });
             }
         }
-        let rows = self.rows();
-        if rows != 3 * n {
-            return Err(SystemError::NotSquare {
-                coordinates: 3 * n,
-                rows,
-            });
+        for f in &self.forces {
+            let [a, b] = f.kind.bodies();
+            if !known(a) || !known(b) {
+                return Err(SystemError::UnknownBody {
+                    element: f.name.clone(),
+                });
+            }
         }
         Ok(())
     }

@@ -14,6 +14,7 @@ mod dynamics_contact;
 mod dynamics_liftoff;
 mod dynamics_multibody;
 mod dynamics_reduced;
+mod dynamics_system;
 mod eccentric_circle;
 mod ellipse_flat;
 mod extremes;

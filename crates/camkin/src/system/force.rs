@@ -1,0 +1,187 @@
+//! A force element's generalized forces and potential energy at the bodies' states: what the
+//! dynamics of a system applies (the kinematic analysis does not need them).
+//!
+//! A spring or damper between points `P_a` (on `a`) and `P_b` (on `b`) pulls them together with
+//! its tension `T` along `e = (P_b − P_a)/L`: `+T e` at `P_a`, `−T e` at `P_b`, each with its
+//! moment `(P − r) × F` about its body's origin (the generalized force on `(x, y, θ)`). A torsion
+//! spring's torque `τ` acts `+τ` on `a` and `−τ` on `b`.
+
+use super::{BodyId, ForceKind};
+use crate::body::BodyState;
+use crate::geometry::{cross, Point2, Vec2};
+
+/// Where a force element acts: each end's body and world point, the tension (or torque) and the
+/// potential energy stored.
+impl ForceKind {
+    /// Adds the element's generalized forces to `f` (three a body, in the system's order; the
+    /// ground's are dropped), with `state` the state of a body (the ground's at rest).
+    pub(crate) fn add_forces(&self, state: impl Fn(BodyId) -> BodyState, f: &mut [f64]) {
+        let mut add = |id: BodyId, at: Point2, s: &BodyState, force: Vec2| {
+            if let Some(i) = id.index() {
+                f[3 * i] += force.x;
+                f[3 * i + 1] += force.y;
+                f[3 * i + 2] += cross(at - s.pose.origin, force);
+            }
+        };
+        match *self {
+            ForceKind::Spring {
+                a, at_a, b, at_b, ..
+            }
+            | ForceKind::Damper {
+                a, at_a, b, at_b, ..
+            } => {
+                let (sa, sb) = (state(a), state(b));
+                let (pa, pb) = (sa.pose.to_world(at_a), sb.pose.to_world(at_b));
+                let d = pb - pa;
+                let l = d.norm();
+                if !(l > 0.0) {
+                    return;
+                }
+                let e = d / l;
+                let tension = match *self {
+                    ForceKind::Spring {
+                        stiffness,
+                        free_length,
+                        preload,
+                        ..
+                    } => stiffness * (l - free_length) + preload,
+                    ForceKind::Damper { damping, .. } => {
+                        let (va, vb) = (sa.velocity_at(pa), sb.velocity_at(pb));
+                        damping * e.dot(&(vb - va))
+                    }
+                    ForceKind::TorsionSpring { .. } => 0.0,
+                };
+                add(a, pa, &sa, tension * e);
+                add(b, pb, &sb, -tension * e);
+            }
+            ForceKind::TorsionSpring {
+                a,
+                b,
+                stiffness,
+                free_angle,
+                preload,
+            } => {
+                let (ta, tb) = (state(a).pose.angle, state(b).pose.angle);
+                let torque = stiffness * (tb - ta - free_angle) + preload;
+                if let Some(i) = a.index() {
+                    f[3 * i + 2] += torque;
+                }
+                if let Some(i) = b.index() {
+                    f[3 * i + 2] -= torque;
+                }
+            }
+        }
+    }
+
+    /// The potential energy stored (N·length): `½ k (L − L₀)² + P (L − L₀)` for a spring (its
+    /// tension's integral from the free length), the same in the angle for a torsion spring;
+    /// zero for a damper.
+    pub(crate) fn potential(&self, state: impl Fn(BodyId) -> BodyState) -> f64 {
+        match *self {
+            ForceKind::Spring {
+                a,
+                at_a,
+                b,
+                at_b,
+                stiffness,
+                free_length,
+                preload,
+            } => {
+                let (pa, pb) = (state(a).pose.to_world(at_a), state(b).pose.to_world(at_b));
+                let x = (pb - pa).norm() - free_length;
+                0.5 * stiffness * x * x + preload * x
+            }
+            ForceKind::TorsionSpring {
+                a,
+                b,
+                stiffness,
+                free_angle,
+                preload,
+            } => {
+                let x = state(b).pose.angle - state(a).pose.angle - free_angle;
+                0.5 * stiffness * x * x + preload * x
+            }
+            ForceKind::Damper { .. } => 0.0,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::body::Pose;
+
+    /// Each element's generalized forces are minus the gradient of its potential (central
+    /// differences in every coordinate of both bodies), and a damper's force opposes the rate of
+    /// its length.
+    #[test]
+    fn forces_are_the_potentials_gradients() {
+        let (ia, ib) = (BodyId(0), BodyId(1));
+        let kinds = [
+            ForceKind::Spring {
+                a: ia,
+                at_a: Point2::new(0.3, -0.2),
+                b: ib,
+                at_b: Point2::new(-0.4, 0.5),
+                stiffness: 7.0,
+                free_length: 1.1,
+                preload: -3.0,
+            },
+            ForceKind::TorsionSpring {
+                a: ia,
+                b: ib,
+                stiffness: 5.0,
+                free_angle: 0.2,
+                preload: 1.5,
+            },
+        ];
+        let q0 = [0.1, 0.2, 0.3, 1.6, 0.9, -0.7];
+        let st = |q: &[f64; 6]| {
+            let q = *q;
+            move |id: BodyId| {
+                let i = id.index().unwrap();
+                BodyState::at_rest(Pose::new(Point2::new(q[3 * i], q[3 * i + 1]), q[3 * i + 2]))
+            }
+        };
+        for k in &kinds {
+            let mut f = [0.0; 6];
+            k.add_forces(st(&q0), &mut f);
+            for c in 0..6 {
+                let h = 1e-6;
+                let (mut qp, mut qm) = (q0, q0);
+                qp[c] += h;
+                qm[c] -= h;
+                let grad = (k.potential(st(&qp)) - k.potential(st(&qm))) / (2.0 * h);
+                assert!(
+                    (f[c] + grad).abs() < 1e-7,
+                    "{k:?} coordinate {c}: {} {grad}",
+                    f[c]
+                );
+            }
+        }
+        // a damper between two points moving apart pulls them together
+        let damper = ForceKind::Damper {
+            a: ia,
+            at_a: Point2::origin(),
+            b: ib,
+            at_b: Point2::origin(),
+            damping: 2.0,
+        };
+        let moving = |id: BodyId| {
+            let mut s = BodyState::at_rest(Pose::new(
+                Point2::new(if id == ia { 0.0 } else { 3.0 }, 0.0),
+                0.0,
+            ));
+            if id == ib {
+                s.velocity = Vec2::new(0.5, 0.0);
+            }
+            s
+        };
+        let mut f = [0.0; 6];
+        damper.add_forces(moving, &mut f);
+        assert!(
+            (f[0] - 1.0).abs() < 1e-15 && (f[3] + 1.0).abs() < 1e-15,
+            "{f:?}"
+        );
+    }
+}

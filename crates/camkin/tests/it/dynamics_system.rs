@@ -1,0 +1,243 @@
+//! Issue 46: the dynamics of any system (`camkin::dynamics::SystemSimulation`) against closed
+//! forms that share no formula with it: a block dropped onto a seat (free flight, the impact's
+//! instant and speed, Newton's restitution, the bounce's height, then resting with the contact
+//! force `m g`), a mass on a spring in millimetres (the period `2π √(m/k)` with the unit's size
+//! in it), and a pendulum with a spring, undamped, that keeps its energy.
+
+use camkin::curve::{Line, PointCurve};
+use camkin::dynamics::{EventKind, SystemDynamicsOptions, SystemSimulation};
+use camkin::system::{Body, BodyId, Contact, ForceElement, ForceKind, Joint, JointKind, System};
+use camkin::{Point2, Vec2};
+use std::sync::Arc;
+
+/// A block of 0.2 kg on a vertical guide, its lowest point `h0` m above a seat (the ground's
+/// line y = 0, material below), under gravity 9.81 m/s² (lengths in m).
+fn dropped_block(h0: f64) -> System {
+    let mut sys = System::new();
+    let block = sys.add_body(Body {
+        name: "block".into(),
+        mass: 0.2,
+        inertia: 1e-4,
+        pose: camkin::body::Pose::new(Point2::new(0.0, h0), 0.0),
+    });
+    sys.add_joint(Joint {
+        name: "guide".into(),
+        kind: JointKind::Prismatic {
+            a: BodyId::GROUND,
+            at_a: Point2::origin(),
+            axis: Vec2::y(),
+            b: block,
+            at_b: Point2::origin(),
+            angle: 0.0,
+        },
+    });
+    sys.add_contact(Contact {
+        name: "seat".into(),
+        a: BodyId::GROUND,
+        // material below the line: its left side is −y when it runs along −x
+        curve_a: Arc::new(Line::new(Point2::origin(), -Vec2::x()).unwrap()),
+        b: block,
+        curve_b: Arc::new(PointCurve::new(Point2::origin()).unwrap()),
+    });
+    sys
+}
+
+#[test]
+fn a_dropped_block_flies_lands_and_bounces_as_the_closed_forms_say() {
+    let (g, h0, e) = (9.81, 0.05, 0.6);
+    let sys = dropped_block(h0);
+    let opts = SystemDynamicsOptions {
+        gravity: Vec2::new(0.0, -g),
+        restitution: e,
+        ..SystemDynamicsOptions::default()
+    };
+    let mut sim = SystemSimulation::new(&sys, opts).unwrap();
+    // it starts apart, at rest
+    let s0 = sim.sample().unwrap();
+    assert!(
+        !s0.in_contact[0] && (s0.gaps[0] - h0).abs() < 1e-15,
+        "{s0:?}"
+    );
+    // impacts at t₁ = √(2h₀/g), then every 2 eᵏ v₁ / g later, each approaching at eᵏ v₁
+    let v1 = (2.0 * g * h0).sqrt();
+    let t1 = v1 / g;
+    let mut expected = vec![(t1, v1)];
+    let (mut t, mut v) = (t1, v1);
+    for _ in 0..3 {
+        t += 2.0 * e * v / g;
+        v *= e;
+        expected.push((t, v));
+    }
+    let mut impacts = Vec::new();
+    let h = 1e-3;
+    let mut peak_after_first: f64 = 0.0;
+    while sim.time() < expected[3].0 + 0.5 * h {
+        for ev in sim.advance(h).unwrap() {
+            assert_eq!(ev.kind, EventKind::Impact, "{ev:?}");
+            impacts.push((ev.time, ev.approach));
+        }
+        let s = sim.sample().unwrap();
+        if impacts.len() == 1 {
+            peak_after_first = peak_after_first.max(s.q[1]);
+        }
+        // free flight: the block's acceleration is −g exactly
+        if !s.in_contact[0] {
+            assert!((s.qdd[1] + g).abs() < 1e-9 * g, "{s:?}");
+        }
+    }
+    assert!(impacts.len() >= 4, "{impacts:?}");
+    for ((t, v), (te, ve)) in impacts.iter().zip(&expected) {
+        assert!(
+            (t - te).abs() < 1e-12,
+            "impact at {t} s, closed form {te} s"
+        );
+        assert!(
+            (v - ve).abs() < 1e-9 * v1,
+            "approach {v} m/s, closed form {ve} m/s"
+        );
+    }
+    // the first bounce rises to e² h₀ (sampled every millisecond: within the sampling)
+    assert!(
+        (peak_after_first - e * e * h0).abs() < 0.5 * g * h * h + 1e-9,
+        "bounce {peak_after_first} m, closed form {} m",
+        e * e * h0
+    );
+}
+
+#[test]
+fn a_block_landing_without_rebound_rests_with_its_weight_on_the_seat() {
+    let (g, h0) = (9.81, 0.01);
+    let sys = dropped_block(h0);
+    let opts = SystemDynamicsOptions {
+        gravity: Vec2::new(0.0, -g),
+        restitution: 0.0,
+        ..SystemDynamicsOptions::default()
+    };
+    let mut sim = SystemSimulation::new(&sys, opts).unwrap();
+    let mut events = Vec::new();
+    for _ in 0..100 {
+        events.extend(sim.advance(1e-3).unwrap());
+    }
+    assert_eq!(events.len(), 1, "{events:?}");
+    let s = sim.sample().unwrap();
+    assert!(s.in_contact[0]);
+    assert!((s.contact_forces[0] - 0.2 * g).abs() < 1e-9, "{s:?}");
+    assert!(s.q[1].abs() < 1e-14 && s.qd[1].abs() < 1e-12, "{s:?}");
+}
+
+/// A 45 g valve-like mass on a 30 N/mm spring in a guide, lengths in mm, no gravity: released
+/// 2 mm from its rest length it oscillates as `x = 2 cos(ω t)`, `ω = √(k/m) = √(30 000/0.045)`
+/// rad/s — the unit's size (1e-3 m) is in that number.
+#[test]
+fn a_mass_on_a_spring_in_millimetres_has_the_closed_form_frequency() {
+    let (m, k) = (0.045, 30.0);
+    let mut sys = System::new();
+    let mass = sys.add_body(Body {
+        name: "valve".into(),
+        mass: m,
+        inertia: 1e-6,
+        pose: camkin::body::Pose::new(Point2::new(0.0, 2.0), 0.0),
+    });
+    sys.add_joint(Joint {
+        name: "guide".into(),
+        kind: JointKind::Prismatic {
+            a: BodyId::GROUND,
+            at_a: Point2::origin(),
+            axis: Vec2::y(),
+            b: mass,
+            at_b: Point2::origin(),
+            angle: 0.0,
+        },
+    });
+    // from the ground 40 mm above, free length 40 mm: no force at y = 0
+    sys.add_force(ForceElement {
+        name: "spring".into(),
+        kind: ForceKind::Spring {
+            a: BodyId::GROUND,
+            at_a: Point2::new(0.0, 40.0),
+            b: mass,
+            at_b: Point2::origin(),
+            stiffness: k,
+            free_length: 40.0,
+            preload: 0.0,
+        },
+    });
+    let opts = SystemDynamicsOptions {
+        metres_per_unit: 1e-3,
+        ..SystemDynamicsOptions::default()
+    };
+    let mut sim = SystemSimulation::new(&sys, opts).unwrap();
+    let w = (k * 1e3 / m).sqrt();
+    let h = 1e-6;
+    let mut worst: f64 = 0.0;
+    let e0 = sim.sample().unwrap().energy;
+    // half a joule-ish: ½ k x² = ½ 30 N/mm (2 mm)² = 60 N·mm
+    assert!((e0 - 60.0).abs() < 1e-12 * 60.0, "{e0}");
+    for _ in 0..2000 {
+        sim.advance(h).unwrap();
+        let s = sim.sample().unwrap();
+        worst = worst.max((s.q[1] - 2.0 * (w * s.time).cos()).abs());
+    }
+    assert!(worst < 1e-9 * 2.0, "off the closed form by {worst} mm");
+}
+
+/// A bar pinned to the ground at one end, under gravity, with a spring from its other end to a
+/// ground point: no damping, so its energy stays, to RK4's `h⁴` (2e-9 of itself over 1 s at
+/// 1 ms steps, and 16 times less at half the step).
+#[test]
+fn an_undamped_pendulum_with_a_spring_keeps_its_energy() {
+    let mut sys = System::new();
+    let bar = sys.add_body(Body {
+        name: "bar".into(),
+        mass: 1.5,
+        inertia: 0.02,
+        pose: camkin::body::Pose::new(Point2::new(0.2, 0.0), 0.0),
+    });
+    sys.add_joint(Joint {
+        name: "pin".into(),
+        kind: JointKind::Revolute {
+            a: BodyId::GROUND,
+            at_a: Point2::origin(),
+            b: bar,
+            at_b: Point2::new(-0.2, 0.0),
+        },
+    });
+    sys.add_force(ForceElement {
+        name: "spring".into(),
+        kind: ForceKind::Spring {
+            a: bar,
+            at_a: Point2::new(0.2, 0.0),
+            b: BodyId::GROUND,
+            at_b: Point2::new(0.5, 0.3),
+            stiffness: 200.0,
+            free_length: 0.2,
+            preload: 5.0,
+        },
+    });
+    let opts = SystemDynamicsOptions {
+        gravity: Vec2::new(0.0, -9.81),
+        ..SystemDynamicsOptions::default()
+    };
+    // the largest energy change over 1 s in steps of h, and the fastest swing
+    let drift = |h: f64| {
+        let mut sim = SystemSimulation::new(&sys, opts).unwrap();
+        let e0 = sim.sample().unwrap().energy;
+        let (mut worst, mut swing) = (0.0f64, 0.0f64);
+        let steps = (1.0 / h).round() as usize;
+        for _ in 0..steps {
+            sim.advance(h).unwrap();
+            let s = sim.sample().unwrap();
+            worst = worst.max((s.energy - e0).abs());
+            swing = swing.max(s.qd[2].abs());
+            // the pin holds
+            assert!(sim.constraint_residual().unwrap() < 1e-13);
+        }
+        (worst / e0.abs(), swing)
+    };
+    let (coarse, swing) = drift(1e-3);
+    let (fine, _) = drift(5e-4);
+    assert!(swing > 1.0, "it swings ({swing} rad/s)");
+    // RK4's error is h⁴: halving the step divides the drift by about 16
+    assert!(coarse < 1e-8, "energy drifted by {coarse:e} of itself");
+    assert!(fine < coarse / 10.0, "{fine:e} at h/2, {coarse:e} at h");
+}
