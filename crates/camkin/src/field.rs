@@ -82,6 +82,8 @@ pub enum SystemTable {
     Damper,
     /// `[[torsion_spring]]`
     TorsionSpring,
+    /// `[dynamics]` (one table: its index is 0)
+    Dynamics,
 }
 
 impl SystemTable {
@@ -95,6 +97,7 @@ impl SystemTable {
             SystemTable::Spring => "spring",
             SystemTable::Damper => "damper",
             SystemTable::TorsionSpring => "torsion_spring",
+            SystemTable::Dynamics => "dynamics",
         }
     }
 }
@@ -153,6 +156,10 @@ pub enum SystemKey {
     MotionFollower(FollowerField),
     /// `motion_direction`
     MotionDirection,
+    /// `restitution`
+    Restitution,
+    /// `gravity`
+    Gravity,
 }
 
 impl SystemKey {
@@ -183,6 +190,8 @@ impl SystemKey {
             SystemKey::FreeAngleDeg => "free_angle_deg",
             SystemKey::Preload => "preload",
             SystemKey::Damping => "damping",
+            SystemKey::Restitution => "restitution",
+            SystemKey::Gravity => "gravity",
         })
     }
 }
@@ -408,7 +417,10 @@ impl Field {
                 }
             }
             Field::System(f) => {
-                p.extend([Name(f.table.name()), Index(f.index)]);
+                p.push(Name(f.table.name()));
+                if f.table != SystemTable::Dynamics {
+                    p.push(Index(f.index));
+                }
                 match f.key {
                     SystemKey::CurveA(c) | SystemKey::CurveB(c) => {
                         p.push(Name(if matches!(f.key, SystemKey::CurveA(_)) {

@@ -13,3 +13,4 @@ pub mod serve;
 pub mod simulate;
 pub mod synth;
 pub mod system;
+pub mod system_simulate;

@@ -83,6 +83,12 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         )));
     }
     let steps = outputs as f64 * args.substeps as f64;
+    // a system file ([[body]], [[joint]], …, [dynamics]) is simulated as a system
+    let (name, text) =
+        crate::mechfile::read_text(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    if camkin::spec::text::is_system(&text) {
+        return super::system_simulate::run(args, &name, &text, outputs);
+    }
     let (mech, params, unit) =
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     let units = Units::plain(&mech, unit);

@@ -160,6 +160,19 @@ pub enum DynamicsError {
         /// what it must be
         reason: &'static str,
     },
+    /// A system's time step too long for its stiffest element: the explicit integration would
+    /// be unstable.
+    #[error("{element} is too stiff for the time step {} s: its rate is {} /s, so the step must be at most {} s", crate::human::human(*.step), crate::human::human(*.rate), crate::human::human(*.max_step))]
+    SystemStepTooLong {
+        /// the element (`spring "valve spring"`, `contact "seat"`)
+        element: String,
+        /// the step asked for, s
+        step: f64,
+        /// its rate, 1/s
+        rate: f64,
+        /// the longest stable step, s
+        max_step: f64,
+    },
     /// The system cannot be simulated: an element names a missing body, or the starting
     /// positions cannot be assembled onto the joints and the contacts in touch.
     #[error("{0}")]

@@ -15,6 +15,9 @@ pub struct BuiltSystem {
     pub warnings: Vec<SpecWarning>,
     /// what the angles of a sweep are: the first driver's, or a cam's
     pub sweep_angle: SweepAngle,
+    /// how it is simulated: the unit's size, gravity and each contact's restitution (a
+    /// system file's `[dynamics]` and `restitution` keys)
+    pub dynamics: crate::dynamics::SystemDynamicsOptions,
 }
 
 /// What the angles a system is swept over mean, and the instant of each.
@@ -85,6 +88,10 @@ impl BuiltSystem {
             system: preset.system,
             length_unit,
             warnings,
+            dynamics: crate::dynamics::SystemDynamicsOptions {
+                metres_per_unit: length_unit.metres(),
+                ..crate::dynamics::SystemDynamicsOptions::default()
+            },
         })
     }
 
@@ -133,6 +140,7 @@ mod tests {
                 speed: 1.0,
                 angular_acceleration: -1.0,
             },
+            dynamics: crate::dynamics::SystemDynamicsOptions::default(),
         };
         let t = built.times(&[0.0, 0.4f64.to_degrees()]).unwrap();
         assert_eq!(t[0], 0.0);

@@ -72,6 +72,26 @@ pub struct SystemSpec {
     /// `[[torsion_spring]]`: between two bodies' angles (for dynamics)
     #[cfg_attr(feature = "serde", serde(default))]
     pub torsion_spring: Vec<TorsionSpringSpec>,
+    /// `[dynamics]`: what a simulation needs beyond the bodies' masses and the force elements;
+    /// with it the system's degrees of freedom need not all be driven (forces move them)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub dynamics: Option<SystemDynamicsSpec>,
+}
+
+/// `[dynamics]` of a system file.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct SystemDynamicsSpec {
+    /// gravity in the world, m/s² (default none)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub gravity: Option<[f64; 2]>,
+    /// Newton's coefficient of restitution of every contact without its own, 0 to 1 (default 0)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub restitution: Option<f64>,
 }
 
 /// `[[spring]]`: `stiffness` N per length, `free_length` (length), `preload` N at it.
@@ -225,6 +245,13 @@ pub struct ContactSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub motion_direction: Option<crate::cam::Sense>,
+    /// Newton's coefficient of restitution of its impacts, 0 to 1 (for dynamics; default the
+    /// `[dynamics]` table's)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub restitution: Option<f64>,
 }
 
 /// The field `key` of element `index` of `table`.
@@ -475,6 +502,28 @@ impl SystemSpec {
             });
         }
         let mut warnings = Vec::new();
+        let unit_interval = |f: Field, e: f64| -> Result<f64, SpecError> {
+            if (0.0..=1.0).contains(&e) {
+                Ok(e)
+            } else {
+                Err(SpecError::Invalid {
+                    field: f,
+                    value: crate::human::human(e),
+                    reason: "must be from 0 to 1".into(),
+                })
+            }
+        };
+        let (gravity, default_restitution) = match &self.dynamics {
+            Some(d) => (
+                d.gravity,
+                match d.restitution {
+                    Some(e) => unit_interval(at(T::Dynamics, 0, K::Restitution), e)?,
+                    None => 0.0,
+                },
+            ),
+            None => (None, 0.0),
+        };
+        let mut restitution = Vec::with_capacity(self.contact.len());
         for (i, c) in self.contact.iter().enumerate() {
             named(T::Contact, i, &c.name)?;
             let [a, b] = two(T::Contact, i, &c.bodies)?;
@@ -539,6 +588,10 @@ impl SystemSpec {
             };
             let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
             let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;
+            restitution.push(match c.restitution {
+                Some(e) => unit_interval(at(T::Contact, i, K::Restitution), e)?,
+                None => default_restitution,
+            });
             sys.add_contact(Contact {
                 name: c.name.clone(),
                 a,
@@ -638,23 +691,36 @@ impl SystemSpec {
                 },
             });
         }
-        // as many rows as coordinates: the one rule of the whole
+        // as many rows as coordinates, unless forces move the free degrees of freedom
         let (rows, coords) = (sys.rows(), 3 * sys.bodies().len());
-        if rows != coords {
+        if rows != coords && self.dynamics.is_none() {
             return Err(SpecError::Rule {
                 // at the last driver: the rule is most often met by driving one more coordinate
                 field: at(T::Driver, self.driver.len().saturating_sub(1), K::Table),
                 reason: format!(
-                    "the system has {coords} coordinates (three for each of its {} bodies) and {rows} constraint rows (revolute and prismatic joints 2 each, fixed 3, drivers and contacts 1): a kinematic analysis needs as many rows as coordinates (drive each degree of freedom, or remove a redundant joint)",
+                    "the system has {coords} coordinates (three for each of its {} bodies) and {rows} constraint rows (revolute and prismatic joints 2 each, fixed 3, drivers and contacts 1): a kinematic analysis needs as many rows as coordinates (drive each degree of freedom, or remove a redundant joint; a system simulated with [dynamics] need not)",
                     sys.bodies().len()
                 ),
             });
         }
+        let dynamics = crate::dynamics::SystemDynamicsOptions {
+            metres_per_unit: if options.si { 1.0 } else { unit.metres() },
+            gravity: match gravity {
+                Some(g) => {
+                    let g = point(at(T::Dynamics, 0, K::Gravity), g)?;
+                    crate::Vec2::new(g.x, g.y)
+                }
+                None => crate::Vec2::zeros(),
+            },
+            restitution,
+            ..crate::dynamics::SystemDynamicsOptions::default()
+        };
         Ok(BuiltSystem {
             system: sys,
             length_unit: unit,
             warnings,
             sweep_angle: SweepAngle::FirstDriver,
+            dynamics,
         })
     }
 }

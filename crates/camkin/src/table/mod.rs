@@ -11,6 +11,7 @@ mod contacts;
 mod mesh;
 mod sweep;
 mod system;
+mod system_dynamics;
 mod units;
 
 pub use crate::cam::{contact_jumps, contact_jumps_with};
@@ -24,6 +25,9 @@ pub use contacts::{contact_cells, contact_columns, ContactRow};
 pub use mesh::{mesh_cells, mesh_columns, MeshRow};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
 pub use system::{system_cells, system_columns, system_contact_cells, system_contact_columns};
+pub use system_dynamics::{
+    system_event_cells, system_event_columns, system_sample_cells, system_sample_columns,
+};
 pub use units::{AngleUnit, Per, Units, UnknownUnit};
 
 /// How a row's contact was found.

@@ -48,7 +48,7 @@ fn a_dropped_block_flies_lands_and_bounces_as_the_closed_forms_say() {
     let sys = dropped_block(h0);
     let opts = SystemDynamicsOptions {
         gravity: Vec2::new(0.0, -g),
-        restitution: e,
+        restitution: vec![e],
         ..SystemDynamicsOptions::default()
     };
     let mut sim = SystemSimulation::new(&sys, opts).unwrap();
@@ -110,7 +110,7 @@ fn a_block_landing_without_rebound_rests_with_its_weight_on_the_seat() {
     let sys = dropped_block(h0);
     let opts = SystemDynamicsOptions {
         gravity: Vec2::new(0.0, -g),
-        restitution: 0.0,
+        restitution: vec![0.0],
         ..SystemDynamicsOptions::default()
     };
     let mut sim = SystemSimulation::new(&sys, opts).unwrap();
@@ -220,7 +220,7 @@ fn an_undamped_pendulum_with_a_spring_keeps_its_energy() {
     };
     // the largest energy change over 1 s in steps of h, and the fastest swing
     let drift = |h: f64| {
-        let mut sim = SystemSimulation::new(&sys, opts).unwrap();
+        let mut sim = SystemSimulation::new(&sys, opts.clone()).unwrap();
         let e0 = sim.sample().unwrap().energy;
         let (mut worst, mut swing) = (0.0f64, 0.0f64);
         let steps = (1.0 / h).round() as usize;

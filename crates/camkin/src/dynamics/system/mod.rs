@@ -22,23 +22,25 @@
 //! in kg·m² (converted with the unit's size in metres), forces in N, stiffnesses in N/L, gravity
 //! in m/s²; energies are reported in N·L.
 
-use super::follower::{EventKind, REBOUND_TOLERANCE};
+mod step;
+
+use super::follower::EventKind;
 use super::model::{Constraint, ForceElement, RigidBody, System};
-use super::projection::DenseRows;
 use super::{AugmentedLagrangian, DynamicsError};
 use crate::contact::{self, Pairing, Proximity, SearchOptions, Surface};
 use crate::geometry::Vec2;
 use crate::system::SystemError;
 
 /// How a system is simulated.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SystemDynamicsOptions {
     /// the system's length unit in metres (1e-3 for mm)
     pub metres_per_unit: f64,
     /// gravity in the world, m/s²
     pub gravity: Vec2,
-    /// Newton's coefficient of restitution of every contact, 0 to 1
-    pub restitution: f64,
+    /// Newton's coefficient of restitution of each contact, 0 to 1, in the system's order (a
+    /// contact past the list's end: 0)
+    pub restitution: Vec<f64>,
     /// the augmented Lagrangian's parameters; by default its penalty is 1e4 of the largest mass
     /// (see [`SystemDynamicsOptions::default`])
     pub al: AugmentedLagrangian,
@@ -54,7 +56,7 @@ impl Default for SystemDynamicsOptions {
         Self {
             metres_per_unit: 1.0,
             gravity: Vec2::zeros(),
-            restitution: 0.0,
+            restitution: Vec::new(),
             al: AugmentedLagrangian {
                 penalty: 1e4,
                 ..AugmentedLagrangian::default()
@@ -108,6 +110,10 @@ pub struct SystemSimulation<'a> {
     /// the model's constraint index of contact 0 (joints, then drivers, then contacts)
     first_contact: usize,
     size: f64,
+    /// each contact's sense: +1 where its gap (along curve A's left normal, or B's where A is
+    /// a point) is positive apart — the curve runs with its material on its left — and −1
+    /// where that curve runs the other way round (a cam synthesised clockwise)
+    sense: Vec<f64>,
     /// a speed of the system (its drivers' rates times the size, or `√(g size)`), for the
     /// rebound that re-engages a contact
     speed_scale: f64,
@@ -146,13 +152,18 @@ impl<'a> SystemSimulation<'a> {
                 reason: "must be positive",
             });
         }
-        if !(0.0..=1.0).contains(&opts.restitution) {
-            return Err(DynamicsError::Element {
-                element: "every contact".into(),
-                key: "restitution",
-                value: opts.restitution,
-                reason: "must be from 0 to 1",
-            });
+        for (k, &e) in opts.restitution.iter().enumerate() {
+            if !(0.0..=1.0).contains(&e) {
+                return Err(DynamicsError::Element {
+                    element: format!(
+                        "contact {:?}",
+                        sys.contacts().get(k).map_or("?", |c| c.name.as_str())
+                    ),
+                    key: "restitution",
+                    value: e,
+                    reason: "must be from 0 to 1",
+                });
+            }
         }
         let mut bodies = Vec::with_capacity(sys.bodies().len());
         for b in sys.bodies() {
@@ -223,12 +234,24 @@ impl<'a> SystemSimulation<'a> {
             .flat_map(|b| [b.pose.origin.x, b.pose.origin.y, b.pose.angle])
             .collect();
         let nc = sys.contacts().len();
+        let sense = sys
+            .contacts()
+            .iter()
+            .map(|c| {
+                if matches!(c.curve_a.domain(), crate::curve::Domain::Point) {
+                    orientation(c.curve_b.as_ref())
+                } else {
+                    orientation(c.curve_a.as_ref())
+                }
+            })
+            .collect();
         let mut sim = Self {
             sys,
             model,
             opts,
             first_contact,
             size,
+            sense,
             speed_scale,
             t: 0.0,
             qd: vec![0.0; q.len()],
@@ -253,7 +276,7 @@ impl<'a> SystemSimulation<'a> {
                 reason: e.to_string(),
             })?;
             let (Proximity::Apart(p) | Proximity::Touching(p) | Proximity::Overlapping(p)) = found;
-            sim.in_contact[k] = p.gap <= STARTS_IN_TOUCH * size;
+            sim.in_contact[k] = sim.sense[k] * p.gap <= STARTS_IN_TOUCH * size;
             sim.pairings[first_contact + k] = Some(p);
         }
         sim.project().map_err(|e| match e {
@@ -307,153 +330,6 @@ impl<'a> SystemSimulation<'a> {
         let mut a = vec![true; self.first_contact];
         a.extend_from_slice(in_contact);
         a
-    }
-
-    /// `(q̈, each contact's compressive force, the drivers' power)` at a state in the modes
-    /// `in_contact`.
-    fn accel(
-        &self,
-        t: f64,
-        q: &[f64],
-        qd: &[f64],
-        in_contact: &[bool],
-        pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<f64>, Vec<f64>, f64), DynamicsError> {
-        let active = self.active(in_contact);
-        let e = self
-            .model
-            .evaluate(&self.opts.al, t, q, qd, &active, pairings)?;
-        // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
-        // a contact's compressive force −λ (its row is the gap, positive apart)
-        let mut forces = vec![0.0; in_contact.len()];
-        let (mut r, mut power) = (0, 0.0);
-        for (k, c) in self.model.constraints.iter().enumerate() {
-            if !active[k] {
-                continue;
-            }
-            if let Constraint::Driver {
-                body, coordinate, ..
-            } = c
-            {
-                power -= e.lambda[r] * qd[3 * body + coordinate.index()];
-            }
-            if k >= self.first_contact {
-                forces[k - self.first_contact] = -e.lambda[r];
-            }
-            r += c.rows();
-        }
-        Ok((e.qdd, forces, power))
-    }
-
-    /// One RK4 step of `h` from the current state in the current modes: the state at its end,
-    /// the pairings there and the drivers' work over it.
-    #[allow(clippy::type_complexity)]
-    fn rk4(
-        &self,
-        h: f64,
-    ) -> Result<(Vec<f64>, Vec<f64>, Vec<Option<Pairing>>, f64), DynamicsError> {
-        let (t, q, qd, modes) = (self.t, &self.q, &self.qd, &self.in_contact);
-        let mut p = self.pairings.clone();
-        let add = |a: &[f64], b: &[f64], s: f64| -> Vec<f64> {
-            a.iter().zip(b).map(|(x, y)| x + s * y).collect()
-        };
-        let (a1, _, w1) = self.accel(t, q, qd, modes, &mut p)?;
-        let (q2, v2) = (add(q, qd, 0.5 * h), add(qd, &a1, 0.5 * h));
-        let (a2, _, w2) = self.accel(t + 0.5 * h, &q2, &v2, modes, &mut p)?;
-        let (q3, v3) = (add(q, &v2, 0.5 * h), add(qd, &a2, 0.5 * h));
-        let (a3, _, w3) = self.accel(t + 0.5 * h, &q3, &v3, modes, &mut p)?;
-        let (q4, v4) = (add(q, &v3, h), add(qd, &a3, h));
-        let (a4, _, w4) = self.accel(t + h, &q4, &v4, modes, &mut p)?;
-        let n = q.len();
-        let qn = (0..n)
-            .map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]))
-            .collect();
-        let vn = (0..n)
-            .map(|i| qd[i] + h / 6.0 * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]))
-            .collect();
-        Ok((qn, vn, p, h / 6.0 * (w1 + 2.0 * w2 + 2.0 * w3 + w4)))
-    }
-
-    /// Contact `k`'s gap at the state `(q, q̇)` along the common normal of its nearest points
-    /// (Newton from its pairing, kept).
-    fn gap(
-        &self,
-        q: &[f64],
-        qd: &[f64],
-        k: usize,
-        pairings: &mut [Option<Pairing>],
-    ) -> Result<f64, DynamicsError> {
-        let c = &self.sys.contacts()[k];
-        let (sa, sb) = (
-            super::model::body_state(q, qd, c.a.0),
-            super::model::body_state(q, qd, c.b.0),
-        );
-        let slot = &mut pairings[self.first_contact + k];
-        let p0 = slot.expect("every contact has a pairing from the start");
-        let p = contact::refine(
-            &Surface::new(c.curve_a.as_ref(), &sa),
-            &Surface::new(c.curve_b.as_ref(), &sb),
-            p0.u_a,
-            p0.u_b,
-            &self.model.search,
-        )
-        .map_err(|source| DynamicsError::Contact {
-            time: self.t,
-            source,
-        })?;
-        *slot = Some(p);
-        Ok(p.gap)
-    }
-
-    /// The active rows at `(q, q̇)` as dense rows.
-    fn dense(
-        &self,
-        q: &[f64],
-        qd: &[f64],
-        in_contact: &[bool],
-        pairings: &mut [Option<Pairing>],
-    ) -> Result<DenseRows, DynamicsError> {
-        self.model
-            .dense_rows(self.t, q, qd, &self.active(in_contact), pairings)
-            .map_err(|source| DynamicsError::Contact {
-                time: self.t,
-                source,
-            })
-    }
-
-    /// Positions by Newton onto the active rows (mass-orthogonal), then velocities onto
-    /// `Φ_q q̇ = −Φ_t`.
-    fn project(&mut self) -> Result<(), DynamicsError> {
-        let n = self.q.len();
-        let mut pairings = self.pairings.clone();
-        let modes = self.in_contact.clone();
-        let mut rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
-        let mut x = vec![0.0; n];
-        for _ in 0..8 {
-            if rows.phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
-                break;
-            }
-            let b: Vec<f64> = rows.phi.iter().map(|p| -p).collect();
-            if !self
-                .model
-                .project_onto(&rows, &vec![0.0; n], &b[..rows.m], &mut x)
-            {
-                return Err(DynamicsError::Singular { time: self.t });
-            }
-            for (q, d) in self.q.iter_mut().zip(&x) {
-                *q += d;
-            }
-            rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
-        }
-        if !self
-            .model
-            .project_onto(&rows, &self.qd, &rows.target, &mut x)
-        {
-            return Err(DynamicsError::Singular { time: self.t });
-        }
-        self.qd.copy_from_slice(&x);
-        self.pairings = pairings;
-        Ok(())
     }
 
     /// The largest `|Φ|` of the active rows now, L (angles' rows in rad): the drift.
@@ -515,148 +391,75 @@ impl<'a> SystemSimulation<'a> {
         })
     }
 
-    /// Advances by `h` seconds, locating every lift-off and impact inside the step.
-    pub fn advance(&mut self, h: f64) -> Result<Vec<ContactEvent>, DynamicsError> {
-        if !(h > 0.0 && h.is_finite()) {
-            return Err(DynamicsError::Element {
-                element: "the simulation".into(),
-                key: "time step (s)",
-                value: h,
-                reason: "must be positive",
-            });
-        }
-        let mut events = std::mem::take(&mut self.pending);
-        let end = self.t + h;
-        while self.t < end - 1e-15 * end.abs().max(1.0) {
-            if events.len() > MAX_EVENTS {
-                return Err(DynamicsError::Chatter {
-                    time: self.t,
-                    events: MAX_EVENTS,
-                });
-            }
-            let dt = end - self.t;
-            let saved = (
-                self.q.clone(),
-                self.qd.clone(),
-                self.pairings.clone(),
-                self.t,
-                self.work,
-            );
-            let (qn, vn, pn, dw) = self.rk4(dt)?;
-            (self.q, self.qd, self.pairings, self.t) = (qn, vn, pn, end);
-            self.work += dw;
-            self.project()?;
-            // what ended the step: a contact pulled, or a gap closed
-            let mut p = self.pairings.clone();
-            let (_, forces, _) = self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
-            let mut crossing = Vec::new();
-            for (k, &force) in forces.iter().enumerate() {
-                if self.in_contact[k] {
-                    if force < 0.0 {
-                        crossing.push(k);
-                    }
-                } else if self.gap(&self.q, &self.qd, k, &mut p)? < -1e-12 * self.size {
-                    crossing.push(k);
+    /// The fastest rate of the system's force elements, 1/s, and the element: a spring's
+    /// `√(k/m)` or a damper's `c/m` with `m` the lighter of its two bodies (the ground's
+    /// infinite), a torsion spring's `√(k/I)` with the smaller inertia. RK4 is stable for a
+    /// step up to [`super::MAX_RATE_STEP`] over it.
+    pub fn fastest_rate(&self) -> (f64, String) {
+        let mass = |id: crate::system::BodyId, angular: bool| {
+            id.index().map_or(f64::INFINITY, |i| {
+                let b = &self.model.bodies[i];
+                if angular {
+                    b.inertia
+                } else {
+                    b.mass
                 }
-            }
-            if crossing.is_empty() {
-                continue;
-            }
-            (self.q, self.qd, self.pairings, self.t, self.work) = saved;
-            // the first crossing, each located by bisection on its own quantity
-            let mut first = (f64::INFINITY, 0);
-            for &k in &crossing {
-                let tau = self.bisect(dt, k)?;
-                if tau < first.0 {
-                    first = (tau, k);
+            })
+        };
+        let mut fastest = (0.0, String::new());
+        for f in self.sys.forces() {
+            let [a, b] = f.kind.bodies();
+            let rate = match f.kind {
+                crate::system::ForceKind::Spring { stiffness, .. } => {
+                    (stiffness / mass(a, false).min(mass(b, false))).sqrt()
                 }
-            }
-            let (tau, k) = first;
-            let (qn, vn, pn, dw) = self.rk4(tau)?;
-            (self.q, self.qd, self.pairings) = (qn, vn, pn);
-            self.t += tau;
-            self.work += dw;
-            if self.in_contact[k] {
-                self.project()?;
-                self.in_contact[k] = false;
-                events.push(ContactEvent {
-                    kind: EventKind::LiftOff,
-                    time: self.t,
-                    contact: k,
-                    approach: 0.0,
-                });
-            } else {
-                let mut p = self.pairings.clone();
-                self.gap(&self.q.clone(), &self.qd.clone(), k, &mut p)?;
-                self.pairings = p;
-                self.project()?;
-                let approach = self.impact(k)?;
-                events.push(ContactEvent {
-                    kind: EventKind::Impact,
-                    time: self.t,
-                    contact: k,
-                    approach,
-                });
-            }
-        }
-        Ok(events)
-    }
-
-    /// The sub-step `τ ∈ (0, dt]` at whose end contact `k`'s force (in touch) or gap (in flight)
-    /// crosses zero, integrating in the current modes.
-    fn bisect(&self, dt: f64, k: usize) -> Result<f64, DynamicsError> {
-        let (mut lo, mut hi) = (0.0, dt);
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            let (q, v, mut p, _) = self.rk4(mid)?;
-            let value = if self.in_contact[k] {
-                self.accel(self.t + mid, &q, &v, &self.in_contact, &mut p)?
-                    .1[k]
-            } else {
-                self.gap(&q, &v, k, &mut p)? + 1e-12 * self.size
+                crate::system::ForceKind::Damper { damping, .. } => {
+                    damping / mass(a, false).min(mass(b, false))
+                }
+                crate::system::ForceKind::TorsionSpring { stiffness, .. } => {
+                    (stiffness / mass(a, true).min(mass(b, true))).sqrt()
+                }
             };
-            if value >= 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-            if hi - lo <= 1e-14 * (1.0 + self.t) {
-                break;
+            if rate > fastest.0 {
+                let kind = match f.kind {
+                    crate::system::ForceKind::Damper { .. } => "damper",
+                    crate::system::ForceKind::TorsionSpring { .. } => "torsion spring",
+                    _ => "spring",
+                };
+                fastest = (rate, format!("{kind} {:?}", f.name));
             }
         }
-        Ok(0.5 * (lo + hi))
+        fastest
     }
 
-    /// An impact of contact `k` now: the velocities projected so that its normal velocity
-    /// reverses times the restitution, every joint, driver and contact in touch held; the
-    /// approach speed. The contact re-engages when the rebound is negligible.
-    fn impact(&mut self, k: usize) -> Result<f64, DynamicsError> {
-        let mut modes = self.in_contact.clone();
-        modes[k] = true;
-        let mut pairings = self.pairings.clone();
-        let rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
-        // the impacting contact's row among the active rows
-        let active = self.active(&modes);
-        let r: usize = self.model.constraints[..self.first_contact + k]
-            .iter()
-            .zip(&active)
-            .filter(|(_, &a)| a)
-            .map(|(c, _)| c.rows())
-            .sum();
-        let vn: f64 = rows.row(r).iter().zip(&self.qd).map(|(a, b)| a * b).sum();
-        let mut targets = rows.target.to_vec();
-        targets[r] = -self.opts.restitution * vn;
-        let mut x = vec![0.0; self.qd.len()];
-        if !self
-            .model
-            .project_onto(&rows, &self.qd, &targets[..rows.m], &mut x)
-        {
-            return Err(DynamicsError::Singular { time: self.t });
+    /// The longest step [`SystemSimulation::advance`] accepts, s.
+    pub fn max_step(&self) -> f64 {
+        let (rate, _) = self.fastest_rate();
+        if rate > 0.0 {
+            super::MAX_RATE_STEP / rate
+        } else {
+            f64::INFINITY
         }
-        self.qd = x;
-        let approach = vn.abs();
-        self.in_contact[k] =
-            self.opts.restitution * approach <= REBOUND_TOLERANCE * self.speed_scale;
-        Ok(approach)
+    }
+}
+
+/// +1 for a curve that runs with its material on its left (a closed curve counter-clockwise:
+/// positive area by the shoelace formula over 512 points), −1 for a closed curve run clockwise;
+/// +1 for an open curve or a point (the convention).
+fn orientation(curve: &dyn crate::curve::Curve) -> f64 {
+    match curve.domain() {
+        crate::curve::Domain::Periodic { period } => {
+            let n = 512;
+            let p = |k: usize| curve.position(period * k as f64 / n as f64);
+            let area2: f64 = (0..n)
+                .map(|k| crate::geometry::cross(p(k).coords, p((k + 1) % n).coords))
+                .sum();
+            if area2 >= 0.0 {
+                1.0
+            } else {
+                -1.0
+            }
+        }
+        _ => 1.0,
     }
 }

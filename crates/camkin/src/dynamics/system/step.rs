@@ -1,0 +1,404 @@
+//! A simulated system's steps: the equations of motion at a state (solved directly, or by the
+//! augmented Lagrangian where rows are dependent), RK4, the projection onto the rows, and the
+//! events inside a step (lift-offs by bisection on the force, impacts by bisection on the gap).
+
+use super::super::follower::{EventKind, REBOUND_TOLERANCE};
+use super::super::model::Constraint;
+use super::super::projection::DenseRows;
+use super::super::DynamicsError;
+use super::{ContactEvent, SystemSimulation, MAX_EVENTS};
+use crate::contact::{self, Pairing, Surface};
+
+impl SystemSimulation<'_> {
+    /// `(q̈, each contact's compressive force, the drivers' power)` at a state in the modes
+    /// `in_contact`.
+    pub(super) fn accel(
+        &self,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        in_contact: &[bool],
+        pairings: &mut [Option<Pairing>],
+    ) -> Result<(Vec<f64>, Vec<f64>, f64), DynamicsError> {
+        let active = self.active(in_contact);
+        let (qdd, lambda) = match self.direct(t, q, qd, &active, pairings)? {
+            Some(x) => x,
+            // dependent rows (a redundant joint): the augmented Lagrangian, whose matrix stays
+            // positive definite there
+            None => {
+                let e = self
+                    .model
+                    .evaluate(&self.opts.al, t, q, qd, &active, pairings)?;
+                (e.qdd, e.lambda)
+            }
+        };
+        // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
+        // a contact's compressive force −λ (its row is the gap, positive apart)
+        let mut forces = vec![0.0; in_contact.len()];
+        let (mut r, mut power) = (0, 0.0);
+        for (k, c) in self.model.constraints.iter().enumerate() {
+            if !active[k] {
+                continue;
+            }
+            if let Constraint::Driver {
+                body, coordinate, ..
+            } = c
+            {
+                power -= lambda[r] * qd[3 * body + coordinate.index()];
+            }
+            if k >= self.first_contact {
+                let c = k - self.first_contact;
+                forces[c] = -self.sense[c] * lambda[r];
+            }
+            r += c.rows();
+        }
+        Ok((qdd, forces, power))
+    }
+
+    /// The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ − 2ξΩ Φ̇ − Ω² Φ` solved directly
+    /// by the Schur complement: `(Φ_q M⁻¹ Φ_qᵀ) λ = Φ_q M⁻¹ Q − γ̃` (Cholesky; a symmetric
+    /// diagonal scaling does not change its accuracy, so masses a hundred thousand times apart
+    /// cost nothing), `q̈ = M⁻¹ (Q − Φ_qᵀ λ)`. `None` where the rows are dependent.
+    #[allow(clippy::type_complexity)]
+    fn direct(
+        &self,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        active: &[bool],
+        pairings: &mut [Option<Pairing>],
+    ) -> Result<Option<(Vec<f64>, Vec<f64>)>, DynamicsError> {
+        let n = q.len();
+        let al = &self.opts.al;
+        let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
+        let mut jac = Vec::new();
+        let mut rhs = Vec::new();
+        for (k, c) in self.model.constraints.iter().enumerate() {
+            if !active[k] {
+                continue;
+            }
+            let rows = self
+                .model
+                .rows(c, t, q, qd, &mut pairings[k])
+                .map_err(|source| DynamicsError::Contact { time: t, source })?;
+            for row in rows.iter() {
+                let mut dense = vec![0.0; n];
+                for &(col, v) in row.jac() {
+                    dense[col] += v;
+                }
+                let phi_dot = super::super::dense::dot(&dense, qd) - c.target_rate(t);
+                rhs.push(row.gamma - c1 * phi_dot - c2 * row.phi);
+                jac.extend(dense);
+            }
+        }
+        let m = rhs.len();
+        let inv_mass: Vec<f64> = self
+            .model
+            .bodies
+            .iter()
+            .flat_map(|b| [1.0 / b.mass, 1.0 / b.mass, 1.0 / b.inertia])
+            .collect();
+        let mut force = vec![0.0; n];
+        self.model.forces(q, qd, &mut force);
+        let row = |r: usize| &jac[r * n..(r + 1) * n];
+        // S = J M⁻¹ Jᵀ (its lower triangle) and J M⁻¹ Q − γ̃
+        let mut schur = vec![0.0; m * m];
+        let mut lambda = vec![0.0; m];
+        for a in 0..m {
+            for b in 0..=a {
+                schur[a * m + b] = (0..n).map(|i| row(a)[i] * inv_mass[i] * row(b)[i]).sum();
+            }
+            lambda[a] = (0..n)
+                .map(|i| row(a)[i] * inv_mass[i] * force[i])
+                .sum::<f64>()
+                - rhs[a];
+        }
+        let diagonal: Vec<f64> = (0..m).map(|a| schur[a * m + a]).collect();
+        if !super::super::dense::cholesky(&mut schur, m) {
+            return Ok(None);
+        }
+        // a pivot far below its row's size: dependent rows, not an answer
+        if (0..m).any(|a| schur[a * m + a].powi(2) <= 1e-12 * diagonal[a]) {
+            return Ok(None);
+        }
+        super::super::dense::cholesky_solve(&schur, m, &mut lambda);
+        let mut qdd = force;
+        for (r, &l) in lambda.iter().enumerate() {
+            for (x, a) in qdd.iter_mut().zip(row(r)) {
+                *x -= a * l;
+            }
+        }
+        for (x, w) in qdd.iter_mut().zip(&inv_mass) {
+            *x *= w;
+        }
+        Ok(Some((qdd, lambda)))
+    }
+
+    /// One RK4 step of `h` from the current state in the current modes: the state at its end,
+    /// the pairings there and the drivers' work over it.
+    #[allow(clippy::type_complexity)]
+    fn rk4(
+        &self,
+        h: f64,
+    ) -> Result<(Vec<f64>, Vec<f64>, Vec<Option<Pairing>>, f64), DynamicsError> {
+        let (t, q, qd, modes) = (self.t, &self.q, &self.qd, &self.in_contact);
+        let mut p = self.pairings.clone();
+        let add = |a: &[f64], b: &[f64], s: f64| -> Vec<f64> {
+            a.iter().zip(b).map(|(x, y)| x + s * y).collect()
+        };
+        let (a1, _, w1) = self.accel(t, q, qd, modes, &mut p)?;
+        let (q2, v2) = (add(q, qd, 0.5 * h), add(qd, &a1, 0.5 * h));
+        let (a2, _, w2) = self.accel(t + 0.5 * h, &q2, &v2, modes, &mut p)?;
+        let (q3, v3) = (add(q, &v2, 0.5 * h), add(qd, &a2, 0.5 * h));
+        let (a3, _, w3) = self.accel(t + 0.5 * h, &q3, &v3, modes, &mut p)?;
+        let (q4, v4) = (add(q, &v3, h), add(qd, &a3, h));
+        let (a4, _, w4) = self.accel(t + h, &q4, &v4, modes, &mut p)?;
+        let n = q.len();
+        let qn = (0..n)
+            .map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]))
+            .collect();
+        let vn = (0..n)
+            .map(|i| qd[i] + h / 6.0 * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]))
+            .collect();
+        Ok((qn, vn, p, h / 6.0 * (w1 + 2.0 * w2 + 2.0 * w3 + w4)))
+    }
+
+    /// Contact `k`'s gap at the state `(q, q̇)` along the common normal of its nearest points
+    /// (Newton from its pairing, kept).
+    pub(super) fn gap(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        k: usize,
+        pairings: &mut [Option<Pairing>],
+    ) -> Result<f64, DynamicsError> {
+        let c = &self.sys.contacts()[k];
+        let (sa, sb) = (
+            super::super::model::body_state(q, qd, c.a.0),
+            super::super::model::body_state(q, qd, c.b.0),
+        );
+        let slot = &mut pairings[self.first_contact + k];
+        let p0 = slot.expect("every contact has a pairing from the start");
+        let p = contact::refine(
+            &Surface::new(c.curve_a.as_ref(), &sa),
+            &Surface::new(c.curve_b.as_ref(), &sb),
+            p0.u_a,
+            p0.u_b,
+            &self.model.search,
+        )
+        .map_err(|source| DynamicsError::Contact {
+            time: self.t,
+            source,
+        })?;
+        *slot = Some(p);
+        Ok(self.sense[k] * p.gap)
+    }
+
+    /// The active rows at `(q, q̇)` as dense rows.
+    pub(super) fn dense(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        in_contact: &[bool],
+        pairings: &mut [Option<Pairing>],
+    ) -> Result<DenseRows, DynamicsError> {
+        self.model
+            .dense_rows(self.t, q, qd, &self.active(in_contact), pairings)
+            .map_err(|source| DynamicsError::Contact {
+                time: self.t,
+                source,
+            })
+    }
+
+    /// Positions by Newton onto the active rows (mass-orthogonal), then velocities onto
+    /// `Φ_q q̇ = −Φ_t`.
+    pub(super) fn project(&mut self) -> Result<(), DynamicsError> {
+        let n = self.q.len();
+        let mut pairings = self.pairings.clone();
+        let modes = self.in_contact.clone();
+        let mut rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
+        let mut x = vec![0.0; n];
+        for _ in 0..8 {
+            if rows.phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
+                break;
+            }
+            let b: Vec<f64> = rows.phi.iter().map(|p| -p).collect();
+            if !self
+                .model
+                .project_onto(&rows, &vec![0.0; n], &b[..rows.m], &mut x)
+            {
+                return Err(DynamicsError::Singular { time: self.t });
+            }
+            for (q, d) in self.q.iter_mut().zip(&x) {
+                *q += d;
+            }
+            rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
+        }
+        if !self
+            .model
+            .project_onto(&rows, &self.qd, &rows.target, &mut x)
+        {
+            return Err(DynamicsError::Singular { time: self.t });
+        }
+        self.qd.copy_from_slice(&x);
+        self.pairings = pairings;
+        Ok(())
+    }
+
+    /// Advances by `h` seconds, locating every lift-off and impact inside the step. A step
+    /// longer than [`SystemSimulation::max_step`] is refused, naming the stiffest element.
+    pub fn advance(&mut self, h: f64) -> Result<Vec<ContactEvent>, DynamicsError> {
+        if !(h > 0.0 && h.is_finite()) {
+            return Err(DynamicsError::Element {
+                element: "the simulation".into(),
+                key: "time step (s)",
+                value: h,
+                reason: "must be positive",
+            });
+        }
+        let max_step = self.max_step();
+        if h > max_step * (1.0 + 1e-12) {
+            let (rate, element) = self.fastest_rate();
+            return Err(DynamicsError::SystemStepTooLong {
+                element,
+                step: h,
+                rate,
+                max_step,
+            });
+        }
+        let mut events = std::mem::take(&mut self.pending);
+        let end = self.t + h;
+        while self.t < end - 1e-15 * end.abs().max(1.0) {
+            if events.len() > MAX_EVENTS {
+                return Err(DynamicsError::Chatter {
+                    time: self.t,
+                    events: MAX_EVENTS,
+                });
+            }
+            let dt = end - self.t;
+            let saved = (
+                self.q.clone(),
+                self.qd.clone(),
+                self.pairings.clone(),
+                self.t,
+                self.work,
+            );
+            let (qn, vn, pn, dw) = self.rk4(dt)?;
+            (self.q, self.qd, self.pairings, self.t) = (qn, vn, pn, end);
+            self.work += dw;
+            self.project()?;
+            // what ended the step: a contact pulled, or a gap closed
+            let mut p = self.pairings.clone();
+            let (_, forces, _) = self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
+            let mut crossing = Vec::new();
+            for (k, &force) in forces.iter().enumerate() {
+                if self.in_contact[k] {
+                    if force < 0.0 {
+                        crossing.push(k);
+                    }
+                } else if self.gap(&self.q, &self.qd, k, &mut p)? < -1e-12 * self.size {
+                    crossing.push(k);
+                }
+            }
+            if crossing.is_empty() {
+                continue;
+            }
+            (self.q, self.qd, self.pairings, self.t, self.work) = saved;
+            // the first crossing, each located by bisection on its own quantity
+            let mut first = (f64::INFINITY, 0);
+            for &k in &crossing {
+                let tau = self.bisect(dt, k)?;
+                if tau < first.0 {
+                    first = (tau, k);
+                }
+            }
+            let (tau, k) = first;
+            let (qn, vn, pn, dw) = self.rk4(tau)?;
+            (self.q, self.qd, self.pairings) = (qn, vn, pn);
+            self.t += tau;
+            self.work += dw;
+            if self.in_contact[k] {
+                self.project()?;
+                self.in_contact[k] = false;
+                events.push(ContactEvent {
+                    kind: EventKind::LiftOff,
+                    time: self.t,
+                    contact: k,
+                    approach: 0.0,
+                });
+            } else {
+                let mut p = self.pairings.clone();
+                self.gap(&self.q.clone(), &self.qd.clone(), k, &mut p)?;
+                self.pairings = p;
+                self.project()?;
+                let approach = self.impact(k)?;
+                events.push(ContactEvent {
+                    kind: EventKind::Impact,
+                    time: self.t,
+                    contact: k,
+                    approach,
+                });
+            }
+        }
+        Ok(events)
+    }
+
+    /// The sub-step `τ ∈ (0, dt]` at whose end contact `k`'s force (in touch) or gap (in flight)
+    /// crosses zero, integrating in the current modes.
+    fn bisect(&self, dt: f64, k: usize) -> Result<f64, DynamicsError> {
+        let (mut lo, mut hi) = (0.0, dt);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            let (q, v, mut p, _) = self.rk4(mid)?;
+            let value = if self.in_contact[k] {
+                self.accel(self.t + mid, &q, &v, &self.in_contact, &mut p)?
+                    .1[k]
+            } else {
+                self.gap(&q, &v, k, &mut p)? + 1e-12 * self.size
+            };
+            if value >= 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            if hi - lo <= 1e-14 * (1.0 + self.t) {
+                break;
+            }
+        }
+        Ok(0.5 * (lo + hi))
+    }
+
+    /// An impact of contact `k` now: the velocities projected so that its normal velocity
+    /// reverses times the restitution, every joint, driver and contact in touch held; the
+    /// approach speed. The contact re-engages when the rebound is negligible.
+    fn impact(&mut self, k: usize) -> Result<f64, DynamicsError> {
+        let mut modes = self.in_contact.clone();
+        modes[k] = true;
+        let mut pairings = self.pairings.clone();
+        let rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
+        // the impacting contact's row among the active rows
+        let active = self.active(&modes);
+        let r: usize = self.model.constraints[..self.first_contact + k]
+            .iter()
+            .zip(&active)
+            .filter(|(_, &a)| a)
+            .map(|(c, _)| c.rows())
+            .sum();
+        // the gap's rate (its row times q̇), negative approaching in the contact's sense
+        let vn: f64 = rows.row(r).iter().zip(&self.qd).map(|(a, b)| a * b).sum();
+        let mut targets = rows.target.to_vec();
+        let e = self.opts.restitution.get(k).copied().unwrap_or(0.0);
+        targets[r] = -e * vn;
+        let mut x = vec![0.0; self.qd.len()];
+        if !self
+            .model
+            .project_onto(&rows, &self.qd, &targets[..rows.m], &mut x)
+        {
+            return Err(DynamicsError::Singular { time: self.t });
+        }
+        self.qd = x;
+        let approach = vn.abs();
+        self.in_contact[k] = e * approach <= REBOUND_TOLERANCE * self.speed_scale;
+        Ok(approach)
+    }
+}

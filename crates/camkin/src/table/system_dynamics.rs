@@ -1,0 +1,113 @@
+//! The tables of a simulated system (`camkin simulate SYSTEM.toml`): one row an output instant
+//! — every body's pose, rates and accelerations, every contact's force, gap and whether it is in
+//! touch, the energy and the drivers' work — and one row an event (a contact's lift-off or
+//! impact). Lengths in the system's unit, forces in N, energies in N times that unit.
+
+use super::columns::Cell;
+use crate::dynamics::{ContactEvent, EventKind, SystemSample};
+use crate::system::System;
+
+/// A name made safe for a column (as the analysis table's).
+fn key(name: &str) -> String {
+    name.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// The columns of a simulated system's samples, lengths in `unit`.
+pub fn system_sample_columns(sys: &System, unit: &str) -> Vec<String> {
+    let mut c = vec!["driver_angle_deg".to_string(), "time_s".to_string()];
+    for b in sys.bodies() {
+        let n = key(&b.name);
+        for (q, u) in [
+            ("x", unit.to_string()),
+            ("y", unit.to_string()),
+            ("angle", "deg".into()),
+            ("vx", format!("{unit}_s")),
+            ("vy", format!("{unit}_s")),
+            ("omega", "deg_s".into()),
+            ("ax", format!("{unit}_s2")),
+            ("ay", format!("{unit}_s2")),
+            ("alpha", "deg_s2".into()),
+        ] {
+            c.push(format!("{n}_{q}_{u}"));
+        }
+    }
+    for k in sys.contacts() {
+        let n = key(&k.name);
+        c.push(format!("{n}_force_N"));
+        c.push(format!("{n}_gap_{unit}"));
+        c.push(format!("{n}_in_contact"));
+    }
+    c.push(format!("energy_N_{unit}"));
+    c.push(format!("driver_work_N_{unit}"));
+    c
+}
+
+/// One sample's row at driver angle `angle_deg`.
+pub fn system_sample_cells(angle_deg: f64, s: &SystemSample) -> Vec<Cell> {
+    let mut c = vec![Cell::Num(Some(angle_deg)), Cell::Num(Some(s.time))];
+    for i in 0..s.q.len() / 3 {
+        let k = 3 * i;
+        for v in [
+            s.q[k],
+            s.q[k + 1],
+            s.q[k + 2].to_degrees(),
+            s.qd[k],
+            s.qd[k + 1],
+            s.qd[k + 2].to_degrees(),
+            s.qdd[k],
+            s.qdd[k + 1],
+            s.qdd[k + 2].to_degrees(),
+        ] {
+            c.push(Cell::Num(Some(v)));
+        }
+    }
+    for k in 0..s.in_contact.len() {
+        c.push(Cell::Num(Some(s.contact_forces[k])));
+        c.push(Cell::Num(Some(s.gaps[k])));
+        c.push(Cell::Flag(Some(s.in_contact[k])));
+    }
+    c.push(Cell::Num(Some(s.energy)));
+    c.push(Cell::Num(Some(s.driver_work)));
+    c
+}
+
+/// The columns of a simulated system's events.
+pub fn system_event_columns(unit: &str) -> Vec<String> {
+    [
+        "event".to_string(),
+        "contact".into(),
+        "time_s".into(),
+        "driver_angle_deg".into(),
+        format!("approach_speed_{unit}_s"),
+    ]
+    .to_vec()
+}
+
+/// One event's row (`angle_deg`: the driver's angle then).
+pub fn system_event_cells(sys: &System, e: &ContactEvent, angle_deg: f64) -> Vec<Cell> {
+    vec![
+        Cell::Text(Some(
+            match e.kind {
+                EventKind::LiftOff => "lift-off",
+                _ => "impact",
+            }
+            .into(),
+        )),
+        Cell::Text(Some(
+            sys.contacts()
+                .get(e.contact)
+                .map_or("?".into(), |c| c.name.clone()),
+        )),
+        Cell::Num(Some(e.time)),
+        Cell::Num(Some(angle_deg)),
+        Cell::Num(Some(e.approach)),
+    ]
+}
