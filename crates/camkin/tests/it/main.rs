@@ -15,6 +15,7 @@ mod dynamics_liftoff;
 mod dynamics_multibody;
 mod dynamics_reduced;
 mod dynamics_system;
+mod dynamics_system_cam;
 mod eccentric_circle;
 mod ellipse_flat;
 mod extremes;

@@ -301,6 +301,10 @@ impl SystemSimulation<'_> {
                 }
             }
             if crossing.is_empty() {
+                // the pairings followed to this state: a flying contact's from its last, so that
+                // Newton stays on the nearest pair of points (from the pairing at lift-off, a
+                // disc's far side under a flat face was found once the follower had flown)
+                self.pairings = p;
                 continue;
             }
             (self.q, self.qd, self.pairings, self.t, self.work) = saved;

@@ -1,0 +1,103 @@
+//! Issue 46: `camkin simulate` on a system file. The valve train of
+//! `examples/valve-train-dynamics.toml` at a low speed, where the valve follows the cam, seats
+//! at the closing ramp's speed: the ramp's finger rate (0.15° over 20° of cam) times the pad's
+//! lever arm (55 mm), a closed form that shares nothing with the simulation; its lift peaks at
+//! the program's 9.85° of the finger through the pad's circle. Bad dynamics input exits 2
+//! naming the element and its value.
+
+use crate::common::*;
+use std::f64::consts::TAU;
+
+/// The example with its camshaft at `rpm`.
+fn valve_train_at(rpm: f64) -> (tempfile::TempDir, std::path::PathBuf) {
+    let text = std::fs::read_to_string(examples().join("valve-train-dynamics.toml")).unwrap();
+    let text = text.replace("speed_rpm = 3000.0", &format!("speed_rpm = {rpm:?}"));
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("vt.toml");
+    std::fs::write(&path, text).unwrap();
+    (dir, path)
+}
+
+#[test]
+fn a_slow_valve_train_seats_at_its_ramps_speed_and_lifts_as_its_program_says() {
+    let rpm = 300.0;
+    let (_dir, path) = valve_train_at(rpm);
+    let out = camkin()
+        .arg("simulate")
+        .arg(&path)
+        .args(["--step", "0.25", "--substeps", "4"])
+        .assert()
+        .success();
+    let (header, rows) = parse_csv(&out.get_output().stdout);
+    let col = columns(&header);
+    assert_eq!(rows.len(), 1441);
+    let num = |r: &Vec<String>, c: &str| r[col[c]].parse::<f64>().unwrap();
+    // the lift: the pad's lowest point, the finger turned 9.85° down about its pivot
+    let th = (-9.85f64).to_radians();
+    let closed = -((55.0 * th.sin() + 10.0 * th.cos()) - 10.0);
+    let lift = rows
+        .iter()
+        .map(|r| -28.0 - num(r, "valve_y_mm"))
+        .fold(f64::MIN, f64::max);
+    // less the lash adjuster's squeeze (its 20 000 N/mm under a few hundred N)
+    assert!(
+        (lift - closed).abs() < 0.03,
+        "lift {lift} mm, the program's {closed} mm"
+    );
+    // the seating: an impact of "seat" at the ramp's speed
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    let seat = stderr
+        .lines()
+        .find(|l| l.contains("impact") && l.contains("seat"))
+        .unwrap_or_else(|| panic!("no seating impact: {stderr}"));
+    let speed: f64 = seat.split_whitespace().last().unwrap().parse().unwrap();
+    let w = rpm * TAU / 60.0;
+    let ramp = 0.15 / 20.0 * w * 55.0;
+    assert!(
+        (speed - ramp).abs() < 0.01 * ramp,
+        "seating at {speed} mm/s, the ramp's {ramp} mm/s"
+    );
+    // the seat carries the spring's 250 N less the pad's push while closed
+    let last = rows.last().unwrap();
+    assert_eq!(last[col["seat_in_contact"]], "true");
+    let seat_force = num(last, "seat_force_N");
+    assert!(seat_force > 200.0 && seat_force < 250.0, "{seat_force}");
+}
+
+#[test]
+fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
+    let text = std::fs::read_to_string(examples().join("valve-train-dynamics.toml")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    for (from, to, says) in [
+        (
+            "restitution = 0.3",
+            "restitution = 1.5",
+            "contact[2].restitution = 1.5",
+        ),
+        ("mass = 0.045", "mass = 0.0", "body[3].mass = 0"),
+        ("mass = 0.045", "mass = -0.045", "body[3].mass = -0.045"),
+        (
+            "gravity = [0.0, -9.81]",
+            "gravity = [0.0, 1e400]",
+            "gravity",
+        ),
+    ] {
+        let path = dir.path().join("bad.toml");
+        std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
+        let out = camkin().arg("simulate").arg(&path).assert().code(2);
+        let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+        assert!(stderr.contains(says), "{to}: {stderr}");
+    }
+    // a step the stiffest element refuses: named, with the substeps that would do
+    let out = camkin()
+        .arg("simulate")
+        .arg(examples().join("valve-train-dynamics.toml"))
+        .args(["--step", "2"])
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    assert!(
+        stderr.contains("lash adjuster") && stderr.contains("--substeps 3"),
+        "{stderr}"
+    );
+}
