@@ -336,19 +336,19 @@ def same_as_the_command(r, cli):
 def test_a_system_file_in_python_equals_the_command():
     """Issue 45: camkin.System reads a system file and analyses it over its driver's angle with
     the command's columns, the same numbers to the last bit."""
-    sys = camkin.System.from_toml(EXAMPLES / "valve-train.toml")
+    sys = camkin.System.from_toml(EXAMPLES / "valve-train-kinematics.toml")
     assert sys.bodies == ["camshaft", "finger", "valve"]
     assert sys.contacts == ["cam on roller", "pad on valve"]
     angles = np.arange(0.0, 360.0, 15.0)
     r = sys.analyze(angles)
-    cli = csv_columns(run_cli("analyze", EXAMPLES / "valve-train.toml", "--angles", "0:360:15"))
+    cli = csv_columns(run_cli("analyze", EXAMPLES / "valve-train-kinematics.toml", "--angles", "0:360:15"))
     assert list(r) == list(cli)
     same_as_the_command(r, cli)
     # the valve opens 16 mm: its tip from -33 mm at full lift
     assert r["valve_y_mm"][0] == -33.0 or abs(r["valve_y_mm"][0] + 33.0) < 1e-12
     with pytest.raises(camkin.InputError) as e:
         camkin.System.from_toml(
-            (EXAMPLES / "valve-train.toml").read_text().replace('"fixed"', '"fixed"').replace(
+            (EXAMPLES / "valve-train-kinematics.toml").read_text().replace('"fixed"', '"fixed"').replace(
                 'kind = "prismatic"', 'kind = "slider"'
             )
         )

@@ -13,7 +13,7 @@ use std::path::PathBuf;
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// Mechanism file (TOML); without it, the paper's built-in cam. A system file (arrays of
-    /// tables `body`, `joint`, `driver`, `contact`: see examples/valve-train.toml) is swept over
+    /// tables `body`, `joint`, `driver`, `contact`: see examples/valve-train-kinematics.toml) is swept over
     /// its first driver's angle, one row an instant with every body and contact.
     pub mechanism: Option<PathBuf>,
     /// Cam angles in degrees, comma-separated (e.g. 0,45,90).

@@ -243,8 +243,8 @@ def test_every_system_example_opens_draws_and_turns_with_the_slider(serve, page,
 def test_a_systems_numbers_on_screen_are_the_commands(serve, page, tmp_path):
     """The valve train in the studio: each plotted series at every angle is the column of
     `camkin analyze FILE --angles 0:360:0.5` for that body (angles in degrees)."""
-    loaded(page, serve(EXAMPLES / "valve-train.toml"))
-    rows = list(csv.DictReader(camkin("analyze", EXAMPLES / "valve-train.toml", "--angles", "0:360:0.5").stdout.splitlines()))
+    loaded(page, serve(EXAMPLES / "valve-train-kinematics.toml"))
+    rows = list(csv.DictReader(camkin("analyze", EXAMPLES / "valve-train-kinematics.toml", "--angles", "0:360:0.5").stdout.splitlines()))
     assert page.evaluate("window.studio.result.angles_deg.length") == len(rows) == 720
     finger = series(page, "finger_angle")
     valve = series(page, "valve_y")

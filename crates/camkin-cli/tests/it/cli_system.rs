@@ -10,7 +10,7 @@ use std::f64::consts::TAU;
 fn the_valve_train_file_is_analysed_as_a_system() {
     let out = camkin()
         .arg("analyze")
-        .arg(examples().join("valve-train.toml"))
+        .arg(examples().join("valve-train-kinematics.toml"))
         .args(["--angles", "0:360:15"])
         .assert()
         .success();
@@ -79,7 +79,7 @@ fn the_valve_train_file_is_analysed_as_a_system() {
 fn a_bad_system_file_exits_2_naming_the_element() {
     let dir = tempfile::tempdir().unwrap();
     let f = dir.path().join("s.toml");
-    let text = std::fs::read_to_string(examples().join("valve-train.toml"))
+    let text = std::fs::read_to_string(examples().join("valve-train-kinematics.toml"))
         .unwrap()
         .replace(
             "bodies = [\"finger\", \"valve\"]",
@@ -185,7 +185,7 @@ speed_rpm = 60.0
 #[test]
 fn a_system_is_drawn_at_its_driver_angles() {
     let dir = tempfile::tempdir().unwrap();
-    for example in ["valve-train.toml", "gear-train.toml"] {
+    for example in ["valve-train-kinematics.toml", "gear-train.toml"] {
         let out = dir.path().join(example);
         camkin()
             .arg("plot")
@@ -432,7 +432,7 @@ fn a_cam_rocker_and_slider_against_the_program_and_the_loop() {
 /// first body (the gap's gradient).
 #[test]
 fn a_systems_contacts_are_rows_that_the_accelerations_meet() {
-    let file = examples().join("valve-train.toml");
+    let file = examples().join("valve-train-kinematics.toml");
     let run = |cmd: &str| {
         let out = camkin()
             .arg(cmd)
@@ -496,9 +496,13 @@ fn a_systems_contacts_are_rows_that_the_accelerations_meet() {
 #[test]
 fn unit_flags_a_system_cannot_honour_are_refused() {
     for (file, extra, flag) in [
-        ("valve-train.toml", vec!["--per", "deg"], "--per deg"),
         (
-            "valve-train.toml",
+            "valve-train-kinematics.toml",
+            vec!["--per", "deg"],
+            "--per deg",
+        ),
+        (
+            "valve-train-kinematics.toml",
             vec!["--angle-unit", "rad"],
             "--angle-unit rad",
         ),

@@ -1,5 +1,5 @@
 //! Issue 46: `camkin simulate` on a system file. The valve train of
-//! `examples/valve-train-dynamics.toml` at a low speed, where the valve follows the cam, seats
+//! `examples/valve-train.toml` at a low speed, where the valve follows the cam, seats
 //! at the closing ramp's speed: the ramp's finger rate (0.15° over 20° of cam) times the pad's
 //! lever arm (55 mm), a closed form that shares nothing with the simulation; its lift peaks at
 //! the program's 9.85° of the finger through the pad's circle. Bad dynamics input exits 2
@@ -10,7 +10,7 @@ use std::f64::consts::TAU;
 
 /// The example with its camshaft at `rpm`.
 fn valve_train_at(rpm: f64) -> (tempfile::TempDir, std::path::PathBuf) {
-    let text = std::fs::read_to_string(examples().join("valve-train-dynamics.toml")).unwrap();
+    let text = std::fs::read_to_string(examples().join("valve-train.toml")).unwrap();
     let text = text.replace("speed_rpm = 3000.0", &format!("speed_rpm = {rpm:?}"));
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("vt.toml");
@@ -66,7 +66,7 @@ fn a_slow_valve_train_seats_at_its_ramps_speed_and_lifts_as_its_program_says() {
 
 #[test]
 fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
-    let text = std::fs::read_to_string(examples().join("valve-train-dynamics.toml")).unwrap();
+    let text = std::fs::read_to_string(examples().join("valve-train.toml")).unwrap();
     let dir = tempfile::tempdir().unwrap();
     for (from, to, says) in [
         (
@@ -91,7 +91,7 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
     // a step the stiffest element refuses: named, with the substeps that would do
     let out = camkin()
         .arg("simulate")
-        .arg(examples().join("valve-train-dynamics.toml"))
+        .arg(examples().join("valve-train.toml"))
         .args(["--step", "2"])
         .assert()
         .code(2);

@@ -32,6 +32,7 @@ mod dense;
 mod follower;
 mod forces;
 mod model;
+mod no_follow;
 mod projection;
 mod reduced;
 mod run;
@@ -45,6 +46,7 @@ pub use forces::{
     effective_modulus, hertz_line_pressure, ForceState, ForceSweep, Forces, SecondContact,
 };
 pub use model::{Constraint, ForceElement, RigidBody, System, GROUND};
+pub use no_follow::{no_follow_speed, NoFollow, SpeedSweep};
 pub use reduced::Reduced;
 pub use run::{Run, StepAdvice};
 pub use simulation::Simulation;

@@ -237,6 +237,18 @@ impl System {
         &self.drivers
     }
 
+    /// Driver `index`'s law replaced by `law` (a speed sweep: the same system at another speed);
+    /// `false` when there is no such driver.
+    pub fn set_driver_law(&mut self, index: usize, law: Law) -> bool {
+        match self.drivers.get_mut(index) {
+            Some(d) => {
+                d.law = law;
+                true
+            }
+            None => false,
+        }
+    }
+
     /// The contacts.
     pub fn contacts(&self) -> &[Contact] {
         &self.contacts

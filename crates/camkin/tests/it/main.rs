@@ -16,6 +16,8 @@ mod dynamics_multibody;
 mod dynamics_reduced;
 mod dynamics_system;
 mod dynamics_system_cam;
+#[cfg(feature = "text")]
+mod dynamics_valve_train;
 mod eccentric_circle;
 mod ellipse_flat;
 mod extremes;

@@ -6,7 +6,7 @@ use camkin::spec::text::{build_system_placed, is_system, parse_system_toml, Text
 use camkin::spec::BuildOptions;
 use std::f64::consts::TAU;
 
-const VALVE_TRAIN: &str = include_str!("../../../../examples/valve-train.toml");
+const VALVE_TRAIN: &str = include_str!("../../../../examples/valve-train-kinematics.toml");
 
 fn build(text: &str) -> Result<camkin::spec::BuiltSystem, TextError> {
     let spec = parse_system_toml(text, "s.toml")?;

@@ -1,0 +1,174 @@
+//! The no-follow (separation) speed of a system driven by an angle: the lowest driver speed at
+//! which a contact that stays closed at low speed opens during a revolution — a valve train's
+//! finger leaving its cam, or the valve its pad, where their inertia outgrows the spring — found
+//! by simulating a revolution at speeds in steps and bisecting the first step where it happens.
+//! A contact that opens within [`SpeedSweep::after_impact_deg`] of an impact elsewhere (the
+//! finger jolted off its cam as the valve lands on its seat) is the impact's bounce, not a
+//! no-follow, and is not counted.
+
+use super::{DynamicsError, EventKind, SystemDynamicsOptions, SystemSimulation};
+use crate::system::{Coordinate, Law, System};
+
+/// Where a system stops following its driver.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NoFollow {
+    /// the lowest speed at which a contact opens, rpm (within the bisection's tolerance)
+    pub speed_rpm: f64,
+    /// a speed at which it does not, rpm (the bracket's other end)
+    pub following_rpm: f64,
+    /// the contact that opens first, in the system's order
+    pub contact: usize,
+    /// the driver's angle where it opens, degrees
+    pub angle_deg: f64,
+    /// the simulations run
+    pub simulations: usize,
+}
+
+/// How a speed sweep runs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpeedSweep {
+    /// the slowest speed, rpm: the contacts closed through its revolution are watched
+    pub from_rpm: f64,
+    /// the fastest, rpm
+    pub to_rpm: f64,
+    /// the sweep's step, rpm
+    pub step_rpm: f64,
+    /// the bisection stops when the bracket is narrower than this, rpm
+    pub tolerance_rpm: f64,
+    /// the output step of each simulation, degrees of the driver (the time step is this or
+    /// shorter, as the stiffest element needs)
+    pub step_deg: f64,
+    /// revolutions simulated at each speed
+    pub revolutions: f64,
+    /// a lift-off this many degrees of the driver after an impact is the impact's bounce
+    pub after_impact_deg: f64,
+}
+
+/// A run's first opening of a watched contact (`(contact, angle_deg)`), and the contacts closed
+/// at the start that stayed closed.
+type Opening = (Option<(usize, f64)>, Vec<bool>);
+
+/// The first contact lift-off of `watched` contacts in `revolutions` of `sys` with its first
+/// driver at `rpm`: `Some((contact, angle_deg))`, or `None` when every one stays closed.
+fn first_opening(
+    sys: &System,
+    opts: &SystemDynamicsOptions,
+    sweep: &SpeedSweep,
+    rpm: f64,
+    watched: Option<&[bool]>,
+) -> Result<Opening, DynamicsError> {
+    let mut s = sys.clone();
+    let Some(d) = sys.drivers().first() else {
+        return Err(no_angle_driver());
+    };
+    let start = match (d.coordinate, d.law) {
+        (Coordinate::Angle, Law::Quadratic { start, .. }) => start,
+        _ => return Err(no_angle_driver()),
+    };
+    let w = rpm * std::f64::consts::TAU / 60.0;
+    s.set_driver_law(0, Law::linear(start, w));
+    let mut sim = SystemSimulation::new(&s, opts.clone())?;
+    let closed_at_start = sim.sample()?.in_contact;
+    let h_out = sweep.step_deg.to_radians() / w;
+    let substeps = (h_out / sim.max_step()).ceil().max(1.0);
+    let h = h_out / substeps;
+    let steps = (sweep.revolutions * 360.0 / sweep.step_deg).round() as usize * substeps as usize;
+    let mut opened = vec![false; closed_at_start.len()];
+    let mut last_impact = f64::NEG_INFINITY;
+    for _ in 0..steps {
+        for e in sim.advance(h)? {
+            let angle = (w * e.time).to_degrees();
+            if e.kind == EventKind::Impact {
+                last_impact = angle;
+                continue;
+            }
+            if angle - last_impact <= sweep.after_impact_deg {
+                continue;
+            }
+            if e.kind == EventKind::LiftOff && closed_at_start[e.contact] {
+                let watch = watched.is_none_or(|w| w[e.contact]);
+                if watch && watched.is_some() {
+                    return Ok((Some((e.contact, angle)), opened));
+                }
+                opened[e.contact] = true;
+            }
+        }
+    }
+    // the contacts closed at the start that stayed closed: the watched ones
+    let stayed = closed_at_start
+        .iter()
+        .zip(&opened)
+        .map(|(&c, &o)| c && !o)
+        .collect();
+    Ok((None, stayed))
+}
+
+fn no_angle_driver() -> DynamicsError {
+    DynamicsError::Element {
+        element: "the first driver".into(),
+        key: "coordinate",
+        value: f64::NAN,
+        reason: "must turn an angle at a constant speed for a speed sweep",
+    }
+}
+
+/// The no-follow speed of `sys` (see the module docs): the contacts closed at the start that
+/// stay closed through a revolution at `sweep.from_rpm` are watched; the speed rises in steps of
+/// `sweep.step_rpm` until one of them opens, and that step is bisected to
+/// `sweep.tolerance_rpm`. `None` when none opens up to `sweep.to_rpm`.
+pub fn no_follow_speed(
+    sys: &System,
+    opts: &SystemDynamicsOptions,
+    sweep: &SpeedSweep,
+) -> Result<Option<NoFollow>, DynamicsError> {
+    let check = |key: &'static str, v: f64| {
+        if v > 0.0 && v.is_finite() {
+            Ok(())
+        } else {
+            Err(DynamicsError::Element {
+                element: "the speed sweep".into(),
+                key,
+                value: v,
+                reason: "must be positive",
+            })
+        }
+    };
+    check("from (rpm)", sweep.from_rpm)?;
+    check("step (rpm)", sweep.step_rpm)?;
+    check("tolerance (rpm)", sweep.tolerance_rpm)?;
+    check("output step (deg)", sweep.step_deg)?;
+    check("revolutions", sweep.revolutions)?;
+    let (_, watched) = first_opening(sys, opts, sweep, sweep.from_rpm, None)?;
+    let mut simulations = 1;
+    let mut below = sweep.from_rpm;
+    let mut rpm = sweep.from_rpm;
+    while rpm < sweep.to_rpm {
+        rpm = (rpm + sweep.step_rpm).min(sweep.to_rpm);
+        simulations += 1;
+        let (found, _) = first_opening(sys, opts, sweep, rpm, Some(&watched))?;
+        let Some(mut first) = found else {
+            below = rpm;
+            continue;
+        };
+        let mut above = rpm;
+        while above - below > sweep.tolerance_rpm {
+            let mid = 0.5 * (below + above);
+            simulations += 1;
+            match first_opening(sys, opts, sweep, mid, Some(&watched))?.0 {
+                Some(f) => {
+                    above = mid;
+                    first = f;
+                }
+                None => below = mid,
+            }
+        }
+        return Ok(Some(NoFollow {
+            speed_rpm: above,
+            following_rpm: below,
+            contact: first.0,
+            angle_deg: first.1,
+            simulations,
+        }));
+    }
+    Ok(None)
+}
