@@ -13,4 +13,5 @@ pub mod serve;
 pub mod simulate;
 pub mod synth;
 pub mod system;
+pub mod system_pages;
 pub mod system_simulate;

@@ -43,6 +43,11 @@ pub struct SimulateArgs {
     /// Format of the time series.
     #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
     pub format: TableFormat,
+    /// A system file's no-follow speed: its driver's speed raised from FROM to TO rpm in steps of
+    /// STEP (a revolution simulated at each) until a contact that stays closed at FROM opens,
+    /// then bisected to 1 rpm; printed instead of the time series.
+    #[arg(long, value_name = "FROM:TO:STEP")]
+    pub no_follow: Option<String>,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
     #[command(flatten)]
@@ -88,6 +93,12 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         crate::mechfile::read_text(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     if camkin::spec::text::is_system(&text) {
         return super::system_simulate::run(args, &name, &text, outputs);
+    }
+    if args.no_follow.is_some() {
+        return Err(Failure::Input(anyhow!(
+            "--no-follow: for a system file ([[body]], [[joint]], …, [dynamics]); {} is a mechanism file",
+            name
+        )));
     }
     let (mech, params, unit) =
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;

@@ -7,7 +7,7 @@ use super::simulate::SimulateArgs;
 use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::dynamics::{DynamicsError, SystemSimulation};
+use camkin::dynamics::{ContactEvent, DynamicsError, SystemSample, SystemSimulation};
 use camkin::table::{
     system_event_cells, system_event_columns, system_sample_cells, system_sample_columns,
 };
@@ -50,6 +50,9 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
             "{name}: its first driver does not turn an angle at a constant speed: a simulation's outputs are at its angles"
         )));
     };
+    if let Some(range) = &args.no_follow {
+        return no_follow(args, name, &built, range);
+    }
     let h = (t1 - t0).abs() / args.substeps as f64;
     let mut sim =
         SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| dyn_err(name, e))?;
@@ -76,22 +79,18 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let angle_of = |t: f64| step * (t - t0) / (t1 - t0);
     let pb = indicatif::ProgressBar::new(outputs as u64);
-    let mut rows: Vec<Vec<Cell>> = Vec::with_capacity(outputs + 1);
-    let mut events = Vec::new();
-    let first = sim.sample().map_err(|e| dyn_err(name, e))?;
-    rows.push(system_sample_cells(0.0, &first));
-    for k in 1..=outputs {
-        for _ in 0..args.substeps {
-            let e = sim.advance(h).map_err(|e| dyn_err(name, e))?;
-            events.extend(e);
-        }
-        let s = sim.sample().map_err(|e| dyn_err(name, e))?;
-        rows.push(system_sample_cells(step * k as f64, &s));
+    let (samples, events) = run_samples(&mut sim, outputs, args.substeps, h, |k| {
         if k % 256 == 0 {
             pb.set_position(k as u64);
         }
-    }
+    })
+    .map_err(|e| dyn_err(name, e))?;
     pb.finish_and_clear();
+    let rows: Vec<Vec<Cell>> = samples
+        .iter()
+        .enumerate()
+        .map(|(k, s)| system_sample_cells(step * k as f64, s))
+        .collect();
     let columns = system_sample_columns(sys, unit);
     let event_columns = system_event_columns(unit);
     let event_rows: Vec<Vec<Cell>> = events
@@ -109,6 +108,16 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
                 write_cell_table(w, TableFormat::Csv, &event_columns, event_rows.clone())
             })
             .map_err(Failure::output)?;
+            // the same system at a tenth of the speed: its motion nearly quasi-static (inertia
+            // forces a hundredth), the reference of the deviation plot
+            let slow = quasi_static(&built, args, outputs, step).map_err(|e| dyn_err(name, e))?;
+            let impacts: Vec<f64> = events
+                .iter()
+                .filter(|e| e.kind == camkin::dynamics::EventKind::Impact)
+                .map(|e| angle_of(e.time))
+                .collect();
+            super::system_pages::write(&dir, name, &built, &samples, &slow, step, &impacts)
+                .map_err(Failure::output)?;
             od.commit().map_err(Failure::output)?;
         }
     }
@@ -147,6 +156,142 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
                 events.len()
             );
         }
+    }
+    Ok(())
+}
+
+/// `outputs` samples after the first, each `substeps` steps of `h` apart, and the events.
+fn run_samples(
+    sim: &mut SystemSimulation<'_>,
+    outputs: usize,
+    substeps: usize,
+    h: f64,
+    mut progress: impl FnMut(usize),
+) -> Result<(Vec<SystemSample>, Vec<ContactEvent>), DynamicsError> {
+    let mut samples = Vec::with_capacity(outputs + 1);
+    let mut events = Vec::new();
+    samples.push(sim.sample()?);
+    for k in 1..=outputs {
+        for _ in 0..substeps {
+            events.extend(sim.advance(h)?);
+        }
+        samples.push(sim.sample()?);
+        progress(k);
+    }
+    Ok((samples, events))
+}
+
+/// The system's samples at the same driver angles with its first driver at a tenth of its
+/// speed (the time step what its stiffest element needs).
+fn quasi_static(
+    built: &camkin::spec::BuiltSystem,
+    args: &SimulateArgs,
+    outputs: usize,
+    step: f64,
+) -> Result<Vec<SystemSample>, DynamicsError> {
+    let mut sys = built.system.clone();
+    if let Some(d) = sys.drivers().first().cloned() {
+        if let camkin::system::Law::Quadratic {
+            start,
+            rate,
+            acceleration,
+        } = d.law
+        {
+            sys.set_driver_law(
+                0,
+                camkin::system::Law::Quadratic {
+                    start,
+                    rate: 0.1 * rate,
+                    acceleration: 0.01 * acceleration,
+                },
+            );
+        }
+    }
+    let mut sim = SystemSimulation::new(&sys, built.dynamics.clone())?;
+    let (t0, t1) = (
+        built.sweep_angle.time(&sys, 0.0).unwrap_or(0.0),
+        built
+            .sweep_angle
+            .time(&sys, step.to_radians())
+            .unwrap_or(0.0),
+    );
+    let h_out = (t1 - t0).abs();
+    let substeps = ((h_out / sim.max_step()).ceil() as usize).max(args.substeps);
+    run_samples(&mut sim, outputs, substeps, h_out / substeps as f64, |_| {}).map(|r| r.0)
+}
+
+/// `--no-follow FROM:TO:STEP`: the speed sweep, its answer printed.
+fn no_follow(
+    args: &SimulateArgs,
+    name: &str,
+    built: &camkin::spec::BuiltSystem,
+    range: &str,
+) -> Result<(), Failure> {
+    let parts: Vec<&str> = range.split(':').collect();
+    let nums: Vec<f64> = parts.iter().filter_map(|p| p.trim().parse().ok()).collect();
+    let [from, to, step] = nums[..] else {
+        return Err(bad(format!(
+            "--no-follow {range}: give FROM:TO:STEP in rpm (e.g. 1000:6000:250)"
+        )));
+    };
+    if parts.len() != 3 || !(from > 0.0 && to > from && step > 0.0 && to.is_finite()) {
+        return Err(bad(format!(
+            "--no-follow {range}: FROM, TO and STEP must be positive rpm with TO above FROM"
+        )));
+    }
+    let sweep = camkin::dynamics::SpeedSweep {
+        from_rpm: from,
+        to_rpm: to,
+        step_rpm: step,
+        tolerance_rpm: 1.0,
+        step_deg: args.step.deg(),
+        revolutions: args.revolutions,
+        after_impact_deg: 5.0,
+    };
+    // the steps of the speeds tried and the bisection's, each a run at its speed (the fastest's
+    // time step the stiffest element's)
+    let sys = &built.system;
+    let runs = ((to - from) / step).ceil() + (step.max(1.0)).log2().ceil() + 1.0;
+    let sim = SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| dyn_err(name, e))?;
+    let per_rev_steps = {
+        let w = to * std::f64::consts::TAU / 60.0;
+        let h_out = args.step.deg().to_radians() / w;
+        (360.0 / args.step.deg()) * (h_out / sim.max_step()).ceil().max(1.0)
+    };
+    let steps = (runs * per_rev_steps * args.revolutions) as usize;
+    crate::refuse_large(
+        &camkin::work::Work::system_simulation(sys, steps, 0),
+        args.work.large,
+        ", or sweep fewer speeds (a larger STEP, a narrower FROM:TO)",
+    )?;
+    let found = camkin::dynamics::no_follow_speed(sys, &built.dynamics, &sweep)
+        .map_err(|e| dyn_err(name, e))?;
+    let h = camkin::human::human;
+    match found {
+        Some(nf) => {
+            let contact = sys
+                .contacts()
+                .get(nf.contact)
+                .map_or("?", |c| c.name.as_str());
+            println!(
+                "no-follow speed: {} rpm ({} rpm follows): contact {contact:?} opens at {}° of the driver",
+                h((nf.speed_rpm * 10.0).round() / 10.0),
+                h((nf.following_rpm * 10.0).round() / 10.0),
+                h((nf.angle_deg * 10.0).round() / 10.0),
+            );
+            println!(
+                "found by simulating {} revolution(s) at speeds from {} rpm in {} rpm steps and bisecting to 1 rpm ({} simulations)",
+                h(args.revolutions),
+                h(from),
+                h(step),
+                nf.simulations
+            );
+        }
+        None => println!(
+            "no contact that stays closed at {} rpm opens up to {} rpm",
+            h(from),
+            h(to)
+        ),
     }
     Ok(())
 }

@@ -101,3 +101,48 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         "{stderr}"
     );
 }
+
+/// `--no-follow` sweeps the speed and prints where the finger leaves its cam (the reduced
+/// model's 4145 rpm less the lash adjuster's give: see the library's `dynamics_valve_train`);
+/// `--out` writes the time series, the events and the lift, force and deviation pages.
+#[test]
+fn the_no_follow_speed_and_the_pages() {
+    let out = camkin()
+        .arg("simulate")
+        .arg(examples().join("valve-train.toml"))
+        .args(["--no-follow", "1000:6000:500", "--step", "0.5"])
+        .assert()
+        .success();
+    let text = String::from_utf8_lossy(&out.get_output().stdout).to_string();
+    let rpm: f64 = text
+        .split("no-follow speed: ")
+        .nth(1)
+        .and_then(|t| t.split(" rpm").next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("{text}"));
+    assert!((rpm - 4145.0).abs() < 0.02 * 4145.0, "{text}");
+    assert!(text.contains("\"cam on roller\""), "{text}");
+    let dir = tempfile::tempdir().unwrap();
+    let pages = dir.path().join("vt");
+    camkin()
+        .arg("simulate")
+        .arg(examples().join("valve-train.toml"))
+        .args(["--step", "0.5"])
+        .arg("--out")
+        .arg(&pages)
+        .assert()
+        .success();
+    for f in [
+        "time_series.csv",
+        "events.csv",
+        "lift.svg",
+        "lift.png",
+        "forces.png",
+        "deviation.png",
+    ] {
+        let len = std::fs::metadata(pages.join(f)).map(|m| m.len()).unwrap_or(0);
+        assert!(len > 200, "{f}: {len} bytes");
+    }
+    let events = std::fs::read_to_string(pages.join("events.csv")).unwrap();
+    assert!(events.contains("impact,seat"), "{events}");
+}

@@ -1,0 +1,151 @@
+//! The pages of a simulated system (`camkin simulate SYSTEM.toml --out DIR`): the moving body
+//! that travels farthest (a valve) on an SVAJ-style page — its lift, velocity and acceleration
+//! over the driver's angle, the impacts marked — every contact's force, and the deviation of its
+//! lift from the same system at a tenth of the speed (nearly quasi-static: a hundredth of the
+//! inertia forces).
+
+use crate::draw::chart::{self, Chart, Series};
+use crate::draw::svaj;
+use camkin::dynamics::SystemSample;
+use camkin::spec::BuiltSystem;
+use std::path::Path;
+
+/// The body and coordinate (0 x, 1 y) that travels farthest, and the sign that makes its
+/// largest excursion from the start positive.
+fn farthest(samples: &[SystemSample]) -> Option<(usize, usize, f64)> {
+    let first = samples.first()?;
+    let mut best: Option<(f64, usize, usize, f64)> = None;
+    for k in 0..first.q.len() {
+        if k % 3 == 2 {
+            continue;
+        }
+        let (mut lo, mut hi) = (0.0f64, 0.0f64);
+        for s in samples {
+            let d = s.q[k] - first.q[k];
+            lo = lo.min(d);
+            hi = hi.max(d);
+        }
+        let range = hi - lo;
+        if best.is_none_or(|b| range > b.0) {
+            best = Some((range, k / 3, k % 3, if -lo > hi { -1.0 } else { 1.0 }));
+        }
+    }
+    best.map(|(_, b, c, sign)| (b, c, sign))
+}
+
+/// Writes `lift`, `forces` and `deviation` (each `.svg` and `.png`) into `dir`.
+pub fn write(
+    dir: &Path,
+    name: &str,
+    built: &BuiltSystem,
+    samples: &[SystemSample],
+    slow: &[SystemSample],
+    step: f64,
+    impacts_deg: &[f64],
+) -> anyhow::Result<()> {
+    let sys = &built.system;
+    let u = built.length_unit.name();
+    let Some((body, c, sign)) = farthest(samples) else {
+        return Ok(());
+    };
+    let bname = &sys.bodies()[body].name;
+    let k = 3 * body + c;
+    let axis = ["x", "y"][c];
+    let angle = |i: usize| step * i as f64;
+    let rpm = sys
+        .drivers()
+        .first()
+        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
+    let h = camkin::human::human;
+    let series = |f: &dyn Fn(&SystemSample) -> f64| -> Vec<(f64, f64)> {
+        samples
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (angle(i), f(s)))
+            .collect()
+    };
+    let start = samples[0].q[k];
+    let panel = |label: String, unit: String, points| svaj::Panel {
+        label,
+        unit,
+        points,
+        resolution: 0.0,
+    };
+    let page = svaj::Page {
+        title: format!(
+            "{name}: {bname:?} ({axis} from its start, positive out) at {} rpm; marks: impacts",
+            h((rpm * 10.0).round() / 10.0)
+        ),
+        panels: vec![
+            panel(
+                format!("lift ({u})"),
+                u.to_string(),
+                series(&|s| sign * (s.q[k] - start)),
+            ),
+            panel(
+                format!("velocity ({u}/s)"),
+                format!("{u}/s"),
+                series(&|s| sign * s.qd[k]),
+            ),
+            panel(
+                format!("acceleration ({u}/s²)"),
+                format!("{u}/s²"),
+                series(&|s| sign * s.qdd[k]),
+            ),
+        ],
+        // an impact: the velocity jumps
+        marks: impacts_deg
+            .iter()
+            .map(|&a| svaj::Mark {
+                angle_deg: a,
+                order: 1,
+            })
+            .collect(),
+        x: svaj::Page::REVOLUTION,
+        x_label: "driver angle (°)".into(),
+    };
+    svaj::save(&page, &dir.join("lift"))?;
+    let forces = Chart {
+        title: format!(
+            "{name}: contact forces at {} rpm (0 while open)",
+            h((rpm * 10.0).round() / 10.0)
+        ),
+        x_label: "driver angle (°)".into(),
+        y_label: "compressive force (N)".into(),
+        series: sys
+            .contacts()
+            .iter()
+            .enumerate()
+            .map(|(j, c)| Series {
+                name: c.name.clone(),
+                points: series(&|s| s.contact_forces[j]),
+                dashed: false,
+            })
+            .collect(),
+        log_y: false,
+        x_range: Some((0.0, 360.0)),
+    };
+    chart::save(&forces, &dir.join("forces"))?;
+    let slow_start = slow.first().map_or(start, |s| s.q[k]);
+    let deviation = Chart {
+        title: format!(
+            "{name}: {bname:?} lift less its lift at a tenth of the speed (nearly quasi-static)"
+        ),
+        x_label: "driver angle (°)".into(),
+        y_label: format!("dynamic − quasi-static lift ({u})"),
+        series: vec![Series {
+            name: "dynamic − quasi-static".into(),
+            points: samples
+                .iter()
+                .zip(slow)
+                .enumerate()
+                .map(|(i, (s, q))| (angle(i), sign * ((s.q[k] - start) - (q.q[k] - slow_start))))
+                .collect(),
+            dashed: false,
+        }],
+        log_y: false,
+        x_range: Some((0.0, 360.0)),
+    };
+    chart::save(&deviation, &dir.join("deviation"))?;
+    Ok(())
+}
