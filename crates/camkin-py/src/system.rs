@@ -138,6 +138,114 @@ impl PySystem {
         cols.into_dict(py, scalar)
     }
 
+    /// simulate(*, revolutions=1.0, step_deg=1.0, substeps=None, large=False) -> (dict, dict)
+    ///
+    /// The system's dynamics (a system file with ``[dynamics]``; see the README's "Dynamics of a
+    /// system"): ``(samples, events)``, two dicts of NumPy arrays keyed by the columns of
+    /// ``camkin simulate SYSTEM.toml`` (``time_series.csv`` and ``events.csv``): a sample at the
+    /// start and every ``step_deg`` of the first driver, each body's pose, rates and
+    /// accelerations, each contact's force (N), gap and whether it is closed, the energy and the
+    /// drivers' work; each lift-off and impact with its contact, instant and approach speed.
+    /// ``substeps`` (integration steps per output step) is by default the fewest the stiffest
+    /// spring or damper allows; fewer raises ``camkin.InputError`` naming it.
+    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, substeps = None, large = false))]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        revolutions: f64,
+        step_deg: f64,
+        substeps: Option<usize>,
+        large: bool,
+    ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+        let sys = &self.built.system;
+        let h_ = camkin::human::human;
+        if !(revolutions > 0.0 && revolutions <= 1e4) {
+            return Err(errors::input(
+                "revolutions",
+                Some(h_(revolutions)),
+                format!("revolutions = {}: must be in (0, 10000]", h_(revolutions)),
+            ));
+        }
+        if !(1e-3..=90.0).contains(&step_deg) {
+            return Err(errors::input(
+                "step_deg",
+                Some(h_(step_deg)),
+                format!(
+                    "step_deg = {}: must be from 0.001 to 90 degrees",
+                    h_(step_deg)
+                ),
+            ));
+        }
+        let outputs = (revolutions * 360.0 / step_deg).round().max(1.0) as usize;
+        let (Some(t0), Some(t1)) = (
+            self.built.time_of(0.0),
+            self.built.time_of(step_deg.to_radians()),
+        ) else {
+            return Err(errors::input(
+                "driver",
+                None,
+                "the first driver does not turn an angle at a constant speed: a simulation's outputs are at its angles".into(),
+            ));
+        };
+        let dyn_err = |e: camkin::dynamics::DynamicsError| errors::input("", None, e.to_string());
+        let mut sim = camkin::dynamics::SystemSimulation::new(sys, self.built.dynamics.clone())
+            .map_err(dyn_err)?;
+        let h_out = (t1 - t0).abs();
+        let fewest = (h_out / sim.max_step()).ceil().max(1.0) as usize;
+        let substeps = match substeps {
+            None => fewest,
+            Some(n) if n >= fewest && n <= 1000 => n,
+            Some(n) => {
+                let (rate, element) = sim.fastest_rate();
+                return Err(errors::input(
+                    "substeps",
+                    Some(n.to_string()),
+                    format!(
+                        "substeps = {n}: {element} is too stiff for {n} substeps of a {}° step (its rate {} /s): use substeps={fewest} or more (at most 1000)",
+                        h_(step_deg),
+                        h_(rate)
+                    ),
+                ));
+            }
+        };
+        errors::refuse_large(
+            &camkin::work::Work::system_simulation(sys, outputs * substeps, outputs + 1),
+            large,
+            ", or simulate fewer revolutions",
+        )?;
+        let h = h_out / substeps as f64;
+        let run = py.detach(|| {
+            sim.run(outputs, substeps, h, |k| {
+                if k % 1024 == 0 && errors::interrupted().is_err() {
+                    return std::ops::ControlFlow::Break(());
+                }
+                std::ops::ControlFlow::Continue(())
+            })
+        });
+        let run = match run {
+            Ok(r) => r,
+            Err(camkin::dynamics::DynamicsError::Stopped { .. }) => {
+                errors::interrupted()?;
+                return Err(errors::contact("stopped".into()));
+            }
+            Err(e) => return Err(dyn_err(e)),
+        };
+        let unit = self.built.length_unit.name();
+        let mut samples = Columns::new(
+            camkin::table::system_sample_columns(sys, unit),
+            run.samples.len(),
+        );
+        for (k, s) in run.samples.iter().enumerate() {
+            samples.push(camkin::table::system_sample_cells(step_deg * k as f64, s));
+        }
+        let mut events = Columns::new(camkin::table::system_event_columns(unit), run.events.len());
+        for e in &run.events {
+            let angle = step_deg * (e.time - t0) / (t1 - t0);
+            events.push(camkin::table::system_event_cells(sys, e, angle));
+        }
+        Ok((samples.into_dict(py, false)?, events.into_dict(py, false)?))
+    }
+
     fn __repr__(&self) -> String {
         let s = &self.built.system;
         format!(

@@ -11,7 +11,11 @@ import camkin
 from conftest import EXAMPLES, camkin_bin, csv_columns
 from test_mechanism import same_cells
 
-DYNAMICS = sorted(p.name for p in EXAMPLES.glob("*.toml") if "[dynamics]" in p.read_text())
+DYNAMICS = sorted(
+    p.name
+    for p in EXAMPLES.glob("*.toml")
+    if "[dynamics]" in p.read_text() and "[[body]]" not in p.read_text()
+)
 
 
 def cli_forces(path, out, *args):

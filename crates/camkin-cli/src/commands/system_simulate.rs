@@ -7,7 +7,7 @@ use super::simulate::SimulateArgs;
 use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::dynamics::{ContactEvent, DynamicsError, SystemSample, SystemSimulation};
+use camkin::dynamics::{DynamicsError, SystemSample, SystemSimulation};
 use camkin::table::{
     system_event_cells, system_event_columns, system_sample_cells, system_sample_columns,
 };
@@ -79,12 +79,15 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let angle_of = |t: f64| step * (t - t0) / (t1 - t0);
     let pb = indicatif::ProgressBar::new(outputs as u64);
-    let (samples, events) = run_samples(&mut sim, outputs, args.substeps, h, |k| {
-        if k % 256 == 0 {
-            pb.set_position(k as u64);
-        }
-    })
-    .map_err(|e| dyn_err(name, e))?;
+    let run = sim
+        .run(outputs, args.substeps, h, |k| {
+            if k % 256 == 0 {
+                pb.set_position(k as u64);
+            }
+            std::ops::ControlFlow::Continue(())
+        })
+        .map_err(|e| dyn_err(name, e))?;
+    let (samples, events) = (run.samples, run.events);
     pb.finish_and_clear();
     let rows: Vec<Vec<Cell>> = samples
         .iter()
@@ -160,27 +163,6 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
     Ok(())
 }
 
-/// `outputs` samples after the first, each `substeps` steps of `h` apart, and the events.
-fn run_samples(
-    sim: &mut SystemSimulation<'_>,
-    outputs: usize,
-    substeps: usize,
-    h: f64,
-    mut progress: impl FnMut(usize),
-) -> Result<(Vec<SystemSample>, Vec<ContactEvent>), DynamicsError> {
-    let mut samples = Vec::with_capacity(outputs + 1);
-    let mut events = Vec::new();
-    samples.push(sim.sample()?);
-    for k in 1..=outputs {
-        for _ in 0..substeps {
-            events.extend(sim.advance(h)?);
-        }
-        samples.push(sim.sample()?);
-        progress(k);
-    }
-    Ok((samples, events))
-}
-
 /// The system's samples at the same driver angles with its first driver at a tenth of its
 /// speed (the time step what its stiffest element needs).
 fn quasi_static(
@@ -217,7 +199,10 @@ fn quasi_static(
     );
     let h_out = (t1 - t0).abs();
     let substeps = ((h_out / sim.max_step()).ceil() as usize).max(args.substeps);
-    run_samples(&mut sim, outputs, substeps, h_out / substeps as f64, |_| {}).map(|r| r.0)
+    sim.run(outputs, substeps, h_out / substeps as f64, |_| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .map(|r| r.samples)
 }
 
 /// `--no-follow FROM:TO:STEP`: the speed sweep, its answer printed.

@@ -140,7 +140,9 @@ fn the_no_follow_speed_and_the_pages() {
         "forces.png",
         "deviation.png",
     ] {
-        let len = std::fs::metadata(pages.join(f)).map(|m| m.len()).unwrap_or(0);
+        let len = std::fs::metadata(pages.join(f))
+            .map(|m| m.len())
+            .unwrap_or(0);
         assert!(len > 200, "{f}: {len} bytes");
     }
     let events = std::fs::read_to_string(pages.join("events.csv")).unwrap();

@@ -101,6 +101,15 @@ pub struct SystemSample {
     pub driver_work: f64,
 }
 
+/// A simulated run: a sample at the start and after every output step, and the events between.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SystemRun {
+    /// the samples, the first at the start
+    pub samples: Vec<SystemSample>,
+    /// every lift-off and impact, in order
+    pub events: Vec<ContactEvent>,
+}
+
 /// A simulation of a [`crate::system::System`] (see the module docs).
 #[derive(Debug, Clone)]
 pub struct SystemSimulation<'a> {
@@ -389,6 +398,31 @@ impl<'a> SystemSimulation<'a> {
             energy: self.energy(),
             driver_work: self.work,
         })
+    }
+
+    /// `outputs` output steps of `substeps` steps of `h` s each, sampled at the start and after
+    /// each output step; `progress(k)` after the `k`-th (breaking off stops the run with
+    /// [`DynamicsError::Stopped`]).
+    pub fn run(
+        &mut self,
+        outputs: usize,
+        substeps: usize,
+        h: f64,
+        mut progress: impl FnMut(usize) -> std::ops::ControlFlow<()>,
+    ) -> Result<SystemRun, DynamicsError> {
+        let mut samples = Vec::with_capacity(outputs + 1);
+        let mut events = Vec::new();
+        samples.push(self.sample()?);
+        for k in 1..=outputs {
+            for _ in 0..substeps {
+                events.extend(self.advance(h)?);
+            }
+            samples.push(self.sample()?);
+            if progress(k).is_break() {
+                return Err(DynamicsError::Stopped { done: k, outputs });
+            }
+        }
+        Ok(SystemRun { samples, events })
     }
 
     /// The fastest rate of the system's force elements, 1/s, and the element: a spring's
