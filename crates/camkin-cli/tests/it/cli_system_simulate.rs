@@ -88,6 +88,31 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
         assert!(stderr.contains(says), "{to}: {stderr}");
     }
+    // a spring with no ends: its `bodies` and `at` left out, named at its table
+    let path = dir.path().join("bad.toml");
+    std::fs::write(
+        &path,
+        format!("{text}\n[[spring]]\nname = \"loose\"\nstiffness = 1.0\nfree_length = 1.0\n"),
+    )
+    .unwrap();
+    let out = camkin().arg("simulate").arg(&path).assert().code(2);
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    assert!(
+        stderr.contains("spring") && stderr.contains("bodies"),
+        "{stderr}"
+    );
+    // work over the limit: refused up front with its estimate
+    let out = camkin()
+        .arg("simulate")
+        .arg(examples().join("valve-train.toml"))
+        .args(["--revolutions", "5000", "--step", "0.25"])
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    assert!(
+        stderr.contains("simulated steps") && stderr.contains("--large"),
+        "{stderr}"
+    );
     // a step the stiffest element refuses: named, with the substeps that would do
     let out = camkin()
         .arg("simulate")
