@@ -84,6 +84,8 @@ pub enum SystemTable {
     TorsionSpring,
     /// `[dynamics]` (one table: its index is 0)
     Dynamics,
+    /// `[[coil_spring]]`
+    CoilSpring,
 }
 
 impl SystemTable {
@@ -98,6 +100,7 @@ impl SystemTable {
             SystemTable::Damper => "damper",
             SystemTable::TorsionSpring => "torsion_spring",
             SystemTable::Dynamics => "dynamics",
+            SystemTable::CoilSpring => "coil_spring",
         }
     }
 }
@@ -160,6 +163,10 @@ pub enum SystemKey {
     Restitution,
     /// `gravity`
     Gravity,
+    /// `masses`
+    Masses,
+    /// `solid_length`
+    SolidLength,
 }
 
 impl SystemKey {
@@ -192,6 +199,8 @@ impl SystemKey {
             SystemKey::Damping => "damping",
             SystemKey::Restitution => "restitution",
             SystemKey::Gravity => "gravity",
+            SystemKey::Masses => "masses",
+            SystemKey::SolidLength => "solid_length",
         })
     }
 }

@@ -63,8 +63,15 @@ fn write_sweep(
         ", or use fewer angles",
     )?;
     let mut instants = sys.instants(&times).map_err(|e| {
+        // a system with free degrees of freedom that forces move is simulated, not analysed
+        let hint = match e {
+            camkin::system::SystemError::NotSquare { .. } if built.simulated => {
+                "; a system moved by its forces ([dynamics]) is simulated: `camkin simulate`"
+            }
+            _ => "",
+        };
         bad(format!(
-            "{name}: the system cannot be analysed at its first instant ({}°): {e}",
+            "{name}: the system cannot be analysed at its first instant ({}°): {e}{hint}",
             camkin::human::human(angles.first().copied().unwrap_or(0.0))
         ))
     })?;

@@ -105,19 +105,27 @@ pub fn write(
         x_label: "driver angle (°)".into(),
     };
     svaj::save(&page, &dir.join("lift"))?;
+    // the contacts that never close (coil clash that does not happen) are left out
+    let closed: Vec<usize> = (0..sys.contacts().len())
+        .filter(|&j| samples.iter().any(|s| s.contact_forces[j] > 0.0))
+        .collect();
+    let never = sys.contacts().len() - closed.len();
     let forces = Chart {
         title: format!(
-            "{name}: contact forces at {} rpm (0 while open)",
-            h((rpm * 10.0).round() / 10.0)
+            "{name}: contact forces at {} rpm{}",
+            h((rpm * 10.0).round() / 10.0),
+            if never > 0 {
+                format!(" ({never} never closed: not drawn)")
+            } else {
+                String::new()
+            }
         ),
         x_label: "driver angle (°)".into(),
         y_label: "compressive force (N)".into(),
-        series: sys
-            .contacts()
+        series: closed
             .iter()
-            .enumerate()
-            .map(|(j, c)| Series {
-                name: c.name.clone(),
+            .map(|&j| Series {
+                name: sys.contacts()[j].name.clone(),
                 points: series(&|s| s.contact_forces[j]),
                 dashed: false,
             })

@@ -124,6 +124,25 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
             od.commit().map_err(Failure::output)?;
         }
     }
+    // each coil spring's surge, for people
+    for c in &built.coil_springs {
+        let f = c.surge_frequencies(built.dynamics.metres_per_unit);
+        if f.is_empty() {
+            continue;
+        }
+        let shown: Vec<String> = f
+            .iter()
+            .take(4)
+            .map(|x| camkin::human::human(x.round()))
+            .collect();
+        crate::say!(
+            "camkin: {:?}: surge frequencies {}{} Hz ({} lumped masses, both ends held)",
+            c.name,
+            shown.join(", "),
+            if f.len() > 4 { ", …" } else { "" },
+            c.masses
+        );
+    }
     // the events, for people
     if events.is_empty() {
         crate::say!("camkin: no lift-off or impact: every contact stays as it started");

@@ -218,7 +218,12 @@ def test_a_file_with_an_error_opens_to_be_mended(serve, page, tmp_path):
 # every system file: bodies, joints and contacts drawn, the slider turning the first driver
 @pytest.mark.parametrize(
     "example",
-    sorted(p.name for p in EXAMPLES.glob("*.toml") if "[[body]]" in p.read_text()),
+    # the kinematic ones: a file with [dynamics] is simulated (`camkin simulate`)
+    sorted(
+        p.name
+        for p in EXAMPLES.glob("*.toml")
+        if "[[body]]" in p.read_text() and "[dynamics]" not in p.read_text()
+    ),
 )
 def test_every_system_example_opens_draws_and_turns_with_the_slider(serve, page, example, tmp_path):
     shutil.copytree(EXAMPLES, tmp_path / "ex")

@@ -8,10 +8,13 @@
 use crate::common::*;
 use std::f64::consts::TAU;
 
-/// The example with its camshaft at `rpm`.
+/// The example with its camshaft at `rpm` and its valve spring massless.
 fn valve_train_at(rpm: f64) -> (tempfile::TempDir, std::path::PathBuf) {
     let text = std::fs::read_to_string(examples().join("valve-train.toml")).unwrap();
-    let text = text.replace("speed_rpm = 3000.0", &format!("speed_rpm = {rpm:?}"));
+    // its valve spring massless: the ramp's closed form has no coils to carry
+    let text = text
+        .replace("speed_rpm = 3000.0", &format!("speed_rpm = {rpm:?}"))
+        .replace("masses = 8", "masses = 0");
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("vt.toml");
     std::fs::write(&path, text).unwrap();
@@ -54,7 +57,7 @@ fn a_slow_valve_train_seats_at_its_ramps_speed_and_lifts_as_its_program_says() {
     let w = rpm * TAU / 60.0;
     let ramp = 0.15 / 20.0 * w * 55.0;
     assert!(
-        (speed - ramp).abs() < 0.01 * ramp,
+        (speed - ramp).abs() < 0.002 * ramp,
         "seating at {speed} mm/s, the ramp's {ramp} mm/s"
     );
     // the seat carries the spring's 250 N less the pad's push while closed
@@ -127,8 +130,9 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
     );
 }
 
-/// `--no-follow` sweeps the speed and prints where the finger leaves its cam (the reduced
-/// model's 4145 rpm less the lash adjuster's give: see the library's `dynamics_valve_train`);
+/// `--no-follow` sweeps the speed and prints where the finger leaves its cam (with the valve
+/// spring massless, the reduced model's 4145 rpm less the lash adjuster's give: see the
+/// library's `dynamics_valve_train`; with its coils' mass, lower);
 /// `--out` writes the time series, the events and the lift, force and deviation pages.
 #[test]
 fn the_no_follow_speed_and_the_pages() {
@@ -145,7 +149,10 @@ fn the_no_follow_speed_and_the_pages() {
         .and_then(|t| t.split(" rpm").next())
         .and_then(|t| t.parse().ok())
         .unwrap_or_else(|| panic!("{text}"));
-    assert!((rpm - 4145.0).abs() < 0.02 * 4145.0, "{text}");
+    // below 3892 rpm, the reduced model's with a third of the coils' mass on the valve (the
+    // quasi-static share): the coils surge (their first mode at 574 Hz, the cam's tenth
+    // harmonic at 3444 rpm) and the finger leaves sooner
+    assert!(rpm > 3000.0 && rpm < 3892.0, "{text}");
     assert!(text.contains("\"cam on roller\""), "{text}");
     let dir = tempfile::tempdir().unwrap();
     let pages = dir.path().join("vt");

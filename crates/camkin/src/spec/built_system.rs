@@ -18,6 +18,12 @@ pub struct BuiltSystem {
     /// how it is simulated: the unit's size, gravity and each contact's restitution (a
     /// system file's `[dynamics]` and `restitution` keys)
     pub dynamics: crate::dynamics::SystemDynamicsOptions,
+    /// its coil springs with mass (their masses, segments and coil-clash contacts are in
+    /// `system`), for their surge frequencies
+    pub coil_springs: Vec<crate::system::CoilSpring>,
+    /// whether its file has `[dynamics]`: forces move its free degrees of freedom (it is
+    /// simulated; a kinematic analysis needs every one driven)
+    pub simulated: bool,
 }
 
 /// What the angles a system is swept over mean, and the instant of each.
@@ -92,6 +98,8 @@ impl BuiltSystem {
                 metres_per_unit: length_unit.metres(),
                 ..crate::dynamics::SystemDynamicsOptions::default()
             },
+            coil_springs: Vec::new(),
+            simulated: false,
         })
     }
 
@@ -141,6 +149,8 @@ mod tests {
                 angular_acceleration: -1.0,
             },
             dynamics: crate::dynamics::SystemDynamicsOptions::default(),
+            coil_springs: Vec::new(),
+            simulated: false,
         };
         let t = built.times(&[0.0, 0.4f64.to_degrees()]).unwrap();
         assert_eq!(t[0], 0.0);

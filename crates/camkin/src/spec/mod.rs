@@ -39,6 +39,7 @@
 
 mod build;
 mod built_system;
+mod coil_spring;
 mod gear_pair;
 mod kinds;
 #[cfg(feature = "serde")]
@@ -54,6 +55,7 @@ pub use crate::field::{
 };
 pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
 pub use built_system::{BuiltSystem, SweepAngle, SweepError};
+pub use coil_spring::CoilSpringSpec;
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
 pub use system::{

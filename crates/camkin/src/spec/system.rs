@@ -79,6 +79,9 @@ pub struct SystemSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub dynamics: Option<SystemDynamicsSpec>,
+    /// `[[coil_spring]]`: coil springs with mass, as chains of lumped masses (for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub coil_spring: Vec<super::CoilSpringSpec>,
 }
 
 /// `[dynamics]` of a system file.
@@ -691,6 +694,47 @@ impl SystemSpec {
                 },
             });
         }
+        let mut coil_springs = Vec::with_capacity(self.coil_spring.len());
+        for (i, c) in self.coil_spring.iter().enumerate() {
+            named(T::CoilSpring, i, &c.name)?;
+            let (a, at_a, b, at_b) = ends(T::CoilSpring, i, &c.bodies, c.at)?;
+            let f = |key| at(T::CoilSpring, i, key);
+            let spring = crate::system::CoilSpring {
+                name: c.name.clone(),
+                a,
+                at_a,
+                b,
+                at_b,
+                stiffness: non_negative(f(K::Stiffness), c.stiffness)? / scale,
+                free_length: scale * non_negative(f(K::FreeLength), c.free_length)?,
+                preload: finite(f(K::Preload), c.preload.unwrap_or(0.0))?,
+                mass: non_negative(f(K::Mass), c.mass)?,
+                masses: match c.masses {
+                    n if n <= 64 => n,
+                    n => {
+                        return Err(SpecError::Invalid {
+                            field: f(K::Masses),
+                            value: n.to_string(),
+                            reason: "must be from 0 to 64".into(),
+                        })
+                    }
+                },
+                solid_length: c
+                    .solid_length
+                    .map(|s| non_negative(f(K::SolidLength), s).map(|s| scale * s))
+                    .transpose()?,
+            };
+            if spring.masses > 0 && !(spring.mass > 0.0) {
+                return Err(SpecError::Rule {
+                    field: f(K::Mass),
+                    reason: format!("{} lumped masses need the coils' mass", spring.masses),
+                });
+            }
+            spring.add_to(&mut sys);
+            // its coil-clash contacts take the default restitution
+            restitution.resize(sys.contacts().len(), default_restitution);
+            coil_springs.push(spring);
+        }
         // as many rows as coordinates, unless forces move the free degrees of freedom
         let (rows, coords) = (sys.rows(), 3 * sys.bodies().len());
         if rows != coords && self.dynamics.is_none() {
@@ -721,6 +765,8 @@ impl SystemSpec {
             warnings,
             sweep_angle: SweepAngle::FirstDriver,
             dynamics,
+            coil_springs,
+            simulated: self.dynamics.is_some(),
         })
     }
 }

@@ -31,6 +31,7 @@
 //! answer from a singular matrix.
 
 mod assemble;
+mod coil_spring;
 mod driver;
 mod error;
 mod force;
@@ -40,6 +41,7 @@ mod lu;
 mod search;
 mod solve;
 
+pub use coil_spring::CoilSpring;
 pub use driver::{Coordinate, Driver, Law};
 pub use error::SystemError;
 pub use jerk::BodyJerk;

@@ -227,7 +227,9 @@ fn instants_far_apart_are_the_assembly_a_fine_sweep_reaches() {
             continue;
         }
         let text = std::fs::read_to_string(&path).unwrap();
-        if !is_system(&text) {
+        // the kinematic examples (a file with [dynamics] is simulated: its forces move its free
+        // degrees of freedom)
+        if !is_system(&text) || text.contains("[dynamics]") {
             continue;
         }
         let built = build(&text).unwrap();
