@@ -155,6 +155,19 @@ fn systems(c: &mut Criterion) {
             }
         })
     });
+    // issue 46: a simulated revolution of examples/valve-train.toml at 0.25° (target 10 ms)
+    let built = camkin_bench::scenarios::valve_train_example();
+    let h = 0.25f64.to_radians() / w;
+    g.bench_function("valve_train_simulated_revolution_0.25deg", |b| {
+        b.iter(|| {
+            let mut sim =
+                camkin::dynamics::SystemSimulation::new(&built.system, built.dynamics.clone())
+                    .expect("simulation");
+            for _ in 0..1440 {
+                black_box(sim.advance(h).expect("step"));
+            }
+        })
+    });
     g.finish();
 }
 

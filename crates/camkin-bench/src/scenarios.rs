@@ -226,7 +226,23 @@ pub fn all() -> Vec<Scenario> {
         "a simulated 1° step of the paper's cam (advance and sample)",
         360,
     );
+    add(
+        "dynamics/valve-train-step".into(),
+        "a simulated 0.25° step of examples/valve-train.toml (12 bodies, 12 contacts)",
+        100,
+    );
     out
+}
+
+/// `examples/valve-train.toml`, built as the command builds it.
+pub fn valve_train_example() -> camkin::spec::BuiltSystem {
+    let text = include_str!("../../../examples/valve-train.toml");
+    camkin::spec::text::read_system(
+        text,
+        "valve-train.toml",
+        &camkin::spec::BuildOptions::default(),
+    )
+    .expect("the example builds")
 }
 
 /// Repeats `f` `reps` times: the only function whose instructions are collected.
@@ -423,6 +439,20 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
                 sweep
                     .step((k + 1) as f64 * dt)
                     .map_or(f64::NAN, |s| s.bodies[i].acceleration.y)
+            })
+        }
+        ("dynamics", "valve-train-step") => {
+            let built = valve_train_example();
+            let mut sim =
+                camkin::dynamics::SystemSimulation::new(&built.system, built.dynamics.clone())
+                    .expect("simulation");
+            let h = 0.25f64.to_radians() / (3000.0 * std::f64::consts::TAU / 60.0);
+            // past the seat's lift-off at 0.64°
+            for _ in 0..4 {
+                let _ = sim.advance(h);
+            }
+            counted_repetitions(reps, |_| {
+                sim.advance(h).map_or(f64::NAN, |e| e.len() as f64)
             })
         }
         ("dynamics", "step-1deg") => {

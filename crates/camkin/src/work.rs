@@ -130,10 +130,10 @@ impl Work {
     /// `steps` simulated steps of a system ([`crate::dynamics::SystemSimulation`]): each four
     /// evaluations of the equations of motion and a projection, about 2e-5 s a body (the valve
     /// train's 1e-5 s a body measured, with a margin for events' bisections), and `outputs`
-    /// rows of 24-byte numbers (nine a body, three a contact).
+    /// rows of 24-byte numbers (nine a body, three a contact, one a driver).
     pub fn system_simulation(sys: &crate::system::System, steps: usize, outputs: usize) -> Self {
         let n = sys.bodies().len().max(1) as f64;
-        let cells = 4 + 9 * sys.bodies().len() + 3 * sys.contacts().len();
+        let cells = 4 + 9 * sys.bodies().len() + 3 * sys.contacts().len() + sys.drivers().len();
         Self::new(
             format!("{steps} simulated steps of this system"),
             steps as f64 * 2e-5 * n,

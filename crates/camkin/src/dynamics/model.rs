@@ -405,42 +405,23 @@ impl System {
                     &p,
                     crate::contact::CONFORMAL_TOLERANCE,
                 )?;
-                let mut jac = [(0, 0.0); 6];
-                let mut len = 0;
-                for (side, body) in [*a, *b].into_iter().enumerate() {
-                    if body == GROUND {
-                        continue;
-                    }
-                    for c in 0..3 {
-                        jac[len] = (3 * body + c, k.phi_q[3 * side + c]);
-                        len += 1;
-                    }
-                }
-                Rows::one(Row::new(p.gap, &jac[..len], k.gamma))
-            }
-            Constraint::Joint(kind) => {
-                let [a, b] = kind.bodies();
-                let mut evals = Vec::with_capacity(3);
-                kind.eval(&body_state(q, qd, a.0), &body_state(q, qd, b.0), &mut evals);
-                let mut out = Rows {
-                    rows: [Row::default(); 3],
-                    len: evals.len(),
-                };
-                for (row, e) in out.rows.iter_mut().zip(&evals) {
+                let row = if *a != GROUND && *b != GROUND {
+                    let cols = [3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2];
                     let mut jac = [(0, 0.0); 6];
-                    let mut len = 0;
-                    for (id, g) in e.grads {
-                        if let Some(i) = id.index() {
-                            for (c, v) in g.into_iter().enumerate() {
-                                jac[len] = (3 * i + c, v);
-                                len += 1;
-                            }
-                        }
+                    for (e, (&c, v)) in jac.iter_mut().zip(cols.iter().zip(k.phi_q)) {
+                        *e = (c, v);
                     }
-                    *row = Row::new(e.value, &jac[..len], e.gamma);
-                }
-                out
+                    Row::new(p.gap, &jac, k.gamma)
+                } else {
+                    // one side on the ground: its three entries only
+                    let (body, side) = if *a == GROUND { (*b, 3) } else { (*a, 0) };
+                    let jac: [(usize, f64); 3] =
+                        std::array::from_fn(|c| (3 * body + c, k.phi_q[side + c]));
+                    Row::new(p.gap, &jac, k.gamma)
+                };
+                Rows::one(row)
             }
+            Constraint::Joint(kind) => joint_rows(kind, q, qd),
             Constraint::Driver {
                 body,
                 coordinate,
@@ -452,4 +433,30 @@ impl System {
             }
         })
     }
+}
+
+/// A system joint's rows (out of line: the cam model's loop stays as small as it was).
+#[inline(never)]
+fn joint_rows(kind: &crate::system::JointKind, q: &[f64], qd: &[f64]) -> Rows {
+    let [a, b] = kind.bodies();
+    let mut evals = Vec::with_capacity(3);
+    kind.eval(&body_state(q, qd, a.0), &body_state(q, qd, b.0), &mut evals);
+    let mut out = Rows {
+        rows: [Row::default(); 3],
+        len: evals.len(),
+    };
+    for (row, e) in out.rows.iter_mut().zip(&evals) {
+        let mut jac = [(0, 0.0); 6];
+        let mut len = 0;
+        for (id, g) in e.grads {
+            if let Some(i) = id.index() {
+                for (c, v) in g.into_iter().enumerate() {
+                    jac[len] = (3 * i + c, v);
+                    len += 1;
+                }
+            }
+        }
+        *row = Row::new(e.value, &jac[..len], e.gamma);
+    }
+    out
 }

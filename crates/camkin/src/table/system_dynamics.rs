@@ -1,6 +1,7 @@
 //! The tables of a simulated system (`camkin simulate SYSTEM.toml`): one row an output instant
 //! — every body's pose, rates and accelerations, every contact's force, gap and whether it is in
-//! touch, the energy and the drivers' work — and one row an event (a contact's lift-off or
+//! touch, each driver's torque or force (a camshaft's driving torque), the energy and the
+//! drivers' work — and one row an event (a contact's lift-off or
 //! impact). Lengths in the system's unit, forces in N, energies in N times that unit.
 
 use super::columns::Cell;
@@ -45,6 +46,13 @@ pub fn system_sample_columns(sys: &System, unit: &str) -> Vec<String> {
         c.push(format!("{n}_gap_{unit}"));
         c.push(format!("{n}_in_contact"));
     }
+    for d in sys.drivers() {
+        let n = key(&d.name);
+        c.push(match d.coordinate {
+            crate::system::Coordinate::Angle => format!("{n}_torque_N_{unit}"),
+            _ => format!("{n}_force_N"),
+        });
+    }
     c.push(format!("energy_N_{unit}"));
     c.push(format!("driver_work_N_{unit}"));
     c
@@ -73,6 +81,9 @@ pub fn system_sample_cells(angle_deg: f64, s: &SystemSample) -> Vec<Cell> {
         c.push(Cell::Num(Some(s.contact_forces[k])));
         c.push(Cell::Num(Some(s.gaps[k])));
         c.push(Cell::Flag(Some(s.in_contact[k])));
+    }
+    for &e in &s.driver_efforts {
+        c.push(Cell::Num(Some(e)));
     }
     c.push(Cell::Num(Some(s.energy)));
     c.push(Cell::Num(Some(s.driver_work)));

@@ -101,7 +101,8 @@ fn params() -> FollowerDynamics {
 }
 
 /// Below the lift-off speed both follow `s = R + e cos θ` and push with
-/// `F0 + K e (1 + cos θ) − M e ω² cos θ`.
+/// `F0 + K e (1 + cos θ) − M e ω² cos θ`; the camshaft's torque is `−F e sin θ`, and the energy
+/// changes by the drive's work.
 #[test]
 fn below_lift_off_the_system_path_follows_the_closed_form_and_todays_model() {
     let w = 0.8 * w_crit();
@@ -116,6 +117,8 @@ fn below_lift_off_the_system_path_follows_the_closed_form_and_todays_model() {
     let h = 0.5f64.to_radians() / w;
     let f = preset.follower.index().unwrap();
     let (mut dq, mut dv, mut df, mut dm) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let (mut dt, mut de) = (0.0f64, 0.0f64);
+    let e0 = sys_sim.sample().unwrap().energy;
     for _ in 0..720 {
         assert!(sys_sim.advance(h).unwrap().is_empty());
         assert!(cam_sim.advance(h).unwrap().is_empty());
@@ -136,7 +139,15 @@ fn below_lift_off_the_system_path_follows_the_closed_form_and_todays_model() {
         df = df.max((s.contact_forces[0] - force).abs() / force);
         dm = dm.max((s.contact_forces[0] - c.contact_force).abs() / force);
         dm = dm.max((q - c.position).abs() / E);
+        // the camshaft's torque: the face pushes the disc back along −x at height e sin θ, so
+        // the drive supplies −F e sin θ (its power the follower's F·ṡ)
+        let torque = -force * E * th.sin();
+        dt = dt.max((s.driver_efforts[0] - torque).abs() / (force * E));
+        // no damping, no impact: the energy changes by the drive's work alone
+        de = de.max((s.energy - e0 - s.driver_work).abs() / (K * E * E));
     }
+    eprintln!("camshaft torque {dt:.1e} of F e; energy less work {de:.1e} of k e²");
+    assert!(dt < 1e-9 && de < 1e-9, "{dt:e} {de:e}");
     eprintln!(
         "closed form: position {dq:.1e}, velocity {dv:.1e}, force {df:.1e}; today's model {dm:.1e}"
     );

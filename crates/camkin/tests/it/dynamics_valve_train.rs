@@ -124,3 +124,49 @@ fn the_valve_trains_no_follow_speed_is_the_reduced_models() {
     assert!((stiff.angle_deg - at).abs() < 1.0);
     assert!(example.speed_rpm < closed && example.speed_rpm > 0.98 * closed);
 }
+
+/// Coil clash: with a solid length of 28 mm the example's spring (37 mm installed, 9.5 mm of
+/// lift) closes solid near full lift, and its coils' contacts report impacts there; at its own
+/// 24 mm they never close.
+#[test]
+fn the_valve_springs_coils_clash_when_it_would_go_solid() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/valve-train.toml");
+    let options = camkin::spec::BuildOptions {
+        base_dir: path.parent().unwrap().into(),
+        ..Default::default()
+    };
+    let text = std::fs::read_to_string(&path).unwrap();
+    for (solid, clash) in [("24.0", false), ("28.0", true)] {
+        let text = text.replace("solid_length = 24.0", &format!("solid_length = {solid}"));
+        let built = read_system(&text, "valve-train.toml", &options).unwrap();
+        let mut sim =
+            camkin::dynamics::SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+        let h = 0.25f64.to_radians() / (3000.0 * TAU / 60.0);
+        let mut clashes = Vec::new();
+        let mut lift: f64 = 0.0;
+        let valve = built
+            .system
+            .bodies()
+            .iter()
+            .position(|b| b.name == "valve")
+            .unwrap();
+        for _ in 0..720 {
+            for e in sim.advance(h).unwrap() {
+                let name = &built.system.contacts()[e.contact].name;
+                if name.contains("coil clash") {
+                    clashes.push((e.kind, built.time_of(0.0).map_or(0.0, |t0| e.time - t0)));
+                }
+            }
+            let s = sim.sample().unwrap();
+            lift = lift.max(-28.0 - s.q[3 * valve + 1]);
+        }
+        assert_eq!(!clashes.is_empty(), clash, "solid {solid}: {clashes:?}");
+        if clash {
+            // solid at 28 mm: the valve stops 9 mm down (the lash adjuster gives a little more)
+            assert!(lift < 9.2 && lift > 8.9, "lift {lift}");
+        } else {
+            assert!(lift > 9.5, "lift {lift}");
+        }
+    }
+}

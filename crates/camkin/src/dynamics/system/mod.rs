@@ -99,6 +99,9 @@ pub struct SystemSample {
     pub energy: f64,
     /// the work the drivers have done since the start, N·L
     pub driver_work: f64,
+    /// each driver's effort along its coordinate: an angle's torque (N·L, counter-clockwise
+    /// positive: a camshaft's driving torque), a position's force (N)
+    pub driver_efforts: Vec<f64>,
 }
 
 /// A simulated run: a sample at the start and after every output step, and the events between.
@@ -308,7 +311,7 @@ impl<'a> SystemSimulation<'a> {
             .into());
         }
         // a contact pulled at the start leaves at once
-        let (_, forces, _) = sim.accel(
+        let (_, forces, _, _) = sim.accel(
             0.0,
             &sim.q,
             &sim.qd,
@@ -379,7 +382,7 @@ impl<'a> SystemSimulation<'a> {
     /// The sample at the current state.
     pub fn sample(&self) -> Result<SystemSample, DynamicsError> {
         let mut p = self.pairings.clone();
-        let (qdd, contact_forces, _) =
+        let (qdd, contact_forces, _, driver_efforts) =
             self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
         let mut gaps = vec![0.0; self.in_contact.len()];
         for (k, g) in gaps.iter_mut().enumerate() {
@@ -397,6 +400,7 @@ impl<'a> SystemSimulation<'a> {
             in_contact: self.in_contact.clone(),
             energy: self.energy(),
             driver_work: self.work,
+            driver_efforts,
         })
     }
 

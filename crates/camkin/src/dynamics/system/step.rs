@@ -9,9 +9,13 @@ use super::super::DynamicsError;
 use super::{ContactEvent, SystemSimulation, MAX_EVENTS};
 use crate::contact::{self, Pairing, Surface};
 
+/// `(q̈, each contact's compressive force, the drivers' power, each driver's effort)`.
+type Accel = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
+
 impl SystemSimulation<'_> {
-    /// `(q̈, each contact's compressive force, the drivers' power)` at a state in the modes
-    /// `in_contact`.
+    /// `(q̈, each contact's compressive force, the drivers' power, each driver's effort)` at a
+    /// state in the modes `in_contact`: a driver's effort is the force (or torque) it applies
+    /// along its coordinate, `−λ`.
     pub(super) fn accel(
         &self,
         t: f64,
@@ -19,7 +23,7 @@ impl SystemSimulation<'_> {
         qd: &[f64],
         in_contact: &[bool],
         pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<f64>, Vec<f64>, f64), DynamicsError> {
+    ) -> Result<Accel, DynamicsError> {
         let active = self.active(in_contact);
         let (qdd, lambda) = match self.direct(t, q, qd, &active, pairings)? {
             Some(x) => x,
@@ -35,6 +39,7 @@ impl SystemSimulation<'_> {
         // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
         // a contact's compressive force −λ (its row is the gap, positive apart)
         let mut forces = vec![0.0; in_contact.len()];
+        let mut efforts = Vec::with_capacity(self.sys.drivers().len());
         let (mut r, mut power) = (0, 0.0);
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
@@ -45,6 +50,7 @@ impl SystemSimulation<'_> {
             } = c
             {
                 power -= lambda[r] * qd[3 * body + coordinate.index()];
+                efforts.push(-lambda[r]);
             }
             if k >= self.first_contact {
                 let c = k - self.first_contact;
@@ -52,7 +58,7 @@ impl SystemSimulation<'_> {
             }
             r += c.rows();
         }
-        Ok((qdd, forces, power))
+        Ok((qdd, forces, power, efforts))
     }
 
     /// The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ − 2ξΩ Φ̇ − Ω² Φ` solved directly
@@ -146,13 +152,13 @@ impl SystemSimulation<'_> {
         let add = |a: &[f64], b: &[f64], s: f64| -> Vec<f64> {
             a.iter().zip(b).map(|(x, y)| x + s * y).collect()
         };
-        let (a1, _, w1) = self.accel(t, q, qd, modes, &mut p)?;
+        let (a1, _, w1, _) = self.accel(t, q, qd, modes, &mut p)?;
         let (q2, v2) = (add(q, qd, 0.5 * h), add(qd, &a1, 0.5 * h));
-        let (a2, _, w2) = self.accel(t + 0.5 * h, &q2, &v2, modes, &mut p)?;
+        let (a2, _, w2, _) = self.accel(t + 0.5 * h, &q2, &v2, modes, &mut p)?;
         let (q3, v3) = (add(q, &v2, 0.5 * h), add(qd, &a2, 0.5 * h));
-        let (a3, _, w3) = self.accel(t + 0.5 * h, &q3, &v3, modes, &mut p)?;
+        let (a3, _, w3, _) = self.accel(t + 0.5 * h, &q3, &v3, modes, &mut p)?;
         let (q4, v4) = (add(q, &v3, h), add(qd, &a3, h));
-        let (a4, _, w4) = self.accel(t + h, &q4, &v4, modes, &mut p)?;
+        let (a4, _, w4, _) = self.accel(t + h, &q4, &v4, modes, &mut p)?;
         let n = q.len();
         let qn = (0..n)
             .map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]))
@@ -289,7 +295,8 @@ impl SystemSimulation<'_> {
             self.project()?;
             // what ended the step: a contact pulled, or a gap closed
             let mut p = self.pairings.clone();
-            let (_, forces, _) = self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
+            let (_, forces, _, _) =
+                self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
             let mut crossing = Vec::new();
             for (k, &force) in forces.iter().enumerate() {
                 if self.in_contact[k] {
