@@ -22,6 +22,7 @@
 //! in kg·m² (converted with the unit's size in metres), forces in N, stiffnesses in N/L, gravity
 //! in m/s²; energies are reported in N·L.
 
+mod sparse;
 mod step;
 
 use super::follower::EventKind;

@@ -3,9 +3,10 @@
 //! events inside a step (lift-offs by bisection on the force, impacts by bisection on the gap).
 
 use super::super::follower::{EventKind, REBOUND_TOLERANCE};
-use super::super::model::Constraint;
+use super::super::model::{Constraint, Row};
 use super::super::projection::DenseRows;
 use super::super::DynamicsError;
+use super::sparse::{self, Schur};
 use super::{ContactEvent, SystemSimulation, MAX_EVENTS};
 use crate::contact::{self, Pairing, Surface};
 
@@ -77,7 +78,8 @@ impl SystemSimulation<'_> {
         let n = q.len();
         let al = &self.opts.al;
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
-        let mut jac = Vec::new();
+        // the active rows, sparse (at most six entries each), their γ̃, and Φ_q dense
+        let mut sparse = Vec::new();
         let mut rhs = Vec::new();
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
@@ -88,50 +90,35 @@ impl SystemSimulation<'_> {
                 .rows(c, t, q, qd, &mut pairings[k])
                 .map_err(|source| DynamicsError::Contact { time: t, source })?;
             for row in rows.iter() {
-                let mut dense = vec![0.0; n];
-                for &(col, v) in row.jac() {
-                    dense[col] += v;
-                }
-                let phi_dot = super::super::dense::dot(&dense, qd) - c.target_rate(t);
+                let phi_dot: f64 =
+                    row.jac().iter().map(|&(col, v)| v * qd[col]).sum::<f64>() - c.target_rate(t);
                 rhs.push(row.gamma - c1 * phi_dot - c2 * row.phi);
-                jac.extend(dense);
+                sparse.push(*row);
             }
         }
-        let m = rhs.len();
-        let inv_mass: Vec<f64> = self
-            .model
-            .bodies
-            .iter()
-            .flat_map(|b| [1.0 / b.mass, 1.0 / b.mass, 1.0 / b.inertia])
-            .collect();
+        let inv_mass = self.inv_mass();
         let mut force = vec![0.0; n];
         self.model.forces(q, qd, &mut force);
-        let row = |r: usize| &jac[r * n..(r + 1) * n];
-        // S = J M⁻¹ Jᵀ (its lower triangle) and J M⁻¹ Q − γ̃
-        let mut schur = vec![0.0; m * m];
-        let mut lambda = vec![0.0; m];
-        for a in 0..m {
-            for b in 0..=a {
-                schur[a * m + b] = (0..n).map(|i| row(a)[i] * inv_mass[i] * row(b)[i]).sum();
-            }
-            lambda[a] = (0..n)
-                .map(|i| row(a)[i] * inv_mass[i] * force[i])
-                .sum::<f64>()
-                - rhs[a];
-        }
-        let diagonal: Vec<f64> = (0..m).map(|a| schur[a * m + a]).collect();
-        if !super::super::dense::cholesky(&mut schur, m) {
+        let Some(schur) = Schur::new(&sparse, &inv_mass) else {
             return Ok(None);
-        }
-        // a pivot far below its row's size: dependent rows, not an answer
-        if (0..m).any(|a| schur[a * m + a].powi(2) <= 1e-12 * diagonal[a]) {
-            return Ok(None);
-        }
-        super::super::dense::cholesky_solve(&schur, m, &mut lambda);
+        };
+        // S λ = Φ_q M⁻¹ Q − γ̃
+        let mut lambda: Vec<f64> = sparse
+            .iter()
+            .zip(&rhs)
+            .map(|(row, &g)| {
+                row.jac()
+                    .iter()
+                    .map(|&(col, v)| v * inv_mass[col] * force[col])
+                    .sum::<f64>()
+                    - g
+            })
+            .collect();
+        schur.solve(&mut lambda);
         let mut qdd = force;
-        for (r, &l) in lambda.iter().enumerate() {
-            for (x, a) in qdd.iter_mut().zip(row(r)) {
-                *x -= a * l;
+        for (row, &l) in sparse.iter().zip(&lambda) {
+            for &(col, v) in row.jac() {
+                qdd[col] -= v * l;
             }
         }
         for (x, w) in qdd.iter_mut().zip(&inv_mass) {
@@ -219,6 +206,76 @@ impl SystemSimulation<'_> {
     /// Positions by Newton onto the active rows (mass-orthogonal), then velocities onto
     /// `Φ_q q̇ = −Φ_t`.
     pub(super) fn project(&mut self) -> Result<(), DynamicsError> {
+        let mut pairings = self.pairings.clone();
+        let modes = self.in_contact.clone();
+        let inv_mass = self.inv_mass();
+        let (mut rows, mut phi, mut target) =
+            self.sparse_rows(&self.q, &self.qd, &modes, &mut pairings)?;
+        for _ in 0..8 {
+            if phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
+                break;
+            }
+            let Some(schur) = Schur::new(&rows, &inv_mass) else {
+                return self.project_dense();
+            };
+            let b: Vec<f64> = phi.iter().map(|p| -p).collect();
+            let dq = sparse::project(&rows, &inv_mass, &schur, &vec![0.0; self.q.len()], &b);
+            for (q, d) in self.q.iter_mut().zip(&dq) {
+                *q += d;
+            }
+            (rows, phi, target) = self.sparse_rows(&self.q, &self.qd, &modes, &mut pairings)?;
+        }
+        let Some(schur) = Schur::new(&rows, &inv_mass) else {
+            return self.project_dense();
+        };
+        self.qd = sparse::project(&rows, &inv_mass, &schur, &self.qd, &target);
+        self.pairings = pairings;
+        Ok(())
+    }
+
+    /// The inverse of the mass matrix's diagonal, one per coordinate.
+    fn inv_mass(&self) -> Vec<f64> {
+        self.model
+            .bodies
+            .iter()
+            .flat_map(|b| [1.0 / b.mass, 1.0 / b.mass, 1.0 / b.inertia])
+            .collect()
+    }
+
+    /// The active rows at `(q, q̇)`, sparse, with `Φ` and the rate each must have (`−Φ_t`).
+    #[allow(clippy::type_complexity)]
+    fn sparse_rows(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        in_contact: &[bool],
+        pairings: &mut [Option<Pairing>],
+    ) -> Result<(Vec<Row>, Vec<f64>, Vec<f64>), DynamicsError> {
+        let active = self.active(in_contact);
+        let (mut rows, mut phi, mut target) = (Vec::new(), Vec::new(), Vec::new());
+        for (k, c) in self.model.constraints.iter().enumerate() {
+            if !active[k] {
+                continue;
+            }
+            let rs = self
+                .model
+                .rows(c, self.t, q, qd, &mut pairings[k])
+                .map_err(|source| DynamicsError::Contact {
+                    time: self.t,
+                    source,
+                })?;
+            for row in rs.iter() {
+                phi.push(row.phi);
+                target.push(c.target_rate(self.t));
+                rows.push(*row);
+            }
+        }
+        Ok((rows, phi, target))
+    }
+
+    /// [`SystemSimulation::project`] on the whole saddle-point matrix, where the rows are
+    /// dependent and the Schur complement cannot be factored.
+    fn project_dense(&mut self) -> Result<(), DynamicsError> {
         let n = self.q.len();
         let mut pairings = self.pairings.clone();
         let modes = self.in_contact.clone();
