@@ -232,11 +232,15 @@ impl PySystem {
         };
         let unit = self.built.length_unit.name();
         let mut samples = Columns::new(
-            camkin::table::system_sample_columns(sys, unit),
+            camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
             run.samples.len(),
         );
         for (k, s) in run.samples.iter().enumerate() {
-            samples.push(camkin::table::system_sample_cells(step_deg * k as f64, s));
+            samples.push(camkin::table::system_sample_cells(
+                step_deg * k as f64,
+                s,
+                &self.built.dynamics.hertz,
+            ));
         }
         let mut events = Columns::new(camkin::table::system_event_columns(unit), run.events.len());
         for e in &run.events {

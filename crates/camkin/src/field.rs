@@ -167,6 +167,10 @@ pub enum SystemKey {
     Masses,
     /// `solid_length`
     SolidLength,
+    /// `face_width`
+    FaceWidth,
+    /// `materials`
+    Materials,
 }
 
 impl SystemKey {
@@ -201,6 +205,8 @@ impl SystemKey {
             SystemKey::Gravity => "gravity",
             SystemKey::Masses => "masses",
             SystemKey::SolidLength => "solid_length",
+            SystemKey::FaceWidth => "face_width",
+            SystemKey::Materials => "materials",
         })
     }
 }

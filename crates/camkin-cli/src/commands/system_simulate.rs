@@ -92,9 +92,9 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
     let rows: Vec<Vec<Cell>> = samples
         .iter()
         .enumerate()
-        .map(|(k, s)| system_sample_cells(step * k as f64, s))
+        .map(|(k, s)| system_sample_cells(step * k as f64, s, &built.dynamics.hertz))
         .collect();
-    let columns = system_sample_columns(sys, unit);
+    let columns = system_sample_columns(sys, unit, &built.dynamics.hertz);
     let event_columns = system_event_columns(unit);
     let event_rows: Vec<Vec<Cell>> = events
         .iter()

@@ -84,6 +84,16 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
             "gravity = [0.0, 1e400]",
             "gravity",
         ),
+        (
+            "materials = \"steel,aisi-52100\"",
+            "materials = \"steel\"",
+            "contact[1].materials",
+        ),
+        (
+            "face_width = 8.0",
+            "face_width = -8.0",
+            "contact[1].face_width = -8",
+        ),
     ] {
         let path = dir.path().join("bad.toml");
         std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
@@ -179,4 +189,39 @@ fn the_no_follow_speed_and_the_pages() {
     }
     let events = std::fs::read_to_string(pages.join("events.csv")).unwrap();
     assert!(events.contains("impact,seat"), "{events}");
+}
+
+/// The cam's Hertz pressure on the roller while the valve is shut: the base circle (20 mm) on
+/// the roller (8 mm) over its 12 mm face, steel on steel, `p = √(F E* (1/R₁ + 1/R₂) / (π L))`
+/// with the force of the same row — the curvatures' signs (a cam synthesised clockwise) and the
+/// millimetres in it.
+#[test]
+fn the_cams_hertz_pressure_on_its_base_circle_is_the_closed_forms() {
+    let out = camkin()
+        .arg("simulate")
+        .arg(examples().join("valve-train.toml"))
+        .args(["--step", "0.5"])
+        .assert()
+        .success();
+    let (header, rows) = parse_csv(&out.get_output().stdout);
+    let col = columns(&header);
+    let e_star = 206e9 / (2.0 * (1.0 - 0.3 * 0.3));
+    let mut checked = 0;
+    for r in &rows {
+        let angle: f64 = r[col["driver_angle_deg"]].parse().unwrap();
+        if !(200.0..=350.0).contains(&angle) {
+            continue;
+        }
+        let f: f64 = r[col["cam_on_roller_force_N"]].parse().unwrap();
+        let p: f64 = r[col["cam_on_roller_hertz_MPa"]].parse().unwrap();
+        let closed = (f * e_star * (1.0 / 0.020 + 1.0 / 0.008) / (std::f64::consts::PI * 0.012))
+            .sqrt()
+            / 1e6;
+        assert!(
+            (p - closed).abs() <= 1e-9 * closed,
+            "at {angle}°: {p} MPa, {closed} MPa"
+        );
+        checked += 1;
+    }
+    assert!(checked > 200);
 }

@@ -51,7 +51,9 @@ pub use reduced::Reduced;
 pub use run::{Run, StepAdvice};
 pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
-pub use system::{ContactEvent, SystemDynamicsOptions, SystemRun, SystemSample, SystemSimulation};
+pub use system::{
+    ContactEvent, ContactHertz, SystemDynamicsOptions, SystemRun, SystemSample, SystemSimulation,
+};
 
 /// What went wrong in a dynamic simulation.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

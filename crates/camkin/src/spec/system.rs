@@ -255,6 +255,19 @@ pub struct ContactSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub restitution: Option<f64>,
+    /// its line contact's face width, length unit: with it the simulation gives its Hertz
+    /// pressure (for dynamics)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub face_width: Option<f64>,
+    /// its curves' materials, `A,B` (presets or `E=<Pa>:nu=<ratio>`; default `steel,steel`)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub materials: Option<String>,
 }
 
 /// The field `key` of element `index` of `table`.
@@ -527,6 +540,7 @@ impl SystemSpec {
             None => (None, 0.0),
         };
         let mut restitution = Vec::with_capacity(self.contact.len());
+        let mut hertz = Vec::with_capacity(self.contact.len());
         for (i, c) in self.contact.iter().enumerate() {
             named(T::Contact, i, &c.name)?;
             let [a, b] = two(T::Contact, i, &c.bodies)?;
@@ -591,6 +605,32 @@ impl SystemSpec {
             };
             let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
             let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;
+            hertz.push(match c.face_width {
+                Some(w) => {
+                    let width = scale * positive(at(T::Contact, i, K::FaceWidth), w)?;
+                    let text = c.materials.as_deref().unwrap_or("steel,steel");
+                    let m: crate::report::Materials =
+                        text.parse().map_err(|e: crate::report::MaterialError| {
+                            SpecError::Invalid {
+                                field: at(T::Contact, i, K::Materials),
+                                value: text.to_string(),
+                                reason: e.to_string(),
+                            }
+                        })?;
+                    Some(crate::dynamics::ContactHertz {
+                        width,
+                        e_star: m.effective_modulus(),
+                    })
+                }
+                None if c.materials.is_some() => {
+                    return Err(SpecError::Rule {
+                        field: at(T::Contact, i, K::Materials),
+                        reason: "materials need the contact's face_width (its Hertz pressure)"
+                            .into(),
+                    })
+                }
+                None => None,
+            });
             restitution.push(match c.restitution {
                 Some(e) => unit_interval(at(T::Contact, i, K::Restitution), e)?,
                 None => default_restitution,
@@ -757,6 +797,7 @@ impl SystemSpec {
                 None => crate::Vec2::zeros(),
             },
             restitution,
+            hertz,
             ..crate::dynamics::SystemDynamicsOptions::default()
         };
         Ok(BuiltSystem {

@@ -21,8 +21,13 @@ fn key(name: &str) -> String {
         .collect()
 }
 
-/// The columns of a simulated system's samples, lengths in `unit`.
-pub fn system_sample_columns(sys: &System, unit: &str) -> Vec<String> {
+/// The columns of a simulated system's samples, lengths in `unit`; each contact with a face
+/// width in `hertz` adds its Hertz pressure (`{contact}_hertz_MPa`).
+pub fn system_sample_columns(
+    sys: &System,
+    unit: &str,
+    hertz: &[Option<crate::dynamics::ContactHertz>],
+) -> Vec<String> {
     let mut c = vec!["driver_angle_deg".to_string(), "time_s".to_string()];
     for b in sys.bodies() {
         let n = key(&b.name);
@@ -40,11 +45,14 @@ pub fn system_sample_columns(sys: &System, unit: &str) -> Vec<String> {
             c.push(format!("{n}_{q}_{u}"));
         }
     }
-    for k in sys.contacts() {
+    for (j, k) in sys.contacts().iter().enumerate() {
         let n = key(&k.name);
         c.push(format!("{n}_force_N"));
         c.push(format!("{n}_gap_{unit}"));
         c.push(format!("{n}_in_contact"));
+        if hertz.get(j).is_some_and(|h| h.is_some()) {
+            c.push(format!("{n}_hertz_MPa"));
+        }
     }
     for d in sys.drivers() {
         let n = key(&d.name);
@@ -58,8 +66,13 @@ pub fn system_sample_columns(sys: &System, unit: &str) -> Vec<String> {
     c
 }
 
-/// One sample's row at driver angle `angle_deg`.
-pub fn system_sample_cells(angle_deg: f64, s: &SystemSample) -> Vec<Cell> {
+/// One sample's row at driver angle `angle_deg` (under [`system_sample_columns`] with the same
+/// `hertz`; a Hertz pressure that is not defined is an empty cell).
+pub fn system_sample_cells(
+    angle_deg: f64,
+    s: &SystemSample,
+    hertz: &[Option<crate::dynamics::ContactHertz>],
+) -> Vec<Cell> {
     let mut c = vec![Cell::Num(Some(angle_deg)), Cell::Num(Some(s.time))];
     for i in 0..s.q.len() / 3 {
         let k = 3 * i;
@@ -81,6 +94,9 @@ pub fn system_sample_cells(angle_deg: f64, s: &SystemSample) -> Vec<Cell> {
         c.push(Cell::Num(Some(s.contact_forces[k])));
         c.push(Cell::Num(Some(s.gaps[k])));
         c.push(Cell::Flag(Some(s.in_contact[k])));
+        if hertz.get(k).is_some_and(|h| h.is_some()) {
+            c.push(Cell::Num(s.hertz_pa[k].map(|p| p / 1e6)));
+        }
     }
     for &e in &s.driver_efforts {
         c.push(Cell::Num(Some(e)));

@@ -45,6 +45,20 @@ pub struct SystemDynamicsOptions {
     /// the augmented Lagrangian's parameters; by default its penalty is 1e4 of the largest mass
     /// (see [`SystemDynamicsOptions::default`])
     pub al: AugmentedLagrangian,
+    /// each contact's line-contact width and materials for its Hertz pressure, in the system's
+    /// order (none past the list's end)
+    pub hertz: Vec<Option<ContactHertz>>,
+}
+
+/// A contact's face width and elastic materials: its Hertz line pressure
+/// `p = √(F E* (1/R₁ + 1/R₂) / (π L))` (Johnson, Contact Mechanics, 1985, §4.2) from the force
+/// and the curves' radii of curvature at the contact point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactHertz {
+    /// the face width `L`, in the system's length unit
+    pub width: f64,
+    /// `E*` of the two materials, Pa
+    pub e_star: f64,
 }
 
 impl Default for SystemDynamicsOptions {
@@ -58,6 +72,7 @@ impl Default for SystemDynamicsOptions {
             metres_per_unit: 1.0,
             gravity: Vec2::zeros(),
             restitution: Vec::new(),
+            hertz: Vec::new(),
             al: AugmentedLagrangian {
                 penalty: 1e4,
                 ..AugmentedLagrangian::default()
@@ -103,6 +118,10 @@ pub struct SystemSample {
     /// each driver's effort along its coordinate: an angle's torque (N·L, counter-clockwise
     /// positive: a camshaft's driving torque), a position's force (N)
     pub driver_efforts: Vec<f64>,
+    /// each contact's Hertz pressure, Pa: where it has a width and materials
+    /// ([`ContactHertz`]) and is closed (0 open), none where its curvatures do not close (a
+    /// concave curve as sharp as the other) or a curve is a point
+    pub hertz_pa: Vec<Option<f64>>,
 }
 
 /// A simulated run: a sample at the start and after every output step, and the events between.
@@ -127,6 +146,9 @@ pub struct SystemSimulation<'a> {
     /// a point) is positive apart — the curve runs with its material on its left — and −1
     /// where that curve runs the other way round (a cam synthesised clockwise)
     sense: Vec<f64>,
+    /// each contact's two curves' orientations (+1 material on the left), for their curvatures
+    /// convex positive
+    turning: Vec<[f64; 2]>,
     /// a speed of the system (its drivers' rates times the size, or `√(g size)`), for the
     /// rebound that re-engages a contact
     speed_scale: f64,
@@ -258,6 +280,16 @@ impl<'a> SystemSimulation<'a> {
                 }
             })
             .collect();
+        let turning = sys
+            .contacts()
+            .iter()
+            .map(|c| {
+                [
+                    orientation(c.curve_a.as_ref()),
+                    orientation(c.curve_b.as_ref()),
+                ]
+            })
+            .collect();
         let mut sim = Self {
             sys,
             model,
@@ -265,6 +297,7 @@ impl<'a> SystemSimulation<'a> {
             first_contact,
             size,
             sense,
+            turning,
             speed_scale,
             t: 0.0,
             qd: vec![0.0; q.len()],
@@ -391,6 +424,37 @@ impl<'a> SystemSimulation<'a> {
                 *g = self.gap(&self.q, &self.qd, k, &mut p)?;
             }
         }
+        let hertz_pa = (0..self.in_contact.len())
+            .map(|k| {
+                let h = self.opts.hertz.get(k).copied().flatten()?;
+                if !self.in_contact[k] {
+                    return Some(0.0);
+                }
+                let c = &self.sys.contacts()[k];
+                let pairing = p[self.first_contact + k]?;
+                // each curve's curvature at the contact, convex positive, 1/m
+                let u = self.opts.metres_per_unit;
+                let bend = |curve: &dyn crate::curve::Curve, at: f64, turn: f64| -> Option<f64> {
+                    if matches!(curve.domain(), crate::curve::Domain::Point) {
+                        return None;
+                    }
+                    Some(turn * curve.eval(at).curvature() / u)
+                };
+                let [ta, tb] = self.turning[k];
+                let (ka, kb) = (
+                    bend(c.curve_a.as_ref(), pairing.u_a, ta)?,
+                    bend(c.curve_b.as_ref(), pairing.u_b, tb)?,
+                );
+                let radius = |k: f64| if k == 0.0 { f64::INFINITY } else { 1.0 / k };
+                super::hertz_line_pressure(
+                    contact_forces[k].max(0.0),
+                    h.width * u,
+                    radius(ka),
+                    radius(kb),
+                    h.e_star,
+                )
+            })
+            .collect();
         Ok(SystemSample {
             time: self.t,
             q: self.q.clone(),
@@ -402,6 +466,7 @@ impl<'a> SystemSimulation<'a> {
             energy: self.energy(),
             driver_work: self.work,
             driver_efforts,
+            hertz_pa,
         })
     }
 
