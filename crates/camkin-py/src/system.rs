@@ -109,8 +109,9 @@ impl PySystem {
                     "",
                     None,
                     format!(
-                        "the system cannot be analysed at its first instant ({}°): {e}",
-                        camkin::human::human(angles.first().copied().unwrap_or(0.0))
+                        "the system cannot be analysed at its first instant ({}°): {}",
+                        camkin::human::human(angles.first().copied().unwrap_or(0.0)),
+                        self.built.explain(&e)
                     ),
                 )
             })?;

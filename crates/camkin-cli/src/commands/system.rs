@@ -63,16 +63,10 @@ fn write_sweep(
         ", or use fewer angles",
     )?;
     let mut instants = sys.instants(&times).map_err(|e| {
-        // a system with free degrees of freedom that forces move is simulated, not analysed
-        let hint = match e {
-            camkin::system::SystemError::NotSquare { .. } if built.simulated => {
-                "; a system moved by its forces ([dynamics]) is simulated: `camkin simulate`"
-            }
-            _ => "",
-        };
         bad(format!(
-            "{name}: the system cannot be analysed at its first instant ({}°): {e}{hint}",
-            camkin::human::human(angles.first().copied().unwrap_or(0.0))
+            "{name}: the system cannot be analysed at its first instant ({}°): {}",
+            camkin::human::human(angles.first().copied().unwrap_or(0.0)),
+            built.explain(&e)
         ))
     })?;
     let mut failed = None;
@@ -233,7 +227,9 @@ pub fn plot(
     let mut scenes: Vec<(f64, Vec<Shape>)> = Vec::new();
     let mut order: Vec<usize> = (0..all.len()).collect();
     order.sort_by(|&i, &j| times[i].total_cmp(&times[j]));
-    let mut sweep = sys.sweep().map_err(|e| bad(format!("{name}: {e}")))?;
+    let mut sweep = sys
+        .sweep()
+        .map_err(|e| bad(format!("{name}: {}", built.explain(&e))))?;
     let mut by_index: Vec<Option<Vec<Shape>>> = vec![None; all.len()];
     let per_degree =
         built.time_of(1f64.to_radians()).unwrap_or(0.0) - built.time_of(0.0).unwrap_or(0.0);

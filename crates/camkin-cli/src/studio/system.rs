@@ -55,7 +55,8 @@ fn solve(built: &BuiltSystem, step_deg: f64, limits: &Limits) -> Result<Solved, 
         .instants(&times)
         .map_err(|e| {
             input(format!(
-                "the system cannot be analysed at its first instant: {e}"
+                "the system cannot be analysed at its first instant: {}",
+                built.explain(&e)
             ))
         })?
         .collect();

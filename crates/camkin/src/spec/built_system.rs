@@ -103,6 +103,18 @@ impl BuiltSystem {
         })
     }
 
+    /// `e` as people read it, with what to do where a kinematic analysis meets a system its
+    /// forces move (a file with `[dynamics]` whose degrees of freedom are not all driven:
+    /// `camkin simulate` it).
+    pub fn explain(&self, e: &crate::system::SystemError) -> String {
+        match e {
+            crate::system::SystemError::NotSquare { .. } if self.simulated => format!(
+                "{e}; a system moved by its forces ([dynamics]) is simulated: `camkin simulate`, Python's System.simulate"
+            ),
+            _ => e.to_string(),
+        }
+    }
+
     /// The instant at the sweep angle `angle` (rad) (see [`SweepAngle::time`]).
     pub fn time_of(&self, angle: f64) -> Option<f64> {
         self.sweep_angle.time(&self.system, angle)
