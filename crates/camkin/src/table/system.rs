@@ -8,7 +8,7 @@ use super::columns::Cell;
 use crate::system::{System, SystemError, SystemState};
 
 /// A name made safe for a column: letters, digits and `_`.
-fn key(name: &str) -> String {
+pub(super) fn key(name: &str) -> String {
     name.chars()
         .map(|c| {
             if c.is_ascii_alphanumeric() {

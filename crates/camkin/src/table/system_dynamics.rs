@@ -5,21 +5,9 @@
 //! impact). Lengths in the system's unit, forces in N, energies in N times that unit.
 
 use super::columns::Cell;
+use super::system::key;
 use crate::dynamics::{ContactEvent, EventKind, SystemSample};
 use crate::system::System;
-
-/// A name made safe for a column (as the analysis table's).
-fn key(name: &str) -> String {
-    name.chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() {
-                c.to_ascii_lowercase()
-            } else {
-                '_'
-            }
-        })
-        .collect()
-}
 
 /// The columns of a simulated system's samples, lengths in `unit`; each contact with a face
 /// width in `hertz` adds its Hertz pressure (`{contact}_hertz_MPa`).
