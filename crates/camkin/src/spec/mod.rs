@@ -46,6 +46,7 @@ mod kinds;
 mod pair;
 mod profile;
 mod system;
+mod system_dynamics;
 #[cfg(feature = "text")]
 pub mod text;
 
@@ -62,6 +63,7 @@ pub use system::{
     BodySpec, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
     TorsionSpringSpec,
 };
+pub use system_dynamics::SystemDynamicsSpec;
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;

@@ -78,23 +78,10 @@ pub struct SystemSpec {
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")
     )]
-    pub dynamics: Option<SystemDynamicsSpec>,
+    pub dynamics: Option<super::SystemDynamicsSpec>,
     /// `[[coil_spring]]`: coil springs with mass, as chains of lumped masses (for dynamics)
     #[cfg_attr(feature = "serde", serde(default))]
     pub coil_spring: Vec<super::CoilSpringSpec>,
-}
-
-/// `[dynamics]` of a system file.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
-pub struct SystemDynamicsSpec {
-    /// gravity in the world, m/s² (default none)
-    #[cfg_attr(feature = "serde", serde(default))]
-    pub gravity: Option<[f64; 2]>,
-    /// Newton's coefficient of restitution of every contact without its own, 0 to 1 (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
-    pub restitution: Option<f64>,
 }
 
 /// `[[spring]]`: `stiffness` N per length, `free_length` (length), `preload` N at it.
@@ -518,17 +505,7 @@ impl SystemSpec {
             });
         }
         let mut warnings = Vec::new();
-        let unit_interval = |f: Field, e: f64| -> Result<f64, SpecError> {
-            if (0.0..=1.0).contains(&e) {
-                Ok(e)
-            } else {
-                Err(SpecError::Invalid {
-                    field: f,
-                    value: crate::human::human(e),
-                    reason: "must be from 0 to 1".into(),
-                })
-            }
-        };
+        let unit_interval = super::system_dynamics::unit_interval;
         let (gravity, default_restitution) = match &self.dynamics {
             Some(d) => (
                 d.gravity,
@@ -605,32 +582,7 @@ impl SystemSpec {
             };
             let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
             let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;
-            hertz.push(match c.face_width {
-                Some(w) => {
-                    let width = scale * positive(at(T::Contact, i, K::FaceWidth), w)?;
-                    let text = c.materials.as_deref().unwrap_or("steel,steel");
-                    let m: crate::report::Materials =
-                        text.parse().map_err(|e: crate::report::MaterialError| {
-                            SpecError::Invalid {
-                                field: at(T::Contact, i, K::Materials),
-                                value: text.to_string(),
-                                reason: e.to_string(),
-                            }
-                        })?;
-                    Some(crate::dynamics::ContactHertz {
-                        width,
-                        e_star: m.effective_modulus(),
-                    })
-                }
-                None if c.materials.is_some() => {
-                    return Err(SpecError::Rule {
-                        field: at(T::Contact, i, K::Materials),
-                        reason: "materials need the contact's face_width (its Hertz pressure)"
-                            .into(),
-                    })
-                }
-                None => None,
-            });
+            hertz.push(super::system_dynamics::contact_hertz(c, i, scale)?);
             restitution.push(match c.restitution {
                 Some(e) => unit_interval(at(T::Contact, i, K::Restitution), e)?,
                 None => default_restitution,
