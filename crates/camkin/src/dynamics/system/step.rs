@@ -171,7 +171,11 @@ impl SystemSimulation<'_> {
             super::super::model::body_state(q, qd, c.b.0),
         );
         let slot = &mut pairings[self.first_contact + k];
-        let p0 = slot.expect("every contact has a pairing from the start");
+        // every contact's pairing is found when the simulation starts
+        let p0 = slot.ok_or(DynamicsError::Contact {
+            time: self.t,
+            source: crate::contact::ContactError::Unsupported("a contact without a pairing"),
+        })?;
         let p = contact::refine(
             &Surface::new(c.curve_a.as_ref(), &sa),
             &Surface::new(c.curve_b.as_ref(), &sb),
