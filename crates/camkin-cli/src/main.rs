@@ -56,7 +56,7 @@ enum Command {
         after_help = "Examples:\n  camkin bench                      # the paper's cam\n  camkin bench examples/oscillating-roller.toml --json\n\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]
     Bench(bench::BenchArgs),
-    /// Dynamics: contact force, lift-off and impacts, with a [dynamics] section in the file.
+    /// Dynamics: contact force, lift-off and impacts, with a [dynamics] section in the file (a mechanism or a system).
     #[command(
         after_help = "Examples:\n  camkin simulate examples/eccentric-flat-dynamics.toml --revolutions 3\n  camkin simulate cam.toml --revolutions 100 --out sim --format json\n\nTime series on stdout (or DIR/time_series.csv), events on stderr (and DIR/events.csv).\nExit codes: 0 success, 1 internal failure, 2 bad input."
     )]

@@ -16,12 +16,13 @@ use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub struct SimulateArgs {
-    /// Mechanism file (TOML) with a `[dynamics]` section.
+    /// Mechanism file (TOML) with a `[dynamics]` section, or a system file ([[body]], [[joint]],
+    /// …) with one (see the README's "Dynamics of a system").
     pub mechanism: PathBuf,
-    /// Cam revolutions to simulate.
+    /// Cam revolutions to simulate (a system: its first driver's).
     #[arg(long, value_name = "N", default_value_t = 1.0, value_parser = crate::args::real, allow_negative_numbers = true)]
     pub revolutions: f64,
-    /// Output interval, degrees of cam angle.
+    /// Output interval, degrees of cam angle (a system: of its first driver).
     #[arg(long, value_name = "DEG", default_value = "1")]
     pub step: RevolutionStep,
     /// Cam angle at time 0, degrees (the follower starts on the cam there).

@@ -126,6 +126,20 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         stderr.contains("simulated steps") && stderr.contains("--large"),
         "{stderr}"
     );
+    // the flags a system has no use for are refused, not ignored
+    for (flags, says) in [
+        (["--start-angle", "10"], "--start-angle"),
+        (["--format", "json"], "--format json"),
+    ] {
+        let out = camkin()
+            .arg("simulate")
+            .arg(examples().join("valve-train.toml"))
+            .args(flags)
+            .assert()
+            .code(2);
+        let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+        assert!(stderr.contains(says), "{stderr}");
+    }
     // a step the stiffest element refuses: named, with the substeps that would do
     let out = camkin()
         .arg("simulate")
