@@ -86,6 +86,8 @@ pub enum SystemTable {
     Dynamics,
     /// `[[coil_spring]]`
     CoilSpring,
+    /// `[[gas_force]]`
+    GasForce,
 }
 
 impl SystemTable {
@@ -101,6 +103,7 @@ impl SystemTable {
             SystemTable::TorsionSpring => "torsion_spring",
             SystemTable::Dynamics => "dynamics",
             SystemTable::CoilSpring => "coil_spring",
+            SystemTable::GasForce => "gas_force",
         }
     }
 }
@@ -171,6 +174,14 @@ pub enum SystemKey {
     FaceWidth,
     /// `materials`
     Materials,
+    /// `direction`
+    Direction,
+    /// `table` (a force's, of the crank angle)
+    ForceTable,
+    /// `crank_per_driver`
+    CrankPerDriver,
+    /// `period_deg`
+    PeriodDeg,
 }
 
 impl SystemKey {
@@ -207,6 +218,10 @@ impl SystemKey {
             SystemKey::SolidLength => "solid_length",
             SystemKey::FaceWidth => "face_width",
             SystemKey::Materials => "materials",
+            SystemKey::Direction => "direction",
+            SystemKey::ForceTable => "table",
+            SystemKey::CrankPerDriver => "crank_per_driver",
+            SystemKey::PeriodDeg => "period_deg",
         })
     }
 }

@@ -239,3 +239,40 @@ fn the_cams_hertz_pressure_on_its_base_circle_is_the_closed_forms() {
     }
     assert!(checked > 200);
 }
+
+/// A gas force from a table of the crank angle on the valve (`[[gas_force]]`): 50 N pushing it
+/// open at crank 0° takes 50 N off the seat's force there (the first row: statics alone); an
+/// unsorted table exits 2 naming it.
+#[test]
+fn a_gas_force_table_pushes_the_valve() {
+    let text = std::fs::read_to_string(examples().join("valve-train.toml")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let seat_at_start = |extra: &str| {
+        let path = dir.path().join("gas.toml");
+        std::fs::write(&path, format!("{text}\n{extra}")).unwrap();
+        let out = camkin()
+            .arg("simulate")
+            .arg(&path)
+            .args(["--step", "0.25", "--revolutions", "0.01"])
+            .assert()
+            .success();
+        let (header, rows) = parse_csv(&out.get_output().stdout);
+        rows[0][columns(&header)["seat_force_N"]]
+            .parse::<f64>()
+            .unwrap()
+    };
+    let without = seat_at_start("");
+    let with = seat_at_start(
+        "[[gas_force]]\nname = \"cylinder\"\nbody = \"valve\"\nat = [0.0, -60.0]\ndirection = [0.0, -1.0]\ntable = [[0.0, 50.0], [360.0, 50.0]]\n",
+    );
+    assert!((without - with - 50.0).abs() < 1e-9, "{without} {with}");
+    let path = dir.path().join("bad.toml");
+    std::fs::write(
+        &path,
+        format!("{text}\n[[gas_force]]\nname = \"cylinder\"\nbody = \"valve\"\ndirection = [0.0, -1.0]\ntable = [[360.0, 50.0], [10.0, 5.0]]\n"),
+    )
+    .unwrap();
+    let out = camkin().arg("simulate").arg(&path).assert().code(2);
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    assert!(stderr.contains("gas_force[0].table"), "{stderr}");
+}

@@ -63,7 +63,7 @@ pub use system::{
     BodySpec, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
     TorsionSpringSpec,
 };
-pub use system_dynamics::SystemDynamicsSpec;
+pub use system_dynamics::{GasForceSpec, SystemDynamicsSpec};
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;

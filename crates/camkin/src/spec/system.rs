@@ -82,6 +82,9 @@ pub struct SystemSpec {
     /// `[[coil_spring]]`: coil springs with mass, as chains of lumped masses (for dynamics)
     #[cfg_attr(feature = "serde", serde(default))]
     pub coil_spring: Vec<super::CoilSpringSpec>,
+    /// `[[gas_force]]`: forces from tables of the crank angle (for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub gas_force: Vec<super::GasForceSpec>,
 }
 
 /// `[[spring]]`: `stiffness` N per length, `free_length` (length), `preload` N at it.
@@ -726,6 +729,11 @@ impl SystemSpec {
             // its coil-clash contacts take the default restitution
             restitution.resize(sys.contacts().len(), default_restitution);
             coil_springs.push(spring);
+        }
+        for (i, g) in self.gas_force.iter().enumerate() {
+            named(T::GasForce, i, &g.name)?;
+            let find = |name: &str| body(T::GasForce, i, K::Body, name);
+            sys.add_table_force(super::system_dynamics::gas_force(g, i, scale, &find)?);
         }
         // as many rows as coordinates, unless forces move the free degrees of freedom
         let (rows, coords) = (sys.rows(), 3 * sys.bodies().len());

@@ -69,3 +69,95 @@ pub(super) fn contact_hertz(
         None => Ok(None),
     }
 }
+
+/// `[[gas_force]]`: a force on a body from a table of the crank angle (a valve's gas force).
+///
+/// ```toml
+/// [[gas_force]]
+/// name = "cylinder pressure"
+/// body = "valve"
+/// at = [0, -60]                   # where, in the body's frame
+/// direction = [0, -1]             # in the world: it pushes the valve open
+/// table = [[0, 0], [360, 150], [380, 40], [540, 0]]   # [crank degrees, N]
+/// crank_per_driver = 2            # crank degrees a degree of the first driver (default 2)
+/// period_deg = 720                # the table's period in crank degrees (default 720)
+/// ```
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct GasForceSpec {
+    /// its name
+    pub name: String,
+    /// the body it pushes
+    pub body: String,
+    /// where, in the body's frame (default its origin)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub at: Option<[f64; 2]>,
+    /// its direction in the world
+    pub direction: [f64; 2],
+    /// `[crank degrees, N]`, the angles increasing within one period
+    pub table: Vec<[f64; 2]>,
+    /// crank degrees a degree of the first driver (default 2: a four-stroke's camshaft)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub crank_per_driver: Option<f64>,
+    /// the table's period, crank degrees (default 720)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub period_deg: Option<f64>,
+}
+
+/// Gas force `i` of a file built, its body found by `body` (lengths times `scale`).
+pub(super) fn gas_force(
+    g: &GasForceSpec,
+    i: usize,
+    scale: f64,
+    body: &dyn Fn(&str) -> Result<crate::system::BodyId, SpecError>,
+) -> Result<crate::system::TableForce, SpecError> {
+    use super::build::{direction, finite, point};
+    let at = |key| {
+        Field::System(SystemField {
+            table: SystemTable::GasForce,
+            index: i,
+            key,
+        })
+    };
+    let id = body(&g.body)?;
+    let p = point(at(SystemKey::At), g.at.unwrap_or([0.0, 0.0]))?;
+    let period = positive(at(SystemKey::PeriodDeg), g.period_deg.unwrap_or(720.0))?;
+    let ratio = positive(
+        at(SystemKey::CrankPerDriver),
+        g.crank_per_driver.unwrap_or(2.0),
+    )?;
+    let mut table = Vec::with_capacity(g.table.len());
+    for [angle, force] in &g.table {
+        let (angle, force) = (
+            finite(at(SystemKey::ForceTable), *angle)?,
+            finite(at(SystemKey::ForceTable), *force)?,
+        );
+        if !(0.0..period).contains(&angle) || table.last().is_some_and(|&(a, _)| angle <= a) {
+            return Err(SpecError::Rule {
+                field: at(SystemKey::ForceTable),
+                reason: format!(
+                    "crank angle {}°: the table's angles must increase within one period, from 0 to below {}°",
+                    crate::human::human(angle),
+                    crate::human::human(period)
+                ),
+            });
+        }
+        table.push((angle, force));
+    }
+    if table.is_empty() {
+        return Err(SpecError::Rule {
+            field: at(SystemKey::ForceTable),
+            reason: "needs at least one [crank degrees, N] point".into(),
+        });
+    }
+    Ok(crate::system::TableForce {
+        name: g.name.clone(),
+        body: id,
+        at: crate::Point2::new(scale * p.x, scale * p.y),
+        direction: direction(at(SystemKey::Direction), g.direction)?,
+        table,
+        crank_per_driver: ratio,
+        period_deg: period,
+    })
+}

@@ -40,6 +40,7 @@ mod joint;
 mod lu;
 mod search;
 mod solve;
+mod table_force;
 
 pub use coil_spring::CoilSpring;
 pub use driver::{Coordinate, Driver, Law};
@@ -47,6 +48,7 @@ pub use error::SystemError;
 pub use jerk::BodyJerk;
 pub use joint::{Joint, JointKind};
 pub use solve::{ContactState, Instants, SystemState, SystemSweep};
+pub use table_force::TableForce;
 
 use crate::body::Pose;
 use crate::curve::Curve;
@@ -185,6 +187,7 @@ pub struct System {
     pub(crate) drivers: Vec<Driver>,
     pub(crate) contacts: Vec<Contact>,
     pub(crate) forces: Vec<ForceElement>,
+    pub(crate) table_forces: Vec<TableForce>,
 }
 
 impl System {
@@ -222,6 +225,16 @@ impl System {
     /// The force elements.
     pub fn forces(&self) -> &[ForceElement] {
         &self.forces
+    }
+
+    /// Adds a force from a table of the crank angle (a gas force).
+    pub fn add_table_force(&mut self, force: TableForce) {
+        self.table_forces.push(force);
+    }
+
+    /// The forces from tables of the crank angle.
+    pub fn table_forces(&self) -> &[TableForce] {
+        &self.table_forces
     }
 
     /// The bodies, in the order they were added.
@@ -363,6 +376,13 @@ impl System {
         for f in &self.forces {
             let [a, b] = f.kind.bodies();
             if !known(a) || !known(b) {
+                return Err(SystemError::UnknownBody {
+                    element: f.name.clone(),
+                });
+            }
+        }
+        for f in &self.table_forces {
+            if !known(f.body) {
                 return Err(SystemError::UnknownBody {
                     element: f.name.clone(),
                 });

@@ -304,3 +304,86 @@ fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
     }
     assert!(worst < 1e-6 * 0.5, "off the mode by {worst} mm");
 }
+
+/// A gas force from a table of the crank angle (`TableForce`): a 0.1 kg slide pushed by
+/// `F = 2 N` per crank degree, the crank turning twice per turn of the driven camshaft at
+/// 600 rpm (7200 crank degrees a second): `F = 14 400 t` N, so `y = 24 000 t³` m exactly (RK4
+/// integrates the cubic exactly); the work it does is its kinetic energy.
+#[test]
+fn a_gas_force_from_a_crank_angle_table_moves_a_mass_as_its_closed_form() {
+    use camkin::system::{Coordinate, Driver, Law, TableForce};
+    let mut sys = System::new();
+    let cam = sys.add_body(Body {
+        name: "camshaft".into(),
+        mass: 1.0,
+        inertia: 1.0,
+        pose: camkin::body::Pose::new(Point2::origin(), 0.0),
+    });
+    sys.add_joint(Joint {
+        name: "bearing".into(),
+        kind: JointKind::Revolute {
+            a: BodyId::GROUND,
+            at_a: Point2::origin(),
+            b: cam,
+            at_b: Point2::origin(),
+        },
+    });
+    sys.add_driver(Driver {
+        name: "drive".into(),
+        body: cam,
+        coordinate: Coordinate::Angle,
+        law: Law::linear(0.0, 600.0 * std::f64::consts::TAU / 60.0),
+    });
+    let slide = sys.add_body(Body {
+        name: "slide".into(),
+        mass: 0.1,
+        inertia: 1e-3,
+        pose: camkin::body::Pose::new(Point2::new(1.0, 0.0), 0.0),
+    });
+    sys.add_joint(Joint {
+        name: "guide".into(),
+        kind: JointKind::Prismatic {
+            a: BodyId::GROUND,
+            at_a: Point2::new(1.0, 0.0),
+            axis: Vec2::y(),
+            b: slide,
+            at_b: Point2::origin(),
+            angle: 0.0,
+        },
+    });
+    sys.add_table_force(TableForce {
+        name: "gas".into(),
+        body: slide,
+        at: Point2::new(0.0, 0.3),
+        direction: Vec2::y(),
+        table: vec![(0.0, 0.0), (719.0, 1438.0)],
+        crank_per_driver: 2.0,
+        period_deg: 720.0,
+    });
+    let mut sim = SystemSimulation::new(&sys, SystemDynamicsOptions::default()).unwrap();
+    for _ in 0..90 {
+        sim.advance(1e-3).unwrap();
+        let s = sim.sample().unwrap();
+        let t = s.time;
+        let y = 24_000.0 * t * t * t;
+        assert!(
+            (s.q[4] - y).abs() <= 1e-12 * y.max(1e-3),
+            "{t}: {} {y}",
+            s.q[4]
+        );
+        // the drive does no work on the slide: the gas force's work is the slide's kinetic
+        // energy (the camshaft's, constant, taken off: to rounding of the whole)
+        let ke = 0.5 * 0.1 * s.qd[4] * s.qd[4];
+        let cam = 0.5 * s.qd[2] * s.qd[2];
+        assert!(
+            (s.energy - cam - ke).abs() <= 1e-12 * s.energy,
+            "{} {cam} {ke}",
+            s.energy
+        );
+        assert!(
+            (s.driver_work - ke).abs() <= 1e-9 * ke.max(1e-9),
+            "{} {ke}",
+            s.driver_work
+        );
+    }
+}

@@ -113,7 +113,8 @@ pub struct SystemSample {
     pub in_contact: Vec<bool>,
     /// kinetic plus potential energy (springs, torsion springs, gravity), N·L
     pub energy: f64,
-    /// the work the drivers have done since the start, N·L
+    /// the work the drivers (and the forces from tables of the crank angle: a gas force) have
+    /// done since the start, N·L
     pub driver_work: f64,
     /// each driver's effort along its coordinate: an angle's torque (N·L, counter-clockwise
     /// positive: a camshaft's driving torque), a position's force (N)
@@ -197,6 +198,21 @@ impl<'a> SystemSimulation<'a> {
                     key: "restitution",
                     value: e,
                     reason: "must be from 0 to 1",
+                });
+            }
+        }
+        // a table of the crank angle needs the first driver to turn an angle
+        if let Some(g) = sys.table_forces().first() {
+            let angle = sys
+                .drivers()
+                .first()
+                .is_some_and(|d| d.coordinate == crate::system::Coordinate::Angle);
+            if !angle {
+                return Err(DynamicsError::Element {
+                    element: format!("gas force {:?}", g.name),
+                    key: "table",
+                    value: f64::NAN,
+                    reason: "is of the crank angle: the system's first driver must turn an angle",
                 });
             }
         }

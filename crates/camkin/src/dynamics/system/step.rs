@@ -26,22 +26,28 @@ impl SystemSimulation<'_> {
         pairings: &mut [Option<Pairing>],
     ) -> Result<Accel, DynamicsError> {
         let active = self.active(in_contact);
-        let (qdd, lambda) = match self.direct(t, q, qd, &active, pairings)? {
+        let (qdd, lambda, gas_power) = match self.direct(t, q, qd, &active, pairings)? {
             Some(x) => x,
+            // forces from tables of the crank angle are not in the model the augmented
+            // Lagrangian solves: dependent rows with them are refused, not answered without them
+            None if !self.sys.table_forces().is_empty() => {
+                return Err(DynamicsError::Singular { time: t });
+            }
             // dependent rows (a redundant joint): the augmented Lagrangian, whose matrix stays
             // positive definite there
             None => {
                 let e = self
                     .model
                     .evaluate(&self.opts.al, t, q, qd, &active, pairings)?;
-                (e.qdd, e.lambda)
+                (e.qdd, e.lambda, 0.0)
             }
         };
         // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
         // a contact's compressive force −λ (its row is the gap, positive apart)
         let mut forces = vec![0.0; in_contact.len()];
         let mut efforts = Vec::with_capacity(self.sys.drivers().len());
-        let (mut r, mut power) = (0, 0.0);
+        // the drivers' power and the table forces' (their work is the drivers' column's too)
+        let (mut r, mut power) = (0, gas_power);
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
                 continue;
@@ -74,7 +80,7 @@ impl SystemSimulation<'_> {
         qd: &[f64],
         active: &[bool],
         pairings: &mut [Option<Pairing>],
-    ) -> Result<Option<(Vec<f64>, Vec<f64>)>, DynamicsError> {
+    ) -> Result<Option<(Vec<f64>, Vec<f64>, f64)>, DynamicsError> {
         let n = q.len();
         let al = &self.opts.al;
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
@@ -99,6 +105,7 @@ impl SystemSimulation<'_> {
         let inv_mass = self.inv_mass();
         let mut force = vec![0.0; n];
         self.model.forces(q, qd, &mut force);
+        let gas_power = self.add_table_forces(t, q, qd, &mut force);
         let Some(schur) = Schur::new(&sparse, &inv_mass) else {
             return Ok(None);
         };
@@ -124,7 +131,7 @@ impl SystemSimulation<'_> {
         for (x, w) in qdd.iter_mut().zip(&inv_mass) {
             *x *= w;
         }
-        Ok(Some((qdd, lambda)))
+        Ok(Some((qdd, lambda, gas_power)))
     }
 
     /// One RK4 step of `h` from the current state in the current modes: the state at its end,
@@ -235,6 +242,27 @@ impl SystemSimulation<'_> {
         self.qd = sparse::project(&rows, &inv_mass, &schur, &self.qd, &target);
         self.pairings = pairings;
         Ok(())
+    }
+
+    /// Adds the forces from tables of the crank angle at `t` to `f`; their power.
+    fn add_table_forces(&self, t: f64, q: &[f64], qd: &[f64], f: &mut [f64]) -> f64 {
+        let forces = self.sys.table_forces();
+        let Some(d) = self.sys.drivers().first() else {
+            return 0.0;
+        };
+        if forces.is_empty() {
+            return 0.0;
+        }
+        let [angle, ..] = d.law.at(t);
+        let start = d.law.at(0.0)[0];
+        let driver_deg = (angle - start).to_degrees();
+        forces
+            .iter()
+            .map(|g| {
+                let s = super::super::model::body_state(q, qd, g.body.0);
+                g.add_force(driver_deg, s.pose, (s.velocity, s.omega), f)
+            })
+            .sum()
     }
 
     /// The inverse of the mass matrix's diagonal, one per coordinate.
