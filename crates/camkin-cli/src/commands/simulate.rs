@@ -16,7 +16,7 @@ use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub struct SimulateArgs {
-    /// Mechanism file (TOML) with a `[dynamics]` section, or a system file ([[body]], [[joint]],
+    /// Mechanism file (TOML) with a `[dynamics]` section, or a system file (`[[body]]`, `[[joint]]`,
     /// …) with one (see the README's "Dynamics of a system").
     pub mechanism: PathBuf,
     /// Cam revolutions to simulate (a system: its first driver's).
