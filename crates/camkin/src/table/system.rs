@@ -20,6 +20,25 @@ pub(super) fn key(name: &str) -> String {
         .collect()
 }
 
+/// A body's pose, rates and accelerations as columns (`{body}_x_mm` … `{body}_alpha_deg_s2`):
+/// the analysis's and the simulation's.
+pub(super) fn body_columns(n: &str, unit: &str) -> Vec<String> {
+    [
+        ("x", unit.to_string()),
+        ("y", unit.to_string()),
+        ("angle", "deg".into()),
+        ("vx", format!("{unit}_s")),
+        ("vy", format!("{unit}_s")),
+        ("omega", "deg_s".into()),
+        ("ax", format!("{unit}_s2")),
+        ("ay", format!("{unit}_s2")),
+        ("alpha", "deg_s2".into()),
+    ]
+    .into_iter()
+    .map(|(q, u)| format!("{n}_{q}_{u}"))
+    .collect()
+}
+
 /// The columns of a system's table, lengths in its unit: first the sweep's angle
 /// (`driver_angle_deg`, or a cam file's `angle_deg`, the cam angle as `camkin analyze` names
 /// it without `--system`) and the time.
@@ -33,16 +52,8 @@ pub fn system_columns(built: &crate::spec::BuiltSystem) -> Vec<String> {
     let mut c = vec![first.to_string(), "time_s".to_string()];
     for b in sys.bodies() {
         let n = key(&b.name);
+        c.extend(body_columns(&n, unit));
         for (q, u) in [
-            ("x", unit.to_string()),
-            ("y", unit.to_string()),
-            ("angle", "deg".into()),
-            ("vx", format!("{unit}_s")),
-            ("vy", format!("{unit}_s")),
-            ("omega", "deg_s".into()),
-            ("ax", format!("{unit}_s2")),
-            ("ay", format!("{unit}_s2")),
-            ("alpha", "deg_s2".into()),
             ("jerk_x", format!("{unit}_s3")),
             ("jerk_y", format!("{unit}_s3")),
             ("jerk_angle", "deg_s3".into()),

@@ -5,7 +5,7 @@
 //! impact). Lengths in the system's unit, forces in N, energies in N times that unit.
 
 use super::columns::Cell;
-use super::system::key;
+use super::system::{body_columns, key};
 use crate::dynamics::{ContactEvent, EventKind, SystemSample};
 use crate::system::System;
 
@@ -18,20 +18,7 @@ pub fn system_sample_columns(
 ) -> Vec<String> {
     let mut c = vec!["driver_angle_deg".to_string(), "time_s".to_string()];
     for b in sys.bodies() {
-        let n = key(&b.name);
-        for (q, u) in [
-            ("x", unit.to_string()),
-            ("y", unit.to_string()),
-            ("angle", "deg".into()),
-            ("vx", format!("{unit}_s")),
-            ("vy", format!("{unit}_s")),
-            ("omega", "deg_s".into()),
-            ("ax", format!("{unit}_s2")),
-            ("ay", format!("{unit}_s2")),
-            ("alpha", "deg_s2".into()),
-        ] {
-            c.push(format!("{n}_{q}_{u}"));
-        }
+        c.extend(body_columns(&key(&b.name), unit));
     }
     for (j, k) in sys.contacts().iter().enumerate() {
         let n = key(&k.name);

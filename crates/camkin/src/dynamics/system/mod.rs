@@ -160,6 +160,9 @@ pub struct SystemSimulation<'a> {
     pairings: Vec<Option<Pairing>>,
     work: f64,
     pending: Vec<ContactEvent>,
+    /// the last evaluation of the equations of motion: a step's end is evaluated by its force
+    /// check, then by the sample, then by the next step's first stage — once
+    pub(super) last: std::cell::RefCell<Option<step::Evaluated>>,
 }
 
 /// Most events in one call of [`SystemSimulation::advance`].
@@ -322,6 +325,7 @@ impl<'a> SystemSimulation<'a> {
             pairings: vec![None; first_contact + nc],
             work: 0.0,
             pending: Vec::new(),
+            last: std::cell::RefCell::new(None),
         };
         // each contact's nearest (or deepest) pair of points, globally
         for k in 0..nc {

@@ -13,11 +13,75 @@ use crate::contact::{self, Pairing, Surface};
 /// `(q̈, each contact's compressive force, the drivers' power, each driver's effort)`.
 type Accel = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
 
+/// An evaluation kept: the state and modes it was at, the pairings it started from and ended
+/// with, and its answer.
+#[derive(Debug, Clone)]
+pub(crate) struct Evaluated {
+    t: f64,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    modes: Vec<bool>,
+    before: Vec<Option<Pairing>>,
+    after: Vec<Option<Pairing>>,
+    answer: Accel,
+}
+
 impl SystemSimulation<'_> {
     /// `(q̈, each contact's compressive force, the drivers' power, each driver's effort)` at a
     /// state in the modes `in_contact`: a driver's effort is the force (or torque) it applies
     /// along its coordinate, `−λ`.
     pub(super) fn accel(
+        &self,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        in_contact: &[bool],
+        pairings: &mut [Option<Pairing>],
+    ) -> Result<Accel, DynamicsError> {
+        // the same state, asked again from the pairings it started from or ended with
+        // (only the closed contacts' pairings enter it: a flying contact's is followed apart)
+        if let Some(e) = self.last.borrow().as_ref() {
+            let same = |kept: &[Option<Pairing>]| {
+                in_contact
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, &closed)| closed)
+                    .all(|(k, _)| {
+                        let i = self.first_contact + k;
+                        kept[i] == pairings[i]
+                    })
+            };
+            if e.t == t
+                && e.q == q
+                && e.qd == qd
+                && e.modes == in_contact
+                && (same(&e.before) || same(&e.after))
+            {
+                for (k, &closed) in in_contact.iter().enumerate() {
+                    if closed {
+                        let i = self.first_contact + k;
+                        pairings[i] = e.after[i];
+                    }
+                }
+                return Ok(e.answer.clone());
+            }
+        }
+        let before = pairings.to_vec();
+        let answer = self.evaluate(t, q, qd, in_contact, pairings)?;
+        *self.last.borrow_mut() = Some(Evaluated {
+            t,
+            q: q.to_vec(),
+            qd: qd.to_vec(),
+            modes: in_contact.to_vec(),
+            before,
+            after: pairings.to_vec(),
+            answer: answer.clone(),
+        });
+        Ok(answer)
+    }
+
+    /// [`SystemSimulation::accel`] computed.
+    fn evaluate(
         &self,
         t: f64,
         q: &[f64],
