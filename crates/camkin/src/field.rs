@@ -124,6 +124,8 @@ pub enum SystemKey {
     Position,
     /// `angle_deg`
     AngleDeg,
+    /// `centre_of_mass`
+    CentreOfMass,
     /// `kind`
     Kind,
     /// `bodies`
@@ -197,6 +199,7 @@ impl SystemKey {
             SystemKey::Inertia => "inertia",
             SystemKey::Position => "position",
             SystemKey::AngleDeg => "angle_deg",
+            SystemKey::CentreOfMass => "centre_of_mass",
             SystemKey::Kind => "kind",
             SystemKey::Bodies => "bodies",
             SystemKey::At => "at",

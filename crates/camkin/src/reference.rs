@@ -59,6 +59,7 @@ fn valve_body(name: &str, x: f64, y: f64, angle: f64) -> Body {
         mass: 1.0,
         inertia: 1.0,
         pose: Pose::new(Point2::new(x, y), angle),
+        centre_of_mass: crate::geometry::Point2::origin(),
     }
 }
 

@@ -47,18 +47,28 @@ fn a_slow_valve_train_seats_at_its_ramps_speed_and_lifts_as_its_program_says() {
         (lift - closed).abs() < 0.03,
         "lift {lift} mm, the program's {closed} mm"
     );
-    // the seating: an impact of "seat" at the ramp's speed
+    // the seating: an impact of "seat" at the closing ramp's speed where it lands, the
+    // cycloid `s' = h/β (1 − cos 2πx)` (h = −0.15°, β = 20°, from 140°) on the pad's 55 mm lever
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
-    let seat = stderr
+    let seat: Vec<f64> = stderr
         .lines()
         .find(|l| l.contains("impact") && l.contains("seat"))
-        .unwrap_or_else(|| panic!("no seating impact: {stderr}"));
-    let speed: f64 = seat.split_whitespace().last().unwrap().parse().unwrap();
+        .unwrap_or_else(|| panic!("no seating impact: {stderr}"))
+        .split_whitespace()
+        .skip(2)
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let (angle, speed) = (seat[1], seat[2]);
+    assert!(
+        angle > 140.0 && angle < 160.0,
+        "seats at {angle}°: {stderr}"
+    );
     let w = rpm * TAU / 60.0;
-    let ramp = 0.15 / 20.0 * w * 55.0;
+    let x = (angle - 140.0) / 20.0;
+    let ramp = 0.15 / 20.0 * (1.0 - (TAU * x).cos()) * w * 55.0;
     assert!(
         (speed - ramp).abs() < 0.002 * ramp,
-        "seating at {speed} mm/s, the ramp's {ramp} mm/s"
+        "seating at {speed} mm/s at {angle}°, the ramp's {ramp} mm/s"
     );
     // the seat carries the spring's 250 N less the pad's push while closed
     let last = rows.last().unwrap();
@@ -101,6 +111,26 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
         assert!(stderr.contains(says), "{to}: {stderr}");
     }
+    // a constant-velocity ramp leaves a corner on the cam where it meets the dwell: refused
+    // for dynamics, naming the segment where the velocity jumps
+    let path = dir.path().join("bad.toml");
+    std::fs::write(
+        &path,
+        text.replacen(
+            "{ law = \"cycloidal\", rise = -0.15",
+            "{ law = \"constant-velocity\", rise = -0.15",
+            1,
+        ),
+    )
+    .unwrap();
+    let out = camkin().arg("simulate").arg(&path).assert().code(2);
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    assert!(
+        stderr.contains("contact[0].curve_a.segments[3].law")
+            && stderr.contains("velocity jumps")
+            && stderr.contains("140"),
+        "{stderr}"
+    );
     // a spring with no ends: its `bodies` and `at` left out, named at its table
     let path = dir.path().join("bad.toml");
     std::fs::write(

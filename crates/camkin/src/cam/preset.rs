@@ -82,6 +82,7 @@ impl CamFollowerSystem {
             mass: 0.0,
             inertia: 0.0,
             pose: Pose::new(cam.pivot(), 0.0),
+            centre_of_mass: crate::geometry::Point2::origin(),
         });
         let joint = m.follower_joint();
         let (pose, curve) = m.follower_body(start.position);
@@ -90,6 +91,7 @@ impl CamFollowerSystem {
             mass: 0.0,
             inertia: 0.0,
             pose,
+            centre_of_mass: crate::geometry::Point2::origin(),
         });
         system.add_joint(crate::system::Joint {
             name: "camshaft".into(),

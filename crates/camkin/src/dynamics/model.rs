@@ -460,3 +460,46 @@ fn joint_rows(kind: &crate::system::JointKind, q: &[f64], qd: &[f64]) -> Rows {
     }
     out
 }
+
+impl Row {
+    /// The row carried from the frames' coordinates to the centres of mass' (see
+    /// `dynamics::system::centre`): `arm(i)` is body `i`'s arm from its frame's origin to its
+    /// centre in the world, `qd` the rates (the angles' are the same in both).
+    pub(crate) fn about_centres(&mut self, arm: impl Fn(usize) -> Vec2, qd: &[f64]) {
+        let mut seen = [usize::MAX; 2];
+        for e in 0..self.len {
+            let body = self.jac[e].0 / 3;
+            if seen.contains(&body) {
+                continue;
+            }
+            let slot = if seen[0] == usize::MAX { 0 } else { 1 };
+            seen[slot] = body;
+            let a = arm(body);
+            if a == Vec2::zeros() {
+                continue;
+            }
+            let mut g = [0.0; 3];
+            let mut theta = None;
+            for (k, &(c, v)) in self.jac[..self.len].iter().enumerate() {
+                if c / 3 == body {
+                    g[c % 3] = v;
+                    if c % 3 == 2 {
+                        theta = Some(k);
+                    }
+                }
+            }
+            let shifted = g[2] + g[0] * a.y - g[1] * a.x;
+            let w = qd[3 * body + 2];
+            self.gamma -= w * w * (g[0] * a.x + g[1] * a.y);
+            match theta {
+                Some(k) => self.jac[k].1 = shifted,
+                None => {
+                    // a row on a body's x or y alone (a driver): its angle enters now
+                    debug_assert!(self.len < 6);
+                    self.jac[self.len] = (3 * body + 2, shifted);
+                    self.len += 1;
+                }
+            }
+        }
+    }
+}

@@ -151,9 +151,13 @@ pub struct BodySpec {
     /// kg (default 1; for dynamics)
     #[cfg_attr(feature = "serde", serde(default))]
     pub mass: Option<f64>,
-    /// kg·m² about its frame's origin (default 1; for dynamics)
+    /// kg·m² about its centre of mass (default 1; for dynamics)
     #[cfg_attr(feature = "serde", serde(default))]
     pub inertia: Option<f64>,
+    /// its centre of mass in its frame, in the file's length unit (default its frame's origin;
+    /// for dynamics)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub centre_of_mass: Option<[f64; 2]>,
     /// where its frame's origin starts (a guess for the first instant; default the origin)
     #[cfg_attr(feature = "serde", serde(default))]
     pub position: Option<[f64; 2]>,
@@ -318,11 +322,16 @@ impl SystemSpec {
                 b.position.unwrap_or([0.0, 0.0]),
             )?;
             let angle = finite(at(T::Body, i, K::AngleDeg), b.angle_deg.unwrap_or(0.0))?;
+            let centre = point(
+                at(T::Body, i, K::CentreOfMass),
+                b.centre_of_mass.unwrap_or([0.0, 0.0]),
+            )?;
             let id = sys.add_body(Body {
                 name: b.name.clone(),
                 mass,
                 inertia,
                 pose: Pose::new(Point2::new(scale * p.x, scale * p.y), angle.to_radians()),
+                centre_of_mass: Point2::new(scale * centre.x, scale * centre.y),
             });
             ids.insert(b.name.as_str(), id);
         }
@@ -573,15 +582,19 @@ impl SystemSpec {
                     }
                     _ => Place::Follower,
                 };
-                spec.build(scale, &options.base_dir, options.confine, place, warnings)
-                    .map(|(c, _)| c)
+                let (curve, synthesised) = spec
+                    .build(scale, &options.base_dir, options.confine, place, warnings)
                     .map_err(|e| {
                         // a synthesis that the follower's geometry refuses names its key
                         moved(e, |p| at(T::Contact, i, to(p))).map_field(|f| match f {
                             Field::Follower(k) => at(T::Contact, i, K::MotionFollower(k)),
                             other => other,
                         })
-                    })
+                    })?;
+                if let (Some(program), true) = (synthesised, self.dynamics.is_some()) {
+                    super::system_dynamics::smooth_enough(&program, |s| at(T::Contact, i, to(s)))?;
+                }
+                Ok::<_, SpecError>(curve)
             };
             let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
             let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;

@@ -4,7 +4,7 @@
 
 use super::build::{positive, SpecError};
 use super::ContactSpec;
-use crate::field::{Field, SystemField, SystemKey, SystemTable};
+use crate::field::{Field, ProfileField, SystemField, SystemKey, SystemTable};
 
 /// `[dynamics]` of a system file.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -160,4 +160,29 @@ pub(super) fn gas_force(
         crank_per_driver: ratio,
         period_deg: period,
     })
+}
+
+/// A simulated system's cam program must move its follower with a continuous velocity: where
+/// the velocity (or the position) jumps between two segments, the synthesised cam has a corner
+/// or a step there (a roller's offset profile jumps by the roller's radius times the turn of the
+/// path), which a follower can only pass by an impulse; the simulation would follow a curve that
+/// is not the cam. (An acceleration jump is a force jump: allowed.)
+pub(super) fn smooth_enough(
+    program: &crate::cam::synthesis::SynthesizedProfile,
+    field: impl Fn(ProfileField) -> Field,
+) -> Result<(), SpecError> {
+    if let Some(d) = program.discontinuities().into_iter().find(|d| d.order <= 1) {
+        let what = if d.order == 0 { "position" } else { "velocity" };
+        return Err(SpecError::Rule {
+            field: field(ProfileField::Segment(
+                d.segment,
+                crate::field::SegmentField::Law,
+            )),
+            reason: format!(
+                "the follower's {what} jumps where this segment starts (at {}°): the cam synthesised for it has a corner there, which a follower passes only by an impulse, so [dynamics] needs a program whose velocity is continuous — between a dwell and a lift, a ramp of a law that starts and ends at rest (cycloidal, 3-4-5, 4-5-6-7), not a constant-velocity ramp",
+                crate::human::human(d.at.to_degrees()),
+            ),
+        });
+    }
+    Ok(())
 }

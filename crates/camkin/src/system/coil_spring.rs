@@ -78,6 +78,7 @@ impl CoilSpring {
                 // its angle is held by its slide: any positive inertia (kg·m², a millimetre's arm)
                 inertia: each * 1e-6,
                 pose: start,
+                centre_of_mass: crate::geometry::Point2::origin(),
             });
             // the slide, in a's frame
             let frame = pa.frame();

@@ -418,6 +418,7 @@ mod tests {
             mass: 1.0,
             inertia: 1.0,
             pose: Pose::new(Point2::new(l, 0.0), 0.0),
+            centre_of_mass: crate::geometry::Point2::origin(),
         });
         sys.add_joint(Joint {
             name: "pin".into(),

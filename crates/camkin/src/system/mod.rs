@@ -82,10 +82,12 @@ pub struct Body {
     pub name: String,
     /// mass
     pub mass: f64,
-    /// moment of inertia about its frame's origin
+    /// moment of inertia about its centre of mass (what a CAD model reports as `I_G`)
     pub inertia: f64,
     /// its pose at the start, a guess
     pub pose: Pose,
+    /// its centre of mass, in its frame (the origin for a body whose frame sits there)
+    pub centre_of_mass: Point2,
 }
 
 /// A contact between a curve on body `a` and a curve on body `b` (either may be the ground): one

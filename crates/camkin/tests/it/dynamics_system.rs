@@ -19,6 +19,7 @@ fn dropped_block(h0: f64) -> System {
         mass: 0.2,
         inertia: 1e-4,
         pose: camkin::body::Pose::new(Point2::new(0.0, h0), 0.0),
+        centre_of_mass: camkin::geometry::Point2::origin(),
     });
     sys.add_joint(Joint {
         name: "guide".into(),
@@ -137,6 +138,7 @@ fn a_mass_on_a_spring_in_millimetres_has_the_closed_form_frequency() {
         mass: m,
         inertia: 1e-6,
         pose: camkin::body::Pose::new(Point2::new(0.0, 2.0), 0.0),
+        centre_of_mass: camkin::geometry::Point2::origin(),
     });
     sys.add_joint(Joint {
         name: "guide".into(),
@@ -192,6 +194,7 @@ fn an_undamped_pendulum_with_a_spring_keeps_its_energy() {
         mass: 1.5,
         inertia: 0.02,
         pose: camkin::body::Pose::new(Point2::new(0.2, 0.0), 0.0),
+        centre_of_mass: camkin::geometry::Point2::origin(),
     });
     sys.add_joint(Joint {
         name: "pin".into(),
@@ -318,6 +321,7 @@ fn a_gas_force_from_a_crank_angle_table_moves_a_mass_as_its_closed_form() {
         mass: 1.0,
         inertia: 1.0,
         pose: camkin::body::Pose::new(Point2::origin(), 0.0),
+        centre_of_mass: camkin::geometry::Point2::origin(),
     });
     sys.add_joint(Joint {
         name: "bearing".into(),
@@ -339,6 +343,7 @@ fn a_gas_force_from_a_crank_angle_table_moves_a_mass_as_its_closed_form() {
         mass: 0.1,
         inertia: 1e-3,
         pose: camkin::body::Pose::new(Point2::new(1.0, 0.0), 0.0),
+        centre_of_mass: camkin::geometry::Point2::origin(),
     });
     sys.add_joint(Joint {
         name: "guide".into(),

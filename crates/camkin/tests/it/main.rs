@@ -16,6 +16,7 @@ mod dynamics_multibody;
 mod dynamics_reduced;
 mod dynamics_system;
 mod dynamics_system_cam;
+mod dynamics_system_centre;
 #[cfg(feature = "text")]
 mod dynamics_valve_train;
 mod eccentric_circle;

@@ -5,8 +5,9 @@
 //! The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ` are solved at every evaluation by the
 //! augmented Lagrangian (see the [module docs](super)), integrated by the classical Runge–Kutta
 //! method, and after every step positions and velocities are projected mass-orthogonally onto
-//! the active rows (Bayo and Ledesma 1996). A body's frame origin is its centre of mass (`M` is
-//! diagonal: mass, mass, inertia about the origin).
+//! the active rows (Bayo and Ledesma 1996). The coordinates integrated are each body's centre of
+//! mass and angle, so `M` is diagonal (mass, mass, the inertia about the centre); a body's frame
+//! may sit anywhere on it (see [`centre`]), and the samples give the frames' coordinates.
 //!
 //! A contact is unilateral:
 //! - in contact, its row holds while its force (`−λ`) is compressive; where it would turn
@@ -22,6 +23,7 @@
 //! in kg·m² (converted with the unit's size in metres), forces in N, stiffnesses in N/L, gravity
 //! in m/s²; energies are reported in N·L.
 
+mod centre;
 mod sparse;
 mod step;
 
@@ -150,6 +152,10 @@ pub struct SystemSimulation<'a> {
     /// each contact's two curves' orientations (+1 material on the left), for their curvatures
     /// convex positive
     turning: Vec<[f64; 2]>,
+    /// each body's centre of mass in its frame
+    centres: Vec<Vec2>,
+    /// whether any centre is away from its frame's origin
+    offset: bool,
     /// a speed of the system (its drivers' rates times the size, or `√(g size)`), for the
     /// rebound that re-engages a contact
     speed_scale: f64,
@@ -287,6 +293,22 @@ impl<'a> SystemSimulation<'a> {
             .iter()
             .flat_map(|b| [b.pose.origin.x, b.pose.origin.y, b.pose.angle])
             .collect();
+        let centres: Vec<Vec2> = sys
+            .bodies()
+            .iter()
+            .map(|b| b.centre_of_mass.coords)
+            .collect();
+        for (b, c) in sys.bodies().iter().zip(&centres) {
+            if !(c.x.is_finite() && c.y.is_finite()) {
+                return Err(DynamicsError::Element {
+                    element: format!("body {:?}", b.name),
+                    key: "centre_of_mass",
+                    value: if c.x.is_finite() { c.y } else { c.x },
+                    reason: "must be finite",
+                });
+            }
+        }
+        let offset = centres.iter().any(|c| *c != Vec2::zeros());
         let nc = sys.contacts().len();
         let sense = sys
             .contacts()
@@ -317,6 +339,8 @@ impl<'a> SystemSimulation<'a> {
             size,
             sense,
             turning,
+            centres,
+            offset,
             speed_scale,
             t: 0.0,
             qd: vec![0.0; q.len()],
@@ -327,6 +351,10 @@ impl<'a> SystemSimulation<'a> {
             pending: Vec::new(),
             last: std::cell::RefCell::new(None),
         };
+        // the coordinates integrated are the centres of mass'
+        let mut q = std::mem::take(&mut sim.q);
+        sim.centres_at(&mut q);
+        sim.q = q;
         // each contact's nearest (or deepest) pair of points, globally
         for k in 0..nc {
             let c = &sys.contacts()[k];
@@ -388,7 +416,7 @@ impl<'a> SystemSimulation<'a> {
 
     /// Body `i`'s state now (the ground's for [`super::GROUND`]).
     fn state(&self, i: usize) -> crate::body::BodyState {
-        super::model::body_state(&self.q, &self.qd, i)
+        self.frame_state(&self.q, &self.qd, i)
     }
 
     /// The rows that hold in the modes `in_contact`: joints and drivers always.
@@ -436,8 +464,10 @@ impl<'a> SystemSimulation<'a> {
     /// The sample at the current state.
     pub fn sample(&self) -> Result<SystemSample, DynamicsError> {
         let mut p = self.pairings.clone();
-        let (qdd, contact_forces, _, driver_efforts) =
+        let (mut qdd, contact_forces, _, driver_efforts) =
             self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
+        self.frame_accelerations(&self.q, &self.qd, &mut qdd);
+        let (q, qd) = self.frames(&self.q, &self.qd);
         let mut gaps = vec![0.0; self.in_contact.len()];
         for (k, g) in gaps.iter_mut().enumerate() {
             if !self.in_contact[k] {
@@ -477,8 +507,8 @@ impl<'a> SystemSimulation<'a> {
             .collect();
         Ok(SystemSample {
             time: self.t,
-            q: self.q.clone(),
-            qd: self.qd.clone(),
+            q: q.into_owned(),
+            qd: qd.into_owned(),
             qdd,
             contact_forces,
             gaps,

@@ -97,6 +97,8 @@ impl SystemSimulation<'_> {
             None if !self.sys.table_forces().is_empty() => {
                 return Err(DynamicsError::Singular { time: t });
             }
+            // nor are centres of mass away from the frames' origins
+            None if self.offset => return Err(DynamicsError::Singular { time: t }),
             // dependent rows (a redundant joint): the augmented Lagrangian, whose matrix stays
             // positive definite there
             None => {
@@ -109,6 +111,7 @@ impl SystemSimulation<'_> {
         // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
         // a contact's compressive force −λ (its row is the gap, positive apart)
         let mut forces = vec![0.0; in_contact.len()];
+        let (_, qd) = self.frames(q, qd);
         let mut efforts = Vec::with_capacity(self.sys.drivers().len());
         // the drivers' power and the table forces' (their work is the drivers' column's too)
         let (mut r, mut power) = (0, gas_power);
@@ -148,6 +151,7 @@ impl SystemSimulation<'_> {
         let n = q.len();
         let al = &self.opts.al;
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
+        let (qf, qdf) = self.frames(q, qd);
         // the active rows, sparse (at most six entries each), their γ̃, and Φ_q dense
         let mut sparse = Vec::new();
         let mut rhs = Vec::new();
@@ -157,19 +161,22 @@ impl SystemSimulation<'_> {
             }
             let rows = self
                 .model
-                .rows(c, t, q, qd, &mut pairings[k])
+                .rows(c, t, &qf, &qdf, &mut pairings[k])
                 .map_err(|source| DynamicsError::Contact { time: t, source })?;
             for row in rows.iter() {
+                let mut row = *row;
+                self.row_about_centres(q, qd, &mut row);
                 let phi_dot: f64 =
                     row.jac().iter().map(|&(col, v)| v * qd[col]).sum::<f64>() - c.target_rate(t);
                 rhs.push(row.gamma - c1 * phi_dot - c2 * row.phi);
-                sparse.push(*row);
+                sparse.push(row);
             }
         }
         let inv_mass = self.inv_mass();
         let mut force = vec![0.0; n];
-        self.model.forces(q, qd, &mut force);
-        let gas_power = self.add_table_forces(t, q, qd, &mut force);
+        self.model.forces(&qf, &qdf, &mut force);
+        let gas_power = self.add_table_forces(t, &qf, &qdf, &mut force);
+        self.forces_about_centres(q, &mut force);
         let Some(schur) = Schur::new(&sparse, &inv_mass) else {
             return Ok(None);
         };
@@ -238,8 +245,8 @@ impl SystemSimulation<'_> {
     ) -> Result<f64, DynamicsError> {
         let c = &self.sys.contacts()[k];
         let (sa, sb) = (
-            super::super::model::body_state(q, qd, c.a.0),
-            super::super::model::body_state(q, qd, c.b.0),
+            self.frame_state(q, qd, c.a.0),
+            self.frame_state(q, qd, c.b.0),
         );
         let slot = &mut pairings[self.first_contact + k];
         // every contact's pairing is found when the simulation starts
@@ -247,17 +254,27 @@ impl SystemSimulation<'_> {
             time: self.t,
             source: crate::contact::ContactError::Unsupported("a contact without a pairing"),
         })?;
-        let p = contact::refine(
-            &Surface::new(c.curve_a.as_ref(), &sa),
-            &Surface::new(c.curve_b.as_ref(), &sb),
-            p0.u_a,
-            p0.u_b,
-            &self.model.search,
-        )
-        .map_err(|source| DynamicsError::Contact {
-            time: self.t,
-            source,
-        })?;
+        let (surf_a, surf_b) = (
+            Surface::new(c.curve_a.as_ref(), &sa),
+            Surface::new(c.curve_b.as_ref(), &sb),
+        );
+        let p = match contact::refine(&surf_a, &surf_b, p0.u_a, p0.u_b, &self.model.search) {
+            Ok(p) => p,
+            // a flying body turned far from its last nearest pair (a finger thrown off its cam
+            // well above the no-follow speed): the nearest pair found again, globally
+            Err(_) => {
+                let found = contact::find_contact(&surf_a, &surf_b, &self.model.search).map_err(
+                    |source| DynamicsError::Contact {
+                        time: self.t,
+                        source,
+                    },
+                )?;
+                let (contact::Proximity::Apart(p)
+                | contact::Proximity::Touching(p)
+                | contact::Proximity::Overlapping(p)) = found;
+                p
+            }
+        };
         *slot = Some(p);
         Ok(self.sense[k] * p.gap)
     }
@@ -270,12 +287,16 @@ impl SystemSimulation<'_> {
         in_contact: &[bool],
         pairings: &mut [Option<Pairing>],
     ) -> Result<DenseRows, DynamicsError> {
-        self.model
-            .dense_rows(self.t, q, qd, &self.active(in_contact), pairings)
+        let (qf, qdf) = self.frames(q, qd);
+        let mut rows = self
+            .model
+            .dense_rows(self.t, &qf, &qdf, &self.active(in_contact), pairings)
             .map_err(|source| DynamicsError::Contact {
                 time: self.t,
                 source,
-            })
+            })?;
+        self.dense_about_centres(q, &mut rows);
+        Ok(rows)
     }
 
     /// Positions by Newton onto the active rows (mass-orthogonal), then velocities onto
@@ -348,6 +369,7 @@ impl SystemSimulation<'_> {
         pairings: &mut [Option<Pairing>],
     ) -> Result<(Vec<Row>, Vec<f64>, Vec<f64>), DynamicsError> {
         let active = self.active(in_contact);
+        let (qf, qdf) = self.frames(q, qd);
         let (mut rows, mut phi, mut target) = (Vec::new(), Vec::new(), Vec::new());
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
@@ -355,15 +377,17 @@ impl SystemSimulation<'_> {
             }
             let rs = self
                 .model
-                .rows(c, self.t, q, qd, &mut pairings[k])
+                .rows(c, self.t, &qf, &qdf, &mut pairings[k])
                 .map_err(|source| DynamicsError::Contact {
                     time: self.t,
                     source,
                 })?;
             for row in rs.iter() {
+                let mut row = *row;
+                self.row_about_centres(q, qd, &mut row);
                 phi.push(row.phi);
                 target.push(c.target_rate(self.t));
-                rows.push(*row);
+                rows.push(row);
             }
         }
         Ok((rows, phi, target))

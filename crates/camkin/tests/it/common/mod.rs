@@ -365,5 +365,6 @@ pub fn system_body(name: &str, x: f64, y: f64, angle: f64) -> camkin::system::Bo
         mass: 1.0,
         inertia: 1.0,
         pose: camkin::body::Pose::new(Point2::new(x, y), angle),
+        centre_of_mass: camkin::geometry::Point2::origin(),
     }
 }
