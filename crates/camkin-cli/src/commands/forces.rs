@@ -28,7 +28,9 @@ impl FromStr for MaterialsArg {
 
 #[derive(Debug, clap::Args)]
 pub struct ForcesArgs {
-    /// Mechanism file (TOML) with a `[dynamics]` section.
+    /// Mechanism file (TOML) with a `[dynamics]` section, or a system file (`[[body]]`, …) with
+    /// one: its simulation's contact forces, Hertz pressures, drivers' torques and impacts over
+    /// a revolution of its first driver (see the README's "Dynamics of a system").
     pub mechanism: PathBuf,
     /// Cam-angle step, degrees.
     #[arg(long, value_name = "DEG", default_value = "0.5")]
@@ -85,6 +87,12 @@ fn input_error(e: ReportError) -> Failure {
 }
 
 pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
+    // a system file ([[body]], …, [dynamics]): its simulation's forces
+    let (name, text) =
+        crate::mechfile::read_text(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    if camkin::spec::text::is_system(&text) {
+        return super::system_forces::run(args, &name, &text);
+    }
     let (mech, params, unit) =
         mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     // the folder is checked before any work (a file in its place, an input in it, someone

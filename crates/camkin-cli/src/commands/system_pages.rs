@@ -105,6 +105,55 @@ pub fn write(
         x_label: "driver angle (°)".into(),
     };
     svaj::save(&page, &dir.join("lift"))?;
+    forces_page(dir, name, sys, samples, step)?;
+    let slow_start = slow.first().map_or(start, |s| s.q[k]);
+    let deviation = Chart {
+        title: format!(
+            "{name}: {bname:?} lift less its lift at a tenth of the speed (nearly quasi-static)"
+        ),
+        x_label: "driver angle (°)".into(),
+        y_label: format!("dynamic − quasi-static lift ({u})"),
+        series: vec![Series {
+            name: "dynamic − quasi-static".into(),
+            points: samples
+                .iter()
+                .zip(slow)
+                .enumerate()
+                .map(|(i, (s, q))| (angle(i), sign * ((s.q[k] - start) - (q.q[k] - slow_start))))
+                .collect(),
+            dashed: false,
+        }],
+        log_y: false,
+        x_range: Some((0.0, 360.0)),
+    };
+    chart::save(&deviation, &dir.join("deviation"))?;
+    Ok(())
+}
+
+/// The first driver's speed, rpm.
+fn driver_rpm(sys: &camkin::system::System) -> f64 {
+    sys.drivers()
+        .first()
+        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU)
+}
+
+/// `forces.svg` and `.png`: every contact's compressive force that ever closes, by driver angle.
+pub fn forces_page(
+    dir: &Path,
+    name: &str,
+    sys: &camkin::system::System,
+    samples: &[SystemSample],
+    step: f64,
+) -> anyhow::Result<()> {
+    let h = camkin::human::human;
+    let rpm = driver_rpm(sys);
+    let series = |f: &dyn Fn(&SystemSample) -> f64| -> Vec<(f64, f64)> {
+        samples
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (step * i as f64, f(s)))
+            .collect()
+    };
     // the contacts that never close (coil clash that does not happen) are left out
     let closed: Vec<usize> = (0..sys.contacts().len())
         .filter(|&j| samples.iter().any(|s| s.contact_forces[j] > 0.0))
@@ -134,26 +183,59 @@ pub fn write(
         x_range: Some((0.0, 360.0)),
     };
     chart::save(&forces, &dir.join("forces"))?;
-    let slow_start = slow.first().map_or(start, |s| s.q[k]);
-    let deviation = Chart {
+    Ok(())
+}
+
+/// `efforts.svg` and `.png`: each driver's effort (a camshaft's torque in N·m), by driver angle.
+pub fn efforts_page(
+    dir: &Path,
+    name: &str,
+    sys: &camkin::system::System,
+    samples: &[SystemSample],
+    step: f64,
+    metres_per_unit: f64,
+) -> anyhow::Result<()> {
+    let h = camkin::human::human;
+    let angles = sys
+        .drivers()
+        .iter()
+        .filter(|d| d.coordinate == camkin::system::Coordinate::Angle)
+        .count();
+    let chart = Chart {
         title: format!(
-            "{name}: {bname:?} lift less its lift at a tenth of the speed (nearly quasi-static)"
+            "{name}: drivers' efforts at {} rpm",
+            h((driver_rpm(sys) * 10.0).round() / 10.0)
         ),
         x_label: "driver angle (°)".into(),
-        y_label: format!("dynamic − quasi-static lift ({u})"),
-        series: vec![Series {
-            name: "dynamic − quasi-static".into(),
-            points: samples
-                .iter()
-                .zip(slow)
-                .enumerate()
-                .map(|(i, (s, q))| (angle(i), sign * ((s.q[k] - start) - (q.q[k] - slow_start))))
-                .collect(),
-            dashed: false,
-        }],
+        y_label: match (angles, sys.drivers().len() - angles) {
+            (_, 0) => "torque (N·m)",
+            (0, _) => "force (N)",
+            _ => "torque (N·m), force (N)",
+        }
+        .into(),
+        series: sys
+            .drivers()
+            .iter()
+            .enumerate()
+            .map(|(d, driver)| {
+                let scale = match driver.coordinate {
+                    camkin::system::Coordinate::Angle => metres_per_unit,
+                    _ => 1.0,
+                };
+                Series {
+                    name: driver.name.clone(),
+                    points: samples
+                        .iter()
+                        .enumerate()
+                        .map(|(i, s)| (step * i as f64, s.driver_efforts[d] * scale))
+                        .collect(),
+                    dashed: false,
+                }
+            })
+            .collect(),
         log_y: false,
         x_range: Some((0.0, 360.0)),
     };
-    chart::save(&deviation, &dir.join("deviation"))?;
+    chart::save(&chart, &dir.join("efforts"))?;
     Ok(())
 }

@@ -12,12 +12,12 @@ use camkin::table::{
     system_event_cells, system_event_columns, system_sample_cells, system_sample_columns,
 };
 
-fn bad(m: String) -> Failure {
+pub(super) fn bad(m: String) -> Failure {
     Failure::Input(anyhow!(m))
 }
 
 /// Input errors (exit 2) and the rest.
-fn dyn_err(name: &str, e: DynamicsError) -> Failure {
+pub(super) fn dyn_err(name: &str, e: DynamicsError) -> Failure {
     match e {
         DynamicsError::Element { .. }
         | DynamicsError::System(_)

@@ -1,6 +1,6 @@
 //! Issue 46: `camkin simulate` on a system file. The valve train of
 //! `examples/valve-train.toml` at a low speed, where the valve follows the cam, seats
-//! at the closing ramp's speed: the ramp's finger rate (0.15° over 20° of cam) times the pad's
+//! at the closing ramp's speed where it lands: the cycloidal ramp's finger rate there times the pad's
 //! lever arm (55 mm), a closed form that shares nothing with the simulation; its lift peaks at
 //! the program's 9.85° of the finger through the pad's circle. Bad dynamics input exits 2
 //! naming the element and its value.

@@ -15,6 +15,7 @@ mod cli_studio;
 mod cli_study;
 mod cli_synth;
 mod cli_system;
+mod cli_system_forces;
 mod cli_system_simulate;
 mod common;
 mod properties;

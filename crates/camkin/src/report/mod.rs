@@ -6,12 +6,15 @@
 //!   revolution under permanent contact (`camkin forces`, `Mechanism.forces()` in Python).
 //! - [`DesignReport`]: each design check of a revolution with its verdict and its words
 //!   (`camkin synth`'s `checks.txt`, the studio's checks, `Mechanism.checks()` in Python).
+//! - [`SystemForces`]: a simulated system's contact forces, Hertz pressures, drivers' efforts
+//!   (a camshaft's torque) and impacts (`camkin forces SYSTEM.toml`).
 //! - [`Materials`]: elastic constants for the Hertz stress, presets and `E=…:nu=…`, checked for
 //!   plausibility.
 
 mod design;
 mod forces;
 mod materials;
+mod system_forces;
 
 pub use design::{Check, DesignReport, Verdict};
 pub use forces::{
@@ -19,6 +22,7 @@ pub use forces::{
     SpringSizing,
 };
 pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
+pub use system_forces::{AtAngle, ContactForces, DriverEffort, Impact, SystemForces};
 
 use crate::cam::CamError;
 use crate::dynamics::DynamicsError;

@@ -1,0 +1,260 @@
+//! `camkin forces SYSTEM.toml`: a system with `[dynamics]` simulated over a revolution of its
+//! first driver (its time step as the stiffest element needs), and what its forces are: each
+//! contact's largest and smallest force and Hertz pressure, each driver's effort (a camshaft's
+//! torque), each impact (`camkin::report::SystemForces`); the checks `--margin` (every contact
+//! closed all the revolution keeps that force), `--allowable` (every contact's Hertz pressure
+//! stays under it) and `--target-rpm` (no contact that stays closed at low speed opens up to it:
+//! the no-follow speed's sweep).
+
+use super::forces::ForcesArgs;
+use super::system_simulate::{bad, dyn_err};
+use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
+use crate::Failure;
+use anyhow::anyhow;
+use camkin::dynamics::{SpeedSweep, SystemSimulation};
+use camkin::report::SystemForces;
+
+/// The revolution's simulation, its report and the checks.
+pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
+    // what a system's file says for each contact
+    if let Some(w) = args.face_width {
+        return Err(bad(format!(
+            "--face-width {}: a system's contacts take their widths in the file ([[contact]] face_width = …)",
+            camkin::human::human(w)
+        )));
+    }
+    if args.materials.0 != camkin::report::Materials::default() {
+        return Err(bad(
+            "--materials: a system's contacts take their materials in the file ([[contact]] materials = \"A,B\")".into(),
+        ));
+    }
+    let built = super::system::load(&args.mechanism, name, text)?;
+    if !built.simulated {
+        return Err(bad(format!(
+            "{name}: a system's forces come from its simulation: give it a [dynamics] table (see the README's \"Dynamics of a system\")"
+        )));
+    }
+    let sys = &built.system;
+    let step = args.step.deg();
+    let time_of = |deg: f64| built.time_of(deg.to_radians());
+    let (Some(t0), Some(t1)) = (time_of(0.0), time_of(step)) else {
+        return Err(bad(format!(
+            "{name}: its first driver does not turn an angle at a constant speed: the forces are given over its revolution"
+        )));
+    };
+    let outputs = (360.0 / step).round() as usize;
+    let h_out = (t1 - t0).abs();
+    let mut sim =
+        SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| dyn_err(name, e))?;
+    let substeps = (h_out / sim.max_step()).ceil().max(1.0) as usize;
+    crate::refuse_large(
+        &camkin::work::Work::system_simulation(sys, outputs * substeps, outputs + 1),
+        args.work.large,
+        ", or use a coarser --step",
+    )?;
+    let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
+    let run = sim
+        .run(outputs, substeps, h_out / substeps as f64, |_| {
+            std::ops::ControlFlow::Continue(())
+        })
+        .map_err(|e| dyn_err(name, e))?;
+    let angle_of = |t: f64| step * (t - t0) / (t1 - t0);
+    let u = built.dynamics.metres_per_unit;
+    let report = SystemForces::new(sys, &run, u, angle_of);
+    let h = camkin::human::human;
+    let deg = |a: f64| h((a * 100.0).round() / 100.0);
+    let rpm = sys
+        .drivers()
+        .first()
+        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
+    let mut text = format!(
+        "forces on {name} at {} rpm of {:?}, simulated over a revolution in {}° steps ({substeps} RK4 step{} each):\n",
+        h((rpm * 10.0).round() / 10.0),
+        sys.drivers().first().map_or("", |d| d.name.as_str()),
+        h(step),
+        if substeps == 1 { "" } else { "s" },
+    );
+    let force = |x: f64| sig(x, 4);
+    let never: Vec<String> = report
+        .contacts
+        .iter()
+        .filter(|c| c.min_closed_n.is_none())
+        .map(|c| format!("{:?}", c.name))
+        .collect();
+    for c in report.contacts.iter().filter(|c| c.min_closed_n.is_some()) {
+        text += &format!(
+            "contact {:?}: max {} N at {}°",
+            c.name,
+            force(c.max_n.value),
+            deg(c.max_n.angle_deg)
+        );
+        match (&c.min_closed_n, c.always_closed) {
+            (Some(m), true) => {
+                text += &format!(
+                    ", min {} N at {}° (in touch all the revolution)",
+                    force(m.value),
+                    deg(m.angle_deg)
+                )
+            }
+            (Some(m), false) => {
+                text += &format!(
+                    ", min in touch {} N at {}° (opens and closes)",
+                    force(m.value),
+                    deg(m.angle_deg)
+                )
+            }
+            (None, _) => {}
+        }
+        if let Some(p) = &c.max_hertz_mpa {
+            text += &format!(
+                "; Hertz pressure max {} MPa at {}°",
+                force(p.value),
+                deg(p.angle_deg)
+            );
+        }
+        text += "\n";
+    }
+    if !never.is_empty() {
+        text += &format!("never in touch: {}\n", never.join(", "));
+    }
+    for d in &report.drivers {
+        text += &format!(
+            "driver {:?}: max {} {u} at {}°, min {} {u} at {}°, mean {} {u}, RMS {} {u}\n",
+            d.name,
+            force(d.max.value),
+            deg(d.max.angle_deg),
+            force(d.min.value),
+            deg(d.min.angle_deg),
+            force(d.mean),
+            force(d.rms),
+            u = d.unit,
+        );
+    }
+    for i in &report.impacts {
+        text += &format!(
+            "impact of {:?} at {}°: {} m/s\n",
+            i.contact,
+            deg(i.angle_deg),
+            sig(i.approach_m_s, 3)
+        );
+    }
+    crate::out!("{text}")?;
+    if let Some(od) = od {
+        let dir = od.path().to_path_buf();
+        // the time series' force columns: the angle, the time, each contact's force and
+        // Hertz pressure, each driver's effort
+        let all = camkin::table::system_sample_columns(
+            sys,
+            built.length_unit.name(),
+            &built.dynamics.hertz,
+        );
+        let keep: Vec<usize> = all
+            .iter()
+            .enumerate()
+            .filter(|(k, c)| {
+                *k < 2
+                    || c.ends_with("_force_N")
+                    || c.ends_with("_hertz_MPa")
+                    || c.contains("_torque_N_")
+            })
+            .map(|(k, _)| k)
+            .collect();
+        let columns: Vec<String> = keep.iter().map(|&k| all[k].clone()).collect();
+        let rows: Vec<Vec<Cell>> = run
+            .samples
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let cells =
+                    camkin::table::system_sample_cells(step * i as f64, s, &built.dynamics.hertz);
+                keep.iter().map(|&k| cells[k].clone()).collect()
+            })
+            .collect();
+        write_atomic(Some(&dir.join("forces.csv")), |w| {
+            write_cell_table(w, TableFormat::Csv, &columns, rows)
+        })
+        .map_err(Failure::output)?;
+        super::system_pages::forces_page(&dir, name, sys, &run.samples, step)
+            .map_err(Failure::output)?;
+        super::system_pages::efforts_page(&dir, name, sys, &run.samples, step, u)
+            .map_err(Failure::output)?;
+        let dir = od.commit().map_err(Failure::output)?;
+        crate::say!("camkin: wrote {}", dir.display());
+    }
+    // the checks
+    let mut failures = Vec::new();
+    for c in &report.contacts {
+        if let (Some(m), true) = (&c.min_closed_n, c.always_closed) {
+            if m.value < args.margin {
+                failures.push(format!(
+                    "contact {:?}'s force falls to {} N at {}°, under the margin {} N",
+                    c.name,
+                    force(m.value),
+                    deg(m.angle_deg),
+                    h(args.margin)
+                ));
+            }
+        }
+        if let (Some(p), Some(limit)) = (&c.max_hertz_mpa, args.allowable) {
+            if p.value > limit {
+                failures.push(format!(
+                    "contact {:?}'s Hertz pressure reaches {} MPa at {}°, over the allowable {} MPa",
+                    c.name,
+                    force(p.value),
+                    deg(p.angle_deg),
+                    h(limit)
+                ));
+            }
+        }
+    }
+    if let Some(target) = args.target_rpm {
+        if !(target > 0.0 && target.is_finite() && target <= 1e6) {
+            return Err(bad(format!(
+                "--target-rpm {}: must be a positive speed, rpm",
+                h(target)
+            )));
+        }
+        // from a quarter of the lower of the two speeds, in eight steps to the target
+        let from = 0.25 * target.min(rpm.abs().max(1.0));
+        let sweep = SpeedSweep {
+            from_rpm: from,
+            to_rpm: target,
+            step_rpm: (target - from) / 8.0,
+            tolerance_rpm: 1.0,
+            step_deg: step,
+            revolutions: 1.0,
+            after_impact_deg: 5.0,
+        };
+        let found = camkin::dynamics::no_follow_speed(sys, &built.dynamics, &sweep)
+            .map_err(|e| dyn_err(name, e))?;
+        match found {
+            Some(nf) => failures.push(format!(
+                "contact {:?} opens at {}° at {} rpm, below the target {} rpm (the no-follow speed, swept from {} rpm)",
+                sys.contacts().get(nf.contact).map_or("?", |c| c.name.as_str()),
+                deg(nf.angle_deg),
+                h((nf.speed_rpm * 10.0).round() / 10.0),
+                h(target),
+                h((from * 10.0).round() / 10.0),
+            )),
+            None => crate::out!(
+                "no contact that stays closed at {} rpm opens up to the target {} rpm\n",
+                h((from * 10.0).round() / 10.0),
+                h(target)
+            )?,
+        }
+    }
+    if failures.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure::Check(anyhow!(failures.join("; "))))
+    }
+}
+
+/// `x` to `n` significant digits, for people.
+fn sig(x: f64, n: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return camkin::human::human(x);
+    }
+    let scale = 10f64.powi(n - 1 - x.abs().log10().floor() as i32);
+    camkin::human::human((x * scale).round() / scale)
+}

@@ -1,0 +1,176 @@
+//! The forces of a simulated system over its run, for people (`camkin forces SYSTEM.toml`): each
+//! contact's largest and smallest compressive force and its largest Hertz pressure, each
+//! driver's effort (a camshaft's torque: largest, smallest, mean and RMS), and each impact.
+
+use crate::dynamics::{EventKind, SystemRun};
+use crate::system::{Coordinate, System};
+
+/// A value and the driver angle where it is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct AtAngle {
+    /// the value
+    pub value: f64,
+    /// the first driver's angle from the start, degrees
+    pub angle_deg: f64,
+}
+
+/// One contact's forces over the run.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ContactForces {
+    /// its name
+    pub name: String,
+    /// the largest compressive force, N
+    pub max_n: AtAngle,
+    /// the smallest force while in touch, N (none: never in touch at a sample)
+    pub min_closed_n: Option<AtAngle>,
+    /// whether it is in touch at every sample
+    pub always_closed: bool,
+    /// the largest Hertz pressure, MPa (none without a width, or never closed)
+    pub max_hertz_mpa: Option<AtAngle>,
+}
+
+/// One driver's effort over the run: a turning driver's torque (N·m, counter-clockwise
+/// positive), a sliding one's force (N).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct DriverEffort {
+    /// its name
+    pub name: String,
+    /// "N·m" or "N"
+    pub unit: &'static str,
+    /// the largest
+    pub max: AtAngle,
+    /// the smallest
+    pub min: AtAngle,
+    /// the mean over the samples (the run's output steps are even)
+    pub mean: f64,
+    /// the root mean square
+    pub rms: f64,
+}
+
+/// An impact of the run.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Impact {
+    /// the contact's name
+    pub contact: String,
+    /// the first driver's angle from the start, degrees
+    pub angle_deg: f64,
+    /// the approach speed along the normal, m/s
+    pub approach_m_s: f64,
+}
+
+/// A simulated system's forces (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SystemForces {
+    /// each contact's, in the system's order
+    pub contacts: Vec<ContactForces>,
+    /// each driver's
+    pub drivers: Vec<DriverEffort>,
+    /// every impact, in order
+    pub impacts: Vec<Impact>,
+}
+
+impl SystemForces {
+    /// The forces of `run` of `sys` (lengths in `metres_per_unit` m); `angle_deg(t)` is the first
+    /// driver's angle at time `t`.
+    pub fn new(
+        sys: &System,
+        run: &SystemRun,
+        metres_per_unit: f64,
+        angle_deg: impl Fn(f64) -> f64,
+    ) -> Self {
+        let samples = &run.samples;
+        let at = |value: f64, k: usize| AtAngle {
+            value,
+            angle_deg: angle_deg(samples[k].time),
+        };
+        let largest = |f: &dyn Fn(usize) -> Option<f64>| -> Option<AtAngle> {
+            (0..samples.len())
+                .filter_map(|k| f(k).map(|v| (v, k)))
+                .fold(None, |best: Option<(f64, usize)>, (v, k)| match best {
+                    Some((b, _)) if b >= v => best,
+                    _ => Some((v, k)),
+                })
+                .map(|(v, k)| at(v, k))
+        };
+        let contacts = sys
+            .contacts()
+            .iter()
+            .enumerate()
+            .map(|(c, contact)| {
+                let closed = |k: usize| samples[k].in_contact[c];
+                ContactForces {
+                    name: contact.name.clone(),
+                    max_n: largest(&|k| Some(samples[k].contact_forces[c])).unwrap_or(AtAngle {
+                        value: 0.0,
+                        angle_deg: 0.0,
+                    }),
+                    min_closed_n: largest(&|k| closed(k).then(|| -samples[k].contact_forces[c]))
+                        .map(|a| AtAngle {
+                            value: -a.value,
+                            ..a
+                        }),
+                    always_closed: (0..samples.len()).all(closed),
+                    max_hertz_mpa: largest(&|k| samples[k].hertz_pa[c].map(|p| p * 1e-6))
+                        .filter(|a| a.value > 0.0),
+                }
+            })
+            .collect();
+        let drivers = sys
+            .drivers()
+            .iter()
+            .enumerate()
+            .map(|(d, driver)| {
+                // N·L to N·m for a torque
+                let (scale, unit) = match driver.coordinate {
+                    Coordinate::Angle => (metres_per_unit, "N·m"),
+                    _ => (1.0, "N"),
+                };
+                let e = |k: usize| samples[k].driver_efforts.get(d).map(|v| v * scale);
+                let n = samples.len().max(1) as f64;
+                let values: Vec<f64> = (0..samples.len()).filter_map(e).collect();
+                DriverEffort {
+                    name: driver.name.clone(),
+                    unit,
+                    max: largest(&e).unwrap_or(AtAngle {
+                        value: 0.0,
+                        angle_deg: 0.0,
+                    }),
+                    min: largest(&|k| e(k).map(|v| -v))
+                        .map(|a| AtAngle {
+                            value: -a.value,
+                            ..a
+                        })
+                        .unwrap_or(AtAngle {
+                            value: 0.0,
+                            angle_deg: 0.0,
+                        }),
+                    mean: values.iter().sum::<f64>() / n,
+                    rms: (values.iter().map(|v| v * v).sum::<f64>() / n).sqrt(),
+                }
+            })
+            .collect();
+        let impacts = run
+            .events
+            .iter()
+            .filter(|e| e.kind == EventKind::Impact)
+            .map(|e| Impact {
+                contact: sys
+                    .contacts()
+                    .get(e.contact)
+                    .map_or_else(String::new, |c| c.name.clone()),
+                angle_deg: angle_deg(e.time),
+                approach_m_s: e.approach * metres_per_unit,
+            })
+            .collect();
+        Self {
+            contacts,
+            drivers,
+            impacts,
+        }
+    }
+}
