@@ -68,7 +68,7 @@
         const timing = { server_ms: ans.result.server_ms, network_ms: t1 - t0, total_ms: t2 - t0 };
         S.timings.push(timing);
         if (S.timings.length > 200) S.timings.shift();
-        setStatus(`exact analysis of ${ans.result.angles_deg.length} angles: ${fmt(timing.server_ms, 3)} ms on the server, ${fmt(timing.total_ms, 3)} ms from the edit to the screen`);
+        setStatus(`${ans.result.simulated ? "simulation of" : "exact analysis of"} ${ans.result.angles_deg.length} ${ans.result.simulated ? "output steps" : "angles"}: ${fmt(timing.server_ms, 3)} ms on the server, ${fmt(timing.total_ms, 3)} ms from the edit to the screen`);
         clearError();
         if (S.compareFor !== undefined && S.compareFor !== ans.toml) runCompare();
       })
@@ -139,7 +139,11 @@
         ? "Drag a blue node to reshape the cam; the plots follow at once."
         : "This profile is not a spline with inline points: edit the file to change it.";
     $("compare-panel").hidden = !!result.system || (REPORT && !REPORT.compare);
-    $("checks-panel").hidden = !!result.system;
+    $("checks-panel").hidden = !!result.system && !result.simulated;
+    $("checks-title").textContent = result.simulated ? "Impacts" : "Design checks";
+    $("plots-sub").textContent = result.simulated
+      ? "simulated: the contact method's rows imposed on the equations of motion; hover for values, click to set the angle"
+      : "exact, by the contact method; hover for values, click to set the angle";
     $("angle").setAttribute("aria-label", result.system ? "driver angle" : "cam angle");
     $("plots-title").textContent = result.system ? "Over one revolution of the driver" : "Over one revolution";
     buildPlots();
@@ -354,6 +358,15 @@
         li.onclick = () => setIndex(Math.round(ch.angles_deg[0] / r.step_deg) % r.frames.length);
       }
       li.textContent = text;
+      $("checks").appendChild(li);
+    }
+    for (const e of r.events || []) {
+      const li = document.createElement("li");
+      li.className = "ok";
+      li.textContent = e.message;
+      li.title = "click to go to its angle";
+      li.style.cursor = "pointer";
+      li.onclick = () => setIndex(Math.round(e.angle_deg / r.step_deg) % r.frames.length);
       $("checks").appendChild(li);
     }
     $("warnings").innerHTML = "";

@@ -21,9 +21,9 @@ fn color(id: BodyId) -> Rgb {
     id.index().map_or(FOLLOWER, |i| PALETTE[i % PALETTE.len()])
 }
 
-fn frame(s: &SystemState, id: BodyId) -> Frame {
+fn frame(poses: &[camkin::body::Pose], id: BodyId) -> Frame {
     id.index()
-        .map_or_else(Frame::identity, |i| s.bodies[i].pose.frame())
+        .map_or_else(Frame::identity, |i| poses[i].frame())
 }
 
 /// The curve on body `id` in the world: a closed curve whole, an open one over `size` either
@@ -61,15 +61,52 @@ fn curve_shape(curve: &dyn Curve, f: &Frame, at: f64, size: f64, color: Rgb) -> 
 
 /// The shapes of `sys` at the instant `s`; `size` the system's size (for the lengths drawn).
 pub fn system_scene(sys: &System, s: &SystemState, size: f64) -> Vec<Shape> {
+    let poses: Vec<camkin::body::Pose> = s.bodies.iter().map(|b| b.pose).collect();
+    let touches: Vec<Touch> = s
+        .contacts
+        .iter()
+        .map(|k| Touch {
+            u_a: k.pairing.u_a,
+            u_b: k.pairing.u_b,
+            point: k.kinematics.point,
+            normal: k.kinematics.normal.into_inner(),
+            closed: true,
+        })
+        .collect();
+    scene_at(sys, &poses, &touches, size)
+}
+
+/// Where a contact's curves are nearest: their pairing parameters, the contact point and the
+/// common normal, and whether they touch (a simulation's contact may be open).
+#[derive(Debug, Clone, Copy)]
+pub struct Touch {
+    /// curve A's parameter
+    pub u_a: f64,
+    /// curve B's
+    pub u_b: f64,
+    /// the contact point (A's), world
+    pub point: Point2,
+    /// the common normal, unit
+    pub normal: camkin::Vec2,
+    /// in touch: its point and normal are drawn
+    pub closed: bool,
+}
+
+/// [`system_scene`] from the bodies' poses and each contact's [`Touch`] (a simulation's
+/// sample).
+pub fn scene_at(
+    sys: &System,
+    poses: &[camkin::body::Pose],
+    touches: &[Touch],
+    size: f64,
+) -> Vec<Shape> {
+    let pairs: Vec<(f64, f64)> = touches.iter().map(|t| (t.u_a, t.u_b)).collect();
     let mut shapes = Vec::new();
-    for (c, k) in sys.contacts().iter().zip(&s.contacts) {
-        for (id, curve, u) in [
-            (c.a, &c.curve_a, k.pairing.u_a),
-            (c.b, &c.curve_b, k.pairing.u_b),
-        ] {
+    for (c, &(ua, ub)) in sys.contacts().iter().zip(&pairs) {
+        for (id, curve, u) in [(c.a, &c.curve_a, ua), (c.b, &c.curve_b, ub)] {
             shapes.push(curve_shape(
                 curve.as_ref(),
-                &frame(s, id),
+                &frame(poses, id),
                 u,
                 0.6 * size,
                 color(id),
@@ -91,7 +128,7 @@ pub fn system_scene(sys: &System, s: &SystemState, size: f64) -> Vec<Shape> {
         };
         let pin = matches!(j.kind, JointKind::Revolute { .. });
         for (id, at) in [(a, at_a), (b, at_b)] {
-            let p = frame(s, id) * at;
+            let p = frame(poses, id) * at;
             if let Some(i) = id.index() {
                 pins[i].push(p);
             }
@@ -107,7 +144,7 @@ pub fn system_scene(sys: &System, s: &SystemState, size: f64) -> Vec<Shape> {
         }
         if let JointKind::Prismatic { a, at_a, axis, .. } = j.kind {
             // the guide: a line through its point along its axis
-            let f = frame(s, a);
+            let f = frame(poses, a);
             let d = f.rotation * (axis / axis.norm());
             let p = f * at_a;
             shapes.push(Shape::Polyline {
@@ -120,13 +157,10 @@ pub fn system_scene(sys: &System, s: &SystemState, size: f64) -> Vec<Shape> {
     }
     // a body's contact curves hang on its bar too: a closed curve by its centre (the mean of
     // its samples), an open one by the contact point
-    for (c, k) in sys.contacts().iter().zip(&s.contacts) {
-        for (id, curve, u) in [
-            (c.a, &c.curve_a, k.pairing.u_a),
-            (c.b, &c.curve_b, k.pairing.u_b),
-        ] {
+    for (c, &(ua, ub)) in sys.contacts().iter().zip(&pairs) {
+        for (id, curve, u) in [(c.a, &c.curve_a, ua), (c.b, &c.curve_b, ub)] {
             let Some(i) = id.index() else { continue };
-            let f = frame(s, id);
+            let f = frame(poses, id);
             let p = match curve.domain() {
                 Domain::Periodic { period } => {
                     let n = 64;
@@ -152,9 +186,8 @@ pub fn system_scene(sys: &System, s: &SystemState, size: f64) -> Vec<Shape> {
             });
         }
     }
-    for k in &s.contacts {
-        let c = k.kinematics.point;
-        let n = k.kinematics.normal.into_inner();
+    for t in touches.iter().filter(|t| t.closed) {
+        let (c, n) = (t.point, t.normal);
         shapes.push(Shape::Polyline {
             pts: vec![c - 0.08 * size * n, c + 0.08 * size * n],
             color: NORMAL,

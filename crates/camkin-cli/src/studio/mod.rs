@@ -12,6 +12,7 @@ pub mod model;
 pub mod report;
 pub mod server;
 pub mod system;
+pub mod system_sim;
 
 use crate::mechfile::InputError;
 use serde::{Deserialize, Serialize};

@@ -190,6 +190,15 @@ pub struct Check {
     pub stretches: Vec<Vec<[f64; 2]>>,
 }
 
+/// An event of a simulation (an impact), at its driver angle.
+#[derive(Debug, Serialize)]
+pub struct Event {
+    /// what a person reads
+    pub message: String,
+    /// the driver's angle, degrees
+    pub angle_deg: f64,
+}
+
 /// A warning from the file (uneven nodes), placed.
 #[derive(Debug, Serialize)]
 pub struct Placed {
@@ -262,6 +271,12 @@ pub struct Analysis {
     pub dynamics: Option<DynamicsOut>,
     /// a system file (bodies, joints, contacts): no cam profile, nodes, checks or study
     pub system: bool,
+    /// a system simulated (its file has `[dynamics]`): the frames and series are its
+    /// simulation's, and `events` its impacts
+    pub simulated: bool,
+    /// a simulated system's impacts, for people, at their driver angles
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub events: Vec<Event>,
     /// server time for this analysis, ms
     pub server_ms: f64,
 }
@@ -506,6 +521,8 @@ pub fn analyze(
         first_error,
         dynamics,
         system: false,
+        simulated: false,
+        events: Vec::new(),
         server_ms: t0.elapsed().as_secs_f64() * 1e3,
     })
 }

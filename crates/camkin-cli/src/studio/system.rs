@@ -8,6 +8,7 @@ use super::model::{revolution, Analysis, Frame, Placed, Series, ShapeOut, Source
 use super::{Limits, StudioError};
 use crate::draw::mechanism::Shape;
 use crate::draw::system::system_scene;
+use camkin::body::Pose;
 use camkin::curve::Domain;
 use camkin::spec::BuiltSystem;
 use camkin::system::{Coordinate, SystemError, SystemState};
@@ -72,10 +73,70 @@ pub fn analyze(
 ) -> Result<Analysis, StudioError> {
     let t0 = Instant::now();
     let built = build(text, source, limits)?;
+    // with [dynamics]: its simulation, and the force panel
+    if built.simulated {
+        return super::system_sim::analyze(&built, &source.name, step_deg, limits);
+    }
     let sys = &built.system;
     let unit = built.length_unit.name();
     let (angles, _, states) = solve(&built, step_deg, limits)?;
     let size = sys.size();
+    let scenes = states.iter().map(|s| {
+        s.as_ref().ok().map(|s| {
+            let poses: Vec<Pose> = s.bodies.iter().map(|b| b.pose).collect();
+            (system_scene(sys, s, size), poses)
+        })
+    });
+    let (frames, curves, extent) = scene_frames(sys, scenes);
+    let series = body_series(&built, &states, unit);
+    let failed = states.iter().filter(|s| s.is_err()).count();
+    let first_error = states
+        .iter()
+        .find_map(|s| s.as_ref().err().map(|e| e.to_string()));
+    let rpm = built
+        .time_of(std::f64::consts::TAU)
+        .map_or(0.0, |t| 60.0 / t);
+    Ok(Analysis {
+        name: source.name.clone(),
+        length_unit: unit,
+        oscillating: false,
+        rpm,
+        step_deg,
+        angles_deg: angles,
+        series,
+        frames,
+        curves,
+        profile: Vec::new(),
+        nodes: Vec::new(),
+        nodes_editable: false,
+        pivot: [0.0, 0.0],
+        extent,
+        checks: Vec::new(),
+        warnings: built
+            .warnings
+            .iter()
+            .map(|w| Placed {
+                message: w.to_string(),
+                line: None,
+                column: None,
+            })
+            .collect(),
+        failed,
+        first_error,
+        dynamics: None,
+        system: true,
+        simulated: false,
+        events: Vec::new(),
+        server_ms: t0.elapsed().as_secs_f64() * 1e3,
+    })
+}
+
+/// Each instant's scene (its shapes and the bodies' poses; none where it failed) as the page's
+/// frames, each contact's closed curves kept once in their bodies' frames, and the extent.
+pub(super) fn scene_frames(
+    sys: &camkin::system::System,
+    scenes: impl Iterator<Item = Option<(Vec<Shape>, Vec<Pose>)>>,
+) -> (Vec<Frame>, Vec<Vec<[f64; 2]>>, [f64; 4]) {
     // each contact's closed curves, kept once in their bodies' frames
     let nc = sys.contacts().len();
     let curves: Vec<Vec<[f64; 2]>> = sys
@@ -97,9 +158,9 @@ pub fn analyze(
         lo = [lo[0].min(p[0] - r), lo[1].min(p[1] - r)];
         hi = [hi[0].max(p[0] + r), hi[1].max(p[1] + r)];
     };
-    let mut frames = Vec::with_capacity(states.len());
-    for s in &states {
-        let Ok(s) = s else {
+    let mut frames = Vec::new();
+    for scene in scenes {
+        let Some((scene, poses)) = scene else {
             frames.push(Frame {
                 cam: [0.0, 0.0, 0.0],
                 contact: None,
@@ -108,7 +169,7 @@ pub fn analyze(
             });
             continue;
         };
-        let shapes: Vec<ShapeOut> = system_scene(sys, s, size)
+        let shapes: Vec<ShapeOut> = scene
             .into_iter()
             .enumerate()
             .map(|(k, shape)| match shape {
@@ -122,7 +183,7 @@ pub fn analyze(
                     let c = &sys.contacts()[k / 2];
                     let id = if k % 2 == 0 { c.a } else { c.b };
                     let pose = id.index().map_or([0.0; 3], |i| {
-                        let p = s.bodies[i].pose;
+                        let p = poses[i];
                         [p.origin.x, p.origin.y, p.angle]
                     });
                     ShapeOut::Curve {
@@ -150,45 +211,7 @@ pub fn analyze(
             follower: shapes,
         });
     }
-    let series = body_series(&built, &states, unit);
-    let failed = states.iter().filter(|s| s.is_err()).count();
-    let first_error = states
-        .iter()
-        .find_map(|s| s.as_ref().err().map(|e| e.to_string()));
-    let rpm = built
-        .time_of(std::f64::consts::TAU)
-        .map_or(0.0, |t| 60.0 / t);
-    Ok(Analysis {
-        name: source.name.clone(),
-        length_unit: unit,
-        oscillating: false,
-        rpm,
-        step_deg,
-        angles_deg: angles,
-        series,
-        frames,
-        curves,
-        profile: Vec::new(),
-        nodes: Vec::new(),
-        nodes_editable: false,
-        pivot: [0.0, 0.0],
-        extent: [lo[0], lo[1], hi[0], hi[1]],
-        checks: Vec::new(),
-        warnings: built
-            .warnings
-            .iter()
-            .map(|w| Placed {
-                message: w.to_string(),
-                line: None,
-                column: None,
-            })
-            .collect(),
-        failed,
-        first_error,
-        dynamics: None,
-        system: true,
-        server_ms: t0.elapsed().as_secs_f64() * 1e3,
-    })
+    (frames, curves, [lo[0], lo[1], hi[0], hi[1]])
 }
 
 /// Each moving body that no driver moves: its coordinate that moves most over the revolution
@@ -288,6 +311,9 @@ pub fn csv(
     limits: &Limits,
 ) -> Result<String, StudioError> {
     let built = build(text, source, limits)?;
+    if built.simulated {
+        return super::system_sim::csv(&built, step_deg, limits);
+    }
     let (angles, times, states) = solve(&built, step_deg, limits)?;
     let columns = camkin::table::system_columns(&built);
     let mut rows = Some(

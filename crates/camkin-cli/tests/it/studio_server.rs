@@ -1,6 +1,7 @@
 //! The studio's server without a browser: JSON errors with 4xx statuses, size and work limits,
 //! reads confined to the opened folder, malformed requests, many clients at once, and the CSV
-//! download equal to `camkin analyze`.
+//! download equal to `camkin analyze` (a simulated system's to `camkin simulate`, its force
+//! panel the same numbers).
 
 use crate::common::{camkin, examples};
 use camkin_cli::studio::model::Source;
@@ -518,4 +519,62 @@ fn the_server_survives_a_request_that_runs_out_of_memory() {
         }
     }
     assert!(freed, "a server was left behind by watcher {watcher}");
+}
+
+/// The valve train (a system with `[dynamics]`): the studio simulates it as `camkin simulate`
+/// does, its CSV download is that command's bytes, its force panel those numbers, and its
+/// impacts are listed at their angles.
+#[test]
+fn a_simulated_systems_force_panel_and_csv_are_camkin_simulates() {
+    let path = examples().join("valve-train.toml");
+    let addr = start(Some(&path), Limits::default());
+    let text = std::fs::read_to_string(&path).unwrap();
+    let (s, csv) = request(
+        addr,
+        "POST",
+        "/api/csv",
+        &json!({"toml": text, "step_deg": 0.5}).to_string(),
+    );
+    assert_eq!(s, 200, "{csv}");
+    let out = camkin()
+        .arg("simulate")
+        .arg(&path)
+        .args(["--step", "0.5"])
+        .assert()
+        .success();
+    let expected = String::from_utf8_lossy(&out.get_output().stdout).to_string();
+    assert_eq!(csv, expected);
+    let (s, v) = post(
+        addr,
+        "/api/analyze",
+        &json!({"toml": text, "step_deg": 0.5}),
+    );
+    assert_eq!(s, 200, "{v}");
+    let v = &v["result"];
+    assert_eq!(v["simulated"], true);
+    let series = v["series"].as_array().unwrap();
+    let force = series
+        .iter()
+        .find(|x| x["key"] == "cam on roller_force")
+        .unwrap_or_else(|| panic!("{series:?}"));
+    assert_eq!(force["unit"], "N");
+    // the command's column, value for value
+    let mut lines = expected.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = header
+        .iter()
+        .position(|h| *h == "cam_on_roller_force_N")
+        .unwrap();
+    for (k, line) in lines.enumerate() {
+        let x: f64 = line.split(',').nth(col).unwrap().parse().unwrap();
+        assert_eq!(force["values"][k].as_f64().unwrap(), x, "row {k}");
+    }
+    let torque = series.iter().find(|x| x["unit"] == "N·m").unwrap();
+    assert!(torque["label"].as_str().unwrap().contains("torque"));
+    let events = v["events"].as_array().unwrap();
+    assert!(
+        events[0]["message"].as_str().unwrap().contains("\"seat\"")
+            && events[0]["angle_deg"].as_f64().unwrap() > 150.0,
+        "{events:?}"
+    );
 }

@@ -125,6 +125,8 @@ pub struct SystemSample {
     /// ([`ContactHertz`]) and is closed (0 open), none where its curvatures do not close (a
     /// concave curve as sharp as the other) or a curve is a point
     pub hertz_pa: Vec<Option<f64>>,
+    /// each contact's nearest pair of points (its contact point and normal in touch), world
+    pub pairings: Vec<Option<Pairing>>,
 }
 
 /// A simulated run: a sample at the start and after every output step, and the events between.
@@ -517,6 +519,7 @@ impl<'a> SystemSimulation<'a> {
             driver_work: self.work,
             driver_efforts,
             hertz_pa,
+            pairings: p[self.first_contact..].to_vec(),
         })
     }
 
