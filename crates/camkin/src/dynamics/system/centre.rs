@@ -23,7 +23,11 @@ pub(super) type Frames<'q> = (Cow<'q, [f64]>, Cow<'q, [f64]>);
 impl SystemSimulation<'_> {
     /// Body `i`'s arm from its frame's origin to its centre of mass, in the world, at `q`.
     fn arm(&self, q: &[f64], i: usize) -> Vec2 {
-        Rotation::new(q[3 * i + 2]) * self.centres[i]
+        let c = self.centres[i];
+        if c == Vec2::zeros() {
+            return c;
+        }
+        Rotation::new(q[3 * i + 2]) * c
     }
 
     /// The frames' coordinates and rates at the centres' `(q, q̇)` (borrowed where every centre
@@ -71,14 +75,29 @@ impl SystemSimulation<'_> {
     /// Body `i`'s frame state (the ground's for [`super::super::GROUND`]) at the centres'
     /// `(q, q̇)`.
     pub(super) fn frame_state(&self, q: &[f64], qd: &[f64], i: usize) -> BodyState {
-        let (qf, qdf) = self.frames(q, qd);
-        body_state(&qf, &qdf, i)
+        let mut s = body_state(q, qd, i);
+        if self.offset && i != super::super::GROUND {
+            let r = self.arm(q, i);
+            let w = qd[3 * i + 2];
+            s.pose.origin -= r;
+            s.velocity += Vec2::new(w * r.y, -w * r.x);
+        }
+        s
     }
 
-    /// A row of the frames' coordinates made one of the centres' (see the module docs).
-    pub(super) fn row_about_centres(&self, q: &[f64], qd: &[f64], row: &mut Row) {
+    /// Every body's arm at `q` (none where every centre is at its frame's origin).
+    pub(super) fn arms(&self, q: &[f64]) -> Vec<Vec2> {
+        if !self.offset {
+            return Vec::new();
+        }
+        (0..self.centres.len()).map(|i| self.arm(q, i)).collect()
+    }
+
+    /// A row of the frames' coordinates made one of the centres' (see the module docs), with
+    /// the bodies' `arms` at its `q`.
+    pub(super) fn row_about_centres(&self, arms: &[Vec2], qd: &[f64], row: &mut Row) {
         if self.offset {
-            row.about_centres(|i| self.arm(q, i), qd);
+            row.about_centres(|i| arms[i], qd);
         }
     }
 
@@ -89,10 +108,10 @@ impl SystemSimulation<'_> {
             return;
         }
         let n = q.len();
+        let arms = self.arms(q);
         for r in 0..rows.m {
             let jac = &mut rows.jac[r * n..(r + 1) * n];
-            for i in 0..self.centres.len() {
-                let a = self.arm(q, i);
+            for (i, a) in arms.iter().enumerate() {
                 jac[3 * i + 2] += jac[3 * i] * a.y - jac[3 * i + 1] * a.x;
             }
         }

@@ -111,7 +111,6 @@ impl SystemSimulation<'_> {
         // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
         // a contact's compressive force −λ (its row is the gap, positive apart)
         let mut forces = vec![0.0; in_contact.len()];
-        let (_, qd) = self.frames(q, qd);
         let mut efforts = Vec::with_capacity(self.sys.drivers().len());
         // the drivers' power and the table forces' (their work is the drivers' column's too)
         let (mut r, mut power) = (0, gas_power);
@@ -123,7 +122,13 @@ impl SystemSimulation<'_> {
                 body, coordinate, ..
             } = c
             {
-                power -= lambda[r] * qd[3 * body + coordinate.index()];
+                // the driven coordinate's rate: its frame's
+                let rate = match coordinate {
+                    crate::system::Coordinate::Angle => qd[3 * body + 2],
+                    crate::system::Coordinate::X => self.frame_state(q, qd, *body).velocity.x,
+                    crate::system::Coordinate::Y => self.frame_state(q, qd, *body).velocity.y,
+                };
+                power -= lambda[r] * rate;
                 efforts.push(-lambda[r]);
             }
             if k >= self.first_contact {
@@ -152,9 +157,11 @@ impl SystemSimulation<'_> {
         let al = &self.opts.al;
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
         let (qf, qdf) = self.frames(q, qd);
+        let arms = self.arms(q);
         // the active rows, sparse (at most six entries each), their γ̃, and Φ_q dense
-        let mut sparse = Vec::new();
-        let mut rhs = Vec::new();
+        let m = self.active_rows(active);
+        let mut sparse = Vec::with_capacity(m);
+        let mut rhs = Vec::with_capacity(m);
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
                 continue;
@@ -165,7 +172,7 @@ impl SystemSimulation<'_> {
                 .map_err(|source| DynamicsError::Contact { time: t, source })?;
             for row in rows.iter() {
                 let mut row = *row;
-                self.row_about_centres(q, qd, &mut row);
+                self.row_about_centres(&arms, qd, &mut row);
                 let phi_dot: f64 =
                     row.jac().iter().map(|&(col, v)| v * qd[col]).sum::<f64>() - c.target_rate(t);
                 rhs.push(row.gamma - c1 * phi_dot - c2 * row.phi);
@@ -350,6 +357,17 @@ impl SystemSimulation<'_> {
             .sum()
     }
 
+    /// How many rows the constraints `active` hold.
+    fn active_rows(&self, active: &[bool]) -> usize {
+        self.model
+            .constraints
+            .iter()
+            .zip(active)
+            .filter(|(_, &a)| a)
+            .map(|(c, _)| c.rows())
+            .sum()
+    }
+
     /// The inverse of the mass matrix's diagonal, one per coordinate.
     fn inv_mass(&self) -> Vec<f64> {
         self.model
@@ -370,7 +388,13 @@ impl SystemSimulation<'_> {
     ) -> Result<(Vec<Row>, Vec<f64>, Vec<f64>), DynamicsError> {
         let active = self.active(in_contact);
         let (qf, qdf) = self.frames(q, qd);
-        let (mut rows, mut phi, mut target) = (Vec::new(), Vec::new(), Vec::new());
+        let arms = self.arms(q);
+        let m = self.active_rows(&active);
+        let (mut rows, mut phi, mut target) = (
+            Vec::with_capacity(m),
+            Vec::with_capacity(m),
+            Vec::with_capacity(m),
+        );
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
                 continue;
@@ -384,7 +408,7 @@ impl SystemSimulation<'_> {
                 })?;
             for row in rs.iter() {
                 let mut row = *row;
-                self.row_about_centres(q, qd, &mut row);
+                self.row_about_centres(&arms, qd, &mut row);
                 phi.push(row.phi);
                 target.push(c.target_rate(self.t));
                 rows.push(row);
