@@ -163,10 +163,11 @@ pub(super) fn gas_force(
 }
 
 /// A simulated system's cam program must move its follower with a continuous velocity: where
-/// the velocity (or the position) jumps between two segments, the synthesised cam has a corner
-/// or a step there (a roller's offset profile jumps by the roller's radius times the turn of the
-/// path), which a follower can only pass by an impulse; the simulation would follow a curve that
-/// is not the cam. (An acceleration jump is a force jump: allowed.)
+/// the velocity (or the position) jumps between two segments, the follower can only pass by an
+/// impulse, and the synthesised curve breaks there (a roller's offset profile steps by the
+/// roller's radius times the turn of the path: 0.06 mm for the valve train's former
+/// constant-velocity ramps, where Newton could not follow the contact); the simulation would
+/// follow a curve that is not the cam. (An acceleration jump is a force jump: allowed.)
 pub(super) fn smooth_enough(
     program: &crate::cam::synthesis::SynthesizedProfile,
     field: impl Fn(ProfileField) -> Field,
@@ -179,7 +180,7 @@ pub(super) fn smooth_enough(
                 crate::field::SegmentField::Law,
             )),
             reason: format!(
-                "the follower's {what} jumps where this segment starts (at {}°): the cam synthesised for it has a corner there, which a follower passes only by an impulse, so [dynamics] needs a program whose velocity is continuous — between a dwell and a lift, a ramp of a law that starts and ends at rest (cycloidal, 3-4-5, 4-5-6-7), not a constant-velocity ramp",
+                "the follower's {what} jumps where this segment starts (at {}°): the cam synthesised for it breaks there (a roller's profile steps by a part of a millimetre, a flat face's has a flat), and the follower passes it only by an impulse, so [dynamics] needs a program whose velocity is continuous — between a dwell and a lift, a ramp of a law that starts and ends at rest (cycloidal, 3-4-5, 4-5-6-7), not a constant-velocity ramp",
                 crate::human::human(d.at.to_degrees()),
             ),
         });

@@ -118,7 +118,12 @@ impl Schur {
         for i in 0..m {
             let (f, row) = (self.first[i], self.start[i]);
             let entries = &self.l[row..row + i - f];
-            let s = b[i] - entries.iter().zip(&b[f..i]).map(|(l, x)| l * x).sum::<f64>();
+            let s = b[i]
+                - entries
+                    .iter()
+                    .zip(&b[f..i])
+                    .map(|(l, x)| l * x)
+                    .sum::<f64>();
             b[i] = s / self.l[row + i - f];
         }
         for i in (0..m).rev() {
