@@ -42,10 +42,22 @@ fn curve_shape(curve: &dyn Curve, f: &Frame, at: f64, size: f64, color: Rgb) -> 
             // a line's parameter is a length; an open curve's stretch around the contact
             let speed = curve.eval(at).d1.norm().max(1e-300);
             let (lo, hi) = ((at - size / speed).max(min), (at + size / speed).min(max));
+            let mut pts: Vec<Point2> = (0..=64)
+                .map(|k| f * curve.position(lo + (hi - lo) * f64::from(k) / 64.0))
+                .collect();
+            // a straight stretch (a line: a face, a seat, a coil's clash plane) is its two
+            // ends: the page draws the same, and a simulation's frames are 30 times lighter
+            let (a, b) = (pts[0], pts[pts.len() - 1]);
+            let chord = b - a;
+            let straight = chord.norm() > 0.0
+                && pts.iter().all(|p| {
+                    (camkin::geometry::cross(chord, p - a) / chord.norm()).abs() <= 1e-9 * size
+                });
+            if straight {
+                pts = vec![a, b];
+            }
             Shape::Polyline {
-                pts: (0..=64)
-                    .map(|k| f * curve.position(lo + (hi - lo) * f64::from(k) / 64.0))
-                    .collect(),
+                pts,
                 color,
                 width: 2,
                 closed: false,
