@@ -189,6 +189,20 @@ pub fn all() -> Vec<Scenario> {
             2_000,
         );
     }
+    // every profile kind and follower kind of the examples, warm (issue 47: circle and ellipse
+    // call sine and cosine every evaluation, a motion law allocated, a carried curve's search
+    // is a search)
+    for (file, _) in EXAMPLE_MECHANISMS {
+        add(
+            format!("example-warm/{file}"),
+            "a step of a 0.05° sweep of examples/<name>.toml (Sweep::step_motion)",
+            if file.starts_with("mushroom") {
+                50
+            } else {
+                2_000
+            },
+        );
+    }
     add(
         "floor/translating-flat".into(),
         "a hand-written warm step of the flat face on the paper's cam (the floor)",
@@ -232,6 +246,45 @@ pub fn all() -> Vec<Scenario> {
         100,
     );
     out
+}
+
+/// The examples whose warm step the harness counts, by file name: a circle, an ellipse, a motion
+/// program, a conjugate yoke, a carried curve (the mushroom), an oscillating knife.
+pub const EXAMPLE_MECHANISMS: [(&str, &str); 6] = [
+    (
+        "eccentric-roller",
+        include_str!("../../../examples/eccentric-roller.toml"),
+    ),
+    (
+        "ellipse-knife",
+        include_str!("../../../examples/ellipse-knife.toml"),
+    ),
+    (
+        "motion-roller",
+        include_str!("../../../examples/motion-roller.toml"),
+    ),
+    (
+        "conjugate-yoke",
+        include_str!("../../../examples/conjugate-yoke.toml"),
+    ),
+    (
+        "mushroom-follower",
+        include_str!("../../../examples/mushroom-follower.toml"),
+    ),
+    (
+        "oscillating-knife",
+        include_str!("../../../examples/oscillating-knife.toml"),
+    ),
+];
+
+/// An example of [`EXAMPLE_MECHANISMS`], built as the command builds it (without the jerk).
+pub fn example_mechanism(file: &str) -> Option<Mechanism> {
+    let (_, text) = EXAMPLE_MECHANISMS.iter().find(|(f, _)| *f == file)?;
+    let spec = camkin::spec::text::parse_toml(text, file).ok()?;
+    let built = spec
+        .build(&camkin::spec::BuildOptions::default())
+        .expect("the example builds");
+    Some(without_jerk(built.mechanism))
 }
 
 /// `examples/valve-train.toml`, built as the command builds it.
@@ -370,6 +423,7 @@ pub fn run(name: &str, reps: usize) -> Option<f64> {
             counted_repetitions(reps, |k| motion(m.motion(th[k & 1023])))
         }
         ("warm", k) => warm(&paper_with(kind_of(k)?), false),
+        ("example-warm", file) => warm(&example_mechanism(file)?, false),
         ("floor", "translating-flat") => {
             let m = paper_with(kind_of("translating-flat")?);
             let first = m.analyze(0.0).ok()?;

@@ -32,7 +32,7 @@ impl Envelope {
 /// `A = R(−σθ)` (`rot`) and `A' = −σ J A`.
 pub(crate) fn rotated_derivs(sigma: f64, rot: &Rotation, w: &[Vec2; 5]) -> [Vec2; 5] {
     let sg = sigma;
-    let aw: Vec<Vec2> = w.iter().map(|v| rot * v).collect();
+    let aw: [Vec2; 5] = std::array::from_fn(|k| rot * w[k]);
     let m = |v: Vec2| -sg * rot90(v); // M = −σJ
     let m2 = |v: Vec2| -v;
     let m3 = |v: Vec2| sg * rot90(v);
