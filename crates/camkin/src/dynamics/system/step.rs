@@ -261,27 +261,17 @@ impl SystemSimulation<'_> {
             time: self.t,
             source: crate::contact::ContactError::Unsupported("a contact without a pairing"),
         })?;
-        let (surf_a, surf_b) = (
-            Surface::new(c.curve_a.as_ref(), &sa),
-            Surface::new(c.curve_b.as_ref(), &sb),
-        );
-        let p = match contact::refine(&surf_a, &surf_b, p0.u_a, p0.u_b, &self.model.search) {
-            Ok(p) => p,
-            // a flying body turned far from its last nearest pair (a finger thrown off its cam
-            // well above the no-follow speed): the nearest pair found again, globally
-            Err(_) => {
-                let found = contact::find_contact(&surf_a, &surf_b, &self.model.search).map_err(
-                    |source| DynamicsError::Contact {
-                        time: self.t,
-                        source,
-                    },
-                )?;
-                let (contact::Proximity::Apart(p)
-                | contact::Proximity::Touching(p)
-                | contact::Proximity::Overlapping(p)) = found;
-                p
-            }
-        };
+        let p = contact::refine(
+            &Surface::new(c.curve_a.as_ref(), &sa),
+            &Surface::new(c.curve_b.as_ref(), &sb),
+            p0.u_a,
+            p0.u_b,
+            &self.model.search,
+        )
+        .map_err(|source| DynamicsError::Contact {
+            time: self.t,
+            source,
+        })?;
         *slot = Some(p);
         Ok(self.sense[k] * p.gap)
     }
