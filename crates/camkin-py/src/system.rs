@@ -192,7 +192,7 @@ impl PySystem {
         let mut sim = camkin::dynamics::SystemSimulation::new(sys, self.built.dynamics.clone())
             .map_err(dyn_err)?;
         let h_out = (t1 - t0).abs();
-        let fewest = (h_out / sim.max_step()).ceil().max(1.0) as usize;
+        let fewest = sim.substeps(h_out);
         let substeps = match substeps {
             None => fewest,
             Some(n) if n >= fewest && n <= 1000 => n,

@@ -46,9 +46,42 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
     let h_out = (t1 - t0).abs();
     let mut sim =
         SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| dyn_err(name, e))?;
-    let substeps = (h_out / sim.max_step()).ceil().max(1.0) as usize;
+    let substeps = sim.substeps(h_out);
+    let rpm = sys
+        .drivers()
+        .first()
+        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
+    // --target-rpm's sweep: from a quarter of the lower of the two speeds, in eight steps to
+    // the target, then bisected to 1 rpm
+    let sweep = match args.target_rpm {
+        Some(target) if !(target > 0.0 && target.is_finite() && target <= 1e6) => {
+            return Err(bad(format!(
+                "--target-rpm {}: must be a positive speed, rpm",
+                camkin::human::human(target)
+            )));
+        }
+        Some(target) => {
+            let from = 0.25 * target.min(rpm.abs().max(1.0));
+            Some(SpeedSweep {
+                from_rpm: from,
+                to_rpm: target,
+                step_rpm: (target - from) / 8.0,
+                tolerance_rpm: 1.0,
+                step_deg: step,
+                revolutions: 1.0,
+                after_impact_deg: 5.0,
+            })
+        }
+        None => None,
+    };
+    // the revolution, and the sweep's runs (each at most a revolution at the target's speed)
+    let sweep_steps = sweep.as_ref().map_or(0, |s| {
+        let runs = 8.0 + s.step_rpm.max(1.0).log2().ceil() + 1.0;
+        let h_target = step.to_radians() / (s.to_rpm * std::f64::consts::TAU / 60.0);
+        (runs as usize) * outputs * sim.substeps(h_target)
+    });
     crate::refuse_large(
-        &camkin::work::Work::system_simulation(sys, outputs * substeps, outputs + 1),
+        &camkin::work::Work::system_simulation(sys, outputs * substeps + sweep_steps, outputs + 1),
         args.work.large,
         ", or use a coarser --step",
     )?;
@@ -63,10 +96,6 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
     let report = SystemForces::new(sys, &run, u, angle_of);
     let h = camkin::human::human;
     let deg = |a: f64| h((a * 100.0).round() / 100.0);
-    let rpm = sys
-        .drivers()
-        .first()
-        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
     let mut text = format!(
         "forces on {name} at {} rpm of {:?}, simulated over a revolution in {}° steps ({substeps} RK4 step{} each):\n",
         h((rpm * 10.0).round() / 10.0),
@@ -207,24 +236,8 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
             }
         }
     }
-    if let Some(target) = args.target_rpm {
-        if !(target > 0.0 && target.is_finite() && target <= 1e6) {
-            return Err(bad(format!(
-                "--target-rpm {}: must be a positive speed, rpm",
-                h(target)
-            )));
-        }
-        // from a quarter of the lower of the two speeds, in eight steps to the target
-        let from = 0.25 * target.min(rpm.abs().max(1.0));
-        let sweep = SpeedSweep {
-            from_rpm: from,
-            to_rpm: target,
-            step_rpm: (target - from) / 8.0,
-            tolerance_rpm: 1.0,
-            step_deg: step,
-            revolutions: 1.0,
-            after_impact_deg: 5.0,
-        };
+    if let Some(sweep) = sweep {
+        let (from, target) = (sweep.from_rpm, sweep.to_rpm);
         let found = camkin::dynamics::no_follow_speed(sys, &built.dynamics, &sweep)
             .map_err(|e| dyn_err(name, e))?;
         match found {

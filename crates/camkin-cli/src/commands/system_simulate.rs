@@ -220,7 +220,7 @@ fn quasi_static(
             .unwrap_or(0.0),
     );
     let h_out = (t1 - t0).abs();
-    let substeps = ((h_out / sim.max_step()).ceil() as usize).max(args.substeps);
+    let substeps = sim.substeps(h_out).max(args.substeps);
     sim.run(outputs, substeps, h_out / substeps as f64, |_| {
         std::ops::ControlFlow::Continue(())
     })
@@ -263,7 +263,7 @@ fn no_follow(
     let per_rev_steps = {
         let w = to * std::f64::consts::TAU / 60.0;
         let h_out = args.step.deg().to_radians() / w;
-        (360.0 / args.step.deg()) * (h_out / sim.max_step()).ceil().max(1.0)
+        (360.0 / args.step.deg()) * sim.substeps(h_out) as f64
     };
     let steps = (runs * per_rev_steps * args.revolutions) as usize;
     crate::refuse_large(

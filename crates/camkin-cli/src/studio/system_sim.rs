@@ -32,7 +32,7 @@ pub(super) fn simulate(
     let mut sim = SystemSimulation::new(sys, built.dynamics.clone())
         .map_err(|e| input(format!("the system cannot be simulated: {e}")))?;
     let h_out = (t1 - t0).abs();
-    let substeps = (h_out / sim.max_step()).ceil().max(1.0) as usize;
+    let substeps = sim.substeps(h_out);
     let work = camkin::work::Work::system_simulation(sys, outputs * substeps, outputs + 1);
     if let Some(r) = work.refusal_within(limits.max_seconds, camkin::work::BYTES_LIMIT) {
         return Err(StudioError::TooMuch {

@@ -173,6 +173,18 @@ fn the_checks_exit_3_and_the_files_flags_exit_2() {
         let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
         assert!(stderr.contains(says), "{stderr}");
     }
+    // the sweep's work is in the estimate: refused up front
+    let out = camkin()
+        .arg("forces")
+        .arg(examples().join("valve-train.toml"))
+        .args(["--target-rpm", "1000000", "--step", "0.05"])
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    assert!(
+        stderr.contains("simulated steps") && stderr.contains("--large"),
+        "{stderr}"
+    );
     // a system without [dynamics]: its forces come from a simulation
     let out = camkin()
         .arg("forces")

@@ -104,6 +104,11 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
             "face_width = -8.0",
             "contact[1].face_width = -8",
         ),
+        (
+            "centre_of_mass = [15.0, 0.0]",
+            "centre_of_mass = [15.0, nan]",
+            "body[2].centre_of_mass = [15, NaN]",
+        ),
     ] {
         let path = dir.path().join("bad.toml");
         std::fs::write(&path, text.replacen(from, to, 1)).unwrap();

@@ -70,7 +70,7 @@ fn first_opening(
     let mut sim = SystemSimulation::new(&s, opts.clone())?;
     let closed_at_start = sim.sample()?.in_contact;
     let h_out = sweep.step_deg.to_radians() / w;
-    let substeps = (h_out / sim.max_step()).ceil().max(1.0);
+    let substeps = sim.substeps(h_out) as f64;
     let h = h_out / substeps;
     let steps = (sweep.revolutions * 360.0 / sweep.step_deg).round() as usize * substeps as usize;
     let mut opened = vec![false; closed_at_start.len()];

@@ -589,6 +589,12 @@ impl<'a> SystemSimulation<'a> {
         fastest
     }
 
+    /// The fewest steps that cut an output interval of `h_out` s into steps no longer than
+    /// [`SystemSimulation::max_step`] (at least one).
+    pub fn substeps(&self, h_out: f64) -> usize {
+        (h_out / self.max_step()).ceil().max(1.0) as usize
+    }
+
     /// The longest step [`SystemSimulation::advance`] accepts, s.
     pub fn max_step(&self) -> f64 {
         let (rate, _) = self.fastest_rate();
