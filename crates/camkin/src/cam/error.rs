@@ -134,6 +134,9 @@ pub enum StopReason {
     /// the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts)
     /// and the corner's own Newton found no resting place on the other curve there
     OnCorner,
+    /// a Newton search for a tangency near a place (a sample within the follower's reach of
+    /// touching) travelled farther than the samples' spacing allows without converging
+    LeftRegion,
 }
 
 impl std::fmt::Display for StopReason {
@@ -146,6 +149,9 @@ impl std::fmt::Display for StopReason {
             StopReason::BehindSample => "refined contact is behind a sampled one",
             StopReason::OnCorner => {
                 "the contact is at a corner of a curve (a gear's tip, where a linear tip relief starts), and no resting place of that corner on the other curve was found"
+            }
+            StopReason::LeftRegion => {
+                "Newton left the neighbourhood of the place it was started for without converging"
             }
             StopReason::OnCusp => {
                 "the follower rests on a cusp of the profile, which folds over itself there (the follower cannot follow the motion program)"

@@ -137,12 +137,13 @@ pub(super) struct Tie<'a> {
 }
 
 /// Newton's tolerance (length), the follower coordinate's length scale, and the largest steps
-/// of the cam's and the carried curve's parameters.
+/// of the cam's and the carried curve's parameters and of the follower's coordinate.
 pub(super) struct Limits {
     pub(super) tol: f64,
     pub(super) qs: f64,
     pub(super) lim: f64,
     pub(super) vlim: f64,
+    pub(super) qlim: f64,
 }
 
 /// Most starts tried by Newton in one global search.
@@ -334,11 +335,15 @@ impl FirstTouch {
     /// Newton's tolerance and step bounds for a carried curve.
     pub(super) fn carried_limits(&self, c: &Carried) -> Limits {
         let fraction = self.options.max_step_fraction;
+        let qs = self.geometry.q_length_scale(self.size);
         Limits {
             tol: self.options.position_tolerance,
-            qs: self.geometry.q_length_scale(self.size),
+            qs,
             lim: fraction * self.period,
             vlim: fraction * (c.bounds.1 - c.bounds.0),
+            // the follower moves its point by at most the fraction of the cam's size a step (an
+            // angle's step unbounded sent tries that do not converge beyond 1e8 rad)
+            qlim: fraction * self.size / qs,
         }
     }
 
@@ -385,13 +390,33 @@ impl FirstTouch {
         &self,
         c: &Carried,
         at: &Instant,
-        mut u: f64,
-        mut v: f64,
-        mut q: f64,
+        u: f64,
+        v: f64,
+        q: f64,
+    ) -> Result<Touch, CamError> {
+        self.carried_newton_within(c, at, (u, v, q), f64::INFINITY)
+    }
+
+    /// [`FirstTouch::carried_newton`] for a tangency near its start: it gives up
+    /// ([`StopReason::LeftRegion`]) once the steps in either curve's point or the follower's
+    /// have travelled more than `reach` (length).
+    pub(super) fn carried_newton_within(
+        &self,
+        c: &Carried,
+        at: &Instant,
+        (mut u, mut v, mut q): (f64, f64, f64),
+        reach: f64,
     ) -> Result<Touch, CamError> {
         let (theta, frame) = (at.theta, &at.frame);
         let angle_deg = theta.to_degrees();
-        let Limits { tol, qs, lim, vlim } = self.carried_limits(c);
+        let Limits {
+            tol,
+            qs,
+            lim,
+            vlim,
+            qlim,
+        } = self.carried_limits(c);
+        let mut travel = [0.0f64; 3];
         for _ in 0..self.options.max_iterations {
             let (a, b, f, j) = self.carried_system(c, frame, (u, v, q));
             let Some([du, dv, dq]) = solve3(j, f) else {
@@ -400,13 +425,20 @@ impl FirstTouch {
                     reason: StopReason::SingularJacobian,
                 });
             };
-            let (du, dv) = (du.clamp(-lim, lim), dv.clamp(-vlim, vlim));
+            let (du, dv, dq) = (
+                du.clamp(-lim, lim),
+                dv.clamp(-vlim, vlim),
+                dq.clamp(-qlim, qlim),
+            );
             u += du;
             v += dv;
             q += dq;
-            let step = (du.abs() * a.d1.norm())
-                .max(dv.abs() * b.d1.norm())
-                .max(dq.abs() * qs);
+            let moved = [
+                du.abs() * a.d1.norm(),
+                dv.abs() * b.d1.norm(),
+                dq.abs() * qs,
+            ];
+            let step = moved[0].max(moved[1]).max(moved[2]);
             if step <= tol {
                 let u = u.rem_euclid(self.period);
                 let v = match c.period {
@@ -418,6 +450,15 @@ impl FirstTouch {
                     q,
                     v,
                     corner: None,
+                });
+            }
+            for (t, m) in travel.iter_mut().zip(moved) {
+                *t += m;
+            }
+            if travel.iter().any(|&t| t > reach) {
+                return Err(CamError::NoConvergence {
+                    angle_deg,
+                    reason: StopReason::LeftRegion,
                 });
             }
         }

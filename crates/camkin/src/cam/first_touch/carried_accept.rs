@@ -184,6 +184,9 @@ impl FirstTouch {
         let closing = self.geometry.joint.closing_sign();
         let spacing = self.corners.spacing.max(c.chord_error);
         let joint = self.geometry.joint;
+        // the tangency near a tie lies within a sample or two of it (a deeper neighbour would be
+        // the tie); a Newton going farther is after another place, which has a tie of its own
+        let reach = 16.0 * spacing;
         let mut tried: Vec<Point2> = Vec::new();
         let mut depths: Vec<(usize, f64)> = ties.iter().map(|d| (d.cover.k, d.depth)).collect();
         depths.sort_unstable_by_key(|d| d.0);
@@ -215,7 +218,7 @@ impl FirstTouch {
             // a tangency from a start, handed to `f`: `Some((stop, here))` when `f` took it,
             // `here` when it is at this place (Newton may go to another)
             let mut attempt = |u0: f64, q0: f64, v: f64| -> Option<(bool, bool)> {
-                let mut t2 = self.carried_newton(c, at, u0, v, q0).ok()?;
+                let mut t2 = self.carried_newton_within(c, at, (u0, v, q0), reach).ok()?;
                 let n = if periodic {
                     ((t2.q - t.q) / pitch).round()
                 } else {

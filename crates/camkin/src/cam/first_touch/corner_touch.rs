@@ -83,7 +83,13 @@ impl FirstTouch {
                     .ok_or(fail(StopReason::OnCorner))?
             }
         }
-        let Limits { tol, qs, lim, vlim } = self.carried_limits(c);
+        let Limits {
+            tol,
+            qs,
+            lim,
+            vlim,
+            qlim,
+        } = self.carried_limits(c);
         for _ in 0..self.options.max_iterations {
             let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
             // the smooth curve's parameter moves its point; q moves the follower's
@@ -107,6 +113,7 @@ impl FirstTouch {
                     d.abs() * b.d1.norm()
                 }
             };
+            let dq = dq.clamp(-qlim, qlim);
             q += dq;
             if moved.max(dq.abs() * qs) <= tol {
                 return Ok(Touch {
