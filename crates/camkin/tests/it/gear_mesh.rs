@@ -257,6 +257,41 @@ fn reversed_pair_meshes_on_the_other_flanks() {
     );
 }
 
+/// A pair without backlash touches on both flanks at once; the global search reports the one
+/// the driven gear closing runs into, the drive flank, at every angle and in both senses (it
+/// once took the back flank at a handover when Newton, its steps in the angle bounded, converged
+/// there from the first of the gap's equally near starts: `camkin mesh` lost a handover).
+#[test]
+fn every_cold_query_of_a_tight_pair_is_on_the_drive_flank() {
+    for sense in [Sense::Ccw, Sense::Cw] {
+        let g1 = gear(InvoluteGearSpec::new(M, 20, alpha()));
+        let g2 = gear(InvoluteGearSpec::new(M, 42, alpha()));
+        let (mech, gp) = pair(g1, g2, 62.0, sense, sense);
+        let mut sweep = mech.sweep();
+        let drive = format!(
+            "{:?}",
+            gp.mesh(&mech, &sweep.step(0.0).unwrap()).driver_flank
+        );
+        // two mesh cycles (18° each) in 0.009° steps, each angle a global search
+        for k in 0..4000 {
+            let theta = f64::from(k) * 0.009f64.to_radians();
+            let g = gp.mesh(&mech, &mech.analyze(theta).unwrap());
+            assert_eq!(format!("{:?}", g.driver_flank), drive, "{sense:?} at {k}");
+            assert!(g.transmission_error.abs() <= 1e-12, "{sense:?} at {k}");
+        }
+        // and swept in 0.05° steps as `camkin mesh` sweeps: its handovers are global searches
+        let angles: Vec<f64> = (0..720).map(|k| f64::from(k) * 0.05).collect();
+        for (k, s) in mech.analyze_deg_each(&angles, true).iter().enumerate() {
+            let g = gp.mesh(&mech, s.as_ref().unwrap());
+            assert_eq!(
+                format!("{:?}", g.driver_flank),
+                drive,
+                "{sense:?} at step {k}"
+            );
+        }
+    }
+}
+
 /// A refusal names what is wrong.
 #[test]
 fn gear_pair_refuses_mismatched_gears() {

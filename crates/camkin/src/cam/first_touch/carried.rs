@@ -45,6 +45,8 @@ struct CoverSamples<'a> {
     out: &'a mut Vec<Cover>,
     buf: Vec<Crossing>,
     inside: Vec<((f64, f64), (f64, f64))>,
+    /// only the samples within this circle (world: centre, radius)
+    near: Option<(Point2, f64)>,
 }
 
 impl crate::circle_tree::Visit for CoverSamples<'_> {
@@ -56,7 +58,10 @@ impl crate::circle_tree::Visit for CoverSamples<'_> {
         // grown by the longest chord: a band narrower than the samples' spacing may be crossed
         // between a leaf's last sample and the next leaf's first
         let slack = (r + self.m.sample_chord) * (1.0 + 1e-12);
-        (level + slack >= lo && level - slack <= hi).then_some(0.0)
+        let near = self
+            .near
+            .is_none_or(|(o, reach)| (x - o).norm() <= reach + slack);
+        (near && level + slack >= lo && level - slack <= hi).then_some(0.0)
     }
     fn floor(&self) -> f64 {
         f64::NEG_INFINITY
@@ -158,6 +163,35 @@ impl FirstTouch {
     /// the samples' order. Only the samples whose tree circles meet the band of levels the
     /// follower's curve spans are looked at (a large driver has most points beyond its reach).
     pub(super) fn covers(&self, c: &Carried, frame: &Frame, out: &mut Vec<Cover>) {
+        self.covers_within(c, frame, None, out);
+    }
+
+    /// [`FirstTouch::covers`] that can matter with the follower at `q`: of a closed curve, only
+    /// the samples within `window` of its bounding circle there (a sample farther away is
+    /// outside the follower by more than `window`: the follower must move at least that far to
+    /// take it in, so its cover's depth is below `−window`).
+    pub(super) fn covers_at(
+        &self,
+        c: &Carried,
+        frame: &Frame,
+        q: f64,
+        window: f64,
+        out: &mut Vec<Cover>,
+    ) {
+        let near = c.hull.map(|(o, r)| {
+            let o = self.geometry.joint.pose(q).frame() * o;
+            (o, r + window + self.options.touch_tolerance)
+        });
+        self.covers_within(c, frame, near, out);
+    }
+
+    fn covers_within(
+        &self,
+        c: &Carried,
+        frame: &Frame,
+        near: Option<(Point2, f64)>,
+        out: &mut Vec<Cover>,
+    ) {
         let mut v = CoverSamples {
             m: self,
             c,
@@ -165,6 +199,7 @@ impl FirstTouch {
             out,
             buf: Vec::new(),
             inside: Vec::new(),
+            near,
         };
         self.index.dense.points().branch_and_bound(frame, &mut v);
     }
@@ -267,9 +302,23 @@ impl FirstTouch {
                 }
             )
         };
-        // a converged touch settled and reported
+        // a converged touch settled and reported; the follower closing runs into it (a pair
+        // without backlash touches on both flanks: the one behind is not where it comes to rest)
         let settled = |t: Result<Touch, CamError>| {
             t.and_then(|t| self.carried_settle(c, at, t, Some(&covers)))
+                .and_then(|t| {
+                    if self
+                        .carried_sides(c, frame, &t)
+                        .is_some_and(|s| s.approaching)
+                    {
+                        Ok(t)
+                    } else {
+                        Err(CamError::NoConvergence {
+                            angle_deg,
+                            reason: StopReason::NotFirstTouch,
+                        })
+                    }
+                })
                 .map(|t| self.carried_report(c, theta, t))
         };
         // a corner found in the way is the reason to give
@@ -282,6 +331,17 @@ impl FirstTouch {
             match settled(self.carried_newton(c, at, u0, v0, q0)) {
                 Ok(t) => return Ok(t),
                 Err(e) => keep(e, &mut last),
+            }
+            // a curve small beside the cam's samples: its crossing's parameter can be far
+            // round it from the tangency, and Newton reaches the wrong side; started again where
+            // the curve's tangent faces the cam's
+            if let Some(v1) = self.facing_start(c, frame, u0, q0) {
+                if v1 != v0 {
+                    match settled(self.carried_newton(c, at, u0, v1, q0)) {
+                        Ok(t) => return Ok(t),
+                        Err(e) => keep(e, &mut last),
+                    }
+                }
             }
         }
         // no tangency near a corner: the resting contact is at the corner
@@ -308,6 +368,19 @@ impl FirstTouch {
             angle_deg,
             reason: StopReason::NoCandidate,
         }))
+    }
+
+    /// The carried curve's parameter facing the cam at `u` with the follower at `q`: within four
+    /// of the cam's sample spacings of the cam's point, the curve's tangent most nearly opposite
+    /// the cam's in the sense that puts the bodies' material on opposite sides
+    /// ([`Carried::facing`]).
+    fn facing_start(&self, c: &Carried, frame: &Frame, u: f64, q: f64) -> Option<f64> {
+        let a = frame.curve_at(self.cam.profile.as_ref(), u);
+        let fb = self.geometry.joint.pose(q).frame();
+        let near = fb.inverse_transform_point(&a.p).coords;
+        // opposite sides: o (x_A' · x_B') < 0
+        let direction = fb.rotation.inverse() * (-self.orientation * a.d1);
+        c.facing(direction, near, 4.0 * self.corners.spacing)
     }
 
     /// A touch reported on the branch the docs promise: a slide's as found; an arm's angle within
@@ -479,8 +552,8 @@ impl FirstTouch {
     ) {
         let frame = &at.frame;
         let mut covers = Vec::new();
-        self.covers(c, frame, &mut covers);
         let (_, window) = self.tie_window(c);
+        self.covers_at(c, frame, t.q, window, &mut covers);
         let mut ties: Vec<_> = self
             .cover_depths(c, t, &covers)
             .filter(|d| d.depth > -window)

@@ -48,7 +48,7 @@ impl FirstTouch {
             Some(k) => k,
             None => {
                 let mut k = Vec::new();
-                self.covers(c, frame, &mut k);
+                self.covers_at(c, frame, t.q, self.tie_window(c).1, &mut k);
                 own = k;
                 &own
             }

@@ -171,6 +171,9 @@ pub(crate) struct Carried {
     /// are taken round that tooth's turn, not the whole turn: the others are the same turned by
     /// multiples of `2π/z`.
     pub(crate) sector: Option<(f64, f64)>,
+    /// a closed curve's bounding circle (follower frame: centre, radius, the chord error
+    /// included): its material lies within it
+    pub(crate) hull: Option<(Point2, f64)>,
 }
 
 /// `(2π/z, period/z)` when the closed polyline `verts` of a curve of symmetry `z > 1` (on an
@@ -311,6 +314,19 @@ impl Carried {
             }
         }
         let corners = crate::cam::corners::Corners::of(curve.as_ref(), &params);
+        let hull = closed.then(|| {
+            let (mut lo, mut hi) = (verts[0].0, verts[0].0);
+            for (y, ..) in &verts {
+                lo = lo.inf(y);
+                hi = hi.sup(y);
+            }
+            let centre = Point2::from(0.5 * (lo + hi));
+            let radius = verts
+                .iter()
+                .map(|(y, ..)| (Point2::from(*y) - centre).norm())
+                .fold(0.0, f64::max);
+            (centre, radius + chord_error)
+        });
         let mut breakpoints = curve.breakpoints();
         breakpoints.sort_by(f64::total_cmp);
         Ok(Self {
@@ -329,7 +345,27 @@ impl Carried {
             level_range: (lo, hi),
             corners,
             sector,
+            hull,
         })
+    }
+
+    /// The parameter of the polyline's vertex within `radius` of `near` (follower frame) whose
+    /// chord leaving it points most nearly along `direction` (follower frame): the place on the
+    /// curve that can be tangent to a cam whose tangent there is `direction`, the bodies'
+    /// material on opposite sides. A start for Newton where the crossing's parameter is far from
+    /// the tangency (a curve small beside the cam's samples). `None` when no vertex is near.
+    pub(crate) fn facing(&self, direction: Vec2, near: Vec2, radius: f64) -> Option<f64> {
+        let n = self.verts.len();
+        let segments = if self.closed { n } else { n.saturating_sub(1) };
+        (0..segments)
+            .filter(|&i| (self.verts[i].0 - near).norm() <= radius)
+            .map(|i| {
+                let chord = self.verts[(i + 1) % n].0 - self.verts[i].0;
+                (chord.dot(&direction) / chord.norm(), self.verts[i].1)
+            })
+            .filter(|m| m.0.is_finite())
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|m| m.1)
     }
 
     /// The crossings of the polyline with `level`, appended to `out` (unsorted).
