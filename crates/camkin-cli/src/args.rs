@@ -103,6 +103,26 @@ impl TableArgs {
 }
 
 impl TableArgs {
+    /// [`TableArgs::write`] of rows of any type, each made into cells by `cells` where it is
+    /// formatted (in parallel for CSV).
+    pub fn write_rows<R: Sync>(
+        &self,
+        columns: &[String],
+        mut next_chunk: impl FnMut() -> Option<Vec<R>>,
+        cells: impl Fn(&R) -> Vec<camkin::table::Cell> + Sync,
+    ) -> Result<(), crate::Failure> {
+        crate::output::write_atomic(self.output.as_deref(), |w| {
+            crate::output::write_rows_as(w, self.format, columns, &mut next_chunk, &cells)
+        })
+        .map_err(|e| {
+            if self.output.is_some() {
+                crate::Failure::output(e)
+            } else {
+                crate::Failure::Internal(e)
+            }
+        })
+    }
+
     /// Refuses, before any work, an output file that is an input of this run (the mechanism
     /// file, one of its points files).
     pub fn check(&self) -> Result<(), crate::Failure> {

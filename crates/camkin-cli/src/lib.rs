@@ -27,6 +27,7 @@ macro_rules! out {
 
 pub mod args;
 pub mod commands;
+pub mod csv_cells;
 pub mod draw;
 pub mod forces_text;
 pub mod manufacture;

@@ -289,21 +289,31 @@ pub fn write_cells(
     w: &mut dyn Write,
     format: TableFormat,
     columns: &[String],
-    mut next_chunk: impl FnMut() -> Option<Vec<Vec<Cell>>>,
+    next_chunk: impl FnMut() -> Option<Vec<Vec<Cell>>>,
 ) -> Result<()> {
     match format {
-        TableFormat::Csv => {
-            let mut c = csv::WriterBuilder::new().has_headers(false).from_writer(w);
-            c.write_record(columns)?;
-            while let Some(rows) = next_chunk() {
-                for r in &rows {
-                    c.serialize(r)?;
-                }
-            }
-            c.flush()?;
-        }
+        // the csv crate's bytes, formatted in parallel pieces (`crate::csv_cells`)
+        TableFormat::Csv => crate::csv_cells::write(w, columns, next_chunk)?,
         TableFormat::Json => json_array(w, next_chunk, |w, r| {
             serde_json::to_writer(w, &Keyed(columns, r))
+        })?,
+    }
+    Ok(())
+}
+
+/// [`write_cells`] of rows of any type, each made into cells by `cells` where it is written
+/// (for CSV in parallel pieces, `crate::csv_cells`): the same bytes.
+pub fn write_rows_as<R: Sync>(
+    w: &mut dyn Write,
+    format: TableFormat,
+    columns: &[String],
+    next_chunk: impl FnMut() -> Option<Vec<R>>,
+    cells: impl Fn(&R) -> Vec<Cell> + Sync,
+) -> Result<()> {
+    match format {
+        TableFormat::Csv => crate::csv_cells::write_with(w, columns, next_chunk, cells)?,
+        TableFormat::Json => json_array(w, next_chunk, |w, r| {
+            serde_json::to_writer(w, &Keyed(columns, &cells(r)))
         })?,
     }
     Ok(())

@@ -137,12 +137,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     } else {
         indicatif::ProgressBar::hidden()
     };
-    let mut next_chunk = || {
+    let next_chunk = || {
         let chunk = rows.next()?;
         pb.inc(chunk.len() as u64);
-        Some(chunk.iter().map(|r| analysis_cells(r, &units)).collect())
+        Some(chunk)
     };
-    args.table.write(&columns, &mut next_chunk)?;
+    args.table
+        .write_rows(&columns, next_chunk, |r| analysis_cells(r, &units))?;
     pb.finish_and_clear();
     report_degenerate(
         mech,

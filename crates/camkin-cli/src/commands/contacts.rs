@@ -66,12 +66,9 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
         .collect();
     let units = Units::plain(mech, loaded.unit);
     let columns = contact_columns(&units);
-    let mut chunk = Some(
-        rows.iter()
-            .map(|r| contact_cells(r, &units))
-            .collect::<Vec<_>>(),
-    );
-    args.table.write(&columns, || chunk.take())?;
+    let mut chunk = Some(rows.clone());
+    args.table
+        .write_rows(&columns, || chunk.take(), |r| contact_cells(r, &units))?;
     let failed = rows.iter().filter(|r| r.error.is_some()).count();
     let most = angles
         .iter()

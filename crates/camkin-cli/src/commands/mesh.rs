@@ -108,8 +108,9 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
         .collect();
     let units = Units::plain(mech, loaded.unit);
     let columns = mesh_columns(&units);
-    let mut chunk = Some(rows.iter().map(mesh_cells).collect::<Vec<_>>());
-    args.table.write(&columns, || chunk.take())?;
+    let mut chunk = Some(rows.clone());
+    args.table
+        .write_rows(&columns, || chunk.take(), mesh_cells)?;
     summary(&pair, &loaded, &rows);
     if let Some(od) = od {
         let written = plot(&pair, &loaded, &rows, od.path()).map_err(Failure::output)?;

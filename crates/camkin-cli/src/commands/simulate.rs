@@ -11,6 +11,7 @@ use camkin::table::Units;
 use camkin::table::{
     event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow,
 };
+use rayon::prelude::*;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -183,7 +184,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         .collect();
     let event_rows: Vec<EventRow> = events.iter().map(EventRow::from).collect();
     let sample_columns = sample_columns(&units);
-    let sample_cells: Vec<Vec<Cell>> = rows.iter().map(|r| sample_cells(r, &units)).collect();
+    let sample_cells: Vec<Vec<Cell>> = rows.par_iter().map(|r| sample_cells(r, &units)).collect();
     let event_columns = event_columns(&units);
     let event_cells: Vec<Vec<Cell>> = event_rows.iter().map(|e| event_cells(e, &units)).collect();
     let series = |w: &mut dyn Write| -> anyhow::Result<()> {
