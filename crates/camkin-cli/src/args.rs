@@ -89,10 +89,14 @@ impl TableArgs {
         columns: &[String],
         mut next_chunk: impl FnMut() -> Option<Vec<Vec<camkin::table::Cell>>>,
     ) -> Result<(), crate::Failure> {
-        crate::output::write_atomic(self.output.as_deref(), |w| {
+        self.failure(crate::output::write_atomic(self.output.as_deref(), |w| {
             crate::output::write_cells(w, self.format, columns, &mut next_chunk)
-        })
-        .map_err(|e| {
+        }))
+    }
+
+    /// A write's error as the user's (a file of theirs, exit 2) or not (standard output).
+    fn failure(&self, r: anyhow::Result<()>) -> Result<(), crate::Failure> {
+        r.map_err(|e| {
             if self.output.is_some() {
                 crate::Failure::output(e)
             } else {
@@ -111,16 +115,9 @@ impl TableArgs {
         mut next_chunk: impl FnMut() -> Option<Vec<R>>,
         cells: impl Fn(&R) -> Vec<camkin::table::Cell> + Sync,
     ) -> Result<(), crate::Failure> {
-        crate::output::write_atomic(self.output.as_deref(), |w| {
+        self.failure(crate::output::write_atomic(self.output.as_deref(), |w| {
             crate::output::write_rows_as(w, self.format, columns, &mut next_chunk, &cells)
-        })
-        .map_err(|e| {
-            if self.output.is_some() {
-                crate::Failure::output(e)
-            } else {
-                crate::Failure::Internal(e)
-            }
-        })
+        }))
     }
 
     /// Refuses, before any work, an output file that is an input of this run (the mechanism

@@ -93,14 +93,37 @@ pub fn analyze(
     let first_error = states
         .iter()
         .find_map(|s| s.as_ref().err().map(|e| e.to_string()));
-    let rpm = built
-        .time_of(std::f64::consts::TAU)
-        .map_or(0.0, |t| 60.0 / t);
     Ok(Analysis {
-        name: source.name.clone(),
-        length_unit: unit,
+        failed,
+        first_error,
+        ..system_analysis(
+            &built,
+            &source.name,
+            step_deg,
+            (angles, series),
+            (frames, curves, extent),
+            t0,
+        )
+    })
+}
+
+/// A system's analysis for the page: its drawing, its series, the file's warnings; nothing
+/// failed, not simulated, no events (the callers say otherwise).
+pub(super) fn system_analysis(
+    built: &BuiltSystem,
+    name: &str,
+    step_deg: f64,
+    (angles, series): (Vec<f64>, Vec<Series>),
+    (frames, curves, extent): (Vec<Frame>, Vec<Vec<[f64; 2]>>, [f64; 4]),
+    t0: Instant,
+) -> Analysis {
+    Analysis {
+        name: name.to_string(),
+        length_unit: built.length_unit.name(),
         oscillating: false,
-        rpm,
+        rpm: built
+            .time_of(std::f64::consts::TAU)
+            .map_or(0.0, |t| 60.0 / t),
         step_deg,
         angles_deg: angles,
         series,
@@ -121,14 +144,14 @@ pub fn analyze(
                 column: None,
             })
             .collect(),
-        failed,
-        first_error,
+        failed: 0,
+        first_error: None,
         dynamics: None,
         system: true,
         simulated: false,
         events: Vec::new(),
         server_ms: t0.elapsed().as_secs_f64() * 1e3,
-    })
+    }
 }
 
 /// Each instant's scene (its shapes and the bodies' poses; none where it failed) as the page's

@@ -5,7 +5,7 @@
 //! force (those that ever close), its Hertz pressure, and each driver's torque, all on the
 //! slider's angle.
 
-use super::model::{Analysis, Event, Placed, Series};
+use super::model::{Analysis, Event, Series};
 use super::system::scene_frames;
 use super::{Limits, StudioError};
 use crate::draw::system::{scene_at, Touch};
@@ -199,15 +199,6 @@ pub fn analyze(
             .zip(built.time_of(0.0))
             .map_or(0.0, |(t1, t0)| step_deg * (t - t0) / (t1 - t0))
     };
-    let notes: Vec<Placed> = built
-        .warnings
-        .iter()
-        .map(|w| Placed {
-            message: w.to_string(),
-            line: None,
-            column: None,
-        })
-        .collect();
     let events: Vec<Event> = run
         .events
         .iter()
@@ -224,33 +215,17 @@ pub fn analyze(
             angle_deg: angle_of(e.time),
         })
         .collect();
-    let rpm = built
-        .time_of(std::f64::consts::TAU)
-        .map_or(0.0, |t| 60.0 / t);
     Ok(Analysis {
-        name: name.to_string(),
-        length_unit: unit,
-        oscillating: false,
-        rpm,
-        step_deg,
-        angles_deg: angles,
-        series,
-        frames,
-        curves,
-        profile: Vec::new(),
-        nodes: Vec::new(),
-        nodes_editable: false,
-        pivot: [0.0, 0.0],
-        extent,
-        checks: Vec::new(),
-        warnings: notes,
-        failed: 0,
-        first_error: None,
-        dynamics: None,
-        system: true,
         simulated: true,
         events,
-        server_ms: t0.elapsed().as_secs_f64() * 1e3,
+        ..super::system::system_analysis(
+            built,
+            name,
+            step_deg,
+            (angles, series),
+            (frames, curves, extent),
+            t0,
+        )
     })
 }
 

@@ -83,13 +83,7 @@ impl FirstTouch {
                     .ok_or(fail(StopReason::OnCorner))?
             }
         }
-        let Limits {
-            tol,
-            qs,
-            lim,
-            vlim,
-            qlim,
-        } = self.carried_limits(c);
+        let l: Limits = self.carried_limits(c);
         for _ in 0..self.options.max_iterations {
             let (a, b, dq_x) = self.carried_points(c, frame, (u, v, q));
             // the smooth curve's parameter moves its point; q moves the follower's
@@ -103,19 +97,19 @@ impl FirstTouch {
             };
             let moved = match side {
                 Corner::Follower => {
-                    let d = ds.clamp(-lim, lim);
+                    let d = ds.clamp(-l.lim, l.lim);
                     u += d;
                     d.abs() * a.d1.norm()
                 }
                 Corner::Cam => {
-                    let d = ds.clamp(-vlim, vlim);
+                    let d = ds.clamp(-l.vlim, l.vlim);
                     v += d;
                     d.abs() * b.d1.norm()
                 }
             };
-            let dq = dq.clamp(-qlim, qlim);
+            let dq = dq.clamp(-l.qlim, l.qlim);
             q += dq;
-            if moved.max(dq.abs() * qs) <= tol {
+            if moved.max(dq.abs() * l.qs) <= l.tol {
                 return Ok(Touch {
                     u: u.rem_euclid(self.period),
                     q,
