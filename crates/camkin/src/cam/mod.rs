@@ -15,6 +15,7 @@
 
 mod build_work;
 mod checks;
+mod conic;
 mod conjugate;
 mod contacts;
 mod corners;

@@ -7,6 +7,7 @@
 //! sampled first-touch function is compared with the warm contact, and if another part of the
 //! profile touches first the global search is used and the row is marked [`Found::Jump`].
 
+use super::conic::CarriedConic;
 use super::first_touch::overtake::Overtaken;
 use super::follower::{dispatch, pitch_point, Kind};
 use super::pose::Pose;
@@ -57,6 +58,9 @@ pub struct Sweep<'a> {
     mech: &'a Mechanism,
     /// the cam's profile when it is a spline (the motion-only warm step evaluates it inlined)
     spline: Option<&'a ClosedSpline>,
+    /// the cam's profile when it is a circle or an ellipse, its parameter's sine and cosine
+    /// carried from one evaluation to the next
+    conic: Option<CarriedConic>,
     prev: Option<Prev>,
     /// the last contact found, and `dv/dθ` of a carried curve's parameter
     last: Option<(Touch, f64)>,
@@ -99,6 +103,7 @@ impl<'a> Sweep<'a> {
         Self {
             mech,
             spline: mech.touch.cam.profile.as_spline(),
+            conic: CarriedConic::of(mech.touch.cam.profile.as_ref()),
             prev: None,
             last: None,
             turn: None,
@@ -160,9 +165,10 @@ impl<'a> Sweep<'a> {
         if self.mech.touch.geometry.carried.is_some() {
             return None;
         }
-        match self.spline {
-            Some(s) => self.warm_motion_on(k, s, theta, p, rotation),
-            None => {
+        match (self.spline, &self.conic) {
+            (Some(s), _) => self.warm_motion_on(k, s, theta, p, rotation),
+            (None, Some(c)) => self.warm_motion_on(k, c, theta, p, rotation),
+            (None, None) => {
                 self.warm_motion_on(k, self.mech.touch.cam.profile.as_ref(), theta, p, rotation)
             }
         }

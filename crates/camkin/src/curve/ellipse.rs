@@ -42,6 +42,9 @@ impl Ellipse {
 }
 
 impl Curve for Ellipse {
+    fn as_ellipse(&self) -> Option<&Ellipse> {
+        Some(self)
+    }
     fn eval(&self, u: f64) -> Derivs {
         let (s, c) = u.sin_cos();
         let (a, b) = (self.a, self.b);

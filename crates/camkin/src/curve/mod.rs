@@ -145,6 +145,11 @@ pub trait Curve: std::fmt::Debug + Send + Sync {
         None
     }
 
+    /// The curve as an ellipse, when it is one (a sweep carries its parameter's sine and cosine).
+    fn as_ellipse(&self) -> Option<&Ellipse> {
+        None
+    }
+
     /// `r(u)`.
     fn position(&self, u: f64) -> Point2 {
         self.eval(u).p
