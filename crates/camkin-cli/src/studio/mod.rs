@@ -9,6 +9,7 @@
 //! The page itself (`web/`: HTML, CSS, one script, no dependencies) is embedded in the binary.
 
 pub mod model;
+pub mod page_precision;
 pub mod report;
 pub mod server;
 pub mod system;

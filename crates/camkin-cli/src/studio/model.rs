@@ -107,6 +107,8 @@ pub enum ShapeOut {
         pts: Vec<[f64; 2]>,
         color: String,
         width: u32,
+        /// sent only when true (the page reads an absent `closed` as open)
+        #[serde(skip_serializing_if = "std::ops::Not::not")]
         closed: bool,
     },
     /// a circle
@@ -129,8 +131,9 @@ pub enum ShapeOut {
     },
 }
 
-fn rgb(c: (u8, u8, u8)) -> String {
-    format!("rgb({},{},{})", c.0, c.1, c.2)
+/// A colour as the page's canvas reads it, in its shortest form (`#3c3c3c`).
+pub(crate) fn rgb(c: (u8, u8, u8)) -> String {
+    format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
 }
 
 impl From<Shape> for ShapeOut {
@@ -431,7 +434,7 @@ pub fn analyze(
                     ShapeOut::Curve {
                         i: k - 1,
                         pose: [b.origin.x, b.origin.y, b.angle],
-                        color: format!("rgb({},{},{})", color.0, color.1, color.2),
+                        color: rgb(color),
                         width,
                     }
                 }

@@ -21,7 +21,7 @@ use super::{
 use axum::body::Bytes;
 use axum::extract::rejection::BytesRejection;
 use axum::extract::{DefaultBodyLimit, State};
-use axum::http::{header, StatusCode};
+use axum::http::{header, HeaderMap, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::Router;
@@ -65,6 +65,39 @@ fn json<T: Serialize>(status: StatusCode, value: &T) -> Response {
             ),
         )
             .into_response(),
+    }
+}
+
+/// [`json`], gzipped when the client takes it (`Accept-Encoding: gzip`, as every browser
+/// does): the analysis answers a drag with some 100 kB of JSON, a fifth of that compressed.
+fn json_gzip<T: Serialize>(status: StatusCode, value: &T, headers: &HeaderMap) -> Response {
+    use std::io::Write;
+    let takes_gzip = headers
+        .get_all(header::ACCEPT_ENCODING)
+        .iter()
+        .filter_map(|v| v.to_str().ok())
+        .any(|v| {
+            v.split(',')
+                .any(|e| e.trim().split(';').next() == Some("gzip"))
+        });
+    let body = match (takes_gzip, serde_json::to_vec(value)) {
+        (true, Ok(body)) => body,
+        _ => return json(status, value),
+    };
+    // fast compression: the answer is made on every drag
+    let mut z = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+    match z.write_all(&body).and_then(|()| z.finish()) {
+        Ok(zipped) => (
+            status,
+            [
+                (header::CONTENT_TYPE, "application/json"),
+                (header::CONTENT_ENCODING, "gzip"),
+                (header::VARY, "accept-encoding"),
+            ],
+            zipped,
+        )
+            .into_response(),
+        Err(_) => (status, [(header::CONTENT_TYPE, "application/json")], body).into_response(),
     }
 }
 
@@ -310,14 +343,17 @@ fn attachment(content_type: &'static str, filename: &'static str, body: String) 
 
 async fn analyze(
     State(state): State<Arc<AppState>>,
+    headers: HeaderMap,
     body: Result<Bytes, BytesRejection>,
 ) -> Result<Response, StudioError> {
     let answer = with_analysis_request(&state, body, |toml, source, step_deg, limit, limits| {
-        let result = model::analyze(&toml, source, step_deg, limit, limits)?;
+        let mut result = model::analyze(&toml, source, step_deg, limit, limits)?;
+        // the page's precision; downloads are computed apart, at full precision
+        super::page_precision::for_page(&mut result);
         Ok(AnalyzeAnswer { toml, result })
     })
     .await?;
-    Ok(json(StatusCode::OK, &answer))
+    Ok(json_gzip(StatusCode::OK, &answer, &headers))
 }
 
 async fn compare(
@@ -346,10 +382,11 @@ async fn compare(
         });
     }
     let source = state.session.source.clone();
-    let out = run(&state, move || {
+    let mut out = run(&state, move || {
         model::compare(&req.toml, &source, &nodes, step_deg, &l)
     })
     .await?;
+    super::page_precision::compare_for_page(&mut out);
     Ok(json(StatusCode::OK, &out))
 }
 

@@ -212,7 +212,7 @@ pub(super) fn scene_frames(
                     ShapeOut::Curve {
                         i: k,
                         pose,
-                        color: format!("rgb({},{},{})", color.0, color.1, color.2),
+                        color: super::model::rgb(color),
                         width,
                     }
                 }

@@ -36,6 +36,16 @@ def series(page, key):
     return page.evaluate(f"window.studio.result.series.find(s => s.key === '{key}').values")
 
 
+def at_page_precision(page_values, file_values):
+    """The page's series are the command's to the page's precision: within 1e-7 of the column's
+    largest magnitude (`studio::page_precision`; the downloads keep every digit), absent where
+    the command's cell is."""
+    top = max((abs(v) for v in file_values if v is not None), default=0.0)
+    return len(page_values) == len(file_values) and all(
+        (a is None) == (b is None) and (a is None or abs(a - b) <= 1e-7 * top)
+        for a, b in zip(page_values, file_values))
+
+
 def test_page_loads_without_errors_and_draws_everything(serve, page):
     loaded(page, serve())
     assert page.errors == []
@@ -100,7 +110,7 @@ def test_dragging_a_node_gives_the_numbers_of_camkin_analyze_on_the_edited_file(
     ]:
         page_values = series(page, key)
         file_values = [float(r[col]) if r[col] not in ("", "inf", "-inf") else None for r in rows]
-        assert page_values == file_values, key  # to the bit
+        assert at_page_precision(page_values, file_values), key
     assert page.errors == []
 
 
@@ -254,8 +264,6 @@ def test_a_systems_numbers_on_screen_are_the_commands(serve, page, tmp_path):
     finger = series(page, "finger_angle")
     valve = series(page, "valve_y")
     valve_a = series(page, "valve_y_acceleration")
-    for k in range(0, 720, 7):
-        assert finger[k] == float(rows[k]["finger_angle_deg"])
-        assert valve[k] == float(rows[k]["valve_y_mm"])
-        assert valve_a[k] == float(rows[k]["valve_ay_mm_s2"])
+    for values, col in [(finger, "finger_angle_deg"), (valve, "valve_y_mm"), (valve_a, "valve_ay_mm_s2")]:
+        assert at_page_precision(values, [float(r[col]) for r in rows]), col
     assert "valve y" in page.locator("#values").inner_text()

@@ -359,6 +359,68 @@ fn the_csv_download_is_what_camkin_analyze_writes() {
     assert_eq!(csv, expected);
 }
 
+/// Issue 47: the analysis the page draws is at the page's precision and gzipped for a client
+/// that takes it: the paper cam's answer is under a quarter of its 426 502 bytes at full
+/// precision, decompresses to the plain answer, and its series are the download's to 1e-7 of
+/// their largest magnitude.
+#[test]
+fn the_pages_answer_is_rounded_gzipped_and_the_downloads_figures() {
+    use std::io::Read;
+    let addr = start(None, Limits::default());
+    let body = json!({"toml": paper(), "step_deg": 0.5}).to_string();
+    let mut s = TcpStream::connect(addr).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(60))).unwrap();
+    write!(
+        s,
+        "POST /api/analyze HTTP/1.1\r\nHost: x\r\nAccept-Encoding: gzip, deflate, br\r\nContent-Type: application/json\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        body.len()
+    )
+    .unwrap();
+    let mut raw = Vec::new();
+    let _ = s.read_to_end(&mut raw);
+    let split = raw.windows(4).position(|w| w == b"\r\n\r\n").unwrap();
+    let head = String::from_utf8_lossy(&raw[..split]).to_lowercase();
+    assert!(head.contains("content-encoding: gzip"), "{head}");
+    let zipped = &raw[split + 4..];
+    assert!(zipped.len() * 4 < 426_502, "{} bytes", zipped.len());
+    let mut text = String::new();
+    flate2::read::GzDecoder::new(zipped)
+        .read_to_string(&mut text)
+        .unwrap();
+    let (st, plain) = post(
+        addr,
+        "/api/analyze",
+        &json!({"toml": paper(), "step_deg": 0.5}),
+    );
+    assert_eq!(st, 200);
+    // the same answer but for the server's time
+    let (mut zipped, mut plain2) = (serde_json::from_str::<Value>(&text).unwrap(), plain.clone());
+    zipped["result"]["server_ms"] = Value::Null;
+    plain2["result"]["server_ms"] = Value::Null;
+    assert_eq!(zipped, plain2);
+    // the download's figures, at the page's precision
+    let (_, csv) = request(addr, "POST", "/api/csv", &body);
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = header
+        .iter()
+        .position(|h| *h == "acceleration_cm_s2")
+        .unwrap();
+    let column: Vec<f64> = lines
+        .map(|l| l.split(',').nth(col).unwrap().parse().unwrap())
+        .collect();
+    let top = column.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let series = plain["result"]["series"].as_array().unwrap();
+    let acc = series.iter().find(|x| x["key"] == "acceleration").unwrap();
+    for (k, x) in column.iter().enumerate() {
+        let page = acc["values"][k].as_f64().unwrap();
+        assert!(
+            (page - x).abs() <= 1e-7 * top,
+            "row {k}: {page} against {x}"
+        );
+    }
+}
+
 #[test]
 fn a_dragged_node_is_written_into_the_text_analysed() {
     let addr = start(None, Limits::default());
@@ -558,16 +620,24 @@ fn a_simulated_systems_force_panel_and_csv_are_camkin_simulates() {
         .find(|x| x["key"] == "cam on roller_force")
         .unwrap_or_else(|| panic!("{series:?}"));
     assert_eq!(force["unit"], "N");
-    // the command's column, value for value
+    // the command's column, value for value at the page's precision (within 1e-7 of the
+    // column's largest magnitude: `studio::page_precision`; the download above keeps every digit)
     let mut lines = expected.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let col = header
         .iter()
         .position(|h| *h == "cam_on_roller_force_N")
         .unwrap();
-    for (k, line) in lines.enumerate() {
-        let x: f64 = line.split(',').nth(col).unwrap().parse().unwrap();
-        assert_eq!(force["values"][k].as_f64().unwrap(), x, "row {k}");
+    let column: Vec<f64> = lines
+        .map(|line| line.split(',').nth(col).unwrap().parse().unwrap())
+        .collect();
+    let top = column.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    for (k, x) in column.iter().enumerate() {
+        let page = force["values"][k].as_f64().unwrap();
+        assert!(
+            (page - x).abs() <= 1e-7 * top,
+            "row {k}: {page} against {x}"
+        );
     }
     let torque = series.iter().find(|x| x["unit"] == "N·m").unwrap();
     assert!(torque["label"].as_str().unwrap().contains("torque"));
