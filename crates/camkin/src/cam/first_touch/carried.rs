@@ -335,7 +335,8 @@ impl FirstTouch {
             // a curve small beside the cam's samples: its crossing's parameter can be far
             // round it from the tangency, and Newton reaches the wrong side; started again where
             // the curve's tangent faces the cam's
-            if let Some(v1) = self.facing_start(c, frame, u0, q0) {
+            let small = c.hull.is_some_and(|(_, r)| r <= 4.0 * self.corners.spacing);
+            if let Some(v1) = small.then(|| self.facing_start(c, frame, u0, q0)).flatten() {
                 if v1 != v0 {
                     match settled(self.carried_newton(c, at, u0, v1, q0)) {
                         Ok(t) => return Ok(t),
