@@ -14,8 +14,45 @@ enum Column {
     Num(Vec<f64>),
     /// flags (0/1 cells); absent values are false
     Flag(Vec<bool>),
-    /// text or None
-    Text(Vec<Option<String>>),
+    /// text or None, each distinct text kept once (`warm` repeats on every row of a sweep: a
+    /// string per row would cost more than the float columns)
+    Text(Texts),
+}
+
+/// A text column: each row's index into its distinct texts.
+#[derive(Debug, Default)]
+struct Texts {
+    distinct: Vec<Option<String>>,
+    index: std::collections::HashMap<Option<String>, u32>,
+    rows: Vec<u32>,
+}
+
+impl Texts {
+    fn with_capacity(n: usize) -> Self {
+        Self {
+            rows: Vec::with_capacity(n),
+            ..Self::default()
+        }
+    }
+
+    fn push(&mut self, t: Option<String>) {
+        let k = match self.index.get(&t) {
+            Some(&k) => k,
+            None => {
+                let k = self.distinct.len() as u32;
+                self.distinct.push(t.clone());
+                self.index.insert(t, k);
+                k
+            }
+        };
+        self.rows.push(k);
+    }
+
+    fn first(&self) -> Option<String> {
+        self.rows
+            .first()
+            .and_then(|&k| self.distinct[k as usize].clone())
+    }
 }
 
 /// A table gathered by column.
@@ -43,7 +80,7 @@ impl Columns {
             let col = slot.get_or_insert_with(|| match cell {
                 Cell::Num(_) | Cell::Count(_) => Column::Num(Vec::with_capacity(cap)),
                 Cell::Int(_) | Cell::Flag(_) => Column::Flag(Vec::with_capacity(cap)),
-                Cell::Text(_) => Column::Text(Vec::with_capacity(cap)),
+                Cell::Text(_) => Column::Text(Texts::with_capacity(cap)),
             });
             match (col, cell) {
                 (Column::Num(v), Cell::Num(x)) => v.push(x.unwrap_or(f64::NAN)),
@@ -70,7 +107,7 @@ impl Columns {
                 match col {
                     Column::Num(v) => d.set_item(name, v.first().copied().unwrap_or(f64::NAN))?,
                     Column::Flag(v) => d.set_item(name, v.first().copied().unwrap_or(false))?,
-                    Column::Text(v) => d.set_item(name, v.into_iter().next().flatten())?,
+                    Column::Text(v) => d.set_item(name, v.first())?,
                 }
                 continue;
             }
@@ -80,22 +117,19 @@ impl Columns {
                 Column::Text(v) => {
                     let kwargs = PyDict::new(py);
                     kwargs.set_item("dtype", np.getattr("object_")?)?;
-                    // one Python string per distinct text (`warm` repeats on every row)
-                    let mut seen: std::collections::HashMap<String, Py<PyAny>> =
-                        std::collections::HashMap::new();
-                    let items: Vec<Py<PyAny>> = v
-                        .into_iter()
+                    // one Python string per distinct text
+                    let objs: Vec<Py<PyAny>> = v
+                        .distinct
+                        .iter()
                         .map(|t| match t {
                             None => py.None(),
-                            Some(t) => seen
-                                .entry(t)
-                                .or_insert_with_key(|t| {
-                                    pyo3::types::PyString::new(py, t).into_any().unbind()
-                                })
-                                .clone_ref(py),
+                            Some(t) => pyo3::types::PyString::new(py, t).into_any().unbind(),
                         })
                         .collect();
-                    let list = pyo3::types::PyList::new(py, items)?;
+                    let list = pyo3::types::PyList::new(
+                        py,
+                        v.rows.iter().map(|&k| objs[k as usize].clone_ref(py)),
+                    )?;
                     d.set_item(name, np.call_method("array", (list,), Some(&kwargs))?)?
                 }
             }
