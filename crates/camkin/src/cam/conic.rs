@@ -5,18 +5,15 @@
 //! its final evaluation call no `sin_cos`. The pair stays within 2e-15 of `sin_cos`.
 
 use super::pose::{small_sin_cos, CARRY_AGE, CARRY_STEP};
-use crate::curve::{Curve, Derivs, Domain};
-use crate::geometry::{Point2, Rotation, Vec2};
+use crate::curve::{Curve, Derivs, Domain, Ellipse};
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
 
 /// A circle (`a = b = R`, no turn) or an ellipse, with the last parameter evaluated and its
 /// sine and cosine (atomics only so that it is a `Curve`: one sweep, one thread, uses it).
 #[derive(Debug)]
 pub(crate) struct CarriedConic {
-    center: Point2,
-    a: f64,
-    b: f64,
-    rot: Rotation,
+    /// the curve as an ellipse (a circle's semi-axes are its radius)
+    ellipse: Ellipse,
     /// `u`, `sin u`, `cos u` as bits (`u` NaN: none yet)
     last: [AtomicU64; 3],
     age: AtomicU32,
@@ -24,17 +21,14 @@ pub(crate) struct CarriedConic {
 
 impl Clone for CarriedConic {
     fn clone(&self) -> Self {
-        Self::new(self.center, self.a, self.b, self.rot)
+        Self::new(self.ellipse)
     }
 }
 
 impl CarriedConic {
-    fn new(center: Point2, a: f64, b: f64, rot: Rotation) -> Self {
+    fn new(ellipse: Ellipse) -> Self {
         Self {
-            center,
-            a,
-            b,
-            rot,
+            ellipse,
             last: [
                 AtomicU64::new(f64::NAN.to_bits()),
                 AtomicU64::new(0),
@@ -48,11 +42,9 @@ impl CarriedConic {
     pub(crate) fn of(profile: &dyn Curve) -> Option<Self> {
         if let Some(c) = profile.as_circle() {
             let r = c.radius();
-            return Some(Self::new(c.center(), r, r, Rotation::new(0.0)));
+            return Ellipse::new(c.center(), r, r, 0.0).ok().map(Self::new);
         }
-        let e = profile.as_ellipse()?;
-        let (a, b) = e.semi_axes();
-        Some(Self::new(e.center(), a, b, Rotation::new(e.rotation())))
+        profile.as_ellipse().copied().map(Self::new)
     }
 
     /// `(sin u, cos u)`, carried from the last evaluation when it is near.
@@ -84,14 +76,7 @@ impl Curve for CarriedConic {
     #[inline(always)]
     fn eval(&self, u: f64) -> Derivs {
         let (s, c) = self.sin_cos(u);
-        let (a, b) = (self.a, self.b);
-        let r = &self.rot;
-        Derivs {
-            p: self.center + r * Vec2::new(a * c, b * s),
-            d1: r * Vec2::new(-a * s, b * c),
-            d2: r * Vec2::new(-a * c, -b * s),
-            d3: r * Vec2::new(a * s, -b * c),
-        }
+        self.ellipse.derivs_at(s, c)
     }
     fn domain(&self) -> Domain {
         Domain::Periodic {
@@ -103,7 +88,8 @@ impl Curve for CarriedConic {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curve::{Circle, Ellipse};
+    use crate::curve::Circle;
+    use crate::geometry::Point2;
 
     /// Along a sweep's small steps, Newton's back-and-forth and a jump, the carried evaluation is
     /// the circle's and the ellipse's own (libm's `sin_cos`) to 4e-15 of their size.

@@ -47,6 +47,20 @@ impl Curve for Ellipse {
     }
     fn eval(&self, u: f64) -> Derivs {
         let (s, c) = u.sin_cos();
+        self.derivs_at(s, c)
+    }
+    fn domain(&self) -> Domain {
+        Domain::Periodic {
+            period: std::f64::consts::TAU,
+        }
+    }
+}
+
+impl Ellipse {
+    /// The point and derivatives at the parameter whose sine and cosine are `s` and `c` (a
+    /// caller carrying them from a nearby parameter needs no `sin_cos`).
+    #[inline(always)]
+    pub(crate) fn derivs_at(&self, s: f64, c: f64) -> Derivs {
         let (a, b) = (self.a, self.b);
         let r = &self.rot;
         Derivs {
@@ -54,11 +68,6 @@ impl Curve for Ellipse {
             d1: r * Vec2::new(-a * s, b * c),
             d2: r * Vec2::new(-a * c, -b * s),
             d3: r * Vec2::new(a * s, -b * c),
-        }
-    }
-    fn domain(&self) -> Domain {
-        Domain::Periodic {
-            period: std::f64::consts::TAU,
         }
     }
 }
