@@ -66,6 +66,9 @@ pub(crate) fn travel(mech: &Mechanism) -> Result<Travel, CamError> {
 
 /// The extreme near sample `k` (`sign` −1 for a minimum, +1 for a maximum): bisection on
 /// the velocity between the neighbouring samples, kept only when it improves on the sample.
+/// One sweep steps through the bisection (every point within two samples of the last: warm
+/// starts), not a cold search at each point (a gear pair's cold search costs 500 of its warm
+/// steps).
 fn refine_extreme(
     mech: &Mechanism,
     k: usize,
@@ -76,7 +79,9 @@ fn refine_extreme(
     let t = k as f64 * step;
     let wrap = |a: f64| a.rem_euclid(std::f64::consts::TAU);
     let (mut a, mut b) = (t - step, t + step);
-    let (va, vb) = (mech.motion(a)?.velocity, mech.motion(b)?.velocity);
+    let mut sweep = mech.sweep();
+    let mut motion = |x: f64| sweep.step_motion(x);
+    let (va, vb) = (motion(a)?.velocity, motion(b)?.velocity);
     // at a minimum the velocity goes from negative to positive (at a maximum, the reverse)
     if !(sign * va > 0.0 && sign * vb < 0.0) {
         return Ok((wrap(t), qk));
@@ -86,14 +91,14 @@ fn refine_extreme(
         if m <= a || m >= b {
             break;
         }
-        if sign * mech.motion(m)?.velocity > 0.0 {
+        if sign * motion(m)?.velocity > 0.0 {
             a = m;
         } else {
             b = m;
         }
     }
     let m = 0.5 * (a + b);
-    let qm = mech.motion(m)?.position;
+    let qm = motion(m)?.position;
     if sign * (qm - qk) >= 0.0 {
         Ok((wrap(m), qm))
     } else {
