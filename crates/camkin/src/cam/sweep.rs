@@ -12,7 +12,7 @@ use super::first_touch::overtake::Overtaken;
 use super::follower::{dispatch, pitch_point, Kind};
 use super::pose::Pose;
 use super::{CamError, FollowerState, Mechanism, Motion, Touch};
-use crate::body::curve_in;
+use crate::body::{curve_in, CurveInFrame};
 use crate::cam::instant::Instant;
 use crate::curve::{ClosedSpline, Curve};
 use crate::geometry::{Frame, Rotation};
@@ -166,16 +166,20 @@ impl<'a> Sweep<'a> {
             return None;
         }
         match (self.spline, &self.conic) {
-            (Some(s), _) => self.warm_motion_on(k, s, theta, p, rotation),
-            (None, Some(c)) => self.warm_motion_on(k, c, theta, p, rotation),
+            // a spline's or a conic's evaluation costs about as much as extrapolating one
+            (Some(s), _) => self.warm_motion_on(k, s, theta, p, rotation, false),
+            (None, Some(c)) => self.warm_motion_on(k, c, theta, p, rotation, false),
             (None, None) => {
-                self.warm_motion_on(k, self.mech.touch.cam.profile.as_ref(), theta, p, rotation)
+                let profile = self.mech.touch.cam.profile.as_ref();
+                self.warm_motion_on(k, profile, theta, p, rotation, true)
             }
         }
     }
 
     /// [`Sweep::warm_motion`] on the cam's `profile` as its own type or `dyn Curve`, with the
-    /// cam's `rotation` at `theta`.
+    /// cam's `rotation` at `theta`; `extrapolate`: a roller's profile point from Newton's last
+    /// evaluation when its last step was below the tolerance (see
+    /// [`FirstTouch::pitch_newton`](super::first_touch::FirstTouch::pitch_newton)).
     #[inline(always)]
     fn warm_motion_on<K: Kind, C: Curve + ?Sized>(
         &self,
@@ -184,6 +188,7 @@ impl<'a> Sweep<'a> {
         theta: f64,
         p: &Prev,
         rotation: Rotation,
+        extrapolate: bool,
     ) -> Option<(Motion, Option<Pose>)> {
         let m = self.mech;
         let cam = m.touch.cam.state(theta);
@@ -198,8 +203,11 @@ impl<'a> Sweep<'a> {
         let (touch, pose, e) = match k.centre_path() {
             // a roller: Newton in the cam parameter alone, the position from its centre
             Some((path, r)) if r > 0.0 => {
-                let u = m.touch.pitch_newton((path, r), profile, at, u0).ok()?;
-                let e = curve_in(frame, profile, u);
+                let (u, d) = m
+                    .touch
+                    .pitch_newton((path, r), profile, at, u0, extrapolate)
+                    .ok()?;
+                let e = frame.derivs_to_world(&d);
                 let near = match p.pose {
                     Some(last) if K::ANGULAR => last,
                     _ => k.pose(q0),
