@@ -45,9 +45,13 @@ struct Piece {
 impl Piece {
     /// `[y, y', y'', y''']` at `x` (relative to the piece's start for the constants).
     fn eval(&self, x: f64) -> [f64; 4] {
+        let e = self.eval5(x);
+        [e[0], e[1], e[2], e[3]]
+    }
+
+    /// `[y, y', y'', y''', y'''']` at `x`: [`Piece::eval`] and the snap from one sine.
+    fn eval5(&self, x: f64) -> [f64; 5] {
         let t = x - self.x0;
-        let (sn, cs) = (self.w * x + self.phi).sin_cos();
-        let (sn0, cs0) = (self.w * self.x0 + self.phi).sin_cos();
         let (a, w, b) = (self.a, self.w, self.b);
         if w == 0.0 {
             return [
@@ -55,12 +59,15 @@ impl Piece {
                 self.v0 + b * t,
                 b,
                 0.0,
+                0.0,
             ];
         }
+        let (sn, cs) = (self.w * x + self.phi).sin_cos();
+        let (sn0, cs0) = (self.w * self.x0 + self.phi).sin_cos();
         // v = v0 + ∫ a = v0 − A/ω (cos − cos0) + B t ; s = s0 + ∫ v
         let v = self.v0 - a / w * (cs - cs0) + b * t;
         let s = self.s0 + (self.v0 + a / w * cs0) * t - a / (w * w) * (sn - sn0) + 0.5 * b * t * t;
-        [s, v, a * sn + b, a * w * cs]
+        [s, v, a * sn + b, a * w * cs, -a * w * w * sn]
     }
 }
 
@@ -120,24 +127,31 @@ fn modified_sine() -> &'static [Piece] {
     })
 }
 
-fn snap_pieces(pieces: &[Piece], x: f64) -> f64 {
+fn eval_pieces(pieces: &[Piece], x: f64) -> [f64; 5] {
     let k = pieces.iter().rposition(|p| p.x0 <= x).unwrap_or(0);
-    let p = &pieces[k];
-    -p.a * p.w * p.w * (p.w * x + p.phi).sin()
-}
-
-fn eval_pieces(pieces: &[Piece], x: f64) -> [f64; 4] {
-    let k = pieces.iter().rposition(|p| p.x0 <= x).unwrap_or(0);
-    pieces[k].eval(x)
+    pieces[k].eval5(x)
 }
 
 impl Law {
     /// `[y, y', y'', y''']` at `x ∈ [0, 1]` (outside, the end values).
     pub fn normalized(&self, x: f64) -> [f64; 4] {
+        let y = self.normalized5(x);
+        [y[0], y[1], y[2], y[3]]
+    }
+
+    /// `y''''` at `x ∈ [0, 1]` (the fourth derivative, for the third derivative of synthesised
+    /// profiles).
+    pub fn snap(&self, x: f64) -> f64 {
+        self.normalized5(x)[4]
+    }
+
+    /// `[y, y', y'', y''', y'''']` at `x ∈ [0, 1]` (outside, the end values): one sine and
+    /// cosine for all five.
+    pub fn normalized5(&self, x: f64) -> [f64; 5] {
         let x = x.clamp(0.0, 1.0);
         match self {
-            Law::Dwell => [0.0; 4],
-            Law::ConstantVelocity => [x, 1.0, 0.0, 0.0],
+            Law::Dwell => [0.0; 5],
+            Law::ConstantVelocity => [x, 1.0, 0.0, 0.0, 0.0],
             Law::SimpleHarmonic => {
                 let (s, c) = (PI * x).sin_cos();
                 [
@@ -145,11 +159,18 @@ impl Law {
                     0.5 * PI * s,
                     0.5 * PI * PI * c,
                     -0.5 * PI * PI * PI * s,
+                    -0.5 * PI.powi(4) * c,
                 ]
             }
             Law::Cycloidal => {
                 let (s, c) = (TAU * x).sin_cos();
-                [x - s / TAU, 1.0 - c, TAU * s, TAU * TAU * c]
+                [
+                    x - s / TAU,
+                    1.0 - c,
+                    TAU * s,
+                    TAU * TAU * c,
+                    -TAU.powi(3) * s,
+                ]
             }
             Law::Polynomial345 => {
                 let (x2, x3) = (x * x, x * x * x);
@@ -158,6 +179,7 @@ impl Law {
                     x2 * (30.0 - 60.0 * x + 30.0 * x2),
                     x * (60.0 - 180.0 * x + 120.0 * x2),
                     60.0 - 360.0 * x + 360.0 * x2,
+                    -360.0 + 720.0 * x,
                 ]
             }
             Law::Polynomial4567 => {
@@ -167,25 +189,11 @@ impl Law {
                     x3 * (140.0 - 420.0 * x + 420.0 * x2 - 140.0 * x3),
                     x2 * (420.0 - 1680.0 * x + 2100.0 * x2 - 840.0 * x3),
                     x * (840.0 - 5040.0 * x + 8400.0 * x2 - 4200.0 * x3),
+                    840.0 - 10080.0 * x + 25200.0 * x * x - 16800.0 * x * x * x,
                 ]
             }
             Law::ModifiedTrapezoid => eval_pieces(modified_trapezoid(), x),
             Law::ModifiedSine => eval_pieces(modified_sine(), x),
-        }
-    }
-
-    /// `y''''` at `x ∈ [0, 1]` (the fourth derivative, for the third derivative of synthesised
-    /// profiles).
-    pub fn snap(&self, x: f64) -> f64 {
-        let x = x.clamp(0.0, 1.0);
-        match self {
-            Law::Dwell | Law::ConstantVelocity => 0.0,
-            Law::SimpleHarmonic => -0.5 * PI.powi(4) * (PI * x).cos(),
-            Law::Cycloidal => -TAU.powi(3) * (TAU * x).sin(),
-            Law::Polynomial345 => -360.0 + 720.0 * x,
-            Law::Polynomial4567 => 840.0 - 10080.0 * x + 25200.0 * x * x - 16800.0 * x * x * x,
-            Law::ModifiedTrapezoid => snap_pieces(modified_trapezoid(), x),
-            Law::ModifiedSine => snap_pieces(modified_sine(), x),
         }
     }
 
@@ -359,14 +367,21 @@ impl Program {
     }
 
     fn eval_segment(&self, k: usize, t: f64) -> [f64; 4] {
+        let e = self.eval_segment5(k, t);
+        [e[0], e[1], e[2], e[3]]
+    }
+
+    /// [`Program::eval_segment`] and the fourth derivative.
+    fn eval_segment5(&self, k: usize, t: f64) -> [f64; 5] {
         let s = &self.segments[k];
         let b = s.extent;
-        let y = s.law.normalized((t - self.starts[k]) / b);
+        let y = s.law.normalized5((t - self.starts[k]) / b);
         [
             self.levels[k] + s.rise * y[0],
             s.rise * y[1] / b,
             s.rise * y[2] / (b * b),
             s.rise * y[3] / (b * b * b),
+            s.rise * y[4] / (b * b * b * b),
         ]
     }
 
@@ -407,15 +422,17 @@ impl Program {
 
     /// `[s, s', s'', s''', s'''']` at cam angle `theta` (rad).
     pub fn eval5(&self, theta: f64) -> [f64; 5] {
-        let t = theta.rem_euclid(TAU);
+        // within a turn already (as a sweep's angles mostly are): the same value without the
+        // division's cost
+        let t = if (0.0..TAU).contains(&theta) {
+            theta
+        } else {
+            theta.rem_euclid(TAU)
+        };
         // the starts are increasing: a binary search (a linear scan made a 100 000-segment program
         // quadratic to synthesise)
         let k = self.starts.partition_point(|&s| s <= t).saturating_sub(1);
-        let e = self.eval_segment(k, t);
-        let seg = &self.segments[k];
-        let b = seg.extent;
-        let snap = seg.rise * seg.law.snap((t - self.starts[k]) / b) / (b * b * b * b);
-        [e[0], e[1], e[2], e[3], snap]
+        self.eval_segment5(k, t)
     }
 
     /// Cam angles where segments start (rad).
