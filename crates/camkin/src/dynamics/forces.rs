@@ -65,6 +65,10 @@ pub struct ForceState {
     /// flat face); `None` where the contact is not a line contact of two smooth surfaces (a knife
     /// edge, or a corner of either curve)
     pub follower_radius: Option<f64>,
+    /// the surfaces' speeds relative to the contact point along the cam profile's tangent, m/s:
+    /// the cam's, the follower's (see [`surface_speeds`]); their mean is the entrainment speed
+    /// of the lubricant, their difference the sliding speed
+    pub surface_speeds: [f64; 2],
     /// `q'`, `q''` in the cam angle
     pub dq: [f64; 2],
     /// a form-closed follower's second curve: its contact and the force it carries (`None`
@@ -94,6 +98,8 @@ pub struct SecondContact {
     pub pressure_angle: f64,
     /// its radius of curvature at the contact, m (as [`ForceState::follower_radius`])
     pub follower_radius: Option<f64>,
+    /// the surfaces' speeds at its contact, m/s (as [`ForceState::surface_speeds`])
+    pub surface_speeds: [f64; 2],
 }
 
 /// Kinetostatics of a cam mechanism in SI units (lengths in metres).
@@ -186,6 +192,7 @@ impl<'a> Forces<'a> {
                     cam_radius: s2.radius_of_curvature,
                     pressure_angle: s2.pressure_angle(),
                     follower_radius: follower_radius(m2, s2),
+                    surface_speeds: surface_speeds(m2, s2),
                 };
                 (
                     f.max(0.0),
@@ -209,6 +216,7 @@ impl<'a> Forces<'a> {
             cam_radius: s.radius_of_curvature,
             pressure_angle: s.pressure_angle(),
             follower_radius: follower_radius(self.mech, s),
+            surface_speeds: surface_speeds(self.mech, s),
             dq: [q1, q2],
             second,
         }
@@ -339,6 +347,30 @@ impl ForceSweep<'_> {
 fn lever(mech: &Mechanism, s: &FollowerState) -> (crate::Vec2, f64) {
     let n = -mech.orientation() * *s.normal;
     (n, n.dot(&s.follower_motion))
+}
+
+/// The two surfaces' speeds relative to the contact point of `s`, along the cam profile's
+/// tangent `t` (the normal `ν` turned a right angle clockwise), m/s: the cam's
+/// `u₁ = (v₁ − v_P)·t = −ṡ_A` and the follower's `u₂ = (v₂ − v_P)·t`, with `v₁ = ω × (P − C)` and
+/// `v₂ = q̇ ∂v_B/∂q̇` the bodies' material velocities at the contact `P` and
+/// `v_P = v₁ + ṡ_A t` the contact point's own (the paper's eq. 5). The follower's is `∓ṡ_B`
+/// (eq. 6, by the sense of its curve's tangent). Their mean is what draws the lubricant into the
+/// contact (the entrainment speed), their difference `(v₁ − v₂)·t` the sliding speed.
+///
+/// A roller turns on its pin: it is taken as rolling on the cam without slip (the usual
+/// assumption of cam design; its surface moves with the cam's, `u₂ = u₁`, and nothing slides).
+/// A carried circle is part of its follower's body and slides like any carried curve.
+pub fn surface_speeds(mech: &Mechanism, s: &FollowerState) -> [f64; 2] {
+    let u_cam = -s.sliding_rate_cam;
+    if matches!(mech.follower_curve(), FollowerCurve::Circle(_)) {
+        return [u_cam, u_cam];
+    }
+    let cam = mech.cam();
+    let omega = cam.direction().sign() * cam.speed();
+    let t = crate::Vec2::new(s.normal.y, -s.normal.x);
+    let v_cam = omega * crate::geometry::rot90(s.contact_world - cam.pivot());
+    let v_follower = s.velocity * s.follower_motion;
+    [u_cam, (v_follower - v_cam).dot(&t) + u_cam]
 }
 
 /// The radius of curvature (m, positive: convex) of the follower's curve at the contact of `s`:

@@ -43,7 +43,8 @@ mod system;
 pub use cam::Multibody;
 pub use follower::{Event, EventKind, FollowerDynamics, Sample, MAX_RATE_STEP, REBOUND_TOLERANCE};
 pub use forces::{
-    effective_modulus, hertz_line_pressure, ForceState, ForceSweep, Forces, SecondContact,
+    effective_modulus, hertz_line_pressure, surface_speeds, ForceState, ForceSweep, Forces,
+    SecondContact,
 };
 pub use model::{Constraint, ForceElement, RigidBody, System, GROUND};
 pub use no_follow::{no_follow_speed, NoFollow, SpeedSweep};

@@ -115,9 +115,13 @@ mod tests {
         };
         let c = contact([4.0, 6.0], 0.01, 1e5, 228e9);
         let f = film_thickness(FilmFormula::DowsonHigginson, &oil, &c).unwrap();
-        let dimensional = 2.65 * 2e-8f64.powf(0.54) * (0.01f64 * 5.0).powf(0.70) * 0.01f64.powf(0.43)
-            / (228e9f64.powf(0.03) * 1e5f64.powf(0.13));
-        assert!((f.minimum / dimensional - 1.0).abs() < 1e-12, "{f:?} {dimensional}");
+        let dimensional =
+            2.65 * 2e-8f64.powf(0.54) * (0.01f64 * 5.0).powf(0.70) * 0.01f64.powf(0.43)
+                / (228e9f64.powf(0.03) * 1e5f64.powf(0.13));
+        assert!(
+            (f.minimum / dimensional - 1.0).abs() < 1e-12,
+            "{f:?} {dimensional}"
+        );
         assert!((f.minimum / 0.31941e-6 - 1.0).abs() < 2e-5, "{f:?}");
         assert!((f.central / 0.41290e-6 - 1.0).abs() < 2e-5, "{f:?}");
         // the central film is the thicker (the outlet constriction is the minimum)
@@ -159,12 +163,18 @@ mod tests {
             let expected = formula.fits()[0].1;
             assert!((exponent - expected).abs() < 1e-12, "{exponent}");
             assert_eq!(h([1.0, -1.0]), 0.0);
-            assert!(film_thickness(formula, &oil, &contact([1.0, 1.0], 0.02, 0.0, 230e9)).is_none());
-            assert!(film_thickness(formula, &oil, &contact([1.0, 1.0], -0.02, 1e5, 230e9)).is_none());
             assert!(
-                film_thickness(formula, &oil, &contact([1.0, 1.0], f64::INFINITY, 1e5, 230e9))
-                    .is_none()
+                film_thickness(formula, &oil, &contact([1.0, 1.0], 0.02, 0.0, 230e9)).is_none()
             );
+            assert!(
+                film_thickness(formula, &oil, &contact([1.0, 1.0], -0.02, 1e5, 230e9)).is_none()
+            );
+            assert!(film_thickness(
+                formula,
+                &oil,
+                &contact([1.0, 1.0], f64::INFINITY, 1e5, 230e9)
+            )
+            .is_none());
         }
     }
 }

@@ -101,7 +101,10 @@ mod tests {
         let f = t2 / (t1 + t2);
         let peak = f * t1;
         assert!((peak - (1.0 - f) * t2).abs() < 1e-9 * peak);
-        assert!((blok / peak - 1.0).abs() < 2e-3, "Blok {blok} K, conduction {peak} K");
+        assert!(
+            (blok / peak - 1.0).abs() < 2e-3,
+            "Blok {blok} K, conduction {peak} K"
+        );
         // the exact constant behind the rounded one
         let exact = BLOK_CONSTANT * peak / blok;
         assert!((exact - 1.1115).abs() < 5e-4, "{exact}");
@@ -120,11 +123,17 @@ mod tests {
         // the formula is symmetric in the bodies
         let swapped = blok_flash_temperature(&contact([2.0, 7.0]), 0.06, [9_000.0, 12_000.0]);
         assert!((swapped.unwrap() / t - 1.0).abs() < 1e-15);
-        assert_eq!(blok_flash_temperature(&contact([3.0, 3.0]), 0.06, [1.0, 1.0]), Some(0.0));
+        assert_eq!(
+            blok_flash_temperature(&contact([3.0, 3.0]), 0.06, [1.0, 1.0]),
+            Some(0.0)
+        );
         // sliding with both surfaces standing still relative to the contact is not Blok's case
         let mut standing = contact([0.0, 0.0]);
         standing.surface_speeds = [0.0, -0.0];
-        assert_eq!(blok_flash_temperature(&standing, 0.06, [1.0, 1.0]), Some(0.0));
+        assert_eq!(
+            blok_flash_temperature(&standing, 0.06, [1.0, 1.0]),
+            Some(0.0)
+        );
         let mut open = contact([1.0, 2.0]);
         open.reduced_radius = -0.01;
         assert!(blok_flash_temperature(&open, 0.06, [1.0, 1.0]).is_none());

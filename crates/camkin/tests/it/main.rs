@@ -31,6 +31,7 @@ mod hyperdual_selfcheck;
 mod interpolation_study;
 mod jerk;
 mod layout;
+mod lubrication;
 mod motion_closed_form;
 mod oscillating_branch;
 mod paper_cam;
