@@ -97,6 +97,7 @@ impl PyMechanism {
             allowable_mpa,
             unit: built.length_unit,
             force_speed: true,
+            lubrication: None,
         };
         let value_of = |e: &ReportError| {
             match e.field() {

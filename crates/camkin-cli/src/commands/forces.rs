@@ -107,6 +107,7 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         allowable_mpa: args.allowable,
         unit,
         force_speed: true,
+        lubrication: None,
     };
     req.validate(&mech).map_err(input_error)?;
     if let Some(refusal) = req.work(&mech).refusal().filter(|_| !args.work.large) {

@@ -596,6 +596,7 @@ fn dynamics(
     let req = ForceRequest {
         step_deg,
         force_speed: false,
+        lubrication: None,
         ..ForceRequest::default()
     };
     let Ok(report) = ForceReport::new(mech, params, &req) else {

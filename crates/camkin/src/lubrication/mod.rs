@@ -5,7 +5,7 @@
 //! relative to the contact point along the common tangent, the reduced radius of curvature, the
 //! load per unit face width and the bodies' elastic and thermal constants. The kinematics that
 //! supply them (the paper's sliding rates) and the load (the force report) are computed
-//! elsewhere; [`crate::report::lubrication`] puts them together over a revolution.
+//! elsewhere; [`crate::report::LubricationReport`] puts them together over a revolution.
 //!
 //! Conventions (Hamrock, Schmid and Jacobson, *Fundamentals of Fluid Film Lubrication*, 2nd ed.,
 //! 2004, ch. 18 and 21):

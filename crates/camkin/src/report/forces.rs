@@ -34,6 +34,8 @@ pub struct ForceRequest {
     /// the force–speed curve (151 speeds, each over every angle): a page that evaluates the
     /// coefficients at its own speed leaves it out
     pub force_speed: bool,
+    /// the lubrication of the contacts (needs the face width and the materials)
+    pub lubrication: Option<super::LubricationRequest>,
 }
 
 impl Default for ForceRequest {
@@ -47,6 +49,7 @@ impl Default for ForceRequest {
             allowable_mpa: None,
             unit: LengthUnit::M,
             force_speed: true,
+            lubrication: None,
         }
     }
 }
@@ -203,6 +206,8 @@ pub struct ForceReport {
     pub form_closed: Option<FormClosed>,
     /// the Hertz stress, when a face width was given
     pub hertz: Option<HertzReport>,
+    /// the lubrication, when asked for
+    pub lubrication: Option<super::LubricationReport>,
     /// the checks that failed
     pub failures: Vec<ForceCheck>,
     /// the force–speed curve: speeds (rad/s) and per speed the smallest contact force (a
@@ -274,6 +279,15 @@ impl ForceRequest {
                 return Err(ReportError::NotApplicable {
                     field: ForceField::FaceWidth,
                     reason: "a knife-edge follower has no line contact (its edge is a point in the plane): no Hertz stress",
+                });
+            }
+        }
+        if let Some(l) = &self.lubrication {
+            l.validate()?;
+            if self.face_width.is_none() {
+                return Err(ReportError::NotApplicable {
+                    field: ForceField::FaceWidth,
+                    reason: "lubrication needs the contact's face width (the film and the flash temperature depend on the load per unit width)",
                 });
             }
         }
@@ -400,6 +414,18 @@ impl ForceReport {
                 });
             }
         }
+        let lubrication = match (&req.lubrication, req.face_width) {
+            (Some(l), Some(width)) => Some(super::LubricationReport::new(
+                &f,
+                &states,
+                &thetas,
+                width * req.unit.metres(),
+                2.0 * req.materials.effective_modulus(),
+                speed,
+                l,
+            )),
+            _ => None,
+        };
         let force_speed = if req.force_speed {
             force_speed(&f, &states, closed, target, jump.speed)
         } else {
@@ -425,6 +451,7 @@ impl ForceReport {
             spring,
             form_closed,
             hertz,
+            lubrication,
             failures,
             force_speed,
         })

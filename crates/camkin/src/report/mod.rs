@@ -13,6 +13,7 @@
 
 mod design;
 mod forces;
+mod lubrication;
 mod materials;
 mod system_forces;
 
@@ -21,6 +22,7 @@ pub use forces::{
     rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport, HertzSide, Jump,
     SpringSizing,
 };
+pub use lubrication::{LubricationPoint, LubricationReport, LubricationRequest};
 pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
 pub use system_forces::{AtAngle, ContactForces, DriverEffort, Impact, SystemForces};
 
@@ -55,17 +57,32 @@ pub enum ForceField {
     Materials,
     /// the allowable contact stress
     Allowable,
+    /// the lubricant's viscosity
+    Viscosity,
+    /// the lubricant's pressure–viscosity coefficient
+    PressureViscosity,
+    /// a surface's roughness
+    Roughness,
+    /// a body's thermal properties (conductivity, density, specific heat)
+    Thermal,
+    /// the friction coefficients
+    Friction,
 }
 
 impl ForceField {
     /// Every field, for front ends that map them all.
-    pub const ALL: [ForceField; 6] = [
+    pub const ALL: [ForceField; 11] = [
         ForceField::Step,
         ForceField::Margin,
         ForceField::TargetRpm,
         ForceField::FaceWidth,
         ForceField::Materials,
         ForceField::Allowable,
+        ForceField::Viscosity,
+        ForceField::PressureViscosity,
+        ForceField::Roughness,
+        ForceField::Thermal,
+        ForceField::Friction,
     ];
 }
 
@@ -126,6 +143,11 @@ impl fmt::Display for ForceField {
             ForceField::FaceWidth => "face width",
             ForceField::Materials => "materials",
             ForceField::Allowable => "allowable stress",
+            ForceField::Viscosity => "viscosity",
+            ForceField::PressureViscosity => "pressure-viscosity coefficient",
+            ForceField::Roughness => "roughness",
+            ForceField::Thermal => "thermal properties",
+            ForceField::Friction => "friction coefficient",
         })
     }
 }

@@ -136,6 +136,7 @@ fn the_force_reports_extremes_are_the_closed_forms() {
         target_rpm: Some(1380.0),
         face_width: Some(0.01),
         force_speed: false,
+        lubrication: None,
         ..ForceRequest::default()
     };
     let r = ForceReport::new(&mech, params, &req).unwrap();
