@@ -2,7 +2,8 @@
 //! to four significant digits with its unit, angles to 0.01°.
 
 use camkin::human::human;
-use camkin::report::{rpm, ForceCheck, ForceReport, FormClosed, HertzReport};
+use camkin::lubrication::{regime, FilmFormula, Friction};
+use camkin::report::{rpm, ForceCheck, ForceReport, FormClosed, HertzReport, LubricationReport};
 
 /// An angle (rad) as `12.5°`, in [0°, 360°), to 0.01°.
 pub fn angle(t: f64) -> String {
@@ -122,6 +123,93 @@ pub fn summary(r: &ForceReport, title: &str, lu: LengthUnit<'_>) -> String {
     if let Some(h) = &r.hertz {
         out += &hertz(h, r.closed, lu);
     }
+    if let Some(l) = &r.lubrication {
+        out += &lubrication(l);
+    }
+    out
+}
+
+/// The lubrication lines: the oil and formula, λ's minimum and the regimes' shares, the film,
+/// the entrainment's reversals, the flash temperature and the friction.
+fn lubrication(l: &LubricationReport) -> String {
+    let q = &l.request;
+    let formula = match q.formula {
+        FilmFormula::Hamrock => "Pan–Hamrock",
+        _ => "Dowson–Higginson",
+    };
+    let friction = match q.friction {
+        Friction::Constant(mu) => format!("μ = {}", num(mu)),
+        Friction::Mixed {
+            boundary,
+            full_film,
+        } => format!(
+            "μ from {} (boundary, λ ≤ 1) to {} (full film, λ ≥ 3)",
+            num(boundary),
+            num(full_film)
+        ),
+        _ => String::new(),
+    };
+    let mut out = format!(
+        "lubrication (η₀ = {} mPa·s, α = {} 1/GPa, {formula} film, composite roughness {} µm, {friction}):
+",
+        num(q.lubricant.viscosity * 1e3),
+        num(q.lubricant.pressure_viscosity * 1e9),
+        num(l.composite_roughness * 1e6),
+    );
+    match l.min_lambda {
+        Some(m) => {
+            let [b, mixed, full] = l.regime_shares.map(|x| num(100.0 * x));
+            out += &format!(
+                "  λ = h_min/σ: min {} at {} ({}); of the loaded angles {b} % boundary (λ < 1), {mixed} % mixed, {full} % full film (λ ≥ 3)\n",
+                num(m.value),
+                angle(m.cam_angle),
+                regime(m.value).name()
+            );
+            let thinnest = l
+                .points
+                .iter()
+                .zip(&l.cam_angles)
+                .filter_map(|(p, &t)| p[0].and_then(|q| q.film).map(|f| (f.minimum, t)))
+                .min_by(|a, b| a.0.total_cmp(&b.0));
+            if let Some((h, t)) = thinnest {
+                out += &format!(
+                    "  film: thinnest h_min {} µm at {}\n",
+                    num(h * 1e6),
+                    angle(t)
+                );
+            }
+        }
+        None => out += "  no film: the contact is not a loaded line contact at any angle\n",
+    }
+    out += &if l.entrainment_reversals.is_empty() {
+        "  entrainment: never reverses (the oil is drawn in from one side throughout)\n".into()
+    } else {
+        format!(
+            "  entrainment reverses (passes through zero: no film is drawn in) at {}\n",
+            l.entrainment_reversals
+                .iter()
+                .map(|&t| format!("{:.4}°", t.to_degrees()))
+                .collect::<Vec<_>>()
+                .join(", ")
+        )
+    };
+    out += &match l.max_flash_temperature {
+        Some(t) => format!(
+            "  flash temperature (Blok): max {} K above the bulk at {}\n",
+            num(t.value),
+            angle(t.cam_angle)
+        ),
+        None if l.request.surfaces.iter().any(|s| s.thermal.is_none()) => {
+            "  flash temperature: needs each material's k, rho and c (a preset has them; E=…:nu=…:k=…:rho=…:c=…)\n".into()
+        }
+        None => "  flash temperature: none (nothing slides under load)\n".into(),
+    };
+    out += &format!(
+        "  friction (dissipated; the forces above neglect it): mean power {} W, {} J a revolution, mean torque on the camshaft {} N·m\n",
+        num(l.mean_friction_power),
+        num(l.friction_energy_per_revolution),
+        num(l.mean_friction_torque)
+    );
     out
 }
 

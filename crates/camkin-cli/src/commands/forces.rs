@@ -9,7 +9,10 @@ use crate::mechfile;
 use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::report::{rpm, ForceField, ForceReport, ForceRequest, Materials, ReportError};
+use camkin::lubrication::{FilmFormula, Friction, Lubricant, LubricantError, Surface};
+use camkin::report::{
+    rpm, ForceField, ForceReport, ForceRequest, LubricationRequest, Materials, ReportError,
+};
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
@@ -23,6 +26,92 @@ impl FromStr for MaterialsArg {
         s.parse()
             .map(Self)
             .map_err(|e: camkin::report::MaterialError| e.to_string())
+    }
+}
+
+/// A lubricant as a flag: a preset or `eta=<Pa·s>:alpha=<1/Pa>` (the library's reader).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OilArg(pub Lubricant);
+
+impl FromStr for OilArg {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        s.parse()
+            .map(Self)
+            .map_err(|e: LubricantError| e.to_string())
+    }
+}
+
+/// The two surfaces' RMS roughness, `CAM,FOLLOWER` in µm, each above 0 and at most 100 µm.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoughnessArg(pub [f64; 2]);
+
+impl FromStr for RoughnessArg {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let (a, b) = s
+            .split_once(',')
+            .ok_or_else(|| format!("{s:?}: CAM,FOLLOWER in µm is needed, e.g. 0.2,0.3"))?;
+        let one = |t: &str| -> Result<f64, String> {
+            let t = t.trim();
+            let v: f64 = t
+                .parse()
+                .map_err(|_| format!("{t:?} is not a number (µm)"))?;
+            if v > 0.0 && v <= 100.0 {
+                Ok(v * 1e-6)
+            } else {
+                Err(format!(
+                    "{t} µm is not a plausible roughness: Rq above 0 and at most 100 µm (a ground surface's is 0.1 to 0.5 µm; λ divides by it)"
+                ))
+            }
+        };
+        Ok(Self([one(a)?, one(b)?]))
+    }
+}
+
+/// The friction model as a flag: `MU` throughout, or `BOUNDARY:FULL` (boundary at λ ≤ 1, full
+/// film at λ ≥ 3, linear between), each from 0 to 1.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrictionArg(pub Friction);
+
+impl FromStr for FrictionArg {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let one = |t: &str| -> Result<f64, String> {
+            let t = t.trim();
+            match t.parse::<f64>() {
+                Ok(v) if (0.0..=1.0).contains(&v) => Ok(v),
+                Ok(_) => Err(format!("{t} is not a friction coefficient: from 0 to 1")),
+                Err(_) => Err(format!("{t:?} is not a number")),
+            }
+        };
+        Ok(Self(match s.split_once(':') {
+            None => Friction::Constant(one(s)?),
+            Some((b, f)) => Friction::Mixed {
+                boundary: one(b)?,
+                full_film: one(f)?,
+            },
+        }))
+    }
+}
+
+/// The film formula as a flag.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmArg(pub FilmFormula);
+
+impl FromStr for FilmArg {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        FilmFormula::ALL
+            .into_iter()
+            .find(|f| f.name() == s.trim())
+            .map(Self)
+            .ok_or_else(|| {
+                format!(
+                    "{s:?} is not a film formula: {}",
+                    FilmFormula::ALL.map(FilmFormula::name).join(" or ")
+                )
+            })
     }
 }
 
@@ -57,7 +146,23 @@ pub struct ForcesArgs {
     /// Allowable contact stress, MPa: exit 3 when the stress exceeds it.
     #[arg(long, value_name = "MPA", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub allowable: Option<f64>,
-    /// Directory for forces.csv, force_speed.csv and their plots.
+    /// Lubricant at the contact's inlet temperature, for the film thickness, λ, the flash
+    /// temperature and the friction (with --face-width and --roughness): a preset (sae-20@100c …
+    /// sae-50@100c, iso-vg-32@40c … iso-vg-320@40c) or `eta=<Pa·s>:alpha=<1/Pa>`.
+    #[arg(long, value_name = "OIL")]
+    pub oil: Option<OilArg>,
+    /// RMS roughness Rq of the cam's and the follower's surfaces, µm (with --oil).
+    #[arg(long, value_name = "CAM,FOLLOWER")]
+    pub roughness: Option<RoughnessArg>,
+    /// EHL film formula of a line contact: dowson-higginson or hamrock (Pan and Hamrock's).
+    #[arg(long, value_name = "FORMULA", default_value = "dowson-higginson")]
+    pub film: FilmArg,
+    /// Friction coefficient: `MU` throughout, or `BOUNDARY:FULL` (boundary lubrication at
+    /// λ ≤ 1, a full film at λ ≥ 3, linear in λ between).
+    #[arg(long, value_name = "MU", default_value = "0.1:0.03")]
+    pub friction: FrictionArg,
+    /// Directory for forces.csv, force_speed.csv and their plots (and lubrication.csv and its
+    /// page with --oil).
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     #[command(flatten)]
@@ -75,6 +180,10 @@ fn flag(field: ForceField) -> &'static str {
         ForceField::FaceWidth => "--face-width",
         ForceField::Materials => "--materials",
         ForceField::Allowable => "--allowable",
+        ForceField::Viscosity | ForceField::PressureViscosity => "--oil",
+        ForceField::Roughness => "--roughness",
+        ForceField::Thermal => "--materials",
+        ForceField::Friction => "--friction",
         _ => "an option",
     }
 }
@@ -84,6 +193,37 @@ fn input_error(e: ReportError) -> Failure {
         Some(field) => anyhow!("{}: {e}", flag(field)),
         None => anyhow!(e),
     })
+}
+
+/// The lubrication the flags ask for: `None` without --oil; --roughness needed with it, and
+/// neither --roughness, --film nor --friction without it.
+fn lubrication_request(args: &ForcesArgs) -> Result<Option<LubricationRequest>, Failure> {
+    let Some(oil) = args.oil else {
+        if args.roughness.is_some() {
+            return Err(Failure::Input(anyhow!(
+                "--roughness: the surfaces' roughness is for the film's λ; give the lubricant with --oil (e.g. --oil sae-30@100c)"
+            )));
+        }
+        return Ok(None);
+    };
+    let Some(RoughnessArg(rq)) = args.roughness else {
+        return Err(Failure::Input(anyhow!(
+            "--oil: λ needs each surface's RMS roughness: give --roughness CAM,FOLLOWER in µm (e.g. --roughness 0.2,0.3)"
+        )));
+    };
+    let thermal = [
+        args.materials.0.cam.thermal,
+        args.materials.0.follower.thermal,
+    ];
+    Ok(Some(LubricationRequest {
+        lubricant: oil.0,
+        formula: args.film.0,
+        surfaces: [0, 1].map(|i| Surface {
+            roughness: rq[i],
+            thermal: thermal[i],
+        }),
+        friction: args.friction.0,
+    }))
 }
 
 pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
@@ -98,6 +238,7 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
     // the folder is checked before any work (a file in its place, an input in it, someone
     // else's files)
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
+    let lubrication = lubrication_request(args)?;
     let req = ForceRequest {
         step_deg: args.step.deg(),
         margin: args.margin,
@@ -107,7 +248,7 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         allowable_mpa: args.allowable,
         unit,
         force_speed: true,
-        lubrication: None,
+        lubrication,
     };
     req.validate(&mech).map_err(input_error)?;
     if let Some(refusal) = req.work(&mech).refusal().filter(|_| !args.work.large) {
@@ -144,6 +285,13 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
     write_atomic(Some(&dir.join("force_speed.csv")), |w| {
         write_cell_table(w, TableFormat::Csv, &columns, rows)
     })?;
+    if let Some(l) = &r.lubrication {
+        let (columns, rows) = l.table();
+        write_atomic(Some(&dir.join("lubrication.csv")), |w| {
+            write_cell_table(w, TableFormat::Csv, &columns, rows)
+        })?;
+        crate::draw::lubrication::save(l, &dir.join("lubrication"))?;
+    }
     let (_, _, tu) = r.units();
     let series = |name: &str, dashed, y: fn(&camkin::dynamics::ForceState) -> f64| Series {
         name: name.into(),

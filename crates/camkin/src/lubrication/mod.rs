@@ -23,10 +23,12 @@
 mod film;
 mod flash;
 mod friction;
+mod oils;
 
 pub use film::{film_thickness, Film, FilmFormula};
 pub use flash::{blok_flash_temperature, hertz_half_width, BLOK_CONSTANT};
 pub use friction::{regime, Friction, Regime, FULL_FILM_LAMBDA, MIXED_LAMBDA};
+pub use oils::{LubricantError, OIL_PRESETS, PRESSURE_VISCOSITY_RANGE, VISCOSITY_RANGE};
 
 /// A lubricant at the contact's inlet temperature.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -38,12 +40,10 @@ pub struct Lubricant {
     pub pressure_viscosity: f64,
 }
 
-/// A body's surface at the contact: its roughness and what conducts the heat of friction away.
+/// How a body conducts the heat of friction away.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Surface {
-    /// root-mean-square roughness `Rq`, m
-    pub roughness: f64,
+pub struct Thermal {
     /// thermal conductivity `k`, W/(m·K)
     pub conductivity: f64,
     /// density `ρ`, kg/m³
@@ -52,11 +52,22 @@ pub struct Surface {
     pub specific_heat: f64,
 }
 
-impl Surface {
+impl Thermal {
     /// The thermal contact coefficient (thermal effusivity) `β = √(k ρ c)`, W·s^½/(m²·K).
-    pub fn thermal_coefficient(&self) -> f64 {
+    pub fn coefficient(&self) -> f64 {
         (self.conductivity * self.density * self.specific_heat).sqrt()
     }
+}
+
+/// A body's surface at the contact: its roughness and, for the flash temperature, its thermal
+/// constants.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Surface {
+    /// root-mean-square roughness `Rq`, m
+    pub roughness: f64,
+    /// the thermal constants (`None`: no flash temperature)
+    pub thermal: Option<Thermal>,
 }
 
 /// The composite roughness of two surfaces, `σ = √(Rq₁² + Rq₂²)`, m: what λ divides the film by.

@@ -7,8 +7,10 @@ use super::{Extreme, ForceField, ReportError};
 use crate::dynamics::{ForceState, Forces};
 use crate::lubrication::{
     blok_flash_temperature, composite_roughness, film_thickness, reduced_radius, regime, Film,
-    FilmFormula, Friction, LineContact, Lubricant, Regime, Surface,
+    FilmFormula, Friction, LineContact, Lubricant, Regime, Surface, PRESSURE_VISCOSITY_RANGE,
+    VISCOSITY_RANGE,
 };
+use crate::table::Cell;
 use std::f64::consts::TAU;
 
 /// What a lubrication report needs beyond the forces: the oil, the film formula, the two
@@ -39,42 +41,43 @@ impl LubricationRequest {
             })
         };
         let l = &self.lubricant;
-        if !(l.viscosity.is_finite() && l.viscosity > 0.0 && l.viscosity <= 100.0) {
+        if !(l.viscosity >= VISCOSITY_RANGE.0 && l.viscosity <= VISCOSITY_RANGE.1) {
             return bad(
                 ForceField::Viscosity,
                 l.viscosity,
                 "Pa·s",
-                "must be in (0, 100] Pa·s (an engine oil's is about 0.01 hot: a value in mPa·s or cP is a thousand times too large)",
+                "is not a plausible viscosity: from 1e-4 to 100 Pa·s (an engine oil's is about 0.01 hot: a value in mPa·s or cP is a thousand times too large)",
             );
         }
-        if !(l.pressure_viscosity.is_finite()
-            && l.pressure_viscosity >= 0.0
-            && l.pressure_viscosity <= 1e-7)
+        if !(l.pressure_viscosity >= PRESSURE_VISCOSITY_RANGE.0
+            && l.pressure_viscosity <= PRESSURE_VISCOSITY_RANGE.1)
         {
             return bad(
                 ForceField::PressureViscosity,
                 l.pressure_viscosity,
                 "1/Pa",
-                "must be in [0, 1e-7] 1/Pa (mineral oils 1e-8 to 3e-8: a value in 1/GPa is a thousand million times too large)",
+                "is not a plausible pressure-viscosity coefficient: from 0 to 1e-7 1/Pa (mineral oils 1e-8 to 3e-8: a value in 1/GPa is a thousand million times too large)",
             );
         }
         for s in &self.surfaces {
-            if !(s.roughness.is_finite() && s.roughness > 0.0 && s.roughness <= 1e-4) {
+            if !(s.roughness > 0.0 && s.roughness <= 1e-4) {
                 return bad(
                     ForceField::Roughness,
                     s.roughness,
                     "m",
-                    "must be in (0, 1e-4] m (a ground surface's Rq is 0.1 to 0.5 µm; λ divides by it)",
+                    "is not a plausible roughness: Rq from above 0 to 1e-4 m (a ground surface's is 0.1 to 0.5 µm; λ divides by it)",
                 );
             }
-            for v in [s.conductivity, s.density, s.specific_heat] {
-                if !(v.is_finite() && v > 0.0) {
-                    return bad(
-                        ForceField::Thermal,
-                        v,
-                        "",
-                        "must be positive (conductivity W/(m·K), density kg/m³, specific heat J/(kg·K))",
-                    );
+            if let Some(t) = s.thermal {
+                for v in [t.conductivity, t.density, t.specific_heat] {
+                    if !(v.is_finite() && v > 0.0) {
+                        return bad(
+                            ForceField::Thermal,
+                            v,
+                            "(SI)",
+                            "must be positive (conductivity W/(m·K), density kg/m³, specific heat J/(kg·K))",
+                        );
+                    }
                 }
             }
         }
@@ -87,7 +90,12 @@ impl LubricationRequest {
         };
         for mu in mus {
             if !(mu.is_finite() && (0.0..=1.0).contains(&mu)) {
-                return bad(ForceField::Friction, mu, "", "must be in [0, 1]");
+                return bad(
+                    ForceField::Friction,
+                    mu,
+                    "",
+                    "is not a friction coefficient: from 0 to 1",
+                );
             }
         }
         Ok(())
@@ -135,9 +143,13 @@ pub struct LubricationReport {
     pub effective_modulus: f64,
     /// the composite roughness `√(Rq₁² + Rq₂²)`, m
     pub composite_roughness: f64,
+    /// the cam angles of the rows, rad
+    pub cam_angles: Vec<f64>,
     /// per angle of the force report, the follower's own contact and a form-closed follower's
     /// second (`None` where that curve carries no force)
     pub points: Vec<[Option<LubricationPoint>; 2]>,
+    /// the follower is form-closed: the table has the second contact's columns
+    pub closed: bool,
     /// the cam angles (rad, ascending) where the own contact's entrainment changes sign, each
     /// located by bisection on the exact state to 1e-12 rad
     pub entrainment_reversals: Vec<f64>,
@@ -172,7 +184,10 @@ impl LubricationReport {
         request: &LubricationRequest,
     ) -> Self {
         let sigma = composite_roughness(&request.surfaces[0], &request.surfaces[1]);
-        let beta = request.surfaces.map(|s| s.thermal_coefficient());
+        let beta = match request.surfaces.map(|s| s.thermal) {
+            [Some(a), Some(b)] => Some([a.coefficient(), b.coefficient()]),
+            _ => None,
+        };
         let point = |force: f64, radii: (f64, Option<f64>), u: [f64; 2]| -> LubricationPoint {
             let contact = LineContact {
                 surface_speeds: u,
@@ -197,11 +212,9 @@ impl LubricationReport {
                 lambda,
                 regime: lambda.map(regime),
                 friction_coefficient: mu,
-                flash_temperature: if force > 0.0 {
-                    blok_flash_temperature(&contact, mu, beta)
-                } else {
-                    None
-                },
+                flash_temperature: beta
+                    .filter(|_| force > 0.0)
+                    .and_then(|beta| blok_flash_temperature(&contact, mu, beta)),
                 friction_power: mu * force.max(0.0) * contact.sliding().abs(),
             }
         };
@@ -279,12 +292,15 @@ impl LubricationReport {
             }] += 1;
         }
         let loaded = counts.iter().sum::<usize>().max(1) as f64;
+        let closed = states.iter().any(|s| s.second.is_some());
         Self {
             request: *request,
             face_width,
             effective_modulus: e_prime,
             composite_roughness: sigma,
+            cam_angles: thetas.to_vec(),
             points,
+            closed,
             entrainment_reversals: reversals,
             min_lambda,
             max_flash_temperature,
@@ -294,4 +310,81 @@ impl LubricationReport {
             regime_shares: counts.map(|c| c as f64 / loaded),
         }
     }
+}
+
+impl LubricationReport {
+    /// The per-angle table (`lubrication.csv`): each column's name with its unit and its cell,
+    /// written once; a form-closed follower's second contact in `second_…` columns. A contact
+    /// that carries no force has empty cells.
+    pub fn table(&self) -> (Vec<String>, Vec<Vec<Cell>>) {
+        type Get = fn(&LubricationPoint) -> Cell;
+        let per_contact: [(&str, Get); 12] = [
+            ("entrainment_m_s", |p| Cell::Num(Some(p.entrainment))),
+            ("sliding_m_s", |p| Cell::Num(Some(p.sliding))),
+            ("slide_to_roll", |p| Cell::Num(p.slide_to_roll)),
+            ("load_N_per_m", |p| Cell::Num(Some(p.load_per_width))),
+            ("reduced_radius_m", |p| Cell::Num(p.reduced_radius)),
+            ("film_central_um", |p| {
+                Cell::Num(p.film.map(|f| f.central * 1e6))
+            }),
+            ("film_minimum_um", |p| {
+                Cell::Num(p.film.map(|f| f.minimum * 1e6))
+            }),
+            ("lambda", |p| Cell::Num(p.lambda)),
+            ("regime", |p| {
+                Cell::Text(p.regime.map(|r| r.name().to_string()))
+            }),
+            ("friction_coefficient", |p| {
+                Cell::Num(Some(p.friction_coefficient))
+            }),
+            ("flash_temperature_K", |p| Cell::Num(p.flash_temperature)),
+            ("friction_power_W", |p| Cell::Num(Some(p.friction_power))),
+        ];
+        let sides = if self.closed { 2 } else { 1 };
+        let mut columns = vec!["angle_deg".to_string()];
+        for side in 0..sides {
+            let prefix = if side == 0 { "" } else { "second_" };
+            columns.extend(per_contact.iter().map(|c| format!("{prefix}{}", c.0)));
+        }
+        let empty = |c: &Cell| match c {
+            Cell::Text(_) => Cell::Text(None),
+            _ => Cell::Num(None),
+        };
+        let rows = self
+            .cam_angles
+            .iter()
+            .zip(&self.points)
+            .map(|(t, p)| {
+                let mut row = vec![Cell::Num(Some(t.to_degrees()))];
+                for point in &p[..sides] {
+                    for (_, get) in &per_contact {
+                        row.push(match point {
+                            Some(q) => get(q),
+                            // the cell's kind from a contact that exists, emptied
+                            None => empty(&get(&LubricationPoint::EMPTY)),
+                        });
+                    }
+                }
+                row
+            })
+            .collect();
+        (columns, rows)
+    }
+}
+
+impl LubricationPoint {
+    /// A point with every value absent, for the kinds of a table's empty cells.
+    const EMPTY: Self = Self {
+        entrainment: 0.0,
+        sliding: 0.0,
+        slide_to_roll: None,
+        reduced_radius: None,
+        load_per_width: 0.0,
+        film: None,
+        lambda: None,
+        regime: None,
+        friction_coefficient: 0.0,
+        flash_temperature: None,
+        friction_power: 0.0,
+    };
 }

@@ -16,6 +16,9 @@ pub struct Material {
     pub e: f64,
     /// Poisson's ratio
     pub nu: f64,
+    /// thermal conductivity, density and specific heat, for the flash temperature (`None`: not
+    /// given)
+    pub thermal: Option<crate::lubrication::Thermal>,
 }
 
 /// Named materials: nominal handbook values, E in GPa and ν (ASM Handbook vol. 1 and 2; the
@@ -29,6 +32,22 @@ pub const PRESETS: [(&str, f64, f64); 8] = [
     ("ductile-iron", 169.0, 0.28),
     ("cast-iron", 100.0, 0.26),
     ("bronze", 110.0, 0.34),
+];
+
+/// The presets' thermal constants at room temperature, in [`PRESETS`]' order: conductivity
+/// W/(m·K), density kg/m³, specific heat J/(kg·K) (nominal handbook values, ASM Handbook vol. 1
+/// and 2: plain carbon steel 50, 7850, 470; AISI 52100 46.6, 7810, 475; AISI 4140 42.6, 7850,
+/// 473; AISI 1045 49.8, 7870, 486; 440C 24.2, 7800, 460; ductile iron 36, 7100, 506; grey iron
+/// 46, 7200, 490; phosphor bronze 69.6, 8860, 380).
+pub const THERMAL_PRESETS: [(f64, f64, f64); 8] = [
+    (50.0, 7850.0, 470.0),
+    (46.6, 7810.0, 475.0),
+    (42.6, 7850.0, 473.0),
+    (49.8, 7870.0, 486.0),
+    (24.2, 7800.0, 460.0),
+    (36.0, 7100.0, 506.0),
+    (46.0, 7200.0, 490.0),
+    (69.6, 8860.0, 380.0),
 ];
 
 /// The range of Young's modulus taken as plausible for a cam, follower or gear, Pa: from
@@ -54,7 +73,7 @@ pub enum MaterialError {
         text: String,
     },
     /// A key other than `E` and `nu`.
-    #[error("{text:?}: unknown key {key:?}: a material is E=<Pa>:nu=<ratio> (Young's modulus and Poisson's ratio), e.g. E=210e9:nu=0.3")]
+    #[error("{text:?}: unknown key {key:?}: a material is E=<Pa>:nu=<ratio> (Young's modulus and Poisson's ratio), with k=<W/(m·K)>:rho=<kg/m³>:c=<J/(kg·K)> for the flash temperature, e.g. E=210e9:nu=0.3:k=50:rho=7850:c=470")]
     UnknownKey {
         /// the text as written
         text: String,
@@ -99,11 +118,17 @@ impl FromStr for Material {
     type Err = MaterialError;
     fn from_str(s: &str) -> Result<Self, MaterialError> {
         let t = s.trim();
-        if let Some(&(n, e, nu)) = PRESETS.iter().find(|p| p.0 == t) {
+        if let Some(i) = PRESETS.iter().position(|p| p.0 == t) {
+            let ((n, e, nu), (k, rho, c)) = (PRESETS[i], THERMAL_PRESETS[i]);
             return Ok(Self {
                 name: n.into(),
                 e: e * 1e9,
                 nu,
+                thermal: Some(crate::lubrication::Thermal {
+                    conductivity: k,
+                    density: rho,
+                    specific_heat: c,
+                }),
             });
         }
         if !t.contains('=') {
@@ -112,6 +137,9 @@ impl FromStr for Material {
         let text = || t.to_string();
         let mut e: Option<(f64, &str)> = None;
         let mut nu: Option<(f64, &str)> = None;
+        let mut cond: Option<(f64, &str)> = None;
+        let mut rho: Option<(f64, &str)> = None;
+        let mut c: Option<(f64, &str)> = None;
         for part in t.split(':') {
             let Some((k, v)) = part.split_once('=') else {
                 return Err(MaterialError::Unknown { text: text() });
@@ -119,6 +147,9 @@ impl FromStr for Material {
             let (key, slot): (&'static str, &mut Option<(f64, &str)>) = match k.trim() {
                 "E" => ("E", &mut e),
                 "nu" => ("nu", &mut nu),
+                "k" => ("k", &mut cond),
+                "rho" => ("rho", &mut rho),
+                "c" => ("c", &mut c),
                 other => {
                     return Err(MaterialError::UnknownKey {
                         text: text(),
@@ -167,10 +198,48 @@ impl FromStr for Material {
                 value: nu_text.into(),
             });
         }
+        // the thermal constants: all three or none, each positive
+        let thermal = match (cond, rho, c) {
+            (None, None, None) => None,
+            (Some(k), Some(rho), Some(c)) => {
+                for (key, (v, v_text)) in [("k", k), ("rho", rho), ("c", c)] {
+                    if !(v.is_finite() && v > 0.0) {
+                        return Err(MaterialError::BadValue {
+                            text: text(),
+                            key,
+                            problem: if v_text.is_empty() {
+                                "is missing"
+                            } else {
+                                "must be a positive number"
+                            },
+                        });
+                    }
+                }
+                Some(crate::lubrication::Thermal {
+                    conductivity: k.0,
+                    density: rho.0,
+                    specific_heat: c.0,
+                })
+            }
+            (k, rho, _) => {
+                return Err(MaterialError::BadValue {
+                    text: text(),
+                    key: if k.is_none() {
+                        "k"
+                    } else if rho.is_none() {
+                        "rho"
+                    } else {
+                        "c"
+                    },
+                    problem: "is missing (the thermal constants k, rho and c are given together)",
+                })
+            }
+        };
         Ok(Self {
             name: format!("E = {} GPa, ν = {nu}", human(e / 1e9)),
             e,
             nu,
+            thermal,
         })
     }
 }
@@ -253,7 +322,13 @@ mod tests {
             ("E=5e-324:nu=0.3", "E = 5e-324 Pa"),
             ("E=inf:nu=0.3", "E = inf Pa"),
             ("E=NaN:nu=0.3", "E = NaN Pa"),
-            ("E=210e9:nu=0.3:rho=7800", "unknown key \"rho\""),
+            ("E=210e9:nu=0.3:rho=7800", "k is missing"),
+            ("E=210e9:nu=0.3:k=50:rho=7800", "c is missing"),
+            (
+                "E=210e9:nu=0.3:k=-50:rho=7800:c=470",
+                "k must be a positive number",
+            ),
+            ("E=210e9:nu=0.3:T=300", "unknown key \"T\""),
             ("E=210e9", "nu is missing"),
             ("E=210e9:E=200e9:nu=0.3", "E is given twice"),
             ("E=2l0e9:nu=0.3", "E is not a number"),

@@ -8,7 +8,7 @@ use camkin::cam::{Follower, FollowerCurve, Mechanism, Sense};
 use camkin::curve::Circle;
 use camkin::dynamics::{surface_speeds, FollowerDynamics};
 use camkin::geometry::rot90;
-use camkin::lubrication::{FilmFormula, Friction, Lubricant, Surface};
+use camkin::lubrication::{FilmFormula, Friction, Lubricant, Surface, Thermal};
 use camkin::report::{ForceReport, ForceRequest, LubricationRequest, Materials};
 use camkin::{Point2, Vec2};
 use std::f64::consts::TAU;
@@ -87,9 +87,11 @@ fn surface_speeds_agree_with_the_bodies_velocities_from_positions() {
 fn oil_request(friction: Friction) -> LubricationRequest {
     let steel = Surface {
         roughness: 0.2e-6,
-        conductivity: 46.0,
-        density: 7800.0,
-        specific_heat: 470.0,
+        thermal: Some(Thermal {
+            conductivity: 46.0,
+            density: 7800.0,
+            specific_heat: 470.0,
+        }),
     };
     LubricationRequest {
         lubricant: Lubricant {
