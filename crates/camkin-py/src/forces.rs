@@ -3,7 +3,10 @@
 use crate::columns::Columns;
 use crate::errors;
 use crate::mech::PyMechanism;
-use camkin::report::{ForceField, ForceReport, ForceRequest, Materials, ReportError};
+use camkin::lubrication::{FilmFormula, Friction, Lubricant, LubricantError, Surface};
+use camkin::report::{
+    ForceField, ForceReport, ForceRequest, LubricationRequest, Materials, ReportError,
+};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -16,6 +19,10 @@ fn keyword(field: ForceField) -> &'static str {
         ForceField::FaceWidth => "face_width",
         ForceField::Materials => "materials",
         ForceField::Allowable => "allowable_mpa",
+        ForceField::Viscosity | ForceField::PressureViscosity => "oil",
+        ForceField::Roughness => "roughness_um",
+        ForceField::Thermal => "materials",
+        ForceField::Friction => "friction",
         _ => "an argument",
     }
 }
@@ -54,9 +61,129 @@ fn materials(x: &Bound<'_, PyAny>) -> PyResult<Materials> {
         .map_err(|e| errors::input("materials", Some(text.clone()), format!("materials: {e}")))
 }
 
+/// The `repr` of a Python value, for messages.
+fn shown(x: &Bound<'_, PyAny>) -> String {
+    x.repr().map(|r| r.to_string()).unwrap_or_default()
+}
+
+/// A real number from `x` (an int or a float; not a string, a bool or a complex), named `name`.
+fn real(name: &str, x: &Bound<'_, PyAny>) -> PyResult<f64> {
+    let refuse = || {
+        let v = shown(x);
+        errors::input(
+            name,
+            Some(v.clone()),
+            format!("{name}: {v} is not a number"),
+        )
+    };
+    if x.is_instance_of::<pyo3::types::PyBool>() || x.is_instance_of::<pyo3::types::PyString>() {
+        return Err(refuse());
+    }
+    x.extract::<f64>().map_err(|_| refuse())
+}
+
+/// The lubrication the keywords ask for: `None` without ``oil``; ``roughness_um`` needed with
+/// it, and not without it.
+fn lubrication(
+    oil: Option<&Bound<'_, PyAny>>,
+    roughness_um: Option<&Bound<'_, PyAny>>,
+    film: &str,
+    friction: Option<&Bound<'_, PyAny>>,
+    materials: &Materials,
+) -> PyResult<Option<LubricationRequest>> {
+    let Some(oil) = oil else {
+        if let Some(r) = roughness_um {
+            return Err(errors::input(
+                "roughness_um",
+                Some(shown(r)),
+                "roughness_um: the surfaces' roughness is for the film's λ; give the lubricant with oil= (e.g. oil=\"sae-30@100c\")".into(),
+            ));
+        }
+        return Ok(None);
+    };
+    let oil_text = oil.extract::<String>().map_err(|_| {
+        let v = shown(oil);
+        errors::input(
+            "oil",
+            Some(v.clone()),
+            format!("oil: {v} is not a lubricant's name or \"eta=<Pa·s>:alpha=<1/Pa>\""),
+        )
+    })?;
+    let lubricant: Lubricant = oil_text.parse().map_err(|e: LubricantError| {
+        errors::input("oil", Some(oil_text.clone()), format!("oil: {e}"))
+    })?;
+    let Some(r) = roughness_um else {
+        return Err(errors::input(
+            "roughness_um",
+            None,
+            "oil: λ needs each surface's RMS roughness: give roughness_um=(CAM, FOLLOWER) in µm, e.g. (0.2, 0.3)".into(),
+        ));
+    };
+    let pair = r
+        .extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>()
+        .map_err(|_| {
+            let v = shown(r);
+            errors::input(
+                "roughness_um",
+                Some(v.clone()),
+                format!("roughness_um: {v} is not a pair (CAM, FOLLOWER) in µm, e.g. (0.2, 0.3)"),
+            )
+        })?;
+    let mut rq = [0.0; 2];
+    for (slot, x) in rq.iter_mut().zip([&pair.0, &pair.1]) {
+        let v = real("roughness_um", x)?;
+        if !(v > 0.0 && v <= 100.0) {
+            return Err(errors::input(
+                "roughness_um",
+                Some(shown(x)),
+                format!("roughness_um: {} µm is not a plausible roughness: Rq above 0 and at most 100 µm (a ground surface's is 0.1 to 0.5 µm; λ divides by it)", shown(x)),
+            ));
+        }
+        *slot = v * 1e-6;
+    }
+    let formula = FilmFormula::ALL
+        .into_iter()
+        .find(|f| f.name() == film)
+        .ok_or_else(|| {
+            errors::input(
+                "film",
+                Some(film.to_string()),
+                format!(
+                    "film: {film:?} is not a film formula: {}",
+                    FilmFormula::ALL.map(FilmFormula::name).join(" or ")
+                ),
+            )
+        })?;
+    let friction = match friction {
+        None => Friction::Mixed {
+            boundary: 0.1,
+            full_film: 0.03,
+        },
+        Some(f) => {
+            if let Ok((b, full)) = f.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
+                Friction::Mixed {
+                    boundary: real("friction", &b)?,
+                    full_film: real("friction", &full)?,
+                }
+            } else {
+                Friction::Constant(real("friction", f)?)
+            }
+        }
+    };
+    Ok(Some(LubricationRequest {
+        lubricant,
+        formula,
+        surfaces: [0, 1].map(|i| Surface {
+            roughness: rq[i],
+            thermal: [materials.cam.thermal, materials.follower.thermal][i],
+        }),
+        friction,
+    }))
+}
+
 #[pymethods]
 impl PyMechanism {
-    /// forces(*, step_deg=0.5, margin=0.0, target_rpm=None, face_width=None, materials="steel,steel", allowable_mpa=None)
+    /// forces(*, step_deg=0.5, margin=0.0, target_rpm=None, face_width=None, materials="steel,steel", allowable_mpa=None, oil=None, roughness_um=None, film="dowson-higginson", friction=(0.1, 0.03))
     ///
     /// The forces over a revolution under permanent contact (the file's ``[dynamics]``; friction
     /// neglected), as ``camkin forces`` computes them: the contact force (N), the camshaft torque
@@ -68,9 +195,17 @@ impl PyMechanism {
     /// and ``force_speed.csv`` as arrays (the same numbers, bit for bit), and the report's
     /// extremes, checks and sizing as a dict (SI units: angles in rad, speeds in rad/s).
     ///
+    /// With ``oil`` (a preset such as ``"sae-30@100c"``, or ``"eta=<Pa·s>:alpha=<1/Pa>"``),
+    /// ``roughness_um`` (the cam's and the follower's RMS roughness, µm) and ``face_width``, the
+    /// lubrication too: ``"lubrication"`` holds the columns of ``lubrication.csv`` (entrainment
+    /// and sliding m/s, film µm, λ, regime, friction, flash temperature K, friction power W) and
+    /// the report's ``"lubrication"`` its summary (smallest λ, entrainment reversals in rad,
+    /// flash temperature, friction power). ``film`` is ``"dowson-higginson"`` or ``"hamrock"``;
+    /// ``friction`` a coefficient or ``(boundary, full_film)`` (linear in λ from 1 to 3).
+    ///
     /// >>> r = camkin.Mechanism.from_toml("examples/paper-dynamics.toml").forces(face_width=10)
     /// >>> r["report"]["jump"]["speed"] * 60 / (2 * math.pi)   # rpm
-    #[pyo3(signature = (*, step_deg = 0.5, margin = 0.0, target_rpm = None, face_width = None, materials = None, allowable_mpa = None))]
+    #[pyo3(signature = (*, step_deg = 0.5, margin = 0.0, target_rpm = None, face_width = None, materials = None, allowable_mpa = None, oil = None, roughness_um = None, film = "dowson-higginson", friction = None))]
     #[allow(clippy::too_many_arguments)]
     fn forces<'py>(
         &self,
@@ -81,11 +216,16 @@ impl PyMechanism {
         face_width: Option<f64>,
         materials: Option<&Bound<'py, PyAny>>,
         allowable_mpa: Option<f64>,
+        oil: Option<&Bound<'py, PyAny>>,
+        roughness_um: Option<&Bound<'py, PyAny>>,
+        film: &str,
+        friction: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let materials = match materials {
             Some(m) => self::materials(m)?,
             None => Materials::default(),
         };
+        let lubrication = lubrication(oil, roughness_um, film, friction, &materials)?;
         let (built, params) = self.built_si("forces")?;
         let mech = built.mechanism;
         let req = ForceRequest {
@@ -97,7 +237,7 @@ impl PyMechanism {
             allowable_mpa,
             unit: built.length_unit,
             force_speed: true,
-            lubrication: None,
+            lubrication,
         };
         let value_of = |e: &ReportError| {
             match e.field() {
@@ -130,12 +270,20 @@ impl PyMechanism {
         let out = PyDict::new(py);
         out.set_item("columns", table(report.table())?)?;
         out.set_item("force_speed", table(report.force_speed_table())?)?;
+        if let Some(l) = &report.lubrication {
+            out.set_item("lubrication", table(l.table())?)?;
+        }
         // the rest of the report (its tables are the columns above)
         let mut v = serde_json::to_value(&report)
             .map_err(|e| errors::contact(format!("the report cannot be written: {e}")))?;
         if let Some(o) = v.as_object_mut() {
             for k in ["states", "stress_mpa", "force_speed", "coefficients"] {
                 o.remove(k);
+            }
+            if let Some(l) = o.get_mut("lubrication").and_then(|l| l.as_object_mut()) {
+                for k in ["points", "cam_angles"] {
+                    l.remove(k);
+                }
             }
         }
         let json = py.import("json")?;

@@ -112,3 +112,65 @@ def test_forces_need_a_dynamics_section():
     assert np.isfinite(
         camkin.Mechanism.from_toml(EXAMPLES / "paper-dynamics.toml").forces()["columns"]["camshaft_torque_N_m"]
     ).all()
+
+
+LUB = ["--face-width", "10", "--oil", "sae-30@100c", "--roughness", "0.2,0.3"]
+
+
+@pytest.mark.parametrize("name", DYNAMICS)
+def test_lubrication_equals_the_command_csv_bit_for_bit(tmp_path, name):
+    path = EXAMPLES / name
+    cli_forces(path, tmp_path, "--step", "1", *LUB, "--friction", "0.06")
+    cli = csv_columns((tmp_path / "lubrication.csv").read_text())
+    r = camkin.Mechanism.from_toml(path).forces(
+        step_deg=1.0, face_width=10.0, oil="sae-30@100c", roughness_um=(0.2, 0.3), friction=0.06
+    )
+    py = r["lubrication"]
+    assert list(py) == list(cli)
+    for col, cells in cli.items():
+        if col.endswith("regime"):
+            # text: the regime's name, empty (None) where the contact carries nothing
+            assert [x if x is not None else "" for x in py[col]] == cells, col
+        else:
+            same_cells(py[col], cells, col)
+    rep = r["report"]["lubrication"]
+    assert rep["request"]["friction"] == {"Constant": 0.06}
+    assert rep["composite_roughness"] == pytest.approx(math.hypot(0.2e-6, 0.3e-6), rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    "kw,field,needle",
+    [
+        ({"oil": "eta=-0.01:alpha=2e-8"}, "oil", "eta = -0.01"),
+        ({"oil": "eta=9000:alpha=2e-8"}, "oil", "mPa·s"),
+        ({"oil": 0.009}, "oil", "is not a lubricant's name"),
+        ({"oil": "castor"}, "oil", "is not a lubricant"),
+        ({"roughness_um": (0.0, 0.3)}, "roughness_um", "0.0 µm is not a plausible roughness"),
+        ({"roughness_um": ("0.2", 0.3)}, "roughness_um", "'0.2' is not a number"),
+        ({"roughness_um": (1j, 0.3)}, "roughness_um", "1j is not a number"),
+        ({"roughness_um": (None, 0.3)}, "roughness_um", "None is not a number"),
+        ({"roughness_um": (True, 0.3)}, "roughness_um", "True is not a number"),
+        ({"roughness_um": 0.2}, "roughness_um", "is not a pair"),
+        ({"roughness_um": None}, "roughness_um", "needs each surface's RMS roughness"),
+        ({"friction": 1.5}, "friction", "not a friction coefficient"),
+        ({"friction": "0.1"}, "friction", "is not a number"),
+        ({"film": "grubin"}, "film", "is not a film formula"),
+        ({"face_width": None}, "face_width", "lubrication needs the contact's face width"),
+    ],
+)
+def test_bad_lubrication_input_names_the_argument(kw, field, needle):
+    mech = camkin.Mechanism.from_toml(EXAMPLES / "eccentric-flat-dynamics.toml")
+    args = {"face_width": 10.0, "oil": "sae-30@100c", "roughness_um": (0.2, 0.3), **kw}
+    if args["roughness_um"] is None:
+        del args["roughness_um"]
+    with pytest.raises(camkin.InputError) as e:
+        mech.forces(**args)
+    assert e.value.field == field, e.value
+    assert needle in str(e.value), str(e.value)
+
+
+def test_roughness_without_an_oil_is_refused():
+    mech = camkin.Mechanism.from_toml(EXAMPLES / "eccentric-flat-dynamics.toml")
+    with pytest.raises(camkin.InputError) as e:
+        mech.forces(face_width=10.0, roughness_um=(0.2, 0.3))
+    assert e.value.field == "roughness_um"

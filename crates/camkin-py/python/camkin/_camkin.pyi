@@ -75,6 +75,10 @@ class Mechanism:
         face_width: Optional[float] = None,
         materials: Union[str, Tuple[str, str], None] = None,
         allowable_mpa: Optional[float] = None,
+        oil: Optional[str] = None,
+        roughness_um: Optional[Tuple[float, float]] = None,
+        film: str = "dowson-higginson",
+        friction: Union[float, Tuple[float, float], None] = None,
     ) -> Dict[str, Any]: ...
 
 class Curve:
