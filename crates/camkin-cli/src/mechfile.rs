@@ -134,10 +134,25 @@ pub fn load_with_spec(path: &Path) -> Result<(MechanismSpec, Built), InputError>
 pub fn load_dynamics(
     path: &Path,
 ) -> Result<(Mechanism, FollowerDynamics, camkin::spec::LengthUnit), InputError> {
+    load_forces(path).map(|(m, p, u, _)| (m, p, u))
+}
+
+/// [`load_dynamics`] and the file's `[lubrication]`, when it has one.
+pub fn load_forces(
+    path: &Path,
+) -> Result<
+    (
+        Mechanism,
+        FollowerDynamics,
+        camkin::spec::LengthUnit,
+        Option<camkin::spec::BuiltLubrication>,
+    ),
+    InputError,
+> {
     let (name, text) = read_text(path)?;
     let b = build(&text, &name, path.parent().unwrap_or(Path::new(".")), true)?;
     let unit = b.length_unit;
-    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: this command needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)")))?, unit))
+    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: this command needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)")))?, unit, b.lubrication))
 }
 
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);

@@ -87,11 +87,34 @@ fn real(name: &str, x: &Bound<'_, PyAny>) -> PyResult<f64> {
 fn lubrication(
     oil: Option<&Bound<'_, PyAny>>,
     roughness_um: Option<&Bound<'_, PyAny>>,
-    film: &str,
+    film: Option<&str>,
     friction: Option<&Bound<'_, PyAny>>,
     materials: &Materials,
+    file: Option<&camkin::spec::BuiltLubrication>,
 ) -> PyResult<Option<LubricationRequest>> {
     let Some(oil) = oil else {
+        // the file's [lubrication] is the default of every keyword: one given replaces its value
+        if let Some(f) = file {
+            let mut r = f.request;
+            if roughness_um.is_some() || film.is_some() || friction.is_some() {
+                let given = lubrication_keywords(roughness_um, film, friction)?;
+                if let Some(rq) = given.0 {
+                    for (s, v) in r.surfaces.iter_mut().zip(rq) {
+                        s.roughness = v;
+                    }
+                }
+                r.formula = given.1.unwrap_or(r.formula);
+                r.friction = given.2.unwrap_or(r.friction);
+            }
+            for (s, t) in r
+                .surfaces
+                .iter_mut()
+                .zip([materials.cam.thermal, materials.follower.thermal])
+            {
+                s.thermal = t;
+            }
+            return Ok(Some(r));
+        }
         if let Some(r) = roughness_um {
             return Err(errors::input(
                 "roughness_um",
@@ -112,64 +135,36 @@ fn lubrication(
     let lubricant: Lubricant = oil_text.parse().map_err(|e: LubricantError| {
         errors::input("oil", Some(oil_text.clone()), format!("oil: {e}"))
     })?;
-    let Some(r) = roughness_um else {
+    if roughness_um.is_none() {
+        if let Some(f) = file {
+            // the file's roughness with this oil
+            let given = lubrication_keywords(None, film, friction)?;
+            let mut r = f.request;
+            r.lubricant = lubricant;
+            r.formula = given.1.unwrap_or(r.formula);
+            r.friction = given.2.unwrap_or(r.friction);
+            for (s, t) in r
+                .surfaces
+                .iter_mut()
+                .zip([materials.cam.thermal, materials.follower.thermal])
+            {
+                s.thermal = t;
+            }
+            return Ok(Some(r));
+        }
         return Err(errors::input(
             "roughness_um",
             None,
             "oil: λ needs each surface's RMS roughness: give roughness_um=(CAM, FOLLOWER) in µm, e.g. (0.2, 0.3)".into(),
         ));
-    };
-    let pair = r
-        .extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>()
-        .map_err(|_| {
-            let v = shown(r);
-            errors::input(
-                "roughness_um",
-                Some(v.clone()),
-                format!("roughness_um: {v} is not a pair (CAM, FOLLOWER) in µm, e.g. (0.2, 0.3)"),
-            )
-        })?;
-    let mut rq = [0.0; 2];
-    for (slot, x) in rq.iter_mut().zip([&pair.0, &pair.1]) {
-        let v = real("roughness_um", x)?;
-        if !(v > 0.0 && v <= 100.0) {
-            return Err(errors::input(
-                "roughness_um",
-                Some(shown(x)),
-                format!("roughness_um: {} µm is not a plausible roughness: Rq above 0 and at most 100 µm (a ground surface's is 0.1 to 0.5 µm; λ divides by it)", shown(x)),
-            ));
-        }
-        *slot = v * 1e-6;
     }
-    let formula = FilmFormula::ALL
-        .into_iter()
-        .find(|f| f.name() == film)
-        .ok_or_else(|| {
-            errors::input(
-                "film",
-                Some(film.to_string()),
-                format!(
-                    "film: {film:?} is not a film formula: {}",
-                    FilmFormula::ALL.map(FilmFormula::name).join(" or ")
-                ),
-            )
-        })?;
-    let friction = match friction {
-        None => Friction::Mixed {
-            boundary: 0.1,
-            full_film: 0.03,
-        },
-        Some(f) => {
-            if let Ok((b, full)) = f.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
-                Friction::Mixed {
-                    boundary: real("friction", &b)?,
-                    full_film: real("friction", &full)?,
-                }
-            } else {
-                Friction::Constant(real("friction", f)?)
-            }
-        }
-    };
+    let (rq, formula, friction) = lubrication_keywords(roughness_um, film, friction)?;
+    let rq = rq.unwrap_or_default();
+    let from_file = file.map(|f| f.request);
+    let formula = formula.or(from_file.map(|f| f.formula)).unwrap_or_default();
+    let friction = friction
+        .or(from_file.map(|f| f.friction))
+        .unwrap_or(camkin::spec::DEFAULT_FRICTION);
     Ok(Some(LubricationRequest {
         lubricant,
         formula,
@@ -181,9 +176,78 @@ fn lubrication(
     }))
 }
 
+/// The roughness (m), film formula and friction keywords, each as given (`None`: not given).
+#[allow(clippy::type_complexity)]
+fn lubrication_keywords(
+    roughness_um: Option<&Bound<'_, PyAny>>,
+    film: Option<&str>,
+    friction: Option<&Bound<'_, PyAny>>,
+) -> PyResult<(Option<[f64; 2]>, Option<FilmFormula>, Option<Friction>)> {
+    let rq = match roughness_um {
+        None => None,
+        Some(r) => {
+            let pair = r
+                .extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>()
+                .map_err(|_| {
+                    let v = shown(r);
+                    errors::input(
+                        "roughness_um",
+                        Some(v.clone()),
+                        format!("roughness_um: {v} is not a pair (CAM, FOLLOWER) in µm, e.g. (0.2, 0.3)"),
+                    )
+                })?;
+            let mut rq = [0.0; 2];
+            for (slot, x) in rq.iter_mut().zip([&pair.0, &pair.1]) {
+                let v = real("roughness_um", x)?;
+                if !(v > 0.0 && v <= 100.0) {
+                    return Err(errors::input(
+                        "roughness_um",
+                        Some(shown(x)),
+                        format!("roughness_um: {} µm is not a plausible roughness: Rq above 0 and at most 100 µm (a ground surface's is 0.1 to 0.5 µm; λ divides by it)", shown(x)),
+                    ));
+                }
+                *slot = v * 1e-6;
+            }
+            Some(rq)
+        }
+    };
+    let formula = match film {
+        None => None,
+        Some(film) => Some(
+            FilmFormula::ALL
+                .into_iter()
+                .find(|f| f.name() == film)
+                .ok_or_else(|| {
+                    errors::input(
+                        "film",
+                        Some(film.to_string()),
+                        format!(
+                            "film: {film:?} is not a film formula: {}",
+                            FilmFormula::ALL.map(FilmFormula::name).join(" or ")
+                        ),
+                    )
+                })?,
+        ),
+    };
+    let friction = match friction {
+        None => None,
+        Some(f) => Some(
+            if let Ok((b, full)) = f.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
+                Friction::Mixed {
+                    boundary: real("friction", &b)?,
+                    full_film: real("friction", &full)?,
+                }
+            } else {
+                Friction::Constant(real("friction", f)?)
+            },
+        ),
+    };
+    Ok((rq, formula, friction))
+}
+
 #[pymethods]
 impl PyMechanism {
-    /// forces(*, step_deg=0.5, margin=0.0, target_rpm=None, face_width=None, materials="steel,steel", allowable_mpa=None, oil=None, roughness_um=None, film="dowson-higginson", friction=(0.1, 0.03))
+    /// forces(*, step_deg=0.5, margin=0.0, target_rpm=None, face_width=None, materials="steel,steel", allowable_mpa=None, oil=None, roughness_um=None, film=None, friction=None)
     ///
     /// The forces over a revolution under permanent contact (the file's ``[dynamics]``; friction
     /// neglected), as ``camkin forces`` computes them: the contact force (N), the camshaft torque
@@ -200,12 +264,14 @@ impl PyMechanism {
     /// lubrication too: ``"lubrication"`` holds the columns of ``lubrication.csv`` (entrainment
     /// and sliding m/s, film µm, λ, regime, friction, flash temperature K, friction power W) and
     /// the report's ``"lubrication"`` its summary (smallest λ, entrainment reversals in rad,
-    /// flash temperature, friction power). ``film`` is ``"dowson-higginson"`` or ``"hamrock"``;
-    /// ``friction`` a coefficient or ``(boundary, full_film)`` (linear in λ from 1 to 3).
+    /// flash temperature, friction power). ``film`` is ``"dowson-higginson"`` (default) or
+    /// ``"hamrock"``; ``friction`` a coefficient or ``(boundary, full_film)`` (linear in λ from 1
+    /// to 3; default ``(0.1, 0.03)``). A file's ``[lubrication]`` section gives every one of
+    /// these (and ``face_width``, ``materials``) that is not passed.
     ///
     /// >>> r = camkin.Mechanism.from_toml("examples/paper-dynamics.toml").forces(face_width=10)
     /// >>> r["report"]["jump"]["speed"] * 60 / (2 * math.pi)   # rpm
-    #[pyo3(signature = (*, step_deg = 0.5, margin = 0.0, target_rpm = None, face_width = None, materials = None, allowable_mpa = None, oil = None, roughness_um = None, film = "dowson-higginson", friction = None))]
+    #[pyo3(signature = (*, step_deg = 0.5, margin = 0.0, target_rpm = None, face_width = None, materials = None, allowable_mpa = None, oil = None, roughness_um = None, film = None, friction = None))]
     #[allow(clippy::too_many_arguments)]
     fn forces<'py>(
         &self,
@@ -218,15 +284,20 @@ impl PyMechanism {
         allowable_mpa: Option<f64>,
         oil: Option<&Bound<'py, PyAny>>,
         roughness_um: Option<&Bound<'py, PyAny>>,
-        film: &str,
+        film: Option<&str>,
         friction: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let materials = match materials {
-            Some(m) => self::materials(m)?,
-            None => Materials::default(),
-        };
-        let lubrication = lubrication(oil, roughness_um, film, friction, &materials)?;
         let (built, params) = self.built_si("forces")?;
+        // the file's [lubrication] gives what the keywords leave out
+        let file = built.lubrication.clone();
+        let materials = match (materials, &file) {
+            (Some(m), _) => self::materials(m)?,
+            (None, Some(f)) => f.materials.clone(),
+            (None, None) => Materials::default(),
+        };
+        let face_width = face_width.or(file.as_ref().map(|f| f.face_width));
+        let lubrication =
+            lubrication(oil, roughness_um, film, friction, &materials, file.as_ref())?;
         let mech = built.mechanism;
         let req = ForceRequest {
             step_deg,

@@ -174,3 +174,31 @@ def test_roughness_without_an_oil_is_refused():
     with pytest.raises(camkin.InputError) as e:
         mech.forces(face_width=10.0, roughness_um=(0.2, 0.3))
     assert e.value.field == "roughness_um"
+
+
+def test_a_lubrication_section_is_the_default_of_the_keywords(tmp_path):
+    text = (EXAMPLES / "eccentric-flat-dynamics.toml").read_text().replace(
+        "speed_rpm = 1380.0", "speed_rpm = 1000.0"
+    )
+    plain = tmp_path / "plain.toml"
+    plain.write_text(text)
+    with_section = tmp_path / "with.toml"
+    with_section.write_text(
+        text
+        + '\n[lubrication]\noil = "sae-30@100c"\nroughness_um = [0.2, 0.3]\nface_width = 10.0\n'
+        + 'friction = 0.07\nmaterials = "steel,bronze"\n'
+    )
+    kw = dict(face_width=10.0, oil="sae-30@100c", roughness_um=(0.2, 0.3), friction=0.07,
+              materials="steel,bronze")
+    a = camkin.Mechanism.from_toml(with_section).forces()["lubrication"]
+    b = camkin.Mechanism.from_toml(plain).forces(**kw)["lubrication"]
+    assert list(a) == list(b)
+    for col in a:
+        assert list(a[col]) == list(b[col]) or all(
+            (x != x and y != y) or x == y for x, y in zip(a[col], b[col])
+        ), col
+    # a keyword replaces the file's value
+    c = camkin.Mechanism.from_toml(with_section).forces(roughness_um=(0.4, 0.4))["lubrication"]
+    d = camkin.Mechanism.from_toml(plain).forces(**{**kw, "roughness_um": (0.4, 0.4)})["lubrication"]
+    assert np.array_equal(c["lambda"], d["lambda"], equal_nan=True)
+    assert not np.array_equal(a["lambda"], c["lambda"], equal_nan=True)

@@ -22,6 +22,8 @@ pub enum Field {
     FollowerConjugate(ProfileField),
     /// a field of `[dynamics]`
     Dynamics(DynamicsField),
+    /// a field of `[lubrication]`
+    Lubrication(LubricationField),
     /// a field of an element of a system file (`joint[2].bodies`)
     System(SystemField),
     /// a field of `[gear_pair]`
@@ -367,6 +369,26 @@ pub enum DynamicsField {
     Gravity,
 }
 
+/// Fields of `[lubrication]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum LubricationField {
+    /// the whole table
+    Table,
+    /// `oil`
+    Oil,
+    /// `roughness_um[i]` (0: the cam's, 1: the follower's)
+    RoughnessUm(usize),
+    /// `face_width`
+    FaceWidth,
+    /// `film`
+    Film,
+    /// `friction`
+    Friction,
+    /// `materials`
+    Materials,
+}
+
 impl Field {
     /// The table the field is in (`cam.profile` for `cam.profile.radius`).
     pub fn table(&self) -> Field {
@@ -378,6 +400,7 @@ impl Field {
             Field::FollowerProfile(_) => Field::FollowerProfile(ProfileField::Table),
             Field::FollowerConjugate(_) => Field::FollowerConjugate(ProfileField::Table),
             Field::Dynamics(_) => Field::Dynamics(DynamicsField::Table),
+            Field::Lubrication(_) => Field::Lubrication(LubricationField::Table),
             Field::GearPair(_) => Field::GearPair(GearPairField::Table),
             Field::System(f) => match f.key {
                 SystemKey::CurveA(_) => Field::System(SystemField {
@@ -433,6 +456,19 @@ impl Field {
             Field::Dynamics(f) => {
                 p.push(Name("dynamics"));
                 p.extend(f.name().map(Name));
+            }
+            Field::Lubrication(f) => {
+                p.push(Name("lubrication"));
+                use LubricationField as L;
+                match f {
+                    L::Table => {}
+                    L::Oil => p.push(Name("oil")),
+                    L::RoughnessUm(i) => p.extend([Name("roughness_um"), Index(i)]),
+                    L::FaceWidth => p.push(Name("face_width")),
+                    L::Film => p.push(Name("film")),
+                    L::Friction => p.push(Name("friction")),
+                    L::Materials => p.push(Name("materials")),
+                }
             }
             Field::GearPair(g) => {
                 p.push(Name("gear_pair"));

@@ -140,27 +140,31 @@ pub struct ForcesArgs {
     #[arg(long, value_name = "LENGTH", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub face_width: Option<f64>,
     /// Cam and follower materials for the contact stress: presets (steel, aisi-52100,
-    /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or `E=<Pa>:nu=<ν>`.
-    #[arg(long, value_name = "CAM,FOLLOWER", default_value = "steel,steel")]
-    pub materials: MaterialsArg,
+    /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or `E=<Pa>:nu=<ν>`
+    /// (with `:k=<W/(m·K)>:rho=<kg/m³>:c=<J/(kg·K)>` for the flash temperature) [default: the
+    /// file's [lubrication] materials, or steel,steel].
+    #[arg(long, value_name = "CAM,FOLLOWER")]
+    pub materials: Option<MaterialsArg>,
     /// Allowable contact stress, MPa: exit 3 when the stress exceeds it.
     #[arg(long, value_name = "MPA", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub allowable: Option<f64>,
     /// Lubricant at the contact's inlet temperature, for the film thickness, λ, the flash
     /// temperature and the friction (with --face-width and --roughness): a preset (sae-20@100c …
-    /// sae-50@100c, iso-vg-32@40c … iso-vg-320@40c) or `eta=<Pa·s>:alpha=<1/Pa>`.
+    /// sae-50@100c, iso-vg-32@40c … iso-vg-320@40c) or `eta=<Pa·s>:alpha=<1/Pa>` [default: the
+    /// file's [lubrication], whose values each of these flags replaces].
     #[arg(long, value_name = "OIL")]
     pub oil: Option<OilArg>,
     /// RMS roughness Rq of the cam's and the follower's surfaces, µm (with --oil).
     #[arg(long, value_name = "CAM,FOLLOWER")]
     pub roughness: Option<RoughnessArg>,
-    /// EHL film formula of a line contact: dowson-higginson or hamrock (Pan and Hamrock's).
-    #[arg(long, value_name = "FORMULA", default_value = "dowson-higginson")]
-    pub film: FilmArg,
+    /// EHL film formula of a line contact: dowson-higginson or hamrock (Pan and Hamrock's)
+    /// [default: the file's, or dowson-higginson].
+    #[arg(long, value_name = "FORMULA")]
+    pub film: Option<FilmArg>,
     /// Friction coefficient: `MU` throughout, or `BOUNDARY:FULL` (boundary lubrication at
-    /// λ ≤ 1, a full film at λ ≥ 3, linear in λ between).
-    #[arg(long, value_name = "MU", default_value = "0.1:0.03")]
-    pub friction: FrictionArg,
+    /// λ ≤ 1, a full film at λ ≥ 3, linear in λ between) [default: the file's, or 0.1:0.03].
+    #[arg(long, value_name = "MU")]
+    pub friction: Option<FrictionArg>,
     /// Directory for forces.csv, force_speed.csv and their plots (and lubrication.csv and its
     /// page with --oil).
     #[arg(long, value_name = "DIR")]
@@ -195,34 +199,54 @@ fn input_error(e: ReportError) -> Failure {
     })
 }
 
-/// The lubrication the flags ask for: `None` without --oil; --roughness needed with it, and
-/// neither --roughness, --film nor --friction without it.
-fn lubrication_request(args: &ForcesArgs) -> Result<Option<LubricationRequest>, Failure> {
-    let Some(oil) = args.oil else {
-        if args.roughness.is_some() {
+/// The lubrication the flags and the file's `[lubrication]` ask for, each flag replacing the
+/// file's value: `None` without an oil in either; --roughness needed with an oil, and none of
+/// --roughness, --film, --friction without one.
+fn lubrication_request(
+    args: &ForcesArgs,
+    file: Option<&camkin::spec::BuiltLubrication>,
+    materials: &Materials,
+) -> Result<Option<LubricationRequest>, Failure> {
+    let from_file = file.map(|f| f.request);
+    let Some(lubricant) = args.oil.map(|o| o.0).or(from_file.map(|f| f.lubricant)) else {
+        let stray = [
+            (args.roughness.is_some(), "--roughness"),
+            (args.film.is_some(), "--film"),
+            (args.friction.is_some(), "--friction"),
+        ];
+        if let Some((_, flag)) = stray.iter().find(|s| s.0) {
             return Err(Failure::Input(anyhow!(
-                "--roughness: the surfaces' roughness is for the film's λ; give the lubricant with --oil (e.g. --oil sae-30@100c)"
+                "{flag}: this is for the lubrication; give the lubricant with --oil (e.g. --oil sae-30@100c) or a [lubrication] section"
             )));
         }
         return Ok(None);
     };
-    let Some(RoughnessArg(rq)) = args.roughness else {
-        return Err(Failure::Input(anyhow!(
-            "--oil: λ needs each surface's RMS roughness: give --roughness CAM,FOLLOWER in µm (e.g. --roughness 0.2,0.3)"
-        )));
+    let rq = match (args.roughness, from_file) {
+        (Some(RoughnessArg(rq)), _) => rq,
+        (None, Some(f)) => f.surfaces.map(|s| s.roughness),
+        (None, None) => {
+            return Err(Failure::Input(anyhow!(
+                "--oil: λ needs each surface's RMS roughness: give --roughness CAM,FOLLOWER in µm (e.g. --roughness 0.2,0.3)"
+            )))
+        }
     };
-    let thermal = [
-        args.materials.0.cam.thermal,
-        args.materials.0.follower.thermal,
-    ];
+    let thermal = [materials.cam.thermal, materials.follower.thermal];
     Ok(Some(LubricationRequest {
-        lubricant: oil.0,
-        formula: args.film.0,
+        lubricant,
+        formula: args
+            .film
+            .map(|f| f.0)
+            .or(from_file.map(|f| f.formula))
+            .unwrap_or_default(),
         surfaces: [0, 1].map(|i| Surface {
             roughness: rq[i],
             thermal: thermal[i],
         }),
-        friction: args.friction.0,
+        friction: args
+            .friction
+            .map(|f| f.0)
+            .or(from_file.map(|f| f.friction))
+            .unwrap_or(camkin::spec::DEFAULT_FRICTION),
     }))
 }
 
@@ -233,18 +257,27 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
     if camkin::spec::text::is_system(&text) {
         return super::system_forces::run(args, &name, &text);
     }
-    let (mech, params, unit) =
-        mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    let (mech, params, unit, file) =
+        mechfile::load_forces(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     // the folder is checked before any work (a file in its place, an input in it, someone
     // else's files)
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
-    let lubrication = lubrication_request(args)?;
+    // the file's [lubrication] gives what the flags leave out
+    let materials = match (&args.materials, &file) {
+        (Some(m), _) => m.0.clone(),
+        (None, Some(f)) => f.materials.clone(),
+        (None, None) => Materials::default(),
+    };
+    let lubrication = lubrication_request(args, file.as_ref(), &materials)?;
+    let face_width = args
+        .face_width
+        .or_else(|| file.as_ref().map(|f| f.face_width));
     let req = ForceRequest {
         step_deg: args.step.deg(),
         margin: args.margin,
         target_rpm: args.target_rpm,
-        face_width: args.face_width,
-        materials: args.materials.0.clone(),
+        face_width,
+        materials,
         allowable_mpa: args.allowable,
         unit,
         force_speed: true,

@@ -23,9 +23,14 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
             camkin::human::human(w)
         )));
     }
-    if args.materials.0 != camkin::report::Materials::default() {
+    if args.materials.is_some() {
         return Err(bad(
             "--materials: a system's contacts take their materials in the file ([[contact]] materials = \"A,B\")".into(),
+        ));
+    }
+    if args.oil.is_some() || args.roughness.is_some() {
+        return Err(bad(
+            "--oil: a system's lubrication is not computed yet (a cam mechanism's is: camkin forces MECH.toml --oil …)".into(),
         ));
     }
     let built = super::system::load(&args.mechanism, name, text)?;

@@ -257,3 +257,88 @@ fn bad_lubrication_input_is_refused_naming_the_flag() {
         .code(2)
         .stderr(predicate::str::contains("--face-width"));
 }
+
+/// A `[lubrication]` section gives what the flags would (the same `lubrication.csv`, byte for
+/// byte), each flag replaces its value, and a bad value in it is refused at its place in the
+/// file (line and column), exit 2.
+#[test]
+fn a_lubrication_section_is_the_flags_in_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let disc = slow_disc(dir.path());
+    let with = dir.path().join("with.toml");
+    let section = "\n[lubrication]\noil = \"sae-30@100c\"\nroughness_um = [0.2, 0.3]\nface_width = 10.0\nfriction = [0.12, 0.04]\nmaterials = \"steel,bronze\"\n";
+    std::fs::write(&with, std::fs::read_to_string(&disc).unwrap() + section).unwrap();
+    let run = |file: &Path, args: &[&str], out: &str| {
+        camkin()
+            .arg("forces")
+            .arg(file)
+            .args(args)
+            .arg("--out")
+            .arg(dir.path().join(out))
+            .assert()
+            .success();
+        std::fs::read(dir.path().join(out).join("lubrication.csv")).unwrap()
+    };
+    let flags = run(
+        &disc,
+        &[
+            "--face-width",
+            "10",
+            "--oil",
+            "sae-30@100c",
+            "--roughness",
+            "0.2,0.3",
+            "--friction",
+            "0.12:0.04",
+            "--materials",
+            "steel,bronze",
+        ],
+        "flags",
+    );
+    assert_eq!(run(&with, &[], "file"), flags);
+    // a flag replaces the file's value
+    let other = run(&with, &["--roughness", "0.4,0.4"], "other");
+    assert_ne!(other, flags);
+    assert_eq!(
+        run(
+            &disc,
+            &[
+                "--face-width",
+                "10",
+                "--oil",
+                "sae-30@100c",
+                "--roughness",
+                "0.4,0.4",
+                "--friction",
+                "0.12:0.04",
+                "--materials",
+                "steel,bronze"
+            ],
+            "other-flags"
+        ),
+        other
+    );
+    // a bad value, placed in the file
+    let bad = dir.path().join("bad.toml");
+    std::fs::write(
+        &bad,
+        std::fs::read_to_string(&with)
+            .unwrap()
+            .replace("roughness_um = [0.2, 0.3]", "roughness_um = [0.2, -1]"),
+    )
+    .unwrap();
+    let lines = std::fs::read_to_string(&bad).unwrap();
+    let line = lines
+        .lines()
+        .position(|l| l.starts_with("roughness_um"))
+        .unwrap()
+        + 1;
+    camkin()
+        .arg("forces")
+        .arg(&bad)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(format!(
+            "bad.toml:{line}:22: lubrication.roughness_um[1] = -1"
+        )));
+}

@@ -77,7 +77,7 @@ class Mechanism:
         allowable_mpa: Optional[float] = None,
         oil: Optional[str] = None,
         roughness_um: Optional[Tuple[float, float]] = None,
-        film: str = "dowson-higginson",
+        film: Optional[str] = None,
         friction: Union[float, Tuple[float, float], None] = None,
     ) -> Dict[str, Any]: ...
 

@@ -75,6 +75,8 @@ pub struct Built {
     pub mechanism: Mechanism,
     /// the follower's dynamics, when the spec has them (SI units)
     pub dynamics: Option<FollowerDynamics>,
+    /// `[lubrication]`, when the spec has it
+    pub lubrication: Option<super::BuiltLubrication>,
     /// the unit of the spec's lengths
     pub length_unit: LengthUnit,
     /// what is valid but probably not meant (a front end shows them)
@@ -543,9 +545,15 @@ impl MechanismSpec {
             .as_ref()
             .map(|d| d.build(oscillating))
             .transpose()?;
+        let lubrication = self
+            .lubrication
+            .as_ref()
+            .map(super::LubricationSpec::build)
+            .transpose()?;
         Ok(Built {
             mechanism,
             dynamics,
+            lubrication,
             length_unit: unit,
             warnings,
         })

@@ -147,6 +147,7 @@ impl GearPairFile {
                 ..Default::default()
             },
             dynamics: self.dynamics.clone(),
+            lubrication: None,
             from_gear_pair: true,
         })
     }

@@ -42,6 +42,7 @@ mod built_system;
 mod coil_spring;
 mod gear_pair;
 mod kinds;
+mod lubrication;
 #[cfg(feature = "serde")]
 mod pair;
 mod profile;
@@ -59,6 +60,7 @@ pub use built_system::{BuiltSystem, SweepAngle, SweepError};
 pub use coil_spring::CoilSpringSpec;
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
+pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
 pub use system::{
     BodySpec, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
     TorsionSpringSpec,
@@ -92,6 +94,12 @@ pub struct MechanismSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub dynamics: Option<DynamicsSpec>,
+    /// `[lubrication]`: the force report's lubrication
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub lubrication: Option<LubricationSpec>,
     /// read from a `[gear_pair]` file ([`GearPairFile::to_mechanism`]): errors then name the
     /// `gear_pair` keys
     #[cfg_attr(feature = "serde", serde(skip))]
@@ -104,6 +112,7 @@ impl PartialEq for MechanismSpec {
             && self.cam == other.cam
             && self.follower == other.follower
             && self.dynamics == other.dynamics
+            && self.lubrication == other.lubrication
     }
 }
 

@@ -1,0 +1,164 @@
+//! `[lubrication]`: what the force report's lubrication needs, in the mechanism file.
+//!
+//! ```toml
+//! [lubrication]
+//! oil = "sae-30@100c"        # a preset, or "eta=<Pa·s>:alpha=<1/Pa>"
+//! roughness_um = [0.2, 0.3]  # RMS roughness Rq of the cam and the follower, µm
+//! face_width = 10.0          # the contact's width, in the file's length unit
+//! film = "dowson-higginson"  # or "hamrock" (optional)
+//! friction = [0.1, 0.03]     # boundary and full-film coefficients, or one coefficient (optional)
+//! materials = "steel,steel"  # the cam's and the follower's (optional)
+//! ```
+
+use super::SpecError;
+use crate::field::{Field, LubricationField as L};
+use crate::lubrication::{FilmFormula, Friction, Lubricant, Surface};
+use crate::report::{LubricationRequest, Materials};
+
+/// `[lubrication]` as written.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct LubricationSpec {
+    /// a preset oil or `eta=<Pa·s>:alpha=<1/Pa>`
+    pub oil: String,
+    /// the cam's and the follower's RMS roughness, µm
+    pub roughness_um: [f64; 2],
+    /// the contact's face width, in the file's length unit
+    pub face_width: f64,
+    /// `"dowson-higginson"` (default) or `"hamrock"`
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub film: Option<String>,
+    /// one coefficient, or `[boundary, full_film]` (default `[0.1, 0.03]`)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub friction: Option<FrictionSpec>,
+    /// `"CAM,FOLLOWER"` materials (default steel on steel)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub materials: Option<String>,
+}
+
+/// `friction`: one coefficient, or the mixed model's two.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(untagged))]
+pub enum FrictionSpec {
+    /// one coefficient throughout
+    Constant(f64),
+    /// `[boundary, full_film]`
+    Mixed([f64; 2]),
+}
+
+/// `[lubrication]` checked and built.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BuiltLubrication {
+    /// the request of the force report
+    pub request: LubricationRequest,
+    /// the face width, in the file's length unit
+    pub face_width: f64,
+    /// the materials
+    pub materials: Materials,
+}
+
+/// The friction model when none is given: boundary 0.1, full film 0.03.
+pub const DEFAULT_FRICTION: Friction = Friction::Mixed {
+    boundary: 0.1,
+    full_film: 0.03,
+};
+
+impl LubricationSpec {
+    /// Checks every value, naming its field, and builds the request.
+    pub fn build(&self) -> Result<BuiltLubrication, SpecError> {
+        let f = Field::Lubrication;
+        let lubricant: Lubricant =
+            self.oil
+                .parse()
+                .map_err(|e: crate::lubrication::LubricantError| SpecError::Rule {
+                    field: f(L::Oil),
+                    reason: e.to_string(),
+                })?;
+        let mut rq = [0.0; 2];
+        for (i, (slot, &v)) in rq.iter_mut().zip(&self.roughness_um).enumerate() {
+            if !(v > 0.0 && v <= 100.0) {
+                return Err(SpecError::Invalid {
+                    field: f(L::RoughnessUm(i)),
+                    value: crate::human::human(v),
+                    reason: "is not a plausible roughness: Rq in µm, above 0 and at most 100 (a ground surface's is 0.1 to 0.5 µm; λ divides by it)".into(),
+                });
+            }
+            *slot = v * 1e-6;
+        }
+        if !(self.face_width.is_finite() && self.face_width > 0.0) {
+            return Err(SpecError::Invalid {
+                field: f(L::FaceWidth),
+                value: crate::human::human(self.face_width),
+                reason: "must be positive (the file's length unit)".into(),
+            });
+        }
+        let formula = match self.film.as_deref() {
+            None => FilmFormula::default(),
+            Some(name) => FilmFormula::ALL
+                .into_iter()
+                .find(|x| x.name() == name)
+                .ok_or_else(|| SpecError::Unknown {
+                    field: f(L::Film),
+                    value: name.into(),
+                    what: "a film formula",
+                    known: FilmFormula::ALL.map(FilmFormula::name).join(", "),
+                })?,
+        };
+        let friction = match self.friction {
+            None => DEFAULT_FRICTION,
+            Some(FrictionSpec::Constant(mu)) => Friction::Constant(mu),
+            Some(FrictionSpec::Mixed([b, full])) => Friction::Mixed {
+                boundary: b,
+                full_film: full,
+            },
+        };
+        let mus = match friction {
+            Friction::Mixed {
+                boundary,
+                full_film,
+            } => [boundary, full_film],
+            Friction::Constant(mu) => [mu, mu],
+        };
+        if let Some(&bad) = mus.iter().find(|mu| !(0.0..=1.0).contains(*mu)) {
+            return Err(SpecError::Invalid {
+                field: f(L::Friction),
+                value: crate::human::human(bad),
+                reason: "is not a friction coefficient: from 0 to 1".into(),
+            });
+        }
+        let materials: Materials = match &self.materials {
+            None => Materials::default(),
+            Some(m) => m
+                .parse()
+                .map_err(|e: crate::report::MaterialError| SpecError::Rule {
+                    field: f(L::Materials),
+                    reason: e.to_string(),
+                })?,
+        };
+        let thermal = [materials.cam.thermal, materials.follower.thermal];
+        Ok(BuiltLubrication {
+            request: LubricationRequest {
+                lubricant,
+                formula,
+                surfaces: [0, 1].map(|i| Surface {
+                    roughness: rq[i],
+                    thermal: thermal[i],
+                }),
+                friction,
+            },
+            face_width: self.face_width,
+            materials,
+        })
+    }
+}
