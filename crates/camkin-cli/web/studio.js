@@ -159,6 +159,7 @@
     for (const p of S.plots || []) drawPlot(p);
     drawCompare();
     drawForce();
+    drawLubrication();
     $("angle-readout").textContent = `${fmt(angleAt(S.index), 4)}°`;
   }
 
@@ -473,7 +474,7 @@
       g.strokeStyle = "#bbb"; g.beginPath(); g.moveTo(L, Y(0)); g.lineTo(w - R, Y(0)); g.stroke();
     }
     g.textAlign = "left"; g.fillStyle = "#222"; g.font = "12px DejaVu Sans, sans-serif";
-    g.fillText(`${p.title} (${p.unit})`, L + 4, 12);
+    g.fillText(p.unit ? `${p.title} (${p.unit})` : p.title, L + 4, 12);
     // failed checks at their angles
     if (S.result && !p.noMarks) {
       // a light band over the plot and a solid strip under it, so the curve stays readable
@@ -614,6 +615,46 @@
       S.forcePlot = { canvas: $("force") };
       attachHover(S.forcePlot);
     }
+    if (!S.lubPlot) {
+      S.lubPlot = { canvas: $("lubrication") };
+      attachHover(S.lubPlot);
+    }
+  }
+
+  // the file's [lubrication] at the file's speed: λ on a log scale, shaded by regime
+  const REGIME_SHADES = ["rgba(214,39,40,0.16)", "rgba(240,180,40,0.18)", "rgba(44,160,44,0.14)"];
+  const REGIME_NAMES = ["boundary", "mixed", "full film"];
+  function drawLubrication() {
+    const d = S.result && S.result.dynamics;
+    const l = d && d.lubrication;
+    $("lubrication-box").hidden = !l;
+    if (!l || !S.lubPlot) return;
+    const parts = [];
+    if (l.min_lambda) parts.push(`λ min ${fmt(l.min_lambda[0], 4)} at ${fmt(l.min_lambda[1], 4)}° (${REGIME_NAMES[l.min_lambda[0] < 1 ? 0 : l.min_lambda[0] < 3 ? 1 : 2]})`);
+    if (l.max_flash_k) parts.push(`flash temperature max ${fmt(l.max_flash_k[0], 4)} K at ${fmt(l.max_flash_k[1], 4)}°`);
+    parts.push(l.entrainment_reversals_deg.length
+      ? `entrainment reverses at ${l.entrainment_reversals_deg.map((a) => fmt(a, 5) + "°").join(", ")}`
+      : "entrainment never reverses");
+    parts.push(`friction ${fmt(l.friction[0], 4)} W mean (${fmt(l.friction[1], 4)} N·m on the camshaft)`);
+    const sum = $("lubrication-summary");
+    sum.textContent = `Lubrication at the file's ${fmt(d.rpm, 4)} rpm: ${parts.join("; ")}.`;
+    sum.className = l.min_lambda && l.min_lambda[0] < 1 ? "bad" : "";
+    // a log scale where λ spans more than a decade
+    const ls = l.lambda.filter((v) => v !== null && v > 0);
+    const wide = ls.length > 0 && Math.max(...ls) > 10 * Math.min(...ls);
+    Object.assign(S.lubPlot, {
+      title: "λ = h_min / σ, shaded by regime: red boundary (λ < 1), amber mixed, green full film (λ ≥ 3)", unit: "", log: wide, noMarks: true,
+      series: [{ values: l.lambda, color: "#1f77b4", label: "λ" }],
+      shade: (g, X, Y, t, b) => {
+        const x = S.result.angles_deg, step = S.result.step_deg;
+        l.regime.forEach((r, i) => {
+          if (r === null) return;
+          g.fillStyle = REGIME_SHADES[r];
+          g.fillRect(X(x[i] - step / 2), t, Math.max(1, X(step) - X(0)), b - t);
+        });
+      },
+    });
+    drawPlot(S.lubPlot);
   }
 
   function forceAt(rpm) {

@@ -229,6 +229,30 @@ pub struct DynamicsOut {
     pub jump_angle_deg: Option<f64>,
     /// the force's unit (`N`)
     pub unit: &'static str,
+    /// the lubrication at the file's speed, when the file has `[lubrication]`
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lubrication: Option<LubricationOut>,
+}
+
+/// The lubrication the force panel draws (the file's `[lubrication]`, at the file's speed).
+#[derive(Debug, Serialize)]
+pub struct LubricationOut {
+    /// λ per angle (`null` where the contact carries nothing or is not a line contact)
+    pub lambda: Vec<Option<f64>>,
+    /// the regime per angle: 0 boundary, 1 mixed, 2 full film
+    pub regime: Vec<Option<u8>>,
+    /// the minimum film per angle, µm
+    pub film_minimum_um: Vec<Option<f64>>,
+    /// Blok's flash temperature per angle, K
+    pub flash_temperature_k: Vec<Option<f64>>,
+    /// the angles where the entrainment reverses, degrees
+    pub entrainment_reversals_deg: Vec<f64>,
+    /// the smallest λ and its angle (degrees)
+    pub min_lambda: Option<[f64; 2]>,
+    /// the largest flash temperature (K) and its angle (degrees)
+    pub max_flash_k: Option<[f64; 2]>,
+    /// the friction's mean power, W, and mean torque on the camshaft, N·m
+    pub friction: [f64; 2],
 }
 
 /// The analysis the studio shows.
@@ -593,14 +617,32 @@ fn dynamics(
     // the library's force report at the page's angles (it fails as a whole where an angle
     // fails: the analysis shows those angles)
     let step_deg = 360.0 / angles.len().max(1) as f64;
+    let lub = si.lubrication.as_ref();
     let req = ForceRequest {
         step_deg,
         force_speed: false,
-        lubrication: None,
+        lubrication: lub.map(|l| l.request),
+        face_width: lub.map(|l| l.face_width),
+        materials: lub.map(|l| l.materials.clone()).unwrap_or_default(),
+        unit: si.length_unit,
         ..ForceRequest::default()
     };
-    let Ok(report) = ForceReport::new(mech, params, &req) else {
-        return Ok(None);
+    // a [lubrication] this mechanism cannot take (a knife edge: no line contact) leaves the
+    // forces drawn without it (`camkin forces` says why)
+    let report = match ForceReport::new(mech, params, &req) {
+        Ok(r) => r,
+        Err(_) if req.lubrication.is_some() => {
+            let plain = ForceRequest {
+                lubrication: None,
+                face_width: None,
+                ..req
+            };
+            let Ok(r) = ForceReport::new(mech, params, &plain) else {
+                return Ok(None);
+            };
+            r
+        }
+        Err(_) => return Ok(None),
     };
     let coefficients = report
         .states
@@ -620,7 +662,43 @@ fn dynamics(
             .then(|| angles.get(jump.index).copied())
             .flatten(),
         unit: "N",
+        lubrication: report.lubrication.as_ref().map(lubrication_out),
     }))
+}
+
+fn lubrication_out(l: &camkin::report::LubricationReport) -> LubricationOut {
+    use camkin::lubrication::Regime;
+    let own = |get: &dyn Fn(&camkin::report::LubricationPoint) -> Option<f64>| {
+        l.points
+            .iter()
+            .map(|p| p[0].as_ref().and_then(get))
+            .collect()
+    };
+    let at = |e: camkin::report::Extreme| [e.value, e.cam_angle.to_degrees()];
+    LubricationOut {
+        lambda: own(&|p| p.lambda),
+        regime: l
+            .points
+            .iter()
+            .map(|p| {
+                p[0].and_then(|q| q.regime).map(|r| match r {
+                    Regime::Boundary => 0,
+                    Regime::Mixed => 1,
+                    _ => 2,
+                })
+            })
+            .collect(),
+        film_minimum_um: own(&|p| p.film.map(|f| f.minimum * 1e6)),
+        flash_temperature_k: own(&|p| p.flash_temperature),
+        entrainment_reversals_deg: l
+            .entrainment_reversals
+            .iter()
+            .map(|t| t.to_degrees())
+            .collect(),
+        min_lambda: l.min_lambda.map(at),
+        max_flash_k: l.max_flash_temperature.map(at),
+        friction: [l.mean_friction_power, l.mean_friction_torque],
+    }
 }
 
 /// The interpolation study (the paper's section 3) at `step_deg` for node counts `nodes`.

@@ -91,6 +91,11 @@ pub fn for_page(a: &mut Analysis) {
     for s in &mut a.series {
         series(&mut s.values);
     }
+    if let Some(l) = a.dynamics.as_mut().and_then(|d| d.lubrication.as_mut()) {
+        series(&mut l.lambda);
+        series(&mut l.film_minimum_um);
+        series(&mut l.flash_temperature_k);
+    }
 }
 
 /// The interpolation study for the page: its curves as the analysis' series (the exact one is

@@ -173,6 +173,31 @@ def test_the_speed_slider_shows_where_the_follower_jumps(serve, page):
     assert page.errors == []
 
 
+def test_a_lubrication_section_is_drawn_in_the_force_panel(serve, page, tmp_path):
+    # the eccentric disc at 1000 rpm (it stays on the cam) with SAE 30 at 100 °C: λ, shaded by
+    # regime, the command's numbers to the page's precision
+    text = (EXAMPLES / "eccentric-flat-dynamics.toml").read_text().replace(
+        "speed_rpm = 1380.0", "speed_rpm = 1000.0")
+    path = tmp_path / "lub.toml"
+    path.write_text(text + '\n[lubrication]\noil = "sae-30@100c"\nroughness_um = [0.2, 0.3]\nface_width = 10.0\n')
+    loaded(page, serve(path))
+    assert page.errors == []
+    assert page.locator("#lubrication-box").is_visible()
+    summary = page.locator("#lubrication-summary").inner_text()
+    assert "λ min" in summary and "flash temperature max" in summary, summary
+    assert inked(page, "#lubrication") > 2000
+    out = tmp_path / "out"
+    camkin("forces", path, "--step", str(page.evaluate("window.studio.result.step_deg")), "--out", out)
+    with open(out / "lubrication.csv") as f:
+        rows = list(csv.DictReader(f))
+    cli = [float(r["lambda"]) if r["lambda"] else None for r in rows]
+    assert at_page_precision(page.evaluate("window.studio.result.dynamics.lubrication.lambda"), cli)
+    page.locator("#dynamics-panel").screenshot(path=str(ROOT / "target" / "studio-lubrication.png"))
+    # without the section there is no lubrication box
+    loaded(page, serve(EXAMPLES / "paper-dynamics.toml"))
+    assert not page.locator("#lubrication-box").is_visible()
+
+
 import pytest  # noqa: E402
 
 
