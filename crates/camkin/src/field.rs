@@ -277,6 +277,12 @@ pub enum ProfileField {
     BaseRadius,
     /// `segments`
     Segments,
+    /// `nose_radius` (an arc cam's)
+    NoseRadius,
+    /// `lift` (an arc cam's)
+    Lift,
+    /// `flank_radius` (a circular-arc cam's)
+    FlankRadius,
     /// `segments[i].law`, `.rise` or `.degrees`
     Segment(usize, SegmentField),
     /// `module` (a gear's)
@@ -542,7 +548,7 @@ impl CamField {
 impl ProfileField {
     /// Every keyed field of a profile table: the one list of its keys (their names are
     /// [`ProfileField::name`]'s; the schema's serde names are checked equal to them).
-    pub const KEYED: [ProfileField; 24] = [
+    pub const KEYED: [ProfileField; 27] = [
         ProfileField::Kind,
         ProfileField::Points,
         ProfileField::Parameterization,
@@ -553,6 +559,9 @@ impl ProfileField {
         ProfileField::Path,
         ProfileField::BaseRadius,
         ProfileField::Segments,
+        ProfileField::NoseRadius,
+        ProfileField::Lift,
+        ProfileField::FlankRadius,
         ProfileField::Module,
         ProfileField::Teeth,
         ProfileField::PressureAngle,
@@ -585,6 +594,9 @@ impl ProfileField {
             ProfileField::Path => "path",
             ProfileField::BaseRadius => "base_radius",
             ProfileField::Segments => "segments",
+            ProfileField::NoseRadius => "nose_radius",
+            ProfileField::Lift => "lift",
+            ProfileField::FlankRadius => "flank_radius",
             ProfileField::Module => "module",
             ProfileField::Teeth => "teeth",
             ProfileField::PressureAngle => "pressure_angle_deg",

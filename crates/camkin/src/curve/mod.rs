@@ -13,6 +13,7 @@
 //! | [`Line`] | infinite straight line | arc length from its anchor point |
 //! | [`PointCurve`] | a single point (knife edge) | none |
 
+mod arcs_and_lines;
 mod circle;
 mod ellipse;
 mod involute_gear;
@@ -21,6 +22,7 @@ mod point;
 mod points_file;
 mod spline;
 
+pub use arcs_and_lines::{ArcsAndLines, ArcsError, Join, Piece};
 pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use involute_gear::{

@@ -61,6 +61,11 @@ kinds! {
         PointsFile = "points-file" [Path, Parameterization],
         /// a cam synthesised from a motion program for its follower
         Motion = "motion" [BaseRadius, Segments],
+        /// the textbook tangent cam: base circle, straight flanks, nose circle (exact arcs and
+        /// lines)
+        TangentCam = "tangent-cam" [BaseRadius, NoseRadius, Lift],
+        /// the textbook circular-arc cam: base circle, convex circular flanks, nose circle
+        CircularArcCam = "circular-arc-cam" [BaseRadius, NoseRadius, Lift, FlankRadius],
         /// an involute spur gear
         InvoluteGear = "involute-gear" [Module, Teeth, PressureAngle, Addendum, Dedendum,
             ProfileShift, Backlash, FilletRadius, TipRelief, TipReliefLength, TipReliefShape],

@@ -213,7 +213,7 @@ spec_table! {
     /// kind ([`ProfileKind`], by its name) decides which belong.
     pub struct ProfileSpec by ProfileField {
         /// the kind's name: `spline`, `circle`, `ellipse`, `points-file`, `motion`,
-        /// `involute-gear`, or a follower's `line` or `point`
+        /// `tangent-cam`, `circular-arc-cam`, `involute-gear`, or a follower's `line` or `point`
         pub kind: String,
         /// `spline`: the nodes, cam frame
         #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option_list"))]
@@ -234,10 +234,17 @@ spec_table! {
         rotation_deg: f64 => RotationDeg,
         /// `points-file`: a points file, relative to [`BuildOptions::base_dir`]
         path: String => Path,
-        /// `motion`: the base circle's radius
+        /// `motion`, `tangent-cam`, `circular-arc-cam`: the base circle's radius
         base_radius: f64 => BaseRadius,
         /// `motion`: the program's segments
         segments: Vec<SegmentSpec> => Segments,
+        /// `tangent-cam`, `circular-arc-cam`: the nose circle's radius
+        nose_radius: f64 => NoseRadius,
+        /// `tangent-cam`, `circular-arc-cam`: the lift, the nose's farthest point less the base
+        /// radius
+        lift: f64 => Lift,
+        /// `circular-arc-cam`: the flanks' radius
+        flank_radius: f64 => FlankRadius,
         /// `involute-gear`: the module
         module: f64 => Module,
         /// `involute-gear`: the number of teeth

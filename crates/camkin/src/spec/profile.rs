@@ -7,8 +7,8 @@ use super::{ProfileKind, ProfileSpec};
 use crate::cam::synthesis::synthesize;
 use crate::cam::{Follower, Sense};
 use crate::curve::{
-    read_points_file, Circle, ClosedSpline, Curve, CurveError, CurveField, Ellipse, InvoluteGear,
-    InvoluteGearSpec, Line, Parameterization, PointCurve, TipRelief, MAX_POINTS,
+    read_points_file, ArcsAndLines, Circle, ClosedSpline, Curve, CurveError, CurveField, Ellipse,
+    InvoluteGear, InvoluteGearSpec, Line, Parameterization, PointCurve, TipRelief, MAX_POINTS,
 };
 use crate::field::{Field, ProfileField, SegmentField};
 use crate::motion::{Law, Program, Segment};
@@ -249,6 +249,41 @@ impl ProfileSpec {
                         }
                     })?,
                 )
+            }
+            ProfileKind::TangentCam | ProfileKind::CircularArcCam => {
+                let get = |field: ProfileField, v: Option<f64>| -> Result<f64, SpecError> {
+                    length(f(field), need(kind_field, kind, f(field), v)?)
+                };
+                let base = get(P::BaseRadius, self.base_radius)?;
+                let nose = get(P::NoseRadius, self.nose_radius)?;
+                let lift = get(P::Lift, self.lift)?;
+                let flank = if k == ProfileKind::CircularArcCam {
+                    Some(get(P::FlankRadius, self.flank_radius)?)
+                } else {
+                    None
+                };
+                // in the file's unit (its messages quote the file's numbers), then scaled
+                let make = |x: f64| match flank {
+                    None => ArcsAndLines::tangent_cam(x * base, x * nose, x * lift),
+                    Some(r) => ArcsAndLines::circular_arc_cam(x * base, x * nose, x * lift, x * r),
+                };
+                if let Err(e) = make(1.0) {
+                    let field = if nose >= base {
+                        f(P::NoseRadius)
+                    } else if flank.is_some() {
+                        f(P::FlankRadius)
+                    } else {
+                        kind_field
+                    };
+                    return Err(SpecError::Rule {
+                        field,
+                        reason: e.to_string(),
+                    });
+                }
+                Arc::new(make(scale).map_err(|e| SpecError::Rule {
+                    field: kind_field,
+                    reason: e.to_string(),
+                })?)
             }
             ProfileKind::InvoluteGear => Arc::new(self.gear(scale, f)?),
             ProfileKind::Line => {

@@ -2,6 +2,7 @@
 //! than one per file).
 #![allow(clippy::unwrap_used)]
 
+mod arc_cams;
 mod build_work;
 mod circle_followers;
 mod common;
