@@ -283,6 +283,12 @@ pub enum ProfileField {
     Lift,
     /// `flank_radius` (a circular-arc cam's)
     FlankRadius,
+    /// `start` (an arcs-and-lines profile's first point)
+    Start,
+    /// `pieces`
+    Pieces,
+    /// `pieces[i]`, or its `to`, `centre` or `clockwise`
+    Piece(usize, PieceField),
     /// `segments[i].law`, `.rise` or `.degrees`
     Segment(usize, SegmentField),
     /// `module` (a gear's)
@@ -325,6 +331,31 @@ pub enum SegmentField {
     Rise,
     /// `degrees`
     Degrees,
+}
+
+/// Keys of a piece of an `arcs-and-lines` profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PieceField {
+    /// the piece as a whole
+    Table,
+    /// `to`
+    To,
+    /// `centre`
+    Centre,
+    /// `clockwise`
+    Clockwise,
+}
+
+impl PieceField {
+    fn name(self) -> Option<&'static str> {
+        Some(match self {
+            PieceField::Table => return None,
+            PieceField::To => "to",
+            PieceField::Centre => "centre",
+            PieceField::Clockwise => "clockwise",
+        })
+    }
 }
 
 /// Fields of `[follower]`.
@@ -452,6 +483,10 @@ impl Field {
                     ProfileField::Segment(i, s) => {
                         p.extend([Name("segments"), Index(i), Name(s.name())]);
                     }
+                    ProfileField::Piece(i, k) => {
+                        p.extend([Name("pieces"), Index(i)]);
+                        p.extend(k.name().map(Name));
+                    }
                     other => p.extend(other.name().map(Name)),
                 }
             }
@@ -508,6 +543,10 @@ impl Field {
                             ProfileField::Segment(i, s) => {
                                 p.extend([Name("segments"), Index(i), Name(s.name())]);
                             }
+                            ProfileField::Piece(i, k) => {
+                                p.extend([Name("pieces"), Index(i)]);
+                                p.extend(k.name().map(Name));
+                            }
                             other => p.extend(other.name().map(Name)),
                         }
                     }
@@ -548,7 +587,7 @@ impl CamField {
 impl ProfileField {
     /// Every keyed field of a profile table: the one list of its keys (their names are
     /// [`ProfileField::name`]'s; the schema's serde names are checked equal to them).
-    pub const KEYED: [ProfileField; 27] = [
+    pub const KEYED: [ProfileField; 29] = [
         ProfileField::Kind,
         ProfileField::Points,
         ProfileField::Parameterization,
@@ -562,6 +601,8 @@ impl ProfileField {
         ProfileField::NoseRadius,
         ProfileField::Lift,
         ProfileField::FlankRadius,
+        ProfileField::Start,
+        ProfileField::Pieces,
         ProfileField::Module,
         ProfileField::Teeth,
         ProfileField::PressureAngle,
@@ -581,9 +622,10 @@ impl ProfileField {
     /// The key's name (`None` for the table, and for indexed fields).
     pub fn name(self) -> Option<&'static str> {
         Some(match self {
-            ProfileField::Table | ProfileField::Point(_) | ProfileField::Segment(..) => {
-                return None
-            }
+            ProfileField::Table
+            | ProfileField::Point(_)
+            | ProfileField::Segment(..)
+            | ProfileField::Piece(..) => return None,
             ProfileField::Kind => "kind",
             ProfileField::Points => "points",
             ProfileField::Parameterization => "parameterization",
@@ -597,6 +639,8 @@ impl ProfileField {
             ProfileField::NoseRadius => "nose_radius",
             ProfileField::Lift => "lift",
             ProfileField::FlankRadius => "flank_radius",
+            ProfileField::Start => "start",
+            ProfileField::Pieces => "pieces",
             ProfileField::Module => "module",
             ProfileField::Teeth => "teeth",
             ProfileField::PressureAngle => "pressure_angle_deg",

@@ -66,6 +66,8 @@ kinds! {
         TangentCam = "tangent-cam" [BaseRadius, NoseRadius, Lift],
         /// the textbook circular-arc cam: base circle, convex circular flanks, nose circle
         CircularArcCam = "circular-arc-cam" [BaseRadius, NoseRadius, Lift, FlankRadius],
+        /// a chain of circular arcs and straight lines, exact, joined tangentially or at corners
+        ArcsAndLines = "arcs-and-lines" [Start, Pieces],
         /// an involute spur gear
         InvoluteGear = "involute-gear" [Module, Teeth, PressureAngle, Addendum, Dedendum,
             ProfileShift, Backlash, FilletRadius, TipRelief, TipReliefLength, TipReliefShape],

@@ -37,6 +37,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod arcs;
 mod build;
 mod built_system;
 mod coil_spring;
@@ -245,6 +246,11 @@ spec_table! {
         lift: f64 => Lift,
         /// `circular-arc-cam`: the flanks' radius
         flank_radius: f64 => FlankRadius,
+        /// `arcs-and-lines`: where the chain starts
+        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        start: [f64; 2] => Start,
+        /// `arcs-and-lines`: the chain, counter-clockwise round the cam
+        pieces: Vec<PieceSpec> => Pieces,
         /// `involute-gear`: the module
         module: f64 => Module,
         /// `involute-gear`: the number of teeth
@@ -277,6 +283,33 @@ spec_table! {
         #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
         at: [f64; 2] => At,
     }
+}
+
+/// One piece of a `kind = "arcs-and-lines"` profile: a line to `to`, or with `centre` an arc
+/// about it to `to` (counter-clockwise unless `clockwise`), from where the piece before ends.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct PieceSpec {
+    /// where the piece ends
+    #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::exact"))]
+    pub to: [f64; 2],
+    /// an arc's centre
+    #[cfg_attr(
+        feature = "serde",
+        serde(
+            default,
+            skip_serializing_if = "Option::is_none",
+            deserialize_with = "pair::option"
+        )
+    )]
+    pub centre: Option<[f64; 2]>,
+    /// an arc turning clockwise (concave on a counter-clockwise profile); default false
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub clockwise: Option<bool>,
 }
 
 /// One segment of a `kind = "motion"` profile.

@@ -285,6 +285,7 @@ impl ProfileSpec {
                     reason: e.to_string(),
                 })?)
             }
+            ProfileKind::ArcsAndLines => Arc::new(self.arcs_and_lines(scale, f, kind_field)?),
             ProfileKind::InvoluteGear => Arc::new(self.gear(scale, f)?),
             ProfileKind::Line => {
                 let a = point(f(P::Anchor), self.anchor.unwrap_or([0.0, 0.0]))?;

@@ -143,3 +143,79 @@ fn the_circular_arc_cam_under_a_flat_face_is_its_closed_form() {
         assert_close(st.position, RB + LIFT, 1e-12, RB, "full lift on the nose");
     }
 }
+
+fn built(text: &str) -> Result<camkin::cam::Mechanism, camkin::spec::text::TextError> {
+    use camkin::spec::text::{build_placed, parse_toml};
+    let spec = parse_toml(text, "p.toml")?;
+    build_placed(
+        &spec,
+        text,
+        "p.toml",
+        &camkin::spec::BuildOptions::default(),
+    )
+    .map(|b| b.0.mechanism)
+}
+
+const FOLLOWER: &str = "[follower]\nkind = \"translating-roller\"\ndirection = [1.0, 0.0]\noffset = 0.0\nroller_radius = 5.0\n";
+
+/// The tangent cam written out as `arcs-and-lines` pieces (its tangent points computed here from
+/// the circles' geometry) is the `tangent-cam` kind: the same motion at every angle (1e-12).
+#[test]
+fn arcs_and_lines_written_out_are_the_tangent_cam() {
+    let d = LIFT + RB - RN;
+    let psi = ((RB - RN) / d).acos();
+    let (c, s) = (psi.cos(), psi.sin());
+    let pieces = format!(
+        "start = [{bx}, {by}]\npieces = [\n  {{ to = [{bx}, {nby}], centre = [0.0, 0.0] }},\n  {{ to = [{nx}, {nny}] }},\n  {{ to = [{nx}, {ny}], centre = [{d}, 0.0] }},\n  {{ to = [{bx}, {by}] }},\n]\n",
+        bx = RB * c,
+        by = RB * s,
+        nby = -RB * s,
+        nx = d + RN * c,
+        ny = RN * s,
+        nny = -RN * s,
+    );
+    let head = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000.0\n";
+    let by_pieces = built(&format!(
+        "{head}[cam.profile]\nkind = \"arcs-and-lines\"\n{pieces}{FOLLOWER}"
+    ))
+    .unwrap();
+    let preset = built(&format!(
+        "{head}[cam.profile]\nkind = \"tangent-cam\"\nbase_radius = {RB}\nnose_radius = {RN}\nlift = {LIFT}\n{FOLLOWER}"
+    ))
+    .unwrap();
+    for k in 0..360 {
+        let t = f64::from(k).to_radians() + 0.001;
+        let (a, b) = (by_pieces.motion(t).unwrap(), preset.motion(t).unwrap());
+        assert_close(a.position, b.position, 1e-12, RB, "position");
+        assert_close(a.acceleration, b.acceleration, 1e-9, 1e6, "acceleration");
+    }
+}
+
+/// Pieces that do not make a profile are refused at the piece, with its line and column.
+#[test]
+fn pieces_that_do_not_join_are_refused_at_the_piece() {
+    let head = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000.0\n[cam.profile]\nkind = \"arcs-and-lines\"\nstart = [20.0, 0.0]\n";
+    for (pieces, path, needle) in [
+        (
+            "pieces = [\n  { to = [0.0, 20.0], centre = [0.0, 0.0] },\n  { to = [-20.0, 0.0], centre = [1.0, 0.0] },\n  { to = [20.0, 0.0] },\n]\n",
+            "cam.profile.pieces[1].centre",
+            "not the centre of an arc through both",
+        ),
+        (
+            "pieces = [\n  { to = [0.0, 20.0], centre = [0.0, 0.0] },\n  { to = [-20.0, 0.0], centre = [0.0, 0.0] },\n  { to = [0.0, -21.0] },\n]\n",
+            "cam.profile.pieces[2].to",
+            "does not close",
+        ),
+        (
+            "pieces = [\n  { to = [-20.0, 0.0], centre = [0.0, 0.0] },\n  { to = [20.0, 0.0], clockwise = true },\n]\n",
+            "cam.profile.pieces[1].clockwise",
+            "a line has no sense",
+        ),
+        ("pieces = [\n  { to = [20.0, 0.0], centre = [0.0, 0.0] },\n]\n", "cam.profile.pieces", "from 2 to"),
+    ] {
+        let e = built(&format!("{head}{pieces}{FOLLOWER}")).unwrap_err();
+        assert_eq!(e.path.as_deref(), Some(path), "{e:?}");
+        assert!(e.message.contains(needle), "{}", e.message);
+        assert!(e.at.is_some(), "placed: {e:?}");
+    }
+}
