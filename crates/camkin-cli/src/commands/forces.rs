@@ -142,7 +142,7 @@ pub struct ForcesArgs {
     /// Cam and follower materials for the contact stress: presets (steel, aisi-52100,
     /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or `E=<Pa>:nu=<ν>`
     /// (with `:k=<W/(m·K)>:rho=<kg/m³>:c=<J/(kg·K)>` for the flash temperature) [default: the
-    /// file's [lubrication] materials, or steel,steel].
+    /// file's `[lubrication]` materials, or steel,steel].
     #[arg(long, value_name = "CAM,FOLLOWER")]
     pub materials: Option<MaterialsArg>,
     /// Allowable contact stress, MPa: exit 3 when the stress exceeds it.
@@ -151,7 +151,7 @@ pub struct ForcesArgs {
     /// Lubricant at the contact's inlet temperature, for the film thickness, λ, the flash
     /// temperature and the friction (with --face-width and --roughness): a preset (sae-20@100c …
     /// sae-50@100c, iso-vg-32@40c … iso-vg-320@40c) or `eta=<Pa·s>:alpha=<1/Pa>` [default: the
-    /// file's [lubrication], whose values each of these flags replaces].
+    /// file's `[lubrication]`, whose values each of these flags replaces].
     #[arg(long, value_name = "OIL")]
     pub oil: Option<OilArg>,
     /// RMS roughness Rq of the cam's and the follower's surfaces, µm (with --oil).
