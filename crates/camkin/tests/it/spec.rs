@@ -388,7 +388,8 @@ fn the_schemas_keys_are_the_field_enums_names() {
         text += match name {
             "points" => "[[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]]}",
             "parameterization" => "\"uniform\"}",
-            "semi_axes" | "anchor" | "direction" | "at" => "[1.0, 0.5]}",
+            "semi_axes" | "anchor" | "direction" | "at" | "start" => "[1.0, 0.5]}",
+            "pieces" => "[]}",
             "path" => "\"x.csv\"}",
             "segments" => "[]}",
             "teeth" => "20}",

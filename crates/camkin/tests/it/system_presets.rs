@@ -77,7 +77,10 @@ fn differences(name: &str, text: &str) -> [f64; 7] {
                     }
                     _ => j[i].angular,
                 };
-                d[6] = d[6].max((sj - cj).abs() * scale / (w * w * w * size));
+                // relative to ω³·size, or to the jerk itself where it is larger (a tangent
+                // cam's steep flank: four times ω³·size, its rounding with it)
+                let jerk_scale = (w * w * w * size).max(cj.abs() * scale);
+                d[6] = d[6].max((sj - cj).abs() * scale / jerk_scale);
                 jerks += 1;
             }
             (Err(e), None) => {
