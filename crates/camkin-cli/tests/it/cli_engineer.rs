@@ -588,9 +588,21 @@ fn forces_refuses_implausible_materials_widths_and_outputs_up_front() {
                 "--face-width",
                 "10",
                 "--materials",
+                "steel,E=210e9:nu=0.3:T=300",
+            ],
+            vec!["--materials", "unknown key \"T\""],
+        ),
+        (
+            vec![
+                "--face-width",
+                "10",
+                "--materials",
                 "steel,E=210e9:nu=0.3:rho=7800",
             ],
-            vec!["--materials", "unknown key \"rho\""],
+            vec![
+                "--materials",
+                "k is missing (the thermal constants k, rho and c are given together)",
+            ],
         ),
         (
             vec!["--face-width", "1e-300"],
