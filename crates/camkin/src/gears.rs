@@ -160,14 +160,20 @@ pub fn contact_ratio(
 
 /// The contact ratio's formula, unchecked (negative when the path of contact is empty).
 fn path_over_pitch(driver: &InvoluteGear, driven: &InvoluteGear, centre_distance: f64) -> f64 {
+    let [start, end] = path_ends(driver, driven, centre_distance);
+    let pb = TAU * driver.base_radius() / f64::from(driver.teeth());
+    (end - start) / pb
+}
+
+/// The path of contact's ends, roll lengths on the driver from `T₁`: within both flanks'
+/// involutes.
+fn path_ends(driver: &InvoluteGear, driven: &InvoluteGear, centre_distance: f64) -> [f64; 2] {
     let (rb1, rb2) = (driver.base_radius(), driven.base_radius());
     let g = (centre_distance * centre_distance - (rb1 + rb2).powi(2)).sqrt();
     let roll = |r: f64, rb: f64| (r * r - rb * rb).max(0.0).sqrt();
-    let pb = TAU * rb1 / f64::from(driver.teeth());
-    // the contact's roll length on the driver, from T₁: within both flanks' involutes
     let end = roll(driver.tip_radius(), rb1).min(g - roll(driven.form_radius(), rb2));
     let start = (g - roll(driven.tip_radius(), rb2)).max(roll(driver.form_radius(), rb1));
-    (end - start) / pb
+    [start, end]
 }
 
 /// The tight-mesh (zero-backlash) centre distance of two external gears with equal base
@@ -328,6 +334,13 @@ impl GearPair {
     pub fn base_pitch(&self) -> f64 {
         TAU * self.driver.base_radius() / f64::from(self.driver.teeth())
     }
+    /// The path of contact's ends as roll lengths from the driver's base tangent point `T₁`
+    /// along the line of action: from where the driven gear's tip (or the driver's form circle)
+    /// meets the line to where the driver's tip (or the driven gear's form circle) does.
+    pub fn path_of_contact(&self) -> [f64; 2] {
+        path_ends(&self.driver, &self.driven, self.centre_distance())
+    }
+
     /// The nominal ratio `r_b1/r_b2 = z1/z2`.
     pub fn ratio(&self) -> f64 {
         self.driver.base_radius() / self.driven.base_radius()

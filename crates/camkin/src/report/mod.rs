@@ -13,6 +13,7 @@
 
 mod design;
 mod forces;
+mod gear_loads;
 mod lubrication;
 mod materials;
 mod system_forces;
@@ -22,6 +23,7 @@ pub use forces::{
     rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport, HertzSide, Jump,
     SpringSizing,
 };
+pub use gear_loads::{GearLoadError, GearLoadRequest, GearLoads, PathPoint};
 pub use lubrication::{LubricationPoint, LubricationReport, LubricationRequest};
 pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
 pub use system_forces::{AtAngle, ContactForces, DriverEffort, Impact, SystemForces};

@@ -24,6 +24,7 @@ mod eccentric_circle;
 mod ellipse_flat;
 mod extremes;
 mod forces;
+mod gear_loads;
 mod gear_mesh;
 #[cfg(feature = "text")]
 mod gear_pair_files;
