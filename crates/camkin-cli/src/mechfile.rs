@@ -137,6 +137,13 @@ pub fn load_dynamics(
     load_forces(path).map(|(m, p, u, _)| (m, p, u))
 }
 
+/// A mechanism file built in SI units (lengths in metres), `[dynamics]` or not, with its length
+/// unit and its `[lubrication]`.
+pub fn load_si(path: &Path) -> Result<Built, InputError> {
+    let (name, text) = read_text(path)?;
+    build(&text, &name, path.parent().unwrap_or(Path::new(".")), true)
+}
+
 /// [`load_dynamics`] and the file's `[lubrication]`, when it has one.
 pub fn load_forces(
     path: &Path,

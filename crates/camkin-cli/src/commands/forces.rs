@@ -165,8 +165,13 @@ pub struct ForcesArgs {
     /// λ ≤ 1, a full film at λ ≥ 3, linear in λ between) [default: the file's, or 0.1:0.03].
     #[arg(long, value_name = "MU")]
     pub friction: Option<FrictionArg>,
+    /// Torque on a gear pair's driver, N·m: the loads along the whole path of contact (the
+    /// normal force shared between the pairs in contact, Hertz with --face-width, the specific
+    /// sliding, and with --oil the film and flash temperature); no [dynamics] needed.
+    #[arg(long, value_name = "N_M", value_parser = crate::args::real, allow_negative_numbers = true)]
+    pub torque: Option<f64>,
     /// Directory for forces.csv, force_speed.csv and their plots (and lubrication.csv and its
-    /// page with --oil).
+    /// page with --oil; gear_loads.csv with --torque).
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     #[command(flatten)]
@@ -202,7 +207,7 @@ fn input_error(e: ReportError) -> Failure {
 /// The lubrication the flags and the file's `[lubrication]` ask for, each flag replacing the
 /// file's value: `None` without an oil in either; --roughness needed with an oil, and none of
 /// --roughness, --film, --friction without one.
-fn lubrication_request(
+pub(super) fn lubrication_request(
     args: &ForcesArgs,
     file: Option<&camkin::spec::BuiltLubrication>,
     materials: &Materials,
@@ -256,6 +261,9 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
         crate::mechfile::read_text(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     if camkin::spec::text::is_system(&text) {
         return super::system_forces::run(args, &name, &text);
+    }
+    if args.torque.is_some() {
+        return super::gear_loads::run(args, &name);
     }
     let (mech, params, unit, file) =
         mechfile::load_forces(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;

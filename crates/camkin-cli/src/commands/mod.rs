@@ -6,6 +6,7 @@ pub mod compare;
 pub mod contacts;
 pub mod deviation;
 pub mod forces;
+pub mod gear_loads;
 pub mod mesh;
 pub mod plot;
 pub mod profile;

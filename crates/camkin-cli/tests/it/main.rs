@@ -7,6 +7,7 @@ mod cli_conjugate;
 mod cli_contacts;
 mod cli_engineer;
 mod cli_files;
+mod cli_gear_loads;
 mod cli_lubrication;
 mod cli_mesh;
 mod cli_output;

@@ -234,3 +234,48 @@ impl GearLoads {
         Ok(Along::new(pair, omega, req)?.at(x))
     }
 }
+
+impl GearLoads {
+    /// The per-point table (`gear_loads.csv`): each column's name with its unit and its cell,
+    /// written once.
+    pub fn table(&self) -> (Vec<String>, Vec<Vec<crate::table::Cell>>) {
+        use crate::table::Cell;
+        type Get = fn(&PathPoint) -> Cell;
+        let columns: [(&str, Get); 16] = [
+            ("roll_length_m", |p| Cell::Num(Some(p.roll))),
+            ("driver_radius_m", |p| Cell::Num(Some(p.radius[0]))),
+            ("driven_radius_m", |p| Cell::Num(Some(p.radius[1]))),
+            ("pairs_in_contact", |p| Cell::Count(Some(p.pairs))),
+            ("load_N", |p| Cell::Num(Some(p.load))),
+            ("hertz_MPa", |p| {
+                Cell::Num(p.hertz.is_finite().then_some(p.hertz / 1e6))
+            }),
+            ("driver_speed_m_s", |p| Cell::Num(Some(p.surface_speeds[0]))),
+            ("driven_speed_m_s", |p| Cell::Num(Some(p.surface_speeds[1]))),
+            ("sliding_m_s", |p| Cell::Num(Some(p.sliding))),
+            ("specific_sliding_driver", |p| {
+                Cell::Num(p.specific_sliding[0])
+            }),
+            ("specific_sliding_driven", |p| {
+                Cell::Num(p.specific_sliding[1])
+            }),
+            ("film_minimum_um", |p| {
+                Cell::Num(p.film_minimum.map(|h| h * 1e6))
+            }),
+            ("lambda", |p| Cell::Num(p.lambda)),
+            ("regime", |p| {
+                Cell::Text(p.regime.map(|r| r.name().to_string()))
+            }),
+            ("flash_temperature_K", |p| Cell::Num(p.flash_temperature)),
+            ("curvature_radius_driver_m", |p| {
+                Cell::Num(Some(p.curvature_radius[0]))
+            }),
+        ];
+        let rows = self
+            .points
+            .iter()
+            .map(|p| columns.iter().map(|c| (c.1)(p)).collect())
+            .collect();
+        (columns.iter().map(|c| c.0.to_string()).collect(), rows)
+    }
+}

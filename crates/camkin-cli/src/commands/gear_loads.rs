@@ -1,0 +1,169 @@
+//! `camkin forces GEAR.toml --torque T`: a gear pair's loads along its whole path of contact
+//! (the library's [`camkin::report::GearLoads`]).
+
+use super::forces::{lubrication_request, ForcesArgs};
+use crate::forces_text::num;
+use crate::output::{write_atomic, write_cell_table, TableFormat};
+use crate::Failure;
+use anyhow::anyhow;
+use camkin::gears::GearPair;
+use camkin::report::{GearLoadRequest, GearLoads, Materials};
+
+/// Points along the path of contact.
+const POINTS: usize = 201;
+
+fn bad(msg: String) -> Failure {
+    Failure::Input(anyhow!(msg))
+}
+
+pub fn run(args: &ForcesArgs, name: &str) -> Result<(), Failure> {
+    let torque = args.torque.unwrap_or_default();
+    let built = crate::mechfile::load_si(&args.mechanism).map_err(|e| bad(e.to_string()))?;
+    let unit = built.length_unit;
+    let mech = &built.mechanism;
+    let Ok(pair) = GearPair::new(mech) else {
+        return Err(bad(format!(
+            "--torque {}: {name} is not a gear pair (a [gear_pair], or an involute-gear cam driving a rotating follower carrying one): a cam mechanism's forces come from its [dynamics]",
+            camkin::human::human(torque)
+        )));
+    };
+    for (given, flag) in [
+        (args.margin != 0.0, "--margin"),
+        (args.target_rpm.is_some(), "--target-rpm"),
+        (args.allowable.is_some(), "--allowable"),
+    ] {
+        if given {
+            return Err(bad(format!(
+                "{flag}: a gear pair's loads come from --torque (the spring and jump-speed checks are a cam's)"
+            )));
+        }
+    }
+    if !(torque.is_finite() && torque > 0.0) {
+        return Err(bad(format!(
+            "--torque {}: the torque on the driver must be positive (N·m)",
+            camkin::human::human(torque)
+        )));
+    }
+    let file = built.lubrication.as_ref();
+    let Some(width) = args.face_width.or(file.map(|f| f.face_width)) else {
+        return Err(bad(
+            "--face-width: the loads along the path need the teeth's face width (the file's length unit)"
+                .into(),
+        ));
+    };
+    let ratio = width * unit.metres() / mech.size();
+    if !(width > 0.0 && (1e-3..=1e3).contains(&ratio)) {
+        return Err(bad(format!(
+            "--face-width {} {}: must be positive and from 1e-3 to 1e3 times the gears' size",
+            camkin::human::human(width),
+            unit.name()
+        )));
+    }
+    let materials = match (&args.materials, file) {
+        (Some(m), _) => m.0.clone(),
+        (None, Some(f)) => f.materials.clone(),
+        (None, None) => Materials::default(),
+    };
+    let lubrication = lubrication_request(args, file, &materials)?;
+    if let Some(l) = &lubrication {
+        l.validate().map_err(|e| bad(format!("--oil: {e}")))?;
+    }
+    let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
+    let req = GearLoadRequest {
+        torque,
+        face_width: width * unit.metres(),
+        materials,
+        lubrication,
+        points: POINTS,
+    };
+    let omega = mech.cam().speed();
+    let loads = GearLoads::new(&pair, omega, &req).map_err(|e| bad(e.to_string()))?;
+    crate::out!("{}", summary(&loads, name, &req, unit))?;
+    if let Some(od) = od {
+        let (columns, rows) = loads.table();
+        write_atomic(Some(&od.path().join("gear_loads.csv")), |w| {
+            write_cell_table(w, TableFormat::Csv, &columns, rows)
+        })
+        .map_err(Failure::output)?;
+        let dir = od.commit().map_err(Failure::output)?;
+        crate::say!("camkin: wrote {}", dir.display());
+    }
+    Ok(())
+}
+
+fn summary(
+    l: &GearLoads,
+    name: &str,
+    req: &GearLoadRequest,
+    unit: camkin::spec::LengthUnit,
+) -> String {
+    let mm = |x: f64| format!("{} {}", num(x / unit.metres()), unit.name());
+    let eps = (l.path[1] - l.path[0]) / l.base_pitch;
+    let mut out = format!(
+        "loads on {name}: torque {} N·m on the driver, normal force T/r_b1 = {} N, face width {}, {} on {}\n",
+        num(req.torque),
+        num(l.normal_force),
+        mm(req.face_width),
+        req.materials.cam.name,
+        req.materials.follower.name,
+    );
+    out += &format!(
+        "path of contact: {} long along the line of action (contact ratio {}), from the driven gear's tip to the driver's; one pair carries the whole load over its middle {}, two pairs share it equally elsewhere (rigid teeth)\n",
+        mm(l.path[1] - l.path[0]),
+        num(eps),
+        mm(((2.0 - eps) * l.base_pitch).max(0.0)),
+    );
+    if let Some(worst) = l
+        .points
+        .iter()
+        .filter(|p| p.hertz.is_finite())
+        .max_by(|a, b| a.hertz.total_cmp(&b.hertz))
+    {
+        out += &format!(
+            "Hertz: max {} MPa at the driver's radius {} ({} pair{}); {} MPa at the pitch point\n",
+            num(worst.hertz / 1e6),
+            mm(worst.radius[0]),
+            worst.pairs,
+            if worst.pairs == 1 { "" } else { "s" },
+            num(l.at_pitch.hertz / 1e6),
+        );
+    }
+    let first = &l.points[0];
+    let last = &l.points[l.points.len() - 1];
+    let z = |x: Option<f64>| x.map_or("—".to_string(), num);
+    out += &format!(
+        "specific sliding: driver {} at its root (radius {}), driven {} at its root (radius {}); 0 at the pitch point\n",
+        z(first.specific_sliding[0]),
+        mm(first.radius[0]),
+        z(last.specific_sliding[1]),
+        mm(last.radius[1]),
+    );
+    if req.lubrication.is_some() {
+        let lam = l
+            .points
+            .iter()
+            .filter_map(|p| p.lambda.map(|x| (x, p.radius[0])))
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((x, r)) = lam {
+            out += &format!(
+                "lubrication: λ min {} at the driver's radius {} ({})\n",
+                num(x),
+                mm(r),
+                camkin::lubrication::regime(x).name()
+            );
+        }
+        if let Some((t, r)) = l
+            .points
+            .iter()
+            .filter_map(|p| p.flash_temperature.map(|t| (t, p.radius[0])))
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+        {
+            out += &format!(
+                "flash temperature (Blok): max {} K at the driver's radius {}\n",
+                num(t),
+                mm(r)
+            );
+        }
+    }
+    out
+}
