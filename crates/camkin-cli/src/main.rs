@@ -76,7 +76,7 @@ enum Command {
     #[command(
         after_help = "Examples:\n  camkin forces examples/eccentric-flat-dynamics.toml\n  camkin forces cam.toml --target-rpm 3000 --margin 20 --face-width 12 --materials steel,steel\n\nExit codes: 0 success, 1 internal failure, 2 bad input, 3 a check failed (contact lost below the target speed, stress over the allowable)."
     )]
-    Forces(forces::ForcesArgs),
+    Forces(Box<forces::ForcesArgs>),
     /// A measured profile (CMM points) against the design: radius, lift, velocity, acceleration.
     #[command(
         after_help = "Examples:\n  camkin deviation measured.csv --against cam.toml\n  camkin deviation measured.csv --against cam.toml --tolerance 0.002 --out dev\n\nThe points are smoothed by a Fourier series of the radius within --tolerance (the measurement's noise).\nExit codes: 0 success, 1 internal failure, 2 bad input."
