@@ -41,7 +41,7 @@ fn report_error(e: ReportError, value: Option<String>) -> PyErr {
 }
 
 /// Materials from ``"steel,bronze"`` or ``("steel", "E=210e9:nu=0.3")``.
-fn materials(x: &Bound<'_, PyAny>) -> PyResult<Materials> {
+pub(crate) fn materials(x: &Bound<'_, PyAny>) -> PyResult<Materials> {
     let text = if let Ok(s) = x.extract::<String>() {
         s
     } else if let Ok((a, b)) = x.extract::<(String, String)>() {
@@ -67,7 +67,7 @@ fn shown(x: &Bound<'_, PyAny>) -> String {
 }
 
 /// A real number from `x` (an int or a float; not a string, a bool or a complex), named `name`.
-fn real(name: &str, x: &Bound<'_, PyAny>) -> PyResult<f64> {
+pub(crate) fn real(name: &str, x: &Bound<'_, PyAny>) -> PyResult<f64> {
     let refuse = || {
         let v = shown(x);
         errors::input(
@@ -84,7 +84,7 @@ fn real(name: &str, x: &Bound<'_, PyAny>) -> PyResult<f64> {
 
 /// The lubrication the keywords ask for: `None` without ``oil``; ``roughness_um`` needed with
 /// it, and not without it.
-fn lubrication(
+pub(crate) fn lubrication(
     oil: Option<&Bound<'_, PyAny>>,
     roughness_um: Option<&Bound<'_, PyAny>>,
     film: Option<&str>,

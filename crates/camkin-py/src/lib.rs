@@ -6,6 +6,7 @@ mod columns;
 mod dict;
 mod errors;
 mod forces;
+mod gear_loads;
 mod geometry;
 mod mech;
 mod motion;

@@ -93,11 +93,9 @@ impl PyMechanism {
         }
     }
 
-    /// The mechanism built again in SI units with its `[dynamics]`, for `what` (`simulate`,
-    /// `forces`) that needs them.
-    pub fn built_si(&self, what: &str) -> PyResult<(Built, camkin::dynamics::FollowerDynamics)> {
-        let built = self
-            .spec
+    /// The mechanism built again in SI units (lengths in metres).
+    pub fn built_si_any(&self) -> PyResult<Built> {
+        self.spec
             .build(&BuildOptions {
                 base_dir: self.base_dir.clone(),
                 si: true,
@@ -105,7 +103,13 @@ impl PyMechanism {
                 // built once already, within the limits or with large=True
                 limits: camkin::work::Limits::NONE,
             })
-            .map_err(|e| errors::spec(&e))?;
+            .map_err(|e| errors::spec(&e))
+    }
+
+    /// The mechanism built again in SI units with its `[dynamics]`, for `what` (`simulate`,
+    /// `forces`) that needs them.
+    pub fn built_si(&self, what: &str) -> PyResult<(Built, camkin::dynamics::FollowerDynamics)> {
+        let built = self.built_si_any()?;
         let params = built.dynamics.ok_or_else(|| {
             errors::input(
                 "dynamics",

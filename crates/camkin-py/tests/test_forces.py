@@ -202,3 +202,41 @@ def test_a_lubrication_section_is_the_default_of_the_keywords(tmp_path):
     d = camkin.Mechanism.from_toml(plain).forces(**{**kw, "roughness_um": (0.4, 0.4)})["lubrication"]
     assert np.array_equal(c["lambda"], d["lambda"], equal_nan=True)
     assert not np.array_equal(a["lambda"], c["lambda"], equal_nan=True)
+
+
+def test_gear_loads_equal_the_command_csv_bit_for_bit(tmp_path):
+    path = EXAMPLES / "gear-pair-20-42.toml"
+    r = subprocess.run(
+        [camkin_bin(), "forces", str(path), "--torque", "50", "--face-width", "20",
+         "--oil", "iso-vg-220@40c", "--roughness", "0.4,0.4", "--out", str(tmp_path)],
+        capture_output=True, text=True,
+    )
+    assert r.returncode == 0, r.stderr
+    cli = csv_columns((tmp_path / "gear_loads.csv").read_text())
+    py = camkin.Mechanism.from_toml(path).gear_loads(
+        torque=50, face_width=20.0, oil="iso-vg-220@40c", roughness_um=(0.4, 0.4)
+    )
+    assert list(py["columns"]) == list(cli)
+    for col, cells in cli.items():
+        if col == "regime":
+            assert [x if x is not None else "" for x in py["columns"][col]] == cells
+        else:
+            same_cells(py["columns"][col], cells, col)
+    rb1 = 0.020 * math.cos(math.radians(20))
+    assert py["report"]["normal_force"] == pytest.approx(50 / rb1, rel=1e-13)
+
+
+@pytest.mark.parametrize(
+    "file,kw,field",
+    [
+        ("paper-dynamics.toml", {"torque": 5.0, "face_width": 1.0}, "torque"),
+        ("gear-pair-20-42.toml", {"torque": -5.0, "face_width": 20.0}, "torque"),
+        ("gear-pair-20-42.toml", {"torque": "5", "face_width": 20.0}, "torque"),
+        ("gear-pair-20-42.toml", {"torque": 5.0}, "face_width"),
+        ("gear-pair-20-42.toml", {"torque": 5.0, "face_width": 0.0}, "face_width"),
+    ],
+)
+def test_bad_gear_loads_name_the_argument(file, kw, field):
+    with pytest.raises(camkin.InputError) as e:
+        camkin.Mechanism.from_toml(EXAMPLES / file).gear_loads(**kw)
+    assert e.value.field == field, e.value

@@ -80,6 +80,18 @@ class Mechanism:
         film: Optional[str] = None,
         friction: Union[float, Tuple[float, float], None] = None,
     ) -> Dict[str, Any]: ...
+    def gear_loads(
+        self,
+        *,
+        torque: float,
+        face_width: Optional[float] = None,
+        materials: Union[str, Tuple[str, str], None] = None,
+        oil: Optional[str] = None,
+        roughness_um: Optional[Tuple[float, float]] = None,
+        film: Optional[str] = None,
+        friction: Union[float, Tuple[float, float], None] = None,
+        points: int = 201,
+    ) -> Dict[str, Any]: ...
 
 class Curve:
     @property
