@@ -167,7 +167,7 @@ pub struct ForcesArgs {
     pub friction: Option<FrictionArg>,
     /// Torque on a gear pair's driver, N·m: the loads along the whole path of contact (the
     /// normal force shared between the pairs in contact, Hertz with --face-width, the specific
-    /// sliding, and with --oil the film and flash temperature); no [dynamics] needed.
+    /// sliding, and with --oil the film and flash temperature); no `[dynamics]` needed.
     #[arg(long, value_name = "N_M", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub torque: Option<f64>,
     /// Directory for forces.csv, force_speed.csv and their plots (and lubrication.csv and its
