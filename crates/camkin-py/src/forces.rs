@@ -82,8 +82,9 @@ pub(crate) fn real(name: &str, x: &Bound<'_, PyAny>) -> PyResult<f64> {
     x.extract::<f64>().map_err(|_| refuse())
 }
 
-/// The lubrication the keywords ask for: `None` without ``oil``; ``roughness_um`` needed with
-/// it, and not without it.
+/// The lubrication the keywords and the file's `[lubrication]` ask for, each keyword replacing
+/// the file's value: `None` without an oil in either; a roughness needed with one, and not given
+/// without one.
 pub(crate) fn lubrication(
     oil: Option<&Bound<'_, PyAny>>,
     roughness_um: Option<&Bound<'_, PyAny>>,
@@ -92,29 +93,25 @@ pub(crate) fn lubrication(
     materials: &Materials,
     file: Option<&camkin::spec::BuiltLubrication>,
 ) -> PyResult<Option<LubricationRequest>> {
-    let Some(oil) = oil else {
-        // the file's [lubrication] is the default of every keyword: one given replaces its value
-        if let Some(f) = file {
-            let mut r = f.request;
-            if roughness_um.is_some() || film.is_some() || friction.is_some() {
-                let given = lubrication_keywords(roughness_um, film, friction)?;
-                if let Some(rq) = given.0 {
-                    for (s, v) in r.surfaces.iter_mut().zip(rq) {
-                        s.roughness = v;
-                    }
-                }
-                r.formula = given.1.unwrap_or(r.formula);
-                r.friction = given.2.unwrap_or(r.friction);
-            }
-            for (s, t) in r
-                .surfaces
-                .iter_mut()
-                .zip([materials.cam.thermal, materials.follower.thermal])
-            {
-                s.thermal = t;
-            }
-            return Ok(Some(r));
+    // the file's [lubrication] is the default of every keyword: one given replaces its value
+    let from_file = file.map(|f| f.request);
+    let lubricant = match oil {
+        Some(oil) => {
+            let text = oil.extract::<String>().map_err(|_| {
+                let v = shown(oil);
+                errors::input(
+                    "oil",
+                    Some(v.clone()),
+                    format!("oil: {v} is not a lubricant's name or \"eta=<Pa·s>:alpha=<1/Pa>\""),
+                )
+            })?;
+            Some(text.parse::<Lubricant>().map_err(|e: LubricantError| {
+                errors::input("oil", Some(text.clone()), format!("oil: {e}"))
+            })?)
         }
+        None => from_file.map(|f| f.lubricant),
+    };
+    let Some(lubricant) = lubricant else {
         if let Some(r) = roughness_um {
             return Err(errors::input(
                 "roughness_um",
@@ -124,55 +121,29 @@ pub(crate) fn lubrication(
         }
         return Ok(None);
     };
-    let oil_text = oil.extract::<String>().map_err(|_| {
-        let v = shown(oil);
-        errors::input(
-            "oil",
-            Some(v.clone()),
-            format!("oil: {v} is not a lubricant's name or \"eta=<Pa·s>:alpha=<1/Pa>\""),
-        )
-    })?;
-    let lubricant: Lubricant = oil_text.parse().map_err(|e: LubricantError| {
-        errors::input("oil", Some(oil_text.clone()), format!("oil: {e}"))
-    })?;
-    if roughness_um.is_none() {
-        if let Some(f) = file {
-            // the file's roughness with this oil
-            let given = lubrication_keywords(None, film, friction)?;
-            let mut r = f.request;
-            r.lubricant = lubricant;
-            r.formula = given.1.unwrap_or(r.formula);
-            r.friction = given.2.unwrap_or(r.friction);
-            for (s, t) in r
-                .surfaces
-                .iter_mut()
-                .zip([materials.cam.thermal, materials.follower.thermal])
-            {
-                s.thermal = t;
-            }
-            return Ok(Some(r));
-        }
-        return Err(errors::input(
-            "roughness_um",
-            None,
-            "oil: λ needs each surface's RMS roughness: give roughness_um=(CAM, FOLLOWER) in µm, e.g. (0.2, 0.3)".into(),
-        ));
-    }
     let (rq, formula, friction) = lubrication_keywords(roughness_um, film, friction)?;
-    let rq = rq.unwrap_or_default();
-    let from_file = file.map(|f| f.request);
-    let formula = formula.or(from_file.map(|f| f.formula)).unwrap_or_default();
-    let friction = friction
-        .or(from_file.map(|f| f.friction))
-        .unwrap_or(camkin::spec::DEFAULT_FRICTION);
+    let rq = match (rq, from_file) {
+        (Some(rq), _) => rq,
+        (None, Some(f)) => f.surfaces.map(|s| s.roughness),
+        (None, None) => {
+            return Err(errors::input(
+                "roughness_um",
+                None,
+                "oil: λ needs each surface's RMS roughness: give roughness_um=(CAM, FOLLOWER) in µm, e.g. (0.2, 0.3)".into(),
+            ))
+        }
+    };
+    let thermal = [materials.cam.thermal, materials.follower.thermal];
     Ok(Some(LubricationRequest {
         lubricant,
-        formula,
+        formula: formula.or(from_file.map(|f| f.formula)).unwrap_or_default(),
         surfaces: [0, 1].map(|i| Surface {
             roughness: rq[i],
-            thermal: [materials.cam.thermal, materials.follower.thermal][i],
+            thermal: thermal[i],
         }),
-        friction,
+        friction: friction
+            .or(from_file.map(|f| f.friction))
+            .unwrap_or(camkin::spec::DEFAULT_FRICTION),
     }))
 }
 
