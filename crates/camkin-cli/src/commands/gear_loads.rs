@@ -85,6 +85,7 @@ pub fn run(args: &ForcesArgs, name: &str) -> Result<(), Failure> {
             write_cell_table(w, TableFormat::Csv, &columns, rows)
         })
         .map_err(Failure::output)?;
+        charts(od.path(), &loads, unit).map_err(Failure::output)?;
         let dir = od.commit().map_err(Failure::output)?;
         crate::say!("camkin: wrote {}", dir.display());
     }
@@ -166,4 +167,57 @@ fn summary(
         }
     }
     out
+}
+
+/// The loads' pictures over the path of contact (the driver's radius on the axis): Hertz and
+/// the load a pair carries, and the specific sliding of each gear.
+fn charts(
+    dir: &std::path::Path,
+    l: &GearLoads,
+    unit: camkin::spec::LengthUnit,
+) -> anyhow::Result<()> {
+    use crate::draw::chart::{self, Chart, Series};
+    let x = |p: &camkin::report::PathPoint| p.radius[0] / unit.metres();
+    let series =
+        |name: &str, dashed, y: &dyn Fn(&camkin::report::PathPoint) -> Option<f64>| Series {
+            name: name.into(),
+            points: l
+                .points
+                .iter()
+                .map(|p| (x(p), y(p).unwrap_or(f64::NAN)))
+                .collect(),
+            dashed,
+        };
+    let x_label = format!(
+        "contact radius on the driver ({}): its root (left) to its tip",
+        unit.name()
+    );
+    chart::save(
+        &Chart {
+            title: "Hertz pressure along the path of contact (load shared equally where two pairs touch)".into(),
+            x_label: x_label.clone(),
+            y_label: "Hertz pressure (MPa)".into(),
+            series: vec![series("Hertz pressure", false, &|p| {
+                p.hertz.is_finite().then_some(p.hertz / 1e6)
+            })],
+            log_y: false,
+            x_range: None,
+        },
+        &dir.join("gear_hertz"),
+    )?;
+    chart::save(
+        &Chart {
+            title: "specific sliding along the path of contact".into(),
+            x_label,
+            y_label: "specific sliding (1)".into(),
+            series: vec![
+                series("driver (w1 - w2)/w1", false, &|p| p.specific_sliding[0]),
+                series("driven (w2 - w1)/w2", true, &|p| p.specific_sliding[1]),
+            ],
+            log_y: false,
+            x_range: None,
+        },
+        &dir.join("gear_specific_sliding"),
+    )?;
+    Ok(())
 }
