@@ -29,6 +29,13 @@ fn a_torque_loads_the_whole_path_of_contact() {
         )),
         "{text}"
     );
+    for f in [
+        "gear_hertz.png",
+        "gear_hertz.svg",
+        "gear_specific_sliding.png",
+    ] {
+        assert!(dir.path().join("out").join(f).exists(), "{f}");
+    }
     let (h, rows) =
         parse_csv(&std::fs::read(dir.path().join("out").join("gear_loads.csv")).unwrap());
     let c = columns(&h);
