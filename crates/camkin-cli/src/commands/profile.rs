@@ -69,6 +69,9 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
     })?;
     od.commit().map_err(Failure::output)?;
     crate::out!("{}", made.report)?;
+    if let Some(chain) = loaded.mech.cam().profile().as_arcs_and_lines() {
+        crate::out!("{}", joins(chain, loaded.unit.name()))?;
+    }
     crate::say!(
         "camkin: wrote {} files to {}",
         made.files.len(),
@@ -80,4 +83,40 @@ pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
         )));
     }
     Ok(())
+}
+
+/// An arcs-and-lines profile's joins: where each is (its point and polar angle), whether the
+/// tangent turns there (a corner) and the radius of curvature on either side.
+fn joins(chain: &camkin::curve::ArcsAndLines, unit: &str) -> String {
+    use camkin::curve::Curve;
+    let radius = |r: f64| {
+        if r.is_finite() {
+            format!("{} {unit}", crate::forces_text::num(r))
+        } else {
+            "∞ (a line)".to_string()
+        }
+    };
+    let mut out = String::from(
+        "joins of the arcs and lines (the radius of curvature jumps there, and so does the follower's acceleration):\n",
+    );
+    for j in chain.joins() {
+        let p = chain.position(j.param);
+        out += &format!(
+            "  at ({}, {}) {unit}, {}° round the axis: radius {} before, {} after; {}\n",
+            crate::forces_text::num(p.x),
+            crate::forces_text::num(p.y),
+            crate::forces_text::num(p.y.atan2(p.x).to_degrees().rem_euclid(360.0)),
+            radius(j.radius[0]),
+            radius(j.radius[1]),
+            if j.turn.abs() < 1e-9 {
+                "tangent".to_string()
+            } else {
+                format!(
+                    "a corner of {}°",
+                    crate::forces_text::num(j.turn.to_degrees())
+                )
+            }
+        );
+    }
+    out
 }

@@ -2,6 +2,7 @@
 #![allow(clippy::unwrap_used)]
 
 mod cli_analyze;
+mod cli_arc_cams;
 mod cli_bad_input;
 mod cli_conjugate;
 mod cli_contacts;

@@ -386,6 +386,9 @@ fn check_preset(base: f64, nose: f64, lift: f64) -> Result<f64, ArcsError> {
 }
 
 impl Curve for ArcsAndLines {
+    fn as_arcs_and_lines(&self) -> Option<&ArcsAndLines> {
+        Some(self)
+    }
     fn eval(&self, u: f64) -> Derivs {
         let (k, s) = self.piece_at(u);
         self.pieces[k].eval(s)

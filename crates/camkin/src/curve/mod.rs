@@ -152,6 +152,11 @@ pub trait Curve: std::fmt::Debug + Send + Sync {
         None
     }
 
+    /// The curve as a chain of arcs and lines, when it is one (its joins are reported).
+    fn as_arcs_and_lines(&self) -> Option<&ArcsAndLines> {
+        None
+    }
+
     /// `r(u)`.
     fn position(&self, u: f64) -> Point2 {
         self.eval(u).p
