@@ -151,7 +151,8 @@ pub struct LubricationReport {
     /// the follower is form-closed: the table has the second contact's columns
     pub closed: bool,
     /// the cam angles (rad, ascending) where the own contact's entrainment changes sign, each
-    /// located by bisection on the exact state to 1e-12 rad
+    /// located by bisection on the exact state to 1e-12 rad (to the bracket reached, should the
+    /// state fail to be found inside one sample step)
     pub entrainment_reversals: Vec<f64>,
     /// the smallest λ and where (over the own contact's loaded angles)
     pub min_lambda: Option<Extreme>,
@@ -249,12 +250,15 @@ impl LubricationReport {
             if ea * eb < 0.0 {
                 let (mut lo, mut hi) = (thetas[a], if b == 0 { TAU } else { thetas[b] });
                 let mut elo = ea;
+                // one warm sweep through the bisection (each point within a sample of the last)
+                let mut sweep = forces.sweep();
                 while hi - lo > REVERSAL_TOLERANCE {
                     let mid = 0.5 * (lo + hi);
                     if mid <= lo || mid >= hi {
                         break;
                     }
-                    let Ok(s) = forces.at(mid) else { break };
+                    // where the exact state cannot be had, the bracket so far
+                    let Ok(s) = sweep.step(mid) else { break };
                     let e = entrainment(&s);
                     if e == 0.0 {
                         (lo, hi) = (mid, mid);
