@@ -165,12 +165,7 @@ fn lubrication(l: &LubricationReport) -> String {
                 angle(m.cam_angle),
                 regime(m.value).name()
             );
-            let thinnest = l
-                .points
-                .iter()
-                .zip(&l.cam_angles)
-                .filter_map(|(p, &t)| p[0].and_then(|q| q.film).map(|f| (f.minimum, t)))
-                .min_by(|a, b| a.0.total_cmp(&b.0));
+            let thinnest = l.thinnest_film.map(|e| (e.value, e.cam_angle));
             if let Some((h, t)) = thinnest {
                 out += &format!(
                     "  film: thinnest h_min {} µm at {}\n",

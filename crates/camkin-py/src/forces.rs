@@ -170,14 +170,17 @@ fn lubrication_keywords(
             let mut rq = [0.0; 2];
             for (slot, x) in rq.iter_mut().zip([&pair.0, &pair.1]) {
                 let v = real("roughness_um", x)?;
-                if !(v > 0.0 && v <= 100.0) {
-                    return Err(errors::input(
+                *slot = camkin::lubrication::roughness_from_um(v).ok_or_else(|| {
+                    errors::input(
                         "roughness_um",
                         Some(shown(x)),
-                        format!("roughness_um: {} µm is not a plausible roughness: Rq above 0 and at most 100 µm (a ground surface's is 0.1 to 0.5 µm; λ divides by it)", shown(x)),
-                    ));
-                }
-                *slot = v * 1e-6;
+                        format!(
+                            "roughness_um: {} µm {}",
+                            shown(x),
+                            camkin::lubrication::ROUGHNESS_RULE
+                        ),
+                    )
+                })?;
             }
             Some(rq)
         }

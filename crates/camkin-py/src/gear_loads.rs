@@ -59,6 +59,19 @@ impl PyMechanism {
                 )
             })?,
         };
+        if !(width > 0.0
+            && camkin::report::plausible_face_width(width * unit.metres(), mech.size()))
+        {
+            return Err(errors::input(
+                "face_width",
+                Some(camkin::human::human(width)),
+                format!(
+                    "face_width: {} {} must be positive and from 1e-3 to 1e3 times the gears' size",
+                    camkin::human::human(width),
+                    unit.name()
+                ),
+            ));
+        }
         let materials = match (materials, &file) {
             (Some(m), _) => self::materials(m)?,
             (None, Some(f)) => f.materials.clone(),

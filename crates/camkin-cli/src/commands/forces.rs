@@ -9,7 +9,10 @@ use crate::mechfile;
 use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::lubrication::{FilmFormula, Friction, Lubricant, LubricantError, Surface};
+use camkin::lubrication::{
+    plausible_friction, roughness_from_um, FilmFormula, Friction, Lubricant, LubricantError,
+    Surface, FRICTION_RULE, ROUGHNESS_RULE,
+};
 use camkin::report::{
     rpm, ForceField, ForceReport, ForceRequest, LubricationRequest, Materials, ReportError,
 };
@@ -57,13 +60,7 @@ impl FromStr for RoughnessArg {
             let v: f64 = t
                 .parse()
                 .map_err(|_| format!("{t:?} is not a number (µm)"))?;
-            if v > 0.0 && v <= 100.0 {
-                Ok(v * 1e-6)
-            } else {
-                Err(format!(
-                    "{t} µm is not a plausible roughness: Rq above 0 and at most 100 µm (a ground surface's is 0.1 to 0.5 µm; λ divides by it)"
-                ))
-            }
+            roughness_from_um(v).ok_or_else(|| format!("{t} µm {ROUGHNESS_RULE}"))
         };
         Ok(Self([one(a)?, one(b)?]))
     }
@@ -80,8 +77,8 @@ impl FromStr for FrictionArg {
         let one = |t: &str| -> Result<f64, String> {
             let t = t.trim();
             match t.parse::<f64>() {
-                Ok(v) if (0.0..=1.0).contains(&v) => Ok(v),
-                Ok(_) => Err(format!("{t} is not a friction coefficient: from 0 to 1")),
+                Ok(v) if plausible_friction(v) => Ok(v),
+                Ok(_) => Err(format!("{t} {FRICTION_RULE}")),
                 Err(_) => Err(format!("{t:?} is not a number")),
             }
         };

@@ -51,8 +51,7 @@ pub fn run(args: &ForcesArgs, name: &str) -> Result<(), Failure> {
                 .into(),
         ));
     };
-    let ratio = width * unit.metres() / mech.size();
-    if !(width > 0.0 && (1e-3..=1e3).contains(&ratio)) {
+    if !(width > 0.0 && camkin::report::plausible_face_width(width * unit.metres(), mech.size())) {
         return Err(bad(format!(
             "--face-width {} {}: must be positive and from 1e-3 to 1e3 times the gears' size",
             camkin::human::human(width),
@@ -114,12 +113,7 @@ fn summary(
         num(eps),
         mm(((2.0 - eps) * l.base_pitch).max(0.0)),
     );
-    if let Some(worst) = l
-        .points
-        .iter()
-        .filter(|p| p.hertz.is_finite())
-        .max_by(|a, b| a.hertz.total_cmp(&b.hertz))
-    {
+    if let Some(worst) = l.max_hertz.map(|i| &l.points[i]) {
         out += &format!(
             "Hertz: max {} MPa at the driver's radius {} ({} pair{}); {} MPa at the pitch point\n",
             num(worst.hertz / 1e6),
@@ -139,32 +133,21 @@ fn summary(
         z(last.specific_sliding[1]),
         mm(last.radius[1]),
     );
-    if req.lubrication.is_some() {
-        let lam = l
-            .points
-            .iter()
-            .filter_map(|p| p.lambda.map(|x| (x, p.radius[0])))
-            .min_by(|a, b| a.0.total_cmp(&b.0));
-        if let Some((x, r)) = lam {
-            out += &format!(
-                "lubrication: λ min {} at the driver's radius {} ({})\n",
-                num(x),
-                mm(r),
-                camkin::lubrication::regime(x).name()
-            );
-        }
-        if let Some((t, r)) = l
-            .points
-            .iter()
-            .filter_map(|p| p.flash_temperature.map(|t| (t, p.radius[0])))
-            .max_by(|a, b| a.0.total_cmp(&b.0))
-        {
-            out += &format!(
-                "flash temperature (Blok): max {} K at the driver's radius {}\n",
-                num(t),
-                mm(r)
-            );
-        }
+    if let Some(p) = l.min_lambda.map(|i| &l.points[i]) {
+        let x = p.lambda.unwrap_or(f64::NAN);
+        out += &format!(
+            "lubrication: λ min {} at the driver's radius {} ({})\n",
+            num(x),
+            mm(p.radius[0]),
+            camkin::lubrication::regime(x).name()
+        );
+    }
+    if let Some(p) = l.max_flash_temperature.map(|i| &l.points[i]) {
+        out += &format!(
+            "flash temperature (Blok): max {} K at the driver's radius {}\n",
+            num(p.flash_temperature.unwrap_or(f64::NAN)),
+            mm(p.radius[0])
+        );
     }
     out
 }

@@ -70,6 +70,24 @@ pub struct Surface {
     pub thermal: Option<Thermal>,
 }
 
+/// Why a roughness given in µm is refused, after the value as written and `µm`: the one rule
+/// every front end states.
+pub const ROUGHNESS_RULE: &str = "is not a plausible roughness: Rq above 0 and at most 100 µm (a ground surface's is 0.1 to 0.5 µm; λ divides by it)";
+
+/// An RMS roughness given in µm, in metres; `None` unless above 0 and at most 100 µm
+/// ([`ROUGHNESS_RULE`]).
+pub fn roughness_from_um(um: f64) -> Option<f64> {
+    (um > 0.0 && um <= 100.0).then_some(um * 1e-6)
+}
+
+/// Why a friction coefficient is refused, after the value as written.
+pub const FRICTION_RULE: &str = "is not a friction coefficient: from 0 to 1";
+
+/// A friction coefficient the models take: from 0 to 1 ([`FRICTION_RULE`]).
+pub fn plausible_friction(mu: f64) -> bool {
+    (0.0..=1.0).contains(&mu)
+}
+
 /// The composite roughness of two surfaces, `σ = √(Rq₁² + Rq₂²)`, m: what λ divides the film by.
 pub fn composite_roughness(a: &Surface, b: &Surface) -> f64 {
     a.roughness.hypot(b.roughness)

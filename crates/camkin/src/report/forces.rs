@@ -266,8 +266,7 @@ impl ForceRequest {
             }
             // a face a thousandth of the cam or a thousand cams wide is a typing slip (a width in
             // metres in a millimetre file, or the other way round)
-            let ratio = w * self.unit.metres() / mech.size();
-            if !(1e-3..=1e3).contains(&ratio) {
+            if !plausible_face_width(w * self.unit.metres(), mech.size()) {
                 return Err(bad(
                     ForceField::FaceWidth,
                     w,
@@ -528,6 +527,13 @@ impl ForceReport {
             .collect();
         (columns, rows)
     }
+}
+
+/// A face width (m) taken as plausible for a mechanism of `size` (m): from 1e-3 to 1e3 times
+/// it (a thousandth of the cam or a thousand cams wide is a typing slip: a width in metres in a
+/// millimetre file, or the other way round).
+pub fn plausible_face_width(width: f64, size: f64) -> bool {
+    (1e-3..=1e3).contains(&(width / size))
 }
 
 /// rad/s → rpm

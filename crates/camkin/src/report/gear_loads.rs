@@ -84,6 +84,12 @@ pub struct GearLoads {
     pub at_pitch: PathPoint,
     /// the points, from the path's start (the driven gear's tip) to its end
     pub points: Vec<PathPoint>,
+    /// the index of the point of the largest Hertz pressure
+    pub max_hertz: Option<usize>,
+    /// the index of the point of the smallest λ (with a lubricant)
+    pub min_lambda: Option<usize>,
+    /// the index of the point of the largest flash temperature (with a lubricant)
+    pub max_flash_temperature: Option<usize>,
 }
 
 /// Why a gear load report could not be made.
@@ -208,9 +214,21 @@ impl GearLoads {
         let along = Along::new(pair, omega, req)?;
         let [start, end] = along.path;
         let n = req.points;
-        let points = (0..n)
+        let points: Vec<PathPoint> = (0..n)
             .map(|k| along.at(start + (end - start) * k as f64 / (n - 1) as f64))
             .collect();
+        // the index of the point where `get` is largest times `sign`
+        let best = |get: &dyn Fn(&PathPoint) -> Option<f64>, sign: f64| {
+            points
+                .iter()
+                .enumerate()
+                .filter_map(|(i, p)| get(p).filter(|v| v.is_finite()).map(|v| (i, sign * v)))
+                .max_by(|a, b| a.1.total_cmp(&b.1))
+                .map(|(i, _)| i)
+        };
+        let max_hertz = best(&|p| Some(p.hertz), 1.0);
+        let min_lambda = best(&|p| p.lambda, -1.0);
+        let max_flash_temperature = best(&|p| p.flash_temperature, 1.0);
         let pitch = along.rb[0] * pair.operating_pressure_angle().tan();
         Ok(Self {
             normal_force: along.force,
@@ -219,6 +237,9 @@ impl GearLoads {
             base_pitch: along.pb,
             at_pitch: along.at(pitch),
             points,
+            max_hertz,
+            min_lambda,
+            max_flash_temperature,
         })
     }
 

@@ -6,9 +6,9 @@
 use super::{Extreme, ForceField, ReportError};
 use crate::dynamics::{ForceState, Forces};
 use crate::lubrication::{
-    blok_flash_temperature, composite_roughness, film_thickness, reduced_radius, regime, Film,
-    FilmFormula, Friction, LineContact, Lubricant, Regime, Surface, PRESSURE_VISCOSITY_RANGE,
-    VISCOSITY_RANGE,
+    blok_flash_temperature, composite_roughness, film_thickness, plausible_friction,
+    reduced_radius, regime, roughness_from_um, Film, FilmFormula, Friction, LineContact, Lubricant,
+    Regime, Surface, FRICTION_RULE, PRESSURE_VISCOSITY_RANGE, VISCOSITY_RANGE,
 };
 use crate::table::Cell;
 use std::f64::consts::TAU;
@@ -60,7 +60,7 @@ impl LubricationRequest {
             );
         }
         for s in &self.surfaces {
-            if !(s.roughness > 0.0 && s.roughness <= 1e-4) {
+            if roughness_from_um(s.roughness * 1e6).is_none() {
                 return bad(
                     ForceField::Roughness,
                     s.roughness,
@@ -89,13 +89,8 @@ impl LubricationRequest {
             } => [boundary, full_film],
         };
         for mu in mus {
-            if !(mu.is_finite() && (0.0..=1.0).contains(&mu)) {
-                return bad(
-                    ForceField::Friction,
-                    mu,
-                    "",
-                    "is not a friction coefficient: from 0 to 1",
-                );
+            if !plausible_friction(mu) {
+                return bad(ForceField::Friction, mu, "", FRICTION_RULE);
             }
         }
         Ok(())
@@ -158,6 +153,8 @@ pub struct LubricationReport {
     pub min_lambda: Option<Extreme>,
     /// the largest flash temperature and where, K
     pub max_flash_temperature: Option<Extreme>,
+    /// the thinnest minimum film and where, m
+    pub thinnest_film: Option<Extreme>,
     /// the friction power's mean over the revolution, W (both contacts)
     pub mean_friction_power: f64,
     /// the energy friction dissipates in a revolution, J
@@ -282,6 +279,7 @@ impl LubricationReport {
         };
         let min_lambda = extreme(&|p| p.lambda, -1.0);
         let max_flash_temperature = extreme(&|p| p.flash_temperature, 1.0);
+        let thinnest_film = extreme(&|p| p.film.map(|f| f.minimum), -1.0);
         let mean_friction_power = points
             .iter()
             .map(|p| p.iter().flatten().map(|q| q.friction_power).sum::<f64>())
@@ -308,6 +306,7 @@ impl LubricationReport {
             entrainment_reversals: reversals,
             min_lambda,
             max_flash_temperature,
+            thinnest_film,
             mean_friction_power,
             friction_energy_per_revolution: mean_friction_power * TAU / speed,
             mean_friction_torque: mean_friction_power / speed,

@@ -20,8 +20,8 @@ mod system_forces;
 
 pub use design::{Check, DesignReport, Verdict};
 pub use forces::{
-    rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport, HertzSide, Jump,
-    SpringSizing,
+    plausible_face_width, rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport,
+    HertzSide, Jump, SpringSizing,
 };
 pub use gear_loads::{GearLoadError, GearLoadRequest, GearLoads, PathPoint};
 pub use lubrication::{LubricationPoint, LubricationReport, LubricationRequest};

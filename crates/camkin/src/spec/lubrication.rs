@@ -12,7 +12,10 @@
 
 use super::SpecError;
 use crate::field::{Field, LubricationField as L};
-use crate::lubrication::{FilmFormula, Friction, Lubricant, Surface};
+use crate::lubrication::{
+    plausible_friction, roughness_from_um, FilmFormula, Friction, Lubricant, Surface,
+    FRICTION_RULE, ROUGHNESS_RULE,
+};
 use crate::report::{LubricationRequest, Materials};
 
 /// `[lubrication]` as written.
@@ -87,14 +90,11 @@ impl LubricationSpec {
                 })?;
         let mut rq = [0.0; 2];
         for (i, (slot, &v)) in rq.iter_mut().zip(&self.roughness_um).enumerate() {
-            if !(v > 0.0 && v <= 100.0) {
-                return Err(SpecError::Invalid {
-                    field: f(L::RoughnessUm(i)),
-                    value: crate::human::human(v),
-                    reason: "is not a plausible roughness: Rq in µm, above 0 and at most 100 (a ground surface's is 0.1 to 0.5 µm; λ divides by it)".into(),
-                });
-            }
-            *slot = v * 1e-6;
+            *slot = roughness_from_um(v).ok_or_else(|| SpecError::Invalid {
+                field: f(L::RoughnessUm(i)),
+                value: crate::human::human(v),
+                reason: format!("µm {ROUGHNESS_RULE}"),
+            })?;
         }
         if !(self.face_width.is_finite() && self.face_width > 0.0) {
             return Err(SpecError::Invalid {
@@ -130,11 +130,11 @@ impl LubricationSpec {
             } => [boundary, full_film],
             Friction::Constant(mu) => [mu, mu],
         };
-        if let Some(&bad) = mus.iter().find(|mu| !(0.0..=1.0).contains(*mu)) {
+        if let Some(&bad) = mus.iter().find(|mu| !plausible_friction(**mu)) {
             return Err(SpecError::Invalid {
                 field: f(L::Friction),
                 value: crate::human::human(bad),
-                reason: "is not a friction coefficient: from 0 to 1".into(),
+                reason: FRICTION_RULE.into(),
             });
         }
         let materials: Materials = match &self.materials {
