@@ -234,9 +234,34 @@ def test_gear_loads_equal_the_command_csv_bit_for_bit(tmp_path):
         ("gear-pair-20-42.toml", {"torque": "5", "face_width": 20.0}, "torque"),
         ("gear-pair-20-42.toml", {"torque": 5.0}, "face_width"),
         ("gear-pair-20-42.toml", {"torque": 5.0, "face_width": 0.0}, "face_width"),
+        ("gear-pair-20-42.toml", {"face_width": 20.0}, "torque"),
+        ("gear-pair-20-42.toml", {"power_kw": -1.0, "face_width": 20.0}, "power_kw"),
+        ("gear-pair-20-42.toml", {"power_kw": 1j, "face_width": 20.0}, "power_kw"),
+        ("gear-pair-20-42.toml", {"torque": 1.0, "power_kw": 1.0, "face_width": 20.0}, "power_kw"),
+        ("paper-dynamics.toml", {"power_kw": 5.0, "face_width": 1.0}, "power_kw"),
     ],
 )
 def test_bad_gear_loads_name_the_argument(file, kw, field):
     with pytest.raises(camkin.InputError) as e:
         camkin.Mechanism.from_toml(EXAMPLES / file).gear_loads(**kw)
     assert e.value.field == field, e.value
+
+
+def test_gear_loads_from_the_file_equal_the_command_csv_bit_for_bit(tmp_path):
+    # the FZG pair's [gear_loads] and [lubrication] with no keyword, as `camkin forces FILE`
+    path = EXAMPLES / "fzg-c.toml"
+    r = subprocess.run([camkin_bin(), "forces", str(path), "--out", str(tmp_path)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    cli = csv_columns((tmp_path / "gear_loads.csv").read_text())
+    py = camkin.Mechanism.from_toml(path).gear_loads()
+    assert list(py["columns"]) == list(cli)
+    for col, cells in cli.items():
+        if col == "regime":
+            assert [x if x is not None else "" for x in py["columns"][col]] == cells
+        else:
+            same_cells(py["columns"][col], cells, col)
+    # a power is P/ω at the file's 2170 rpm: the same loads as its torque
+    w = 2170 * math.pi / 30
+    by_power = camkin.Mechanism.from_toml(path).gear_loads(power_kw=302.0 * w / 1e3)
+    assert by_power["report"]["normal_force"] == pytest.approx(py["report"]["normal_force"], rel=1e-14)

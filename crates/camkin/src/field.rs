@@ -28,6 +28,24 @@ pub enum Field {
     System(SystemField),
     /// a field of `[gear_pair]`
     GearPair(GearPairField),
+    /// a field of `[gear_loads]`
+    GearLoads(GearLoadsField),
+}
+
+/// Fields of `[gear_loads]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum GearLoadsField {
+    /// the whole table
+    Table,
+    /// `torque`
+    Torque,
+    /// `power_kw`
+    PowerKw,
+    /// `face_width`
+    FaceWidth,
+    /// `materials`
+    Materials,
 }
 
 /// Fields of `[gear_pair]`.
@@ -439,6 +457,7 @@ impl Field {
             Field::Dynamics(_) => Field::Dynamics(DynamicsField::Table),
             Field::Lubrication(_) => Field::Lubrication(LubricationField::Table),
             Field::GearPair(_) => Field::GearPair(GearPairField::Table),
+            Field::GearLoads(_) => Field::GearLoads(GearLoadsField::Table),
             Field::System(f) => match f.key {
                 SystemKey::CurveA(_) => Field::System(SystemField {
                     key: SystemKey::CurveA(ProfileField::Table),
@@ -509,6 +528,17 @@ impl Field {
                     L::Film => p.push(Name("film")),
                     L::Friction => p.push(Name("friction")),
                     L::Materials => p.push(Name("materials")),
+                }
+            }
+            Field::GearLoads(g) => {
+                p.push(Name("gear_loads"));
+                use GearLoadsField as G;
+                match g {
+                    G::Table => {}
+                    G::Torque => p.push(Name("torque")),
+                    G::PowerKw => p.push(Name("power_kw")),
+                    G::FaceWidth => p.push(Name("face_width")),
+                    G::Materials => p.push(Name("materials")),
                 }
             }
             Field::GearPair(g) => {

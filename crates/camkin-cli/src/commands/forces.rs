@@ -167,6 +167,10 @@ pub struct ForcesArgs {
     /// sliding, and with --oil the film and flash temperature); no `[dynamics]` needed.
     #[arg(long, value_name = "N_M", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub torque: Option<f64>,
+    /// Power a gear pair's driver transmits, kW (instead of --torque: the torque is P/ω at the
+    /// file's speed).
+    #[arg(long, value_name = "KW", value_parser = crate::args::real, allow_negative_numbers = true, conflicts_with = "torque")]
+    pub power: Option<f64>,
     /// Directory for forces.csv, force_speed.csv and their plots (and lubrication.csv and its
     /// page with --oil; gear_loads.csv with --torque).
     #[arg(long, value_name = "DIR")]
@@ -259,7 +263,10 @@ pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
     if camkin::spec::text::is_system(&text) {
         return super::system_forces::run(args, &name, &text);
     }
-    if args.torque.is_some() {
+    // a gear pair's loads: asked for by a flag, or by the file's [gear_loads]
+    let file_loads =
+        crate::mechfile::parse_spec(&text, &name).is_ok_and(|s| s.gear_loads.is_some());
+    if args.torque.is_some() || args.power.is_some() || file_loads {
         return super::gear_loads::run(args, &name);
     }
     let (mech, params, unit, file) =

@@ -7,7 +7,8 @@ use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::gears::GearPair;
-use camkin::report::{GearLoadRequest, GearLoads, Materials};
+use camkin::report::{GearLoadRequest, GearLoads};
+use camkin::spec::{GivenLoads, LoadInput};
 
 /// Points along the path of contact.
 const POINTS: usize = 201;
@@ -17,14 +18,17 @@ fn bad(msg: String) -> Failure {
 }
 
 pub fn run(args: &ForcesArgs, name: &str) -> Result<(), Failure> {
-    let torque = args.torque.unwrap_or_default();
     let built = crate::mechfile::load_si(&args.mechanism).map_err(|e| bad(e.to_string()))?;
     let unit = built.length_unit;
     let mech = &built.mechanism;
+    let asked = match (args.torque, args.power) {
+        (Some(t), _) => format!("--torque {}", camkin::human::human(t)),
+        (None, Some(p)) => format!("--power {}", camkin::human::human(p)),
+        (None, None) => "[gear_loads]".into(),
+    };
     let Ok(pair) = GearPair::new(mech) else {
         return Err(bad(format!(
-            "--torque {}: {name} is not a gear pair (a [gear_pair], or an involute-gear cam driving a rotating follower carrying one): a cam mechanism's forces come from its [dynamics]",
-            camkin::human::human(torque)
+            "{asked}: {name} is not a gear pair (a [gear_pair], or an involute-gear cam driving a rotating follower carrying one): a cam mechanism's forces come from its [dynamics]"
         )));
     };
     for (given, flag) in [
@@ -38,39 +42,33 @@ pub fn run(args: &ForcesArgs, name: &str) -> Result<(), Failure> {
             )));
         }
     }
-    if !(torque.is_finite() && torque > 0.0) {
-        return Err(bad(format!(
-            "--torque {}: the torque on the driver must be positive (N·m)",
-            camkin::human::human(torque)
-        )));
-    }
+    let given = GivenLoads {
+        torque: args.torque,
+        power_kw: args.power,
+        face_width: args.face_width,
+        materials: args.materials.as_ref().map(|m| m.0.clone()),
+    };
+    let resolved = built.gear_loads_inputs(&given).map_err(|e| {
+        let flag = match e.input {
+            LoadInput::Torque => "--torque",
+            LoadInput::Power => "--power",
+            _ => "--face-width",
+        };
+        bad(match &e.value {
+            Some(v) => format!("{flag} {v}: {e}"),
+            None => format!("{flag}: {e}"),
+        })
+    })?;
     let file = built.lubrication.as_ref();
-    let Some(width) = args.face_width.or(file.map(|f| f.face_width)) else {
-        return Err(bad(
-            "--face-width: the loads along the path need the teeth's face width (the file's length unit)"
-                .into(),
-        ));
-    };
-    if !(width > 0.0 && camkin::report::plausible_face_width(width * unit.metres(), mech.size())) {
-        return Err(bad(format!(
-            "--face-width {} {}: must be positive and from 1e-3 to 1e3 times the gears' size",
-            camkin::human::human(width),
-            unit.name()
-        )));
-    }
-    let materials = match (&args.materials, file) {
-        (Some(m), _) => m.0.clone(),
-        (None, Some(f)) => f.materials.clone(),
-        (None, None) => Materials::default(),
-    };
+    let materials = resolved.materials.clone();
     let lubrication = lubrication_request(args, file, &materials)?;
     if let Some(l) = &lubrication {
         l.validate().map_err(|e| bad(format!("--oil: {e}")))?;
     }
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let req = GearLoadRequest {
-        torque,
-        face_width: width * unit.metres(),
+        torque: resolved.torque,
+        face_width: resolved.face_width,
         materials,
         lubrication,
         points: POINTS,

@@ -83,6 +83,21 @@ fn a_torque_where_it_does_not_apply_is_refused() {
         ),
         (
             "gear-pair-20-42.toml",
+            vec!["--power", "-2", "--face-width", "20"],
+            vec!["--power -2", "positive"],
+        ),
+        (
+            "paper-dynamics.toml",
+            vec!["--power", "2"],
+            vec!["--power 2", "not a gear pair"],
+        ),
+        (
+            "fzg-c.toml",
+            vec!["--face-width", "0.01"],
+            vec!["--face-width 0.01", "1e-3 to 1e3"],
+        ),
+        (
+            "gear-pair-20-42.toml",
             vec!["--torque", "5", "--face-width", "20", "--margin", "3"],
             vec!["--margin", "--torque"],
         ),
@@ -117,4 +132,42 @@ fn a_torque_where_it_does_not_apply_is_refused() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("[dynamics]"));
+}
+
+/// The file's `[gear_loads]` loads the pair with no flag; `--torque` and `--power` replace it,
+/// a power being `P/ω` at the file's speed.
+#[test]
+fn the_files_gear_loads_and_a_power() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = std::fs::read_to_string(examples().join("gear-pair-20-42.toml")).unwrap();
+    let file = dir.path().join("g.toml");
+    std::fs::write(
+        &file,
+        format!("{base}\n[gear_loads]\ntorque = 50.0\nface_width = 20.0\n"),
+    )
+    .unwrap();
+    let run = |args: &[&str]| {
+        let a = camkin()
+            .arg("forces")
+            .arg(&file)
+            .args(args)
+            .assert()
+            .success();
+        String::from_utf8(a.get_output().stdout.clone()).unwrap()
+    };
+    let from_file = run(&[]);
+    assert!(from_file.contains("torque 50 N·m"), "{from_file}");
+    // 50 N·m at the file's 1000 rpm is 5.236 kW
+    let power = 50.0 * 1000.0 * std::f64::consts::PI / 30.0 / 1e3;
+    let by_power = run(&["--power", &power.to_string()]);
+    assert_eq!(by_power, from_file);
+    let other = run(&["--torque", "20"]);
+    assert!(other.contains("torque 20 N·m"), "{other}");
+    // --torque and --power together: clap's usage error
+    camkin()
+        .arg("forces")
+        .arg(&file)
+        .args(["--torque", "2", "--power", "3"])
+        .assert()
+        .code(2);
 }

@@ -83,7 +83,8 @@ class Mechanism:
     def gear_loads(
         self,
         *,
-        torque: float,
+        torque: Optional[float] = None,
+        power_kw: Optional[float] = None,
         face_width: Optional[float] = None,
         materials: Union[str, Tuple[str, str], None] = None,
         oil: Optional[str] = None,

@@ -77,8 +77,12 @@ pub struct Built {
     pub dynamics: Option<FollowerDynamics>,
     /// `[lubrication]`, when the spec has it
     pub lubrication: Option<super::BuiltLubrication>,
+    /// `[gear_loads]`, when the spec has it (a gear pair's)
+    pub gear_loads: Option<super::BuiltGearLoads>,
     /// the unit of the spec's lengths
     pub length_unit: LengthUnit,
+    /// built in metres ([`BuildOptions::si`]), not in `length_unit`
+    pub si: bool,
     /// what is valid but probably not meant (a front end shows them)
     pub warnings: Vec<SpecWarning>,
 }
@@ -550,10 +554,24 @@ impl MechanismSpec {
             .as_ref()
             .map(super::LubricationSpec::build)
             .transpose()?;
+        let gear_loads = match &self.gear_loads {
+            None => None,
+            Some(g) => {
+                if GearPair::new(&mechanism).is_err() {
+                    return Err(SpecError::Rule {
+                        field: Field::GearLoads(crate::field::GearLoadsField::Table),
+                        reason: "a gear pair's loads: this mechanism is not a gear pair (a cam's forces come from [dynamics])".into(),
+                    });
+                }
+                Some(g.build(mechanism.cam().speed(), lubrication.as_ref())?)
+            }
+        };
         Ok(Built {
             mechanism,
             dynamics,
             lubrication,
+            gear_loads,
+            si: options.si,
             length_unit: unit,
             warnings,
         })

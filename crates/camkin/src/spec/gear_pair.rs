@@ -38,6 +38,12 @@ pub struct GearPairFile {
     /// `[dynamics]`: the driven gear's (its `inertia`; `spring_preload` is the load torque)
     #[cfg_attr(feature = "serde", serde(default))]
     pub dynamics: Option<DynamicsSpec>,
+    /// `[lubrication]`: the flanks' lubrication along the path of contact
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub lubrication: Option<super::LubricationSpec>,
+    /// `[gear_loads]`: the torque on the driver and the face width
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub gear_loads: Option<super::GearLoadsSpec>,
 }
 
 /// `[gear_pair]`.
@@ -85,7 +91,9 @@ pub(super) fn gear_field(f: Field) -> Field {
         Field::Cam(CamField::SpeedRpm | CamField::Speed) => G::SpeedRpm,
         Field::Cam(CamField::Direction) => G::Direction,
         Field::Follower(FollowerField::Pivot) => G::CentreDistance,
-        Field::Dynamics(_) | Field::LengthUnit => return f,
+        Field::Dynamics(_) | Field::LengthUnit | Field::Lubrication(_) | Field::GearLoads(_) => {
+            return f
+        }
         _ => G::Table,
     })
 }
@@ -147,7 +155,8 @@ impl GearPairFile {
                 ..Default::default()
             },
             dynamics: self.dynamics.clone(),
-            lubrication: None,
+            lubrication: self.lubrication.clone(),
+            gear_loads: self.gear_loads.clone(),
             from_gear_pair: true,
         })
     }

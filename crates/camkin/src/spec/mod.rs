@@ -41,6 +41,7 @@ mod arcs;
 mod build;
 mod built_system;
 mod coil_spring;
+mod gear_loads;
 mod gear_pair;
 mod kinds;
 mod lubrication;
@@ -59,6 +60,10 @@ pub use crate::field::{
 pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
 pub use built_system::{BuiltSystem, SweepAngle, SweepError};
 pub use coil_spring::CoilSpringSpec;
+pub use gear_loads::{
+    torque_from_power, BuiltGearLoads, GearLoadsSpec, GivenLoads, LoadInput, LoadInputError,
+    ResolvedLoads,
+};
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
@@ -101,6 +106,12 @@ pub struct MechanismSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub lubrication: Option<LubricationSpec>,
+    /// `[gear_loads]`: a gear pair's torque and face width
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub gear_loads: Option<GearLoadsSpec>,
     /// read from a `[gear_pair]` file ([`GearPairFile::to_mechanism`]): errors then name the
     /// `gear_pair` keys
     #[cfg_attr(feature = "serde", serde(skip))]
@@ -114,6 +125,7 @@ impl PartialEq for MechanismSpec {
             && self.follower == other.follower
             && self.dynamics == other.dynamics
             && self.lubrication == other.lubrication
+            && self.gear_loads == other.gear_loads
     }
 }
 
