@@ -160,6 +160,7 @@
     drawCompare();
     drawForce();
     drawLubrication();
+    drawGearLoads();
     $("angle-readout").textContent = `${fmt(angleAt(S.index), 4)}°`;
   }
 
@@ -448,9 +449,10 @@
     const { g, w, h } = fitCanvas(p.canvas);
     const L = 64, R = 10, T = 16, B = 18;
     const x = p.x || S.result.angles_deg;
-    const xmax = 360;
+    // the x axis: the cam angle over a revolution, or p.xr = [lo, hi] in p.xunit
+    const [x0, x1] = p.xr || [0, 360];
     const [ylo, yhi] = yRange(p);
-    const X = (a) => L + (a / xmax) * (w - L - R);
+    const X = (a) => L + ((a - x0) / (x1 - x0)) * (w - L - R);
     const Y = (v) => T + (1 - (v - ylo) / (yhi - ylo)) * (h - T - B);
     p.geom = { L, R, T, B, w, h, X, Y, ylo, yhi, x };
     g.clearRect(0, 0, w, h);
@@ -464,11 +466,12 @@
       g.textAlign = "right";
       g.fillText(p.log ? `1e${Math.round(t)}` : fmt(t, 3), L - 4, yy + 4);
     }
-    for (let a = 0; a <= 360; a += 45) {
+    const xticks = p.xr ? niceTicks(x0, x1, 6).filter((t) => t >= x0 && t <= x1) : [0, 45, 90, 135, 180, 225, 270, 315, 360];
+    for (const a of xticks) {
       const xx = X(a);
       g.beginPath(); g.moveTo(xx, T); g.lineTo(xx, h - B); g.stroke();
       g.textAlign = "center";
-      g.fillText(`${a}°`, xx, h - 5);
+      g.fillText(p.xr ? `${fmt(a, 4)} ${p.xunit}` : `${a}°`, xx, h - 5);
     }
     if (!p.log && ylo < 0 && yhi > 0) {
       g.strokeStyle = "#bbb"; g.beginPath(); g.moveTo(L, Y(0)); g.lineTo(w - R, Y(0)); g.stroke();
@@ -509,10 +512,13 @@
       g.setLineDash([]);
     }
     g.restore();
-    // the cursor at the current angle
-    const xc = X(angleAt(S.index));
-    g.strokeStyle = "#d62728"; g.lineWidth = 1;
-    g.beginPath(); g.moveTo(xc, T); g.lineTo(xc, h - B); g.stroke();
+    // the cursor at the current angle (or where p.cursor puts it; none where it says null)
+    const xcv = p.cursor ? p.cursor() : angleAt(S.index);
+    if (xcv !== null && xcv >= x0 && xcv <= x1) {
+      const xc = X(xcv);
+      g.strokeStyle = "#d62728"; g.lineWidth = 1;
+      g.beginPath(); g.moveTo(xc, T); g.lineTo(xc, h - B); g.stroke();
+    }
     if (p.legend) {
       let lx = w - R - 6;
       g.textAlign = "right"; g.font = "11px DejaVu Sans, sans-serif";
@@ -531,8 +537,9 @@
       const rect = p.canvas.getBoundingClientRect();
       const mx = ev.clientX - rect.left;
       const { L, R, w, x } = p.geom;
-      const a = ((mx - L) / (w - L - R)) * 360;
-      if (a < 0 || a > 360) return null;
+      const [x0, x1] = p.xr || [0, 360];
+      const a = x0 + ((mx - L) / (w - L - R)) * (x1 - x0);
+      if (a < x0 || a > x1) return null;
       let best = 0;
       for (let i = 1; i < x.length; i++) if (Math.abs(x[i] - a) < Math.abs(x[best] - a)) best = i;
       return best;
@@ -540,8 +547,9 @@
     p.canvas.addEventListener("mousemove", (ev) => {
       const i = at(ev);
       if (i === null) { tip.hidden = true; return; }
-      const lines = [`cam angle ${fmt(p.geom.x[i], 5)}°`];
-      for (const s of p.series) lines.push(`${s.label}: ${fmt(snap(s, s.values[i]), 6)} ${p.unit}`);
+      const lines = [p.xr ? `${p.xname} ${fmt(p.geom.x[i], 5)} ${p.xunit}` : `cam angle ${fmt(p.geom.x[i], 5)}°`];
+      for (const s of p.series) lines.push(`${s.label}: ${fmt(snap(s, s.values[i]), 6)}${p.unit ? " " + p.unit : ""}`);
+      if (p.extra) lines.push(...p.extra(i));
       tip.textContent = lines.join("\n");
       tip.hidden = false;
       tip.style.left = ev.clientX + 14 + "px";
@@ -550,7 +558,7 @@
     p.canvas.addEventListener("mouseleave", () => { tip.hidden = true; });
     p.canvas.addEventListener("click", (ev) => {
       const i = at(ev);
-      if (i === null || !S.result) return;
+      if (i === null || !S.result || p.xr) return;
       setIndex(Math.round(p.geom.x[i] / S.result.step_deg) % S.result.frames.length);
     });
   }
@@ -655,6 +663,75 @@
       },
     });
     drawPlot(S.lubPlot);
+  }
+
+  // ---------- a gear pair's loads along its path of contact ----------
+  // the driver's radius of the contact drawn (the first contact), for the cursor
+  function contactRadius() {
+    const f = S.result.frames[S.index];
+    if (!f || !f.contact) return null;
+    return Math.hypot(f.contact[0] - S.result.pivot[0], f.contact[1] - S.result.pivot[1]);
+  }
+
+  function drawGearLoads() {
+    const G = S.result && S.result.gear_loads;
+    $("gear-panel").hidden = !G;
+    if (!G) return;
+    if (!S.gearPlots) {
+      S.gearPlots = ["gear-hertz", "gear-sliding", "gear-lambda"].map((id) => ({ canvas: $(id) }));
+      S.gearPlots.forEach(attachHover);
+    }
+    const u = G.unit;
+    const xr = [G.radius[0], G.radius[G.radius.length - 1]];
+    const common = { x: G.radius, xr, xunit: u, xname: "driver's contact radius", noMarks: true, cursor: contactRadius };
+    const parts = [
+      `torque ${fmt(G.torque, 4)} N·m on the driver, normal force ${fmt(G.normal_force, 4)} N, face width ${fmt(G.face_width, 4)} ${u}, contact ratio ${fmt(G.contact_ratio, 4)}`,
+    ];
+    if (G.max_hertz) parts.push(`Hertz max ${fmt(G.max_hertz[0], 4)} MPa at radius ${fmt(G.max_hertz[1], 4)} ${u}, ${fmt(G.pitch[1], 4)} MPa at the pitch point (radius ${fmt(G.pitch[0], 4)} ${u})`);
+    if (G.min_lambda) parts.push(`λ min ${fmt(G.min_lambda[0], 3)} at radius ${fmt(G.min_lambda[1], 4)} ${u} (${REGIME_NAMES[G.min_lambda[0] < 1 ? 0 : G.min_lambda[0] < 3 ? 1 : 2]})`);
+    if (G.max_flash_k) parts.push(`flash temperature max ${fmt(G.max_flash_k[0], 4)} K at radius ${fmt(G.max_flash_k[1], 4)} ${u}`);
+    const sum = $("gear-summary");
+    sum.textContent = `At the file's ${fmt(S.result.rpm, 4)} rpm: ${parts.join("; ")}.`;
+    sum.className = G.min_lambda && G.min_lambda[0] < 1 ? "bad" : "";
+    const pairs = (i) => [`${G.pairs[i]} pair${G.pairs[i] === 1 ? "" : "s"} in contact, ${fmt(G.load[i], 4)} N on this one`];
+    const [ph, ps, pl] = S.gearPlots;
+    Object.assign(ph, common, {
+      title: "Hertz pressure (shaded: one pair carries the whole load; elsewhere two share it)", unit: "MPa", extra: pairs,
+      series: [{ values: G.hertz_mpa, color: "#d62728", label: "Hertz" }],
+      shade: (g, X, Y, t, b) => {
+        // where one pair carries the whole load
+        g.fillStyle = "rgba(31,119,180,0.08)";
+        G.pairs.forEach((n, i) => {
+          if (n !== 1 || i + 1 >= G.radius.length) return;
+          g.fillRect(X(G.radius[i]), t, Math.max(1, X(G.radius[i + 1]) - X(G.radius[i])), b - t);
+        });
+      },
+    });
+    Object.assign(ps, common, {
+      title: "specific sliding", unit: "", legend: true,
+      series: [
+        { values: G.specific_sliding[0], color: "#1f77b4", label: "driver (w1 − w2)/w1" },
+        { values: G.specific_sliding[1], color: "#ff7f0e", label: "driven (w2 − w1)/w2", dash: [5, 3] },
+      ],
+    });
+    drawPlot(ph);
+    drawPlot(ps);
+    pl.canvas.hidden = !G.lambda;
+    if (G.lambda) {
+      Object.assign(pl, common, {
+        title: "λ = h_min / σ: red boundary (λ < 1), amber mixed, green full film (λ ≥ 3)", unit: "",
+        series: [{ values: G.lambda, color: "#1f77b4", label: "λ" }],
+        extra: (i) => G.flash_temperature_k && G.flash_temperature_k[i] !== null ? [`flash temperature ${fmt(G.flash_temperature_k[i], 4)} K`] : [],
+        shade: (g, X, Y, t, b) => {
+          G.regime.forEach((r, i) => {
+            if (r === null || i + 1 >= G.radius.length) return;
+            g.fillStyle = REGIME_SHADES[r];
+            g.fillRect(X(G.radius[i]), t, Math.max(1, X(G.radius[i + 1]) - X(G.radius[i])), b - t);
+          });
+        },
+      });
+      drawPlot(pl);
+    }
   }
 
   function forceAt(rpm) {

@@ -255,6 +255,49 @@ pub struct LubricationOut {
     pub friction: [f64; 2],
 }
 
+/// A gear pair's loads along its whole path of contact (the file's `[gear_loads]`, and its
+/// `[lubrication]`), over the contact's radius on the driver.
+#[derive(Debug, Serialize)]
+pub struct GearLoadsOut {
+    /// the file's length unit
+    pub unit: &'static str,
+    /// the torque on the driver, N·m
+    pub torque: f64,
+    /// the normal force `T/r_b1`, N
+    pub normal_force: f64,
+    /// the face width, in the file's unit
+    pub face_width: f64,
+    /// the contact ratio (the path's length over the base pitch)
+    pub contact_ratio: f64,
+    /// the contact's radius on the driver at each point, the file's unit, its root to its tip
+    pub radius: Vec<f64>,
+    /// the tooth pairs in contact at each point
+    pub pairs: Vec<u32>,
+    /// the load on the pair, N
+    pub load: Vec<f64>,
+    /// Hertz's maximum pressure, MPa
+    pub hertz_mpa: Vec<Option<f64>>,
+    /// the driver's and the driven gear's specific sliding
+    pub specific_sliding: [Vec<Option<f64>>; 2],
+    /// λ at each point (with `[lubrication]`)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda: Option<Vec<Option<f64>>>,
+    /// the regime at each point: 0 boundary, 1 mixed, 2 full film (with `[lubrication]`)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub regime: Option<Vec<Option<u8>>>,
+    /// Blok's flash temperature, K (with `[lubrication]`)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub flash_temperature_k: Option<Vec<Option<f64>>>,
+    /// the pitch point: the driver's radius and the Hertz pressure there (MPa)
+    pub pitch: [f64; 2],
+    /// the largest Hertz pressure (MPa) and its radius
+    pub max_hertz: Option<[f64; 2]>,
+    /// the smallest λ and its radius
+    pub min_lambda: Option<[f64; 2]>,
+    /// the largest flash temperature (K) and its radius
+    pub max_flash_k: Option<[f64; 2]>,
+}
+
 /// The analysis the studio shows.
 #[derive(Debug, Serialize)]
 pub struct Analysis {
@@ -296,6 +339,9 @@ pub struct Analysis {
     pub first_error: Option<String>,
     /// forces, when the file has `[dynamics]`
     pub dynamics: Option<DynamicsOut>,
+    /// a gear pair's loads along its path of contact, when the file has `[gear_loads]`
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gear_loads: Option<GearLoadsOut>,
     /// a system file (bodies, joints, contacts): no cam profile, nodes, checks or study
     pub system: bool,
     /// a system simulated (its file has `[dynamics]`): the frames and series are its
@@ -518,6 +564,7 @@ pub fn analyze(
     };
     let checks = checks(mech, &angles, &sweep, pressure_limit_deg, unit.name());
     let dynamics = dynamics(text, source, &parsed.spec, &angles, limits)?;
+    let gear_loads = gear_loads(text, source, &parsed.spec, limits)?;
     let first_error = rows.iter().find_map(|r| r.error.clone());
     Ok(Analysis {
         name: source.name.clone(),
@@ -547,6 +594,7 @@ pub fn analyze(
         failed: sweep.failed(),
         first_error,
         dynamics,
+        gear_loads,
         system: false,
         simulated: false,
         events: Vec::new(),
@@ -663,6 +711,89 @@ fn dynamics(
             .flatten(),
         unit: "N",
         lubrication: report.lubrication.as_ref().map(lubrication_out),
+    }))
+}
+
+/// Points along a gear pair's path of contact in the studio (as `camkin forces --torque`).
+const GEAR_PATH_POINTS: usize = 201;
+
+/// A gear pair's loads when the file has `[gear_loads]` (in SI, drawn in the file's unit).
+fn gear_loads(
+    text: &str,
+    source: &Source,
+    spec: &MechanismSpec,
+    limits: &Limits,
+) -> Result<Option<GearLoadsOut>, StudioError> {
+    if spec.gear_loads.is_none() {
+        return Ok(None);
+    }
+    let options = options(spec, source, true, limits)?;
+    let (si, _) = mechfile::build_placed(spec, text, &source.name, &options)?;
+    let input = |message: String| StudioError::Input { message, at: None };
+    let pair = camkin::gears::GearPair::new(&si.mechanism)
+        .map_err(|e| input(format!("gear_loads: {e}")))?;
+    let resolved = si
+        .gear_loads_inputs(&camkin::spec::GivenLoads::default())
+        .map_err(|e| input(format!("gear_loads: {e}")))?;
+    let lubrication = si.lubrication.as_ref().map(|l| {
+        let mut r = l.request;
+        // the thermal constants of the materials the loads use
+        r.surfaces[0].thermal = resolved.materials.cam.thermal;
+        r.surfaces[1].thermal = resolved.materials.follower.thermal;
+        r
+    });
+    let req = camkin::report::GearLoadRequest {
+        torque: resolved.torque,
+        face_width: resolved.face_width,
+        materials: resolved.materials,
+        lubrication,
+        points: GEAR_PATH_POINTS,
+    };
+    let l = camkin::report::GearLoads::new(&pair, si.mechanism.cam().speed(), &req)
+        .map_err(|e| input(format!("gear_loads: {e}")))?;
+    let unit = si.length_unit;
+    let len = |x: f64| x / unit.metres();
+    let pts = &l.points;
+    let lub = req.lubrication.is_some();
+    let col = |f: &dyn Fn(&camkin::report::PathPoint) -> Option<f64>| {
+        pts.iter().map(f).collect::<Vec<_>>()
+    };
+    let finite = |x: f64| x.is_finite().then_some(x);
+    let at = |i: Option<usize>, v: &dyn Fn(&camkin::report::PathPoint) -> Option<f64>| {
+        i.and_then(|i| v(&pts[i]).map(|x| [x, len(pts[i].radius[0])]))
+    };
+    use camkin::lubrication::Regime;
+    Ok(Some(GearLoadsOut {
+        unit: unit.name(),
+        torque: req.torque,
+        normal_force: l.normal_force,
+        face_width: len(req.face_width),
+        contact_ratio: (l.path[1] - l.path[0]) / l.base_pitch,
+        radius: pts.iter().map(|p| len(p.radius[0])).collect(),
+        pairs: pts.iter().map(|p| p.pairs).collect(),
+        load: pts.iter().map(|p| p.load).collect(),
+        hertz_mpa: col(&|p| finite(p.hertz / 1e6)),
+        specific_sliding: [
+            col(&|p| p.specific_sliding[0]),
+            col(&|p| p.specific_sliding[1]),
+        ],
+        lambda: lub.then(|| col(&|p| p.lambda)),
+        regime: lub.then(|| {
+            pts.iter()
+                .map(|p| {
+                    p.regime.map(|r| match r {
+                        Regime::Boundary => 0,
+                        Regime::Mixed => 1,
+                        _ => 2,
+                    })
+                })
+                .collect()
+        }),
+        flash_temperature_k: lub.then(|| col(&|p| p.flash_temperature)),
+        pitch: [len(l.at_pitch.radius[0]), l.at_pitch.hertz / 1e6],
+        max_hertz: at(l.max_hertz, &|p| finite(p.hertz / 1e6)),
+        min_lambda: at(l.min_lambda, &|p| p.lambda),
+        max_flash_k: at(l.max_flash_temperature, &|p| p.flash_temperature),
     }))
 }
 

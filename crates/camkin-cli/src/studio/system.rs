@@ -147,6 +147,7 @@ pub(super) fn system_analysis(
         failed: 0,
         first_error: None,
         dynamics: None,
+        gear_loads: None,
         system: true,
         simulated: false,
         events: Vec::new(),

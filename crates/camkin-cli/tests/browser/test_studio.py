@@ -198,6 +198,39 @@ def test_a_lubrication_section_is_drawn_in_the_force_panel(serve, page, tmp_path
     assert not page.locator("#lubrication-box").is_visible()
 
 
+def test_a_gear_pairs_loads_are_drawn_along_its_path_of_contact(serve, page, tmp_path):
+    # the FZG C pair with [gear_loads] and [lubrication]: Hertz, the specific sliding and λ over
+    # the driver's contact radius, the command's gear_loads.csv to the last digit
+    shutil.copy(EXAMPLES / "fzg-c.toml", tmp_path / "fzg.toml")
+    loaded(page, serve(tmp_path / "fzg.toml"))
+    assert page.errors == []
+    assert page.locator("#gear-panel").is_visible()
+    summary = page.locator("#gear-summary").inner_text()
+    assert "302 N·m" in summary and "Hertz max" in summary and "λ min" in summary, summary
+    for c in ("#gear-hertz", "#gear-sliding", "#gear-lambda"):
+        assert inked(page, c) > 2000, c
+    out = tmp_path / "out"
+    camkin("forces", tmp_path / "fzg.toml", "--out", out)
+    with open(out / "gear_loads.csv") as f:
+        rows = list(csv.DictReader(f))
+    g = page.evaluate("window.studio.result.gear_loads")
+    assert len(g["hertz_mpa"]) == len(rows)
+    for got, row in zip(g["hertz_mpa"], rows):
+        assert got == float(row["hertz_MPa"])
+    for got, row in zip(g["radius"], rows):
+        assert abs(got - 1e3 * float(row["driver_radius_m"])) <= 1e-12 * got
+    for got, row in zip(g["lambda"], rows):
+        assert got == float(row["lambda"])
+    # the cursor: the contact drawn lies on the path (its radius between the ends)
+    r = page.evaluate("(() => { const s = window.studio, f = s.result.frames[s.index];"
+                      " return Math.hypot(f.contact[0] - s.result.pivot[0], f.contact[1] - s.result.pivot[1]); })()")
+    assert g["radius"][0] - 1e-9 <= r <= g["radius"][-1] + 1e-9, r
+    page.locator("#gear-panel").screenshot(path=str(ROOT / "target" / "studio-gear-loads.png"))
+    # a gear pair without the section has no panel
+    loaded(page, serve(EXAMPLES / "gear-pair-20-42.toml"))
+    assert not page.locator("#gear-panel").is_visible()
+
+
 import pytest  # noqa: E402
 
 
