@@ -191,3 +191,174 @@ fn bad_loads_are_refused() {
         );
     }
 }
+
+fn built(text: &str) -> Result<camkin::spec::Built, String> {
+    let spec = parse_toml(text, "p.toml").map_err(|e| e.to_string())?;
+    let options = BuildOptions {
+        si: true,
+        ..BuildOptions::default()
+    };
+    build_placed(&spec, text, "p.toml", &options)
+        .map(|b| b.0)
+        .map_err(|e| e.to_string())
+}
+
+/// The FZG test gears' load stages (ISO 14635-1, DIN 51354: the pinion torque of each load stage
+/// and the nominal Hertz pressure at the pitch point it gives, N/mm², as published). The
+/// pressure is tabulated for the A gear's 20 mm face width; the A and C gears share the teeth,
+/// the module, the centre distance and the shifts' sum (so the working pressure angle and the
+/// pitch radii), and the C gear's pitch point lies in single-tooth contact, where the whole load
+/// is on one pair.
+const FZG_LOAD_STAGES: [(f64, f64); 12] = [
+    (3.3, 146.0),
+    (13.7, 295.0),
+    (35.3, 474.0),
+    (60.8, 621.0),
+    (94.1, 773.0),
+    (135.5, 927.0),
+    (183.4, 1080.0),
+    (239.3, 1232.0),
+    (302.0, 1386.0),
+    (372.6, 1538.0),
+    (450.1, 1691.0),
+    (534.5, 1841.0),
+];
+
+#[test]
+fn the_fzg_load_stages_published_hertz_pressures() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/fzg-c.toml"
+    ))
+    .unwrap();
+    let b = built(&text).unwrap();
+    let p = GearPair::new(&b.mechanism).unwrap();
+    for (torque, published) in FZG_LOAD_STAGES {
+        let req = GearLoadRequest {
+            torque,
+            face_width: 0.020,
+            materials: Materials::default(),
+            lubrication: None,
+            points: 11,
+        };
+        let l = GearLoads::new(&p, b.mechanism.cam().speed(), &req).unwrap();
+        assert_eq!(l.at_pitch.pairs, 1);
+        let mpa = l.at_pitch.hertz / 1e6;
+        // the table's pressures are rounded to 1 N/mm² and its torques to 0.1 N·m (3.3 N·m:
+        // ±1.5 %, ±0.8 % in the pressure)
+        let tol = if torque < 5.0 { 0.009 } else { 0.003 };
+        assert!(
+            (mpa / published - 1.0).abs() < tol,
+            "{torque} N·m: {mpa} MPa, published {published}"
+        );
+    }
+    // the C gear's published transverse contact ratio, 1.44 (to its two decimals)
+    let l = GearLoads::new(
+        &p,
+        1.0,
+        &GearLoadRequest {
+            torque: 1.0,
+            face_width: 0.014,
+            materials: Materials::default(),
+            lubrication: None,
+            points: 2,
+        },
+    )
+    .unwrap();
+    let eps = (l.path[1] - l.path[0]) / l.base_pitch;
+    assert!((eps - 1.44).abs() < 0.005, "{eps}");
+}
+
+#[test]
+fn the_file_section_and_its_overrides() {
+    use camkin::spec::{GivenLoads, LoadInput};
+    let with = |extra: &str| built(&format!("{PAIR}{extra}"));
+    // a power is a torque at the file's speed: 5.236 kW at 1000 rpm is 50 N·m
+    let b = with("[gear_loads]\npower_kw = 5.235987755982989\nface_width = 20.0\n").unwrap();
+    let r = b.gear_loads_inputs(&GivenLoads::default()).unwrap();
+    assert!((r.torque - 50.0).abs() < 1e-12 * 50.0, "{}", r.torque);
+    assert!((r.face_width - 0.020).abs() < 1e-15);
+    // each given value replaces the file's
+    let r = b
+        .gear_loads_inputs(&GivenLoads {
+            torque: Some(7.0),
+            face_width: Some(10.0),
+            ..GivenLoads::default()
+        })
+        .unwrap();
+    assert_eq!((r.torque, r.face_width), (7.0, 0.010));
+    // the face width from [lubrication] when [gear_loads] has none
+    let b = with("[gear_loads]\ntorque = 3.0\n[lubrication]\noil = \"sae-30@100c\"\nroughness_um = [0.2, 0.2]\nface_width = 12.0\nmaterials = \"steel,bronze\"\n").unwrap();
+    let r = b.gear_loads_inputs(&GivenLoads::default()).unwrap();
+    assert_eq!(r.face_width, 0.012);
+    assert_eq!(r.materials.follower.name, "bronze");
+    // refused, naming the input
+    let b = with("").unwrap();
+    let e = b.gear_loads_inputs(&GivenLoads::default()).unwrap_err();
+    assert_eq!(e.input, LoadInput::Torque);
+    for (given, input) in [
+        (
+            GivenLoads {
+                torque: Some(-1.0),
+                face_width: Some(10.0),
+                ..GivenLoads::default()
+            },
+            LoadInput::Torque,
+        ),
+        (
+            GivenLoads {
+                power_kw: Some(0.0),
+                face_width: Some(10.0),
+                ..GivenLoads::default()
+            },
+            LoadInput::Power,
+        ),
+        (
+            GivenLoads {
+                torque: Some(1.0),
+                power_kw: Some(1.0),
+                face_width: Some(10.0),
+                ..GivenLoads::default()
+            },
+            LoadInput::Power,
+        ),
+        (
+            GivenLoads {
+                torque: Some(1.0),
+                ..GivenLoads::default()
+            },
+            LoadInput::FaceWidth,
+        ),
+        (
+            // 10 m in a millimetre file: a slip
+            GivenLoads {
+                torque: Some(1.0),
+                face_width: Some(1e4 * 1e3),
+                ..GivenLoads::default()
+            },
+            LoadInput::FaceWidth,
+        ),
+    ] {
+        let e = b.gear_loads_inputs(&given).unwrap_err();
+        assert_eq!(e.input, input, "{given:?}: {e}");
+    }
+    // the section's own errors name its keys
+    for (extra, key) in [
+        ("[gear_loads]\ntorque = 1.0\npower_kw = 1.0\n", "gear_loads.power_kw"),
+        ("[gear_loads]\nface_width = 1.0\n", "gear_loads"),
+        ("[gear_loads]\ntorque = -2.0\n", "gear_loads.torque"),
+        ("[gear_loads]\ntorque = 2.0\nface_width = 0.0\n", "gear_loads.face_width"),
+        ("[gear_loads]\ntorque = 2.0\nmaterials = \"rubber,steel\"\n", "gear_loads.materials"),
+        (
+            "[gear_loads]\ntorque = 2.0\nface_width = 10.0\n[lubrication]\noil = \"sae-30@100c\"\nroughness_um = [0.2, 0.2]\nface_width = 12.0\n",
+            "gear_loads.face_width",
+        ),
+    ] {
+        let e = with(extra).unwrap_err();
+        assert!(e.contains(key), "{extra}: {e}");
+    }
+    // a torque on a cam mechanism
+    let cam = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"circle\"\ncenter = [5.0, 0.0]\nradius = 20.0\n[follower]\nkind = \"translating-flat\"\n[gear_loads]\ntorque = 5.0\n";
+    let e = built(cam).unwrap_err();
+    assert!(e.contains("not a gear pair"), "{e}");
+}
