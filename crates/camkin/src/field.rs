@@ -204,6 +204,10 @@ pub enum SystemKey {
     CrankPerDriver,
     /// `period_deg`
     PeriodDeg,
+    /// `roughness_um[i]` (a contact's: 0 curve A's, 1 curve B's)
+    RoughnessUm(usize),
+    /// `rolls`
+    Rolls,
 }
 
 impl SystemKey {
@@ -245,6 +249,8 @@ impl SystemKey {
             SystemKey::ForceTable => "table",
             SystemKey::CrankPerDriver => "crank_per_driver",
             SystemKey::PeriodDeg => "period_deg",
+            SystemKey::RoughnessUm(_) => "roughness_um",
+            SystemKey::Rolls => "rolls",
         })
     }
 }
@@ -584,6 +590,7 @@ impl Field {
                         p.push(Name("motion_follower"));
                         p.extend(k.name().map(Name));
                     }
+                    SystemKey::RoughnessUm(i) => p.extend([Name("roughness_um"), Index(i)]),
                     k => p.extend(k.name().map(Name)),
                 }
             }

@@ -53,7 +53,8 @@ pub use run::{Run, StepAdvice};
 pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
 pub use system::{
-    ContactEvent, ContactHertz, SystemDynamicsOptions, SystemRun, SystemSample, SystemSimulation,
+    ContactEvent, ContactHertz, ContactSurface, SystemDynamicsOptions, SystemRun, SystemSample,
+    SystemSimulation,
 };
 
 /// What went wrong in a dynamic simulation.

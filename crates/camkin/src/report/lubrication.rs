@@ -166,6 +166,59 @@ pub struct LubricationReport {
     pub regime_shares: [f64; 3],
 }
 
+/// One line contact's lubrication: `force` N on `face_width` m, the curves' radii (m, convex
+/// positive; the second `None`: no line contact), the surfaces' speeds past the contact `u`
+/// (m/s, along one tangent), `sigma` the composite roughness (m), `beta` the two surfaces'
+/// thermal coefficients (Blok's), `e_prime` Pa.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn line_point(
+    request: &LubricationRequest,
+    sigma: f64,
+    beta: Option<[f64; 2]>,
+    face_width: f64,
+    e_prime: f64,
+    force: f64,
+    radii: (f64, Option<f64>),
+    u: [f64; 2],
+) -> LubricationPoint {
+    let contact = LineContact {
+        surface_speeds: u,
+        reduced_radius: radii
+            .1
+            .and_then(|r2| reduced_radius(radii.0, r2))
+            .unwrap_or(f64::NAN),
+        load_per_width: force / face_width,
+        effective_modulus: e_prime,
+    };
+    let rr = contact.reduced_radius;
+    let film = film_thickness(request.formula, &request.lubricant, &contact);
+    let lambda = film.map(|f| f.minimum / sigma);
+    let mu = request.friction.coefficient(lambda);
+    LubricationPoint {
+        entrainment: contact.entrainment(),
+        sliding: contact.sliding(),
+        slide_to_roll: contact.slide_to_roll(),
+        reduced_radius: rr.is_finite().then_some(rr),
+        load_per_width: contact.load_per_width,
+        film,
+        lambda,
+        regime: lambda.map(regime),
+        friction_coefficient: mu,
+        flash_temperature: beta
+            .filter(|_| force > 0.0)
+            .and_then(|beta| blok_flash_temperature(&contact, mu, beta)),
+        friction_power: mu * force.max(0.0) * contact.sliding().abs(),
+    }
+}
+
+/// The two surfaces' thermal coefficients (Blok's), where both have thermal constants.
+pub(crate) fn thermal_coefficients(request: &LubricationRequest) -> Option<[f64; 2]> {
+    match request.surfaces.map(|s| s.thermal) {
+        [Some(a), Some(b)] => Some([a.coefficient(), b.coefficient()]),
+        _ => None,
+    }
+}
+
 /// Angles the entrainment's sign change is located to, rad (1e-12 rad is 6e-11°).
 const REVERSAL_TOLERANCE: f64 = 1e-12;
 
@@ -182,39 +235,9 @@ impl LubricationReport {
         request: &LubricationRequest,
     ) -> Self {
         let sigma = composite_roughness(&request.surfaces[0], &request.surfaces[1]);
-        let beta = match request.surfaces.map(|s| s.thermal) {
-            [Some(a), Some(b)] => Some([a.coefficient(), b.coefficient()]),
-            _ => None,
-        };
-        let point = |force: f64, radii: (f64, Option<f64>), u: [f64; 2]| -> LubricationPoint {
-            let contact = LineContact {
-                surface_speeds: u,
-                reduced_radius: radii
-                    .1
-                    .and_then(|r2| reduced_radius(radii.0, r2))
-                    .unwrap_or(f64::NAN),
-                load_per_width: force / face_width,
-                effective_modulus: e_prime,
-            };
-            let rr = contact.reduced_radius;
-            let film = film_thickness(request.formula, &request.lubricant, &contact);
-            let lambda = film.map(|f| f.minimum / sigma);
-            let mu = request.friction.coefficient(lambda);
-            LubricationPoint {
-                entrainment: contact.entrainment(),
-                sliding: contact.sliding(),
-                slide_to_roll: contact.slide_to_roll(),
-                reduced_radius: rr.is_finite().then_some(rr),
-                load_per_width: contact.load_per_width,
-                film,
-                lambda,
-                regime: lambda.map(regime),
-                friction_coefficient: mu,
-                flash_temperature: beta
-                    .filter(|_| force > 0.0)
-                    .and_then(|beta| blok_flash_temperature(&contact, mu, beta)),
-                friction_power: mu * force.max(0.0) * contact.sliding().abs(),
-            }
+        let beta = thermal_coefficients(request);
+        let point = |force: f64, radii: (f64, Option<f64>), u: [f64; 2]| {
+            line_point(request, sigma, beta, face_width, e_prime, force, radii, u)
         };
         let of = |s: &ForceState| -> [Option<LubricationPoint>; 2] {
             let own = (s.contact_force > 0.0).then(|| {
@@ -320,29 +343,7 @@ impl LubricationReport {
     /// written once; a form-closed follower's second contact in `second_…` columns. A contact
     /// that carries no force has empty cells.
     pub fn table(&self) -> (Vec<String>, Vec<Vec<Cell>>) {
-        type Get = fn(&LubricationPoint) -> Cell;
-        let per_contact: [(&str, Get); 12] = [
-            ("entrainment_m_s", |p| Cell::Num(Some(p.entrainment))),
-            ("sliding_m_s", |p| Cell::Num(Some(p.sliding))),
-            ("slide_to_roll", |p| Cell::Num(p.slide_to_roll)),
-            ("load_N_per_m", |p| Cell::Num(Some(p.load_per_width))),
-            ("reduced_radius_m", |p| Cell::Num(p.reduced_radius)),
-            ("film_central_um", |p| {
-                Cell::Num(p.film.map(|f| f.central * 1e6))
-            }),
-            ("film_minimum_um", |p| {
-                Cell::Num(p.film.map(|f| f.minimum * 1e6))
-            }),
-            ("lambda", |p| Cell::Num(p.lambda)),
-            ("regime", |p| {
-                Cell::Text(p.regime.map(|r| r.name().to_string()))
-            }),
-            ("friction_coefficient", |p| {
-                Cell::Num(Some(p.friction_coefficient))
-            }),
-            ("flash_temperature_K", |p| Cell::Num(p.flash_temperature)),
-            ("friction_power_W", |p| Cell::Num(Some(p.friction_power))),
-        ];
+        let per_contact = point_columns();
         let sides = if self.closed { 2 } else { 1 };
         let mut columns = vec!["angle_deg".to_string()];
         for side in 0..sides {
@@ -373,6 +374,43 @@ impl LubricationReport {
             .collect();
         (columns, rows)
     }
+}
+
+/// A column's empty cell, of the kind its cells are (a text column's is text).
+pub(crate) fn empty_cell(get: fn(&LubricationPoint) -> Cell) -> Cell {
+    match get(&LubricationPoint::EMPTY) {
+        Cell::Text(_) => Cell::Text(None),
+        _ => Cell::Num(None),
+    }
+}
+
+/// A per-point column's getter.
+pub(crate) type PointColumn = (&'static str, fn(&LubricationPoint) -> Cell);
+
+/// The per-contact columns of a lubrication table (names with their units), written once.
+pub(crate) fn point_columns() -> [PointColumn; 12] {
+    [
+        ("entrainment_m_s", |p| Cell::Num(Some(p.entrainment))),
+        ("sliding_m_s", |p| Cell::Num(Some(p.sliding))),
+        ("slide_to_roll", |p| Cell::Num(p.slide_to_roll)),
+        ("load_N_per_m", |p| Cell::Num(Some(p.load_per_width))),
+        ("reduced_radius_m", |p| Cell::Num(p.reduced_radius)),
+        ("film_central_um", |p| {
+            Cell::Num(p.film.map(|f| f.central * 1e6))
+        }),
+        ("film_minimum_um", |p| {
+            Cell::Num(p.film.map(|f| f.minimum * 1e6))
+        }),
+        ("lambda", |p| Cell::Num(p.lambda)),
+        ("regime", |p| {
+            Cell::Text(p.regime.map(|r| r.name().to_string()))
+        }),
+        ("friction_coefficient", |p| {
+            Cell::Num(Some(p.friction_coefficient))
+        }),
+        ("flash_temperature_K", |p| Cell::Num(p.flash_temperature)),
+        ("friction_power_W", |p| Cell::Num(Some(p.friction_power))),
+    ]
 }
 
 impl LubricationPoint {

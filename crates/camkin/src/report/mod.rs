@@ -17,6 +17,7 @@ mod gear_loads;
 mod lubrication;
 mod materials;
 mod system_forces;
+mod system_lubrication;
 
 pub use design::{Check, DesignReport, Verdict};
 pub use forces::{
@@ -27,6 +28,9 @@ pub use gear_loads::{GearLoadError, GearLoadRequest, GearLoads, PathPoint};
 pub use lubrication::{LubricationPoint, LubricationReport, LubricationRequest};
 pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
 pub use system_forces::{AtAngle, ContactForces, DriverEffort, Impact, SystemForces};
+pub use system_lubrication::{
+    ContactLubrication, ContactLubricationReport, SystemLubricationReport, SystemLubricationRequest,
+};
 
 use crate::cam::CamError;
 use crate::dynamics::DynamicsError;

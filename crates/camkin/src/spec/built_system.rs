@@ -24,6 +24,8 @@ pub struct BuiltSystem {
     /// whether its file has `[dynamics]`: forces move its free degrees of freedom (it is
     /// simulated; a kinematic analysis needs every one driven)
     pub simulated: bool,
+    /// its `[lubrication]`, each contact's (with a face width), when the file has it
+    pub lubrication: Option<crate::report::SystemLubricationRequest>,
 }
 
 /// What the angles a system is swept over mean, and the instant of each.
@@ -100,6 +102,7 @@ impl BuiltSystem {
             },
             coil_springs: Vec::new(),
             simulated: false,
+            lubrication: None,
         })
     }
 
@@ -163,6 +166,7 @@ mod tests {
             dynamics: crate::dynamics::SystemDynamicsOptions::default(),
             coil_springs: Vec::new(),
             simulated: false,
+            lubrication: None,
         };
         let t = built.times(&[0.0, 0.4f64.to_degrees()]).unwrap();
         assert_eq!(t[0], 0.0);

@@ -49,7 +49,9 @@ mod lubrication;
 mod pair;
 mod profile;
 mod system;
+mod system_contact;
 mod system_dynamics;
+mod system_lubrication;
 #[cfg(feature = "text")]
 pub mod text;
 
@@ -68,10 +70,11 @@ pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
 pub use system::{
-    BodySpec, ContactSpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec,
-    TorsionSpringSpec,
+    BodySpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec, TorsionSpringSpec,
 };
+pub use system_contact::ContactSpec;
 pub use system_dynamics::{GasForceSpec, SystemDynamicsSpec};
+pub use system_lubrication::SystemLubricationSpec;
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;

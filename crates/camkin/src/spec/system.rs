@@ -32,8 +32,8 @@ use super::build::{
     SpecWarning,
 };
 use super::profile::Place;
-use super::ProfileSpec;
 use super::{BuiltSystem, SweepAngle};
+use super::{ContactSpec, ProfileSpec};
 use crate::body::Pose;
 use crate::field::{Field, FollowerField, ProfileField, SystemField, SystemKey, SystemTable};
 use crate::geometry::Point2;
@@ -85,6 +85,12 @@ pub struct SystemSpec {
     /// `[[gas_force]]`: forces from tables of the crank angle (for dynamics)
     #[cfg_attr(feature = "serde", serde(default))]
     pub gas_force: Vec<super::GasForceSpec>,
+    /// `[lubrication]`: the oil of every contact with a face width (for dynamics)
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub lubrication: Option<super::SystemLubricationSpec>,
 }
 
 /// `[[spring]]`: `stiffness` N per length, `free_length` (length), `preload` N at it.
@@ -211,57 +217,6 @@ pub struct DriverSpec {
     /// a constant acceleration: deg/s² for an angle, length/s² for x or y (default 0)
     #[cfg_attr(feature = "serde", serde(default))]
     pub acceleration: Option<f64>,
-}
-
-/// `[[contact]]`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
-pub struct ContactSpec {
-    /// its name
-    pub name: String,
-    /// the bodies carrying curve A and curve B
-    pub bodies: [String; 2],
-    /// curve A in the first body's frame (any curve a follower may carry: spline, circle,
-    /// ellipse, points-file, involute-gear, line, point), material on its left
-    pub curve_a: ProfileSpec,
-    /// curve B in the second body's frame
-    pub curve_b: ProfileSpec,
-    /// for a `kind = "motion"` curve: the follower its program is written for, as a
-    /// mechanism file's `[follower]`, in that curve's body's frame (whose origin is the cam's
-    /// axis)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub motion_follower: Option<super::FollowerSpec>,
-    /// for a `kind = "motion"` curve: the sense the cam turns in for its program (`ccw` by
-    /// default)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub motion_direction: Option<crate::cam::Sense>,
-    /// Newton's coefficient of restitution of its impacts, 0 to 1 (for dynamics; default the
-    /// `[dynamics]` table's)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub restitution: Option<f64>,
-    /// its line contact's face width, length unit: with it the simulation gives its Hertz
-    /// pressure (for dynamics)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub face_width: Option<f64>,
-    /// its curves' materials, `A,B` (presets or `E=<Pa>:nu=<ratio>`; default `steel,steel`)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
-    pub materials: Option<String>,
 }
 
 /// The field `key` of element `index` of `table`.
@@ -530,6 +485,7 @@ impl SystemSpec {
         };
         let mut restitution = Vec::with_capacity(self.contact.len());
         let mut hertz = Vec::with_capacity(self.contact.len());
+        let mut lubricated = Vec::with_capacity(self.contact.len());
         for (i, c) in self.contact.iter().enumerate() {
             named(T::Contact, i, &c.name)?;
             let [a, b] = two(T::Contact, i, &c.bodies)?;
@@ -599,6 +555,12 @@ impl SystemSpec {
             let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
             let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;
             hertz.push(super::system_dynamics::contact_hertz(c, i, scale)?);
+            lubricated.push(super::system_lubrication::contact_lubrication(
+                self.lubrication.as_ref(),
+                c,
+                i,
+                unit.metres(),
+            )?);
             restitution.push(match c.restitution {
                 Some(e) => unit_interval(at(T::Contact, i, K::Restitution), e)?,
                 None => default_restitution,
@@ -773,6 +735,12 @@ impl SystemSpec {
             hertz,
             ..crate::dynamics::SystemDynamicsOptions::default()
         };
+        if let (Some(_), None) = (&self.lubrication, &self.dynamics) {
+            return Err(SpecError::Rule {
+                field: Field::Lubrication(crate::field::LubricationField::Table),
+                reason: "a system's lubrication comes from its simulation's forces: give it a [dynamics] table".into(),
+            });
+        }
         Ok(BuiltSystem {
             system: sys,
             length_unit: unit,
@@ -781,6 +749,11 @@ impl SystemSpec {
             dynamics,
             coil_springs,
             simulated: self.dynamics.is_some(),
+            lubrication: self.lubrication.as_ref().map(|_| {
+                crate::report::SystemLubricationRequest {
+                    contacts: lubricated,
+                }
+            }),
         })
     }
 }

@@ -52,6 +52,7 @@ mod system_files;
 #[cfg(feature = "text")]
 mod system_jerk;
 mod system_linkages;
+mod system_lubrication;
 #[cfg(feature = "text")]
 mod system_presets;
 mod system_valve_train;

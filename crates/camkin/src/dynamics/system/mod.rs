@@ -127,6 +127,22 @@ pub struct SystemSample {
     pub hertz_pa: Vec<Option<f64>>,
     /// each contact's nearest pair of points (its contact point and normal in touch), world
     pub pairings: Vec<Option<Pairing>>,
+    /// each closed contact's curves' radii and surface speeds (none where it is open or a curve
+    /// is a point)
+    pub surfaces: Vec<Option<ContactSurface>>,
+}
+
+/// A closed contact's two curves at the contact point: what its lubrication needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactSurface {
+    /// each curve's radius of curvature there, m, convex positive (`∞`: straight; negative:
+    /// concave)
+    pub radius: [f64; 2],
+    /// the speed at which each curve's material passes the contact point, m/s, along curve A's
+    /// tangent `t_A`: `−ṡ_A` and `−σ ṡ_B` (the contact point moves along each curve at its
+    /// sliding rate relative to that body), so that their mean is the entrainment and their
+    /// difference the sliding
+    pub speed: [f64; 2],
 }
 
 /// A simulated run: a sample at the start and after every output step, and the events between.
@@ -507,6 +523,9 @@ impl<'a> SystemSimulation<'a> {
                 )
             })
             .collect();
+        let surfaces = (0..self.in_contact.len())
+            .map(|k| self.surface(k, p[self.first_contact + k].as_ref()))
+            .collect();
         Ok(SystemSample {
             time: self.t,
             q: q.into_owned(),
@@ -520,6 +539,43 @@ impl<'a> SystemSimulation<'a> {
             driver_efforts,
             hertz_pa,
             pairings: p[self.first_contact..].to_vec(),
+            surfaces,
+        })
+    }
+
+    /// Contact `k`'s curves at its contact `pairing` now, where it is closed and neither curve
+    /// is a point (a point has no radius, and no line contact).
+    fn surface(&self, k: usize, pairing: Option<&Pairing>) -> Option<ContactSurface> {
+        let pairing = pairing.filter(|_| self.in_contact[k])?;
+        let c = &self.sys.contacts()[k];
+        let point =
+            |curve: &dyn crate::curve::Curve| matches!(curve.domain(), crate::curve::Domain::Point);
+        if point(c.curve_a.as_ref()) || point(c.curve_b.as_ref()) {
+            return None;
+        }
+        let (sa, sb) = (self.state(c.a.0), self.state(c.b.0));
+        let (fa, fb) = (
+            Surface::new(c.curve_a.as_ref(), &sa),
+            Surface::new(c.curve_b.as_ref(), &sb),
+        );
+        let kin = contact::ContactKinematics::new(&fa, &fb, pairing, contact::CONFORMAL_TOLERANCE)
+            .ok()?;
+        let u = self.opts.metres_per_unit;
+        let [ta, tb] = self.turning[k];
+        let radius = |curve: &dyn crate::curve::Curve, at: f64, turn: f64| {
+            let k = turn * curve.eval(at).curvature() / u;
+            if k == 0.0 {
+                f64::INFINITY
+            } else {
+                1.0 / k
+            }
+        };
+        Some(ContactSurface {
+            radius: [
+                radius(c.curve_a.as_ref(), pairing.u_a, ta),
+                radius(c.curve_b.as_ref(), pairing.u_b, tb),
+            ],
+            speed: [-kin.sliding_rate_a * u, -kin.sigma * kin.sliding_rate_b * u],
         })
     }
 
