@@ -159,6 +159,107 @@ impl PySystem {
         large: bool,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let sys = &self.built.system;
+        let (run, t0, t1) = self.run_revolutions(py, revolutions, step_deg, substeps, large)?;
+        let unit = self.built.length_unit.name();
+        let mut samples = Columns::new(
+            camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
+            run.samples.len(),
+        );
+        for (k, s) in run.samples.iter().enumerate() {
+            samples.push(camkin::table::system_sample_cells(
+                step_deg * k as f64,
+                s,
+                &self.built.dynamics.hertz,
+            ));
+        }
+        let mut events = Columns::new(camkin::table::system_event_columns(unit), run.events.len());
+        for e in &run.events {
+            let angle = step_deg * (e.time - t0) / (t1 - t0);
+            events.push(camkin::table::system_event_cells(sys, e, angle));
+        }
+        Ok((samples.into_dict(py, false)?, events.into_dict(py, false)?))
+    }
+
+    /// lubrication(*, step_deg=1.0, large=False) -> dict
+    ///
+    /// The lubrication of the system's contacts over a revolution of its first driver, as
+    /// ``camkin forces SYSTEM.toml --step STEP`` gives it (its file's ``[lubrication]`` and each
+    /// contact's ``face_width``, ``roughness_um`` and ``rolls``): ``{"columns": …, "report": …}``,
+    /// the columns of its ``lubrication.csv`` (a row per sample and lubricated contact: the
+    /// entrainment and sliding in m/s, the film in µm, λ, the regime, the flash temperature in
+    /// K, the friction power in W) and each contact's extremes.
+    ///
+    /// >>> s = camkin.System.from_toml("examples/valve-train.toml")
+    /// >>> r = s.lubrication(step_deg=1.0)
+    /// >>> r["report"]["contacts"][0]["min_lambda"]
+    #[pyo3(signature = (*, step_deg = 1.0, large = false))]
+    fn lubrication<'py>(
+        &self,
+        py: Python<'py>,
+        step_deg: f64,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let Some(req) = self.built.lubrication.as_ref() else {
+            return Err(errors::input(
+                "lubrication",
+                None,
+                "the system's file has no [lubrication] table (its oil and roughness)".into(),
+            ));
+        };
+        let (run, t0, t1) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
+        let angle_of = |t: f64| step_deg * (t - t0) / (t1 - t0);
+        let report =
+            camkin::report::SystemLubricationReport::new(&self.built.system, &run, req, angle_of);
+        let (names, rows) = report.table();
+        let mut cols = Columns::new(names, rows.len());
+        for r in rows {
+            cols.push(r);
+        }
+        let out = PyDict::new(py);
+        out.set_item("columns", cols.into_dict(py, false)?)?;
+        let mut v = serde_json::to_value(&report)
+            .map_err(|e| errors::contact(format!("the report cannot be written: {e}")))?;
+        if let Some(cs) = v.get_mut("contacts").and_then(|c| c.as_array_mut()) {
+            for c in cs {
+                if let Some(o) = c.as_object_mut() {
+                    o.remove("points");
+                }
+            }
+        }
+        if let Some(o) = v.as_object_mut() {
+            o.remove("angles_deg");
+        }
+        let json = py.import("json")?;
+        out.set_item("report", json.call_method1("loads", (v.to_string(),))?)?;
+        Ok(out)
+    }
+
+    fn __repr__(&self) -> String {
+        let s = &self.built.system;
+        format!(
+            "<camkin.System {:?}: {} bodies, {} joints, {} drivers, {} contacts, lengths in {}>",
+            self.name,
+            s.bodies().len(),
+            s.joints().len(),
+            s.drivers().len(),
+            s.contacts().len(),
+            self.built.length_unit.name()
+        )
+    }
+}
+
+impl PySystem {
+    /// The simulation `simulate` and `lubrication` share: `revolutions` of the first driver in
+    /// `step_deg` output steps, with the instants of angle 0 and of the first step.
+    fn run_revolutions(
+        &self,
+        py: Python<'_>,
+        revolutions: f64,
+        step_deg: f64,
+        substeps: Option<usize>,
+        large: bool,
+    ) -> PyResult<(camkin::dynamics::SystemRun, f64, f64)> {
+        let sys = &self.built.system;
         let h_ = camkin::human::human;
         if !(revolutions > 0.0 && revolutions <= 1e4) {
             return Err(errors::input(
@@ -231,36 +332,6 @@ impl PySystem {
             }
             Err(e) => return Err(dyn_err(e)),
         };
-        let unit = self.built.length_unit.name();
-        let mut samples = Columns::new(
-            camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
-            run.samples.len(),
-        );
-        for (k, s) in run.samples.iter().enumerate() {
-            samples.push(camkin::table::system_sample_cells(
-                step_deg * k as f64,
-                s,
-                &self.built.dynamics.hertz,
-            ));
-        }
-        let mut events = Columns::new(camkin::table::system_event_columns(unit), run.events.len());
-        for e in &run.events {
-            let angle = step_deg * (e.time - t0) / (t1 - t0);
-            events.push(camkin::table::system_event_cells(sys, e, angle));
-        }
-        Ok((samples.into_dict(py, false)?, events.into_dict(py, false)?))
-    }
-
-    fn __repr__(&self) -> String {
-        let s = &self.built.system;
-        format!(
-            "<camkin.System {:?}: {} bodies, {} joints, {} drivers, {} contacts, lengths in {}>",
-            self.name,
-            s.bodies().len(),
-            s.joints().len(),
-            s.drivers().len(),
-            s.contacts().len(),
-            self.built.length_unit.name()
-        )
+        Ok((run, t0, t1))
     }
 }

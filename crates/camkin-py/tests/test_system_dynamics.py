@@ -45,3 +45,31 @@ def test_simulate_chooses_its_substeps_and_refuses_too_few():
         sys.simulate(revolutions=-1.0)
     with pytest.raises(camkin.InputError, match="step_deg"):
         sys.simulate(step_deg=0.0)
+
+
+def test_lubrication_equals_the_command_to_the_last_bit(tmp_path):
+    # the valve train's [lubrication]: the roller rolls on the cam (nothing slides), the pad
+    # slides on the valve's tip; Python's columns are lubrication.csv's to the last bit
+    path = EXAMPLES / "valve-train.toml"
+    r = camkin.System.from_toml(path).lubrication(step_deg=1.0)
+    out = tmp_path / "vt"
+    run_cli("forces", path, "--step", "1", "--out", out)
+    cli = csv_columns((out / "lubrication.csv").read_text())
+    assert list(r["columns"]) == list(cli)
+    for key, cells in cli.items():
+        got = list(r["columns"][key])
+        if key in ("contact", "regime"):
+            assert [g if g is not None else "" for g in got] == cells, key
+        else:
+            want = [float(c) if c != "" else None for c in cells]
+            assert [None if (g is None or g != g) else g for g in got] == want, key
+    names = [c["name"] for c in r["report"]["contacts"]]
+    assert names == ["cam on roller", "pad on valve"]
+    roller = r["report"]["contacts"][0]
+    assert roller["lubrication"]["rolls"] == 1 and roller["mean_friction_power"] == 0.0
+
+
+def test_lubrication_without_the_table_names_it():
+    with pytest.raises(camkin.InputError) as e:
+        camkin.System.from_toml(EXAMPLES / "cam-four-bar.toml").lubrication()
+    assert e.value.field == "lubrication"

@@ -28,10 +28,17 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
             "--materials: a system's contacts take their materials in the file ([[contact]] materials = \"A,B\")".into(),
         ));
     }
-    if args.oil.is_some() || args.roughness.is_some() {
-        return Err(bad(
-            "--oil: a system's lubrication is not computed yet (a cam mechanism's is: camkin forces MECH.toml --oil …)".into(),
-        ));
+    for (given, flag) in [
+        (args.oil.is_some(), "--oil"),
+        (args.roughness.is_some(), "--roughness"),
+        (args.film.is_some(), "--film"),
+        (args.friction.is_some(), "--friction"),
+    ] {
+        if given {
+            return Err(bad(format!(
+                "{flag}: a system's lubrication is in its file: a [lubrication] table (oil, roughness_um, film, friction) and each [[contact]]'s face_width, roughness_um and rolls"
+            )));
+        }
     }
     let built = super::system::load(&args.mechanism, name, text)?;
     if !built.simulated {
@@ -172,8 +179,22 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
             sig(i.approach_m_s, 3)
         );
     }
+    let lubrication = built
+        .lubrication
+        .as_ref()
+        .map(|req| camkin::report::SystemLubricationReport::new(sys, &run, req, angle_of));
+    if let Some(l) = &lubrication {
+        text += &lubrication_text(l);
+    }
     crate::out!("{text}")?;
     if let Some(od) = od {
+        if let Some(l) = &lubrication {
+            let (columns, rows) = l.table();
+            write_atomic(Some(&od.path().join("lubrication.csv")), |w| {
+                write_cell_table(w, TableFormat::Csv, &columns, rows)
+            })
+            .map_err(Failure::output)?;
+        }
         let dir = od.path().to_path_buf();
         // the time series' force columns: the angle, the time, each contact's force and
         // Hertz pressure, each driver's effort
@@ -266,6 +287,62 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
     } else {
         Err(Failure::Check(anyhow!(failures.join("; "))))
     }
+}
+
+/// Each lubricated contact's lines: its smallest λ and regime shares, its largest flash
+/// temperature, its entrainment's reversals, its friction power.
+fn lubrication_text(l: &camkin::report::SystemLubricationReport) -> String {
+    let deg = |a: f64| camkin::human::human((a * 100.0).round() / 100.0);
+    let mut text = String::new();
+    for c in &l.contacts {
+        text += &format!("lubrication of {:?}", c.name);
+        if c.lubrication.rolls.is_some() {
+            text += " (its roller rolls without slip)";
+        }
+        match &c.min_lambda {
+            Some(m) => {
+                let [b, mixed, full] = c.regime_shares.map(|x| sig(100.0 * x, 3));
+                text += &format!(
+                    ": λ min {} at {}° ({}); boundary {b} %, mixed {mixed} %, full film {full} % of its loaded samples",
+                    sig(m.value, 3),
+                    deg(m.angle_deg),
+                    camkin::lubrication::regime(m.value).name()
+                );
+            }
+            None => text += ": it carries no load at any sample with a line contact",
+        }
+        if let Some(t) = &c.thinnest_film {
+            text += &format!(
+                "; film min {} µm at {}°",
+                sig(t.value * 1e6, 3),
+                deg(t.angle_deg)
+            );
+        }
+        if let Some(f) = c.max_flash_temperature.as_ref().filter(|f| f.value > 0.0) {
+            text += &format!(
+                "; flash temperature max {} K at {}°",
+                sig(f.value, 3),
+                deg(f.angle_deg)
+            );
+        }
+        if c.max_flash_temperature.is_some_and(|f| f.value == 0.0) {
+            text += "; nothing slides: no flash temperature";
+        }
+        text += &if c.entrainment_reversals_deg.is_empty() {
+            "; entrainment never reverses".to_string()
+        } else {
+            format!(
+                "; entrainment reverses near {} (between samples)",
+                c.entrainment_reversals_deg
+                    .iter()
+                    .map(|a| format!("{}°", deg(*a)))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        };
+        text += &format!("; friction {} W mean\n", sig(c.mean_friction_power, 3));
+    }
+    text
 }
 
 /// `x` to `n` significant digits, for people.

@@ -194,3 +194,68 @@ fn the_checks_exit_3_and_the_files_flags_exit_2() {
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(stderr.contains("[dynamics]"), "{stderr}");
 }
+
+/// The disc's lubrication with `[lubrication]` and the contact's face width: along the face the
+/// disc's surface passes the contact at `−ωR` and the face's at `eω sin θ` (closed forms), the
+/// load per width the closed-form force over 10 mm; `lubrication.csv` has a row per sample; the
+/// cam mechanism's lubrication flags are refused for a system, naming the file's keys.
+#[test]
+fn a_systems_lubrication_against_the_discs_closed_forms() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("disc.toml");
+    let text = SYSTEM.replace(
+        "curve_b = { kind = \"line\", anchor = [0.0, 0.0], direction = [1.0, 0.0] }\n",
+        "curve_b = { kind = \"line\", anchor = [0.0, 0.0], direction = [1.0, 0.0] }\nface_width = 10.0\n",
+    ) + "\n[lubrication]\noil = \"sae-30@100c\"\nroughness_um = [0.2, 0.3]\n";
+    std::fs::write(&path, text).unwrap();
+    let out = camkin()
+        .arg("forces")
+        .arg(&path)
+        .args(["--step", "1", "--out"])
+        .arg(dir.path().join("out"))
+        .assert()
+        .success();
+    let stdout = String::from_utf8_lossy(&out.get_output().stdout).to_string();
+    assert!(
+        stdout.contains("lubrication of \"disc on face\": λ min"),
+        "{stdout}"
+    );
+    let (h, rows) =
+        parse_csv(&std::fs::read(dir.path().join("out").join("lubrication.csv")).unwrap());
+    let c = columns(&h);
+    assert_eq!(rows.len(), 361);
+    let w = 600.0 * TAU / 60.0;
+    let (r, e, m, k, p) = (0.020, 0.005, 0.2, 2000.0, 20.0);
+    let x = |row: &Vec<String>, name: &str| -> f64 { row[c[name]].parse().unwrap() };
+    let s = -x(&rows[0], "entrainment_m_s").signum();
+    for row in &rows {
+        let th = x(row, "driver_angle_deg").to_radians();
+        let (ua, ub) = (-s * w * r, s * e * w * th.sin());
+        let scale = w * r;
+        let ent = x(row, "entrainment_m_s");
+        assert!((ent - 0.5 * (ua + ub)).abs() < 1e-9 * scale, "{row:?}");
+        assert!(
+            (x(row, "sliding_m_s") - (ua - ub)).abs() < 1e-9 * scale,
+            "{row:?}"
+        );
+        let f = p + (k * e - m * e * w * w) * th.sin();
+        assert!(
+            (x(row, "load_N_per_m") - f / 0.010).abs() < 1e-6 * f / 0.010,
+            "{row:?}"
+        );
+        assert_eq!(row[c["contact"]], "disc on face");
+    }
+    for flag in [["--oil", "sae-30@100c"], ["--roughness", "0.1,0.1"]] {
+        let out = camkin()
+            .arg("forces")
+            .arg(&path)
+            .args(flag)
+            .assert()
+            .code(2);
+        let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+        assert!(
+            stderr.contains(flag[0]) && stderr.contains("[lubrication]"),
+            "{stderr}"
+        );
+    }
+}

@@ -20,6 +20,15 @@ class System:
     def analyze(
         self, angles_deg: ArrayLike, *, strict: bool = False, large: bool = False
     ) -> Dict[str, Any]: ...
+    def simulate(
+        self,
+        *,
+        revolutions: float = 1.0,
+        step_deg: float = 1.0,
+        substeps: Optional[int] = None,
+        large: bool = False,
+    ) -> Tuple[Dict[str, Any], Dict[str, Any]]: ...
+    def lubrication(self, *, step_deg: float = 1.0, large: bool = False) -> Dict[str, Any]: ...
 
 class Mechanism:
     @staticmethod
