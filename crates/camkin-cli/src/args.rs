@@ -137,9 +137,32 @@ pub struct MotionUnitArgs {
     /// (ds/dθ, d²s/dθ², d³s/dθ³, as cam tools print them).
     #[arg(long, value_parser = crate::args::per_parser(), default_value = "s")]
     pub per: camkin::table::Per,
-    /// Unit of an oscillating follower's arm angle and its derivatives.
-    #[arg(long, value_parser = crate::args::angle_unit_parser(), default_value = "deg")]
-    pub angle_unit: camkin::table::AngleUnit,
+    /// Unit of an oscillating follower's arm angle and its derivatives [default: deg]; refused
+    /// for a follower that slides (its coordinate is a length).
+    #[arg(long, value_parser = crate::args::angle_unit_parser())]
+    pub angle_unit: Option<camkin::table::AngleUnit>,
+}
+
+impl MotionUnitArgs {
+    /// The arm angle's unit for `mech`: a unit given for a follower that slides is refused,
+    /// not ignored.
+    pub fn angle_unit_for(
+        &self,
+        mech: &camkin::cam::Mechanism,
+    ) -> Result<camkin::table::AngleUnit, crate::Failure> {
+        match self.angle_unit {
+            Some(u) if matches!(mech.follower_joint(), camkin::cam::Joint::Translating { .. }) => {
+                Err(crate::Failure::Input(anyhow::anyhow!(
+                    "--angle-unit {}: the follower slides (its coordinate is a length, in the file's unit); --angle-unit is an arm's",
+                    match u {
+                        camkin::table::AngleUnit::Deg => "deg",
+                        _ => "rad",
+                    }
+                )))
+            }
+            u => Ok(u.unwrap_or_default()),
+        }
+    }
 }
 
 /// Cam angles in degrees, comma-separated: `A1,A2,...`.
@@ -182,8 +205,9 @@ impl AngleRange {
     /// The angles of the range, degrees.
     pub fn angles(&self) -> Vec<f64> {
         let count = ((self.stop - self.start) / self.step).ceil().max(0.0) as usize;
+        let grid = camkin::table::AngleGrid::new(self.start, self.step);
         (0..count)
-            .map(|k| self.start + k as f64 * self.step)
+            .map(|k| grid.at(k))
             .filter(|&a| {
                 if self.step > 0.0 {
                     a < self.stop

@@ -29,6 +29,7 @@ pub mod args;
 pub mod commands;
 pub mod csv_cells;
 pub mod draw;
+pub mod exit_codes;
 pub mod forces_text;
 pub mod manufacture;
 pub mod mechfile;

@@ -110,7 +110,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
     args.table.check()?;
     let mech = &loaded.mech;
-    let units = Units::new(mech, loaded.unit, args.units.angle_unit, args.units.per);
+    let units = Units::new(
+        mech,
+        loaded.unit,
+        args.units.angle_unit_for(mech)?,
+        args.units.per,
+    );
     let columns = analysis_columns(&units);
     let angles = match (&args.at, args.angles) {
         (Some(list), _) => list.0.clone(),

@@ -472,7 +472,12 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     }
     let loaded = load_mechanism(args.mechanism.as_ref())?;
     let mech = &loaded.mech;
-    let units = Units::new(mech, loaded.unit, args.units.angle_unit, args.units.per);
+    let units = Units::new(
+        mech,
+        loaded.unit,
+        args.units.angle_unit_for(mech)?,
+        args.units.per,
+    );
     let curve_angles = (360.0 / step).round() as usize;
     // the rows of every plotted angle are held, about 450 bytes each
     crate::refuse_large(
@@ -484,7 +489,8 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
     let dir = od.path().to_path_buf();
     let n = (360.0 / step).round() as usize;
-    let grid: Vec<f64> = (0..n).map(|k| k as f64 * step).collect();
+    let even = camkin::table::AngleGrid::new(0.0, step);
+    let grid: Vec<f64> = (0..n).map(|k| even.at(k)).collect();
     let thetas: Vec<f64> = grid
         .iter()
         .map(|&a| camkin::geometry::deg_to_rad(a))

@@ -78,7 +78,12 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     let points = (360.0 / step).round();
     let loaded = load_mechanism(Some(&args.mechanism))?;
     let mech = &loaded.mech;
-    let u = Units::new(mech, loaded.unit, args.units.angle_unit, args.units.per);
+    let u = Units::new(
+        mech,
+        loaded.unit,
+        args.units.angle_unit_for(mech)?,
+        args.units.per,
+    );
     // the files written
     crate::refuse_large(
         &camkin::work::Work::sweep(mech, points as usize, 1).with_bytes(points * BYTES_PER_POINT),
@@ -94,7 +99,8 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
     };
     let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
     let n = (360.0 / step).round() as usize;
-    let thetas: Vec<f64> = (0..n).map(|k| (k as f64 * step).to_radians()).collect();
+    let grid = camkin::table::AngleGrid::new(0.0, step);
+    let thetas: Vec<f64> = (0..n).map(|k| grid.at(k).to_radians()).collect();
     let pts: Vec<(f64, f64)> = thetas
         .iter()
         .map(|&t| profile.position(t))

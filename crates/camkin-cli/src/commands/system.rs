@@ -113,7 +113,7 @@ pub fn analyze(args: &Args, name: &str, built: &BuiltSystem) -> Result<(), Failu
             "--per deg: a system's table gives its rates per second (the columns say so: _mm_s, _deg_s2); drop --per".into(),
         ));
     }
-    if args.units.angle_unit != camkin::table::AngleUnit::Deg {
+    if args.units.angle_unit.is_some() {
         return Err(bad(
             "--angle-unit rad: a system's table gives its angles in degrees (the columns say so: _deg); drop --angle-unit".into(),
         ));

@@ -9,6 +9,8 @@ mod cli_contacts;
 mod cli_engineer;
 mod cli_files;
 mod cli_gear_loads;
+mod cli_help;
+mod cli_human_output;
 mod cli_lubrication;
 mod cli_mesh;
 mod cli_output;
