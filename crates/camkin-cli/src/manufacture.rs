@@ -328,7 +328,11 @@ pub fn write(
     let mut made = Made::default();
     let n = (360.0 / opts.step_deg).round() as usize;
     let phis: Vec<f64> = (0..n)
-        .map(|k| (k as f64 * opts.step_deg).to_radians())
+        .map(|k| {
+            camkin::table::AngleGrid::new(0.0, opts.step_deg)
+                .at(k)
+                .to_radians()
+        })
         .collect();
     let out = |e: anyhow::Error| Error::Output(e);
     // the polar table

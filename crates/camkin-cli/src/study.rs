@@ -108,7 +108,8 @@ pub fn check_bounds(
 
 pub fn run(mech: &Mechanism, nodes: &[usize], step_deg: f64, label: &str) -> Result<Study> {
     let count = (360.0 / step_deg).round() as usize;
-    let grid_deg: Vec<f64> = (0..count).map(|k| k as f64 * step_deg).collect();
+    let grid = camkin::table::AngleGrid::new(0.0, step_deg);
+    let grid_deg: Vec<f64> = (0..count).map(|k| grid.at(k)).collect();
     let thetas: Vec<f64> = grid_deg.iter().map(|d| d.to_radians()).collect();
     let pb = progress(2 + nodes.len() as u64, label);
 

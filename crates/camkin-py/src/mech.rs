@@ -621,7 +621,8 @@ impl PyMechanism {
             ));
         }
         self.check_work(n, false)?;
-        let thetas: Vec<f64> = (0..n).map(|k| (k as f64 * step_deg).to_radians()).collect();
+        let grid = camkin::table::AngleGrid::new(0.0, step_deg);
+        let thetas: Vec<f64> = (0..n).map(|k| grid.at(k).to_radians()).collect();
         let mech = self.mech();
         let checks = py.detach(|| mech.design_checks(&thetas, pressure_limit_deg));
         let report = camkin::report::DesignReport::new(

@@ -390,7 +390,8 @@ impl PyMechanism {
         self.check_work(n * (1 + nodes.len()), large)?;
         let u = Units::plain(self.mech(), self.built.length_unit);
         let mech = self.mech();
-        let grid: Vec<f64> = (0..n).map(|k| k as f64 * step_deg).collect();
+        let angles = camkin::table::AngleGrid::new(0.0, step_deg);
+        let grid: Vec<f64> = (0..n).map(|k| angles.at(k)).collect();
         let thetas: Vec<f64> = grid.iter().map(|d| d.to_radians()).collect();
         let out = py.detach(|| -> Result<_, String> {
             let exact: Vec<f64> = mech

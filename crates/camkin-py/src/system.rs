@@ -167,7 +167,7 @@ impl PySystem {
         );
         for (k, s) in run.samples.iter().enumerate() {
             samples.push(camkin::table::system_sample_cells(
-                step_deg * k as f64,
+                camkin::table::AngleGrid::new(0.0, step_deg).at(k),
                 s,
                 &self.built.dynamics.hertz,
             ));

@@ -54,7 +54,7 @@ pub enum GearError {
         overlap: f64,
     },
     /// the centre distance leaves no path of contact on the involutes
-    #[error("the centre distance {centre_distance} leaves the teeth no path of contact on their involutes (contact ratio {contact_ratio:.3}): they touch at most tip to tip; a contact ratio of 1 needs a centre distance of at most {for_one:.6}", centre_distance = crate::human::human(*.centre_distance))]
+    #[error("the centre distance {centre_distance} leaves the teeth no path of contact on their involutes (contact ratio {contact_ratio:.3}): they touch at most tip to tip; a contact ratio of 1 needs a centre distance of at most {}", crate::human::human(*.for_one), centre_distance = crate::human::human(*.centre_distance))]
     NoMesh {
         /// `a`, length
         centre_distance: f64,
@@ -64,7 +64,7 @@ pub enum GearError {
         for_one: f64,
     },
     /// the base pitches differ: the teeth cannot hand over
-    #[error("the gears' base pitches differ ({driver:.6} and {driven:.6}, π m cos α): give both the same module and pressure angle")]
+    #[error("the gears' base pitches differ ({} and {}, π m cos α): give both the same module and pressure angle", crate::human::human(*.driver), crate::human::human(*.driven))]
     BasePitch {
         /// the driver's base pitch, length
         driver: f64,

@@ -1,5 +1,6 @@
 //! Numbers as people read them in messages: six significant digits at most, exponent notation
-//! outside `[1e-4, 1e15)` (`1e200`, not two hundred digits; `340`, not `339.99999999999994`).
+//! outside `[1e-4, 1e9)` (`1e200`, not two hundred digits; `1.209e9`, not `1209000000`; `340`,
+//! not `339.99999999999994`).
 //! CSV and JSON output keep round-trip precision; this is only for text.
 
 /// `x` rounded for a message.
@@ -14,7 +15,7 @@ pub fn human(x: f64) -> String {
         return "0".into();
     }
     let a = x.abs();
-    if (1e-4..1e15).contains(&a) {
+    if (1e-4..1e9).contains(&a) {
         let digits = (5 - a.log10().floor() as i32).max(0) as usize;
         let s = format!("{x:.digits$}");
         let s = if s.contains('.') {
@@ -67,6 +68,8 @@ mod tests {
         assert_eq!(human(f64::INFINITY), "inf");
         assert_eq!(human(-0.0), "0");
         assert_eq!(human(123456.7), "123457");
+        assert_eq!(human(1209000000.0), "1.209e9");
+        assert_eq!(human(999999999.0), "999999999");
         assert_eq!(human(5e-324), "5e-324");
         assert_eq!(human(-2.5e-120), "-2.5e-120");
     }

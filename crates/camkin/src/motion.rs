@@ -256,7 +256,7 @@ pub enum MotionError {
     #[error("a motion program needs at least one segment")]
     Empty,
     /// A segment's extent is not positive and finite.
-    #[error("segment {index}: extent {extent} rad must be positive and finite")]
+    #[error("segment {index}: extent {} rad must be positive and finite", crate::human::human(*.extent))]
     Extent {
         /// the segment
         index: usize,
@@ -274,13 +274,13 @@ pub enum MotionError {
         reason: &'static str,
     },
     /// The extents do not add up to one revolution.
-    #[error("the segments cover {total_deg}°, not 360°")]
+    #[error("the segments cover {}°, not 360°", crate::human::human(*.total_deg))]
     NotARevolution {
         /// their total, degrees
         total_deg: f64,
     },
     /// The rises do not add up to zero: the motion would not close.
-    #[error("the rises add up to {total}, not 0: the motion does not return to its start")]
+    #[error("the rises add up to {}, not 0: the motion does not return to its start", crate::human::human(*.total))]
     NotClosed {
         /// their sum
         total: f64,

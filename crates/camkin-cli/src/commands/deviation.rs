@@ -136,7 +136,8 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
         ", or use a coarser --step",
     )?;
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
-    let thetas: Vec<f64> = (0..m).map(|k| (k as f64 * step).to_radians()).collect();
+    let grid = camkin::table::AngleGrid::new(0.0, step);
+    let thetas: Vec<f64> = (0..m).map(|k| grid.at(k).to_radians()).collect();
     let sweep = |mm: &Mechanism| -> Result<Vec<[f64; 4]>, Failure> {
         let t = mm
             .travel()

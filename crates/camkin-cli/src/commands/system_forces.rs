@@ -220,8 +220,11 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
             .iter()
             .enumerate()
             .map(|(i, s)| {
-                let cells =
-                    camkin::table::system_sample_cells(step * i as f64, s, &built.dynamics.hertz);
+                let cells = camkin::table::system_sample_cells(
+                    camkin::table::AngleGrid::new(0.0, step).at(i),
+                    s,
+                    &built.dynamics.hertz,
+                );
                 keep.iter().map(|&k| cells[k].clone()).collect()
             })
             .collect();

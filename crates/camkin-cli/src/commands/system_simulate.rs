@@ -92,10 +92,11 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
         .map_err(|e| dyn_err(name, e))?;
     let (samples, events) = (run.samples, run.events);
     pb.finish_and_clear();
+    let grid = camkin::table::AngleGrid::new(0.0, step);
     let rows: Vec<Vec<Cell>> = samples
         .iter()
         .enumerate()
-        .map(|(k, s)| system_sample_cells(step * k as f64, s, &built.dynamics.hertz))
+        .map(|(k, s)| system_sample_cells(grid.at(k), s, &built.dynamics.hertz))
         .collect();
     let columns = system_sample_columns(sys, unit, &built.dynamics.hertz);
     let event_columns = system_event_columns(unit);

@@ -357,7 +357,8 @@ pub struct Analysis {
 /// Cam angles of one revolution in steps of `step_deg`.
 pub fn revolution(step_deg: f64) -> Vec<f64> {
     let n = (360.0 / step_deg).round() as usize;
-    (0..n).map(|k| k as f64 * step_deg).collect()
+    let grid = camkin::table::AngleGrid::new(0.0, step_deg);
+    (0..n).map(|k| grid.at(k)).collect()
 }
 
 /// Refuses work over the limits: too many angles, a sweep estimated over the time allowed.

@@ -224,7 +224,7 @@ fn interfering_or_distant_gears_are_refused_naming_the_distance() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("no path of contact"))
-        .stderr(predicate::str::contains("at most 63.39167"));
+        .stderr(predicate::str::contains("at most 63.3917"));
     let low = dir.path().join("low.toml");
     std::fs::write(
         &low,

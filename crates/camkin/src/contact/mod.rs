@@ -134,7 +134,7 @@ pub struct Pairing {
 #[non_exhaustive]
 pub enum ContactError {
     /// `D = κ_B − σ κ_A = 0`: the contact point is not determined by the geometry.
-    #[error("conformal contact at ({x}, {y}): κ_A = {kappa_a}, κ_B = {kappa_b}, σ = {sigma}; the contact point is not determined by the geometry", x = point.x, y = point.y)]
+    #[error("conformal contact at ({x}, {y}): κ_A = {ka}, κ_B = {kb}, σ = {sigma}; the contact point is not determined by the geometry", x = crate::human::human(point.x), y = crate::human::human(point.y), ka = crate::human::human(*kappa_a), kb = crate::human::human(*kappa_b))]
     Conformal {
         /// contact point, world
         point: Point2,
@@ -146,7 +146,7 @@ pub enum ContactError {
         sigma: f64,
     },
     /// Newton did not converge.
-    #[error("pairing-point search did not converge after {iterations} iterations (u_a = {u_a}, u_b = {u_b}, last step {last_step})")]
+    #[error("pairing-point search did not converge after {iterations} iterations (u_a = {}, u_b = {}, last step {})", crate::human::human(*.u_a), crate::human::human(*.u_b), crate::human::human(*.last_step))]
     NoConvergence {
         /// iterations done
         iterations: u32,

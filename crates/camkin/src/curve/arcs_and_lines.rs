@@ -131,7 +131,7 @@ pub enum ArcsError {
         count: usize,
     },
     /// A piece of no length, or not finite.
-    #[error("piece {index} has no length or is not finite (length {length})")]
+    #[error("piece {index} has no length or is not finite (length {})", crate::human::human(*.length))]
     Degenerate {
         /// its index
         index: usize,
@@ -139,7 +139,7 @@ pub enum ArcsError {
         length: f64,
     },
     /// A piece does not start where the one before it ends.
-    #[error("piece {index} starts {gap} away from where piece {previous} ends: the pieces do not join (at most {tolerance} allowed)")]
+    #[error("piece {index} starts {} away from where piece {previous} ends: the pieces do not join (at most {} allowed)", crate::human::human(*.gap), crate::human::human(*.tolerance))]
     Gap {
         /// the piece's index
         index: usize,

@@ -62,7 +62,7 @@ pub use system::{
 #[non_exhaustive]
 pub enum DynamicsError {
     /// A contact's kinematics could not be computed.
-    #[error("at t = {time} s: {source}")]
+    #[error("at t = {} s: {source}", crate::human::human(*.time))]
     Contact {
         /// time, s
         time: f64,
@@ -71,13 +71,13 @@ pub enum DynamicsError {
     },
     /// The augmented mass matrix is not positive definite (a body without mass that no
     /// constraint holds, or a penalty out of range).
-    #[error("at t = {time} s: the augmented mass matrix is singular")]
+    #[error("at t = {} s: the augmented mass matrix is singular", crate::human::human(*.time))]
     Singular {
         /// time, s
         time: f64,
     },
     /// The multiplier iteration did not converge.
-    #[error("at t = {time} s: the augmented Lagrangian iteration did not converge ({iterations} iterations, residual {residual})")]
+    #[error("at t = {} s: the augmented Lagrangian iteration did not converge ({iterations} iterations, residual {})", crate::human::human(*.time), crate::human::human(*.residual))]
     NoConvergence {
         /// time, s
         time: f64,
@@ -87,7 +87,7 @@ pub enum DynamicsError {
         residual: f64,
     },
     /// The kinematic analysis failed during a run.
-    #[error("at t = {time} s: {source}")]
+    #[error("at t = {} s: {source}", crate::human::human(*.time))]
     Analysis {
         /// time, s
         time: f64,
@@ -113,7 +113,7 @@ pub enum DynamicsError {
         unit: &'static str,
     },
     /// More events than [`MAX_EVENTS_PER_STEP`](self) in one step: the follower chatters.
-    #[error("at t = {time} s: more than {events} lift-offs and impacts in one step: the follower chatters (restitution near 1 with a rebound that never dies down); use a smaller restitution")]
+    #[error("at t = {} s: more than {events} lift-offs and impacts in one step: the follower chatters (restitution near 1 with a rebound that never dies down); use a smaller restitution", crate::human::human(*.time))]
     Chatter {
         /// time, s
         time: f64,

@@ -344,8 +344,8 @@ fn conjugate_words(c: &ConjugatePlay, arm: bool, unit: &str) -> String {
         format!("a constant clearance of {}", v(hi.0))
     } else {
         format!(
-            "none: both curves touch everywhere (|play| ≤ {})",
-            v(lo.0.abs().max(hi.0.abs()))
+            "none: both curves touch everywhere (|play| below {})",
+            v(c.tolerance)
         )
     }
 }

@@ -323,7 +323,9 @@ impl ForceReport {
         req.validate(mech)?;
         let n = angles(req.step_deg);
         let f = Forces::new(mech, params).map_err(ReportError::Dynamics)?;
-        let thetas: Vec<f64> = (0..n).map(|k| k as f64 * TAU / n as f64).collect();
+        // the angles of the table's grid, in radians
+        let grid = crate::table::AngleGrid::new(0.0, 360.0 / n as f64);
+        let thetas: Vec<f64> = (0..n).map(|k| grid.at(k).to_radians()).collect();
         let mut sweep = f.sweep();
         let states: Vec<ForceState> = thetas
             .iter()
@@ -497,11 +499,18 @@ impl ForceReport {
                 ("second_contact_stress_MPa".into(), |_, p| p[1]),
             ]);
         }
+        // the angle column as the grid's decimals (7.5, not 7.499999999999999)
+        let grid = crate::table::AngleGrid::new(0.0, 360.0 / self.states.len().max(1) as f64);
         let rows = self
             .states
             .iter()
             .zip(&self.stress_mpa)
-            .map(|(s, p)| columns.iter().map(|c| Cell::Num((c.1)(s, p))).collect())
+            .enumerate()
+            .map(|(k, (s, p))| {
+                let mut row = vec![Cell::Num(Some(grid.at(k)))];
+                row.extend(columns[1..].iter().map(|c| Cell::Num((c.1)(s, p))));
+                row
+            })
             .collect();
         (columns.into_iter().map(|c| c.0).collect(), rows)
     }

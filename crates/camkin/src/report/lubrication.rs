@@ -354,12 +354,15 @@ impl LubricationReport {
             Cell::Text(_) => Cell::Text(None),
             _ => Cell::Num(None),
         };
+        // the angle column as the grid's decimals (7.5, not 7.499999999999999)
+        let grid = crate::table::AngleGrid::new(0.0, 360.0 / self.cam_angles.len().max(1) as f64);
         let rows = self
             .cam_angles
             .iter()
             .zip(&self.points)
-            .map(|(t, p)| {
-                let mut row = vec![Cell::Num(Some(t.to_degrees()))];
+            .enumerate()
+            .map(|(k, (_, p))| {
+                let mut row = vec![Cell::Num(Some(grid.at(k)))];
                 for point in &p[..sides] {
                     for (_, get) in &per_contact {
                         row.push(match point {

@@ -8,6 +8,7 @@
 mod column;
 mod columns;
 mod contacts;
+mod grid;
 mod mesh;
 mod sweep;
 mod system;
@@ -22,6 +23,7 @@ pub use columns::{
     Cell,
 };
 pub use contacts::{contact_cells, contact_columns, ContactRow};
+pub use grid::AngleGrid;
 pub use mesh::{mesh_cells, mesh_columns, MeshRow};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
 pub use system::{system_cells, system_columns, system_contact_cells, system_contact_columns};
