@@ -85,7 +85,13 @@ pub fn summary(r: &ForceReport, title: &str, lu: LengthUnit<'_>) -> String {
             "the second curve takes no load at any constant speed (the spring holds the follower's own curve on)\n".to_string()
         };
     } else {
-        out += &if jump.speed.is_finite() {
+        out += &if jump.speed == 0.0 {
+            format!(
+                "jump speed: none is safe: the contact force is under {} N even at rest, first at {} (the spring holds less than the margin there)\n",
+                num(r.margin),
+                angle(jump.cam_angle)
+            )
+        } else if jump.speed.is_finite() {
             format!(
                 "jump speed: {} rpm (the contact force reaches {} N first at {}, at constant speed)\n",
                 num(rpm(jump.speed)),
@@ -100,25 +106,75 @@ pub fn summary(r: &ForceReport, title: &str, lu: LengthUnit<'_>) -> String {
         };
     }
     if let Some(s) = &r.spring {
+        // a need within rounding of the peak force is none
+        let scale = r
+            .contact_force
+            .1
+            .value
+            .abs()
+            .max(s.from_motion.force_at_full_lift);
+        let snap = |x: f64| if x.abs() <= 1e-9 * scale { 0.0 } else { x };
+        let no_spring = s.file_stiffness == 0.0 && s.file_preload == 0.0;
+        if !no_spring {
+            out += &format!(
+                "spring for {} rpm with a margin of {} N: preload ≥ {} {fu} with the stiffness {} {ku} (file: preload {} {fu}); ",
+                num(rpm(r.target)),
+                num(r.margin),
+                num(snap(s.preload)),
+                num(s.file_stiffness),
+                num(s.file_preload)
+            );
+            out += &match s.stiffness {
+                Some(k) => format!(
+                    "or stiffness ≥ {} {ku} with the preload {} {fu}\n",
+                    num(snap(k)),
+                    num(s.file_preload)
+                ),
+                None => format!(
+                    "no stiffness will do with the preload {} {fu} (the follower leaves the cam at rest position, where only the preload acts)\n",
+                    num(s.file_preload)
+                ),
+            };
+        }
+        let d = &s.from_motion;
+        // a slide's lengths in the file's unit, an arm's angles in degrees
+        let (len, lunit) = if r.oscillating {
+            (d.full_lift.to_degrees(), "°".to_string())
+        } else {
+            (d.full_lift / lu.metres, format!(" {}", lu.name))
+        };
+        let deflection = match d.preload_deflection {
+            Some(x) => {
+                let x = if r.oscillating {
+                    x.to_degrees()
+                } else {
+                    x / lu.metres
+                };
+                format!(", compressed {}{lunit} at the lowest position (its free length is the installed length plus this)", num(x))
+            }
+            None => String::new(),
+        };
         out += &format!(
-            "spring for {} rpm with a margin of {} N: preload ≥ {} {fu} with the stiffness {} {ku} (file: preload {} {fu}); ",
+            "{} for {} rpm with a margin of {} N: stiffness {} {ku} with a preload of {} {fu}{deflection}; {} {fu} at full lift ({}{lunit}), the least of any spring that holds; a constant force of {} {fu} would do too\n",
+            if no_spring { "no spring in the file: the spring from the motion" } else { "the spring from the motion alone" },
             num(rpm(r.target)),
             num(r.margin),
-            num(s.preload),
-            num(s.file_stiffness),
-            num(s.file_preload)
+            num(snap(d.stiffness)),
+            num(snap(d.preload)),
+            num(snap(d.force_at_full_lift)),
+            num(len),
+            num(snap(d.constant_force)),
         );
-        out += &match s.stiffness {
-            Some(k) => format!(
-                "or stiffness ≥ {} {ku} with the preload {} {fu}\n",
-                num(k),
-                num(s.file_preload)
-            ),
-            None => format!(
-                "no stiffness will do with the preload {} {fu} (the follower leaves the cam at rest position, where only the preload acts)\n",
-                num(s.file_preload)
-            ),
-        };
+        if d.trade_off[4][0] > 0.0 {
+            out += &format!(
+                "  the least preload by stiffness: {}\n",
+                d.trade_off
+                    .iter()
+                    .map(|[k, p]| format!("{} {ku} → {} {fu}", num(snap(*k)), num(snap(*p))))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            );
+        }
     }
     if let Some(h) = &r.hertz {
         out += &hertz(h, r.closed, lu);
@@ -308,6 +364,11 @@ pub fn failures(r: &ForceReport) -> Option<String> {
                 num(min.value),
                 angle(min.cam_angle),
                 num(*margin)
+            ),
+            ForceCheck::LeavesBelowTarget { jump, target } if *jump == 0.0 => format!(
+                "the contact force is under the margin {} N even at rest: no speed up to {} rpm is safe (the spring holds less than the margin)",
+                num(r.margin),
+                num(rpm(*target))
             ),
             ForceCheck::LeavesBelowTarget { jump, target } => format!(
                 "the follower leaves the cam at {} rpm, below {} rpm",

@@ -159,7 +159,7 @@ pub fn load_forces(
     let (name, text) = read_text(path)?;
     let b = build(&text, &name, path.parent().unwrap_or(Path::new(".")), true)?;
     let unit = b.length_unit;
-    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: this command needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)")))?, unit, b.lubrication))
+    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: this command needs a [dynamics] section (mass or inertia; spring_stiffness and spring_preload, default 0, damping, restitution, gravity optional)")))?, unit, b.lubrication))
 }
 
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);
@@ -176,7 +176,7 @@ pub fn parse_dynamics(
     base: &Path,
 ) -> Result<(Mechanism, FollowerDynamics), InputError> {
     let b = build(text, name, base, true)?;
-    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: a simulation needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)")))?))
+    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: a simulation needs a [dynamics] section (mass or inertia; spring_stiffness and spring_preload, default 0, damping, restitution, gravity optional)")))?))
 }
 
 /// The spec in a mechanism file's text.

@@ -114,7 +114,7 @@ impl PyMechanism {
             errors::input(
                 "dynamics",
                 None,
-                format!("{what} needs a [dynamics] section (mass or inertia, spring_stiffness, spring_preload; damping, restitution, gravity optional)"),
+                format!("{what} needs a [dynamics] section (mass or inertia; spring_stiffness and spring_preload, default 0, damping, restitution, gravity optional)"),
             )
         })?;
         Ok((built, params))

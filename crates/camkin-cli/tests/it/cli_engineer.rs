@@ -639,3 +639,49 @@ fn forces_refuses_implausible_materials_widths_and_outputs_up_front() {
         .stderr(predicate::str::contains("a file, not a folder"));
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep me");
 }
+
+/// Issue 49: `[dynamics]` without a spring: `forces` sizes one from the motion alone (the
+/// disc's closed form: a constant force of `M + m e ω_t²` holds it, the least at full lift), and
+/// says that no speed is safe rather than "leaves the cam at 0 rpm"; the range of stiffnesses
+/// and their least preloads ends at the one that needs none.
+#[test]
+fn forces_sizes_the_spring_from_the_motion_when_the_file_has_none() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(examples().join("eccentric-flat-dynamics.toml"))
+        .unwrap()
+        .lines()
+        .filter(|l| !l.starts_with("spring_"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let file = dir.path().join("nospring.toml");
+    std::fs::write(&file, text).unwrap();
+    let out = camkin()
+        .arg("forces")
+        .arg(&file)
+        .args(["--target-rpm", "1000", "--margin", "5"])
+        .assert()
+        .code(3);
+    let stdout = String::from_utf8_lossy(&out.get_output().stdout).to_string();
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    // the disc: radius 40 mm, 10 mm off the axis, 0.3 kg; at 1000 rpm, 5 N + m e ω²
+    let w: f64 = 1000.0 * std::f64::consts::TAU / 60.0;
+    let need = 5.0 + 0.3 * 0.010 * w * w;
+    let shown = format!(
+        "a constant force of {} N",
+        camkin_cli::forces_text::num(need)
+    );
+    assert!(
+        stdout.contains("no spring in the file: the spring from the motion"),
+        "{stdout}"
+    );
+    assert!(stdout.contains(&shown), "{shown} not in {stdout}");
+    assert!(stdout.contains("jump speed: none is safe"), "{stdout}");
+    assert!(
+        stdout.contains("the least preload by stiffness"),
+        "{stdout}"
+    );
+    assert!(
+        stderr.contains("even at rest") && !stderr.contains("at 0 rpm"),
+        "{stderr}"
+    );
+}

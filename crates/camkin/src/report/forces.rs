@@ -5,6 +5,7 @@
 //! check. One computation for every front end (the command's text and files, Python, the
 //! studio); the formulas are [`crate::dynamics::Forces`]'s.
 
+use super::spring::{spring_sizing, SpringSizing};
 use super::{Extreme, ForceField, Materials, ReportError};
 use crate::cam::Mechanism;
 use crate::dynamics::{hertz_line_pressure, FollowerDynamics, ForceState, Forces};
@@ -65,22 +66,6 @@ pub struct Jump {
     pub cam_angle: f64,
     /// the index of that angle among the report's angles
     pub index: usize,
-}
-
-/// The spring that keeps a spring-held follower on up to the target speed with the margin.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct SpringSizing {
-    /// the smallest preload with the file's stiffness, N (N·m); at least 0
-    pub preload: f64,
-    /// the smallest stiffness with the file's preload, N/m (N·m/rad); at least 0. `None`: no
-    /// stiffness will do (the follower leaves the cam at its rest position, where only the
-    /// preload acts)
-    pub stiffness: Option<f64>,
-    /// the file's preload
-    pub file_preload: f64,
-    /// the file's stiffness
-    pub file_stiffness: f64,
 }
 
 /// A form-closed follower: the load on each of its curves, where it passes between them, and
@@ -548,37 +533,6 @@ pub fn plausible_face_width(width: f64, size: f64) -> bool {
 /// rad/s → rpm
 pub fn rpm(w: f64) -> f64 {
     w * 60.0 / TAU
-}
-
-fn spring_sizing(
-    f: &Forces<'_>,
-    states: &[ForceState],
-    thetas: &[f64],
-    params: &FollowerDynamics,
-    margin: f64,
-    target: f64,
-) -> SpringSizing {
-    // the largest need over the revolution, refined between the samples
-    let worst = |g: &dyn Fn(&ForceState) -> Option<f64>| {
-        let values: Vec<Option<f64>> = states.iter().map(g).collect();
-        best_refined(thetas, &values, 1.0, Some(TAU), |t| {
-            f.at(t).ok().as_ref().and_then(g)
-        })
-        .map(|(_, v)| v)
-    };
-    let preload = worst(&|s| Some(f.preload_needed(s, margin, target))).unwrap_or(0.0);
-    let stiffness = worst(&|s| f.stiffness_needed(s, margin, target));
-    // where the lift is zero only the preload acts: no stiffness helps if it falls short there
-    let possible = states.iter().all(|s| {
-        f.stiffness_needed(s, margin, target).is_some()
-            || f.preload_needed(s, margin, target) <= params.spring_preload
-    });
-    SpringSizing {
-        preload: preload.max(0.0),
-        stiffness: possible.then_some(stiffness.unwrap_or(0.0).max(0.0)),
-        file_preload: params.spring_preload,
-        file_stiffness: params.spring_stiffness,
-    }
 }
 
 /// The greatest of a quantity over the revolution, refined between the samples.

@@ -16,17 +16,19 @@ mod forces;
 mod gear_loads;
 mod lubrication;
 mod materials;
+mod spring;
 mod system_forces;
 mod system_lubrication;
 
 pub use design::{Check, DesignReport, Verdict};
 pub use forces::{
     plausible_face_width, rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport,
-    HertzSide, Jump, SpringSizing,
+    HertzSide, Jump,
 };
 pub use gear_loads::{GearLoadError, GearLoadRequest, GearLoads, PathPoint};
 pub use lubrication::{LubricationPoint, LubricationReport, LubricationRequest};
 pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
+pub use spring::{SpringDesign, SpringSizing};
 pub use system_forces::{AtAngle, ContactForces, DriverEffort, Impact, SystemForces};
 pub use system_lubrication::{
     ContactLubrication, ContactLubricationReport, SystemLubricationReport, SystemLubricationRequest,

@@ -395,9 +395,11 @@ pub struct DynamicsSpec {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub inertia: Option<f64>,
-    /// N/m (N·m/rad)
+    /// N/m (N·m/rad); default 0: no spring (`camkin forces` sizes one from the motion)
+    #[cfg_attr(feature = "serde", serde(default))]
     pub spring_stiffness: f64,
-    /// N (N·m) at the follower's lowest position
+    /// N (N·m) at the follower's lowest position; default 0
+    #[cfg_attr(feature = "serde", serde(default))]
     pub spring_preload: f64,
     /// N·s/m (N·m·s/rad), default 0
     #[cfg_attr(

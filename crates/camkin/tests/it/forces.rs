@@ -269,3 +269,60 @@ fn with_damping_the_jump_speed_is_the_smaller_positive_root() {
     }
     assert!(two_roots > 5, "{two_roots}");
 }
+
+/// The spring from the motion alone (issue 49): for the disc, the contact force with a spring
+/// `(k, P)` is `P + k e (1 + cos φ) − m e ω² cos φ`; holding at least the margin `M` up to `ω_t`
+/// needs `P ≥ M` (at φ = π) and `P + 2 k e ≥ M + m e ω_t²` (at φ = 0, full lift), so the least
+/// force at full lift of any spring that holds is `M + m e ω_t²`, reached by a constant force of
+/// that size; whatever spring the file has. With no spring in the file, the preload's sizing at
+/// the file's stiffness (none) is that same constant force.
+#[test]
+fn the_spring_from_the_motion_is_the_closed_form() {
+    use camkin::report::{ForceReport, ForceRequest};
+    let w = 120.0;
+    let disc = Arc::new(camkin::curve::Circle::new(Point2::new(E, 0.0), R).unwrap());
+    let mech = mechanism(
+        disc,
+        Point2::origin(),
+        Sense::Ccw,
+        w * 60.0 / TAU,
+        Follower::TranslatingFlat {
+            direction: Vec2::x(),
+        },
+    );
+    let (margin, target_rpm) = (5.0, 1500.0);
+    let wt = target_rpm * TAU / 60.0;
+    let need = margin + M * E * wt * wt;
+    for (k, f0) in [(K, F0), (0.0, 0.0), (1e5, 300.0)] {
+        let req = ForceRequest {
+            margin,
+            target_rpm: Some(target_rpm),
+            ..ForceRequest::default()
+        };
+        let r = ForceReport::new(&mech, params(M, 0.0, k, f0, 0.0), &req).unwrap();
+        let d = r.spring.unwrap().from_motion;
+        assert_close(d.force_at_full_lift, need, 1e-9, need, "force at full lift");
+        assert_close(d.constant_force, need, 1e-9, need, "constant force");
+        assert_close(d.full_lift, 2.0 * E, 1e-12, E, "full lift");
+        // it holds: the preload and the stiffness meet both ends' needs
+        assert!(d.preload >= margin - 1e-9 * need, "{d:?}");
+        assert!(
+            d.preload + 2.0 * d.stiffness * E >= need * (1.0 - 1e-9),
+            "{d:?}"
+        );
+        // the range: the least preload at stiffness k is max(M, M + m e ω_t² − 2 k e) (M at
+        // φ = π, where there is no lift); more stiffness saves none beyond m ω_t² / 2
+        let k_max = M * wt * wt / 2.0;
+        assert_close(
+            d.trade_off[4][0],
+            k_max,
+            1e-9,
+            k_max,
+            "stiffness beyond which none is saved",
+        );
+        for [kk, p] in d.trade_off {
+            let exact = margin.max(need - 2.0 * kk * E);
+            assert_close(p, exact, 1e-9, need, "least preload");
+        }
+    }
+}
