@@ -382,6 +382,34 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
         ),
         &dir.join("camshaft_torque"),
     )?;
+    // the contact stress over the angle (with a face width)
+    if r.hertz.is_some() {
+        let stress = |k: usize, name: &str, dashed| Series {
+            name: name.into(),
+            points: r
+                .states
+                .iter()
+                .zip(&r.stress_mpa)
+                .map(|(s, p)| (s.cam_angle.to_degrees(), p[k].unwrap_or(f64::NAN)))
+                .collect(),
+            dashed,
+        };
+        chart::save(
+            &by_angle(
+                "Hertz contact stress under permanent contact",
+                "contact stress (MPa)".into(),
+                if r.closed {
+                    vec![
+                        stress(0, "follower's own curve", false),
+                        stress(1, "second curve", true),
+                    ]
+                } else {
+                    vec![stress(0, "contact stress", false)]
+                },
+            ),
+            &dir.join("contact_stress"),
+        )?;
+    }
     let curve = |k: usize, name: &str, dashed| Series {
         name: name.into(),
         points: r.force_speed.iter().map(|(w, f)| (rpm(*w), f[k])).collect(),
@@ -414,6 +442,37 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
             ],
         )
     };
+    // the operating speed and the jump speed, marked
+    let mut series = series;
+    let (lo, hi) = series
+        .iter()
+        .flat_map(|c| c.points.iter().map(|p| p.1))
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    if lo.is_finite() {
+        let mark = |x: f64, name: String| Series {
+            name,
+            points: vec![(x, lo), (x, hi)],
+            dashed: true,
+        };
+        series.push(mark(
+            rpm(r.speed),
+            format!("operating speed {} rpm", num(rpm(r.speed))),
+        ));
+        if r.jump.speed.is_finite() && r.jump.speed > 0.0 && rpm(r.jump.speed) <= top {
+            let what = if r.closed {
+                "second curve loaded from"
+            } else {
+                "jump speed"
+            };
+            series.push(mark(
+                rpm(r.jump.speed),
+                format!("{what} {} rpm", num(rpm(r.jump.speed))),
+            ));
+        }
+    }
     chart::save(
         &Chart {
             title,

@@ -263,8 +263,14 @@ where
                     .draw_series(DashedLineSeries::new(run, 6, 4, style))
                     .map_err(|e| anyhow!("{e}"))?;
                 if first {
+                    // the legend's sample dashed as the line is
                     series.label(s.name.clone()).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
+                        plotters::element::DashedPathElement::new(
+                            vec![(x, y), (x + 24, y)],
+                            6,
+                            4,
+                            color.stroke_width(2),
+                        )
                     });
                 }
             } else {

@@ -209,9 +209,18 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
         "contact_force.png",
         "camshaft_torque.svg",
         "force_speed.png",
+        "contact_stress.png",
     ] {
         assert!(dir.path().join("out").join(f).exists(), "{f}");
     }
+    // the force-speed page marks the operating speed and the jump speed (issue 49)
+    let svg = std::fs::read_to_string(dir.path().join("out").join("force_speed.svg")).unwrap();
+    let jump_label = format!("jump speed {} rpm", camkin_cli::forces_text::num(printed));
+    assert!(
+        svg.contains("operating speed"),
+        "no operating speed in the page"
+    );
+    assert!(svg.contains(&jump_label), "{jump_label} not in the page");
     // at the file's 1380 rpm the follower leaves the cam: exit 3, with the spring that would do
     camkin()
         .arg("forces")
