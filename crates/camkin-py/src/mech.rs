@@ -447,9 +447,14 @@ impl PyMechanism {
             Self::warn(
                 py,
                 &format!(
-                    "the contact jumps at {jumps} of the angles (at {}{}; rows marked \"jump\" in found): the follower cannot follow the profile there and the acceleration is impulsive",
+                    "the contact jumps at {jumps} of the angles (at {}{}; rows marked \"jump\" in found): {}",
                     at.join(", "),
-                    if jumps > at.len() { ", …" } else { "" }
+                    if jumps > at.len() { ", …" } else { "" },
+                    if camkin::gears::GearPair::new(self.mech()).is_ok() {
+                        "the next tooth pair takes over the first contact there (camkin mesh gives the transmission error at the handovers)"
+                    } else {
+                        "the follower's first touch moves to another part of the profile, and its acceleration is impulsive there"
+                    }
                 ),
             )?;
         }

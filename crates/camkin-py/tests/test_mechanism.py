@@ -414,3 +414,17 @@ def test_a_long_analysis_holds_little_more_than_the_arrays_it_returns():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     ratio = float(out.stdout.strip())
     assert ratio <= 1.5, ratio
+
+
+def test_a_gear_pairs_handover_is_not_called_impulsive():
+    # issue 49: an ideal pair's first contact passes to the next tooth pair; its acceleration is
+    # zero, so the warning names the handover, not an impulse
+    import warnings
+    import numpy as np
+    m = camkin.Mechanism.from_toml(EXAMPLES / "gear-pair-20-42.toml")
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        m.analyze(np.arange(0.0, 36.0, 0.5))
+    texts = [str(x.message) for x in w]
+    assert any("next tooth pair" in t for t in texts), texts
+    assert not any("impulsive" in t for t in texts), texts

@@ -280,7 +280,10 @@ impl DesignReport {
             vec![if n == 0 {
                 "the contact moves continuously (no jumps)".into()
             } else {
-                format!("the contact jumps at {n} angles (the acceleration is impulsive there)")
+                format!(
+                    "the contact jumps at {n} angle{} (the acceleration is impulsive there)",
+                    if n == 1 { "" } else { "s" }
+                )
             }],
         );
         j.angles_deg = at_deg;
