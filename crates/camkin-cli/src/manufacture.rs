@@ -277,13 +277,40 @@ pub fn insunits(unit: LengthUnit) -> u8 {
     }
 }
 
-/// A DXF (R12, ASCII) with the drawing units set and one closed polyline of arcs per layer.
-pub fn dxf(unit: LengthUnit, layers: &[(&str, Vec<(Point2, f64)>)]) -> String {
+/// The layer of the centre mark and the 0° reference line.
+pub const CENTRE_LAYER: &str = "CENTRE";
+
+/// A DXF (R12, ASCII) with the drawing units set, its layers declared in a LAYER table (each
+/// curve's, and `CENTRE`), one closed polyline of arcs per curve layer, and on `CENTRE` a
+/// centre mark at the cam's axis (two lines `mark` long, crossing there) and the 0° reference
+/// (a line from the axis along +x, `reach` long: the cam angle's zero, the polar table's first
+/// row).
+pub fn dxf(
+    unit: LengthUnit,
+    layers: &[(&str, Vec<(Point2, f64)>)],
+    mark: f64,
+    reach: f64,
+) -> String {
     let metric = u8::from(unit != LengthUnit::In);
     let mut s = format!(
-        "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n9\n$INSUNITS\n70\n{}\n9\n$MEASUREMENT\n70\n{metric}\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n",
+        "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n9\n$INSUNITS\n70\n{}\n9\n$MEASUREMENT\n70\n{metric}\n0\nENDSEC\n",
         insunits(unit)
     );
+    // the tables: one line type (continuous) and every layer used, each its own colour
+    let names: Vec<&str> = layers
+        .iter()
+        .map(|(n, _)| *n)
+        .chain(std::iter::once(CENTRE_LAYER))
+        .collect();
+    s.push_str("0\nSECTION\n2\nTABLES\n0\nTABLE\n2\nLTYPE\n70\n1\n0\nLTYPE\n2\nCONTINUOUS\n70\n0\n3\nSolid line\n72\n65\n73\n0\n40\n0.0\n0\nENDTAB\n");
+    s.push_str(&format!("0\nTABLE\n2\nLAYER\n70\n{}\n", names.len()));
+    for (k, name) in names.iter().enumerate() {
+        s.push_str(&format!(
+            "0\nLAYER\n2\n{name}\n70\n0\n62\n{}\n6\nCONTINUOUS\n",
+            k + 1
+        ));
+    }
+    s.push_str("0\nENDTAB\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n");
     for (layer, verts) in layers {
         s.push_str(&format!(
             "0\nPOLYLINE\n8\n{layer}\n66\n1\n70\n1\n10\n0.0\n20\n0.0\n30\n0.0\n"
@@ -296,6 +323,16 @@ pub fn dxf(unit: LengthUnit, layers: &[(&str, Vec<(Point2, f64)>)]) -> String {
         }
         s.push_str(&format!("0\nSEQEND\n8\n{layer}\n"));
     }
+    let line = |a: (f64, f64), b: (f64, f64)| {
+        format!(
+            "0\nLINE\n8\n{CENTRE_LAYER}\n10\n{:?}\n20\n{:?}\n30\n0.0\n11\n{:?}\n21\n{:?}\n31\n0.0\n",
+            a.0, a.1, b.0, b.1
+        )
+    };
+    let h = 0.5 * mark;
+    s.push_str(&line((-h, 0.0), (h, 0.0)));
+    s.push_str(&line((0.0, -h), (0.0, h)));
+    s.push_str(&line((0.0, 0.0), (reach, 0.0)));
     s.push_str("0\nENDSEC\n0\nEOF\n");
     s
 }
@@ -457,11 +494,12 @@ pub fn write(
     }
     let arcs: usize = layers.iter().map(|(_, v)| v.len()).sum();
     let p = dir.join("profile.dxf");
-    let text = dxf(unit, &layers);
+    // the centre mark a tenth of the cam's size, the 0° line to just beyond its reach
+    let text = dxf(unit, &layers, 0.2 * size, 1.15 * size);
     write_atomic(Some(&p), |w| Ok(w.write_all(text.as_bytes())?)).map_err(out)?;
     made.files.push(p);
     made.report += &format!(
-        "profile.dxf: {arcs} arcs on layers {} (units {l}); largest distance from the exact curves {:.1e} {l}\n",
+        "profile.dxf: {arcs} arcs on layers {}, the centre mark and the 0° line on {CENTRE_LAYER} (units {l}); largest distance from the exact curves {:.1e} {l}\n",
         layers.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", "),
         worst
     );

@@ -39,30 +39,74 @@ pub struct SynthArgs {
 /// 5.9 MB for 36 000 points).
 const BYTES_PER_POINT: f64 = 165.0;
 
-fn svg_profile(pts: &[(f64, f64)]) -> String {
-    let (mut x0, mut x1, mut y0, mut y1) = (
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-    );
+/// The profile drawn to scale: the SVG's user unit is the file's length unit and its size is
+/// given in that unit (a metre file in centimetres, 100 to the metre), y up, with the cam's
+/// centre marked, the 0° reference line along +x, a scale bar and the unit written.
+fn svg_profile(pts: &[(f64, f64)], unit: &str) -> String {
+    let (mut x0, mut x1, mut y0, mut y1) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for &(x, y) in pts {
         (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
     }
-    let pad = 0.05 * (x1 - x0).max(y1 - y0);
+    let size = (x1 - x0).max(y1 - y0);
+    let pad = 0.12 * size;
     let (w, h) = (x1 - x0 + 2.0 * pad, y1 - y0 + 2.0 * pad);
-    let k = 600.0 / w.max(h);
-    let pts: Vec<String> = pts
-        .iter()
-        .map(|(x, y)| format!("{:.3},{:.3}", (x - x0 + pad) * k, (y1 + pad - y) * k))
-        .collect();
+    // SVG knows mm, cm and in; a metre is 100 cm
+    let (svg_unit, per) = match unit {
+        "m" => ("cm", 100.0),
+        u @ ("mm" | "cm" | "in") => (u, 1.0),
+        _ => ("mm", 1.0),
+    };
+    let stroke = 0.004 * size;
+    // the scale bar: the largest 1, 2 or 5 times a power of ten within a fifth of the drawing
+    let bar = {
+        let t = 0.2 * size;
+        let p = 10f64.powf(t.log10().floor());
+        [5.0, 2.0, 1.0]
+            .into_iter()
+            .map(|m| m * p)
+            .find(|&b| b <= t)
+            .unwrap_or(p)
+    };
+    let text = 0.035 * size;
+    let pts: Vec<String> = pts.iter().map(|(x, y)| format!("{x:.6},{y:.6}")).collect();
+    let (bx, by) = (x0, y0 - 0.6 * pad);
     format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0}\" height=\"{:.0}\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<polygon points=\"{}\" fill=\"none\" stroke=\"rgb(31,119,180)\" stroke-width=\"2\"/>\n<circle cx=\"{:.3}\" cy=\"{:.3}\" r=\"3\" fill=\"black\"/>\n</svg>\n",
-        w * k,
-        h * k,
-        pts.join(" "),
-        (-x0 + pad) * k,
-        (y1 + pad) * k
+        concat!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w_out}{su}\" height=\"{h_out}{su}\" viewBox=\"{vx} {vy} {w} {h}\">\n",
+            "<title>cam profile, lengths in {unit} (1 user unit = 1 {unit}), y up</title>\n",
+            "<rect x=\"{vx}\" y=\"{vy}\" width=\"{w}\" height=\"{h}\" fill=\"white\"/>\n",
+            "<g transform=\"scale(1,-1)\" fill=\"none\" stroke-width=\"{sw}\">\n",
+            "<polygon points=\"{pts}\" stroke=\"rgb(31,119,180)\"/>\n",
+            "<path d=\"M {cm0} 0 H {cm1} M 0 {cm0} V {cm1}\" stroke=\"black\"/>\n",
+            "<path d=\"M 0 0 H {reach}\" stroke=\"gray\" stroke-dasharray=\"{dash} {dash}\"/>\n",
+            "<path d=\"M {bx} {by} H {bx2}\" stroke=\"black\" stroke-width=\"{sw2}\"/>\n",
+            "</g>\n",
+            "<text x=\"{reach}\" y=\"{t0}\" font-size=\"{ts}\" font-family=\"sans-serif\">0°</text>\n",
+            "<text x=\"{bx}\" y=\"{tby}\" font-size=\"{ts}\" font-family=\"sans-serif\">{bar} {unit}</text>\n",
+            "</svg>\n"
+        ),
+        w_out = w * per,
+        h_out = h * per,
+        su = svg_unit,
+        vx = x0 - pad,
+        vy = -(y1 + pad),
+        w = w,
+        h = h,
+        unit = unit,
+        sw = stroke,
+        sw2 = 3.0 * stroke,
+        pts = pts.join(" "),
+        cm0 = -0.05 * size,
+        cm1 = 0.05 * size,
+        reach = x1 + 0.5 * pad,
+        dash = 4.0 * stroke,
+        t0 = -0.3 * text,
+        ts = text,
+        bx = bx,
+        by = by,
+        bx2 = bx + bar,
+        tby = -by - 0.6 * text,
+        bar = camkin::human::human(bar),
     )
 }
 
@@ -122,7 +166,7 @@ pub fn run(args: &SynthArgs) -> Result<(), Failure> {
         crate::manufacture::Error::Output(e) => Failure::output(e),
     })?;
     write_atomic(Some(&out("profile.svg")), |w| {
-        Ok(w.write_all(svg_profile(&pts).as_bytes())?)
+        Ok(w.write_all(svg_profile(&pts, loaded.unit.name()).as_bytes())?)
     })
     .map_err(Failure::output)?;
 

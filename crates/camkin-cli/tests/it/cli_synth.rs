@@ -253,3 +253,53 @@ fn concave_stretches_a_roller_fits_in_are_no_undercut() {
         rho_p - roller
     );
 }
+
+/// Issue 49: `profile.svg` is drawn to scale: its size is in the file's unit (mm here) and equal
+/// to its view box, so one user unit is one millimetre; the polygon's farthest point from the
+/// axis is the cam's largest radius of `polar.csv`; the centre mark, the 0° line and a scale bar
+/// with its length and unit are drawn.
+#[test]
+fn the_profile_svg_is_drawn_to_scale() {
+    let dir = tempfile::tempdir().unwrap();
+    camkin()
+        .arg("synth")
+        .arg(examples().join("motion-roller.toml"))
+        .arg("--out")
+        .arg(dir.path())
+        .assert()
+        .success();
+    let svg = std::fs::read_to_string(dir.path().join("profile.svg")).unwrap();
+    let attr = |name: &str| -> String {
+        let at = svg.find(&format!("{name}=\"")).unwrap() + name.len() + 2;
+        svg[at..].split('"').next().unwrap().to_string()
+    };
+    let width = attr("width");
+    assert!(width.ends_with("mm"), "{width}");
+    let view: Vec<f64> = attr("viewBox")
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let w: f64 = width.trim_end_matches("mm").parse().unwrap();
+    assert!((w - view[2]).abs() < 1e-9 * w, "{w} vs {view:?}");
+    let pts = attr("points");
+    let reach = pts
+        .split(' ')
+        .map(|p| {
+            let (x, y) = p.split_once(',').unwrap();
+            x.parse::<f64>().unwrap().hypot(y.parse::<f64>().unwrap())
+        })
+        .fold(0.0f64, f64::max);
+    let polar = std::fs::read_to_string(dir.path().join("polar.csv")).unwrap();
+    let largest = polar
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(1).unwrap().parse::<f64>().unwrap())
+        .fold(0.0f64, f64::max);
+    assert!(
+        (reach - largest).abs() < 1e-3 * largest,
+        "{reach} vs {largest}"
+    );
+    for mark in ["0°</text>", " mm</text>", "M 0 0 H"] {
+        assert!(svg.contains(mark), "{mark}");
+    }
+}
