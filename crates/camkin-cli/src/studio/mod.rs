@@ -284,6 +284,34 @@ pub fn patch_nodes(text: &str, nodes: &[[f64; 2]]) -> Result<String, StudioError
             message: "nodes: only a spline profile with inline points (kind = \"spline\", points = [...]) can be edited on the drawing".into(),
         });
     }
+    // the file's layout kept: where the points are as many as the nodes, only the numbers that
+    // changed are replaced, each in its place (its spacing, its line, its comments stay)
+    if let Some(existing) = profile
+        .get_mut("points")
+        .and_then(Item::as_value_mut)
+        .and_then(Value::as_array_mut)
+    {
+        let pairs = existing.len() == nodes.len()
+            && existing
+                .iter()
+                .all(|v| v.as_array().is_some_and(|a| a.len() == 2));
+        if pairs {
+            for (i, p) in nodes.iter().enumerate() {
+                let Some(pair) = existing.get_mut(i).and_then(Value::as_array_mut) else {
+                    continue;
+                };
+                for (j, &x) in p.iter().enumerate() {
+                    let old = pair
+                        .get(j)
+                        .and_then(|v| v.as_float().or(v.as_integer().map(|n| n as f64)));
+                    if old != Some(x) {
+                        pair.replace(j, x);
+                    }
+                }
+            }
+            return Ok(doc.to_string());
+        }
+    }
     let mut array = Array::new();
     for p in nodes {
         let mut pair = Array::new();
@@ -315,6 +343,18 @@ mod tests {
         let out = patch_nodes(text, &nodes).unwrap();
         assert!(out.contains("# The paper's cam"), "{out}");
         assert!(out.contains("speed_rpm = 1000.0"));
+        let spec = crate::mechfile::parse_spec(&out, "m").unwrap();
+        assert_eq!(spec.cam.profile.points.unwrap(), nodes);
+    }
+
+    /// Issue 49: a drag keeps the file's layout: a two-line array stays two lines, and only the
+    /// moved node's numbers change.
+    #[test]
+    fn a_drag_changes_only_the_numbers_that_moved() {
+        let text = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000.0\n[cam.profile]\nkind = \"spline\"\npoints = [[40.0, 0.0], [0.0, 30.0], [-40.0, 0.0],  # the left\n  [0.0, -30.0]]\n[follower]\nkind = \"translating-flat\"\n";
+        let nodes = [[40.0, 0.0], [0.0, 31.5], [-40.0, 0.0], [0.0, -30.0]];
+        let out = patch_nodes(text, &nodes).unwrap();
+        assert_eq!(out, text.replace("[0.0, 30.0]", "[0.0, 31.5]"), "{out}");
         let spec = crate::mechfile::parse_spec(&out, "m").unwrap();
         assert_eq!(spec.cam.profile.points.unwrap(), nodes);
     }
