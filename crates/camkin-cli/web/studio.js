@@ -325,11 +325,19 @@
     }
   }
 
+  // a readout within 1e-9 of its series' largest magnitude is rounding: shown as 0
+  function readout(v, top) { return v !== null && top > 0 && Math.abs(v) <= 1e-9 * top ? 0 : v; }
   function drawValues() {
     const r = S.result, i = S.index;
-    const rows = r.series.map((s) => `<tr><td>${s.label}</td><td class="num">${fmt(snap(s, s.values[i]), 6)}</td><td>${s.unit}</td></tr>`);
+    if (S.tops !== r) {
+      // each series' largest magnitude, and the drawing's, once per result
+      S.tops = r;
+      S.top = r.series.map((s) => s.values.reduce((m, v) => (v !== null && isFinite(v) ? Math.max(m, Math.abs(v)) : m), 0));
+      S.extentTop = Math.max(...r.extent.map(Math.abs));
+    }
+    const rows = r.series.map((s, k) => `<tr><td>${s.label}</td><td class="num">${fmt(readout(snap(s, s.values[i]), S.top[k]), 6)}</td><td>${s.unit}</td></tr>`);
     const f = r.frames[i];
-    if (f.contact) rows.push(`<tr><td>contact point</td><td class="num">(${fmt(f.contact[0], 5)}, ${fmt(f.contact[1], 5)})</td><td>${r.length_unit}</td></tr>`);
+    if (f.contact) rows.push(`<tr><td>contact point</td><td class="num">(${fmt(readout(f.contact[0], S.extentTop), 5)}, ${fmt(readout(f.contact[1], S.extentTop), 5)})</td><td>${r.length_unit}</td></tr>`);
     $("values").innerHTML = rows.join("");
   }
 
@@ -890,7 +898,14 @@
       S.name = REPORT.result.name;
       S.compare = REPORT.compare;
       show(REPORT.result, REPORT.toml, false);
-      setStatus(`report of ${REPORT.result.name}, made by ${REPORT.generated_by}: everything below is in this file`);
+      // a design review document: its title, its date, the profile's extent for the shop
+      const rv = REPORT.review || {};
+      document.title = `Design review — ${REPORT.result.name}`;
+      $("title").textContent = `design review — ${REPORT.result.name}`;
+      const extent = rv.radius ? ` Profile radius from ${fmt(rv.radius[0], 5)} to ${fmt(rv.radius[1], 5)} ${REPORT.result.length_unit}.` : "";
+      const failed = (REPORT.result.checks || []).filter((c) => !c.ok).length;
+      const verdict = REPORT.result.system ? "" : failed ? ` ${failed} design check${failed === 1 ? "" : "s"} failed (marked below).` : " Every design check passed.";
+      setStatus(`Made ${rv.date || ""} by ${REPORT.generated_by} from ${REPORT.result.name}, whose text is below: everything is in this file.${verdict}${extent}`, failed > 0);
       $("footer").textContent = `Exact kinematics by the contact method (K. Lee, 2005). ${REPORT.generated_by}.`;
       if (!REPORT.compare) $("compare-panel").hidden = true;
       $("compare-n").disabled = true;

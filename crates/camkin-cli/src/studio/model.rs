@@ -448,7 +448,8 @@ pub fn analyze(
             label: "pressure angle".into(),
             unit: "°".into(),
             values: rows.iter().map(|r| finite(r.pressure_angle_deg)).collect(),
-            resolution: None,
+            // an angle below a nanodegree is rounding (a radial flat face's is zero)
+            resolution: Some(1e-9),
         },
         Series {
             key: "radius_of_curvature".into(),

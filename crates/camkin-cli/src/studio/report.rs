@@ -52,13 +52,47 @@ pub fn csv_text(
     })
 }
 
-/// What a report holds: the same data the studio shows.
+/// What a report holds: the same data the studio shows, and its review header.
 #[derive(Debug, Serialize)]
 struct ReportData<'a> {
     toml: &'a str,
     result: model::Analysis,
     compare: Option<model::Compare>,
     generated_by: String,
+    review: Review,
+}
+
+/// The design review's header: when it was made, and the profile's extent for the shop.
+#[derive(Debug, Serialize)]
+struct Review {
+    /// the day it was made, UTC, `YYYY-MM-DD`
+    date: String,
+    /// the cam profile's smallest and largest radius from the axis, the file's unit (none for a
+    /// system)
+    radius: Option<[f64; 2]>,
+}
+
+/// Days since 1970-01-01 as a civil date (the proleptic Gregorian calendar; Howard Hinnant's
+/// `civil_from_days`).
+fn civil(days: i64) -> (i64, u32, u32) {
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = (doy - (153 * mp + 2) / 5 + 1) as u32;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
+    (yoe + era * 400 + i64::from(m <= 2), m, d)
+}
+
+/// Today, UTC.
+fn today() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs() as i64);
+    let (y, m, d) = civil(secs.div_euclid(86_400));
+    format!("{y:04}-{m:02}-{d:02}")
 }
 
 /// JSON that can sit inside a `<script>` element: `</` written `<\/`.
@@ -81,11 +115,24 @@ pub fn html(
     } else {
         model::compare(text, source, &[REPORT_COMPARE_NODES], step_deg, limits).ok()
     };
+    let radius = (!result.system && !result.profile.is_empty()).then(|| {
+        result
+            .profile
+            .iter()
+            .fold([f64::INFINITY, 0.0f64], |[lo, hi], p| {
+                let r = p[0].hypot(p[1]);
+                [lo.min(r), hi.max(r)]
+            })
+    });
     let data = ReportData {
         toml: text,
         result,
         compare,
         generated_by: format!("camkin {}", env!("CARGO_PKG_VERSION")),
+        review: Review {
+            date: today(),
+            radius,
+        },
     };
     let json = serde_json::to_string(&data).map_err(|e| StudioError::BadRequest {
         message: format!("cannot write the report's data: {e}"),
@@ -109,6 +156,14 @@ fn inline(json: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn civil_dates() {
+        assert_eq!(civil(0), (1970, 1, 1));
+        assert_eq!(civil(11_016), (2000, 2, 29));
+        assert_eq!(civil(20_783), (2026, 11, 26));
+        assert_eq!(civil(-1), (1969, 12, 31));
+    }
 
     #[test]
     fn the_report_inlines_everything_and_fetches_nothing() {

@@ -160,6 +160,18 @@ def test_the_report_opens_offline_and_renders(page, tmp_path):
     page.locator("#angle").fill("90")
     assert page.evaluate("window.studio.index") == 90
     assert page.locator("#editor").input_value().startswith("#")
+    # a design review document (issue 49): titled, dated, its verdict and the profile's extent
+    import datetime
+    import re
+    assert page.title() == "Design review — paper-dynamics.toml"
+    status = page.locator("#status").inner_text()
+    today = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d")
+    assert today in status and "design check" in status and "Profile radius from" in status, status
+    # the readouts are rounded for people at every angle: no rounding noise such as 1.7e-16
+    for a in ("0", "45", "90", "180"):
+        page.locator("#angle").fill(a)
+        values = page.locator("#values").inner_text()
+        assert not re.search(r"e-1\d", values), values
 
 
 def test_the_speed_slider_shows_where_the_follower_jumps(serve, page):
