@@ -56,6 +56,8 @@ pub(crate) fn draw_all(
     scenes: &[(f64, Vec<Shape>)],
     drawings: usize,
     what: &str,
+    unit: &str,
+    legend: &str,
 ) -> Result<Vec<PathBuf>, Failure> {
     let (lo, hi) = scene::bounds(scenes.iter().flat_map(|(_, s)| s.iter()));
     let pad = 0.05 * (hi - lo).norm();
@@ -93,10 +95,14 @@ pub(crate) fn draw_all(
         };
         let svg = dir.join(format!("{name}.svg"));
         let png = dir.join(format!("{name}.png"));
-        chart::write_svg(&svg, size, |root| draw_scene(root, shapes, bbox, &title))
-            .map_err(Failure::output)?;
-        chart::write_png(&png, size, |root| draw_scene(root, shapes, bbox, &title))
-            .map_err(Failure::output)?;
+        chart::write_svg(&svg, size, |root| {
+            draw_scene(root, shapes, bbox, &title, unit, legend)
+        })
+        .map_err(Failure::output)?;
+        chart::write_png(&png, size, |root| {
+            draw_scene(root, shapes, bbox, &title, unit, legend)
+        })
+        .map_err(Failure::output)?;
         written.extend([svg, png]);
     }
     let frames: Vec<Vec<Shape>> = scenes
@@ -122,6 +128,8 @@ pub(crate) fn draw_scene<DB: DrawingBackend>(
     shapes: &[Shape],
     (lo, hi): (Point2, Point2),
     title: &str,
+    unit: &str,
+    legend: &str,
 ) -> Result<()>
 where
     DB::ErrorType: 'static,
@@ -129,6 +137,15 @@ where
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(e)?;
     let area = root.titled(title, ("sans-serif", 20)).map_err(e)?;
+    // the legend, on one line at the foot
+    let (_, h0) = area.dim_in_pixel();
+    let (area, foot) = area.split_vertically(h0.saturating_sub(22));
+    foot.draw(&Text::new(
+        format!("to scale, lengths in {unit}{legend}"),
+        (8, 4),
+        ("sans-serif", 13).into_font().color(&RGBColor(80, 80, 80)),
+    ))
+    .map_err(e)?;
     // equal scales: grow the box to the drawing area's aspect
     let (w, h) = area.dim_in_pixel();
     let (bw, bh) = (hi.x - lo.x, hi.y - lo.y);
@@ -181,6 +198,29 @@ where
             }
         }
     }
+    // a scale bar at the lower left: 1, 2 or 5 times a power of ten, at most a fifth of the width
+    let span = 2.0 * hw;
+    let bar = {
+        let t = 0.2 * span;
+        let p = 10f64.powf(t.log10().floor());
+        [5.0, 2.0, 1.0]
+            .into_iter()
+            .map(|m| m * p)
+            .find(|&b| b <= t)
+            .unwrap_or(p)
+    };
+    let (x0, y0) = (cx - hw + 0.04 * span, cy - hh + 0.04 * span);
+    ch.draw_series(std::iter::once(PathElement::new(
+        vec![(x0, y0), (x0 + bar, y0)],
+        BLACK.stroke_width(3),
+    )))
+    .map_err(e)?;
+    ch.draw_series(std::iter::once(Text::new(
+        format!("{} {unit}", camkin::human::human(bar)),
+        (x0, y0 + 0.015 * span),
+        ("sans-serif", 14).into_font(),
+    )))
+    .map_err(e)?;
     Ok(())
 }
 
@@ -518,7 +558,14 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             scene::scene(mech, camkin::geometry::deg_to_rad(a), st.as_ref()),
         ));
     }
-    written.extend(draw_all(&dir, &scenes, angles.len(), "cam angle")?);
+    written.extend(draw_all(
+        &dir,
+        &scenes,
+        angles.len(),
+        "cam angle",
+        loaded.unit.name(),
+        "; blue: the cam (the arc: its sense of rotation; the line: its 0° mark), red: the contact, green: the common normal",
+    )?);
     if failed > 0 {
         crate::say!(
             "camkin: {failed} of {n} angles could not be analysed; their points are left out"

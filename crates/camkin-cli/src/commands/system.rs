@@ -256,7 +256,14 @@ pub fn plot(
     }
     let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
     let what = format!("{} at driver angle", built_name(path));
-    let written = super::plot::draw_all(od.path(), &scenes, angles.len(), &what)?;
+    let written = super::plot::draw_all(
+        od.path(),
+        &scenes,
+        angles.len(),
+        &what,
+        built.length_unit.name(),
+        "",
+    )?;
     od.commit().map_err(Failure::output)?;
     crate::say!(
         "camkin: wrote {} files to {}",

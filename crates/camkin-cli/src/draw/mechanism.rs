@@ -93,6 +93,26 @@ pub fn scene(mech: &Mechanism, theta: f64, state: Option<&FollowerState>) -> Vec
         CAM,
         1,
     ));
+    // the sense of rotation: an arc round the axis with its arrowhead, fixed in the world
+    let sign = cam.direction().sign();
+    let r = 0.15 * size;
+    let arc: Vec<Point2> = (0..=24)
+        .map(|k| {
+            let t = sign * (30f64 + 120.0 * f64::from(k) / 24.0).to_radians();
+            axis + r * Vec2::new(t.cos(), t.sin())
+        })
+        .collect();
+    let tip = arc[arc.len() - 1];
+    let back = (arc[arc.len() - 3] - tip).normalize() * (0.06 * size);
+    for turn in [-0.5f64, 0.5] {
+        shapes.push(segment(tip, tip + Rotation::new(turn) * back, CAM, 1));
+    }
+    shapes.push(Shape::Polyline {
+        pts: arc,
+        color: CAM,
+        width: 1,
+        closed: false,
+    });
     let Some(s) = state else { return shapes };
     let c = s.contact_world;
     follower_shapes(mech, s.position, c, size, &mut shapes);

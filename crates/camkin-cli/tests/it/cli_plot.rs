@@ -178,3 +178,21 @@ fn drawings_are_named_by_their_whole_angle_modulo_360() {
         "the 0.5° drawing is the 0.5° one"
     );
 }
+
+/// Issue 49: a drawing says it is to scale and in which unit, has a scale bar with its length and
+/// a legend of what is drawn (the cam's sense of rotation among it).
+#[test]
+fn drawings_carry_their_scale_and_legend() {
+    let dir = tempfile::tempdir().unwrap();
+    camkin()
+        .arg("plot")
+        .arg(examples().join("paper.toml"))
+        .args(["--at", "30", "--frames", "4", "--out"])
+        .arg(dir.path().join("p"))
+        .assert()
+        .success();
+    let svg = std::fs::read_to_string(dir.path().join("p").join("drawing_30.svg")).unwrap();
+    assert!(svg.contains("to scale, lengths in cm"), "no unit");
+    assert!(svg.contains("sense of rotation"), "no legend");
+    assert!(svg.contains("\n2 cm\n</text>"), "no scale bar label");
+}
