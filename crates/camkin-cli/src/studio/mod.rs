@@ -359,6 +359,27 @@ mod tests {
         assert_eq!(spec.cam.profile.points.unwrap(), nodes);
     }
 
+    /// A gear pair's `[gear_loads]` without a face width: the kinematics are shown, and the
+    /// loads' reason is a warning, not an error of the whole page.
+    #[test]
+    fn loads_the_file_cannot_give_leave_the_kinematics_shown() {
+        let text = "length_unit = \"mm\"\n[gear_pair]\nteeth = [20, 42]\nmodule = 2.0\nspeed_rpm = 1000.0\n[gear_loads]\ntorque = 5.0\n";
+        let source = model::Source {
+            name: "g.toml".into(),
+            folder: None,
+        };
+        let a = model::analyze(text, &source, 1.0, 30.0, &Limits::default()).unwrap();
+        assert!(a.gear_loads.is_none());
+        assert!(
+            a.warnings.iter().any(|w| w.message.contains("face width")),
+            "{:?}",
+            a.warnings
+        );
+        let with = format!("{text}face_width = 20.0\n");
+        let a = model::analyze(&with, &source, 1.0, 30.0, &Limits::default()).unwrap();
+        assert!(a.gear_loads.is_some());
+    }
+
     #[test]
     fn nodes_only_on_inline_splines() {
         let circle = "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1.0\n[cam.profile]\nkind = \"circle\"\nradius = 2.0\n";

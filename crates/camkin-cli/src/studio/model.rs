@@ -566,7 +566,12 @@ pub fn analyze(
     };
     let checks = checks(mech, &angles, &sweep, pressure_limit_deg, unit.name());
     let dynamics = dynamics(text, source, &parsed.spec, &angles, limits)?;
-    let gear_loads = gear_loads(text, source, &parsed.spec, limits)?;
+    // loads the file cannot give (no face width, say) leave the kinematics shown, with why
+    let (gear_loads, gear_warning) = match gear_loads(text, source, &parsed.spec, limits) {
+        Ok(g) => (g, None),
+        Err(StudioError::Input { message, .. }) => (None, Some(message)),
+        Err(e) => return Err(e),
+    };
     let first_error = rows.iter().find_map(|r| r.error.clone());
     Ok(Analysis {
         name: source.name.clone(),
@@ -592,6 +597,11 @@ pub fn analyze(
                 line: w.at.map(|a| a.0),
                 column: w.at.map(|a| a.1),
             })
+            .chain(gear_warning.map(|message| Placed {
+                message,
+                line: None,
+                column: None,
+            }))
             .collect(),
         failed: sweep.failed(),
         first_error,
