@@ -207,6 +207,33 @@
     // the follower, from the server's model of it (a system: every body and contact)
     drawShapes(g, r, f, view, k);
     if (!r.system) drawContact(g, r, f, view, Math.max(x1 - x0, y1 - y0));
+    // the cam's sense of rotation: an arc round its axis with an arrowhead, from how its pose
+    // turns from one frame to the next
+    if (!r.system && r.frames.length > 1) {
+      let d = r.frames[1].cam[2] - r.frames[0].cam[2];
+      d = Math.atan2(Math.sin(d), Math.cos(d));
+      if (d !== 0) {
+        const sgn = Math.sign(d), rr = 0.12 * Math.max(x1 - x0, y1 - y0);
+        const pt = (t) => view.tx([r.pivot[0] + rr * Math.cos(t), r.pivot[1] + rr * Math.sin(t)]);
+        const a0 = sgn * Math.PI / 6, a1 = sgn * (5 * Math.PI / 6);
+        g.strokeStyle = "#1f77b4"; g.lineWidth = 1.2;
+        g.beginPath();
+        for (let i = 0; i <= 24; i++) {
+          const q = pt(a0 + (a1 - a0) * i / 24);
+          if (i) g.lineTo(q[0], q[1]); else g.moveTo(q[0], q[1]);
+        }
+        g.stroke();
+        const tip = pt(a1), back = pt(a1 - sgn * 0.25);
+        const ux = back[0] - tip[0], uy = back[1] - tip[1], n = Math.hypot(ux, uy) || 1;
+        const hl = 8;
+        for (const s2 of [-0.5, 0.5]) {
+          const c2 = Math.cos(s2), s3 = Math.sin(s2);
+          g.beginPath(); g.moveTo(tip[0], tip[1]);
+          g.lineTo(tip[0] + hl * (c2 * ux - s3 * uy) / n, tip[1] + hl * (s3 * ux + c2 * uy) / n);
+          g.stroke();
+        }
+      }
+    }
     // a scale bar
     const size = Math.max(x1 - x0, y1 - y0);
     const bar = Math.pow(10, Math.floor(Math.log10(size / 4)));
