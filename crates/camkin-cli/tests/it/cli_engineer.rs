@@ -694,3 +694,17 @@ fn forces_sizes_the_spring_from_the_motion_when_the_file_has_none() {
         "{stderr}"
     );
 }
+
+/// Issue 49: a dwell's constant contact force is named as the stretch it holds over, not as one
+/// arbitrary sample of it (the motion program's last 60° dwell on the base circle).
+#[test]
+fn a_constant_force_over_a_dwell_is_named_as_its_stretch() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(examples().join("motion-roller.toml")).unwrap()
+        + "\n[dynamics]\nmass = 0.3\nspring_stiffness = 20000.0\nspring_preload = 50.0\n";
+    let file = dir.path().join("dwell.toml");
+    std::fs::write(&file, text).unwrap();
+    let out = camkin().arg("forces").arg(&file).assert().success();
+    let stdout = String::from_utf8_lossy(&out.get_output().stdout).to_string();
+    assert!(stdout.contains("from 300° to 360° (constant)"), "{stdout}");
+}
