@@ -364,13 +364,8 @@ pub fn write(
         .map_err(|e| Error::Input(anyhow!("cannot create {}: {e}", dir.display())))?;
     let mut made = Made::default();
     let n = (360.0 / opts.step_deg).round() as usize;
-    let phis: Vec<f64> = (0..n)
-        .map(|k| {
-            camkin::table::AngleGrid::new(0.0, opts.step_deg)
-                .at(k)
-                .to_radians()
-        })
-        .collect();
+    let grid = camkin::table::AngleGrid::new(0.0, opts.step_deg);
+    let phis: Vec<f64> = (0..n).map(|k| grid.at(k).to_radians()).collect();
     let out = |e: anyhow::Error| Error::Output(e);
     // the polar table
     match polar_params(profile, &phis) {

@@ -165,9 +165,10 @@ impl PySystem {
             camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
             run.samples.len(),
         );
+        let grid = camkin::table::AngleGrid::new(0.0, step_deg);
         for (k, s) in run.samples.iter().enumerate() {
             samples.push(camkin::table::system_sample_cells(
-                camkin::table::AngleGrid::new(0.0, step_deg).at(k),
+                grid.at(k),
                 s,
                 &self.built.dynamics.hertz,
             ));

@@ -200,15 +200,7 @@ where
     }
     // a scale bar at the lower left: 1, 2 or 5 times a power of ten, at most a fifth of the width
     let span = 2.0 * hw;
-    let bar = {
-        let t = 0.2 * span;
-        let p = 10f64.powf(t.log10().floor());
-        [5.0, 2.0, 1.0]
-            .into_iter()
-            .map(|m| m * p)
-            .find(|&b| b <= t)
-            .unwrap_or(p)
-    };
+    let bar = crate::draw::scale_bar(span);
     let (x0, y0) = (cx - hw + 0.04 * span, cy - hh + 0.04 * span);
     ch.draw_series(std::iter::once(PathElement::new(
         vec![(x0, y0), (x0 + bar, y0)],

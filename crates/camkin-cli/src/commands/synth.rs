@@ -58,15 +58,7 @@ fn svg_profile(pts: &[(f64, f64)], unit: &str) -> String {
     };
     let stroke = 0.004 * size;
     // the scale bar: the largest 1, 2 or 5 times a power of ten within a fifth of the drawing
-    let bar = {
-        let t = 0.2 * size;
-        let p = 10f64.powf(t.log10().floor());
-        [5.0, 2.0, 1.0]
-            .into_iter()
-            .map(|m| m * p)
-            .find(|&b| b <= t)
-            .unwrap_or(p)
-    };
+    let bar = crate::draw::scale_bar(size);
     let text = 0.035 * size;
     let pts: Vec<String> = pts.iter().map(|(x, y)| format!("{x:.6},{y:.6}")).collect();
     let (bx, by) = (x0, y0 - 0.6 * pad);

@@ -215,16 +215,14 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
             .map(|(k, _)| k)
             .collect();
         let columns: Vec<String> = keep.iter().map(|&k| all[k].clone()).collect();
+        let grid = camkin::table::AngleGrid::new(0.0, step);
         let rows: Vec<Vec<Cell>> = run
             .samples
             .iter()
             .enumerate()
             .map(|(i, s)| {
-                let cells = camkin::table::system_sample_cells(
-                    camkin::table::AngleGrid::new(0.0, step).at(i),
-                    s,
-                    &built.dynamics.hertz,
-                );
+                let cells =
+                    camkin::table::system_sample_cells(grid.at(i), s, &built.dynamics.hertz);
                 keep.iter().map(|&k| cells[k].clone()).collect()
             })
             .collect();

@@ -77,25 +77,80 @@ pub const DEFAULT_FRICTION: Friction = Friction::Mixed {
     full_film: 0.03,
 };
 
+/// `oil` checked at `[lubrication] oil`.
+pub(super) fn lubricant(oil: &str) -> Result<Lubricant, SpecError> {
+    oil.parse()
+        .map_err(|e: crate::lubrication::LubricantError| SpecError::Rule {
+            field: Field::Lubrication(L::Oil),
+            reason: e.to_string(),
+        })
+}
+
+/// A pair of RMS roughnesses in µm, each checked at `field(i)`, in metres.
+pub(super) fn roughness(
+    um: [f64; 2],
+    field: impl Fn(usize) -> Field,
+) -> Result<[f64; 2], SpecError> {
+    let mut rq = [0.0; 2];
+    for (i, (slot, &v)) in rq.iter_mut().zip(&um).enumerate() {
+        *slot = roughness_from_um(v).ok_or_else(|| SpecError::Invalid {
+            field: field(i),
+            value: crate::human::human(v),
+            reason: format!("µm {ROUGHNESS_RULE}"),
+        })?;
+    }
+    Ok(rq)
+}
+
+/// `film` checked at `[lubrication] film` (default Dowson–Higginson).
+pub(super) fn formula(film: Option<&str>) -> Result<FilmFormula, SpecError> {
+    match film {
+        None => Ok(FilmFormula::default()),
+        Some(name) => FilmFormula::ALL
+            .into_iter()
+            .find(|x| x.name() == name)
+            .ok_or_else(|| SpecError::Unknown {
+                field: Field::Lubrication(L::Film),
+                value: name.into(),
+                what: "a film formula",
+                known: FilmFormula::ALL.map(FilmFormula::name).join(", "),
+            }),
+    }
+}
+
+/// `friction` checked at `[lubrication] friction` (default [`DEFAULT_FRICTION`]).
+pub(super) fn friction(spec: Option<FrictionSpec>) -> Result<Friction, SpecError> {
+    let friction = match spec {
+        None => DEFAULT_FRICTION,
+        Some(FrictionSpec::Constant(mu)) => Friction::Constant(mu),
+        Some(FrictionSpec::Mixed([b, full])) => Friction::Mixed {
+            boundary: b,
+            full_film: full,
+        },
+    };
+    let mus = match friction {
+        Friction::Mixed {
+            boundary,
+            full_film,
+        } => [boundary, full_film],
+        Friction::Constant(mu) => [mu, mu],
+    };
+    if let Some(&bad) = mus.iter().find(|mu| !plausible_friction(**mu)) {
+        return Err(SpecError::Invalid {
+            field: Field::Lubrication(L::Friction),
+            value: crate::human::human(bad),
+            reason: FRICTION_RULE.into(),
+        });
+    }
+    Ok(friction)
+}
+
 impl LubricationSpec {
     /// Checks every value, naming its field, and builds the request.
     pub fn build(&self) -> Result<BuiltLubrication, SpecError> {
         let f = Field::Lubrication;
-        let lubricant: Lubricant =
-            self.oil
-                .parse()
-                .map_err(|e: crate::lubrication::LubricantError| SpecError::Rule {
-                    field: f(L::Oil),
-                    reason: e.to_string(),
-                })?;
-        let mut rq = [0.0; 2];
-        for (i, (slot, &v)) in rq.iter_mut().zip(&self.roughness_um).enumerate() {
-            *slot = roughness_from_um(v).ok_or_else(|| SpecError::Invalid {
-                field: f(L::RoughnessUm(i)),
-                value: crate::human::human(v),
-                reason: format!("µm {ROUGHNESS_RULE}"),
-            })?;
-        }
+        let lubricant = lubricant(&self.oil)?;
+        let rq = roughness(self.roughness_um, |i| f(L::RoughnessUm(i)))?;
         if !(self.face_width.is_finite() && self.face_width > 0.0) {
             return Err(SpecError::Invalid {
                 field: f(L::FaceWidth),
@@ -103,40 +158,8 @@ impl LubricationSpec {
                 reason: "must be positive (the file's length unit)".into(),
             });
         }
-        let formula = match self.film.as_deref() {
-            None => FilmFormula::default(),
-            Some(name) => FilmFormula::ALL
-                .into_iter()
-                .find(|x| x.name() == name)
-                .ok_or_else(|| SpecError::Unknown {
-                    field: f(L::Film),
-                    value: name.into(),
-                    what: "a film formula",
-                    known: FilmFormula::ALL.map(FilmFormula::name).join(", "),
-                })?,
-        };
-        let friction = match self.friction {
-            None => DEFAULT_FRICTION,
-            Some(FrictionSpec::Constant(mu)) => Friction::Constant(mu),
-            Some(FrictionSpec::Mixed([b, full])) => Friction::Mixed {
-                boundary: b,
-                full_film: full,
-            },
-        };
-        let mus = match friction {
-            Friction::Mixed {
-                boundary,
-                full_film,
-            } => [boundary, full_film],
-            Friction::Constant(mu) => [mu, mu],
-        };
-        if let Some(&bad) = mus.iter().find(|mu| !plausible_friction(**mu)) {
-            return Err(SpecError::Invalid {
-                field: f(L::Friction),
-                value: crate::human::human(bad),
-                reason: FRICTION_RULE.into(),
-            });
-        }
+        let formula = formula(self.film.as_deref())?;
+        let friction = friction(self.friction)?;
         let materials: Materials = match &self.materials {
             None => Materials::default(),
             Some(m) => m

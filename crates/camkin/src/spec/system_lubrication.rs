@@ -15,9 +15,9 @@
 //! ```
 
 use super::build::SpecError;
-use super::{ContactSpec, FrictionSpec, LubricationSpec};
+use super::{ContactSpec, FrictionSpec};
 use crate::field::{Field, SystemField, SystemKey, SystemTable};
-use crate::lubrication::{roughness_from_um, Surface, ROUGHNESS_RULE};
+use crate::lubrication::Surface;
 use crate::report::{ContactLubrication, LubricationRequest, Materials};
 
 /// `[lubrication]` of a system file as written.
@@ -87,29 +87,20 @@ pub(super) fn contact_lubrication(
         };
     };
     // the oil, the film formula and the friction, checked as a mechanism file's (its keys)
-    let common = LubricationSpec {
-        oil: table.oil.clone(),
-        roughness_um: table.roughness_um.unwrap_or([1.0, 1.0]),
-        face_width: 1.0,
-        film: table.film.clone(),
-        friction: table.friction,
-        materials: None,
-    }
-    .build()?
-    .request;
-    let roughness = match (c.roughness_um, table.roughness_um) {
-        (Some(r), _) => {
-            let mut rq = [0.0; 2];
-            for (k, (slot, &v)) in rq.iter_mut().zip(&r).enumerate() {
-                *slot = roughness_from_um(v).ok_or_else(|| SpecError::Invalid {
-                    field: at(SystemKey::RoughnessUm(k)),
-                    value: crate::human::human(v),
-                    reason: format!("µm {ROUGHNESS_RULE}"),
-                })?;
-            }
-            rq
-        }
-        (None, Some(_)) => common.surfaces.map(|s| s.roughness),
+    let lubricant = super::lubrication::lubricant(&table.oil)?;
+    let table_rq = table
+        .roughness_um
+        .map(|r| {
+            super::lubrication::roughness(r, |k| {
+                Field::Lubrication(crate::field::LubricationField::RoughnessUm(k))
+            })
+        })
+        .transpose()?;
+    let formula = super::lubrication::formula(table.film.as_deref())?;
+    let friction = super::lubrication::friction(table.friction)?;
+    let roughness = match (c.roughness_um, table_rq) {
+        (Some(r), _) => super::lubrication::roughness(r, |k| at(SystemKey::RoughnessUm(k)))?,
+        (None, Some(rq)) => rq,
         (None, None) => {
             return Err(SpecError::Rule {
                 field: at(SystemKey::FaceWidth),
@@ -156,11 +147,13 @@ pub(super) fn contact_lubrication(
     let thermal = [m.cam.thermal, m.follower.thermal];
     Ok(Some(ContactLubrication {
         request: LubricationRequest {
+            lubricant,
+            formula,
             surfaces: [0, 1].map(|k| Surface {
                 roughness: roughness[k],
                 thermal: thermal[k],
             }),
-            ..common
+            friction,
         },
         face_width: width * metres,
         effective_modulus: 2.0 * m.effective_modulus(),
