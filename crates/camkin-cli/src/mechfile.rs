@@ -5,14 +5,14 @@
 
 use camkin::cam::Mechanism;
 use camkin::dynamics::FollowerDynamics;
-use camkin::spec::text::{self, TextError};
+use camkin::spec::text;
 use camkin::spec::{BuildOptions, Built, MechanismSpec};
 use std::path::Path;
 
-/// Largest mechanism file read, bytes (the library's bound).
-pub const MAX_FILE_BYTES: u64 = text::MAX_TEXT_BYTES;
-/// Most nodal points of a spline profile (inline or from a points file).
-pub const MAX_POINTS: usize = camkin::curve::MAX_POINTS;
+pub use camkin_studio::mechtext::{
+    build_placed, line_column, paper, parse_spec, FromText, InputError, Warning, MAX_FILE_BYTES,
+    MAX_POINTS, PAPER_TOML,
+};
 
 /// Whether the user allowed large work (`--large`): set once by the command from its
 /// arguments, read when a mechanism is built (a profile whose search index would take over
@@ -30,70 +30,6 @@ pub fn build_limits() -> camkin::work::Limits {
         camkin::work::Limits::NONE
     } else {
         camkin::work::Limits::default()
-    }
-}
-
-/// Bad input, with where it is.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct InputError {
-    /// the message, starting with `file:line:column:` when the place is known
-    pub message: String,
-    /// the place in the text, 1-based `(line, column)` (column in characters), when known
-    pub at: Option<(usize, usize)>,
-    /// the mechanism is valid but building it would take over the work limits (each front end
-    /// says how to run it anyway)
-    pub too_much: bool,
-}
-
-impl InputError {
-    fn new(message: String) -> Self {
-        Self {
-            message,
-            at: None,
-            too_much: false,
-        }
-    }
-}
-
-/// A warning about a valid mechanism (uneven nodes, say), placed in the text where it can be.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Warning {
-    /// `file:line:column: message`
-    pub message: String,
-    /// 1-based `(line, column)`, when known
-    pub at: Option<(usize, usize)>,
-}
-
-/// A mechanism built from a file's text, with its spec and placed warnings.
-#[derive(Debug, Clone)]
-pub struct FromText {
-    /// the spec as read
-    pub spec: MechanismSpec,
-    /// what it builds
-    pub built: Built,
-    /// warnings, placed
-    pub warnings: Vec<Warning>,
-}
-
-impl std::fmt::Display for InputError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for InputError {}
-
-impl From<TextError> for InputError {
-    fn from(e: TextError) -> Self {
-        let too_much = matches!(
-            &e.problem,
-            text::TextProblem::Spec(s) if matches!(**s, camkin::spec::SpecError::TooMuch { .. })
-        );
-        Self {
-            message: e.message,
-            at: e.at,
-            too_much,
-        }
     }
 }
 
@@ -179,11 +115,6 @@ pub fn parse_dynamics(
     Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: a simulation needs a [dynamics] section (mass or inertia; spring_stiffness and spring_preload, default 0, damping, restitution, gravity optional)")))?))
 }
 
-/// The spec in a mechanism file's text.
-pub fn parse_spec(text: &str, name: &str) -> Result<MechanismSpec, InputError> {
-    Ok(text::parse_toml(text, name)?)
-}
-
 fn build(text: &str, name: &str, base: &Path, si: bool) -> Result<Built, InputError> {
     let spec = parse_spec(text, name)?;
     build_spec(&spec, text, name, base, si)
@@ -217,38 +148,6 @@ fn build_spec(
         crate::say!("camkin: warning: {}", w.message);
     }
     Ok(built)
-}
-
-/// Builds a spec parsed from `text` with `options` (a server's confined folder, SI units),
-/// placing errors and warnings in the text (nothing is printed).
-pub fn build_placed(
-    spec: &MechanismSpec,
-    text: &str,
-    name: &str,
-    options: &BuildOptions,
-) -> Result<(Built, Vec<Warning>), InputError> {
-    let (built, warnings) = text::build_placed(spec, text, name, options)?;
-    let warnings = warnings
-        .into_iter()
-        .map(|w| Warning {
-            message: w.message,
-            at: w.at,
-        })
-        .collect();
-    Ok((built, warnings))
-}
-
-/// 1-based `(line, column)` of byte offset `at` in `text` (column in characters).
-pub fn line_column(text: &str, at: usize) -> (usize, usize) {
-    text::line_column(text, at)
-}
-
-/// The paper's mechanism (section 3), the file `examples/paper.toml`.
-pub const PAPER_TOML: &str = include_str!("../../../examples/paper.toml");
-
-/// The built-in paper mechanism.
-pub fn paper() -> Mechanism {
-    camkin::reference::paper_mechanism(false)
 }
 
 #[cfg(test)]

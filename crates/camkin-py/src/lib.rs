@@ -11,6 +11,7 @@ mod geometry;
 mod mech;
 mod motion;
 mod sim;
+mod studio;
 mod study;
 mod system;
 
@@ -25,6 +26,7 @@ fn _camkin(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<geometry::PyBody>()?;
     m.add_function(wrap_pyfunction!(mech::paper_cam, m)?)?;
     m.add_function(wrap_pyfunction!(mech::_mechanism_from_json, m)?)?;
+    m.add_function(wrap_pyfunction!(mech::_mechanism_from_text, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::_curve_from_state, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::_contact, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::spline, m)?)?;
@@ -36,6 +38,8 @@ fn _camkin(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(motion::motion_law, m)?)?;
     m.add_function(wrap_pyfunction!(study::spline_variants, m)?)?;
     m.add_function(wrap_pyfunction!(study::summarize, m)?)?;
+    m.add_function(wrap_pyfunction!(studio::_studio_answer, m)?)?;
+    m.add_function(wrap_pyfunction!(studio::_studio_assets, m)?)?;
     m.add("MAX_ANGLES", mech::MAX_ANGLES)?;
     Ok(())
 }

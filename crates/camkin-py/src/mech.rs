@@ -377,6 +377,13 @@ impl PyMechanism {
         self.name.clone()
     }
 
+    /// The folder a relative points-file path is read from (the file's folder; ``"."`` for
+    /// text and dicts unless ``base_dir`` was given).
+    #[getter]
+    fn base_dir(&self) -> String {
+        self.base_dir.display().to_string()
+    }
+
     /// The file has a ``[dynamics]`` section (``simulate`` needs one).
     #[getter]
     fn has_dynamics(&self) -> bool {
@@ -736,6 +743,29 @@ pub fn _mechanism_from_json(text: &str, base_dir: &str, name: &str) -> PyResult<
     let spec = parse_json(text)?;
     // it was built once, within the limits or with large=True
     PyMechanism::build(spec, PathBuf::from(base_dir), name.into(), true)
+}
+
+/// For the widget: a mechanism from a mechanism file's text, its errors placed in the text
+/// (``file`` names it), points files read from ``base_dir``.
+#[pyfunction]
+pub fn _mechanism_from_text(
+    py: Python<'_>,
+    text: &str,
+    base_dir: &str,
+    name: &str,
+    file: &str,
+) -> PyResult<PyMechanism> {
+    let spec = parse_toml(text, file)?;
+    let m = PyMechanism::build_text(
+        spec,
+        text,
+        file,
+        PathBuf::from(base_dir),
+        name.into(),
+        false,
+    )?;
+    m.warn_spec(py)?;
+    Ok(m)
 }
 
 /// paper_cam() -> Mechanism: the paper's cam (section 3; ``examples/paper.toml``): a 9-node

@@ -33,18 +33,7 @@ pub struct ProfileArgs {
 
 pub fn run(args: &ProfileArgs) -> Result<(), Failure> {
     let loaded = load_mechanism(args.mechanism.as_ref())?;
-    if let Some(t) = args.tolerance {
-        let size = loaded.mech.size();
-        if !(t.is_finite() && t >= 1e-12 * size && t <= 0.1 * size) {
-            return Err(Failure::Input(anyhow!(
-                "--tolerance: {} {} must be from 1e-12 to 0.1 of the cam's size ({} {})",
-                camkin::human::human(t),
-                loaded.unit.name(),
-                camkin::human::human(size),
-                loaded.unit.name()
-            )));
-        }
-    }
+    // the tool radius and the tolerance are checked by the library's shop report
     // a sweep for the table (and the cutter's path), about 250 bytes of files an angle
     let angles = (360.0 / args.step.deg()).round() as usize;
     crate::refuse_large(

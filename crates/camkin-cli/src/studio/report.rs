@@ -21,7 +21,9 @@ pub fn csv(
     limits: &Limits,
 ) -> Result<String, StudioError> {
     if super::system::is_system(text) {
-        return super::system::csv(text, source, step_deg, limits);
+        let (columns, rows) = super::system::table(text, source, step_deg, limits)?;
+        let mut rows = Some(rows);
+        return csv_text(&columns, || rows.take());
     }
     let parsed = model::build(text, source, limits)?;
     let mech = &parsed.built.mechanism;

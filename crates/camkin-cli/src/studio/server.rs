@@ -4,20 +4,18 @@
 //! |---|---|
 //! | `GET /` `GET /studio.js` `GET /studio.css` | the page (embedded) |
 //! | `GET /api/session` | `{name, toml, folder}`: the mechanism opened |
-//! | `POST /api/analyze` | [`AnalyzeRequest`] → `{toml, result}` ([`model::Analysis`]); `toml` is the text with dragged nodes written in |
-//! | `POST /api/compare` | [`CompareRequest`] → [`model::Compare`] |
-//! | `POST /api/csv` | [`AnalyzeRequest`] → the analysis table as `camkin analyze` writes it |
-//! | `POST /api/report` | [`AnalyzeRequest`] → the report's HTML |
+//! | `POST /api/analyze` | [`api::analyze`]: [`super::AnalyzeRequest`] → `{toml, result}` ([`super::model::Analysis`]); `toml` is the text with dragged nodes written in |
+//! | `POST /api/compare` | [`api::compare`]: [`super::CompareRequest`] → [`super::model::Compare`] |
+//! | `POST /api/csv` | [`super::AnalyzeRequest`] → the analysis table as `camkin analyze` writes it |
+//! | `POST /api/report` | [`super::AnalyzeRequest`] → the report's HTML |
 //!
 //! Every refusal is JSON `{"error": {kind, message, line, column}}` with a 4xx status (503 when
 //! busy beyond the wait allowed). Bodies are limited in size; each computation is estimated and
 //! refused over its time limit; at most [`Limits::workers`] computations run at once and the
 //! others wait their turn, so no request is dropped while the server keeps up.
 
-use super::model::{self, Source};
-use super::{
-    assets, patch_nodes, pressure_limit, step, AnalyzeRequest, CompareRequest, Limits, StudioError,
-};
+use super::model::Source;
+use super::{api, assets, Limits, StudioError};
 use axum::body::Bytes;
 use axum::extract::rejection::BytesRejection;
 use axum::extract::{DefaultBodyLimit, State};
@@ -46,10 +44,20 @@ struct AppState {
     turns: Semaphore,
 }
 
-impl IntoResponse for StudioError {
+/// A refusal answered: its status and its JSON error body.
+#[derive(Debug)]
+struct Refused(StudioError);
+
+impl From<StudioError> for Refused {
+    fn from(e: StudioError) -> Self {
+        Self(e)
+    }
+}
+
+impl IntoResponse for Refused {
     fn into_response(self) -> Response {
-        let status = StatusCode::from_u16(self.status()).unwrap_or(StatusCode::BAD_REQUEST);
-        json(status, &self.body())
+        let status = StatusCode::from_u16(self.0.status()).unwrap_or(StatusCode::BAD_REQUEST);
+        json(status, &self.0.body())
     }
 }
 
@@ -199,10 +207,10 @@ async fn style() -> Response {
     asset("text/css; charset=utf-8", assets::STYLE_CSS)
 }
 
-async fn not_found(uri: axum::http::Uri) -> StudioError {
-    StudioError::NotFound {
+async fn not_found(uri: axum::http::Uri) -> Refused {
+    Refused(StudioError::NotFound {
         message: format!("no such page or API: {}", uri.path()),
-    }
+    })
 }
 
 async fn not_allowed(method: axum::http::Method, uri: axum::http::Uri) -> Response {
@@ -231,22 +239,6 @@ async fn session_info(State(state): State<Arc<AppState>>) -> Response {
     )
 }
 
-/// The body as a request of type `T`, or why not.
-fn parse<T: serde::de::DeserializeOwned>(
-    body: Result<Bytes, BytesRejection>,
-    limits: &Limits,
-) -> Result<T, StudioError> {
-    from_json(&read_body(body, limits)?)
-}
-
-/// The bytes as the JSON of a request of type `T`.
-fn from_json<T: serde::de::DeserializeOwned>(bytes: &[u8]) -> Result<T, StudioError> {
-    serde_json::from_slice(bytes).map_err(|e| StudioError::BadRequest {
-        message: format!("the request is not the JSON expected: {e}"),
-    })
-}
-
-/// The body's bytes, or why they could not be read (too large, cut off).
 fn read_body(body: Result<Bytes, BytesRejection>, limits: &Limits) -> Result<Bytes, StudioError> {
     body.map_err(|r| {
         if r.status() == StatusCode::PAYLOAD_TOO_LARGE {
@@ -285,33 +277,8 @@ async fn run<T: Send + 'static>(
         })?
 }
 
-#[derive(Serialize)]
-struct AnalyzeAnswer {
-    /// the text analysed (with dragged nodes written in)
-    toml: String,
-    result: model::Analysis,
-}
-
-/// The text a request asks for: its own, with its nodes written in.
-fn request_text(req: &AnalyzeRequest) -> Result<String, StudioError> {
-    match &req.nodes {
-        Some(nodes) => patch_nodes(&req.toml, nodes),
-        None => Ok(req.toml.clone()),
-    }
-}
-
-/// An analysis request's body read and checked as the server does before any work: the JSON,
-/// the step, the pressure-angle limit and the dragged nodes written into the text. Returns
-/// `(text, step, limit)`. Public for the fuzz target of the request parsing.
-pub fn check_analysis_request(
-    body: &[u8],
-    limits: &Limits,
-) -> Result<(String, f64, f64), StudioError> {
-    let req: AnalyzeRequest = from_json(body)?;
-    let step_deg = step(req.step_deg, limits)?;
-    let limit = pressure_limit(req.pressure_limit_deg)?;
-    Ok((request_text(&req)?, step_deg, limit))
-}
+/// The analysis request's parsing, public here for the fuzz target.
+pub use api::check_analysis_request;
 
 /// Runs `work` on an analysis request's text (with its dragged nodes written in), step and
 /// pressure-angle limit, all checked first.
@@ -345,12 +312,9 @@ async fn analyze(
     State(state): State<Arc<AppState>>,
     headers: HeaderMap,
     body: Result<Bytes, BytesRejection>,
-) -> Result<Response, StudioError> {
+) -> Result<Response, Refused> {
     let answer = with_analysis_request(&state, body, |toml, source, step_deg, limit, limits| {
-        let mut result = model::analyze(&toml, source, step_deg, limit, limits)?;
-        // the page's precision; downloads are computed apart, at full precision
-        super::page_precision::for_page(&mut result);
-        Ok(AnalyzeAnswer { toml, result })
+        api::analyze_checked(toml, source, step_deg, limit, limits)
     })
     .await?;
     Ok(json_gzip(StatusCode::OK, &answer, &headers))
@@ -359,41 +323,21 @@ async fn analyze(
 async fn compare(
     State(state): State<Arc<AppState>>,
     body: Result<Bytes, BytesRejection>,
-) -> Result<Response, StudioError> {
-    let req: CompareRequest = parse(body, &state.limits)?;
-    let step_deg = step(req.step_deg, &state.limits)?;
-    let nodes = req.nodes.clone().unwrap_or_else(|| vec![36]);
-    let l = state.limits;
-    if nodes.is_empty() || nodes.len() > l.max_compare_runs {
-        return Err(StudioError::BadRequest {
-            message: format!(
-                "nodes: {} node counts; give 1 to {}",
-                nodes.len(),
-                l.max_compare_runs
-            ),
-        });
-    }
-    if let Some(n) = nodes
-        .iter()
-        .find(|&&n| !(3..=l.max_compare_nodes).contains(&n))
-    {
-        return Err(StudioError::BadRequest {
-            message: format!("nodes: {n} is out of range (3 to {})", l.max_compare_nodes),
-        });
-    }
-    let source = state.session.source.clone();
-    let mut out = run(&state, move || {
-        model::compare(&req.toml, &source, &nodes, step_deg, &l)
+) -> Result<Response, Refused> {
+    let bytes = read_body(body, &state.limits)?;
+    let (req, step_deg, nodes) = api::check_compare_request(&bytes, &state.limits)?;
+    let (source, l) = (state.session.source.clone(), state.limits);
+    let out = run(&state, move || {
+        api::compare_checked(&req, step_deg, &nodes, &source, &l)
     })
     .await?;
-    super::page_precision::compare_for_page(&mut out);
     Ok(json(StatusCode::OK, &out))
 }
 
 async fn csv(
     State(state): State<Arc<AppState>>,
     body: Result<Bytes, BytesRejection>,
-) -> Result<Response, StudioError> {
+) -> Result<Response, Refused> {
     let text = with_analysis_request(&state, body, |toml, source, step_deg, _, limits| {
         super::report::csv(&toml, source, step_deg, limits)
     })
@@ -404,7 +348,7 @@ async fn csv(
 async fn report(
     State(state): State<Arc<AppState>>,
     body: Result<Bytes, BytesRejection>,
-) -> Result<Response, StudioError> {
+) -> Result<Response, Refused> {
     let html = with_analysis_request(&state, body, |toml, source, step_deg, limit, limits| {
         super::report::html(&toml, source, step_deg, limit, limits)
     })

@@ -8,14 +8,18 @@
 //!   (`camkin synth`'s `checks.txt`, the studio's checks, `Mechanism.checks()` in Python).
 //! - [`SystemForces`]: a simulated system's contact forces, Hertz pressures, drivers' efforts
 //!   (a camshaft's torque) and impacts (`camkin forces SYSTEM.toml`).
+//! - [`ShopReport`]: a cam's manufacturing output: polar table, pitch and cutter paths, the
+//!   cutter's undercut check and a DXF of arcs (`camkin profile`, `Mechanism.shop()`).
 //! - [`Materials`]: elastic constants for the Hertz stress, presets and `E=…:nu=…`, checked for
 //!   plausibility.
 
 mod design;
+pub mod dxf;
 mod forces;
 mod gear_loads;
 mod lubrication;
 mod materials;
+pub mod shop;
 mod spring;
 mod system_forces;
 mod system_lubrication;
@@ -28,6 +32,9 @@ pub use forces::{
 pub use gear_loads::{GearLoadError, GearLoadRequest, GearLoads, PathPoint};
 pub use lubrication::{LubricationPoint, LubricationReport, LubricationRequest};
 pub use materials::{Material, MaterialError, Materials, MODULUS_RANGE_PA, POISSON_RANGE, PRESETS};
+pub use shop::{
+    CutterCheck, OffsetPath, PolarTable, ShopError, ShopField, ShopReport, ShopRequest,
+};
 pub use spring::{SpringDesign, SpringSizing};
 pub use system_forces::{AtAngle, ContactForces, DriverEffort, Impact, SystemForces};
 pub use system_lubrication::{

@@ -8,7 +8,7 @@
 use super::model::{Analysis, Event, Series};
 use super::system::scene_frames;
 use super::{Limits, StudioError};
-use crate::draw::system::{scene_at, Touch};
+use crate::scene::system::{scene_at, Touch};
 use camkin::body::Pose;
 use camkin::dynamics::{EventKind, SystemRun, SystemSimulation};
 use camkin::spec::BuiltSystem;
@@ -229,22 +229,25 @@ pub fn analyze(
     })
 }
 
-/// The simulated revolution's time series: the bytes `camkin simulate FILE --step STEP` writes.
-pub fn csv(built: &BuiltSystem, step_deg: f64, limits: &Limits) -> Result<String, StudioError> {
+/// The simulated revolution's time series: what `camkin simulate FILE --step STEP` writes.
+pub fn table(
+    built: &BuiltSystem,
+    step_deg: f64,
+    limits: &Limits,
+) -> Result<super::system::CellTable, StudioError> {
     let run = simulate(built, step_deg, limits)?;
     let columns = camkin::table::system_sample_columns(
         &built.system,
         built.length_unit.name(),
         &built.dynamics.hertz,
     );
-    let mut rows = Some(
-        run.samples
-            .iter()
-            .enumerate()
-            .map(|(k, s)| {
-                camkin::table::system_sample_cells(step_deg * k as f64, s, &built.dynamics.hertz)
-            })
-            .collect::<Vec<_>>(),
-    );
-    super::report::csv_text(&columns, || rows.take())
+    let rows = run
+        .samples
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            camkin::table::system_sample_cells(step_deg * k as f64, s, &built.dynamics.hertz)
+        })
+        .collect();
+    Ok((columns, rows))
 }

@@ -4,6 +4,9 @@
 "use strict";
 (function () {
   const REPORT = window.CAMKIN_REPORT || null;
+  // in a notebook: the widget's kernel answers the requests in place of the server
+  // ({name, toml, post(what, body) -> Promise<{status, text}>})
+  const BRIDGE = window.CAMKIN_BRIDGE || null;
   const $ = (id) => document.getElementById(id);
   const PLOTS = [
     ["lift", "#1f77b4"], ["velocity", "#ff7f0e"], ["acceleration", "#2ca02c"],
@@ -37,6 +40,16 @@
 
   // ---------- network ----------
   async function post(path, body) {
+    if (BRIDGE) {
+      const a = await BRIDGE.post(path.replace(/^api\//, ""), body);
+      if (a.status !== 200) {
+        let e;
+        try { e = JSON.parse(a.text).error; } catch (_) { e = { message: a.text }; }
+        e.status = a.status;
+        throw e;
+      }
+      return { json: async () => JSON.parse(a.text), blob: async () => new Blob([a.text]) };
+    }
     const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
     const ct = r.headers.get("Content-Type") || "";
     if (!r.ok) {
@@ -68,7 +81,7 @@
         const timing = { server_ms: ans.result.server_ms, network_ms: t1 - t0, total_ms: t2 - t0 };
         S.timings.push(timing);
         if (S.timings.length > 200) S.timings.shift();
-        setStatus(`${ans.result.simulated ? "simulation of" : "exact analysis of"} ${ans.result.angles_deg.length} ${ans.result.simulated ? "output steps" : "angles"}: ${fmt(timing.server_ms, 3)} ms on the server, ${fmt(timing.total_ms, 3)} ms from the edit to the screen`);
+        setStatus(`${ans.result.simulated ? "simulation of" : "exact analysis of"} ${ans.result.angles_deg.length} ${ans.result.simulated ? "output steps" : "angles"}: ${fmt(timing.server_ms, 3)} ms ${BRIDGE ? "in the kernel" : "on the server"}, ${fmt(timing.total_ms, 3)} ms from the edit to the screen`);
         clearError();
         if (S.compareFor !== undefined && S.compareFor !== ans.toml) runCompare();
       })
@@ -938,8 +951,11 @@
       $("compare-n").disabled = true;
       return;
     }
-    fetch("api/session")
-      .then((r) => r.json())
+    const session = BRIDGE
+      ? Promise.resolve({ name: BRIDGE.name, toml: BRIDGE.toml })
+      : fetch("api/session").then((r) => r.json());
+    if (BRIDGE) document.body.classList.add("widget");
+    session
       .then((s) => {
         S.name = s.name;
         S.toml = s.toml;
@@ -949,7 +965,9 @@
         const wait = setInterval(() => { if (S.result) { clearInterval(wait); runCompare(); } }, 50);
       })
       .catch((e) => setStatus(`cannot reach the server: ${e}`, true));
-    $("footer").textContent = "Exact kinematics by the contact method (K. Lee, 2005). The server runs on this machine only; closing the page loses unsaved edits: download the mechanism file.";
+    $("footer").textContent = BRIDGE
+      ? "Exact kinematics by the contact method (K. Lee, 2005), computed in this notebook's kernel; the widget's mechanism attribute holds the edited mechanism."
+      : "Exact kinematics by the contact method (K. Lee, 2005). The server runs on this machine only; closing the page loses unsaved edits: download the mechanism file.";
   }
 
   start();

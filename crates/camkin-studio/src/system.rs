@@ -2,12 +2,12 @@
 //! each instant of a revolution of its first driver, the slider turning that driver, and each
 //! moving body's main coordinate (the one that moves most) and its acceleration plotted. The
 //! page draws it with the cam's code: the frames' shapes are the command's `plot` drawing
-//! ([`crate::draw::system::system_scene`]), a body's closed curve kept once in its frame.
+//! ([`crate::scene::system::system_scene`]), a body's closed curve kept once in its frame.
 
 use super::model::{revolution, Analysis, Frame, Placed, Series, ShapeOut, Source};
 use super::{Limits, StudioError};
-use crate::draw::mechanism::Shape;
-use crate::draw::system::system_scene;
+use crate::scene::mechanism::Shape;
+use crate::scene::system::system_scene;
 use camkin::body::Pose;
 use camkin::curve::Domain;
 use camkin::spec::BuiltSystem;
@@ -326,26 +326,27 @@ fn body_series(
     out
 }
 
-/// The system table at `step_deg` over a revolution: the bytes `camkin analyze FILE --angles
+/// A table's column names and its rows of cells.
+pub type CellTable = (Vec<String>, Vec<Vec<camkin::table::Cell>>);
+
+/// The system table at `step_deg` over a revolution: what `camkin analyze FILE --angles
 /// 0:360:STEP` writes.
-pub fn csv(
+pub fn table(
     text: &str,
     source: &Source,
     step_deg: f64,
     limits: &Limits,
-) -> Result<String, StudioError> {
+) -> Result<CellTable, StudioError> {
     let built = build(text, source, limits)?;
     if built.simulated {
-        return super::system_sim::csv(&built, step_deg, limits);
+        return super::system_sim::table(&built, step_deg, limits);
     }
     let (angles, times, states) = solve(&built, step_deg, limits)?;
     let columns = camkin::table::system_columns(&built);
-    let mut rows = Some(
-        states
-            .iter()
-            .enumerate()
-            .map(|(k, s)| camkin::table::system_cells(&built.system, angles[k], times[k], s))
-            .collect::<Vec<_>>(),
-    );
-    super::report::csv_text(&columns, || rows.take())
+    let rows = states
+        .iter()
+        .enumerate()
+        .map(|(k, s)| camkin::table::system_cells(&built.system, angles[k], times[k], s))
+        .collect();
+    Ok((columns, rows))
 }

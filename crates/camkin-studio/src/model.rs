@@ -4,8 +4,8 @@
 //! the library; the page only draws them.
 
 use super::{Limits, StudioError};
-use crate::draw::mechanism::{follower_shapes, Shape};
-use crate::mechfile::{self, FromText};
+use crate::mechtext::{self as mechfile, FromText};
+use crate::scene::mechanism::{follower_shapes, Shape};
 use camkin::cam::Mechanism;
 use camkin::curve::Domain;
 use camkin::geometry::deg_to_rad;
@@ -362,11 +362,7 @@ pub fn revolution(step_deg: f64) -> Vec<f64> {
 }
 
 /// Refuses work over the limits: too many angles, a sweep estimated over the time allowed.
-pub(super) fn check_work(
-    mech: &Mechanism,
-    angles: usize,
-    limits: &Limits,
-) -> Result<(), StudioError> {
+pub fn check_work(mech: &Mechanism, angles: usize, limits: &Limits) -> Result<(), StudioError> {
     let work = camkin::work::Work::sweep(mech, angles, 1);
     if let Some(r) = work.refusal_within(limits.max_seconds, camkin::work::BYTES_LIMIT) {
         return Err(StudioError::TooMuch {
@@ -483,7 +479,7 @@ pub fn analyze(
             .into_iter()
             .map(|s| match (s, body) {
                 (
-                    crate::draw::mechanism::Shape::Polyline {
+                    crate::scene::mechanism::Shape::Polyline {
                         pts,
                         color,
                         width,

@@ -1,0 +1,152 @@
+//! The page's requests answered, whoever carries them: `camkin serve`'s HTTP server and the
+//! Python package's Jupyter widget (whose kernel answers the page's messages) both call these,
+//! so the page sees the same answers from either.
+//!
+//! | request | answer |
+//! |---|---|
+//! | `analyze` | [`AnalyzeRequest`] → [`AnalyzeAnswer`]: `{toml, result}` ([`model::Analysis`], at the page's precision); `toml` is the text with dragged nodes written in |
+//! | `compare` | [`CompareRequest`] → [`model::Compare`] (at the page's precision) |
+//!
+//! A refusal is a [`StudioError`], answered as JSON `{"error": {kind, message, line, column}}`
+//! ([`StudioError::body`]) with its status ([`StudioError::status`]).
+
+use crate::model::{self, Source};
+use crate::{
+    patch_nodes, pressure_limit, step, AnalyzeRequest, CompareRequest, Limits, StudioError,
+};
+use serde::Serialize;
+
+/// An analysis answered: the text analysed (with any dragged nodes written in) and what the
+/// page shows of it.
+#[derive(Debug, Serialize)]
+pub struct AnalyzeAnswer {
+    /// the mechanism's text analysed
+    pub toml: String,
+    /// what the page shows
+    pub result: model::Analysis,
+}
+
+/// A request's JSON body read as `T`.
+pub fn from_json<T: serde::de::DeserializeOwned>(bytes: &[u8]) -> Result<T, StudioError> {
+    serde_json::from_slice(bytes).map_err(|e| StudioError::BadRequest {
+        message: format!("the request is not the JSON expected: {e}"),
+    })
+}
+
+fn request_text(req: &AnalyzeRequest) -> Result<String, StudioError> {
+    match &req.nodes {
+        Some(nodes) => patch_nodes(&req.toml, nodes),
+        None => Ok(req.toml.clone()),
+    }
+}
+
+/// An analysis request's body read and checked before any work: the JSON, the step, the
+/// pressure-angle limit and the dragged nodes written into the text. Returns `(text, step,
+/// limit)`. Public for the fuzz target of the request parsing.
+pub fn check_analysis_request(
+    body: &[u8],
+    limits: &Limits,
+) -> Result<(String, f64, f64), StudioError> {
+    let req: AnalyzeRequest = from_json(body)?;
+    let step_deg = step(req.step_deg, limits)?;
+    let limit = pressure_limit(req.pressure_limit_deg)?;
+    Ok((request_text(&req)?, step_deg, limit))
+}
+
+/// `analyze` on a checked request ([`check_analysis_request`]).
+pub fn analyze_checked(
+    toml: String,
+    source: &Source,
+    step_deg: f64,
+    limit: f64,
+    limits: &Limits,
+) -> Result<AnalyzeAnswer, StudioError> {
+    let mut result = model::analyze(&toml, source, step_deg, limit, limits)?;
+    // the page's precision; downloads are computed apart, at full precision
+    crate::page_precision::for_page(&mut result);
+    Ok(AnalyzeAnswer { toml, result })
+}
+
+/// `analyze`: an [`AnalyzeRequest`]'s body answered.
+pub fn analyze(
+    body: &[u8],
+    source: &Source,
+    limits: &Limits,
+) -> Result<AnalyzeAnswer, StudioError> {
+    let (toml, step_deg, limit) = check_analysis_request(body, limits)?;
+    analyze_checked(toml, source, step_deg, limit, limits)
+}
+
+/// A [`CompareRequest`]'s body read and checked: the request, its step and its node counts.
+pub fn check_compare_request(
+    body: &[u8],
+    limits: &Limits,
+) -> Result<(CompareRequest, f64, Vec<usize>), StudioError> {
+    let req: CompareRequest = from_json(body)?;
+    let step_deg = step(req.step_deg, limits)?;
+    let nodes = req.nodes.clone().unwrap_or_else(|| vec![36]);
+    if nodes.is_empty() || nodes.len() > limits.max_compare_runs {
+        return Err(StudioError::BadRequest {
+            message: format!(
+                "nodes: {} node counts; give 1 to {}",
+                nodes.len(),
+                limits.max_compare_runs
+            ),
+        });
+    }
+    if let Some(n) = nodes
+        .iter()
+        .find(|&&n| !(3..=limits.max_compare_nodes).contains(&n))
+    {
+        return Err(StudioError::BadRequest {
+            message: format!(
+                "nodes: {n} is out of range (3 to {})",
+                limits.max_compare_nodes
+            ),
+        });
+    }
+    Ok((req, step_deg, nodes))
+}
+
+/// `compare` on a checked request ([`check_compare_request`]).
+pub fn compare_checked(
+    req: &CompareRequest,
+    step_deg: f64,
+    nodes: &[usize],
+    source: &Source,
+    limits: &Limits,
+) -> Result<model::Compare, StudioError> {
+    let mut out = model::compare(&req.toml, source, nodes, step_deg, limits)?;
+    crate::page_precision::compare_for_page(&mut out);
+    Ok(out)
+}
+
+/// `compare`: a [`CompareRequest`]'s body answered.
+pub fn compare(
+    body: &[u8],
+    source: &Source,
+    limits: &Limits,
+) -> Result<model::Compare, StudioError> {
+    let (req, step_deg, nodes) = check_compare_request(body, limits)?;
+    compare_checked(&req, step_deg, &nodes, source, limits)
+}
+
+/// A request named `what` (`"analyze"` or `"compare"`) answered as `(status, JSON text)`: 200
+/// and the answer, or the refusal's status and its error body. What the widget's kernel sends
+/// the page.
+pub fn answer(what: &str, body: &[u8], source: &Source, limits: &Limits) -> (u16, String) {
+    let json = |v: Result<String, serde_json::Error>| {
+        v.unwrap_or_else(|e| format!("{{\"error\":{{\"kind\":\"internal\",\"message\":\"{e}\"}}}}"))
+    };
+    let done = match what {
+        "analyze" => analyze(body, source, limits).map(|a| json(serde_json::to_string(&a))),
+        "compare" => compare(body, source, limits).map(|a| json(serde_json::to_string(&a))),
+        other => Err(StudioError::NotFound {
+            message: format!("no such request: {other}"),
+        }),
+    };
+    match done {
+        Ok(text) => (200, text),
+        Err(e) => (e.status(), json(serde_json::to_string(&e.body()))),
+    }
+}
