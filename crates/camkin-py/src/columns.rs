@@ -134,7 +134,7 @@ impl Columns {
                 }
             }
         }
-        Ok(d)
+        crate::columns::result(d)
     }
 }
 
@@ -196,4 +196,14 @@ pub fn angles_from(
         ));
     }
     Ok((v, ndim == 0))
+}
+
+/// A result dict as `camkin.Result` (a dict with `to_pandas()`; nested dicts too).
+pub fn result<'py>(d: Bound<'py, PyDict>) -> PyResult<Bound<'py, PyDict>> {
+    let py = d.py();
+    let r = py
+        .import("camkin.results")?
+        .getattr("Result")?
+        .call1((d,))?;
+    Ok(r.cast_into::<PyDict>()?)
 }

@@ -114,6 +114,6 @@ impl PyMechanism {
         }
         let json = py.import("json")?;
         out.set_item("report", json.call_method1("loads", (v.to_string(),))?)?;
-        Ok(out)
+        crate::columns::result(out)
     }
 }

@@ -10,6 +10,7 @@ mod gear_loads;
 mod geometry;
 mod mech;
 mod motion;
+mod shop;
 mod sim;
 mod studio;
 mod study;

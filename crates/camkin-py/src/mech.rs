@@ -601,7 +601,7 @@ impl PyMechanism {
         d.set_item(format!("peak_{k}"), u.coord_value(t.peak))?;
         d.set_item("peak_angle_deg", t.peak_angle.to_degrees())?;
         d.set_item(format!("stroke_{k}"), u.coord_value(t.stroke()))?;
-        Ok(d)
+        crate::columns::result(d)
     }
 
     /// checks(*, step_deg=0.5, pressure_limit_deg=30.0) -> dict
@@ -657,7 +657,7 @@ impl PyMechanism {
         d.set_item("failures", PyList::new(py, report.failures())?)?;
         d.set_item("undercut", undercut)?;
         d.set_item("length_unit", self.built.length_unit.name())?;
-        Ok(d)
+        Ok(crate::columns::result(d.cast_into::<PyDict>()?)?.into_any())
     }
 
     /// profile(n=720) -> numpy.ndarray, shape (n, 2): points of the cam profile in the cam's

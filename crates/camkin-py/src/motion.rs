@@ -44,5 +44,5 @@ pub fn motion_law<'py>(
             d.set_item(*key, PyArray1::from_vec(py, col))?;
         }
     }
-    Ok(d)
+    crate::columns::result(d)
 }

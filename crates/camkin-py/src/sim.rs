@@ -151,6 +151,6 @@ impl PyMechanism {
         let out = PyDict::new(py);
         out.set_item("samples", samples.into_dict(py, false)?)?;
         out.set_item("events", ev)?;
-        Ok(out)
+        crate::columns::result(out)
     }
 }

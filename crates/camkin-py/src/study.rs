@@ -230,7 +230,7 @@ fn into_dict<'py>(
             Some(&kwargs),
         )?,
     )?;
-    Ok(d)
+    crate::columns::result(d)
 }
 
 /// spline_variants(base, nodes, *, angles_deg=None, threads=None, large=False) -> dict
@@ -441,6 +441,6 @@ impl PyMechanism {
         d.set_item("rel_error", rel)?;
         d.set_item("max_rel_error", maxes)?;
         d.set_item("mean_rel_error", means)?;
-        Ok(d)
+        crate::columns::result(d)
     }
 }

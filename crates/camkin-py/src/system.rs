@@ -232,7 +232,7 @@ impl PySystem {
         }
         let json = py.import("json")?;
         out.set_item("report", json.call_method1("loads", (v.to_string(),))?)?;
-        Ok(out)
+        crate::columns::result(out)
     }
 
     fn __repr__(&self) -> String {

@@ -17,16 +17,21 @@ Any two curves on moving bodies (for a multibody solver)::
                        camkin.Circle((0, 0), 1.0), camkin.Body(position=(3.0, 0.0)))
     c.phi_q, c.gamma                               # the constraint row: phi_q · q̈ = gamma
 
+Every result is a ``camkin.Result``: a dict whose keys carry their units, its tables NumPy
+arrays, with ``to_pandas()``. The studio in a notebook: ``camkin.widget.Studio(mech)`` (needs
+``pip install 'camkin[notebook]'``).
+
 Conventions (angles counter-clockwise, left normals, σ, the gap's sign): see the README and the
 library's documentation.
 """
 
 from dataclasses import dataclass as _dataclass
-from typing import Dict as _Dict, Optional as _Optional, Tuple as _Tuple
+from typing import Any as _Any, Dict as _Dict, Optional as _Optional, Sequence as _Sequence, Tuple as _Tuple
 
 import numpy as _np
 
 from . import errors
+from .results import Result
 from ._camkin import (
     MAX_ANGLES,
     Body,
@@ -62,6 +67,7 @@ __all__ = [
     "Mechanism",
     "Point",
     "ResourceError",
+    "Result",
     "Spline",
     "System",
     "contact",
@@ -151,13 +157,13 @@ def contact(
 
 def synthesize(
     *,
-    segments,
+    segments: _Sequence[_Dict[str, _Any]],
     base_radius: float,
-    follower: dict,
+    follower: _Dict[str, _Any],
     speed_rpm: float,
     length_unit: str,
     direction: str = "ccw",
-    dynamics: _Optional[dict] = None,
+    dynamics: _Optional[_Dict[str, _Any]] = None,
 ) -> Mechanism:
     """A cam synthesised exactly from a motion program (``kind = "motion"`` in a mechanism file).
 

@@ -1,15 +1,43 @@
 """Type stubs of the extension module (camkin._camkin); see the docstrings for units."""
 
 from os import PathLike
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
 
+from .results import Result
+
+# as the extension module's own __all__ (pyo3 lists every function and class it adds)
+__all__ = [
+    "Mechanism",
+    "System",
+    "Curve",
+    "Body",
+    "paper_cam",
+    "_mechanism_from_json",
+    "_mechanism_from_text",
+    "_curve_from_state",
+    "_contact",
+    "Spline",
+    "Circle",
+    "Ellipse",
+    "Line",
+    "Point",
+    "motion_laws",
+    "motion_law",
+    "spline_variants",
+    "summarize",
+    "_studio_answer",
+    "_studio_assets",
+    "MAX_ANGLES",
+]
+
 MAX_ANGLES: int
 
-ArrayLike = Union[float, Sequence[float], npt.NDArray[np.floating[Any]]]
+_ArrayLike = Union[float, Sequence[float], npt.NDArray[np.floating[Any]]]
 
+@final
 class System:
     @staticmethod
     def from_toml(source: Union[str, PathLike[str]], *, large: bool = False) -> System: ...
@@ -18,8 +46,8 @@ class System:
     @property
     def contacts(self) -> List[str]: ...
     def analyze(
-        self, angles_deg: ArrayLike, *, strict: bool = False, large: bool = False
-    ) -> Dict[str, Any]: ...
+        self, angles_deg: _ArrayLike, *, strict: bool = False, large: bool = False
+    ) -> Result: ...
     def simulate(
         self,
         *,
@@ -27,9 +55,10 @@ class System:
         step_deg: float = 1.0,
         substeps: Optional[int] = None,
         large: bool = False,
-    ) -> Tuple[Dict[str, Any], Dict[str, Any]]: ...
-    def lubrication(self, *, step_deg: float = 1.0, large: bool = False) -> Dict[str, Any]: ...
+    ) -> Tuple[Result, Result]: ...
+    def lubrication(self, *, step_deg: float = 1.0, large: bool = False) -> Result: ...
 
+@final
 class Mechanism:
     @staticmethod
     def from_toml(source: Union[str, PathLike[str]], *, large: bool = False) -> Mechanism: ...
@@ -49,23 +78,41 @@ class Mechanism:
     def name(self) -> str: ...
     @property
     def has_dynamics(self) -> bool: ...
+    @property
+    def base_dir(self) -> str: ...
     def analyze(
         self,
-        angles_deg: ArrayLike,
+        angles_deg: _ArrayLike,
         *,
         per: str = "s",
         angle_unit: str = "deg",
         contiguous: Optional[bool] = None,
         strict: bool = False,
         large: bool = False,
-    ) -> Dict[str, Any]: ...
-    def travel(self) -> Dict[str, float]: ...
-    def checks(self, *, step_deg: float = 0.5, pressure_limit_deg: float = 30.0) -> Dict[str, Any]: ...
+    ) -> Result: ...
+    def contacts(
+        self,
+        angles_deg: _ArrayLike,
+        *,
+        contiguous: Optional[bool] = None,
+        strict: bool = False,
+        large: bool = False,
+    ) -> Result: ...
+    def mesh(
+        self,
+        angles_deg: _ArrayLike,
+        *,
+        contiguous: Optional[bool] = None,
+        strict: bool = False,
+        large: bool = False,
+    ) -> Result: ...
+    def travel(self) -> Result: ...
+    def checks(self, *, step_deg: float = 0.5, pressure_limit_deg: float = 30.0) -> Result: ...
     def profile(self, n: int = 720) -> npt.NDArray[np.float64]: ...
     def with_nodes(self, points: npt.NDArray[np.float64], *, large: bool = False) -> Mechanism: ...
     def compare(
-        self, nodes: Sequence[int] = (100, 1000, 10000), *, step_deg: float = 0.05, large: bool = False
-    ) -> Dict[str, Any]: ...
+        self, nodes: Sequence[int] = ..., *, step_deg: float = 0.05, large: bool = False
+    ) -> Result: ...
     def simulate(
         self,
         *,
@@ -74,7 +121,7 @@ class Mechanism:
         substeps: int = 1,
         start_angle_deg: float = 0.0,
         large: bool = False,
-    ) -> Dict[str, Any]: ...
+    ) -> Result: ...
     def forces(
         self,
         *,
@@ -88,7 +135,22 @@ class Mechanism:
         roughness_um: Optional[Tuple[float, float]] = None,
         film: Optional[str] = None,
         friction: Union[float, Tuple[float, float], None] = None,
-    ) -> Dict[str, Any]: ...
+    ) -> Result: ...
+    def shop(
+        self,
+        *,
+        step_deg: float = 1.0,
+        tool_radius: Optional[float] = None,
+        tolerance: Optional[float] = None,
+        dxf_path: Union[str, PathLike[str], None] = None,
+    ) -> Result: ...
+    def deviation(
+        self,
+        measured: Union[str, PathLike[str], npt.ArrayLike],
+        *,
+        tolerance: Optional[float] = None,
+        step_deg: float = 1.0,
+    ) -> Result: ...
     def gear_loads(
         self,
         *,
@@ -101,8 +163,9 @@ class Mechanism:
         film: Optional[str] = None,
         friction: Union[float, Tuple[float, float], None] = None,
         points: int = 201,
-    ) -> Dict[str, Any]: ...
+    ) -> Result: ...
 
+@final
 class Curve:
     @property
     def kind(self) -> str: ...
@@ -111,16 +174,17 @@ class Curve:
     def eval(self, u: float) -> Dict[str, Any]: ...
     def breakpoints(self) -> List[float]: ...
 
+@final
 class Body:
-    def __init__(
-        self,
-        position: Sequence[float] = (0.0, 0.0),
+    def __new__(
+        cls,
+        position: Sequence[float] = ...,
         angle: float = 0.0,
-        velocity: Sequence[float] = (0.0, 0.0),
+        velocity: Sequence[float] = ...,
         angular_velocity: float = 0.0,
-        acceleration: Sequence[float] = (0.0, 0.0),
+        acceleration: Sequence[float] = ...,
         angular_acceleration: float = 0.0,
-    ) -> None: ...
+    ) -> Body: ...
     @property
     def position(self) -> Tuple[float, float]: ...
     @property
@@ -142,22 +206,22 @@ def Line(anchor: Sequence[float], direction: Sequence[float]) -> Curve: ...
 def Point(at: Sequence[float]) -> Curve: ...
 def paper_cam() -> Mechanism: ...
 def motion_laws() -> List[str]: ...
-def motion_law(name: str, x: ArrayLike) -> Dict[str, Any]: ...
+def motion_law(name: str, x: _ArrayLike) -> Result: ...
 def spline_variants(
     base: Mechanism,
     nodes: npt.NDArray[np.float64],
     *,
-    angles_deg: Optional[ArrayLike] = None,
+    angles_deg: Optional[_ArrayLike] = None,
     threads: Optional[int] = None,
     large: bool = False,
-) -> Dict[str, Any]: ...
+) -> Result: ...
 def summarize(
     mechanisms: Sequence[Mechanism],
     *,
-    angles_deg: Optional[ArrayLike] = None,
+    angles_deg: Optional[_ArrayLike] = None,
     threads: Optional[int] = None,
     large: bool = False,
-) -> Dict[str, Any]: ...
+) -> Result: ...
 def _contact(
     curve_a: Curve,
     body_a: Body,
@@ -170,3 +234,6 @@ def _contact(
 ) -> Dict[str, Any]: ...
 def _mechanism_from_json(text: str, base_dir: str, name: str) -> Mechanism: ...
 def _curve_from_state(kind: str, args: List[float], chord: bool) -> Curve: ...
+def _mechanism_from_text(text: str, base_dir: str, name: str, file: str) -> Mechanism: ...
+def _studio_answer(what: str, body: str, name: str, folder: Optional[str] = None) -> Tuple[int, str, Optional[str]]: ...
+def _studio_assets() -> Tuple[str, str, str]: ...

@@ -12,6 +12,8 @@ Every error camkin raises is a ``CamkinError``:
 - ``ResourceError``: work refused up front, with the estimate; pass ``large=True`` to run it.
 """
 
+from typing import Optional
+
 __all__ = ["CamkinError", "InputError", "ContactError", "ResourceError", "CamkinWarning"]
 
 
@@ -23,7 +25,14 @@ class InputError(CamkinError, ValueError):
     """Bad input: ``.field`` names the field, ``.value`` the value given (text, or None);
     ``.line`` and ``.column`` its place in a mechanism file's text (1-based, or None)."""
 
-    def __init__(self, message, field=None, value=None, line=None, column=None):
+    def __init__(
+        self,
+        message: str,
+        field: Optional[str] = None,
+        value: Optional[str] = None,
+        line: Optional[int] = None,
+        column: Optional[int] = None,
+    ) -> None:
         super().__init__(message, field, value, line, column)
         self.message = message
         self.field = field
@@ -31,29 +40,29 @@ class InputError(CamkinError, ValueError):
         self.line = line
         self.column = column
 
-    def __str__(self):
+    def __str__(self) -> str:
         return self.message
 
 
 class ContactError(CamkinError, ArithmeticError):
     """The contact could not be computed; the message says why the solver stopped."""
 
-    def __init__(self, message):
+    def __init__(self, message: str) -> None:
         super().__init__(message)
         self.message = message
 
-    def __str__(self):
+    def __str__(self) -> str:
         return self.message
 
 
 class ResourceError(CamkinError):
     """Work refused up front (hours or gigabytes), with the estimate."""
 
-    def __init__(self, message):
+    def __init__(self, message: str) -> None:
         super().__init__(message)
         self.message = message
 
-    def __str__(self):
+    def __str__(self) -> str:
         return self.message
 
 

@@ -147,7 +147,8 @@ class Studio(anywidget.AnyWidget):
                     f"Studio takes a camkin.Mechanism, not a {type(mechanism).__name__} "
                     "(a system: Studio.from_toml(path))",
                 )
-            text, name, folder = mechanism.to_toml(), mechanism.name, mechanism.base_dir
+            text, name = mechanism.to_toml(), mechanism.name
+            folder: Optional[str] = mechanism.base_dir
         else:
             text, folder = str(toml), os.fspath(base_dir) if base_dir is not None else None
         self._name = name

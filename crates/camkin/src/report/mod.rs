@@ -10,10 +10,13 @@
 //!   (a camshaft's torque) and impacts (`camkin forces SYSTEM.toml`).
 //! - [`ShopReport`]: a cam's manufacturing output: polar table, pitch and cutter paths, the
 //!   cutter's undercut check and a DXF of arcs (`camkin profile`, `Mechanism.shop()`).
+//! - [`DeviationReport`]: a measured profile against the design, in radius and in the
+//!   follower's motion (`camkin deviation`, `Mechanism.deviation()`).
 //! - [`Materials`]: elastic constants for the Hertz stress, presets and `E=…:nu=…`, checked for
 //!   plausibility.
 
 mod design;
+mod deviation;
 pub mod dxf;
 mod forces;
 mod gear_loads;
@@ -25,6 +28,7 @@ mod system_forces;
 mod system_lubrication;
 
 pub use design::{Check, DesignReport, Verdict};
+pub use deviation::{DeviationError, DeviationReport, MotionDeviation, RadiusDeviation};
 pub use forces::{
     plausible_face_width, rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport,
     HertzSide, Jump,
