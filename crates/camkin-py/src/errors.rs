@@ -114,3 +114,62 @@ fn field_value(e: &SpecError) -> (String, Option<String>) {
         other => (other.field().to_string(), None),
     }
 }
+
+/// A real number given as an argument (a Python int or float, or a NumPy integer or floating
+/// scalar), for `#[pyo3(from_py_with = …)]`: anything else (text, a complex number, None, a bool)
+/// is an `InputError` with the value, whose `.field` the argument's name fills (pyo3 notes
+/// "while processing 'NAME'" on the error, which `InputError.add_note` reads).
+pub fn real(x: &Bound<'_, PyAny>) -> PyResult<f64> {
+    use pyo3::types::{PyBool, PyFloat, PyInt};
+    let bad = |what: &str| {
+        let shown = x.repr().map_or_else(|_| "?".into(), |r| r.to_string());
+        input_at(
+            "",
+            Some(shown.clone()),
+            if what == "None" {
+                "must be a real number, not None".to_string()
+            } else {
+                format!("must be a real number, not {what} ({shown})")
+            },
+            None,
+        )
+    };
+    if x.is_instance_of::<PyBool>() {
+        return Err(bad("a bool"));
+    }
+    if x.is_instance_of::<PyFloat>() || x.is_instance_of::<PyInt>() {
+        return x.extract::<f64>();
+    }
+    let ty = x.get_type();
+    let numpy = ty
+        .module()
+        .map(|m| m.to_string().starts_with("numpy"))
+        .unwrap_or(false);
+    if numpy && x.hasattr("dtype")? {
+        let kind: String = x.getattr("dtype")?.getattr("kind")?.extract()?;
+        let scalar = x
+            .getattr("ndim")
+            .and_then(|n| n.extract::<usize>())
+            .unwrap_or(1)
+            == 0;
+        if scalar && matches!(kind.as_str(), "f" | "i" | "u") {
+            return x.call_method0("item")?.extract::<f64>();
+        }
+    }
+    let name = ty.name().map_or_else(|_| "?".into(), |n| n.to_string());
+    Err(bad(&match name.as_str() {
+        "str" => "text".to_string(),
+        "complex" => "a complex number".to_string(),
+        "NoneType" => "None".to_string(),
+        other => format!("a {other}"),
+    }))
+}
+
+/// [`real`], or None.
+pub fn real_or_none(x: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
+    if x.is_none() {
+        Ok(None)
+    } else {
+        real(x).map(Some)
+    }
+}

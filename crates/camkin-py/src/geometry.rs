@@ -198,7 +198,11 @@ impl PyCurve {
 
     /// eval(u) -> dict: position ``r`` and derivatives ``d1``, ``d2``, ``d3`` at parameter ``u``
     /// (body frame), the unit ``tangent``, left ``normal`` and signed ``curvature``.
-    fn eval<'py>(&self, py: Python<'py>, u: f64) -> PyResult<Bound<'py, PyDict>> {
+    fn eval<'py>(
+        &self,
+        py: Python<'py>,
+        #[pyo3(from_py_with = crate::errors::real)] u: f64,
+    ) -> PyResult<Bound<'py, PyDict>> {
         let e = self.curve.eval(u);
         let d = PyDict::new(py);
         let v = |x: f64, y: f64| PyArray1::from_vec(py, vec![x, y]);
@@ -350,11 +354,11 @@ impl PyBody {
     #[pyo3(signature = (position = vec![0.0, 0.0], angle = 0.0, velocity = vec![0.0, 0.0], angular_velocity = 0.0, acceleration = vec![0.0, 0.0], angular_acceleration = 0.0))]
     fn new(
         position: Vec<f64>,
-        angle: f64,
+        #[pyo3(from_py_with = crate::errors::real)] angle: f64,
         velocity: Vec<f64>,
-        angular_velocity: f64,
+        #[pyo3(from_py_with = crate::errors::real)] angular_velocity: f64,
         acceleration: Vec<f64>,
-        angular_acceleration: f64,
+        #[pyo3(from_py_with = crate::errors::real)] angular_acceleration: f64,
     ) -> PyResult<Self> {
         let p = pair("position", &position)?;
         let v = pair("velocity", &velocity)?;
@@ -469,7 +473,7 @@ pub fn _contact<'py>(
     body_b: PyRef<'py, PyBody>,
     at: Option<(f64, f64)>,
     guess: Option<(f64, f64)>,
-    length_scale: Option<f64>,
+    #[pyo3(from_py_with = crate::errors::real_or_none)] length_scale: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (ba, bb) = (body_a.state, body_b.state);
     let scale = match length_scale {

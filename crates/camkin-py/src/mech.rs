@@ -618,8 +618,8 @@ impl PyMechanism {
     fn checks<'py>(
         &self,
         py: Python<'py>,
-        step_deg: f64,
-        pressure_limit_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real)] pressure_limit_deg: f64,
     ) -> PyResult<Bound<'py, PyAny>> {
         let n = revolution_steps(step_deg, "step_deg")?;
         if !(pressure_limit_deg.is_finite()

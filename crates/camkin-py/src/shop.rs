@@ -57,9 +57,9 @@ impl PyMechanism {
     fn shop<'py>(
         &self,
         py: Python<'py>,
-        step_deg: f64,
-        tool_radius: Option<f64>,
-        tolerance: Option<f64>,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real_or_none)] tool_radius: Option<f64>,
+        #[pyo3(from_py_with = crate::errors::real_or_none)] tolerance: Option<f64>,
         dxf_path: Option<PathBuf>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let n = revolution_steps(step_deg, "step_deg")?;
@@ -179,8 +179,8 @@ impl PyMechanism {
         &self,
         py: Python<'py>,
         measured: &Bound<'py, PyAny>,
-        tolerance: Option<f64>,
-        step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real_or_none)] tolerance: Option<f64>,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
     ) -> PyResult<Bound<'py, PyDict>> {
         let n = revolution_steps(step_deg, "step_deg")?;
         let pts = measured_points(py, measured)?;

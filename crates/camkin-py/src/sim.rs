@@ -37,10 +37,10 @@ impl PyMechanism {
     fn simulate<'py>(
         &self,
         py: Python<'py>,
-        revolutions: f64,
-        step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
         substeps: usize,
-        start_angle_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real)] start_angle_deg: f64,
         large: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let bad = |field: &str, v: f64, what: &str| {

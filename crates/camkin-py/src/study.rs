@@ -372,7 +372,7 @@ impl PyMechanism {
         &self,
         py: Python<'py>,
         nodes: Vec<usize>,
-        step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
         large: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let n = revolution_steps(step_deg, "step_deg")?;

@@ -153,8 +153,8 @@ impl PySystem {
     fn simulate<'py>(
         &self,
         py: Python<'py>,
-        revolutions: f64,
-        step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
         substeps: Option<usize>,
         large: bool,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
@@ -197,7 +197,7 @@ impl PySystem {
     fn lubrication<'py>(
         &self,
         py: Python<'py>,
-        step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
         large: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let Some(req) = self.built.lubrication.as_ref() else {

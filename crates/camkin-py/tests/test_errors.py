@@ -234,3 +234,40 @@ def test_a_dict_may_hold_numpy_arrays_and_leave_out_none():
     d["cam"]["angular_acceleration_deg_s2"] = None
     m = camkin.Mechanism.from_dict(d)
     assert m.to_dict() == camkin.paper_cam().to_dict()
+
+
+# every real-number argument: text, a complex number, a bool, an array or None (where a number is
+# needed) is an InputError naming the argument and the value; NumPy scalars are numbers
+REAL_ARGS = [
+    (lambda m, v: m.checks(step_deg=v), "step_deg"),
+    (lambda m, v: m.checks(pressure_limit_deg=v), "pressure_limit_deg"),
+    (lambda m, v: m.forces(step_deg=v), "step_deg"),
+    (lambda m, v: m.forces(margin=v), "margin"),
+    (lambda m, v: m.forces(face_width=v), "face_width"),
+    (lambda m, v: m.forces(target_rpm=v), "target_rpm"),
+    (lambda m, v: m.shop(tool_radius=v), "tool_radius"),
+    (lambda m, v: m.shop(tolerance=v), "tolerance"),
+    (lambda m, v: m.shop(step_deg=v), "step_deg"),
+    (lambda m, v: m.simulate(revolutions=v), "revolutions"),
+    (lambda m, v: m.simulate(start_angle_deg=v), "start_angle_deg"),
+    (lambda m, v: m.compare(step_deg=v), "step_deg"),
+    (lambda m, v: camkin.Body(angle=v), "angle"),
+    (lambda m, v: camkin.Body(angular_velocity=v), "angular_velocity"),
+]
+
+
+@pytest.mark.parametrize("call,field", REAL_ARGS, ids=lambda x: x if isinstance(x, str) else "")
+@pytest.mark.parametrize("bad", ["10mm", 1 + 2j, True, np.array([1.0, 2.0])], ids=["text", "complex", "bool", "array"])
+def test_a_real_argument_refuses_what_is_not_a_real_number(call, field, bad):
+    mech = camkin.Mechanism.from_toml(EXAMPLES / "paper-dynamics.toml")
+    with pytest.raises(camkin.InputError) as e:
+        call(mech, bad)
+    assert e.value.field == field, (e.value.field, str(e.value))
+    assert str(e.value).startswith(field) and repr(bad)[:6] in str(e.value), str(e.value)
+
+
+def test_numpy_scalars_are_numbers():
+    mech = camkin.paper_cam()
+    a = mech.shop(step_deg=np.float32(2.0), tool_radius=np.int64(1))
+    b = mech.shop(step_deg=2.0, tool_radius=1.0)
+    assert a["dxf"] == b["dxf"]

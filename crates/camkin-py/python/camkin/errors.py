@@ -43,6 +43,19 @@ class InputError(CamkinError, ValueError):
     def __str__(self) -> str:
         return self.message
 
+    def add_note(self, note: str) -> None:
+        """Python's note; a bad argument's "while processing 'NAME'" (added by the extension
+        module) names the field when the error did not: ``.field`` becomes ``NAME`` and the
+        message starts with it."""
+        prefix, suffix = "while processing '", "'"
+        if not self.field and note.startswith(prefix) and note.endswith(suffix):
+            self.field = note[len(prefix) : -len(suffix)]
+            self.message = f"{self.field} = {self.message}" if self.value is None else f"{self.field}: {self.message}"
+            self.args = (self.message, self.field, self.value, self.line, self.column)
+            return
+        if hasattr(super(), "add_note"):
+            super().add_note(note)
+
 
 class ContactError(CamkinError, ArithmeticError):
     """The contact could not be computed; the message says why the solver stopped."""
