@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 from playwright.sync_api import sync_playwright
 
-ROOT = Path(__file__).resolve().parents[4]
+ROOT = Path(__file__).resolve().parents[3]
 CHROMIUM = os.environ.get("CAMKIN_CHROMIUM", shutil.which("chromium") or "/usr/bin/chromium")
 ARGS = [
     "--no-sandbox",
