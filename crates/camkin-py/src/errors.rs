@@ -173,3 +173,76 @@ pub fn real_or_none(x: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
         real(x).map(Some)
     }
 }
+
+/// Warns with a `camkin.errors.CamkinWarning(message, field, value, line, column)` (Python's
+/// `warnings`, pointing at the caller's line): `field` names what it is about as an
+/// `InputError` would (`cam.profile.points`, `angles_deg`), `value` the value (text), `at` its
+/// 1-based place in a mechanism's text.
+pub fn warn(
+    py: Python<'_>,
+    message: &str,
+    field: Option<&str>,
+    value: Option<String>,
+    at: Option<(usize, usize)>,
+) -> PyResult<()> {
+    let cls = py.import("camkin.errors")?.getattr("CamkinWarning")?;
+    let w = cls.call1((message, field, value, at.map(|a| a.0), at.map(|a| a.1)))?;
+    let kwargs = pyo3::types::PyDict::new(py);
+    kwargs.set_item("stacklevel", 2)?;
+    py.import("warnings")?
+        .getattr("warn")?
+        .call((w,), Some(&kwargs))?;
+    Ok(())
+}
+
+/// The field a spec warning is about (a dotted path, as the files write it), when it names one.
+pub fn spec_warning_field(w: &camkin::spec::SpecWarning) -> Option<String> {
+    match w {
+        camkin::spec::SpecWarning::UnevenNodes { field, .. } => Some(field.to_string()),
+        camkin::spec::SpecWarning::ConjugateLeftOut => Some("follower.conjugate".into()),
+        _ => None,
+    }
+}
+
+/// A count given as an argument (a Python int or a NumPy integer scalar, not negative), for
+/// `#[pyo3(from_py_with = …)]`: anything else (a float, text, None, a bool) is an
+/// `InputError` with the value, its `.field` the argument's name (as [`real`]).
+pub fn count(x: &Bound<'_, PyAny>) -> PyResult<usize> {
+    use pyo3::types::{PyBool, PyInt};
+    let shown = x.repr().map_or_else(|_| "?".into(), |r| r.to_string());
+    let bad = |why: String| input_at("", Some(shown.clone()), why, None);
+    let int = if x.is_instance_of::<PyBool>() {
+        None
+    } else if x.is_instance_of::<PyInt>() {
+        Some(x.clone())
+    } else {
+        let numpy = x
+            .get_type()
+            .module()
+            .map(|m| m.to_string().starts_with("numpy"))
+            .unwrap_or(false);
+        let kind: Option<String> = if numpy && x.hasattr("dtype")? {
+            x.getattr("dtype")?.getattr("kind")?.extract().ok()
+        } else {
+            None
+        };
+        match kind.as_deref() {
+            Some("i" | "u") => Some(x.call_method0("item")?),
+            _ => None,
+        }
+    };
+    let Some(int) = int else {
+        return Err(bad(format!("must be a whole number, not {shown}")));
+    };
+    int.extract::<usize>()
+        .map_err(|_| bad(format!("must be a whole number from 0 up, not {shown}")))
+}
+
+/// [`count`], or None.
+pub fn count_or_none(x: &Bound<'_, PyAny>) -> PyResult<Option<usize>> {
+    if x.is_none() {
+        Ok(None)
+    } else {
+        count(x).map(Some)
+    }
+}

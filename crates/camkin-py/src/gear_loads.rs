@@ -39,7 +39,7 @@ impl PyMechanism {
         roughness_um: Option<&Bound<'py, PyAny>>,
         film: Option<&str>,
         friction: Option<&Bound<'py, PyAny>>,
-        points: usize,
+        #[pyo3(from_py_with = crate::errors::count)] points: usize,
     ) -> PyResult<Bound<'py, PyDict>> {
         let torque_v = torque.map(|t| real("torque", t)).transpose()?;
         let power_v = power_kw.map(|p| real("power_kw", p)).transpose()?;

@@ -15,6 +15,7 @@ mod sim;
 mod studio;
 mod study;
 mod system;
+mod system_forces;
 
 use pyo3::prelude::*;
 

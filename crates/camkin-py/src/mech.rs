@@ -35,6 +35,8 @@ pub struct PyMechanism {
     /// the follower's travel and the profile's unfollowable stretches, found at the first sweep
     /// (a search that costs about a thousand warm steps) and kept
     parts: std::sync::OnceLock<SweepParts>,
+    /// where each of `built.warnings` is in the mechanism's text, when it was read from text
+    places: Vec<Option<(usize, usize)>>,
 }
 
 type SweepParts = (
@@ -78,9 +80,11 @@ impl PyMechanism {
             confine: false,
             limits: limits(large),
         };
-        let (built, _) =
+        let (built, placed) =
             camkin::spec::text::build_placed(&spec, text, file, &options).map_err(errors::text)?;
-        Ok(Self::of(spec, base_dir, built, name))
+        let mut m = Self::of(spec, base_dir, built, name);
+        m.places = placed.iter().map(|w| w.at).collect();
+        Ok(m)
     }
 
     fn of(spec: MechanismSpec, base_dir: PathBuf, built: Built, name: String) -> Self {
@@ -90,6 +94,7 @@ impl PyMechanism {
             built,
             name,
             parts: std::sync::OnceLock::new(),
+            places: Vec::new(),
         }
     }
 
@@ -148,14 +153,8 @@ impl PyMechanism {
     }
 
     /// Warns (Python's `warnings`, category `camkin.errors.CamkinWarning`).
-    pub fn warn(py: Python<'_>, message: &str) -> PyResult<()> {
-        let cat = py.import("camkin.errors")?.getattr("CamkinWarning")?;
-        PyErr::warn(
-            py,
-            &cat,
-            &std::ffi::CString::new(message).unwrap_or_default(),
-            2,
-        )
+    pub fn warn(py: Python<'_>, message: &str, field: Option<&str>) -> PyResult<()> {
+        errors::warn(py, message, field, None, None)
     }
 }
 
@@ -463,6 +462,7 @@ impl PyMechanism {
                         "the follower's first touch moves to another part of the profile, and its acceleration is impulsive there"
                     }
                 ),
+                Some("angles_deg"),
             )?;
         }
         cols.into_dict(py, scalar)
@@ -666,7 +666,7 @@ impl PyMechanism {
     fn profile<'py>(
         &self,
         py: Python<'py>,
-        n: usize,
+        #[pyo3(from_py_with = crate::errors::count)] n: usize,
     ) -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
         if !(3..=10_000_000).contains(&n) {
             return Err(errors::input(
@@ -703,8 +703,10 @@ impl PyMechanism {
 
 impl PyMechanism {
     fn warn_spec(&self, py: Python<'_>) -> PyResult<()> {
-        for w in &self.built.warnings {
-            Self::warn(py, &w.to_string())?;
+        for (k, w) in self.built.warnings.iter().enumerate() {
+            let field = errors::spec_warning_field(w);
+            let at = self.places.get(k).copied().flatten();
+            errors::warn(py, &w.to_string(), field.as_deref(), None, at)?;
         }
         Ok(())
     }

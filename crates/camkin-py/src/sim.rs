@@ -39,7 +39,7 @@ impl PyMechanism {
         py: Python<'py>,
         #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
         #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
-        substeps: usize,
+        #[pyo3(from_py_with = crate::errors::count)] substeps: usize,
         #[pyo3(from_py_with = crate::errors::real)] start_angle_deg: f64,
         large: bool,
     ) -> PyResult<Bound<'py, PyDict>> {

@@ -249,7 +249,7 @@ pub fn spline_variants<'py>(
     base: PyRef<'py, PyMechanism>,
     nodes: PyReadonlyArray3<'py, f64>,
     angles_deg: Option<&Bound<'py, PyAny>>,
-    threads: Option<usize>,
+    #[pyo3(from_py_with = crate::errors::count_or_none)] threads: Option<usize>,
     large: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let angles = study_angles(py, angles_deg)?;
@@ -301,7 +301,7 @@ pub fn summarize<'py>(
     py: Python<'py>,
     mechanisms: Vec<PyRef<'py, PyMechanism>>,
     angles_deg: Option<&Bound<'py, PyAny>>,
-    threads: Option<usize>,
+    #[pyo3(from_py_with = crate::errors::count_or_none)] threads: Option<usize>,
     large: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let angles = study_angles(py, angles_deg)?;

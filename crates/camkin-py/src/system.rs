@@ -15,7 +15,7 @@ use pyo3::types::PyDict;
 #[pyclass(frozen, module = "camkin", name = "System")]
 #[derive(Debug, Clone)]
 pub struct PySystem {
-    built: BuiltSystem,
+    pub(crate) built: BuiltSystem,
     name: String,
 }
 
@@ -40,7 +40,14 @@ impl PySystem {
         };
         let built = read_system(&s.text, &s.file, &options).map_err(errors::text)?;
         for w in &built.warnings {
-            crate::mech::PyMechanism::warn(py, &format!("{}: {w}", s.file))?;
+            let field = errors::spec_warning_field(w);
+            errors::warn(
+                py,
+                &format!("{}: {w}", s.file),
+                field.as_deref(),
+                None,
+                None,
+            )?;
         }
         Ok(Self {
             built,
@@ -155,7 +162,7 @@ impl PySystem {
         py: Python<'py>,
         #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
         #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
-        substeps: Option<usize>,
+        #[pyo3(from_py_with = crate::errors::count_or_none)] substeps: Option<usize>,
         large: bool,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let sys = &self.built.system;
@@ -252,7 +259,7 @@ impl PySystem {
 impl PySystem {
     /// The simulation `simulate` and `lubrication` share: `revolutions` of the first driver in
     /// `step_deg` output steps, with the instants of angle 0 and of the first step.
-    fn run_revolutions(
+    pub(crate) fn run_revolutions(
         &self,
         py: Python<'_>,
         revolutions: f64,

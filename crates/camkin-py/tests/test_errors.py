@@ -271,3 +271,43 @@ def test_numpy_scalars_are_numbers():
     a = mech.shop(step_deg=np.float32(2.0), tool_radius=np.int64(1))
     b = mech.shop(step_deg=2.0, tool_radius=1.0)
     assert a["dxf"] == b["dxf"]
+
+
+COUNT_ARGS = [
+    (lambda m, v: m.profile(v), "n"),
+    (lambda m, v: m.simulate(substeps=v), "substeps"),
+    (lambda m, v: camkin.summarize([m], threads=v), "threads"),
+]
+
+
+@pytest.mark.parametrize("call,field", COUNT_ARGS, ids=lambda x: x if isinstance(x, str) else "")
+@pytest.mark.parametrize("bad", ["10", 2.5, -3, True], ids=["text", "float", "negative", "bool"])
+def test_a_count_argument_refuses_what_is_not_a_whole_number(call, field, bad):
+    mech = camkin.Mechanism.from_toml(EXAMPLES / "paper-dynamics.toml")
+    with pytest.raises(camkin.InputError) as e:
+        call(mech, bad)
+    assert e.value.field == field and str(e.value).startswith(field), (e.value.field, str(e.value))
+
+
+def test_warnings_carry_the_field_and_the_place(tmp_path):
+    text = (EXAMPLES / "paper.toml").read_text()
+    start = text.index("points = [")
+    end = text.index("]]", start) + 2
+    text = text[:start] + "points = [[5, 0], [4.9, 1], [0, 4], [-4, 0], [0, -4]]" + text[end:]
+    line = text[:start].count("\n") + 1
+    with pytest.warns(camkin.CamkinWarning) as rec:
+        camkin.Mechanism.from_toml(text)
+    w = rec[0].message
+    assert w.field == "cam.profile.points" and "unevenly spaced" in str(w)
+    assert w.line == line, (w.line, w.column, line)
+    # from a dict: the field, no place
+    d = camkin.paper_cam().to_dict()
+    d["cam"]["profile"]["points"] = [[5, 0], [4.9, 1], [0, 4], [-4, 0], [0, -4]]
+    with pytest.warns(camkin.CamkinWarning) as rec:
+        camkin.Mechanism.from_dict(d)
+    w = rec[0].message
+    assert w.field == "cam.profile.points" and w.line is None
+    # a result's warning names the argument
+    with pytest.warns(camkin.CamkinWarning) as rec:
+        camkin.Mechanism.from_toml(EXAMPLES / "gear-pair-20-42.toml").analyze(np.arange(0.0, 60.0, 0.5))
+    assert rec[0].message.field == "angles_deg"

@@ -138,3 +138,41 @@ def test_results_give_dataframes():
     assert len(s["polar"].to_pandas()) == 72
     with pytest.raises(ValueError, match="polar"):
         s.to_pandas()
+
+
+SYSTEM_FILES = sorted(p for p in EXAMPLE_FILES if "[[bod" in p.read_text())
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_system_forces_are_the_commands(path, tmp_path):
+    out = tmp_path / "forces"
+    r = subprocess.run(
+        [camkin_bin(), "forces", path, "--out", out, "--step", "2", "--margin", "5"],
+        capture_output=True, text=True,
+    )
+    system = camkin.System.from_toml(path)
+    if r.returncode == 2:
+        # no [dynamics]: Python refuses it too, naming it
+        assert "[dynamics]" in r.stderr
+        with pytest.raises(camkin.InputError) as e:
+            system.forces(step_deg=2.0)
+        assert e.value.field == "dynamics"
+        return
+    assert r.returncode in (0, 3), r.stderr
+    f = system.forces(step_deg=2.0, margin=5.0)
+    cols = csv_columns((out / "forces.csv").read_text())
+    assert list(cols) == list(f["columns"])
+    for k in cols:
+        same_column(cols[k], f["columns"][k])
+    # the checks fail in both or in neither, on the same contacts
+    assert (r.returncode == 3) == bool(f["failures"]), (r.stderr, f["failures"])
+    for failure in f["failures"]:
+        (kind, body), = failure.items()
+        assert f'contact "{body["contact"]}"' in r.stderr, (failure, r.stderr)
+
+
+def test_system_forces_refuse_bad_checks():
+    s = camkin.System.from_toml(EXAMPLES / "valve-train.toml")
+    with pytest.raises(camkin.InputError) as e:
+        s.forces(allowable_mpa=-3.0)
+    assert e.value.field == "allowable_mpa"

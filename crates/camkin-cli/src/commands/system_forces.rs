@@ -8,11 +8,11 @@
 
 use super::forces::ForcesArgs;
 use super::system_simulate::{bad, dyn_err};
-use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
+use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::dynamics::{SpeedSweep, SystemSimulation};
-use camkin::report::SystemForces;
+use camkin::report::{SystemForceFailure, SystemForces};
 
 /// The revolution's simulation, its report and the checks.
 pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
@@ -196,36 +196,13 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
             .map_err(Failure::output)?;
         }
         let dir = od.path().to_path_buf();
-        // the time series' force columns: the angle, the time, each contact's force and
-        // Hertz pressure, each driver's effort
-        let all = camkin::table::system_sample_columns(
+        let (columns, rows) = camkin::table::system_force_table(
             sys,
+            &run.samples,
             built.length_unit.name(),
             &built.dynamics.hertz,
+            step,
         );
-        let keep: Vec<usize> = all
-            .iter()
-            .enumerate()
-            .filter(|(k, c)| {
-                *k < 2
-                    || c.ends_with("_force_N")
-                    || c.ends_with("_hertz_MPa")
-                    || c.contains("_torque_N_")
-            })
-            .map(|(k, _)| k)
-            .collect();
-        let columns: Vec<String> = keep.iter().map(|&k| all[k].clone()).collect();
-        let grid = camkin::table::AngleGrid::new(0.0, step);
-        let rows: Vec<Vec<Cell>> = run
-            .samples
-            .iter()
-            .enumerate()
-            .map(|(i, s)| {
-                let cells =
-                    camkin::table::system_sample_cells(grid.at(i), s, &built.dynamics.hertz);
-                keep.iter().map(|&k| cells[k].clone()).collect()
-            })
-            .collect();
         write_atomic(Some(&dir.join("forces.csv")), |w| {
             write_cell_table(w, TableFormat::Csv, &columns, rows)
         })
@@ -238,31 +215,33 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
         crate::say!("camkin: wrote {}", dir.display());
     }
     // the checks
-    let mut failures = Vec::new();
-    for c in &report.contacts {
-        if let (Some(m), true) = (&c.min_closed_n, c.always_closed) {
-            if m.value < args.margin {
-                failures.push(format!(
-                    "contact {:?}'s force falls to {} N at {}°, under the margin {} N",
-                    c.name,
-                    force(m.value),
-                    deg(m.angle_deg),
-                    h(args.margin)
-                ));
-            }
-        }
-        if let (Some(p), Some(limit)) = (&c.max_hertz_mpa, args.allowable) {
-            if p.value > limit {
-                failures.push(format!(
-                    "contact {:?}'s Hertz pressure reaches {} MPa at {}°, over the allowable {} MPa",
-                    c.name,
-                    force(p.value),
-                    deg(p.angle_deg),
-                    h(limit)
-                ));
-            }
-        }
-    }
+    let mut failures: Vec<String> = report
+        .failures(args.margin, args.allowable)
+        .into_iter()
+        .map(|f| match f {
+            SystemForceFailure::Margin {
+                contact,
+                force: m,
+                margin,
+            } => format!(
+                "contact {contact:?}'s force falls to {} N at {}°, under the margin {} N",
+                force(m.value),
+                deg(m.angle_deg),
+                h(margin)
+            ),
+            SystemForceFailure::Allowable {
+                contact,
+                pressure: p,
+                allowable,
+            } => format!(
+                "contact {contact:?}'s Hertz pressure reaches {} MPa at {}°, over the allowable {} MPa",
+                force(p.value),
+                deg(p.angle_deg),
+                h(allowable)
+            ),
+            other => format!("{other:?}"),
+        })
+        .collect();
     if let Some(sweep) = sweep {
         let (from, target) = (sweep.from_rpm, sweep.to_rpm);
         let found = camkin::dynamics::no_follow_speed(sys, &built.dynamics, &sweep)

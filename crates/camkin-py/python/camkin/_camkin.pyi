@@ -57,6 +57,14 @@ class System:
         large: bool = False,
     ) -> Tuple[Result, Result]: ...
     def lubrication(self, *, step_deg: float = 1.0, large: bool = False) -> Result: ...
+    def forces(
+        self,
+        *,
+        step_deg: float = 1.0,
+        margin: float = 0.0,
+        allowable_mpa: Optional[float] = None,
+        large: bool = False,
+    ) -> Result: ...
 
 @final
 class Mechanism:

@@ -81,4 +81,24 @@ class ResourceError(CamkinError):
 
 class CamkinWarning(UserWarning):
     """A valid input that is probably not what was meant, or a result to read with care (a
-    contact that jumps)."""
+    contact that jumps). Its fields are an ``InputError``'s: ``.field`` names what it is about
+    (``"cam.profile.points"``, ``"angles_deg"``), ``.value`` the value (text, or None), ``.line``
+    and ``.column`` its place in a mechanism file's text (1-based, or None)."""
+
+    def __init__(
+        self,
+        message: str,
+        field: Optional[str] = None,
+        value: Optional[str] = None,
+        line: Optional[int] = None,
+        column: Optional[int] = None,
+    ) -> None:
+        super().__init__(message)
+        self.message = message
+        self.field = field
+        self.value = value
+        self.line = line
+        self.column = column
+
+    def __str__(self) -> str:
+        return self.message

@@ -40,7 +40,9 @@ pub use shop::{
     CutterCheck, OffsetPath, PolarTable, ShopError, ShopField, ShopReport, ShopRequest,
 };
 pub use spring::{SpringDesign, SpringSizing};
-pub use system_forces::{AtAngle, ContactForces, DriverEffort, Impact, SystemForces};
+pub use system_forces::{
+    AtAngle, ContactForces, DriverEffort, Impact, SystemForceFailure, SystemForces,
+};
 pub use system_lubrication::{
     ContactLubrication, ContactLubricationReport, SystemLubricationReport, SystemLubricationRequest,
 };

@@ -174,3 +174,58 @@ impl SystemForces {
         }
     }
 }
+
+/// A check of a system's forces that failed (`camkin forces SYSTEM.toml --margin`,
+/// `--allowable`; Python's `System.forces(margin=…, allowable_mpa=…)`).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub enum SystemForceFailure {
+    /// a contact closed all the revolution whose force falls under the margin, N
+    Margin {
+        /// the contact
+        contact: String,
+        /// its smallest force and where
+        force: AtAngle,
+        /// the margin
+        margin: f64,
+    },
+    /// a contact whose Hertz pressure rises over the allowable, MPa
+    Allowable {
+        /// the contact
+        contact: String,
+        /// its largest pressure and where
+        pressure: AtAngle,
+        /// the allowable
+        allowable: f64,
+    },
+}
+
+impl SystemForces {
+    /// The checks that fail: every contact closed all the revolution keeps `margin` N, and
+    /// (given) every contact's Hertz pressure stays under `allowable_mpa`.
+    pub fn failures(&self, margin: f64, allowable_mpa: Option<f64>) -> Vec<SystemForceFailure> {
+        let mut out = Vec::new();
+        for c in &self.contacts {
+            if let (Some(m), true) = (&c.min_closed_n, c.always_closed) {
+                if m.value < margin {
+                    out.push(SystemForceFailure::Margin {
+                        contact: c.name.clone(),
+                        force: *m,
+                        margin,
+                    });
+                }
+            }
+            if let (Some(p), Some(limit)) = (&c.max_hertz_mpa, allowable_mpa) {
+                if p.value > limit {
+                    out.push(SystemForceFailure::Allowable {
+                        contact: c.name.clone(),
+                        pressure: *p,
+                        allowable: limit,
+                    });
+                }
+            }
+        }
+        out
+    }
+}

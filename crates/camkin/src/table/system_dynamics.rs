@@ -113,3 +113,39 @@ pub fn system_event_cells(sys: &System, e: &ContactEvent, angle_deg: f64) -> Vec
         Cell::Num(Some(e.approach)),
     ]
 }
+
+/// The forces of a simulated system's samples (`camkin forces SYSTEM.toml`'s `forces.csv`): of
+/// [`system_sample_columns`], the driver's angle, the time, every contact's force and Hertz
+/// pressure and every driver's torque; the samples `step_deg` apart from 0 (the decimals of the
+/// step, [`super::AngleGrid`]).
+pub fn system_force_table(
+    sys: &System,
+    samples: &[SystemSample],
+    unit: &str,
+    hertz: &[Option<crate::dynamics::ContactHertz>],
+    step_deg: f64,
+) -> (Vec<String>, Vec<Vec<Cell>>) {
+    let all = system_sample_columns(sys, unit, hertz);
+    let keep: Vec<usize> = all
+        .iter()
+        .enumerate()
+        .filter(|(k, c)| {
+            *k < 2
+                || c.ends_with("_force_N")
+                || c.ends_with("_hertz_MPa")
+                || c.contains("_torque_N_")
+        })
+        .map(|(k, _)| k)
+        .collect();
+    let columns = keep.iter().map(|&k| all[k].clone()).collect();
+    let grid = super::AngleGrid::new(0.0, step_deg);
+    let rows = samples
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let cells = system_sample_cells(grid.at(i), s, hertz);
+            keep.iter().map(|&k| cells[k].clone()).collect()
+        })
+        .collect();
+    (columns, rows)
+}
