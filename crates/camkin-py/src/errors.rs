@@ -246,3 +246,39 @@ pub fn count_or_none(x: &Bound<'_, PyAny>) -> PyResult<Option<usize>> {
         count(x).map(Some)
     }
 }
+
+/// A sequence of real numbers given as an argument (a list, a tuple or a 1-D NumPy array, each
+/// item as [`real`] takes it), for `#[pyo3(from_py_with = …)]`; text, a dict or a scalar is an
+/// `InputError` naming the value.
+pub fn reals(x: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+    use pyo3::types::{PyDict, PyString};
+    let shown = x.repr().map_or_else(|_| "?".into(), |r| r.to_string());
+    if x.is_instance_of::<PyString>() || x.is_instance_of::<PyDict>() {
+        return Err(input_at(
+            "",
+            Some(shown.clone()),
+            format!("must be a sequence of real numbers, not {shown}"),
+            None,
+        ));
+    }
+    let Ok(items) = x.try_iter() else {
+        return Err(input_at(
+            "",
+            Some(shown.clone()),
+            format!("must be a sequence of real numbers, not {shown}"),
+            None,
+        ));
+    };
+    let mut out = Vec::new();
+    for item in items {
+        out.push(real(&item?).map_err(|_| {
+            input_at(
+                "",
+                Some(shown.clone()),
+                format!("must be a sequence of real numbers, not {shown}"),
+                None,
+            )
+        })?);
+    }
+    Ok(out)
+}

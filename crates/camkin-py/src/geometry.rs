@@ -198,6 +198,12 @@ impl PyCurve {
 
     /// eval(u) -> dict: position ``r`` and derivatives ``d1``, ``d2``, ``d3`` at parameter ``u``
     /// (body frame), the unit ``tangent``, left ``normal`` and signed ``curvature``.
+    ///
+    /// Example::
+    ///
+    ///     c = camkin.Circle((0.0, 0.0), 2.0)
+    ///     p = c.eval(0.5)                            # at u = 0.5 (here an angle, rad)
+    ///     p["r"], p["curvature"]                     # a point, and 1 / length
     fn eval<'py>(
         &self,
         py: Python<'py>,
@@ -219,6 +225,11 @@ impl PyCurve {
     }
 
     /// breakpoints() -> list of parameters where a derivative jumps (spline nodes).
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.Spline([[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]])
+    ///     s.breakpoints()                            # the nodes' parameters
     fn breakpoints(&self) -> Vec<f64> {
         self.curve.breakpoints()
     }
@@ -269,6 +280,11 @@ pub fn _curve_from_state(kind: &str, args: Vec<f64>, chord: bool) -> PyResult<Py
 /// Spline(points, parameterization="uniform") -> Curve: the closed C² cubic spline through the
 /// nodes (an (N, 2) array, N ≥ 3), node i at u = i, or at the cumulative chord length with
 /// ``parameterization="chord-length"``.
+///
+/// Example::
+///
+///     cam = camkin.Spline([[5.0, 0.0], [0.0, 4.0], [-5.0, 0.0], [0.0, -4.0]])
+///     cam.kind, cam.domain
 #[pyfunction]
 #[pyo3(name = "Spline", signature = (points, parameterization = "uniform"))]
 pub fn spline(points: Vec<Vec<f64>>, parameterization: &str) -> PyResult<PyCurve> {
@@ -303,37 +319,69 @@ pub fn spline(points: Vec<Vec<f64>>, parameterization: &str) -> PyResult<PyCurve
 }
 
 /// Circle(center, radius) -> Curve: counter-clockwise, u the polar angle (rad) about the centre.
+///
+/// Example::
+///
+///     roller = camkin.Circle((0.0, 0.0), 1.5)     # centre and radius, one length unit
+///     roller.eval(0.0)["r"]
 #[pyfunction]
 #[pyo3(name = "Circle")]
-pub fn circle(center: Vec<f64>, radius: f64) -> PyResult<PyCurve> {
+pub fn circle(
+    #[pyo3(from_py_with = crate::errors::reals)] center: Vec<f64>,
+    #[pyo3(from_py_with = crate::errors::real)] radius: f64,
+) -> PyResult<PyCurve> {
     let c = pair("center", &center)?;
     PyCurve::make("circle", &[c.x, c.y, radius], false)
 }
 
 /// Ellipse(center, semi_axes, rotation_deg=0.0) -> Curve: counter-clockwise, u the eccentric
 /// angle (rad); the first semi-axis turned by ``rotation_deg`` from x.
+///
+/// Example::
+///
+///     e = camkin.Ellipse((0.0, 0.0), (3.0, 2.0), rotation_deg=30.0)
+///     e.eval(0.0)["curvature"]                   # 1 / length
 #[pyfunction]
 #[pyo3(name = "Ellipse", signature = (center, semi_axes, rotation_deg = 0.0))]
-pub fn ellipse(center: Vec<f64>, semi_axes: Vec<f64>, rotation_deg: f64) -> PyResult<PyCurve> {
+pub fn ellipse(
+    #[pyo3(from_py_with = crate::errors::reals)] center: Vec<f64>,
+    #[pyo3(from_py_with = crate::errors::reals)] semi_axes: Vec<f64>,
+    #[pyo3(from_py_with = crate::errors::real)] rotation_deg: f64,
+) -> PyResult<PyCurve> {
     let c = pair("center", &center)?;
     let s = pair("semi_axes", &semi_axes)?;
     PyCurve::make("ellipse", &[c.x, c.y, s.x, s.y, rotation_deg], false)
 }
 
 /// Line(anchor, direction) -> Curve: the straight line r(u) = anchor + u·direction/|direction|
-/// (material on its left).
+/// (material on its left): `u` is the arc length from the anchor, in the length unit of the
+/// anchor (any one unit for all the curves of a contact).
+///
+/// Example::
+///
+///     face = camkin.Line((0.0, 0.0), (0.0, 1.0))  # through the origin, along +y
+///     face.domain
 #[pyfunction]
 #[pyo3(name = "Line")]
-pub fn line(anchor: Vec<f64>, direction: Vec<f64>) -> PyResult<PyCurve> {
+pub fn line(
+    #[pyo3(from_py_with = crate::errors::reals)] anchor: Vec<f64>,
+    #[pyo3(from_py_with = crate::errors::reals)] direction: Vec<f64>,
+) -> PyResult<PyCurve> {
     let a = pair("anchor", &anchor)?;
     let d = pair("direction", &direction)?;
     PyCurve::make("line", &[a.x, a.y, d.x, d.y], false)
 }
 
-/// Point(at) -> Curve: a single point (a knife edge).
+/// Point(at) -> Curve: a single point (a knife edge), in any one length unit for all the curves
+/// of a contact.
+///
+/// Example::
+///
+///     knife = camkin.Point((0.0, 0.0))
+///     knife.kind
 #[pyfunction]
 #[pyo3(name = "Point")]
-pub fn point(at: Vec<f64>) -> PyResult<PyCurve> {
+pub fn point(#[pyo3(from_py_with = crate::errors::reals)] at: Vec<f64>) -> PyResult<PyCurve> {
     let p = pair("at", &at)?;
     PyCurve::make("point", &[p.x, p.y], false)
 }
@@ -353,11 +401,11 @@ impl PyBody {
     #[new]
     #[pyo3(signature = (position = vec![0.0, 0.0], angle = 0.0, velocity = vec![0.0, 0.0], angular_velocity = 0.0, acceleration = vec![0.0, 0.0], angular_acceleration = 0.0))]
     fn new(
-        position: Vec<f64>,
+        #[pyo3(from_py_with = crate::errors::reals)] position: Vec<f64>,
         #[pyo3(from_py_with = crate::errors::real)] angle: f64,
-        velocity: Vec<f64>,
+        #[pyo3(from_py_with = crate::errors::reals)] velocity: Vec<f64>,
         #[pyo3(from_py_with = crate::errors::real)] angular_velocity: f64,
-        acceleration: Vec<f64>,
+        #[pyo3(from_py_with = crate::errors::reals)] acceleration: Vec<f64>,
         #[pyo3(from_py_with = crate::errors::real)] angular_acceleration: f64,
     ) -> PyResult<Self> {
         let p = pair("position", &position)?;
@@ -413,6 +461,11 @@ impl PyBody {
     }
 
     /// to_world(r) -> (x, y): a point fixed in the body, in the world.
+    ///
+    /// Example::
+    ///
+    ///     b = camkin.Body(position=(1.0, 0.0), angle=math.pi / 2)   # angle in rad
+    ///     b.to_world((1.0, 0.0))                     # (1.0, 1.0), in the body's length unit
     fn to_world(&self, r: Vec<f64>) -> PyResult<(f64, f64)> {
         let x = self.state.pose.to_world(pair("r", &r)?);
         Ok((x.x, x.y))

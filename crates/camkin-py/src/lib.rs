@@ -3,6 +3,7 @@
 //! the error classes and the `Contact` result.
 
 mod columns;
+mod contacts;
 mod dict;
 mod errors;
 mod forces;

@@ -257,6 +257,11 @@ impl PyMechanism {
     /// column in the text (``.line``, ``.column``), as the command does. A profile whose search
     /// index would take over 1 GB or 30 s to build raises ``camkin.ResourceError`` with the
     /// estimate, unless ``large=True``.
+    ///
+    /// Example::
+    ///
+    ///     mech = camkin.Mechanism.from_toml("examples/paper.toml")
+    ///     mech.length_unit, mech.speed_rpm          # "cm", 1000.0 rpm
     #[staticmethod]
     #[pyo3(signature = (source, *, large = false))]
     fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>, large: bool) -> PyResult<Self> {
@@ -272,6 +277,12 @@ impl PyMechanism {
     /// A mechanism from a dict with the mechanism file's schema (``length_unit``, ``cam``,
     /// ``follower``, optional ``dynamics``). ``base_dir`` resolves a relative points-file path;
     /// ``large`` as in ``from_toml``.
+    ///
+    /// Example::
+    ///
+    ///     d = camkin.paper_cam().to_dict()
+    ///     d["cam"]["speed_rpm"] = 1500.0            # rpm
+    ///     faster = camkin.Mechanism.from_dict(d)
     #[staticmethod]
     #[pyo3(signature = (d, base_dir = None, *, large = false))]
     fn from_dict(
@@ -300,6 +311,11 @@ impl PyMechanism {
     }
 
     /// to_dict() -> dict: the mechanism's spec, as ``from_dict`` takes it.
+    ///
+    /// Example::
+    ///
+    ///     d = camkin.paper_cam().to_dict()
+    ///     d["cam"]["profile"]["points"][:2]         # in the file's length unit (cm)
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let text = serde_json::to_string(&self.spec)
             .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
@@ -307,6 +323,11 @@ impl PyMechanism {
     }
 
     /// to_toml() -> str: the mechanism file's text.
+    ///
+    /// Example::
+    ///
+    ///     text = camkin.paper_cam().to_toml()
+    ///     again = camkin.Mechanism.from_toml(text)
     fn to_toml(&self) -> PyResult<String> {
         toml::to_string(&self.spec)
             .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
@@ -401,6 +422,12 @@ impl PyMechanism {
     /// ``camkin.ContactError`` instead. ``per="deg"`` gives derivatives per degree of cam angle;
     /// ``angle_unit`` is an arm's. ``contiguous`` (default: the angles increase) says the angles
     /// trace the motion, so that a contact jump between rows is marked ``jump`` in ``found``.
+    ///
+    /// Example::
+    ///
+    ///     r = camkin.paper_cam().analyze(np.arange(0.0, 360.0, 0.5))
+    ///     r["acceleration_cm_s2"].max()             # cm/s²
+    ///     r.to_pandas().head()
     #[pyo3(signature = (angles_deg, *, per = "s", angle_unit = "deg", contiguous = None, strict = false, large = false))]
     #[allow(clippy::too_many_arguments)]
     fn analyze<'py>(
@@ -468,126 +495,14 @@ impl PyMechanism {
         cols.into_dict(py, scalar)
     }
 
-    /// contacts(angles_deg, *, contiguous=None, strict=False, large=False) -> dict
-    ///
-    /// Every contact between cam and follower at each cam angle (degrees; a number or a 1-D
-    /// array): the follower's first touch (``contact`` 0) and each other place its curve touches
-    /// the cam at that position (a second tooth pair, a gear's back flank without backlash, a
-    /// roller bridging a notch). One row per contact, as a dict of NumPy arrays keyed by the
-    /// columns of ``camkin contacts`` (``angle_deg`` repeats for each contact at an angle): the
-    /// point, normal, gap, normal velocity, sliding rates, normal accelerations and the
-    /// acceleration constraint row ``row_cam·θ̈ + row_follower·q̈ = gamma`` with its
-    /// ``residual`` at the follower's motion. An angle that could not be analysed has one row
-    /// with NaN and its reason in ``error``; ``strict=True`` raises ``camkin.ContactError``.
-    #[pyo3(signature = (angles_deg, *, contiguous = None, strict = false, large = false))]
-    fn contacts<'py>(
-        &self,
-        py: Python<'py>,
-        angles_deg: &Bound<'py, PyAny>,
-        contiguous: Option<bool>,
-        strict: bool,
-        large: bool,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let (angles, _) = angles_from(py, angles_deg, "angles_deg")?;
-        self.check_work(angles.len(), large)?;
-        errors::refuse_large(
-            &camkin::work::Work::contacts(self.mech(), angles.len()),
-            large,
-            ", or use fewer angles",
-        )?;
-        let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
-        let mech = self.mech();
-        let units = Units::plain(mech, self.built.length_unit);
-        let (cols, first_error) = py.detach(|| -> PyResult<_> {
-            let mut cols = Columns::new(camkin::table::contact_columns(&units), angles.len());
-            let mut first_error = None;
-            for (k, (&a, state)) in angles
-                .iter()
-                .zip(mech.analyze_deg_each(&angles, contiguous))
-                .enumerate()
-            {
-                if k % 4096 == 0 {
-                    errors::interrupted()?;
-                }
-                let found = state.and_then(|s| mech.contacts_at(&s));
-                for r in camkin::table::ContactRow::of(a, &found) {
-                    if first_error.is_none() {
-                        if let Some(e) = &r.error {
-                            first_error = Some((a, e.clone()));
-                        }
-                    }
-                    cols.push(camkin::table::contact_cells(&r, &units));
-                }
-            }
-            Ok((cols, first_error))
-        })?;
-        if strict {
-            raise_first(first_error, "cam")?;
-        }
-        cols.into_dict(py, false)
-    }
-
-    /// mesh(angles_deg, *, contiguous=None, strict=False, large=False) -> dict
-    ///
-    /// A gear pair (the cam's profile and the rotating follower's both ``involute-gear``) read as
-    /// gears at each driver angle (degrees; a number or a 1-D array): the columns of ``camkin
-    /// mesh`` as NumPy arrays (``driven_angle_deg``, ``speed_ratio``,
-    /// ``transmission_error_urad`` and its rates, ``driver_tooth``, ``pairs_in_contact``,
-    /// ``line_of_action_mm``, ``sliding_velocity_mm_s``, ``specific_sliding_driver``, …; for a
-    /// number, a dict of numbers), ``found`` = ``"jump"`` where another tooth pair takes over.
-    /// Not a gear pair: ``camkin.InputError``. A row that could not be computed has NaN and its
-    /// reason in ``error``; ``strict=True`` raises ``camkin.ContactError``.
-    #[pyo3(signature = (angles_deg, *, contiguous = None, strict = false, large = false))]
-    fn mesh<'py>(
-        &self,
-        py: Python<'py>,
-        angles_deg: &Bound<'py, PyAny>,
-        contiguous: Option<bool>,
-        strict: bool,
-        large: bool,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let mech = self.mech();
-        let pair = camkin::gears::GearPair::new(mech).map_err(|e| {
-            use camkin::gears::GearError;
-            let field = match e {
-                GearError::DriverNotGear => "cam.profile.kind",
-                GearError::TooClose { .. }
-                | GearError::Interference { .. }
-                | GearError::NoMesh { .. } => "follower.pivot",
-                GearError::BasePitch { .. } => "follower.profile.module",
-                _ => "follower.profile.kind",
-            };
-            errors::input(field, None, format!("not a gear pair: {e}"))
-        })?;
-        let (angles, scalar) = angles_from(py, angles_deg, "angles_deg")?;
-        self.check_work(angles.len(), large)?;
-        let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
-        let units = Units::plain(mech, self.built.length_unit);
-        let (cols, first_error) = py.detach(|| {
-            let results = mech.analyze_deg_each(&angles, contiguous);
-            let jumps = camkin::table::contact_jumps(mech, &results, contiguous);
-            let mut cols = Columns::new(camkin::table::mesh_columns(&units), angles.len());
-            let mut first_error = None;
-            for ((&a, r), &j) in angles.iter().zip(&results).zip(&jumps) {
-                let row = camkin::table::MeshRow::new(&pair, mech, a, r, j);
-                if first_error.is_none() {
-                    if let Some(e) = &row.error {
-                        first_error = Some((a, e.clone()));
-                    }
-                }
-                cols.push(camkin::table::mesh_cells(&row));
-            }
-            (cols, first_error)
-        });
-        if strict {
-            raise_first(first_error, "driver")?;
-        }
-        cols.into_dict(py, scalar)
-    }
-
     /// travel() -> dict: the follower's rest (nearest the cam) and farthest positions over a
     /// revolution, their cam angles (degrees) and the stroke; positions in the file's length
     /// unit, an arm's in degrees. Keys carry the units.
+    ///
+    /// Example::
+    ///
+    ///     t = camkin.paper_cam().travel()
+    ///     t                                          # lowest, highest, lift: cm
     fn travel<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let t = self
             .mech()
@@ -614,6 +529,12 @@ impl PyMechanism {
     /// file's unit (an arm's motion in rad), angles in degrees. ``verdicts`` lists each check's
     /// ``check``, ``passed``, ``lines`` (the words of ``camkin synth``'s ``checks.txt``, which
     /// ``text`` holds whole), ``angles_deg`` and ``stretches``.
+    ///
+    /// Example::
+    ///
+    ///     c = camkin.Mechanism.from_toml("examples/motion-roller.toml").checks()
+    ///     print(c["text"])
+    ///     c["passed"], c["failures"]
     #[pyo3(signature = (*, step_deg = 0.5, pressure_limit_deg = 30.0))]
     fn checks<'py>(
         &self,
@@ -662,6 +583,11 @@ impl PyMechanism {
 
     /// profile(n=720) -> numpy.ndarray, shape (n, 2): points of the cam profile in the cam's
     /// frame (file's length unit), evenly spaced in the profile parameter.
+    ///
+    /// Example::
+    ///
+    ///     xy = camkin.paper_cam().profile(360)      # (360, 2): x, y in cm
+    ///     xy.min(axis=0), xy.max(axis=0)
     #[pyo3(signature = (n = 720))]
     fn profile<'py>(
         &self,
@@ -694,6 +620,12 @@ impl PyMechanism {
     /// with_nodes(points) -> Mechanism: the same mechanism with the spline profile's nodes
     /// replaced (an (N, 2) array in the file's length unit); validated as a file would be
     /// (``large`` as in ``from_toml``).
+    ///
+    /// Example::
+    ///
+    ///     mech = camkin.paper_cam()
+    ///     nodes = np.array(mech.to_dict()["cam"]["profile"]["points"])
+    ///     bigger = mech.with_nodes(1.1 * nodes)      # cm
     #[pyo3(signature = (points, *, large = false))]
     fn with_nodes(&self, points: numpy::PyReadonlyArray2<'_, f64>, large: bool) -> PyResult<Self> {
         let spec = crate::study::spec_with_nodes(&self.spec, points.as_array())?;
@@ -772,6 +704,11 @@ pub fn _mechanism_from_text(
 
 /// paper_cam() -> Mechanism: the paper's cam (section 3; ``examples/paper.toml``): a 9-node
 /// closed spline cam at 1000 rpm under a translating flat-faced follower, lengths in cm.
+///
+/// Example::
+///
+///     mech = camkin.paper_cam()
+///     mech.analyze(90.0)["lift_cm"]
 #[pyfunction]
 pub fn paper_cam() -> PyResult<PyMechanism> {
     let spec = parse_toml(PAPER_TOML, "paper.toml")?;
@@ -780,7 +717,7 @@ pub fn paper_cam() -> PyResult<PyMechanism> {
 
 /// `camkin.ContactError` for the first row that could not be computed, `(angle, reason)`, if any
 /// (`what`: whose angle, "cam" or "driver").
-fn raise_first(first_error: Option<(f64, String)>, what: &str) -> PyResult<()> {
+pub fn raise_first(first_error: Option<(f64, String)>, what: &str) -> PyResult<()> {
     match first_error {
         Some((a, e)) => Err(errors::contact(format!(
             "at {what} angle {}°: {e}",

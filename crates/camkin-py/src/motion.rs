@@ -8,6 +8,10 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// motion_laws() -> list of str: the laws a motion program's segments may name.
+///
+/// Example::
+///
+///     camkin.motion_laws()
 #[pyfunction]
 pub fn motion_laws() -> Vec<&'static str> {
     Law::ALL.iter().map(|l| l.name()).collect()
@@ -17,6 +21,11 @@ pub fn motion_laws() -> Vec<&'static str> {
 /// the end values outside) and its derivatives: keys ``y``, ``dy``, ``d2y``, ``d3y`` (arrays, or
 /// numbers for a number ``x``). A segment of rise h over β rad of cam angle moves the follower by
 /// ``h y((θ − θ₀)/β)``, with velocity ``h y'/β · ω`` and acceleration ``h y''/β² · ω²``.
+///
+/// Example::
+///
+///     x = np.linspace(0.0, 1.0, 5)               # fraction of the segment
+///     camkin.motion_law("cycloidal", x)["y"]     # fraction of the rise
 #[pyfunction]
 pub fn motion_law<'py>(
     py: Python<'py>,

@@ -50,9 +50,9 @@ impl PyMechanism {
     ///
     /// Example::
     ///
-    ///     s = camkin.Mechanism.from_toml("examples/roller-cam.toml").shop(tool_radius=10.0)
-    ///     s["polar"]["radius_mm"].max(), s["cutter_check"]["undercut"]
-    ///     open("cam.dxf", "w").write(s["dxf"])
+    ///     s = camkin.Mechanism.from_toml("examples/motion-roller.toml").shop(tool_radius=10.0)
+    ///     s["polar"]["radius_mm"].max(), s["cutter_check"]["undercut"]   # mm, bool
+    ///     s["polar"].to_pandas().head()
     #[pyo3(signature = (*, step_deg = 1.0, tool_radius = None, tolerance = None, dxf_path = None))]
     fn shop<'py>(
         &self,
@@ -172,8 +172,9 @@ impl PyMechanism {
     ///
     /// Example::
     ///
-    ///     d = mech.deviation("measured.csv", tolerance=0.002)
-    ///     d["radius_largest"], d["acceleration_largest"]
+    ///     mech = camkin.Mechanism.from_toml("examples/eccentric-roller.toml")
+    ///     d = mech.deviation("examples/measured-eccentric.csv", tolerance=0.0006)   # cm
+    ///     d["radius_largest"], d["acceleration_largest"]                           # cm, cm/s²
     #[pyo3(signature = (measured, *, tolerance = None, step_deg = 1.0))]
     fn deviation<'py>(
         &self,

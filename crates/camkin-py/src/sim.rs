@@ -33,6 +33,12 @@ impl PyMechanism {
     /// sampled every ``step_deg`` of cam angle (``substeps`` integration steps each). Returns
     /// ``{"samples": dict of arrays, "events": list of dicts}`` with the columns of
     /// ``camkin simulate`` (lengths in the file's unit, force in N, time in s).
+    ///
+    /// Example::
+    ///
+    ///     mech = camkin.Mechanism.from_toml("examples/paper-dynamics.toml")
+    ///     r = mech.simulate(revolutions=1.0, step_deg=1.0)
+    ///     r["events"]
     #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, substeps = 1, start_angle_deg = 0.0, large = false))]
     fn simulate<'py>(
         &self,

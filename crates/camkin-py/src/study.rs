@@ -242,6 +242,12 @@ fn into_dict<'py>(
 /// count. Returns arrays of length D: peak acceleration (signed, the largest magnitude) and its
 /// angle, the smallest and largest position, the peak pressure angle, the smallest convex radius
 /// of curvature, the angles that failed, and ``error`` (why a design could not be built, or None).
+///
+/// Example::
+///
+///     base = camkin.paper_cam()
+///     nodes = np.array(base.to_dict()["cam"]["profile"]["points"])[None] * [[[1.0, 1.0]], [[1.01, 1.0]]]
+///     camkin.spline_variants(base, nodes)["peak_acceleration_cm_s2"]
 #[pyfunction]
 #[pyo3(signature = (base, nodes, *, angles_deg = None, threads = None, large = false))]
 pub fn spline_variants<'py>(
@@ -295,6 +301,11 @@ pub fn spline_variants<'py>(
 /// The same summaries as ``spline_variants`` for a list of mechanisms (base radius × roller
 /// radius × law studies built with ``Mechanism.from_dict``), in parallel with the GIL released.
 /// The mechanisms must share their length unit and follower motion (translating or arm).
+///
+/// Example::
+///
+///     mechs = [camkin.paper_cam(), camkin.Mechanism.from_toml("examples/paper-revised.toml")]
+///     camkin.summarize(mechs)["peak_acceleration_cm_s2"]
 #[pyfunction]
 #[pyo3(signature = (mechanisms, *, angles_deg = None, threads = None, large = false))]
 pub fn summarize<'py>(
@@ -367,6 +378,11 @@ impl PyMechanism {
     /// grid of ``step_deg``. Returns ``angle_deg``, the exact acceleration (key with its unit),
     /// and for each N the interpolated acceleration, the relative error |a_N − a| / max|a|, and
     /// its largest and mean values.
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.paper_cam().compare([100, 1000], step_deg=1.0)
+    ///     s["max_rel_error"]
     #[pyo3(signature = (nodes = vec![100, 1000, 10000], *, step_deg = 0.05, large = false))]
     fn compare<'py>(
         &self,

@@ -28,6 +28,11 @@ impl PySystem {
     /// ``follower``, one contact), analysed at cam angles: ``camkin analyze --system``. Bad
     /// input raises ``camkin.InputError`` naming the element, its key and the value, with the
     /// line and column (``.line``, ``.column``), as the command does.
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.System.from_toml("examples/valve-train.toml")
+    ///     s.bodies, s.contacts
     #[staticmethod]
     #[pyo3(signature = (source, *, large = false))]
     fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>, large: bool) -> PyResult<Self> {
@@ -85,6 +90,12 @@ impl PySystem {
     /// rates and accelerations, each contact's point, gap, sliding rates, ``gamma`` and ``jump``,
     /// and ``error``. An instant that cannot be solved has NaN and its reason in ``error``;
     /// ``strict=True`` raises ``camkin.ContactError`` instead.
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.System.from_toml("examples/cam-four-bar.toml")
+    ///     r = s.analyze(np.arange(0.0, 360.0, 1.0))  # the first driver's angle, degrees
+    ///     r.to_pandas().iloc[:, :6]
     #[pyo3(signature = (angles_deg, *, strict = false, large = false))]
     fn analyze<'py>(
         &self,
@@ -156,6 +167,12 @@ impl PySystem {
     /// drivers' work; each lift-off and impact with its contact, instant and approach speed.
     /// ``substeps`` (integration steps per output step) is by default the fewest the stiffest
     /// spring or damper allows; fewer raises ``camkin.InputError`` naming it.
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.System.from_toml("examples/valve-train.toml")
+    ///     samples, events = s.simulate(revolutions=1.0, step_deg=1.0)
+    ///     samples.to_pandas().iloc[:, :4]
     #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, substeps = None, large = false))]
     fn simulate<'py>(
         &self,

@@ -311,3 +311,20 @@ def test_warnings_carry_the_field_and_the_place(tmp_path):
     with pytest.warns(camkin.CamkinWarning) as rec:
         camkin.Mechanism.from_toml(EXAMPLES / "gear-pair-20-42.toml").analyze(np.arange(0.0, 60.0, 0.5))
     assert rec[0].message.field == "angles_deg"
+
+
+@pytest.mark.parametrize(
+    "call,field",
+    [
+        (lambda v: camkin.Circle(v, 1.0), "center"),
+        (lambda v: camkin.Line((0.0, 0.0), v), "direction"),
+        (lambda v: camkin.Point(v), "at"),
+        (lambda v: camkin.Body(position=v), "position"),
+    ],
+    ids=["Circle.center", "Line.direction", "Point.at", "Body.position"],
+)
+@pytest.mark.parametrize("bad", ["1,2", (1.0, "2"), (1.0, None), (1j, 0.0)], ids=["text", "text-item", "None-item", "complex-item"])
+def test_a_point_argument_refuses_what_is_not_real_numbers(call, field, bad):
+    with pytest.raises(camkin.InputError) as e:
+        call(bad)
+    assert e.value.field == field and str(e.value).startswith(field), (e.value.field, str(e.value))

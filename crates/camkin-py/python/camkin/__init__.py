@@ -150,6 +150,13 @@ def contact(
     ``length_scale`` (default: the curves' size) sets the tolerances (1e-13 of it for positions,
     1e-9 for touching). Raises ``ContactError`` when the search stops without a pairing (two
     unbounded curves, no convergence) or the contact is conformal (the point is not determined).
+    Lengths in the curves' one unit, angles in rad, time in s.
+
+    Example::
+
+        cam = camkin.Body(angular_velocity=10.0)                  # rad/s
+        c = camkin.contact(camkin.Circle((0, 0), 2.0), cam, camkin.Circle((0, 0), 1.0), camkin.Body(position=(3.0, 0.0)))
+        c.touching, c.phi_q, c.gamma                              # the row phi_q · q̈ = gamma
     """
     d = _contact(curve_a, body_a, curve_b, body_b, at=at, guess=guess, length_scale=length_scale)
     return Contact(**d)
@@ -171,6 +178,14 @@ def synthesize(
     ``motion_laws()``; a ``"dwell"`` has no rise) covering 360° in all; ``base_radius`` and the
     rises are in ``length_unit`` (an arm's rises in degrees); ``follower`` is the ``[follower]``
     table as a dict. Check the result with ``mech.checks()`` (round trip, undercut, pressure angle).
+    ``speed_rpm`` in rpm, ``degrees`` of the cam's turn.
+
+    Example::
+
+        program = [{"law": "cycloidal", "rise": 10.0, "degrees": 150}, {"law": "dwell", "degrees": 30},
+                   {"law": "cycloidal", "rise": -10.0, "degrees": 150}, {"law": "dwell", "degrees": 30}]
+        mech = camkin.synthesize(segments=program, base_radius=30.0, speed_rpm=500.0, length_unit="mm",
+                                 follower={"kind": "translating-roller", "direction": [0.0, 1.0], "roller_radius": 8.0})
     """
     spec = {
         "length_unit": length_unit,

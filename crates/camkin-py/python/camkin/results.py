@@ -31,7 +31,14 @@ class Result(dict):  # type: ignore[type-arg]
                 self[k] = Result(v)
 
     def to_pandas(self) -> Any:
-        """The table of this result as a ``pandas.DataFrame`` (needs pandas installed)."""
+        """The table of this result as a ``pandas.DataFrame`` (needs pandas installed); its
+        columns keep their units in their names.
+
+        Example::
+
+            df = camkin.paper_cam().analyze(np.arange(0.0, 360.0, 1.0)).to_pandas()
+            df[["angle_deg", "lift_cm", "acceleration_cm_s2"]].describe()
+        """
         try:
             import pandas as pd
         except ImportError as e:  # pragma: no cover - depends on the environment

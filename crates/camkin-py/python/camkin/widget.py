@@ -158,7 +158,8 @@ class Studio(anywidget.AnyWidget):
 
     @classmethod
     def from_toml(cls, source: Union[str, "os.PathLike[str]"], *, height: int = 1150) -> "Studio":
-        """A mechanism file (a path, or its text) in the studio: a cam, a gear pair or a system.
+        """A mechanism file (a path, or its text) in the studio: a cam, a gear pair or a system,
+        in the file's own units; ``height`` in CSS pixels.
 
         Example::
 
