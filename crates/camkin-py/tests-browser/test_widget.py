@@ -54,10 +54,13 @@ def series(frame, key):
     return frame.evaluate(f"window.studio.result.series.find(s => s.key === '{key}').values")
 
 
-def test_a_node_dragged_in_the_notebook_widget_moves_the_kernels_mechanism(jupyterlab, page):
-    url, work = jupyterlab
-    (work / "cam.ipynb").write_text(json.dumps(NOTEBOOK))
-    page.goto(f"{url}/lab/tree/cam.ipynb")
+def open_notebook(page, url, work, source, name="cam.ipynb"):
+    """A notebook of one cell, `source`, opened in JupyterLab and run; returns the studio's
+    frame element and frame once its first answers are in."""
+    nb = json.loads(json.dumps(NOTEBOOK))
+    nb["cells"][0]["source"] = source
+    (work / name).write_text(json.dumps(nb))
+    page.goto(f"{url}/lab/tree/{name}")
     page.wait_for_function(
         "window.jupyterapp && window.jupyterapp.shell.currentWidget"
         " && window.jupyterapp.shell.currentWidget.sessionContext"
@@ -67,7 +70,23 @@ def test_a_node_dragged_in_the_notebook_widget_moves_the_kernels_mechanism(jupyt
         timeout=120_000,
     )
     page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
-    handle, frame = studio_frame(page)
+    return studio_frame(page)
+
+
+def inked(frame, selector):
+    """How many pixels of a canvas in the frame are not white."""
+    return frame.evaluate(
+        """(sel) => { const c = document.querySelector(sel);
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 240 || d[i+1] < 240 || d[i+2] < 240) n++;
+            return n; }""",
+        selector,
+    )
+
+
+def test_a_node_dragged_in_the_notebook_widget_moves_the_kernels_mechanism(jupyterlab, page):
+    url, work = jupyterlab
+    handle, frame = open_notebook(page, url, work, NOTEBOOK["cells"][0]["source"])
     # the page drew the paper's cam from the kernel's answers
     before = series(frame, "acceleration")
     assert len(before) == 720
@@ -102,4 +121,25 @@ def test_a_node_dragged_in_the_notebook_widget_moves_the_kernels_mechanism(jupyt
     top = max(map(abs, exact))
     assert all(abs(a - b) <= 1e-7 * top for a, b in zip(after, exact))
     page.screenshot(path=str(ROOT / "target" / "widget-jupyterlab.png"))
+    assert page.errors == []
+
+
+def test_a_gear_pairs_mesh_and_loads_in_the_notebook_widget(jupyterlab, page):
+    """The same widget on a gear pair file: the mesh drawn, its plots, and its [gear_loads]
+    panel, computed in the kernel."""
+    url, work = jupyterlab
+    source = (
+        "from camkin.widget import Studio\n"
+        f"w = Studio.from_toml({str(ROOT / 'examples' / 'fzg-c.toml')!r})\n"
+        "w"
+    )
+    handle, frame = open_notebook(page, url, work, source, name="gears.ipynb")
+    assert frame.evaluate("document.getElementById('gear-panel').hidden") is False
+    for sel in ["#drawing", "#gear-hertz", "#gear-sliding", "#gear-lambda"]:
+        assert inked(frame, sel) > 2000, sel
+    # the kernel's answer is the command's: the pitch-point Hertz pressure of load stage 9
+    summary = frame.evaluate("document.getElementById('gear-summary').textContent")
+    assert "MPa" in summary or "N/mm" in summary, summary
+    handle.scroll_into_view_if_needed()
+    page.screenshot(path=str(ROOT / "target" / "widget-jupyterlab-gears.png"))
     assert page.errors == []
