@@ -10,7 +10,7 @@ use pyo3::types::PyDict;
 
 #[pymethods]
 impl PySystem {
-    /// forces(*, step_deg=1.0, margin=0.0, allowable_mpa=None, large=False) -> dict
+    /// forces(*, step_deg=1.0, margin=0.0, allowable_mpa=None, target_rpm=None, large=False) -> dict
     ///
     /// The forces of the system over a revolution of its first driver, simulated as
     /// ``camkin forces SYSTEM.toml --step STEP`` simulates it (the file's ``[dynamics]``, the
@@ -23,8 +23,11 @@ impl PySystem {
     ///   stays closed and its largest Hertz pressure (MPa), each driver's largest, smallest,
     ///   mean and RMS effort (N·m or N), each impact (its angle in degrees, approach speed m/s);
     /// - ``failures``: the checks that fail — a contact closed all the revolution whose force
-    ///   falls under ``margin`` N, a contact whose Hertz pressure exceeds ``allowable_mpa`` MPa
-    ///   (the command's ``--margin``, ``--allowable``; exit code 3 there).
+    ///   falls under ``margin`` N, a contact whose Hertz pressure exceeds ``allowable_mpa`` MPa,
+    ///   and with ``target_rpm`` a contact closed at the sweep's slowest speed that opens below
+    ///   the target (the no-follow speed, swept from a quarter of the lower of the target and the
+    ///   file's speed in eight steps, bisected to 1 rpm) — the command's ``--margin``,
+    ///   ``--allowable``, ``--target-rpm`` (exit code 3 there).
     ///
     /// The lubrication of its contacts is ``lubrication()``.
     ///
@@ -33,13 +36,14 @@ impl PySystem {
     ///     s = camkin.System.from_toml("examples/valve-train.toml")
     ///     f = s.forces(margin=50.0)
     ///     f["report"]["drivers"][0]["max"], f["failures"]
-    #[pyo3(signature = (*, step_deg = 1.0, margin = 0.0, allowable_mpa = None, large = false))]
+    #[pyo3(signature = (*, step_deg = 1.0, margin = 0.0, allowable_mpa = None, target_rpm = None, large = false))]
     fn forces<'py>(
         &self,
         py: Python<'py>,
         #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
         #[pyo3(from_py_with = crate::errors::real)] margin: f64,
         #[pyo3(from_py_with = crate::errors::real_or_none)] allowable_mpa: Option<f64>,
+        #[pyo3(from_py_with = crate::errors::real_or_none)] target_rpm: Option<f64>,
         large: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let h = camkin::human::human;
@@ -57,6 +61,16 @@ impl PySystem {
                 format!("allowable_mpa = {}: must be a positive pressure, MPa", h(a)),
             ));
         }
+        if let Some(t) = target_rpm.filter(|t| !(t.is_finite() && *t > 0.0 && *t <= 1e6)) {
+            return Err(errors::input(
+                "target_rpm",
+                Some(h(t)),
+                format!(
+                    "target_rpm = {}: must be a positive speed up to 1e6, rpm",
+                    h(t)
+                ),
+            ));
+        }
         if !self.built.simulated {
             return Err(errors::input(
                 "dynamics",
@@ -65,9 +79,28 @@ impl PySystem {
                     .into(),
             ));
         }
+        let sys = &self.built.system;
+        let rpm = sys
+            .drivers()
+            .first()
+            .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
+        let sweep = target_rpm.map(|t| camkin::dynamics::SpeedSweep::to_target(t, rpm, step_deg));
+        if let Some(sw) = &sweep {
+            let sim = camkin::dynamics::SystemSimulation::new(sys, self.built.dynamics.clone())
+                .map_err(|e| errors::input("dynamics", None, e.to_string()))?;
+            let outputs = (360.0 / step_deg).round().max(1.0) as usize;
+            errors::refuse_large(
+                &camkin::work::Work::system_simulation(
+                    sys,
+                    sw.steps(outputs, |h| sim.substeps(h)),
+                    outputs + 1,
+                ),
+                large,
+                ", or use a coarser step_deg",
+            )?;
+        }
         let (run, t0, t1) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
         let angle_of = |t: f64| step_deg * (t - t0) / (t1 - t0);
-        let sys = &self.built.system;
         let report = camkin::report::SystemForces::new(
             sys,
             &run,
@@ -94,12 +127,17 @@ impl PySystem {
         let out = PyDict::new(py);
         out.set_item("columns", cols.into_dict(py, false)?)?;
         out.set_item("report", loads(serde_json::to_string(&report))?)?;
-        out.set_item(
-            "failures",
-            loads(serde_json::to_string(
-                &report.failures(margin, allowable_mpa),
-            ))?,
-        )?;
+        let mut failures = report.failures(margin, allowable_mpa);
+        if let Some(sw) = &sweep {
+            let dynamics = &self.built.dynamics;
+            let found = py
+                .detach(|| camkin::dynamics::no_follow_speed(sys, dynamics, sw))
+                .map_err(|e| errors::input("target_rpm", None, e.to_string()))?;
+            if let Some(nf) = found {
+                failures.push(camkin::report::SystemForceFailure::no_follow(sys, &nf, sw));
+            }
+        }
+        out.set_item("failures", loads(serde_json::to_string(&failures))?)?;
         crate::columns::result(out)
     }
 }

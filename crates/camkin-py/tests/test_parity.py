@@ -147,7 +147,7 @@ SYSTEM_FILES = sorted(p for p in EXAMPLE_FILES if "[[bod" in p.read_text())
 def test_system_forces_are_the_commands(path, tmp_path):
     out = tmp_path / "forces"
     r = subprocess.run(
-        [camkin_bin(), "forces", path, "--out", out, "--step", "2", "--margin", "5"],
+        [camkin_bin(), "forces", path, "--out", out, "--step", "2", "--margin", "5", "--target-rpm", "9000"],
         capture_output=True, text=True,
     )
     system = camkin.System.from_toml(path)
@@ -159,7 +159,7 @@ def test_system_forces_are_the_commands(path, tmp_path):
         assert e.value.field == "dynamics"
         return
     assert r.returncode in (0, 3), r.stderr
-    f = system.forces(step_deg=2.0, margin=5.0)
+    f = system.forces(step_deg=2.0, margin=5.0, target_rpm=9000.0)
     cols = csv_columns((out / "forces.csv").read_text())
     assert list(cols) == list(f["columns"])
     for k in cols:
@@ -169,6 +169,8 @@ def test_system_forces_are_the_commands(path, tmp_path):
     for failure in f["failures"]:
         (kind, body), = failure.items()
         assert f'contact "{body["contact"]}"' in r.stderr, (failure, r.stderr)
+        if kind == "NoFollow":  # the same sweep: the same speed, as the command rounds it
+            assert f"at {round(body['speed_rpm'], 1):g} rpm, below the target 9000 rpm" in r.stderr, r.stderr
 
 
 def test_system_forces_refuse_bad_checks():

@@ -72,26 +72,13 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
                 camkin::human::human(target)
             )));
         }
-        Some(target) => {
-            let from = 0.25 * target.min(rpm.abs().max(1.0));
-            Some(SpeedSweep {
-                from_rpm: from,
-                to_rpm: target,
-                step_rpm: (target - from) / 8.0,
-                tolerance_rpm: 1.0,
-                step_deg: step,
-                revolutions: 1.0,
-                after_impact_deg: 5.0,
-            })
-        }
+        Some(target) => Some(SpeedSweep::to_target(target, rpm, step)),
         None => None,
     };
     // the revolution, and the sweep's runs (each at most a revolution at the target's speed)
-    let sweep_steps = sweep.as_ref().map_or(0, |s| {
-        let runs = 8.0 + s.step_rpm.max(1.0).log2().ceil() + 1.0;
-        let h_target = step.to_radians() / (s.to_rpm * std::f64::consts::TAU / 60.0);
-        (runs as usize) * outputs * sim.substeps(h_target)
-    });
+    let sweep_steps = sweep
+        .as_ref()
+        .map_or(0, |s| s.steps(outputs, |h| sim.substeps(h)));
     crate::refuse_large(
         &camkin::work::Work::system_simulation(sys, outputs * substeps + sweep_steps, outputs + 1),
         args.work.large,
@@ -247,14 +234,24 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
         let found = camkin::dynamics::no_follow_speed(sys, &built.dynamics, &sweep)
             .map_err(|e| dyn_err(name, e))?;
         match found {
-            Some(nf) => failures.push(format!(
-                "contact {:?} opens at {}° at {} rpm, below the target {} rpm (the no-follow speed, swept from {} rpm)",
-                sys.contacts().get(nf.contact).map_or("?", |c| c.name.as_str()),
-                deg(nf.angle_deg),
-                h((nf.speed_rpm * 10.0).round() / 10.0),
-                h(target),
-                h((from * 10.0).round() / 10.0),
-            )),
+            Some(nf) => failures.push(
+                match SystemForceFailure::no_follow(sys, &nf, &sweep) {
+                    SystemForceFailure::NoFollow {
+                        contact,
+                        angle_deg,
+                        speed_rpm,
+                        target_rpm,
+                        from_rpm,
+                    } => format!(
+                        "contact {contact:?} opens at {}° at {} rpm, below the target {} rpm (the no-follow speed, swept from {} rpm)",
+                        deg(angle_deg),
+                        h((speed_rpm * 10.0).round() / 10.0),
+                        h(target_rpm),
+                        h((from_rpm * 10.0).round() / 10.0),
+                    ),
+                    other => format!("{other:?}"),
+                },
+            ),
             None => crate::out!(
                 "no contact that stays closed at {} rpm opens up to the target {} rpm\n",
                 h((from * 10.0).round() / 10.0),

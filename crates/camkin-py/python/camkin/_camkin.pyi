@@ -63,6 +63,7 @@ class System:
         step_deg: float = 1.0,
         margin: float = 0.0,
         allowable_mpa: Optional[float] = None,
+        target_rpm: Optional[float] = None,
         large: bool = False,
     ) -> Result: ...
 

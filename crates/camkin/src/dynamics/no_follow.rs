@@ -44,6 +44,33 @@ pub struct SpeedSweep {
     pub after_impact_deg: f64,
 }
 
+impl SpeedSweep {
+    /// The sweep that checks a system up to `target_rpm` (`camkin forces SYSTEM.toml
+    /// --target-rpm`, Python's `System.forces(target_rpm=…)`): from a quarter of the lower of
+    /// the target and the file's speed `rpm`, in eight steps to the target, then bisected to
+    /// 1 rpm; one revolution at each speed in `step_deg` output steps.
+    pub fn to_target(target_rpm: f64, rpm: f64, step_deg: f64) -> Self {
+        let from = 0.25 * target_rpm.min(rpm.abs().max(1.0));
+        Self {
+            from_rpm: from,
+            to_rpm: target_rpm,
+            step_rpm: (target_rpm - from) / 8.0,
+            tolerance_rpm: 1.0,
+            step_deg,
+            revolutions: 1.0,
+            after_impact_deg: 5.0,
+        }
+    }
+
+    /// The time steps of the sweep's runs, at most: each run a revolution at most at the
+    /// target's speed, `substeps_at(h)` the time steps an output step `h` s long takes.
+    pub fn steps(&self, outputs: usize, substeps_at: impl Fn(f64) -> usize) -> usize {
+        let runs = 8.0 + self.step_rpm.max(1.0).log2().ceil() + 1.0;
+        let h_target = self.step_deg.to_radians() / (self.to_rpm * std::f64::consts::TAU / 60.0);
+        (runs as usize) * outputs * substeps_at(h_target)
+    }
+}
+
 /// A run's first opening of a watched contact (`(contact, angle_deg)`), and the contacts closed
 /// at the start that stayed closed.
 type Opening = (Option<(usize, f64)>, Vec<bool>);

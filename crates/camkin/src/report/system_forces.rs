@@ -199,6 +199,40 @@ pub enum SystemForceFailure {
         /// the allowable
         allowable: f64,
     },
+    /// a contact closed all the revolution at the sweep's slowest speed opens below the target
+    /// speed (the no-follow speed, [`crate::dynamics::no_follow_speed`])
+    NoFollow {
+        /// the contact
+        contact: String,
+        /// where it opens, degrees of the first driver
+        angle_deg: f64,
+        /// the speed at which it opens, rpm
+        speed_rpm: f64,
+        /// the target, rpm
+        target_rpm: f64,
+        /// the sweep's slowest speed, rpm
+        from_rpm: f64,
+    },
+}
+
+impl SystemForceFailure {
+    /// The failure of a speed sweep that found `nf` below its target.
+    pub fn no_follow(
+        sys: &System,
+        nf: &crate::dynamics::NoFollow,
+        sweep: &crate::dynamics::SpeedSweep,
+    ) -> Self {
+        Self::NoFollow {
+            contact: sys
+                .contacts()
+                .get(nf.contact)
+                .map_or_else(|| "?".into(), |c| c.name.clone()),
+            angle_deg: nf.angle_deg,
+            speed_rpm: nf.speed_rpm,
+            target_rpm: sweep.to_rpm,
+            from_rpm: sweep.from_rpm,
+        }
+    }
 }
 
 impl SystemForces {
