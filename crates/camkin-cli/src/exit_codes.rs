@@ -1,5 +1,5 @@
 //! The command's exit codes, written once: every `--help` states them from here, and a test
-//! holds the README's sentence to them.
+//! holds the guide's sentence (docs/limits.md) to them.
 
 /// Success (`serve`: stopped).
 pub const SUCCESS: u8 = 0;

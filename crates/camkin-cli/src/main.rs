@@ -21,13 +21,13 @@ struct Cli {
 enum Command {
     /// Follower position, velocity, acceleration and contact data at cam angles, as CSV.
     #[command(
-        after_help = camkin_cli::exit_codes::help("Examples:\n  camkin analyze                              # the paper's cam, one revolution in 1° steps\n  camkin analyze examples/paper.toml --at 0,45\n  camkin analyze cam.toml --angles 0:90:0.5 -o out.csv\n\nColumns: see the README.", "analyze")
+        after_help = camkin_cli::exit_codes::help("Examples:\n  camkin analyze                              # the paper's cam, one revolution in 1° steps\n  camkin analyze examples/paper.toml --at 0,45\n  camkin analyze cam.toml --angles 0:90:0.5 -o out.csv\n\nColumns: see docs/commands.md.", "analyze")
     )]
     Analyze(analyze::Args),
     /// A gear pair read as gears: transmission error and its rates, tooth pairs in contact,
     /// line of action, sliding and specific sliding at driver angles, as CSV.
     #[command(
-        after_help = camkin_cli::exit_codes::help("Examples:\n  camkin mesh                                  # the built-in 20/42 pair, two mesh cycles\n  camkin mesh examples/gear-pair-tip-relief.toml --plot fig\n  camkin mesh pair.toml --angles 0:36:0.05 -o mesh.csv --format json\n\nThe contact ratio and the transmission error's range go to stderr. Columns: see the README.", "mesh")
+        after_help = camkin_cli::exit_codes::help("Examples:\n  camkin mesh                                  # the built-in 20/42 pair, two mesh cycles\n  camkin mesh examples/gear-pair-tip-relief.toml --plot fig\n  camkin mesh pair.toml --angles 0:36:0.05 -o mesh.csv --format json\n\nThe contact ratio and the transmission error's range go to stderr. Columns: see docs/gears.md.", "mesh")
     )]
     Mesh(mesh::MeshArgs),
     /// Every contact between cam and follower at cam angles, one row each, with its sliding

@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// A planar multibody system: bodies, joints, drivers and contacts, as a system file describes
-/// them (``[[body]]``, ``[[joint]]``, ``[[driver]]``, ``[[contact]]``; see the README). Every
+/// them (``[[body]]``, ``[[joint]]``, ``[[driver]]``, ``[[contact]]``; see docs/systems.md). Every
 /// contact is the paper's exact row. Build one with ``System.from_toml(path_or_text)``.
 #[pyclass(frozen, module = "camkin", name = "System")]
 #[derive(Debug, Clone)]
@@ -159,7 +159,7 @@ impl PySystem {
 
     /// simulate(*, revolutions=1.0, step_deg=1.0, substeps=None, large=False) -> (dict, dict)
     ///
-    /// The system's dynamics (a system file with ``[dynamics]``; see the README's "Dynamics of a
+    /// The system's dynamics (a system file with ``[dynamics]``; see docs/systems.md, "Dynamics of a
     /// system"): ``(samples, events)``, two dicts of NumPy arrays keyed by the columns of
     /// ``camkin simulate SYSTEM.toml`` (``time_series.csv`` and ``events.csv``): a sample at the
     /// start and every ``step_deg`` of the first driver, each body's pose, rates and

@@ -428,3 +428,26 @@ def test_a_gear_pairs_handover_is_not_called_impulsive():
     texts = [str(x.message) for x in w]
     assert any("next tooth pair" in t for t in texts), texts
     assert not any("impulsive" in t for t in texts), texts
+
+
+@pytest.mark.parametrize("direction", ["ccw", "cw"])
+@pytest.mark.parametrize("offset", [-10.0, 10.0])
+def test_the_offset_moves_the_pressure_angle_peak_as_the_docs_say(offset, direction):
+    """docs/mechanism-files.md: on a ccw cam with its follower along +y, a negative offset (the line
+    of travel right of the axis) moves the peak pressure angle to the return, a positive one to
+    the rise; a cw cam mirrors this."""
+    program = [
+        {"law": "cycloidal", "rise": 12.0, "degrees": 120},
+        {"law": "dwell", "degrees": 60},
+        {"law": "3-4-5", "rise": -12.0, "degrees": 120},
+        {"law": "dwell", "degrees": 60},
+    ]
+    m = camkin.synthesize(
+        segments=program, base_radius=40.0, speed_rpm=600.0, length_unit="mm", direction=direction,
+        follower={"kind": "translating-roller", "direction": [0.0, 1.0], "offset": offset, "roller_radius": 10.0},
+    )
+    r = m.analyze(np.arange(0.0, 360.0, 0.5))
+    a, pa = r["angle_deg"], np.abs(r["pressure_angle_deg"])
+    rise, ret = pa[a < 120].max(), pa[(a >= 180) & (a < 300)].max()
+    on_rise = (offset > 0) == (direction == "ccw")
+    assert (rise > ret + 5.0) if on_rise else (ret > rise + 5.0), (rise, ret)

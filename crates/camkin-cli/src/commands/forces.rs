@@ -116,7 +116,7 @@ impl FromStr for FilmArg {
 pub struct ForcesArgs {
     /// Mechanism file (TOML) with a `[dynamics]` section, or a system file (`[[body]]`, …) with
     /// one: its simulation's contact forces, Hertz pressures, drivers' torques and impacts over
-    /// a revolution of its first driver (see the README's "Dynamics of a system").
+    /// a revolution of its first driver (see docs/systems.md, "Dynamics of a system").
     pub mechanism: PathBuf,
     /// Cam-angle step, degrees.
     #[arg(long, value_name = "DEG", default_value = "0.5")]

@@ -18,7 +18,7 @@ use std::path::PathBuf;
 #[derive(Debug, clap::Args)]
 pub struct SimulateArgs {
     /// Mechanism file (TOML) with a `[dynamics]` section, or a system file (`[[body]]`, `[[joint]]`,
-    /// …) with one (see the README's "Dynamics of a system").
+    /// …) with one (see docs/systems.md, "Dynamics of a system").
     pub mechanism: PathBuf,
     /// Cam revolutions to simulate (a system: its first driver's).
     #[arg(long, value_name = "N", default_value_t = 1.0, value_parser = crate::args::real, allow_negative_numbers = true)]

@@ -43,7 +43,7 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
     let built = super::system::load(&args.mechanism, name, text)?;
     if !built.simulated {
         return Err(bad(format!(
-            "{name}: a system's forces come from its simulation: give it a [dynamics] table (see the README's \"Dynamics of a system\")"
+            "{name}: a system's forces come from its simulation: give it a [dynamics] table (see docs/systems.md, \"Dynamics of a system\")"
         )));
     }
     let sys = &built.system;

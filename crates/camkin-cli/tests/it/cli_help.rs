@@ -1,7 +1,7 @@
-//! Issue 49: the help, the exit codes and the README agree. Every subcommand's `--help` ends
+//! Issue 49: the help, the exit codes and the guide (docs/limits.md) agree. Every subcommand's `--help` ends
 //! with the exit codes it can return (the registry `camkin_cli::exit_codes`: 3 only for the
 //! commands with design checks), the command's own `--help` names those commands, and the
-//! README's sentence names the same ones; a command that exits 3 does so only if it is listed.
+//! guide's sentence (docs/limits.md) names the same ones; a command that exits 3 does so only if it is listed.
 
 use crate::common::*;
 use camkin_cli::exit_codes::{sentence, CHECKS};
@@ -47,10 +47,10 @@ fn every_help_states_its_exit_codes() {
 
 #[test]
 fn the_readme_names_the_commands_that_exit_3() {
-    let readme = std::fs::read_to_string(examples().join("../README.md")).unwrap();
+    let readme = std::fs::read_to_string(examples().join("../docs/limits.md")).unwrap();
     let at = readme
         .find("**3** a design check failed (")
-        .expect("the README's exit codes");
+        .expect("the guide's exit codes (docs/limits.md)");
     let list = readme[at..]
         .split('(')
         .nth(1)

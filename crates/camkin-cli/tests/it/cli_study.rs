@@ -239,7 +239,7 @@ fn bench_runs_and_reports_every_key() {
     }
     assert_eq!(j["follower"], "translating-flat");
     // the baseline's error falls with the number of nodes; the contact method agrees with the
-    // independent support-function check to the README's figures
+    // independent support-function check to the guide's figures (docs/checks.md)
     let e = |n: &str| j["baseline_max_rel_error"][n].as_f64().unwrap();
     assert!(e("100") > e("1000") && e("1000") > e("10000"), "{j}");
     let c = &j["independent_check"];

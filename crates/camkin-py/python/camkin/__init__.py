@@ -21,7 +21,7 @@ Every result is a ``camkin.Result``: a dict whose keys carry their units, its ta
 arrays, with ``to_pandas()``. The studio in a notebook: ``camkin.widget.Studio(mech)`` (needs
 ``pip install 'camkin[notebook]'``).
 
-Conventions (angles counter-clockwise, left normals, σ, the gap's sign): see the README and the
+Conventions (angles counter-clockwise, left normals, σ, the gap's sign): see docs/gears.md and the
 library's documentation.
 """
 

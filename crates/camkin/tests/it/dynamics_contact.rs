@@ -80,14 +80,14 @@ fn permanent_contact_reproduces_kinematics_for_every_follower() {
             worst_f / fmax
         );
         assert!(
-            // the README claims 3e-14 of the peak
+            // the guide claims 3e-14 of the peak
             worst_a <= 1e-13 * amax,
             "{}: {}",
             f.kind_name(),
             worst_a / amax
         );
         assert!(
-            // the README claims 2e-10 of the largest force
+            // the guide claims 2e-10 of the largest force
             worst_f <= 1e-9 * fmax,
             "{}: {}",
             f.kind_name(),
@@ -123,8 +123,8 @@ fn spring_torque(p: &FollowerDynamics, sign: f64, low: f64, phi: f64) -> f64 {
 }
 
 /// No damping, permanent contact, 100 revolutions: the driving torque's work equals the gain in
-/// kinetic plus spring energy (the README claims 2.6e-7 of the energy exchanged with 0.25° steps),
-/// and the constraints do not drift (the README claims 5e-14 of the cam's size).
+/// kinetic plus spring energy (the guide claims 2.6e-7 of the energy exchanged with 0.25° steps),
+/// and the constraints do not drift (the guide claims 5e-14 of the cam's size).
 #[test]
 fn energy_balance_and_no_drift_over_a_hundred_revolutions() {
     let m = mechanism(

@@ -295,7 +295,7 @@ proptest! {
     }
 
     /// On random convex cams, every follower (both closing senses) agrees with the support
-    /// function at a random angle: position, velocity and acceleration, to the README's figures.
+    /// function at a random angle: position, velocity and acceleration, to the guide's figures.
     #[test]
     fn every_follower_agrees_with_the_support_function_on_random_convex_cams(
         nodes in cam_nodes(),
@@ -319,7 +319,7 @@ proptest! {
         prop_assume!(piece(th - 4e-3) == Some(a.cam_param.floor()) && piece(th + 4e-3) == Some(a.cam_param.floor()));
         let c = m.independent_check(&[th]).unwrap();
         prop_assert_eq!(c.angles, 1, "no stencil on a convex cam: {:?}", c);
-        // the README's claim is relative to the peaks over a revolution (a random cam's sharply
+        // the guide's claim is relative to the peaks over a revolution (a random cam's sharply
         // curved stretch can carry an acceleration of w² rad, where the differences' rounding
         // limits the check to about 1e-7 of it): the peaks on a 1° grid and at this angle
         let (mut vmax, mut amax) = (a.velocity.abs(), a.acceleration.abs());

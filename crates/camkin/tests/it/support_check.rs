@@ -13,7 +13,7 @@ fn grid(step_deg: f64) -> Vec<f64> {
         .collect()
 }
 
-/// The claim in the README: the contact method and the support function agree to these
+/// The claim in the guide: the contact method and the support function agree to these
 /// fractions (of the profile's size for the position, of the peak for velocity and
 /// acceleration).
 const POSITION: f64 = 2e-14;

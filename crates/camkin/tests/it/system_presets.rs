@@ -169,7 +169,7 @@ fn both_senses_and_both_offsets_through_the_system_path() {
         // a driven gear's load turns it the driver's way (it resists the motion): it turns with
         // the driver's sense, as a [gear_pair] file's does. Flipped alone it would aid the
         // motion, and with backlash the system path, which has no load direction, may then
-        // take the back flanks where the followed pair leaves (the README's limits)
+        // take the back flanks where the followed pair leaves (the guide's limits (docs/limits.md))
         let gear = text.contains("involute-gear");
         let flipped: String = text
             .lines()
