@@ -1,7 +1,8 @@
 """The guide cannot rot: every fenced `sh` command of README.md and docs/*.md runs as it is written
 (the release `camkin` for `camkin …` and `cargo run --release -- …`), from a scratch folder where
 `examples/` is the repository's, one folder a page so a page's later commands see its earlier
-files; it must exit 0, or the code its comment names (`# exit 3`). Every fenced `python` block
+files; it must exit 0, or the code its comment names (`# exit 3`), and print what its comment
+quotes (`# prints "jump speed: 1511 rpm"`). Every fenced `python` block
 runs too, in order, in the same folder. Lines that set up a machine (`scripts/…`, `pip install`,
 `cargo install`, the fuzzers) are not run; a command the harness does not know fails the test."""
 
@@ -39,7 +40,7 @@ def blocks(text, info):
 
 
 def commands(page):
-    """The page's shell commands: (line, argv, expected exit code)."""
+    """The page's shell commands: (line, argv, expected exit code, quoted output)."""
     out = []
     for start, body in blocks(page.read_text(), "sh"):
         for n, line in enumerate(body.split("\n")):
@@ -47,13 +48,14 @@ def commands(page):
                 continue
             code, _, comment = line.partition(" #")
             expect = int(m.group(1)) if (m := re.search(r"\bexit (\d+)\b", comment)) else 0
+            quoted = re.findall(r'prints "([^"]+)"', comment)
             argv = shlex.split(code)
             if code.startswith(NOT_RUN):
                 continue
             if argv[:4] == ["cargo", "run", "--release", "--"]:
                 argv = ["camkin"] + argv[4:]
             assert argv[0] == "camkin", f"{page.name}:{start + n}: a command the guide's test does not know: {line}"
-            out.append((start + n, argv, expect))
+            out.append((start + n, argv, expect, quoted))
     return out
 
 
@@ -63,7 +65,7 @@ CASES = [(p, commands(p)) for p in PAGES]
 @pytest.mark.parametrize("page,cmds", [c for c in CASES if c[1]], ids=[p.name for p, c in CASES if c])
 def test_every_command_of_the_page_runs_as_written(page, cmds, tmp_path):
     os.symlink(ROOT / "examples", tmp_path / "examples")
-    for line, argv, expect in cmds:
+    for line, argv, expect, quoted in cmds:
         if argv[1] in SERVERS:
             # the file it would serve is read and valid
             files = [a for a in argv[2:] if a.endswith(".toml")]
@@ -72,6 +74,8 @@ def test_every_command_of_the_page_runs_as_written(page, cmds, tmp_path):
             continue
         r = subprocess.run([camkin_bin(), *argv[1:]], cwd=tmp_path, capture_output=True, text=True, timeout=300)
         assert r.returncode == expect, f"{page.name}:{line}: {' '.join(argv)} exited {r.returncode}, the guide says {expect}\n{r.stderr[-2000:]}"
+        for q in quoted:
+            assert q in r.stdout + r.stderr, f"{page.name}:{line}: {' '.join(argv)} does not print {q!r}"
 
 
 PY_CASES = [(p, blocks(p.read_text(), "python")) for p in PAGES]
