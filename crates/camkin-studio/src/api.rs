@@ -150,3 +150,78 @@ pub fn answer(what: &str, body: &[u8], source: &Source, limits: &Limits) -> (u16
         Err(e) => (e.status(), json(serde_json::to_string(&e.body()))),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn analysis(file: &str) -> model::Analysis {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples")
+            .join(file);
+        let text = std::fs::read_to_string(&path).unwrap();
+        let body = serde_json::json!({ "toml": text, "step_deg": 0.5 }).to_string();
+        let source = Source {
+            name: file.into(),
+            folder: path.parent().map(|p| p.to_path_buf()),
+        };
+        analyze(body.as_bytes(), &source, &Limits::default())
+            .unwrap()
+            .result
+    }
+
+    fn jumps(a: &model::Analysis) -> &model::Check {
+        a.checks
+            .iter()
+            .find(|c| c.kind == camkin::report::Check::Jumps)
+            .unwrap()
+    }
+
+    /// Issue 49: an ideal gear pair's handovers are not impulses: the check passes, the
+    /// acceleration on the page is zero (not its rounding noise), and so is the study's error
+    /// against the motion's scale.
+    #[test]
+    fn an_ideal_gear_pairs_handovers_pass_and_its_zero_acceleration_reads_zero() {
+        let a = analysis("gear-pair-20-42.toml");
+        let j = jumps(&a);
+        assert!(j.ok, "{}", j.message);
+        assert!(j.message.contains("handover"), "{}", j.message);
+        assert!(!j.angles_deg.is_empty());
+        let acc = a.series.iter().find(|s| s.key == "acceleration").unwrap();
+        assert!(
+            acc.values.iter().flatten().all(|&v| v == 0.0),
+            "{:?}",
+            &acc.values[..8]
+        );
+        let jerk = a.series.iter().find(|s| s.key == "jerk").unwrap();
+        assert!(jerk.values.iter().flatten().all(|&v| v == 0.0));
+        let c = compare(
+            serde_json::json!({ "toml": std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/gear-pair-20-42.toml")).unwrap(), "step_deg": 0.5, "nodes": [36] }).to_string().as_bytes(),
+            &Source { name: "g".into(), folder: None },
+            &Limits::default(),
+        )
+        .unwrap();
+        assert!(c.exact.iter().flatten().all(|&v| v == 0.0));
+        // against the motion's scale (ω times the peak velocity), not the noise (it was 1e17)
+        assert!(
+            c.runs[0].max_rel_error.is_finite() && c.runs[0].max_rel_error < 1e3,
+            "{}",
+            c.runs[0].max_rel_error
+        );
+    }
+
+    /// A cam whose contact moves without an impulse keeps its check; a cam's real acceleration is
+    /// not rounded away.
+    #[test]
+    fn a_cams_acceleration_keeps_its_digits() {
+        let a = analysis("paper.toml");
+        assert!(jumps(&a).ok);
+        let acc = a.series.iter().find(|s| s.key == "acceleration").unwrap();
+        let top = acc
+            .values
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        assert!((top - 26_961.97).abs() < 1.0, "{top}");
+    }
+}

@@ -89,7 +89,8 @@ pub fn for_page(a: &mut Analysis) {
         }
     }
     for s in &mut a.series {
-        series(&mut s.values);
+        // rounded against its motion's scale when it has one (its resolution is 1e-9 of it)
+        series_scaled(&mut s.values, s.resolution.map_or(0.0, |r| 1e9 * r));
     }
     if let Some(l) = a.dynamics.as_mut().and_then(|d| d.lubrication.as_mut()) {
         series(&mut l.lambda);
@@ -101,19 +102,31 @@ pub fn for_page(a: &mut Analysis) {
 /// The interpolation study for the page: its curves as the analysis' series (the exact one is
 /// then the analysis' acceleration, value for value).
 pub fn compare_for_page(c: &mut Compare) {
-    series(&mut c.exact);
+    series_scaled(&mut c.exact, c.scale);
     for r in &mut c.runs {
-        series(&mut r.acceleration);
+        series_scaled(&mut r.acceleration, c.scale);
     }
 }
 
 /// A series to a decimal step of at most 1e-7 of its largest magnitude.
 fn series(values: &mut [Option<f64>]) {
-    let top = values
+    series_scaled(values, 0.0)
+}
+
+/// A series to a decimal step of at most 1e-7 of its largest magnitude, or of `scale` when that
+/// magnitude is under 1e-6 of it (a rate that is zero but for rounding: an ideal gear pair's
+/// acceleration reads 0, not its noise).
+fn series_scaled(values: &mut [Option<f64>], scale: f64) {
+    let largest = values
         .iter()
         .flatten()
         .filter(|v| v.is_finite())
         .fold(0.0f64, |m, v| m.max(v.abs()));
+    let top = if largest < 1e-6 * scale {
+        scale
+    } else {
+        largest
+    };
     if let Some(k) = digits(top, 1e-7) {
         for v in values.iter_mut().flatten() {
             *v = to_step(*v, k);

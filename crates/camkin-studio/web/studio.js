@@ -207,10 +207,12 @@
     const r = S.result, f = r.frames[S.index];
     const [x0, y0, x1, y1] = r.extent;
     const pad = 0.06 * Math.max(x1 - x0, y1 - y0);
-    const k = Math.min(w / (x1 - x0 + 2 * pad), h / (y1 - y0 + 2 * pad));
+    // the legend's band at the top is kept clear of the drawing
+    const band = legendItems(r).length * 15 + 14, hh = h - band;
+    const k = Math.min(w / (x1 - x0 + 2 * pad), hh / (y1 - y0 + 2 * pad));
     const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-    const view = { k, tx: (p) => [w / 2 + (p[0] - cx) * k, h / 2 - (p[1] - cy) * k] };
-    view.back = (sx, sy) => [cx + (sx - w / 2) / k, cy - (sy - h / 2) / k];
+    const view = { k, tx: (p) => [w / 2 + (p[0] - cx) * k, band + hh / 2 - (p[1] - cy) * k] };
+    view.back = (sx, sy) => [cx + (sx - w / 2) / k, cy - (sy - band - hh / 2) / k];
     S.view = view;
     g.clearRect(0, 0, w, h);
     g.fillStyle = "#fff";
@@ -255,6 +257,37 @@
     g.fillStyle = "#444"; g.font = "12px DejaVu Sans, sans-serif";
     g.fillText(`${fmt(bar)} ${r.length_unit}`, 16 + bar * k, h - 10);
     g.fillText(`${r.system ? "driver" : "cam"} angle ${fmt(angleAt(S.index), 4)}°`, 12, 18);
+    drawLegend(g, r, w);
+  }
+
+  // the drawing's key, top right: what each colour and mark is
+  function legendItems(r) {
+    const items = r.system
+      ? [["none", "", "each body in its colour"], ["dot", "#d62728", "contact points"], ["line", "#2ca02c", "common normals"]]
+      : [["fill", "#1f77b4", "cam, the driver (turns)"], ["line", "#3c3c3c", "follower"],
+        ["dot", "#d62728", "contact point"], ["dash", "#2ca02c", "common normal"]];
+    if (!r.system && r.nodes_editable) items.push(["node", "#1f77b4", "spline node (drag)"]);
+    return items;
+  }
+
+  function drawLegend(g, r, w) {
+    const items = legendItems(r);
+    g.font = "11px DejaVu Sans, sans-serif";
+    const tw = Math.max(...items.map((it) => g.measureText(it[2]).width));
+    const x = w - tw - 40, lh = 15;
+    g.fillStyle = "rgba(255,255,255,0.85)";
+    g.fillRect(x - 6, 6, tw + 40, items.length * lh + 8);
+    items.forEach(([kind, col, label], i) => {
+      const y = 16 + i * lh;
+      g.strokeStyle = col; g.fillStyle = col; g.lineWidth = 2; g.setLineDash([]);
+      if (kind === "fill") { g.fillStyle = "rgba(31,119,180,0.15)"; g.fillRect(x, y - 5, 20, 10); g.strokeRect(x, y - 5, 20, 10); }
+      else if (kind === "line") { g.beginPath(); g.moveTo(x, y); g.lineTo(x + 20, y); g.stroke(); }
+      else if (kind === "dash") { g.lineWidth = 1.2; g.setLineDash([4, 3]); g.beginPath(); g.moveTo(x, y); g.lineTo(x + 20, y); g.stroke(); g.setLineDash([]); }
+      else if (kind === "dot") { g.beginPath(); g.arc(x + 10, y, 4, 0, 2 * Math.PI); g.fill(); }
+      else if (kind === "node") { g.beginPath(); g.arc(x + 10, y, 3.5, 0, 2 * Math.PI); g.fill(); }
+      g.fillStyle = "#333";
+      g.fillText(label, x + 26, y + 4);
+    });
   }
 
   // the cam: its profile turned with it, stretches the follower cannot follow, its axis, nodes
@@ -942,7 +975,15 @@
       const rv = REPORT.review || {};
       document.title = `Design review — ${REPORT.result.name}`;
       $("title").textContent = `design review — ${REPORT.result.name}`;
-      const extent = rv.radius ? ` Profile radius from ${fmt(rv.radius[0], 5)} to ${fmt(rv.radius[1], 5)} ${REPORT.result.length_unit}.` : "";
+      const u = REPORT.result.length_unit, sh = rv.shop;
+      let extent = rv.radius ? ` Profile radius from ${fmt(rv.radius[0], 5)} to ${fmt(rv.radius[1], 5)} ${u}.` : "";
+      if (sh) {
+        const polar = sh.polar_radius.Ok
+          ? `polar table (1°) radius ${fmt(sh.polar_radius.Ok[0], 6)} to ${fmt(sh.polar_radius.Ok[1], 6)} ${u}`
+          : `no polar table (${sh.polar_radius.Err})`;
+        const pitch = sh.pitch_radius ? `, pitch curve ${fmt(sh.pitch_radius[0], 6)} to ${fmt(sh.pitch_radius[1], 6)} ${u}` : "";
+        extent = ` Shop (camkin profile): ${polar}${pitch}; DXF of ${sh.dxf_arcs} arcs within ${fmt(sh.dxf_deviation, 2)} ${u} of the exact curves.`;
+      }
       const failed = (REPORT.result.checks || []).filter((c) => !c.ok).length;
       const verdict = REPORT.result.system ? "" : failed ? ` ${failed} design check${failed === 1 ? "" : "s"} failed (marked below).` : " Every design check passed.";
       setStatus(`Made ${rv.date || ""} by ${REPORT.generated_by} from ${REPORT.result.name}, whose text is below: everything is in this file.${verdict}${extent}`, failed > 0);

@@ -72,6 +72,55 @@ struct Review {
     /// the cam profile's smallest and largest radius from the axis, the file's unit (none for a
     /// system)
     radius: Option<[f64; 2]>,
+    /// what `camkin profile` would make of it (none for a system)
+    shop: Option<Shop>,
+}
+
+/// The manufacturing summary of a design review: the library's [`camkin::report::ShopReport`]
+/// at 1° (what `camkin profile` writes), in the file's unit.
+#[derive(Debug, Serialize)]
+struct Shop {
+    /// the polar table's smallest and largest radius, or why there is no polar table
+    polar_radius: Result<[f64; 2], String>,
+    /// the pitch curve's (a roller centre's path) smallest and largest radius
+    pitch_radius: Option<[f64; 2]>,
+    /// the DXF's arcs, and their largest distance from the exact curves
+    dxf_arcs: usize,
+    dxf_deviation: f64,
+}
+
+fn radius_range(points: &[[f64; 2]]) -> [f64; 2] {
+    points.iter().fold([f64::INFINITY, 0.0f64], |[lo, hi], p| {
+        let r = p[0].hypot(p[1]);
+        [lo.min(r), hi.max(r)]
+    })
+}
+
+/// The shop summary of the mechanism in `text` (none when it cannot be made: a system).
+fn shop(text: &str, source: &Source, limits: &Limits) -> Option<Shop> {
+    let parsed = model::build(text, source, limits).ok()?;
+    let req = camkin::report::ShopRequest {
+        step_deg: 1.0,
+        tool_radius: None,
+        tolerance: None,
+    };
+    let r =
+        camkin::report::ShopReport::new(&parsed.built.mechanism, parsed.built.length_unit, &req)
+            .ok()?;
+    Some(Shop {
+        polar_radius: r
+            .polar
+            .as_ref()
+            .map(|p| radius_range(&p.points))
+            .map_err(|e| e.clone()),
+        pitch_radius: r
+            .offsets
+            .iter()
+            .find(|o| o.name == "pitch")
+            .map(|o| radius_range(&o.points)),
+        dxf_arcs: r.dxf.arcs,
+        dxf_deviation: r.dxf.largest_deviation,
+    })
 }
 
 /// Days since 1970-01-01 as a civil date (the proleptic Gregorian calendar; Howard Hinnant's
@@ -117,15 +166,13 @@ pub fn html(
     } else {
         model::compare(text, source, &[REPORT_COMPARE_NODES], step_deg, limits).ok()
     };
-    let radius = (!result.system && !result.profile.is_empty()).then(|| {
-        result
-            .profile
-            .iter()
-            .fold([f64::INFINITY, 0.0f64], |[lo, hi], p| {
-                let r = p[0].hypot(p[1]);
-                [lo.min(r), hi.max(r)]
-            })
-    });
+    let radius =
+        (!result.system && !result.profile.is_empty()).then(|| radius_range(&result.profile));
+    let shop = if result.system {
+        None
+    } else {
+        shop(text, source, limits)
+    };
     let data = ReportData {
         toml: text,
         result,
@@ -134,6 +181,7 @@ pub fn html(
         review: Review {
             date: today(),
             radius,
+            shop,
         },
     };
     let json = serde_json::to_string(&data).map_err(|e| StudioError::BadRequest {

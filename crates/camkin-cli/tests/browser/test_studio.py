@@ -36,13 +36,15 @@ def series(page, key):
     return page.evaluate(f"window.studio.result.series.find(s => s.key === '{key}').values")
 
 
-def at_page_precision(page_values, file_values):
+def at_page_precision(page_values, file_values, resolution=None):
     """The page's series are the command's to the page's precision: within 1e-7 of the column's
-    largest magnitude (`studio::page_precision`; the downloads keep every digit), absent where
-    the command's cell is."""
+    largest magnitude, or of its motion's scale (1e9 times the series' resolution) where that is
+    larger (`studio::page_precision`: rounding noise reads 0; the downloads keep every digit),
+    absent where the command's cell is."""
     top = max((abs(v) for v in file_values if v is not None), default=0.0)
+    tol = max(1e-7 * top, 100.0 * (resolution or 0.0))
     return len(page_values) == len(file_values) and all(
-        (a is None) == (b is None) and (a is None or abs(a - b) <= 1e-7 * top)
+        (a is None) == (b is None) and (a is None or abs(a - b) <= tol)
         for a, b in zip(page_values, file_values))
 
 
@@ -110,7 +112,8 @@ def test_dragging_a_node_gives_the_numbers_of_camkin_analyze_on_the_edited_file(
     ]:
         page_values = series(page, key)
         file_values = [float(r[col]) if r[col] not in ("", "inf", "-inf") else None for r in rows]
-        assert at_page_precision(page_values, file_values), key
+        resolution = page.evaluate(f"window.studio.result.series.find(s => s.key === '{key}').resolution")
+        assert at_page_precision(page_values, file_values, resolution), key
     assert page.errors == []
 
 
@@ -166,7 +169,11 @@ def test_the_report_opens_offline_and_renders(page, tmp_path):
     assert page.title() == "Design review — paper-dynamics.toml"
     status = page.locator("#status").inner_text()
     today = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d")
-    assert today in status and "design check" in status and "Profile radius from" in status, status
+    assert today in status and "design check" in status, status
+    # its manufacturing summary: camkin profile's polar table (the paper's cam: 3.4 to 5 cm) and DXF
+    assert "Shop (camkin profile): polar table (1°) radius" in status and "DXF of" in status, status
+    m = re.search(r"radius ([\d.]+) to ([\d.]+) cm", status)
+    assert m and abs(float(m.group(2)) - 5.0) < 1e-4, status
     # the readouts are rounded for people at every angle: no rounding noise such as 1.7e-16
     for a in ("0", "45", "90", "180"):
         page.locator("#angle").fill(a)

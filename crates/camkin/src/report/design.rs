@@ -270,23 +270,30 @@ impl DesignReport {
         }
     }
 
-    /// Adds the verdict on the contact's jumps, at the cam angles `at_deg` where the contact
-    /// point jumps (from a sweep: [`crate::table::AnalysisSweep::jump_at`]).
-    pub fn with_jumps(mut self, at_deg: Vec<f64>) -> Self {
-        let n = at_deg.len();
-        let mut j = Verdict::new(
-            Check::Jumps,
-            n == 0,
-            vec![if n == 0 {
-                "the contact moves continuously (no jumps)".into()
-            } else {
-                format!(
-                    "the contact jumps at {n} angle{} (the acceleration is impulsive there)",
-                    if n == 1 { "" } else { "s" }
-                )
-            }],
-        );
-        j.angles_deg = at_deg;
+    /// Adds the verdict on the contact's jumps: `impulsive_deg`, the cam angles where the contact
+    /// point jumps and the follower's velocity with it (the acceleration is impulsive there), and
+    /// `handover_deg`, where only the place of contact moves (a gear pair's next tooth pair takes
+    /// over: the velocity is continuous, no impulse). [`split_jumps`] tells them apart.
+    pub fn with_jumps(mut self, impulsive_deg: Vec<f64>, handover_deg: Vec<f64>) -> Self {
+        let (n, m) = (impulsive_deg.len(), handover_deg.len());
+        let s = |k: usize| if k == 1 { "" } else { "s" };
+        let line = match (n, m) {
+            (0, 0) => "the contact moves continuously (no jumps)".to_string(),
+            (0, m) => format!(
+                "the contact moves to the next contact at {m} angle{} with no jump in the follower's velocity (a tooth pair's handover): no impulse",
+                s(m)
+            ),
+            (n, 0) => format!(
+                "the contact jumps at {n} angle{} (the acceleration is impulsive there)",
+                s(n)
+            ),
+            (n, m) => format!(
+                "the contact jumps at {n} angle{} (the acceleration is impulsive there); at {m} more it moves to the next contact with no jump in velocity",
+                s(n)
+            ),
+        };
+        let mut j = Verdict::new(Check::Jumps, n == 0, vec![line]);
+        j.angles_deg = if n == 0 { handover_deg } else { impulsive_deg };
         self.verdicts.push(j);
         self
     }
@@ -353,8 +360,77 @@ fn conjugate_words(c: &ConjugatePlay, arm: bool, unit: &str) -> String {
     }
 }
 
+/// The contact's jumps of a sweep told apart: at each jumped row `k` of `rows` (`jump_at`, the
+/// first row after each jump; the rows a revolution, so row 0 follows the last), the follower's
+/// velocity either jumps too — by more than a smooth motion can change in a step, `2·max|a|·dt`
+/// (the mean value theorem's bound, doubled) plus `1e-9·max|v|` — and the acceleration is
+/// impulsive there, or does not: only the place of contact moves (an ideal gear pair's handover).
+/// `dt` is the time between rows, s. Returns the cam angles (degrees) of each kind.
+pub fn split_jumps(
+    rows: &[crate::table::AnalysisRow],
+    jump_at: &[usize],
+    dt: f64,
+) -> (Vec<f64>, Vec<f64>) {
+    let top = |f: &dyn Fn(&crate::table::AnalysisRow) -> Option<f64>| {
+        rows.iter()
+            .filter_map(f)
+            .filter(|v| v.is_finite())
+            .fold(0.0f64, |m, v| m.max(v.abs()))
+    };
+    let (v_max, a_max) = (top(&|r| r.velocity), top(&|r| r.acceleration));
+    let bound = 2.0 * a_max * dt.abs() + 1e-9 * v_max;
+    let (mut impulsive, mut handover) = (Vec::new(), Vec::new());
+    for &k in jump_at {
+        let Some(row) = rows.get(k) else { continue };
+        let before = &rows[(k + rows.len() - 1) % rows.len()];
+        let smooth = match (row.velocity, before.velocity) {
+            (Some(a), Some(b)) => (a - b).abs() <= bound,
+            _ => false,
+        };
+        if smooth {
+            handover.push(row.angle_deg);
+        } else {
+            impulsive.push(row.angle_deg);
+        }
+    }
+    (impulsive, handover)
+}
+
 #[cfg(test)]
 mod tests {
+
+    fn rows(v: impl Fn(usize) -> f64, a: f64) -> Vec<crate::table::AnalysisRow> {
+        (0..360)
+            .map(|k| crate::table::AnalysisRow {
+                angle_deg: k as f64,
+                velocity: Some(v(k)),
+                acceleration: Some(a),
+                ..Default::default()
+            })
+            .collect()
+    }
+
+    /// A jump of the contact with a continuous velocity is a handover; with a velocity step
+    /// beyond what the acceleration allows in a step, an impulse; row 0 follows the last.
+    #[test]
+    fn jumps_are_told_apart_by_the_velocity() {
+        let dt = 1e-3;
+        // constant velocity: every jump a handover
+        let (imp, hand) = split_jumps(&rows(|_| 5.0, 0.0), &[0, 18, 36], dt);
+        assert!(imp.is_empty() && hand == [0.0, 18.0, 36.0]);
+        // a ramp within its acceleration: still handovers (row 0 after row 359: a step of 359·dv
+        // is an impulse)
+        let (imp, hand) = split_jumps(&rows(|k| k as f64 * 1e-3, 1.0), &[0, 100], dt);
+        assert_eq!((imp, hand), (vec![0.0], vec![100.0]));
+        // a velocity step of 1e-6 of the peak with no acceleration: an impulse
+        let (imp, hand) = split_jumps(
+            &rows(|k| if k < 90 { 5.0 } else { 5.0 + 5e-6 }, 0.0),
+            &[90],
+            dt,
+        );
+        assert_eq!((imp, hand), (vec![90.0], vec![]));
+    }
+
     use super::*;
     use crate::cam::RoundTrip;
 
@@ -484,7 +560,7 @@ mod tests {
             t.contains("conjugate play: a constant clearance of 0.572958°"),
             "{t}"
         );
-        let j = DesignReport::new(r.checks.clone(), "mm", false).with_jumps(vec![90.0]);
+        let j = DesignReport::new(r.checks.clone(), "mm", false).with_jumps(vec![90.0], vec![]);
         assert_eq!(j.failures(), ["contact jumps"]);
         assert!(j.text().contains("a constant clearance of 0.01 mm"));
     }

@@ -27,7 +27,7 @@ mod spring;
 mod system_forces;
 mod system_lubrication;
 
-pub use design::{Check, DesignReport, Verdict};
+pub use design::{split_jumps, Check, DesignReport, Verdict};
 pub use deviation::{DeviationError, DeviationReport, MotionDeviation, RadiusDeviation};
 pub use forces::{
     plausible_face_width, rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport,
