@@ -14,10 +14,17 @@ EXAMPLES = ROOT / "examples"
 def loaded(page, url):
     page.goto(url)
     # a system file has no interpolation study
-    page.wait_for_function(
-        "window.studio && window.studio.result && (window.studio.compare || window.studio.result.system)"
-        " && window.studio.idle()"
-    )
+    try:
+        page.wait_for_function(
+            "window.studio && window.studio.result && (window.studio.compare || window.studio.result.system)"
+            " && window.studio.idle()"
+        )
+    except Exception as e:
+        # say what the page says (a refused request shows its message)
+        said = page.evaluate(
+            "['status', 'compare-summary', 'error'].map(id => id + ': ' + (document.getElementById(id) || {}).textContent)"
+        )
+        raise AssertionError(f"the page did not settle: {said}; errors {page.errors}") from e
     return page
 
 
