@@ -32,7 +32,7 @@ RUN_IN_KERNEL = """async (code) => {
   const future = kernel.requestExecute({ code });
   let out = "";
   future.onIOPub = (m) => {
-    if (m.header.msg_type === "stream") out += m.content.text;
+    if (m.header.msg_type === "stream" && m.content.name === "stdout") out += m.content.text;
     if (m.header.msg_type === "error") out += `${m.content.ename}: ${m.content.evalue}`;
   };
   await future.done;

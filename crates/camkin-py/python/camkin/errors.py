@@ -21,7 +21,36 @@ class CamkinError(Exception):
     """Base class of camkin's errors."""
 
 
-class InputError(CamkinError, ValueError):
+class _Placed:
+    """What ``InputError`` and ``CamkinWarning`` say: the message, the field (a dotted path as
+    the files write it, or an argument's name), the value (text, or None) and the place in a
+    mechanism's text (1-based line and column, or None)."""
+
+    message: str
+    field: Optional[str]
+    value: Optional[str]
+    line: Optional[int]
+    column: Optional[int]
+
+    def _place(
+        self,
+        message: str,
+        field: Optional[str],
+        value: Optional[str],
+        line: Optional[int],
+        column: Optional[int],
+    ) -> None:
+        self.message = message
+        self.field = field
+        self.value = value
+        self.line = line
+        self.column = column
+
+    def __str__(self) -> str:
+        return self.message
+
+
+class InputError(_Placed, CamkinError, ValueError):
     """Bad input: ``.field`` names the field, ``.value`` the value given (text, or None);
     ``.line`` and ``.column`` its place in a mechanism file's text (1-based, or None)."""
 
@@ -34,14 +63,7 @@ class InputError(CamkinError, ValueError):
         column: Optional[int] = None,
     ) -> None:
         super().__init__(message, field, value, line, column)
-        self.message = message
-        self.field = field
-        self.value = value
-        self.line = line
-        self.column = column
-
-    def __str__(self) -> str:
-        return self.message
+        self._place(message, field, value, line, column)
 
     def add_note(self, note: str) -> None:
         """Python's note; a bad argument's "while processing 'NAME'" (added by the extension
@@ -79,7 +101,7 @@ class ResourceError(CamkinError):
         return self.message
 
 
-class CamkinWarning(UserWarning):
+class CamkinWarning(_Placed, UserWarning):
     """A valid input that is probably not what was meant, or a result to read with care (a
     contact that jumps). Its fields are an ``InputError``'s: ``.field`` names what it is about
     (``"cam.profile.points"``, ``"angles_deg"``), ``.value`` the value (text, or None), ``.line``
@@ -94,11 +116,4 @@ class CamkinWarning(UserWarning):
         column: Optional[int] = None,
     ) -> None:
         super().__init__(message)
-        self.message = message
-        self.field = field
-        self.value = value
-        self.line = line
-        self.column = column
-
-    def __str__(self) -> str:
-        return self.message
+        self._place(message, field, value, line, column)
