@@ -356,13 +356,7 @@ fn form_closed(c: &FormClosed, oscillating: bool, lu: LengthUnit<'_>) -> String 
 /// Where an extreme of the contact force is: its angle, or the stretch of angles over which
 /// the force stays at it (a dwell's constant force: `from 150° to 210°`, not one sample of it).
 fn place(r: &ForceReport, e: camkin::report::Extreme) -> String {
-    let n = r.states.len();
-    let Some(k) = r
-        .states
-        .iter()
-        .position(|s| s.cam_angle == e.cam_angle)
-        .filter(|_| n > 2)
-    else {
+    let Some(k) = r.states.iter().position(|s| s.cam_angle == e.cam_angle) else {
         return format!("at {}", angle(e.cam_angle));
     };
     let scale = r
@@ -371,26 +365,17 @@ fn place(r: &ForceReport, e: camkin::report::Extreme) -> String {
         .value
         .abs()
         .max(r.contact_force.0.value.abs());
-    let same = |i: usize| (r.states[i % n].contact_force - e.value).abs() <= 1e-9 * scale;
-    // the run of samples at the extreme's value around it, both ways round the revolution
-    let (mut lo, mut hi) = (0usize, 0usize);
-    while lo + 1 < n && same(k + n - lo - 1) {
-        lo += 1;
-    }
-    while hi + 1 < n - lo && same(k + hi + 1) {
-        hi += 1;
-    }
-    if lo + hi == 0 {
-        return format!("at {}", angle(e.cam_angle));
-    }
-    let a = r.states[(k + n - lo) % n].cam_angle;
-    let b = r.states[(k + hi) % n].cam_angle;
-    if b == 0.0 {
-        format!("from {} to 360° (constant)", angle(a))
-    } else if b < a {
-        format!("from {} through 0° to {} (constant)", angle(a), angle(b))
-    } else {
-        format!("from {} to {} (constant)", angle(a), angle(b))
+    let forces: Vec<f64> = r.states.iter().map(|s| s.contact_force).collect();
+    match camkin::extreme::held_run(&forces, k, 1e-9 * scale) {
+        None => format!("at {}", angle(e.cam_angle)),
+        Some((a, b)) => format!(
+            "{} (constant)",
+            camkin::extreme::stretch_words(
+                r.states[a].cam_angle.to_degrees(),
+                r.states[b].cam_angle.to_degrees(),
+                |d| angle(d.to_radians())
+            )
+        ),
     }
 }
 

@@ -328,3 +328,20 @@ def test_a_point_argument_refuses_what_is_not_real_numbers(call, field, bad):
     with pytest.raises(camkin.InputError) as e:
         call(bad)
     assert e.value.field == field and str(e.value).startswith(field), (e.value.field, str(e.value))
+
+
+def test_the_widget_refuses_what_it_cannot_show(tmp_path):
+    from camkin.widget import Studio
+
+    with pytest.raises(camkin.InputError) as e:
+        Studio.from_toml(tmp_path / "a=b" / "cam.toml")
+    assert e.value.field == "source" and "a=b" in str(e.value)
+    with pytest.raises(camkin.InputError) as e:
+        Studio(camkin.System.from_toml(EXAMPLES / "valve-train.toml"))
+    assert e.value.field == "mechanism" and "from_toml" in str(e.value)
+    # a path with `=` in it is a path
+    d = tmp_path / "x=1"
+    d.mkdir()
+    (d / "cam.toml").write_text((EXAMPLES / "paper.toml").read_text())
+    w = Studio.from_toml(d / "cam.toml")
+    assert w.mechanism.name == "cam"

@@ -69,6 +69,40 @@ pub fn best_refined(
     Some(refine(f, left, right, (ts[k], v), sign))
 }
 
+/// The run of samples around index `k` of a revolution's samples `values` (periodic: the first
+/// follows the last) whose values equal `values[k]` within `tol`: `(first, last)` indices
+/// (wrapping, `last` may be below `first`), or `None` when the sample is alone at its value. An
+/// extreme held over a dwell is named as its stretch, not as one sample of it.
+pub fn held_run(values: &[f64], k: usize, tol: f64) -> Option<(usize, usize)> {
+    let n = values.len();
+    if n < 3 || k >= n {
+        return None;
+    }
+    let same = |i: usize| (values[i % n] - values[k]).abs() <= tol;
+    let (mut lo, mut hi) = (0usize, 0usize);
+    while lo + 1 < n && same(k + n - lo - 1) {
+        lo += 1;
+    }
+    while hi + 1 < n - lo && same(k + hi + 1) {
+        hi += 1;
+    }
+    (lo + hi > 0).then(|| ((k + n - lo) % n, (k + hi) % n))
+}
+
+/// Words for the stretch of cam angles `a` to `b` (degrees) over which a value is held:
+/// "from 300° to 360°", "from 350° through 0° to 10°" (`b` below `a`: the run wraps), with
+/// `degrees` writing an angle for people.
+pub fn stretch_words(a: f64, b: f64, degrees: impl Fn(f64) -> String) -> String {
+    if b == 0.0 {
+        format!("from {} to 360°", degrees(a))
+    } else if b < a {
+        format!("from {} through 0° to {}", degrees(a), degrees(b))
+    } else {
+        format!("from {} to {}", degrees(a), degrees(b))
+    }
+}
+
+
 /// Whether the angles `ts` (rad) sample one whole revolution evenly (each step the same, the
 /// last one step short of a turn past the first): then the first sample's left neighbour is the
 /// last.
@@ -84,6 +118,24 @@ pub fn is_revolution(ts: &[f64]) -> bool {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn held_runs_wrap_round_the_revolution() {
+        let v = [0.0, 0.0, 1.0, 2.0, 2.0, 2.0, 1.0, 0.0];
+        assert_eq!(held_run(&v, 4, 1e-12), Some((3, 5)));
+        // the run at rest wraps: from index 7 through 0 to 1
+        assert_eq!(held_run(&v, 0, 1e-12), Some((7, 1)));
+        assert_eq!(held_run(&v, 2, 1e-12), None);
+        assert_eq!(
+            stretch_words(300.0, 0.0, |d| format!("{d}°")),
+            "from 300° to 360°"
+        );
+        assert_eq!(
+            stretch_words(350.0, 10.0, |d| format!("{d}°")),
+            "from 350° through 0° to 10°"
+        );
+    }
+
     use super::*;
 
     #[test]

@@ -196,13 +196,27 @@ where
             if (max.1 - min.1).abs() > 1e-9 * vspan {
                 notes.push(("min", min, 8));
             }
+            let ys: Vec<f64> = p.points.iter().map(|q| q.1).collect();
+            let deg = |d: f64| format!("{}°", camkin::human::human((d * 100.0).round() / 100.0));
             for (what, (x, y), dy) in notes {
-                let text = format!(
-                    "{what} {} {} at {}°",
-                    tick(y, vspan),
-                    p.unit,
-                    camkin::human::human((x * 100.0).round() / 100.0)
-                );
+                // an extreme held over a dwell is named as its stretch (a revolution's samples)
+                let k = p.points.iter().position(|q| q.0 == x && q.1 == y);
+                let revolution = p.points.len() > 2
+                    && (p.points[p.points.len() - 1].0 - p.points[0].0
+                        + (p.points[1].0 - p.points[0].0)
+                        - 360.0)
+                        .abs()
+                        < 1e-6;
+                let place = match k
+                    .filter(|_| revolution)
+                    .and_then(|k| camkin::extreme::held_run(&ys, k, 1e-9 * vspan))
+                {
+                    Some((a, b)) => {
+                        camkin::extreme::stretch_words(p.points[a].0, p.points[b].0, deg)
+                    }
+                    None => format!("at {}", deg(x)),
+                };
+                let text = format!("{what} {} {} {place}", tick(y, vspan), p.unit);
                 // keep the label inside the panel: to the left of points near the right edge
                 let dx = if x > x0 + 0.7 * (x1 - x0) {
                     -(8 * text.chars().count() as i32) - 6

@@ -303,3 +303,28 @@ fn the_profile_svg_is_drawn_to_scale() {
         assert!(svg.contains(mark), "{mark}");
     }
 }
+
+/// Issue 49: an extreme held over a dwell is named as its stretch on the SVAJ page ("max 12 mm
+/// from 120° to 180°"), as `forces` names a constant force; a peak at one angle keeps "at".
+#[test]
+fn the_svaj_page_names_a_dwells_extreme_as_its_stretch() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("cam");
+    camkin()
+        .arg("synth")
+        .arg(examples().join("design-a-cam.toml"))
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .success();
+    let svg = std::fs::read_to_string(out.join("svaj.svg")).unwrap();
+    assert!(
+        svg.contains("max 12 mm from 120° to 180°"),
+        "the lift's dwell at full lift"
+    );
+    assert!(
+        svg.contains("min 0 mm from 300° to 360°"),
+        "the dwell at rest, up to 360°"
+    );
+    assert!(svg.contains("max 1440 mm/s at 60°"), "a peak at one angle");
+}

@@ -166,10 +166,14 @@ class Studio(anywidget.AnyWidget):
             w = Studio.from_toml("examples/valve-train.toml")
         """
         text = os.fspath(source)
-        if "\n" in text or ("=" in text and not os.path.exists(text)):
+        if "\n" in text:
             return cls(toml=text, name="mechanism", height=height)
-        with open(text, encoding="utf-8-sig") as f:
-            body = f.read()
+        # a path (one holding `=` too)
+        try:
+            with open(text, encoding="utf-8-sig") as f:
+                body = f.read()
+        except (OSError, UnicodeDecodeError) as e:
+            raise _input("source", text, f"cannot read mechanism file {text}: {e}") from e
         folder = os.path.dirname(os.path.abspath(text))
         name = os.path.splitext(os.path.basename(text))[0]
         return cls(toml=body, name=name, base_dir=folder, height=height)
