@@ -135,6 +135,7 @@ pub fn run(mech: &Mechanism, nodes: &[usize], step_deg: f64, label: &str) -> Res
     let a: Vec<f64> = exact.iter().map(|s| s.acceleration).collect();
     let max_abs_acceleration = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
 
+    Interpolated::check_repeats(mech)?;
     let mut runs = Vec::with_capacity(nodes.len());
     for &n in nodes {
         pb.set_message(format!("{label}: N = {n}"));

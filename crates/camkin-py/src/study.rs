@@ -419,6 +419,7 @@ impl PyMechanism {
                         .map_err(|e| format!("contact method at {a}°: {e}"))
                 })
                 .collect::<Result<_, _>>()?;
+            camkin::interp::Interpolated::check_repeats(mech).map_err(|e| e.to_string())?;
             let mut runs = Vec::new();
             for &m in &nodes {
                 let it = camkin::interp::Interpolated::new(mech, m).map_err(|e| e.to_string())?;

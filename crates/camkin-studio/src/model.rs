@@ -873,6 +873,8 @@ pub struct Compare {
     /// the acceleration's natural scale (at least ω times the velocity's), in `unit`: the
     /// relative errors' scale when the exact acceleration is zero but for rounding
     pub scale: f64,
+    /// why there is no study (a motion that does not repeat every revolution), when there is none
+    pub refused: Option<String>,
 }
 
 /// One node count of the study.
@@ -949,6 +951,18 @@ pub fn compare(
         .filter(|a| a.is_finite())
         .fold(0.0f64, |m, a| m.max(a.abs()));
     let conv = |a: f64| units.motion(0.0, 0.0, a, None)[2].filter(|v| v.is_finite());
+    // a motion that does not repeat (a gear pair's) has no study: the page says why
+    if let Err(e) = Interpolated::check_repeats(mech) {
+        return Ok(Compare {
+            scale: 0.0,
+            angles_deg: Vec::new(),
+            unit: units.motion_symbol(2),
+            exact: Vec::new(),
+            runs: Vec::new(),
+            server_ms: t0.elapsed().as_secs_f64() * 1e3,
+            refused: Some(e.to_string()),
+        });
+    }
     let mut runs = Vec::new();
     for &n in nodes {
         let it = Interpolated::new(mech, n).map_err(|e| StudioError::Input {
@@ -977,6 +991,7 @@ pub fn compare(
         });
     }
     Ok(Compare {
+        refused: None,
         scale: units.motion(0.0, 0.0, scale, None)[2].unwrap_or(0.0).abs(),
         angles_deg: angles,
         unit: units.motion_symbol(2),

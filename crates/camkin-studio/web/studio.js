@@ -671,6 +671,11 @@
       $("compare-summary").textContent = "updating for the edited mechanism…";
       return;
     }
+    if (c.refused) {
+      $("compare-summary").textContent = c.refused;
+      for (const id of ["compare-acc", "compare-err"]) { const { g, w, h } = fitCanvas($(id)); g.clearRect(0, 0, w, h); }
+      return;
+    }
     const run = c.runs[0];
     $("compare-summary").textContent = `N = ${run.nodes}: largest error ${fmt(100 * run.max_rel_error, 3)} % of the peak acceleration, mean ${fmt(100 * run.mean_rel_error, 3)} %`;
     if (!S.cmpPlots) {

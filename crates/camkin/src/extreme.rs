@@ -102,7 +102,6 @@ pub fn stretch_words(a: f64, b: f64, degrees: impl Fn(f64) -> String) -> String 
     }
 }
 
-
 /// Whether the angles `ts` (rad) sample one whole revolution evenly (each step the same, the
 /// last one step short of a turn past the first): then the first sample's left neighbour is the
 /// last.

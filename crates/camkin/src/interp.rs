@@ -33,6 +33,28 @@ impl Interpolated {
         ))
     }
 
+    /// Whether the follower's motion repeats every revolution, as the interpolation of a
+    /// revolution's positions by a periodic spline assumes: its net motion over a revolution
+    /// (the mean velocity at 64 evenly spaced angles times a revolution's time) must be under
+    /// 1 % of its peak velocity times that time. A cam's is zero; a gear pair's driven gear
+    /// moves on by its ratio of a turn: [`CamError::MotionDoesNotRepeat`].
+    pub fn check_repeats(mech: &Mechanism) -> Result<(), CamError> {
+        let n = 64;
+        let thetas: Vec<f64> = (0..n).map(|k| TAU * k as f64 / n as f64).collect();
+        let v: Vec<f64> = mech
+            .analyze_all(&thetas)
+            .into_iter()
+            .map(|r| r.map(|s| s.velocity))
+            .collect::<Result<_, _>>()?;
+        let peak = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let mean = v.iter().sum::<f64>() / n as f64;
+        let moves_on = if peak > 0.0 { (mean / peak).abs() } else { 0.0 };
+        if moves_on > 1e-2 {
+            return Err(CamError::MotionDoesNotRepeat { moves_on });
+        }
+        Ok(())
+    }
+
     /// Interpolates positions given at `θ_k = 2πk/N` (N = `positions.len()` ≥ 3), with cam speed
     /// `speed` (rad/s) and angular acceleration `angular_acceleration` (rad/s²).
     pub fn from_positions(positions: &[f64], speed: f64, angular_acceleration: f64) -> Self {

@@ -39,6 +39,14 @@ pub enum CamError {
         /// the number given
         nodes: usize,
     },
+    /// The follower's motion does not repeat every revolution of the cam (a gear pair's driven
+    /// gear turns on): a study of a revolution's periodic interpolation does not apply.
+    #[error("the follower's motion does not repeat every revolution (its mean velocity is {} of its peak: it turns on, as a gear pair's driven gear does); the interpolation study compares a motion that repeats", crate::human::human(*.moves_on))]
+    MotionDoesNotRepeat {
+        /// the net motion over a revolution, as a fraction of the peak velocity times a
+        /// revolution's time
+        moves_on: f64,
+    },
     /// The cam profile is not a closed curve.
     #[error("the cam profile must be a closed curve")]
     OpenProfile,
