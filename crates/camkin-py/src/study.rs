@@ -409,6 +409,9 @@ impl PyMechanism {
         let angles = camkin::table::AngleGrid::new(0.0, step_deg);
         let grid: Vec<f64> = (0..n).map(|k| angles.at(k)).collect();
         let thetas: Vec<f64> = grid.iter().map(|d| d.to_radians()).collect();
+        // the study compares a motion that repeats (a gear pair's does not): bad input for it
+        camkin::interp::Interpolated::check_repeats(mech)
+            .map_err(|e| errors::input("mechanism", None, e.to_string()))?;
         let out = py.detach(|| -> Result<_, String> {
             let exact: Vec<f64> = mech
                 .analyze_all(&thetas)
@@ -419,7 +422,6 @@ impl PyMechanism {
                         .map_err(|e| format!("contact method at {a}°: {e}"))
                 })
                 .collect::<Result<_, _>>()?;
-            camkin::interp::Interpolated::check_repeats(mech).map_err(|e| e.to_string())?;
             let mut runs = Vec::new();
             for &m in &nodes {
                 let it = camkin::interp::Interpolated::new(mech, m).map_err(|e| e.to_string())?;

@@ -345,3 +345,14 @@ def test_the_widget_refuses_what_it_cannot_show(tmp_path):
     (d / "cam.toml").write_text((EXAMPLES / "paper.toml").read_text())
     w = Studio.from_toml(d / "cam.toml")
     assert w.mechanism.name == "cam"
+
+
+def test_the_interpolation_study_refuses_a_gear_pair_saying_why():
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", camkin.CamkinWarning)
+        g = camkin.Mechanism.from_toml(EXAMPLES / "gear-pair-20-42.toml")
+    with pytest.raises(camkin.InputError) as e:
+        g.compare([100])
+    assert e.value.field == "mechanism" and "does not repeat" in str(e.value)
