@@ -44,5 +44,6 @@ fn _camkin(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(studio::_studio_answer, m)?)?;
     m.add_function(wrap_pyfunction!(studio::_studio_assets, m)?)?;
     m.add("MAX_ANGLES", mech::MAX_ANGLES)?;
+    m.add("MAX_TEXT_BYTES", camkin::spec::text::MAX_TEXT_BYTES)?;
     Ok(())
 }

@@ -356,3 +356,13 @@ def test_the_interpolation_study_refuses_a_gear_pair_saying_why():
     with pytest.raises(camkin.InputError) as e:
         g.compare([100])
     assert e.value.field == "mechanism" and "does not repeat" in str(e.value)
+
+
+def test_the_widget_refuses_a_file_larger_than_a_mechanism(tmp_path):
+    from camkin.widget import Studio
+
+    big = tmp_path / "big.toml"
+    big.write_text("# " + "x" * (9 << 20) + "\n")
+    with pytest.raises(camkin.InputError) as e:
+        Studio.from_toml(big)
+    assert e.value.field == "source" and "MiB" in str(e.value)

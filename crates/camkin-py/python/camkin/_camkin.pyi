@@ -31,9 +31,11 @@ __all__ = [
     "_studio_answer",
     "_studio_assets",
     "MAX_ANGLES",
+    "MAX_TEXT_BYTES",
 ]
 
 MAX_ANGLES: int
+MAX_TEXT_BYTES: int
 
 _ArrayLike = Union[float, Sequence[float], npt.NDArray[np.floating[Any]]]
 

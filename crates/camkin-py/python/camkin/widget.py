@@ -30,6 +30,9 @@ from ._camkin import Mechanism
 
 __all__ = ["Studio"]
 
+# the library's bound on a mechanism file's text
+_MAX_TEXT_BYTES = _camkin.MAX_TEXT_BYTES
+
 # The frame's side of the bridge: the studio script's requests posted to the widget (the
 # parent page), the kernel's answers matched back by number.
 _BRIDGE = """
@@ -168,12 +171,16 @@ class Studio(anywidget.AnyWidget):
         text = os.fspath(source)
         if "\n" in text:
             return cls(toml=text, name="mechanism", height=height)
-        # a path (one holding `=` too)
+        # a path (one holding `=` too), read with the library's bound on a mechanism's text
         try:
             with open(text, encoding="utf-8-sig") as f:
-                body = f.read()
+                body = f.read(_MAX_TEXT_BYTES + 1)
         except (OSError, UnicodeDecodeError) as e:
             raise _input("source", text, f"cannot read mechanism file {text}: {e}") from e
+        if len(body.encode("utf-8")) > _MAX_TEXT_BYTES:
+            raise _input(
+                "source", text, f"{text}: larger than {_MAX_TEXT_BYTES >> 20} MiB, more than a mechanism file holds"
+            )
         folder = os.path.dirname(os.path.abspath(text))
         name = os.path.splitext(os.path.basename(text))[0]
         return cls(toml=body, name=name, base_dir=folder, height=height)
