@@ -78,12 +78,7 @@ pub fn to_value(x: &Bound<'_, PyAny>, path: &str, depth: usize) -> PyResult<Valu
     }
     // NumPy: an array through `tolist()`, a scalar through `item()` (both give Python's own
     // types, which the cases above take or refuse)
-    let np_type = x
-        .get_type()
-        .module()
-        .map(|m| m.to_string().starts_with("numpy"))
-        .unwrap_or(false);
-    if np_type {
+    if errors::is_numpy(x) {
         let method = if x.hasattr("ndim")? && x.getattr("ndim")?.extract::<usize>()? > 0 {
             "tolist"
         } else {

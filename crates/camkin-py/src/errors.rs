@@ -115,6 +115,32 @@ fn field_value(e: &SpecError) -> (String, Option<String>) {
     }
 }
 
+/// Whether `x` is a NumPy object (an array or a scalar).
+pub fn is_numpy(x: &Bound<'_, PyAny>) -> bool {
+    x.get_type()
+        .module()
+        .map(|m| m.to_string().starts_with("numpy"))
+        .unwrap_or(false)
+}
+
+/// A NumPy scalar's dtype kind (`"f"`, `"i"`, `"u"`, `"c"`, …), `None` for anything else (an
+/// array included).
+fn numpy_scalar_kind(x: &Bound<'_, PyAny>) -> PyResult<Option<String>> {
+    if !is_numpy(x) || !x.hasattr("dtype")? {
+        return Ok(None);
+    }
+    let scalar = x
+        .getattr("ndim")
+        .and_then(|n| n.extract::<usize>())
+        .unwrap_or(1)
+        == 0;
+    Ok(if scalar {
+        x.getattr("dtype")?.getattr("kind")?.extract().ok()
+    } else {
+        None
+    })
+}
+
 /// A real number given as an argument (a Python int or float, or a NumPy integer or floating
 /// scalar), for `#[pyo3(from_py_with = …)]`: anything else (text, a complex number, None, a bool)
 /// is an `InputError` with the value, whose `.field` the argument's name fills (pyo3 notes
@@ -140,23 +166,13 @@ pub fn real(x: &Bound<'_, PyAny>) -> PyResult<f64> {
     if x.is_instance_of::<PyFloat>() || x.is_instance_of::<PyInt>() {
         return x.extract::<f64>();
     }
-    let ty = x.get_type();
-    let numpy = ty
-        .module()
-        .map(|m| m.to_string().starts_with("numpy"))
-        .unwrap_or(false);
-    if numpy && x.hasattr("dtype")? {
-        let kind: String = x.getattr("dtype")?.getattr("kind")?.extract()?;
-        let scalar = x
-            .getattr("ndim")
-            .and_then(|n| n.extract::<usize>())
-            .unwrap_or(1)
-            == 0;
-        if scalar && matches!(kind.as_str(), "f" | "i" | "u") {
-            return x.call_method0("item")?.extract::<f64>();
-        }
+    if let Some("f" | "i" | "u") = numpy_scalar_kind(x)?.as_deref() {
+        return x.call_method0("item")?.extract::<f64>();
     }
-    let name = ty.name().map_or_else(|_| "?".into(), |n| n.to_string());
+    let name = x
+        .get_type()
+        .name()
+        .map_or_else(|_| "?".into(), |n| n.to_string());
     Err(bad(&match name.as_str() {
         "str" => "text".to_string(),
         "complex" => "a complex number".to_string(),
@@ -216,17 +232,7 @@ pub fn count(x: &Bound<'_, PyAny>) -> PyResult<usize> {
     } else if x.is_instance_of::<PyInt>() {
         Some(x.clone())
     } else {
-        let numpy = x
-            .get_type()
-            .module()
-            .map(|m| m.to_string().starts_with("numpy"))
-            .unwrap_or(false);
-        let kind: Option<String> = if numpy && x.hasattr("dtype")? {
-            x.getattr("dtype")?.getattr("kind")?.extract().ok()
-        } else {
-            None
-        };
-        match kind.as_deref() {
+        match numpy_scalar_kind(x)?.as_deref() {
             Some("i" | "u") => Some(x.call_method0("item")?),
             _ => None,
         }

@@ -80,11 +80,7 @@ impl PySystem {
             ));
         }
         let sys = &self.built.system;
-        let rpm = sys
-            .drivers()
-            .first()
-            .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
-        let sweep = target_rpm.map(|t| camkin::dynamics::SpeedSweep::to_target(t, rpm, step_deg));
+        let sweep = target_rpm.map(|t| camkin::dynamics::SpeedSweep::to_target(sys, t, step_deg));
         if let Some(sw) = &sweep {
             let sim = camkin::dynamics::SystemSimulation::new(sys, self.built.dynamics.clone())
                 .map_err(|e| errors::input("dynamics", None, e.to_string()))?;

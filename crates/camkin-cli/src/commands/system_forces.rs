@@ -59,10 +59,7 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
     let mut sim =
         SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| dyn_err(name, e))?;
     let substeps = sim.substeps(h_out);
-    let rpm = sys
-        .drivers()
-        .first()
-        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
+    let rpm = sys.first_driver_rpm();
     // --target-rpm's sweep: from a quarter of the lower of the two speeds, in eight steps to
     // the target, then bisected to 1 rpm
     let sweep = match args.target_rpm {
@@ -72,7 +69,7 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
                 camkin::human::human(target)
             )));
         }
-        Some(target) => Some(SpeedSweep::to_target(target, rpm, step)),
+        Some(target) => Some(SpeedSweep::to_target(sys, target, step)),
         None => None,
     };
     // the revolution, and the sweep's runs (each at most a revolution at the target's speed)

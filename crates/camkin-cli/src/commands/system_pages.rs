@@ -52,10 +52,7 @@ pub fn write(
     let k = 3 * body + c;
     let axis = ["x", "y"][c];
     let angle = |i: usize| step * i as f64;
-    let rpm = sys
-        .drivers()
-        .first()
-        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU);
+    let rpm = sys.first_driver_rpm();
     let h = camkin::human::human;
     let series = |f: &dyn Fn(&SystemSample) -> f64| -> Vec<(f64, f64)> {
         samples
@@ -130,13 +127,6 @@ pub fn write(
     Ok(())
 }
 
-/// The first driver's speed, rpm.
-fn driver_rpm(sys: &camkin::system::System) -> f64 {
-    sys.drivers()
-        .first()
-        .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU)
-}
-
 /// `forces.svg` and `.png`: every contact's compressive force that ever closes, by driver angle.
 pub fn forces_page(
     dir: &Path,
@@ -146,7 +136,7 @@ pub fn forces_page(
     step: f64,
 ) -> anyhow::Result<()> {
     let h = camkin::human::human;
-    let rpm = driver_rpm(sys);
+    let rpm = sys.first_driver_rpm();
     let series = |f: &dyn Fn(&SystemSample) -> f64| -> Vec<(f64, f64)> {
         samples
             .iter()
@@ -204,7 +194,7 @@ pub fn efforts_page(
     let chart = Chart {
         title: format!(
             "{name}: drivers' efforts at {} rpm",
-            h((driver_rpm(sys) * 10.0).round() / 10.0)
+            h((sys.first_driver_rpm() * 10.0).round() / 10.0)
         ),
         x_label: "driver angle (°)".into(),
         y_label: match (angles, sys.drivers().len() - angles) {

@@ -47,9 +47,10 @@ pub struct SpeedSweep {
 impl SpeedSweep {
     /// The sweep that checks a system up to `target_rpm` (`camkin forces SYSTEM.toml
     /// --target-rpm`, Python's `System.forces(target_rpm=…)`): from a quarter of the lower of
-    /// the target and the file's speed `rpm`, in eight steps to the target, then bisected to
-    /// 1 rpm; one revolution at each speed in `step_deg` output steps.
-    pub fn to_target(target_rpm: f64, rpm: f64, step_deg: f64) -> Self {
+    /// the target and the file's speed (`sys`'s first driver's), in eight steps to the target,
+    /// then bisected to 1 rpm; one revolution at each speed in `step_deg` output steps.
+    pub fn to_target(sys: &System, target_rpm: f64, step_deg: f64) -> Self {
+        let rpm = sys.first_driver_rpm();
         let from = 0.25 * target_rpm.min(rpm.abs().max(1.0));
         Self {
             from_rpm: from,

@@ -254,6 +254,14 @@ impl System {
         &self.drivers
     }
 
+    /// The first driver's speed at time 0, rpm (its rate in rad/s turned to turns a minute; 0
+    /// without a driver): the speed a system's revolution, sweeps and pages are given at.
+    pub fn first_driver_rpm(&self) -> f64 {
+        self.drivers
+            .first()
+            .map_or(0.0, |d| d.law.at(0.0)[1] * 60.0 / std::f64::consts::TAU)
+    }
+
     /// Driver `index`'s law replaced by `law` (a speed sweep: the same system at another speed);
     /// `false` when there is no such driver.
     pub fn set_driver_law(&mut self, index: usize, law: Law) -> bool {
