@@ -34,6 +34,8 @@ pub struct CamFollowerSystem {
     pub angular_acceleration: f64,
     /// +1 counter-clockwise, −1 clockwise
     pub sense: f64,
+    /// the cam angle at `t = 0`, rad, in the cam's direction
+    pub start_angle: f64,
 }
 
 impl CamFollowerSystem {
@@ -47,11 +49,11 @@ impl CamFollowerSystem {
         }
     }
 
-    /// The instant at which the cam has turned `theta` rad in its own direction:
-    /// `θ = ω t + α t²/2` (NaN when a decelerating cam never gets there).
+    /// The instant at which the cam is at angle `theta` (rad, in its own direction):
+    /// `θ − θ₀ = ω t + α t²/2` (NaN when a decelerating cam never gets there).
     pub fn time_of(&self, theta: f64) -> f64 {
         self.sweep_angle()
-            .time(&self.system, theta)
+            .time(&self.system, theta - self.start_angle)
             .unwrap_or(f64::NAN)
     }
 
@@ -73,15 +75,21 @@ impl CamFollowerSystem {
     /// degree of freedom would have two rows, and the system's kinematic analysis needs one
     /// row a coordinate.
     pub fn of(m: &Mechanism) -> Result<CamFollowerSystem, CamError> {
+        Self::starting_at(m, 0.0)
+    }
+
+    /// As [`CamFollowerSystem::of`], with the cam at angle `theta0` (rad, in its own direction)
+    /// at `t = 0` and the follower where the cam path's first touch puts it there.
+    pub fn starting_at(m: &Mechanism, theta0: f64) -> Result<CamFollowerSystem, CamError> {
         let cam = m.cam();
-        let start = m.analyze(0.0)?;
+        let start = m.analyze(theta0)?;
         let sense = cam.direction().sign();
         let mut system = System::new();
         let cam_body = system.add_body(Body {
             name: "cam".into(),
             mass: 0.0,
             inertia: 0.0,
-            pose: Pose::new(cam.pivot(), 0.0),
+            pose: Pose::new(cam.pivot(), sense * theta0),
             centre_of_mass: crate::geometry::Point2::origin(),
         });
         let joint = m.follower_joint();
@@ -111,7 +119,7 @@ impl CamFollowerSystem {
             body: cam_body,
             coordinate: Coordinate::Angle,
             law: Law::Quadratic {
-                start: 0.0,
+                start: sense * theta0,
                 rate: sense * cam.speed(),
                 acceleration: sense * cam.angular_acceleration(),
             },
@@ -131,6 +139,7 @@ impl CamFollowerSystem {
             speed: cam.speed(),
             angular_acceleration: cam.angular_acceleration(),
             sense,
+            start_angle: theta0,
         })
     }
 }

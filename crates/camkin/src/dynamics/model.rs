@@ -3,7 +3,7 @@
 use crate::body::{BodyState, Pose};
 use crate::contact::{refine, ContactKinematics, Pairing, SearchOptions, Surface};
 use crate::curve::Curve;
-use crate::geometry::{rot90, Point2, Rotation, Vec2};
+use crate::geometry::{Point2, Vec2};
 use std::sync::Arc;
 
 /// Mass properties of a rigid body (its frame's origin is where `q` puts it; the inertia is
@@ -19,38 +19,6 @@ pub struct RigidBody {
 /// A constraint between a body and the ground, a driver, or a contact between two bodies.
 #[derive(Debug, Clone)]
 pub enum Constraint {
-    /// Body point `local` (body frame) held at the ground point `ground`: two rows.
-    Revolute {
-        /// the body
-        body: usize,
-        /// the point in the body frame
-        local: Point2,
-        /// where it is held, world
-        ground: Point2,
-    },
-    /// The body slides along the ground line through `through` with unit direction `axis`, its
-    /// angle held at `angle`: two rows (no motion across the axis, no rotation).
-    Translational {
-        /// the body
-        body: usize,
-        /// a point of the line, world
-        through: Point2,
-        /// unit direction of the line
-        axis: Vec2,
-        /// the body's angle, rad
-        angle: f64,
-    },
-    /// The body's angle follows `θ(t) = angle0 + speed t + ½ acceleration t²`: one row.
-    AngleDriver {
-        /// the body
-        body: usize,
-        /// angle at t = 0, rad
-        angle0: f64,
-        /// rad/s
-        speed: f64,
-        /// rad/s²
-        acceleration: f64,
-    },
     /// Curve `curve_a` on body `a` touching `curve_b` on body `b` (either may be [`GROUND`]):
     /// one row (eq. 11).
     Contact {
@@ -84,8 +52,7 @@ impl Constraint {
     /// Number of rows.
     pub fn rows(&self) -> usize {
         match self {
-            Constraint::Revolute { .. } | Constraint::Translational { .. } => 2,
-            Constraint::AngleDriver { .. } | Constraint::Contact { .. } => 1,
+            Constraint::Contact { .. } => 1,
             Constraint::Joint(kind) => kind.rows(),
             Constraint::Driver { .. } => 1,
         }
@@ -94,11 +61,6 @@ impl Constraint {
     /// The rate `Φ_q q̇` must have (`−Φ_t`): a driver's speed at `t`, else 0.
     pub(crate) fn target_rate(&self, t: f64) -> f64 {
         match self {
-            Constraint::AngleDriver {
-                speed,
-                acceleration,
-                ..
-            } => speed + acceleration * t,
             Constraint::Driver { law, .. } => law.at(t)[1],
             _ => 0.0,
         }
@@ -110,68 +72,9 @@ impl Constraint {
 pub enum ForceElement {
     /// Gravity on every body, m/s².
     Gravity(Vec2),
-    /// A linear spring and damper pushing body `body`'s origin along `−axis`:
-    /// `F = −(preload + stiffness (s − reference) + damping ṡ) axis` with `s = (p − origin)·axis`.
-    AxialSpring {
-        /// the body
-        body: usize,
-        /// a point of the axis, world
-        origin: Point2,
-        /// unit axis
-        axis: Vec2,
-        /// N/m
-        stiffness: f64,
-        /// N, at `s = reference`
-        preload: f64,
-        /// m
-        reference: f64,
-        /// N·s/m
-        damping: f64,
-    },
     /// A spring, damper or torsion spring of a [`crate::system::System`] between two bodies or a
     /// body and the ground (its bodies' ids are their indexes here).
     Element(crate::system::ForceKind),
-    /// A constant torque on body `body`, N·m (counter-clockwise positive): a cam driven by a
-    /// motor instead of an angle driver.
-    Torque {
-        /// the body
-        body: usize,
-        /// N·m
-        torque: f64,
-    },
-    /// A torsion spring and damper on body `body` turning it in the sense `sign` (+1 ccw, −1
-    /// cw); see [`ForceElement::torsion`].
-    TorsionSpring {
-        /// the body
-        body: usize,
-        /// +1: the torque turns the body counter-clockwise, −1: clockwise
-        sign: f64,
-        /// N·m/rad
-        stiffness: f64,
-        /// N·m, at `θ = reference`
-        preload: f64,
-        /// rad
-        reference: f64,
-        /// N·m·s/rad
-        damping: f64,
-    },
-}
-
-impl ForceElement {
-    /// The torque of a torsion spring at angle `theta` and rate `omega`: the spring winds up as
-    /// the body turns against `sign` from `reference`.
-    pub fn torsion(
-        sign: f64,
-        stiffness: f64,
-        preload: f64,
-        reference: f64,
-        damping: f64,
-        theta: f64,
-        omega: f64,
-    ) -> f64 {
-        let wound = -sign * (theta - reference);
-        sign * (preload + stiffness * wound) - damping * omega
-    }
 }
 
 /// A planar multibody system: bodies, constraints, forces.
@@ -243,12 +146,6 @@ impl Rows {
             len: 1,
         }
     }
-    fn two(a: Row, b: Row) -> Self {
-        Self {
-            rows: [a, b, Row::default()],
-            len: 2,
-        }
-    }
 }
 
 impl std::ops::Deref for Rows {
@@ -275,44 +172,9 @@ impl System {
                         f[3 * i + 1] += b.mass * g.y;
                     }
                 }
-                ForceElement::AxialSpring {
-                    body,
-                    origin,
-                    axis,
-                    stiffness,
-                    preload,
-                    reference,
-                    damping,
-                } => {
-                    let p = Point2::new(q[3 * body], q[3 * body + 1]);
-                    let s = (p - origin).dot(&axis);
-                    let sd = Vec2::new(qd[3 * body], qd[3 * body + 1]).dot(&axis);
-                    let mag = -(preload + stiffness * (s - reference) + damping * sd);
-                    f[3 * body] += mag * axis.x;
-                    f[3 * body + 1] += mag * axis.y;
-                }
-                ForceElement::Torque { body, torque } => f[3 * body + 2] += torque,
                 ForceElement::Element(kind) => {
                     let state = |id: crate::system::BodyId| body_state(q, qd, id.0);
                     kind.add_forces(state, f);
-                }
-                ForceElement::TorsionSpring {
-                    body,
-                    sign,
-                    stiffness,
-                    preload,
-                    reference,
-                    damping,
-                } => {
-                    f[3 * body + 2] += ForceElement::torsion(
-                        sign,
-                        stiffness,
-                        preload,
-                        reference,
-                        damping,
-                        q[3 * body + 2],
-                        qd[3 * body + 2],
-                    );
                 }
             }
         }
@@ -330,59 +192,6 @@ impl System {
         pairing: &mut Option<Pairing>,
     ) -> Result<Rows, crate::contact::ContactError> {
         Ok(match c {
-            Constraint::Revolute {
-                body,
-                local,
-                ground,
-            } => {
-                let i = 3 * body;
-                let th = q[i + 2];
-                let r = Rotation::new(th) * local.coords;
-                let dr = rot90(r); // ∂(R s)/∂θ
-                let w = qd[i + 2];
-                Rows::two(
-                    Row::new(
-                        q[i] + r.x - ground.x,
-                        &[(i, 1.0), (i + 2, dr.x)],
-                        w * w * r.x,
-                    ),
-                    Row::new(
-                        q[i + 1] + r.y - ground.y,
-                        &[(i + 1, 1.0), (i + 2, dr.y)],
-                        w * w * r.y,
-                    ),
-                )
-            }
-            Constraint::Translational {
-                body,
-                through,
-                axis,
-                angle,
-            } => {
-                let i = 3 * body;
-                let n = rot90(*axis);
-                Rows::two(
-                    Row::new(
-                        (q[i] - through.x) * n.x + (q[i + 1] - through.y) * n.y,
-                        &[(i, n.x), (i + 1, n.y)],
-                        0.0,
-                    ),
-                    Row::new(q[i + 2] - angle, &[(i + 2, 1.0)], 0.0),
-                )
-            }
-            Constraint::AngleDriver {
-                body,
-                angle0,
-                speed,
-                acceleration,
-            } => {
-                let i = 3 * body + 2;
-                Rows::one(Row::new(
-                    q[i] - (angle0 + speed * t + 0.5 * acceleration * t * t),
-                    &[(i, 1.0)],
-                    *acceleration,
-                ))
-            }
             Constraint::Contact {
                 a,
                 curve_a,

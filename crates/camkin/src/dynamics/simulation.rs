@@ -1,8 +1,8 @@
-//! A cam-follower simulation: the multibody model where it applies, the one-coordinate model
-//! where the contact jumps or the follower is form-closed.
+//! A cam-follower simulation: the mechanism's preset system in the one engine where it applies,
+//! the one-coordinate model where the contact jumps or the follower is form-closed.
 
 use super::{
-    AugmentedLagrangian, DynamicsError, Event, FollowerDynamics, Multibody, Reduced, Sample, System,
+    AugmentedLagrangian, DynamicsError, Event, FollowerDynamics, PresetSimulation, Reduced, Sample,
 };
 use crate::cam::Mechanism;
 use crate::field::Field;
@@ -11,8 +11,9 @@ use crate::field::Field;
 /// contact jumps, impacts without flight.
 ///
 /// [`Simulation::starting_at`] chooses the model:
-/// - [`Multibody`] (the paper's eq. 11 as a constraint row of a multibody system) for a follower
-///   with one curve whose contact never jumps;
+/// - [`PresetSimulation`] (the mechanism's preset system, [`crate::cam::CamFollowerSystem`],
+///   run by the one engine, [`super::SystemSimulation`], with the paper's eq. 11 as its contact
+///   row) for a follower with one curve whose contact never jumps;
 /// - [`Reduced`] (the follower's one coordinate, driven exactly along the contact method's first
 ///   touch) for a follower whose contact jumps (gears at a tooth handover, a flat face across a
 ///   concave stretch) or that carries a second curve (a conjugate cam, a gear's coast flanks:
@@ -54,8 +55,8 @@ use crate::field::Field;
 #[derive(Debug, Clone)]
 #[allow(clippy::large_enum_variant)]
 pub enum Simulation<'a> {
-    /// the multibody model
-    Multibody(Multibody),
+    /// the mechanism's preset system in the one engine
+    Preset(PresetSimulation),
     /// the one-coordinate model
     Reduced(Reduced<'a>),
 }
@@ -81,8 +82,8 @@ impl<'a> Simulation<'a> {
         al: AugmentedLagrangian,
         theta0: f64,
     ) -> Result<Self, DynamicsError> {
-        match Multibody::starting_at(mech, params, al, theta0) {
-            Ok(m) => Ok(Self::Multibody(m)),
+        match PresetSimulation::starting_at(mech, params, al, theta0) {
+            Ok(m) => Ok(Self::Preset(m)),
             Err(DynamicsError::ContactJumps { .. } | DynamicsError::FormClosed) => {
                 Reduced::starting_at(mech, params, theta0).map(Self::Reduced)
             }
@@ -92,8 +93,8 @@ impl<'a> Simulation<'a> {
 
     /// A rough estimate of the seconds `steps` time steps take, for refusing runs of minutes up
     /// front (both front ends refuse over a minute unless asked).
-    /// - The multibody model: about 20 µs a step (a 1° step counts 43 000 instructions, about
-    ///   15 µs on a 2-core host).
+    /// - The preset system: about 40 µs a step (a 1° step counts 99 000 instructions, about
+    ///   35 µs on a 2-core host).
     /// - The one-coordinate model searches each of the follower's curves' first touch, warm and
     ///   cold, every step, and by bisection at every event: measured, 4 (an ideal gear pair at
     ///   0.5° steps) to 12 (a gear pair rattling in its backlash at 1° steps) cold searches a
@@ -101,16 +102,16 @@ impl<'a> Simulation<'a> {
     ///   and curve: for hours of work, not for seconds.
     pub fn seconds_estimate(&self, steps: f64) -> f64 {
         match self {
-            Self::Multibody(_) => steps * 2e-5,
+            Self::Preset(_) => steps * 4e-5,
             Self::Reduced(r) => steps * r.search_seconds() * 6.0,
         }
     }
 
-    /// Why a step of this model costs more than the multibody model's, for the message that
-    /// refuses a long run; `None` for the multibody model.
+    /// Why a step of this model costs more than the preset system's, for the message that
+    /// refuses a long run; `None` for the preset system.
     pub fn cost_reason(&self) -> Option<&'static str> {
         match self {
-            Self::Multibody(_) => None,
+            Self::Preset(_) => None,
             Self::Reduced(_) => Some(
                 "its contact jumps or it has a second curve: each step searches every curve's first touch",
             ),
@@ -133,7 +134,7 @@ impl<'a> Simulation<'a> {
     /// Advances by `h` seconds; the events located inside the step, in time order.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
         match self {
-            Self::Multibody(m) => m.advance(h),
+            Self::Preset(m) => m.advance(h),
             Self::Reduced(r) => r.advance(h),
         }
     }
@@ -141,7 +142,7 @@ impl<'a> Simulation<'a> {
     /// The state at the current time.
     pub fn sample(&mut self) -> Result<Sample, DynamicsError> {
         match self {
-            Self::Multibody(m) => m.sample(),
+            Self::Preset(m) => m.sample(),
             Self::Reduced(r) => r.sample(),
         }
     }
@@ -149,7 +150,7 @@ impl<'a> Simulation<'a> {
     /// The current time, s.
     pub fn time(&self) -> f64 {
         match self {
-            Self::Multibody(m) => m.time(),
+            Self::Preset(m) => m.time(),
             Self::Reduced(r) => r.time(),
         }
     }
@@ -158,7 +159,7 @@ impl<'a> Simulation<'a> {
     /// ([`FollowerDynamics::fastest_rate`]).
     pub fn fastest_rate(&self) -> (f64, Field, f64) {
         match self {
-            Self::Multibody(m) => m.fastest_rate(),
+            Self::Preset(m) => m.fastest_rate(),
             Self::Reduced(r) => r.params().fastest_rate(r.is_rotating()),
         }
     }
@@ -166,7 +167,7 @@ impl<'a> Simulation<'a> {
     /// The longest step [`Simulation::advance`] accepts, s ([`FollowerDynamics::max_step`]).
     pub fn max_step(&self) -> f64 {
         match self {
-            Self::Multibody(m) => m.max_step(),
+            Self::Preset(m) => m.max_step(),
             Self::Reduced(r) => r.params().max_step(r.is_rotating()),
         }
     }
@@ -175,16 +176,8 @@ impl<'a> Simulation<'a> {
     /// model, which moves on the contact exactly.
     pub fn constraint_residual(&self) -> Result<f64, DynamicsError> {
         match self {
-            Self::Multibody(m) => m.constraint_residual(),
+            Self::Preset(m) => m.constraint_residual(),
             Self::Reduced(_) => Ok(0.0),
-        }
-    }
-
-    /// The multibody system, for the multibody model.
-    pub fn system(&self) -> Option<&System> {
-        match self {
-            Self::Multibody(m) => Some(m.system()),
-            Self::Reduced(_) => None,
         }
     }
 }

@@ -360,3 +360,98 @@ fn al_iterate(
         residual: amax(res),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    //! The augmented Lagrangian on its own: closed-form motions under an applied torque and
+    //! gravity.
+    use super::super::model::{Constraint, ForceElement, RigidBody, System};
+    use super::AugmentedLagrangian;
+    use crate::system::{BodyId, ForceKind, JointKind};
+    use crate::{Point2, Vec2};
+
+    fn pinned(body: RigidBody, at: Point2, ground: Point2, force: ForceElement) -> System {
+        System {
+            bodies: vec![body],
+            constraints: vec![Constraint::Joint(JointKind::Revolute {
+                a: BodyId::GROUND,
+                at_a: ground,
+                b: BodyId(0),
+                at_b: at,
+            })],
+            forces: vec![force],
+            search: crate::contact::SearchOptions::default(),
+        }
+    }
+
+    #[test]
+    fn applied_torque_on_a_pinned_disc() {
+        // a disc pinned at its centre under a torque of 3 (a torsion spring of no stiffness
+        // whose preload −3 turns its second body counter-clockwise): θ̈ = τ / I, and the pin
+        // carries no force
+        let s = pinned(
+            RigidBody {
+                mass: 2.0,
+                inertia: 0.5,
+            },
+            Point2::origin(),
+            Point2::new(1.0, 2.0),
+            ForceElement::Element(ForceKind::TorsionSpring {
+                a: BodyId::GROUND,
+                b: BodyId(0),
+                stiffness: 0.0,
+                free_angle: 0.0,
+                preload: -3.0,
+            }),
+        );
+        let e = s
+            .evaluate(
+                &AugmentedLagrangian::default(),
+                0.0,
+                &[1.0, 2.0, 0.3],
+                &[0.0, 0.0, 4.0],
+                &[true],
+                &mut [None],
+            )
+            .expect("solved");
+        assert!((e.qdd[2] - 6.0).abs() < 1e-12, "{:?}", e.qdd);
+        assert!(e.qdd[0].abs() < 1e-12 && e.qdd[1].abs() < 1e-12);
+        assert!(e.lambda.iter().all(|l| l.abs() < 1e-9), "{:?}", e.lambda);
+    }
+
+    #[test]
+    fn pendulum_under_gravity() {
+        // a point mass m on a massless arm of length l pinned at the origin, angle θ from +x:
+        // θ̈ = −(g/l) cos θ (gravity −y); the body frame at the mass, the pin at (−l, 0) in it
+        let (m, l, g) = (1.5, 0.8, 9.81);
+        let s = pinned(
+            RigidBody {
+                mass: m,
+                inertia: 1e-12,
+            },
+            Point2::new(-l, 0.0),
+            Point2::origin(),
+            ForceElement::Gravity(Vec2::new(0.0, -g)),
+        );
+        for (th, w) in [(0.3f64, 1.0f64), (-1.0, -2.0), (2.0, 0.5)] {
+            let q = [l * th.cos(), l * th.sin(), th];
+            let qd = [-l * w * th.sin(), l * w * th.cos(), w];
+            let e = s
+                .evaluate(
+                    &AugmentedLagrangian::default(),
+                    0.0,
+                    &q,
+                    &qd,
+                    &[true],
+                    &mut [None],
+                )
+                .expect("solved");
+            let expect = -(g / l) * th.cos();
+            assert!(
+                (e.qdd[2] - expect).abs() < 1e-6 * expect.abs().max(1.0),
+                "θ̈ {} vs {expect}",
+                e.qdd[2],
+            );
+        }
+    }
+}

@@ -4,7 +4,7 @@
 //! A spring or damper between points `P_a` (on `a`) and `P_b` (on `b`) pulls them together with
 //! its tension `T` along `e = (P_b − P_a)/L`: `+T e` at `P_a`, `−T e` at `P_b`, each with its
 //! moment `(P − r) × F` about its body's origin (the generalized force on `(x, y, θ)`). A torsion
-//! spring's torque `τ` acts `+τ` on `a` and `−τ` on `b`.
+//! spring's (or torsion damper's) torque `τ` acts `+τ` on `a` and `−τ` on `b`.
 
 use super::{BodyId, ForceKind};
 use crate::body::BodyState;
@@ -49,7 +49,7 @@ impl ForceKind {
                         let (va, vb) = (sa.velocity_at(pa), sb.velocity_at(pb));
                         damping * e.dot(&(vb - va))
                     }
-                    ForceKind::TorsionSpring { .. } => 0.0,
+                    ForceKind::TorsionSpring { .. } | ForceKind::TorsionDamper { .. } => 0.0,
                 };
                 add(a, pa, &sa, tension * e);
                 add(b, pb, &sb, -tension * e);
@@ -63,6 +63,15 @@ impl ForceKind {
             } => {
                 let (ta, tb) = (state(a).pose.angle, state(b).pose.angle);
                 let torque = stiffness * (tb - ta - free_angle) + preload;
+                if let Some(i) = a.index() {
+                    f[3 * i + 2] += torque;
+                }
+                if let Some(i) = b.index() {
+                    f[3 * i + 2] -= torque;
+                }
+            }
+            ForceKind::TorsionDamper { a, b, damping } => {
+                let torque = damping * (state(b).omega - state(a).omega);
                 if let Some(i) = a.index() {
                     f[3 * i + 2] += torque;
                 }
@@ -101,7 +110,7 @@ impl ForceKind {
                 let x = state(b).pose.angle - state(a).pose.angle - free_angle;
                 0.5 * stiffness * x * x + preload * x
             }
-            ForceKind::Damper { .. } => 0.0,
+            ForceKind::Damper { .. } | ForceKind::TorsionDamper { .. } => 0.0,
         }
     }
 }
@@ -183,5 +192,21 @@ mod tests {
             (f[0] - 1.0).abs() < 1e-15 && (f[3] + 1.0).abs() < 1e-15,
             "{f:?}"
         );
+        // a torsion damper between bodies turning apart (b at 0.5 rad/s, a at −0.25) slows
+        // both: −c Δω on b, +c Δω on a
+        let torsion = ForceKind::TorsionDamper {
+            a: ia,
+            b: ib,
+            damping: 4.0,
+        };
+        let turning = |id: BodyId| {
+            let mut s = BodyState::at_rest(Pose::new(Point2::origin(), 0.0));
+            s.omega = if id == ib { 0.5 } else { -0.25 };
+            s
+        };
+        let mut f = [0.0; 6];
+        torsion.add_forces(turning, &mut f);
+        assert_eq!(f, [0.0, 0.0, 3.0, 0.0, 0.0, -3.0]);
+        assert_eq!(torsion.potential(turning), 0.0);
     }
 }

@@ -157,6 +157,17 @@ pub enum ForceKind {
         /// N·length at the free angle
         preload: f64,
     },
+    /// A torsion damper between two bodies' angles: torque `damping (ω_b − ω_a)`, `+` on `a`
+    /// and `−` on `b` (it resists their relative turning, as a torsion spring resists their
+    /// relative angle).
+    TorsionDamper {
+        /// the first body
+        a: BodyId,
+        /// the second body
+        b: BodyId,
+        /// N·length·s per rad
+        damping: f64,
+    },
 }
 
 impl ForceKind {
@@ -165,7 +176,8 @@ impl ForceKind {
         match *self {
             ForceKind::Spring { a, b, .. }
             | ForceKind::Damper { a, b, .. }
-            | ForceKind::TorsionSpring { a, b, .. } => [a, b],
+            | ForceKind::TorsionSpring { a, b, .. }
+            | ForceKind::TorsionDamper { a, b, .. } => [a, b],
         }
     }
 }

@@ -291,7 +291,7 @@ fn knife_global_search_finds_crossings_near_tangency() {
 #[test]
 fn simulation_across_a_contact_jump_is_refused_with_the_jump_angles() {
     use camkin::dynamics::{
-        AugmentedLagrangian, DynamicsError, FollowerDynamics, Multibody, Simulation,
+        AugmentedLagrangian, DynamicsError, FollowerDynamics, PresetSimulation, Simulation,
     };
     for f in followers() {
         for sense in [Sense::Ccw, Sense::Cw] {
@@ -310,7 +310,7 @@ fn simulation_across_a_contact_jump_is_refused_with_the_jump_angles() {
                 restitution: 0.5,
                 gravity: Vec2::zeros(),
             };
-            let r = Multibody::new(&m, params, AugmentedLagrangian::default());
+            let r = PresetSimulation::starting_at(&m, params, AugmentedLagrangian::default(), 0.0);
             let chosen = Simulation::new(&m, params, AugmentedLagrangian::default()).unwrap();
             assert_eq!(
                 matches!(chosen, Simulation::Reduced(_)),

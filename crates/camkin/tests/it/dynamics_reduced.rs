@@ -404,7 +404,7 @@ fn the_two_models_agree_where_both_apply() {
     };
     let h = 0.25f64.to_radians() / m.cam().speed();
     let mut a = Simulation::new(&m, p, AugmentedLagrangian::default()).unwrap();
-    assert!(matches!(a, Simulation::Multibody(_)));
+    assert!(matches!(a, Simulation::Preset(_)));
     let mut b = Simulation::Reduced(Reduced::starting_at(&m, p, 0.0).unwrap());
     let (mut ea, mut eb) = (Vec::new(), Vec::new());
     let mut worst: f64 = 0.0;

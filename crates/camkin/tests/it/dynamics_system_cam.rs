@@ -1,6 +1,7 @@
 //! Issue 46: a cam-follower simulated as a system (`SystemSimulation` on the preset of
-//! `Mechanism::to_system`, its spring a point spring along the slide) against today's
-//! cam-follower simulation (`Simulation`, the multibody cam model) and the closed forms of
+//! `Mechanism::to_system`, its spring a point spring along the slide built here by hand) against
+//! the cam-follower simulation (`Simulation`: the library's own preset with the follower's
+//! mass, spring and damper, issue 62) and the closed forms of
 //! `dynamics_liftoff`: an eccentric disc under a flat face, below the lift-off speed (the
 //! follower on the cam: `s = R + e cos θ`, the contact force in closed form) and above it (the
 //! lift-off's instant, each landing's instant and approach speed, both models).

@@ -13,7 +13,6 @@ mod contact_jumps;
 mod corner_contacts;
 mod dynamics_contact;
 mod dynamics_liftoff;
-mod dynamics_multibody;
 mod dynamics_reduced;
 mod dynamics_system;
 mod dynamics_system_cam;

@@ -157,7 +157,11 @@ pub struct SystemRun {
 /// A simulation of a [`crate::system::System`] (see the module docs).
 #[derive(Debug, Clone)]
 pub struct SystemSimulation<'a> {
-    sys: &'a crate::system::System,
+    /// the system: borrowed from the caller, or owned (a preset built for the run)
+    sys: std::borrow::Cow<'a, crate::system::System>,
+    /// the longest step, where the system's preset sets it from its own rule (a cam
+    /// follower's damped rate, [`super::FollowerDynamics::max_step`]) instead of the elements'
+    step_limit: Option<f64>,
     model: System,
     opts: SystemDynamicsOptions,
     /// the model's constraint index of contact 0 (joints, then drivers, then contacts)
@@ -203,6 +207,25 @@ impl<'a> SystemSimulation<'a> {
     /// (the first [`SystemSimulation::advance`] reports it).
     pub fn new(
         sys: &'a crate::system::System,
+        opts: SystemDynamicsOptions,
+    ) -> Result<Self, DynamicsError> {
+        Self::start(std::borrow::Cow::Borrowed(sys), opts)
+    }
+
+    /// As [`SystemSimulation::new`], owning the system (a preset built for the run), with the
+    /// longest step `step_limit` where the preset has its own rule.
+    pub(crate) fn owning(
+        sys: crate::system::System,
+        opts: SystemDynamicsOptions,
+        step_limit: Option<f64>,
+    ) -> Result<SystemSimulation<'static>, DynamicsError> {
+        let mut sim = SystemSimulation::start(std::borrow::Cow::Owned(sys), opts)?;
+        sim.step_limit = step_limit;
+        Ok(sim)
+    }
+
+    fn start(
+        sys: std::borrow::Cow<'a, crate::system::System>,
         opts: SystemDynamicsOptions,
     ) -> Result<Self, DynamicsError> {
         sys.check_elements()?;
@@ -351,6 +374,7 @@ impl<'a> SystemSimulation<'a> {
             .collect();
         let mut sim = Self {
             sys,
+            step_limit: None,
             model,
             opts,
             first_contact,
@@ -375,7 +399,7 @@ impl<'a> SystemSimulation<'a> {
         sim.q = q;
         // each contact's nearest (or deepest) pair of points, globally
         for k in 0..nc {
-            let c = &sys.contacts()[k];
+            let c = &sim.sys.contacts()[k];
             let (sa, sb) = (sim.state(c.a.0), sim.state(c.b.0));
             let found = contact::find_contact(
                 &Surface::new(c.curve_a.as_ref(), &sa),
@@ -473,7 +497,6 @@ impl<'a> SystemSimulation<'a> {
                         e -= b.mass * (g.x * self.q[3 * i] + g.y * self.q[3 * i + 1]);
                     }
                 }
-                _ => {}
             }
         }
         e
@@ -541,6 +564,32 @@ impl<'a> SystemSimulation<'a> {
             pairings: p[self.first_contact..].to_vec(),
             surfaces,
         })
+    }
+
+    /// The frames' coordinates, rates and accelerations now, each contact's compressive force
+    /// and each driver's effort: the part of [`SystemSample`] a preset reads back (without the
+    /// gaps, energies and Hertz pressures a sample adds). The evaluation is the one that ended
+    /// the last step.
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn motion(
+        &self,
+    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>), DynamicsError> {
+        let mut p = self.pairings.clone();
+        let (mut qdd, forces, _, efforts) =
+            self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
+        self.frame_accelerations(&self.q, &self.qd, &mut qdd);
+        let (q, qd) = self.frames(&self.q, &self.qd);
+        Ok((q.into_owned(), qd.into_owned(), qdd, forces, efforts))
+    }
+
+    /// Whether contact `k` is closed now.
+    pub(crate) fn in_contact(&self, k: usize) -> bool {
+        self.in_contact.get(k).copied().unwrap_or(false)
+    }
+
+    /// The drivers' work since the start, N·L.
+    pub(crate) fn driver_work(&self) -> f64 {
+        self.work
     }
 
     /// Contact `k`'s curves at its contact `pairing` now, where it is closed and neither curve
@@ -632,11 +681,15 @@ impl<'a> SystemSimulation<'a> {
                 crate::system::ForceKind::TorsionSpring { stiffness, .. } => {
                     (stiffness / mass(a, true).min(mass(b, true))).sqrt()
                 }
+                crate::system::ForceKind::TorsionDamper { damping, .. } => {
+                    damping / mass(a, true).min(mass(b, true))
+                }
             };
             if rate > fastest.0 {
                 let kind = match f.kind {
                     crate::system::ForceKind::Damper { .. } => "damper",
                     crate::system::ForceKind::TorsionSpring { .. } => "torsion spring",
+                    crate::system::ForceKind::TorsionDamper { .. } => "torsion damper",
                     _ => "spring",
                 };
                 fastest = (rate, format!("{kind} {:?}", f.name));
@@ -653,6 +706,9 @@ impl<'a> SystemSimulation<'a> {
 
     /// The longest step [`SystemSimulation::advance`] accepts, s.
     pub fn max_step(&self) -> f64 {
+        if let Some(h) = self.step_limit {
+            return h;
+        }
         let (rate, _) = self.fastest_rate();
         if rate > 0.0 {
             super::MAX_RATE_STEP / rate
