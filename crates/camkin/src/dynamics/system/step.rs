@@ -480,6 +480,7 @@ impl SystemSimulation<'_> {
                 max_step,
             });
         }
+        self.wrap_pairings();
         let mut events = std::mem::take(&mut self.pending);
         let end = self.t + h;
         while self.t < end - 1e-15 * end.abs().max(1.0) {
@@ -560,6 +561,26 @@ impl SystemSimulation<'_> {
             }
         }
         Ok(events)
+    }
+
+    /// Each contact's pairing parameters on a closed curve brought back into one period once
+    /// they have run a period past it: a cam turning for hundreds of revolutions drives its
+    /// parameter on without bound, and at `|u|` of thousands Newton cannot step below the
+    /// parameter's own rounding (a run of 330 revolutions stopped so). The pairing stays the same
+    /// point; the evaluation kept for the next step is asked again once (rarely).
+    fn wrap_pairings(&mut self) {
+        for (k, c) in self.sys.contacts().iter().enumerate() {
+            let Some(p) = self.pairings[self.first_contact + k].as_mut() else {
+                continue;
+            };
+            for (u, curve) in [(&mut p.u_a, &c.curve_a), (&mut p.u_b, &c.curve_b)] {
+                if let crate::curve::Domain::Periodic { period } = curve.domain() {
+                    if !(-period..=2.0 * period).contains(u) {
+                        *u = u.rem_euclid(period);
+                    }
+                }
+            }
+        }
     }
 
     /// The sub-step `τ ∈ (0, dt]` at whose end contact `k`'s force (in touch) or gap (in flight)
