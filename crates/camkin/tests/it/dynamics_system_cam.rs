@@ -196,3 +196,33 @@ fn above_lift_off_the_system_path_flies_and_lands_as_todays_model_does() {
     );
     assert!(dt < 1e-10 && dv < 1e-10, "{dt:e} {dv:e}");
 }
+
+/// Regression (issue 62): a cam simulated for hundreds of revolutions. The contact's parameter
+/// on the disc ran on without bound (−2048 after 327 revolutions of
+/// `eccentric-flat-dynamics.toml`), where Newton could not step below its rounding and the run
+/// stopped with "pairing-point search did not converge". A disc turning slowly under a follower
+/// held by gravity alone (no spring: steps of 10°) for 400 revolutions stays on the closed form
+/// `s = R + e cos θ`.
+#[test]
+fn hundreds_of_revolutions_keep_the_contact() {
+    let w = 10.0; // rad/s: e ω² = 1 m/s², under gravity's 9.81: no lift-off
+    let m = eccentric_flat(w);
+    let p = FollowerDynamics {
+        mass: M,
+        inertia: 0.0,
+        spring_stiffness: 0.0,
+        spring_preload: 0.0,
+        damping: 0.0,
+        restitution: 0.0,
+        gravity: Vec2::new(-9.81, 0.0),
+    };
+    let mut sim = Simulation::new(&m, p, AugmentedLagrangian::default()).unwrap();
+    let h = 10f64.to_radians() / w;
+    for _ in 0..400 * 36 {
+        let events = sim.advance(h).unwrap();
+        assert!(events.is_empty(), "{events:?}");
+    }
+    let s = sim.sample().unwrap();
+    let miss = (s.position - (R + E * s.cam_angle.cos())).abs();
+    assert!(s.in_contact && miss < 1e-9 * R, "{miss:e}");
+}
