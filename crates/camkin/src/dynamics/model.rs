@@ -248,13 +248,13 @@ impl System {
 #[inline(never)]
 fn joint_rows(kind: &crate::system::JointKind, q: &[f64], qd: &[f64]) -> Rows {
     let [a, b] = kind.bodies();
-    let mut evals = Vec::with_capacity(3);
+    let mut evals = crate::system::JointRows::default();
     kind.eval(&body_state(q, qd, a.0), &body_state(q, qd, b.0), &mut evals);
     let mut out = Rows {
         rows: [Row::default(); 3],
-        len: evals.len(),
+        len: evals.len,
     };
-    for (row, e) in out.rows.iter_mut().zip(&evals) {
+    for (row, e) in out.rows.iter_mut().zip(&evals.rows[..evals.len]) {
         let mut jac = [(0, 0.0); 6];
         let mut len = 0;
         for (id, g) in e.grads {

@@ -93,8 +93,8 @@ impl<'a> Simulation<'a> {
 
     /// A rough estimate of the seconds `steps` time steps take, for refusing runs of minutes up
     /// front (both front ends refuse over a minute unless asked).
-    /// - The preset system: about 40 µs a step (a 1° step counts 99 000 instructions, about
-    ///   35 µs on a 2-core host).
+    /// - The preset system: about 40 µs a step (a 1° step counts 77 000 instructions, about
+    ///   27 µs on a 2-core host).
     /// - The one-coordinate model searches each of the follower's curves' first touch, warm and
     ///   cold, every step, and by bisection at every event: measured, 4 (an ideal gear pair at
     ///   0.5° steps) to 12 (a gear pair rattling in its backlash at 1° steps) cold searches a

@@ -81,6 +81,36 @@ pub(crate) struct RowEval {
     pub(crate) gamma: f64,
 }
 
+/// Up to three rows, without allocating: what one joint gives.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct JointRows {
+    pub(crate) rows: [RowEval; 3],
+    pub(crate) len: usize,
+}
+
+impl Default for JointRows {
+    fn default() -> Self {
+        let none = RowEval {
+            value: 0.0,
+            grads: [(BodyId::GROUND, [0.0; 3]); 2],
+            gamma: 0.0,
+        };
+        Self {
+            rows: [none; 3],
+            len: 0,
+        }
+    }
+}
+
+impl Extend<RowEval> for JointRows {
+    fn extend<I: IntoIterator<Item = RowEval>>(&mut self, rows: I) {
+        for r in rows {
+            self.rows[self.len] = r;
+            self.len += 1;
+        }
+    }
+}
+
 /// An arm's world vector `ρ = R s`, the point `P = r + ρ`, and the point's velocity.
 fn arm(s: &BodyState, at: Point2) -> (Vec2, Point2, Vec2) {
     let rho = s.pose.frame().rotation * at.coords;
@@ -117,8 +147,9 @@ impl JointKind {
         }
     }
 
-    /// Its rows with the bodies in states `a` and `b` (poses and velocities).
-    pub(crate) fn eval(&self, a: &BodyState, b: &BodyState, out: &mut Vec<RowEval>) {
+    /// Its rows with the bodies in states `a` and `b` (poses and velocities), added to `out`
+    /// (a `Vec`, or a fixed buffer of three where a step must not allocate).
+    pub(crate) fn eval(&self, a: &BodyState, b: &BodyState, out: &mut impl Extend<RowEval>) {
         let [ia, ib] = self.bodies();
         match *self {
             JointKind::Revolute { at_a, at_b, .. } => pin(ia, a, at_a, ib, b, at_b, out),
@@ -126,7 +157,7 @@ impl JointKind {
                 at_a, at_b, angle, ..
             } => {
                 pin(ia, a, at_a, ib, b, at_b, out);
-                out.push(same_angle(ia, a, ib, b, angle));
+                out.extend([same_angle(ia, a, ib, b, angle)]);
             }
             JointKind::Prismatic {
                 at_a,
@@ -142,7 +173,7 @@ impl JointKind {
                 let h = pb - pa;
                 let hd = vb - va;
                 let wa = a.omega;
-                out.push(RowEval {
+                out.extend([RowEval {
                     value: n.dot(&h),
                     grads: [
                         (ia, [-n.x, -n.y, -n.dot(&rot90(rho_a)) + rot90(n).dot(&h)]),
@@ -150,8 +181,8 @@ impl JointKind {
                     ],
                     gamma: wa * wa * n.dot(&h) - 2.0 * wa * rot90(n).dot(&hd)
                         + n.dot(&(b.omega * b.omega * rho_b - wa * wa * rho_a)),
-                });
-                out.push(same_angle(ia, a, ib, b, angle));
+                }]);
+                out.extend([same_angle(ia, a, ib, b, angle)]);
             }
         }
     }
@@ -165,22 +196,24 @@ fn pin(
     ib: BodyId,
     b: &BodyState,
     at_b: Point2,
-    out: &mut Vec<RowEval>,
+    out: &mut impl Extend<RowEval>,
 ) {
     let (rho_a, pa, _) = arm(a, at_a);
     let (rho_b, pb, _) = arm(b, at_b);
     let (ta, tb) = (rot90(rho_a), rot90(rho_b));
     let g = a.omega * a.omega * rho_a - b.omega * b.omega * rho_b;
-    out.push(RowEval {
-        value: pa.x - pb.x,
-        grads: [(ia, [1.0, 0.0, ta.x]), (ib, [-1.0, 0.0, -tb.x])],
-        gamma: g.x,
-    });
-    out.push(RowEval {
-        value: pa.y - pb.y,
-        grads: [(ia, [0.0, 1.0, ta.y]), (ib, [0.0, -1.0, -tb.y])],
-        gamma: g.y,
-    });
+    out.extend([
+        RowEval {
+            value: pa.x - pb.x,
+            grads: [(ia, [1.0, 0.0, ta.x]), (ib, [-1.0, 0.0, -tb.x])],
+            gamma: g.x,
+        },
+        RowEval {
+            value: pa.y - pb.y,
+            grads: [(ia, [0.0, 1.0, ta.y]), (ib, [0.0, -1.0, -tb.y])],
+            gamma: g.y,
+        },
+    ]);
 }
 
 /// `θ_b − θ_a − angle = 0`.

@@ -46,6 +46,7 @@ pub use coil_spring::CoilSpring;
 pub use driver::{Coordinate, Driver, Law};
 pub use error::SystemError;
 pub use jerk::BodyJerk;
+pub(crate) use joint::JointRows;
 pub use joint::{Joint, JointKind};
 pub use solve::{ContactState, Instants, SystemState, SystemSweep};
 pub use table_force::TableForce;

@@ -191,6 +191,10 @@ pub struct SystemSimulation<'a> {
     /// the last evaluation of the equations of motion: a step's end is evaluated by its force
     /// check, then by the sample, then by the next step's first stage — once
     pub(super) last: std::cell::RefCell<Option<step::Evaluated>>,
+    /// buffers an evaluation reuses
+    pub(super) scratch: std::cell::RefCell<step::Scratch>,
+    /// the inverse of the mass matrix's diagonal, one per coordinate
+    pub(super) inv_mass: Vec<f64>,
 }
 
 /// Most events in one call of [`SystemSimulation::advance`].
@@ -392,7 +396,15 @@ impl<'a> SystemSimulation<'a> {
             work: 0.0,
             pending: Vec::new(),
             last: std::cell::RefCell::new(None),
+            scratch: Default::default(),
+            inv_mass: Vec::new(),
         };
+        sim.inv_mass = sim
+            .model
+            .bodies
+            .iter()
+            .flat_map(|b| [1.0 / b.mass, 1.0 / b.mass, 1.0 / b.inertia])
+            .collect();
         // the coordinates integrated are the centres of mass'
         let mut q = std::mem::take(&mut sim.q);
         sim.centres_at(&mut q);
@@ -463,9 +475,16 @@ impl<'a> SystemSimulation<'a> {
 
     /// The rows that hold in the modes `in_contact`: joints and drivers always.
     fn active(&self, in_contact: &[bool]) -> Vec<bool> {
-        let mut a = vec![true; self.first_contact];
-        a.extend_from_slice(in_contact);
+        let mut a = Vec::new();
+        self.active_into(in_contact, &mut a);
         a
+    }
+
+    /// [`SystemSimulation::active`] written into `a` (its buffer reused).
+    fn active_into(&self, in_contact: &[bool], a: &mut Vec<bool>) {
+        a.clear();
+        a.resize(self.first_contact, true);
+        a.extend_from_slice(in_contact);
     }
 
     /// The largest `|Φ|` of the active rows now, L (angles' rows in rad): the drift.

@@ -4,35 +4,50 @@
 
 use super::super::model::Row;
 
+/// Up to this many rows `S` is built whole from the rows' entries (a cam and its follower have
+/// six): cheaper than bucketing the entries by coordinate.
+const DENSE_ROWS: usize = 12;
+
 /// `S` factored (`S = L Lᵀ`), `L` kept row by row within each row's envelope: row `i` from its
 /// first nonzero column `first[i]` to the diagonal, at `start[i]` of `l` (a skyline: a chain's
-/// rows touch their neighbours only, so `L` holds a few entries a row, not `m²`).
-pub(super) struct Schur {
+/// rows touch their neighbours only, so `L` holds a few entries a row, not `m²`). Its buffers
+/// are kept from one factorisation to the next ([`Schur::factor`]): a simulation's step
+/// allocates nothing for it.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Schur {
     l: Vec<f64>,
     m: usize,
     /// each row's first nonzero column of `L`
     first: Vec<usize>,
     /// where each row's envelope starts in `l`
     start: Vec<usize>,
+    /// the rows' entries bucketed by coordinate, with the buckets' bounds and fill positions
+    entries: Vec<(usize, f64)>,
+    count: Vec<usize>,
+    next: Vec<usize>,
+    diagonal: Vec<f64>,
+    /// `Φ_q M⁻¹` dense, for a few rows
+    weighted: Vec<f64>,
 }
 
 impl Schur {
-    /// Entry `(i, j)` of `L` (`first[i] ≤ j ≤ i`) in `l`.
-    #[inline(always)]
-    fn at(&self, i: usize, j: usize) -> usize {
-        self.start[i] + j - self.first[i]
-    }
-
-    /// `S` of `rows` with the inverse masses `inv_mass` (one per coordinate), factored; `None`
-    /// where the rows are dependent (a pivot, squared, below 1e-12 of its row's own size). The
-    /// factor keeps to each row's envelope (from its first nonzero column): a chain's rows
-    /// touch their neighbours only.
-    pub(super) fn new(rows: &[Row], inv_mass: &[f64]) -> Option<Self> {
+    /// Factors `S` of `rows` with the inverse masses `inv_mass` in place, reusing the buffers;
+    /// `false` where the rows are dependent (a pivot, squared, below 1e-12 of its row's own
+    /// size). The factor keeps to each row's envelope (from its first nonzero column): a
+    /// chain's rows touch their neighbours only.
+    pub(super) fn factor(&mut self, rows: &[Row], inv_mass: &[f64]) -> bool {
         let m = rows.len();
         let n = inv_mass.len();
+        self.m = m;
+        if m <= DENSE_ROWS {
+            self.fill_dense(rows, inv_mass);
+            return self.cholesky();
+        }
         // every entry, bucketed by coordinate (a counting sort): S[a][b] sums over the
         // coordinates rows a and b share
-        let mut count = vec![0usize; n + 1];
+        let count = &mut self.count;
+        count.clear();
+        count.resize(n + 1, 0);
         for row in rows {
             for &(c, _) in row.jac() {
                 count[c + 1] += 1;
@@ -41,17 +56,22 @@ impl Schur {
         for c in 0..n {
             count[c + 1] += count[c];
         }
-        let mut entries = vec![(0usize, 0.0f64); count[n]];
-        let mut next = count.clone();
+        let entries = &mut self.entries;
+        entries.clear();
+        entries.resize(count[n], (0, 0.0));
+        self.next.clear();
+        self.next.extend_from_slice(count);
         for (r, row) in rows.iter().enumerate() {
             for &(c, v) in row.jac() {
-                entries[next[c]] = (r, v);
-                next[c] += 1;
+                entries[self.next[c]] = (r, v);
+                self.next[c] += 1;
             }
         }
         // each row's first nonzero column: the lowest row it shares a coordinate with (rows
         // are in increasing order within a bucket); the factor's fill stays within it
-        let mut first: Vec<usize> = (0..m).collect();
+        let first = &mut self.first;
+        first.clear();
+        first.extend(0..m);
         for c in 0..n {
             let group = &entries[count[c]..count[c + 1]];
             if let Some(&(lowest, _)) = group.first() {
@@ -60,33 +80,68 @@ impl Schur {
                 }
             }
         }
-        let mut start = Vec::with_capacity(m + 1);
+        let start = &mut self.start;
+        start.clear();
         let mut size = 0;
         for (i, &f) in first.iter().enumerate() {
             start.push(size);
             size += i + 1 - f;
         }
-        let mut schur = Self {
-            l: vec![0.0; size],
-            m,
-            first,
-            start,
-        };
+        let l = &mut self.l;
+        l.clear();
+        l.resize(size, 0.0);
         for c in 0..n {
             let group = &entries[count[c]..count[c + 1]];
             let w = inv_mass[c];
             for (i, &(a, va)) in group.iter().enumerate() {
                 for &(b, vb) in &group[..=i] {
-                    let k = schur.at(a, b);
-                    schur.l[k] += va * w * vb;
+                    l[start[a] + b - first[a]] += va * w * vb;
                 }
             }
         }
-        let diagonal: Vec<f64> = (0..m).map(|a| schur.l[schur.at(a, a)]).collect();
-        // Cholesky within the envelope: L[i][j] is zero left of row i's first column
+        self.cholesky()
+    }
+
+    /// `S` of a few rows whole (every row's envelope from column 0): `Φ_q M⁻¹` scattered dense
+    /// (`m × n`), each entry of `S` its row's dot product with another row's (at most six)
+    /// entries.
+    fn fill_dense(&mut self, rows: &[Row], inv_mass: &[f64]) {
+        let (m, n) = (rows.len(), inv_mass.len());
+        self.first.clear();
+        self.first.resize(m, 0);
+        self.start.clear();
+        self.start.extend((0..m).map(|i| i * (i + 1) / 2));
+        self.l.clear();
+        self.l.resize(m * (m + 1) / 2, 0.0);
+        let weighted = &mut self.weighted;
+        weighted.clear();
+        weighted.resize(m * n, 0.0);
+        for (a, ra) in rows.iter().enumerate() {
+            for &(c, v) in ra.jac() {
+                weighted[a * n + c] += v * inv_mass[c];
+            }
+        }
+        for (a, wa) in weighted.chunks_exact(n).enumerate() {
+            for (b, rb) in rows[..=a].iter().enumerate() {
+                self.l[self.start[a] + b] = rb.jac().iter().map(|&(c, v)| wa[c] * v).sum();
+            }
+        }
+    }
+
+    /// Cholesky of `S` (filled in `l`) within the envelope: `false` where a pivot, squared,
+    /// falls below 1e-12 of its row's own size (dependent rows).
+    fn cholesky(&mut self) -> bool {
+        let m = self.m;
         let Self {
-            l, first, start, ..
-        } = &mut schur;
+            l,
+            first,
+            start,
+            diagonal,
+            ..
+        } = self;
+        diagonal.clear();
+        diagonal.extend((0..m).map(|a| l[start[a] + a - first[a]]));
+        // L[i][j] is zero left of row i's first column
         for i in 0..m {
             let (fi, si) = (first[i], start[i]);
             for j in fi..=i {
@@ -101,7 +156,7 @@ impl Schur {
                 }
                 if j == i {
                     if !(s > 1e-12 * diagonal[i]) {
-                        return None;
+                        return false;
                     }
                     l[si + i - fi] = s.sqrt();
                 } else {
@@ -109,7 +164,7 @@ impl Schur {
                 }
             }
         }
-        Some(schur)
+        true
     }
 
     /// Solves `S μ = b` in place (`L y = b`, then `Lᵀ μ = y`, within the envelope).

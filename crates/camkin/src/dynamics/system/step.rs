@@ -13,9 +13,24 @@ use crate::contact::{self, Pairing, Surface};
 /// `(q̈, each contact's compressive force, the drivers' power, each driver's effort)`.
 type Accel = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
 
+/// Buffers a step reuses from one evaluation to the next (nothing of them outlives a call).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Scratch {
+    /// the active rows, sparse
+    rows: Vec<Row>,
+    /// their stabilised right-hand sides `γ̃`
+    rhs: Vec<f64>,
+    /// which constraints hold
+    active: Vec<bool>,
+    /// the residual of the refinement step
+    delta: Vec<f64>,
+    /// the Schur complement's factor
+    schur: Schur,
+}
+
 /// An evaluation kept: the state and modes it was at, the pairings it started from and ended
 /// with, and its answer.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub(crate) struct Evaluated {
     t: f64,
     q: Vec<f64>,
@@ -66,17 +81,31 @@ impl SystemSimulation<'_> {
                 return Ok(e.answer.clone());
             }
         }
-        let before = pairings.to_vec();
+        // the kept evaluation's buffers are reused: marked stale (its time NaN) until the new
+        // one has succeeded
+        {
+            let mut last = self.last.borrow_mut();
+            let e = last.get_or_insert_with(Evaluated::default);
+            e.t = f64::NAN;
+            e.before.clear();
+            e.before.extend_from_slice(pairings);
+        }
         let answer = self.evaluate(t, q, qd, in_contact, pairings)?;
-        *self.last.borrow_mut() = Some(Evaluated {
-            t,
-            q: q.to_vec(),
-            qd: qd.to_vec(),
-            modes: in_contact.to_vec(),
-            before,
-            after: pairings.to_vec(),
-            answer: answer.clone(),
-        });
+        if let Some(e) = self.last.borrow_mut().as_mut() {
+            e.t = t;
+            e.q.clear();
+            e.q.extend_from_slice(q);
+            e.qd.clear();
+            e.qd.extend_from_slice(qd);
+            e.modes.clear();
+            e.modes.extend_from_slice(in_contact);
+            e.after.clear();
+            e.after.extend_from_slice(pairings);
+            e.answer.0.clone_from(&answer.0);
+            e.answer.1.clone_from(&answer.1);
+            e.answer.2 = answer.2;
+            e.answer.3.clone_from(&answer.3);
+        }
         Ok(answer)
     }
 
@@ -89,7 +118,9 @@ impl SystemSimulation<'_> {
         in_contact: &[bool],
         pairings: &mut [Option<Pairing>],
     ) -> Result<Accel, DynamicsError> {
-        let active = self.active(in_contact);
+        let mut active = std::mem::take(&mut self.scratch.borrow_mut().active);
+        self.active_into(in_contact, &mut active);
+        // (an early return leaves the buffer to be made again)
         let (qdd, lambda, gas_power) = match self.direct(t, q, qd, &active, pairings)? {
             Some(x) => x,
             // forces from tables of the crank angle are not in the model the augmented
@@ -137,6 +168,7 @@ impl SystemSimulation<'_> {
             }
             r += c.rows();
         }
+        self.scratch.borrow_mut().active = active;
         Ok((qdd, forces, power, efforts))
     }
 
@@ -158,10 +190,17 @@ impl SystemSimulation<'_> {
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
         let (qf, qdf) = self.frames(q, qd);
         let arms = self.arms(q);
-        // the active rows, sparse (at most six entries each), their γ̃, and Φ_q dense
-        let m = self.active_rows(active);
-        let mut sparse = Vec::with_capacity(m);
-        let mut rhs = Vec::with_capacity(m);
+        // the active rows, sparse (at most six entries each), and their γ̃
+        let mut guard = self.scratch.borrow_mut();
+        let Scratch {
+            rows: sparse,
+            rhs,
+            delta,
+            schur,
+            ..
+        } = &mut *guard;
+        sparse.clear();
+        rhs.clear();
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
                 continue;
@@ -179,18 +218,18 @@ impl SystemSimulation<'_> {
                 sparse.push(row);
             }
         }
-        let inv_mass = self.inv_mass();
+        let inv_mass = &self.inv_mass;
         let mut force = vec![0.0; n];
         self.model.forces(&qf, &qdf, &mut force);
         let gas_power = self.add_table_forces(t, &qf, &qdf, &mut force);
         self.forces_about_centres(q, &mut force);
-        let Some(schur) = Schur::new(&sparse, &inv_mass) else {
+        if !schur.factor(sparse, inv_mass) {
             return Ok(None);
-        };
+        }
         // S λ = Φ_q M⁻¹ Q − γ̃
         let mut lambda: Vec<f64> = sparse
             .iter()
-            .zip(&rhs)
+            .zip(rhs.iter())
             .map(|(row, &g)| {
                 row.jac()
                     .iter()
@@ -206,7 +245,7 @@ impl SystemSimulation<'_> {
                 qdd[col] -= v * l;
             }
         }
-        for (x, w) in qdd.iter_mut().zip(&inv_mass) {
+        for (x, w) in qdd.iter_mut().zip(inv_mass) {
             *x *= w;
         }
         // one step of iterative refinement: `q̈ = M⁻¹ (Q − Φ_qᵀ λ)` is a difference of forces
@@ -214,13 +253,15 @@ impl SystemSimulation<'_> {
         // against the contact's), so `Φ_q q̈` misses `γ̃` by their rounding; the residual,
         // solved with the same factor, puts the accelerations on their rows to their own
         // rounding (a follower in contact then moves as the kinematics to 1e-14 of its peak)
-        let mut delta: Vec<f64> = sparse
-            .iter()
-            .zip(&rhs)
-            .map(|(row, &g)| g - row.jac().iter().map(|&(c, v)| v * qdd[c]).sum::<f64>())
-            .collect();
-        schur.solve(&mut delta);
-        for ((row, &d), l) in sparse.iter().zip(&delta).zip(lambda.iter_mut()) {
+        delta.clear();
+        delta.extend(
+            sparse
+                .iter()
+                .zip(rhs.iter())
+                .map(|(row, &g)| g - row.jac().iter().map(|&(c, v)| v * qdd[c]).sum::<f64>()),
+        );
+        schur.solve(delta);
+        for ((row, &d), l) in sparse.iter().zip(delta.iter()).zip(lambda.iter_mut()) {
             *l -= d;
             for &(col, v) in row.jac() {
                 qdd[col] += inv_mass[col] * v * d;
@@ -318,29 +359,49 @@ impl SystemSimulation<'_> {
     pub(super) fn project(&mut self) -> Result<(), DynamicsError> {
         let mut pairings = self.pairings.clone();
         let modes = self.in_contact.clone();
-        let inv_mass = self.inv_mass();
+        // the factor's buffers are the evaluations' (none is running now)
+        let mut schur = std::mem::take(&mut self.scratch.get_mut().schur);
+        let done = self.project_with(&mut schur, &modes, &mut pairings);
+        self.scratch.get_mut().schur = schur;
+        match done? {
+            true => {
+                self.pairings = pairings;
+                Ok(())
+            }
+            false => self.project_dense(),
+        }
+    }
+
+    /// [`SystemSimulation::project`] with `schur`'s buffers; `false` where the rows are
+    /// dependent (the positions as far as they were moved: the dense projection goes on from
+    /// there).
+    fn project_with(
+        &mut self,
+        schur: &mut Schur,
+        modes: &[bool],
+        pairings: &mut [Option<Pairing>],
+    ) -> Result<bool, DynamicsError> {
         let (mut rows, mut phi, mut target) =
-            self.sparse_rows(&self.q, &self.qd, &modes, &mut pairings)?;
+            self.sparse_rows(&self.q, &self.qd, modes, pairings)?;
         for _ in 0..8 {
             if phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
                 break;
             }
-            let Some(schur) = Schur::new(&rows, &inv_mass) else {
-                return self.project_dense();
-            };
+            if !schur.factor(&rows, &self.inv_mass) {
+                return Ok(false);
+            }
             let b: Vec<f64> = phi.iter().map(|p| -p).collect();
-            let dq = sparse::project(&rows, &inv_mass, &schur, &vec![0.0; self.q.len()], &b);
+            let dq = sparse::project(&rows, &self.inv_mass, schur, &vec![0.0; self.q.len()], &b);
             for (q, d) in self.q.iter_mut().zip(&dq) {
                 *q += d;
             }
-            (rows, phi, target) = self.sparse_rows(&self.q, &self.qd, &modes, &mut pairings)?;
+            (rows, phi, target) = self.sparse_rows(&self.q, &self.qd, modes, pairings)?;
         }
-        let Some(schur) = Schur::new(&rows, &inv_mass) else {
-            return self.project_dense();
-        };
-        self.qd = sparse::project(&rows, &inv_mass, &schur, &self.qd, &target);
-        self.pairings = pairings;
-        Ok(())
+        if !schur.factor(&rows, &self.inv_mass) {
+            return Ok(false);
+        }
+        self.qd = sparse::project(&rows, &self.inv_mass, schur, &self.qd, &target);
+        Ok(true)
     }
 
     /// Adds the forces from tables of the crank angle at `t` to `f`; their power.
@@ -373,15 +434,6 @@ impl SystemSimulation<'_> {
             .filter(|(_, &a)| a)
             .map(|(c, _)| c.rows())
             .sum()
-    }
-
-    /// The inverse of the mass matrix's diagonal, one per coordinate.
-    fn inv_mass(&self) -> Vec<f64> {
-        self.model
-            .bodies
-            .iter()
-            .flat_map(|b| [1.0 / b.mass, 1.0 / b.mass, 1.0 / b.inertia])
-            .collect()
     }
 
     /// The active rows at `(q, q̇)`, sparse, with `Φ` and the rate each must have (`−Φ_t`).
