@@ -151,7 +151,7 @@ impl MotionUnitArgs {
         mech: &camkin::cam::Mechanism,
     ) -> Result<camkin::table::AngleUnit, crate::Failure> {
         match self.angle_unit {
-            Some(u) if matches!(mech.follower_joint(), camkin::cam::Joint::Translating { .. }) => {
+            Some(u) if matches!(mech.follower_joint(), camkin::cam::FollowerJoint::Translating { .. }) => {
                 Err(crate::Failure::Input(anyhow::anyhow!(
                     "--angle-unit {}: the follower slides (its coordinate is a length, in the file's unit); --angle-unit is an arm's",
                     match u {

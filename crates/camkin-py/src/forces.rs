@@ -3,7 +3,7 @@
 use crate::columns::Columns;
 use crate::errors;
 use crate::mech::PyMechanism;
-use camkin::lubrication::{FilmFormula, Friction, Lubricant, LubricantError, Surface};
+use camkin::lubrication::{FilmFormula, Friction, Lubricant, LubricantError, SurfaceProperties};
 use camkin::report::{
     ForceField, ForceReport, ForceRequest, LubricationRequest, Materials, ReportError,
 };
@@ -137,7 +137,7 @@ pub(crate) fn lubrication(
     Ok(Some(LubricationRequest {
         lubricant,
         formula: formula.or(from_file.map(|f| f.formula)).unwrap_or_default(),
-        surfaces: [0, 1].map(|i| Surface {
+        surfaces: [0, 1].map(|i| SurfaceProperties {
             roughness: rq[i],
             thermal: thermal[i],
         }),

@@ -8,7 +8,9 @@
 use crate::body::Pose;
 use crate::cam::{Cam, Follower, Mechanism, Sense};
 use crate::curve::{Circle, ClosedSpline, Ellipse, Line};
-use crate::system::{Body, BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
+use crate::system::{
+    Body, BodyId, Contact, Coordinate, Driver, DriverLaw, Joint, JointKind, System,
+};
 use crate::{Point2, Vec2};
 use std::sync::Arc;
 
@@ -108,7 +110,7 @@ pub fn single_valve_train(w: f64) -> (System, [BodyId; 3]) {
         name: "crank".into(),
         body: cam,
         coordinate: Coordinate::Angle,
-        law: Law::linear(0.0, w),
+        law: DriverLaw::linear(0.0, w),
     });
     sys.add_contact(Contact {
         name: "cam on roller".into(),

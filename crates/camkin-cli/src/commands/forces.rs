@@ -11,7 +11,7 @@ use crate::Failure;
 use anyhow::anyhow;
 use camkin::lubrication::{
     plausible_friction, roughness_from_um, FilmFormula, Friction, Lubricant, LubricantError,
-    Surface, FRICTION_RULE, ROUGHNESS_RULE,
+    SurfaceProperties, FRICTION_RULE, ROUGHNESS_RULE,
 };
 use camkin::report::{
     rpm, ForceField, ForceReport, ForceRequest, LubricationRequest, Materials, ReportError,
@@ -244,7 +244,7 @@ pub(super) fn lubrication_request(
             .map(|f| f.0)
             .or(from_file.map(|f| f.formula))
             .unwrap_or_default(),
-        surfaces: [0, 1].map(|i| Surface {
+        surfaces: [0, 1].map(|i| SurfaceProperties {
             roughness: rq[i],
             thermal: thermal[i],
         }),

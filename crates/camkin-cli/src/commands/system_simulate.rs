@@ -196,7 +196,7 @@ fn quasi_static(
 ) -> Result<Vec<SystemSample>, DynamicsError> {
     let mut sys = built.system.clone();
     if let Some(d) = sys.drivers().first().cloned() {
-        if let camkin::system::Law::Quadratic {
+        if let camkin::system::DriverLaw::Quadratic {
             start,
             rate,
             acceleration,
@@ -204,7 +204,7 @@ fn quasi_static(
         {
             sys.set_driver_law(
                 0,
-                camkin::system::Law::Quadratic {
+                camkin::system::DriverLaw::Quadratic {
                     start,
                     rate: 0.1 * rate,
                     acceleration: 0.01 * acceleration,

@@ -21,7 +21,8 @@
 //! (`s' = −s`: a slide's first touch always comes from `s = +∞`).
 
 use super::{
-    CamError, Contact, Follower, FollowerProfile, FollowerState, Instant, Joint, Mechanism, Sense,
+    CamError, Contact, Follower, FollowerJoint, FollowerProfile, FollowerState, Instant, Mechanism,
+    Sense,
 };
 use crate::curve::{Curve, Derivs, Domain};
 use crate::field::{Field, ProfileField};
@@ -115,7 +116,7 @@ impl Mechanism {
         }
         let pivot = self.touch.cam.pivot;
         let (follower, flip) = match self.touch.geometry.joint {
-            Joint::Translating { origin, direction } => (
+            FollowerJoint::Translating { origin, direction } => (
                 Follower::Translating {
                     direction: -*direction,
                     // the origin is the cam axis moved by e·rot90(d) = (−e)·rot90(−d)
@@ -124,7 +125,7 @@ impl Mechanism {
                 },
                 true,
             ),
-            Joint::Rotating {
+            FollowerJoint::Rotating {
                 pivot: o,
                 closing,
                 initial_angle,

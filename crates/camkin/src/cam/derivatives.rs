@@ -6,7 +6,7 @@
 use super::follower::carried::Carried;
 use super::follower::Kind as _;
 use super::linear::{solve2, solve3};
-use super::{CamError, Joint, Mechanism, StopReason, Touch};
+use super::{CamError, FollowerJoint, Mechanism, StopReason, Touch};
 use crate::body::BodyState;
 use crate::cam::instant::Instant;
 use crate::curve::Derivs;
@@ -96,11 +96,11 @@ pub(crate) fn carried_jet_derivatives(
         // the follower's frame at q: a slide's keeps its angle 0 (the curve was turned to
         // the world's axes when it was carried), an arm's turns by q
         let (xb, xb1) = match mech.touch.geometry.joint {
-            Joint::Translating { origin, direction } => (
+            FollowerJoint::Translating { origin, direction } => (
                 V2::c(origin.coords) + V2::c(*direction).scale(Jet(q)) + y,
                 y1,
             ),
-            Joint::Rotating { pivot, .. } => {
+            FollowerJoint::Rotating { pivot, .. } => {
                 let (sin, cos) = Jet(q).sin_cos();
                 (
                     turned((cos, sin), y) + V2::c(pivot.coords),

@@ -6,7 +6,8 @@ use super::instant::Instant;
 use super::summary::ProfileSummary;
 use super::{
     bracket_samples, AnalysisOptions, Cam, CamError, Contact, DesignChecks, Follower,
-    FollowerCurve, FollowerState, Found, IndependentCheck, Joint, Mechanism, Motion, Sweep, Travel,
+    FollowerCurve, FollowerJoint, FollowerState, Found, IndependentCheck, Mechanism, Motion, Sweep,
+    Travel,
 };
 use crate::curve::{Curve, Domain};
 use crate::field::{Field, ProfileField};
@@ -100,7 +101,7 @@ impl Mechanism {
     }
 
     /// The joint that carries the follower.
-    pub fn follower_joint(&self) -> Joint {
+    pub fn follower_joint(&self) -> FollowerJoint {
         self.touch.geometry.joint
     }
 

@@ -45,7 +45,7 @@ pub use conjugate::ConjugateSweep;
 pub use contacts::Contact;
 pub use error::{CamError, StopReason};
 pub use first_touch::starts::MAX_CANDIDATES;
-pub use follower::{Follower, FollowerCurve, FollowerProfile, Joint, Sense, LENGTH_RANGE};
+pub use follower::{Follower, FollowerCurve, FollowerJoint, FollowerProfile, Sense, LENGTH_RANGE};
 pub use jumps::{contact_jumps, contact_jumps_with};
 pub use mechanism::SWEEP_CHUNK;
 pub use options::AnalysisOptions;

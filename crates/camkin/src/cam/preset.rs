@@ -9,11 +9,11 @@
 //! jerk on every follower kind). The preset is how a cam-follower becomes part of a larger
 //! mechanism (a cam driving a linkage) and how the two routes check each other.
 
-use super::{CamError, Joint, Mechanism};
+use super::{CamError, FollowerJoint, Mechanism};
 use crate::body::Pose;
 use crate::geometry::Point2;
 use crate::system::{
-    Body, BodyId, Contact, Coordinate, Driver, JointKind, Law, System, SystemState,
+    Body, BodyId, Contact, Coordinate, Driver, DriverLaw, JointKind, System, SystemState,
 };
 
 /// A cam-follower mechanism as a system, with its bodies' ids.
@@ -27,7 +27,7 @@ pub struct CamFollowerSystem {
     /// the follower
     pub follower: BodyId,
     /// the follower's joint, to read its coordinate back from a body's state
-    pub joint: Joint,
+    pub joint: FollowerJoint,
     /// the cam's speed at `t = 0`, rad/s
     pub speed: f64,
     /// the cam's angular acceleration, rad/s², in its own direction
@@ -118,7 +118,7 @@ impl CamFollowerSystem {
             name: "cam drive".into(),
             body: cam_body,
             coordinate: Coordinate::Angle,
-            law: Law::Quadratic {
+            law: DriverLaw::Quadratic {
                 start: sense * theta0,
                 rate: sense * cam.speed(),
                 acceleration: sense * cam.angular_acceleration(),

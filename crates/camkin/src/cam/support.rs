@@ -12,10 +12,10 @@
 //!
 //! What the check shares with the contact method is only its input: the profile's positions,
 //! the joint and contact curve of the follower, and the cam-angle convention. It matches on the
-//! joint's kind itself (slide or pivot) rather than call [`Joint`]'s methods, so that the
+//! joint's kind itself (slide or pivot) rather than call [`FollowerJoint`]'s methods, so that the
 //! geometry of the check shares no code with the method it checks.
 
-use super::{CamError, FollowerCurve, Joint, Mechanism};
+use super::{CamError, FollowerCurve, FollowerJoint, Mechanism};
 use crate::geometry::{Point2, Vec2};
 use std::f64::consts::{PI, TAU};
 
@@ -78,12 +78,12 @@ pub(crate) fn independent_check(
     let (w, al) = (mech.touch.cam.speed, mech.touch.cam.angular_acceleration);
     let reach = mech.touch.size
         + match mech.follower_joint() {
-            Joint::Rotating { pivot, .. } => (pivot - mech.touch.cam.pivot).norm(),
-            Joint::Translating { .. } => 0.0,
+            FollowerJoint::Rotating { pivot, .. } => (pivot - mech.touch.cam.pivot).norm(),
+            FollowerJoint::Translating { .. } => 0.0,
         };
     let q_length = |dq: f64| match mech.follower_joint() {
-        Joint::Rotating { .. } => dq.abs() * reach,
-        Joint::Translating { .. } => dq.abs(),
+        FollowerJoint::Rotating { .. } => dq.abs() * reach,
+        FollowerJoint::Translating { .. } => dq.abs(),
     };
     let mut out = IndependentCheck {
         angles: 0,
@@ -102,8 +102,8 @@ pub(crate) fn independent_check(
             continue;
         };
         let dq = match mech.follower_joint() {
-            Joint::Rotating { .. } => wrap_near_zero(s.position - centre.q),
-            Joint::Translating { .. } => s.position - centre.q,
+            FollowerJoint::Rotating { .. } => wrap_near_zero(s.position - centre.q),
+            FollowerJoint::Translating { .. } => s.position - centre.q,
         };
         out.position = out.position.max(q_length(dq) / mech.touch.size);
         let Some((d1, d2)) = differences(mech, theta, centre) else {
@@ -154,7 +154,7 @@ fn differences(mech: &Mechanism, theta: f64, centre: Support) -> Option<(f64, f6
             let x: Vec<f64> = ks.iter().map(|&k| k as f64 * h).collect();
             let w = fornberg(&x, 2);
             let mut q: Vec<f64> = nodes.iter().map(|n| n.q).collect();
-            if let Joint::Rotating { .. } = mech.follower_joint() {
+            if let FollowerJoint::Rotating { .. } = mech.follower_joint() {
                 for v in &mut q {
                     *v = centre.q + wrap_near_zero(*v - centre.q);
                 }
@@ -199,7 +199,7 @@ fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
     // a rotating follower: compare angles on the branch centred on the cam's axis, report
     // them within ±180° of the initial angle
     let (branch, report) = match joint {
-        Joint::Rotating {
+        FollowerJoint::Rotating {
             pivot: o,
             initial_angle,
             ..
@@ -207,7 +207,7 @@ fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
             let d = pivot - o;
             (d.y.atan2(d.x), Some(initial_angle))
         }
-        Joint::Translating { .. } => (0.0, None),
+        FollowerJoint::Translating { .. } => (0.0, None),
     };
     let report = |s: Support| Support {
         q: report.map_or(s.q, |a| a + wrap_near_zero(s.q - a)),
@@ -327,16 +327,16 @@ fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
 ///
 /// A rotating follower's angles are taken within ±180° of `branch` (the direction from its
 /// pivot to the cam's axis), where the angles that touch the cam form one interval.
-fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2, branch: f64) -> Option<f64> {
+fn touch(joint: &FollowerJoint, curve: &FollowerCurve, p: Point2, branch: f64) -> Option<f64> {
     match (*joint, curve) {
-        (Joint::Translating { origin, direction }, FollowerCurve::Line(line)) => {
+        (FollowerJoint::Translating { origin, direction }, FollowerCurve::Line(line)) => {
             // outside distance g(q) = −m·(p − origin − q d − a), m into the material: the
             // follower closes by decreasing q, so g must fall with q: m·d > 0
             let m = left(line.direction());
             let md = m.dot(&direction);
             (md > 0.0).then(|| m.dot(&(p - origin - line.anchor().coords)) / md)
         }
-        (Joint::Rotating { pivot, closing, .. }, curve) => {
+        (FollowerJoint::Rotating { pivot, closing, .. }, curve) => {
             // in polar form about the pivot, the boundary passes through p where
             // cos(ψ − γ − q) = k; it enters the follower (turning in the closing sense κ) at
             // q = ψ − γ − κ acos k
@@ -362,13 +362,13 @@ fn touch(joint: &Joint, curve: &FollowerCurve, p: Point2, branch: f64) -> Option
 /// For a knife edge with its tip at `tip` in the follower frame: `(f, q)` where `f` changes sign
 /// where the world point `p` crosses the tip's path and `q` is the coordinate putting the tip
 /// at `p` there.
-fn crossing(joint: &Joint, tip: Vec2, p: Point2, branch: f64) -> (f64, f64) {
+fn crossing(joint: &FollowerJoint, tip: Vec2, p: Point2, branch: f64) -> (f64, f64) {
     match *joint {
-        Joint::Translating { origin, direction } => {
+        FollowerJoint::Translating { origin, direction } => {
             let w = p - origin - tip;
             (w.dot(&left(*direction)), w.dot(&direction))
         }
-        Joint::Rotating { pivot, .. } => {
+        FollowerJoint::Rotating { pivot, .. } => {
             let y = p - pivot;
             let q = y.y.atan2(y.x) - tip.y.atan2(tip.x);
             (y.norm() - tip.norm(), branch + wrap_near_zero(q - branch))
@@ -377,10 +377,10 @@ fn crossing(joint: &Joint, tip: Vec2, p: Point2, branch: f64) -> (f64, f64) {
 }
 
 /// `q` oriented so that larger touches earlier.
-fn oriented(joint: &Joint, q: f64) -> f64 {
+fn oriented(joint: &FollowerJoint, q: f64) -> f64 {
     match joint {
-        Joint::Translating { .. } => q,
-        Joint::Rotating { closing, .. } => -closing.sign() * q,
+        FollowerJoint::Translating { .. } => q,
+        FollowerJoint::Rotating { closing, .. } => -closing.sign() * q,
     }
 }
 

@@ -20,7 +20,7 @@
 use super::follower::{check_params, Event, EventKind, FollowerDynamics, Sample};
 use super::system::{ContactEvent, SystemDynamicsOptions, SystemSimulation};
 use super::{AugmentedLagrangian, DynamicsError};
-use crate::cam::{CamFollowerSystem, Joint, Mechanism};
+use crate::cam::{CamFollowerSystem, FollowerJoint, Mechanism};
 use crate::field::Field;
 use crate::system::{BodyId, ForceElement, ForceKind};
 
@@ -34,7 +34,7 @@ const SEAT: f64 = 100.0;
 pub struct PresetSimulation {
     sim: SystemSimulation<'static>,
     params: FollowerDynamics,
-    joint: Joint,
+    joint: FollowerJoint,
     /// the follower's body index
     follower: usize,
     theta0: f64,
@@ -102,7 +102,7 @@ impl PresetSimulation {
             })
         };
         match joint {
-            Joint::Translating { origin, direction } => {
+            FollowerJoint::Translating { origin, direction } => {
                 let d = SEAT * mech.size() + rest.abs();
                 let seat = origin + (rest + d) * *direction;
                 let at_b = crate::Point2::origin();
@@ -131,7 +131,7 @@ impl PresetSimulation {
                     );
                 }
             }
-            Joint::Rotating { closing, .. } => {
+            FollowerJoint::Rotating { closing, .. } => {
                 element(
                     "follower spring",
                     ForceKind::TorsionSpring {
@@ -223,8 +223,8 @@ impl PresetSimulation {
         };
         let [position, velocity, acceleration] = match self.joint {
             // the arm's angle as integrated (not wrapped)
-            Joint::Rotating { .. } => [body.pose.angle, body.omega, body.alpha],
-            Joint::Translating { .. } => self.joint.coordinate_of(&body),
+            FollowerJoint::Rotating { .. } => [body.pose.angle, body.omega, body.alpha],
+            FollowerJoint::Translating { .. } => self.joint.coordinate_of(&body),
         };
         let t = self.sim.time();
         Ok(Sample {

@@ -30,7 +30,7 @@ pub struct FollowerDynamics {
 impl FollowerDynamics {
     /// What moves with the follower's coordinate: a slide's mass (kg), an arm's moment of
     /// inertia about its pivot (kg·m²).
-    pub fn moving_mass(&self, joint: &crate::cam::Joint) -> f64 {
+    pub fn moving_mass(&self, joint: &crate::cam::FollowerJoint) -> f64 {
         if joint.is_rotating() {
             self.inertia
         } else {
@@ -40,7 +40,7 @@ impl FollowerDynamics {
 
     /// Gravity's force along a slide's coordinate, N (`m g·d`); 0 on an arm, whose mass is taken
     /// at its pivot (no gravity torque).
-    pub fn gravity_along(&self, joint: &crate::cam::Joint) -> f64 {
+    pub fn gravity_along(&self, joint: &crate::cam::FollowerJoint) -> f64 {
         joint
             .direction()
             .map_or(0.0, |d| self.mass * self.gravity.dot(&d))

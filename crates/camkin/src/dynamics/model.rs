@@ -41,7 +41,7 @@ pub enum Constraint {
         /// which coordinate
         coordinate: crate::system::Coordinate,
         /// how it moves
-        law: crate::system::Law,
+        law: crate::system::DriverLaw,
     },
 }
 

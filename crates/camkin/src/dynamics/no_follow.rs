@@ -7,7 +7,7 @@
 //! no-follow, and is not counted.
 
 use super::{DynamicsError, EventKind, SystemDynamicsOptions, SystemSimulation};
-use crate::system::{Coordinate, Law, System};
+use crate::system::{Coordinate, DriverLaw, System};
 
 /// Where a system stops following its driver.
 #[derive(Debug, Clone, PartialEq)]
@@ -90,11 +90,11 @@ fn first_opening(
         return Err(no_angle_driver());
     };
     let start = match (d.coordinate, d.law) {
-        (Coordinate::Angle, Law::Quadratic { start, .. }) => start,
+        (Coordinate::Angle, DriverLaw::Quadratic { start, .. }) => start,
         _ => return Err(no_angle_driver()),
     };
     let w = rpm * std::f64::consts::TAU / 60.0;
-    s.set_driver_law(0, Law::linear(start, w));
+    s.set_driver_law(0, DriverLaw::linear(start, w));
     let mut sim = SystemSimulation::new(&s, opts.clone())?;
     let closed_at_start = sim.sample()?.in_contact;
     let h_out = sweep.step_deg.to_radians() / w;

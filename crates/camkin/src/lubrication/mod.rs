@@ -63,7 +63,7 @@ impl Thermal {
 /// constants.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Surface {
+pub struct SurfaceProperties {
     /// root-mean-square roughness `Rq`, m
     pub roughness: f64,
     /// the thermal constants (`None`: no flash temperature)
@@ -89,7 +89,7 @@ pub fn plausible_friction(mu: f64) -> bool {
 }
 
 /// The composite roughness of two surfaces, `σ = √(Rq₁² + Rq₂²)`, m: what λ divides the film by.
-pub fn composite_roughness(a: &Surface, b: &Surface) -> f64 {
+pub fn composite_roughness(a: &SurfaceProperties, b: &SurfaceProperties) -> f64 {
     a.roughness.hypot(b.roughness)
 }
 

@@ -8,7 +8,7 @@ use crate::dynamics::{ForceState, Forces};
 use crate::lubrication::{
     blok_flash_temperature, composite_roughness, film_thickness, plausible_friction,
     reduced_radius, regime, roughness_from_um, Film, FilmFormula, Friction, LineContact, Lubricant,
-    Regime, Surface, FRICTION_RULE, PRESSURE_VISCOSITY_RANGE, VISCOSITY_RANGE,
+    Regime, SurfaceProperties, FRICTION_RULE, PRESSURE_VISCOSITY_RANGE, VISCOSITY_RANGE,
 };
 use crate::table::Cell;
 use std::f64::consts::TAU;
@@ -23,7 +23,7 @@ pub struct LubricationRequest {
     /// the film formula
     pub formula: FilmFormula,
     /// the cam's surface, the follower's
-    pub surfaces: [Surface; 2],
+    pub surfaces: [SurfaceProperties; 2],
     /// the friction model
     pub friction: Friction,
 }

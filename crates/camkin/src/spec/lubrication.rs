@@ -13,7 +13,7 @@
 use super::SpecError;
 use crate::field::{Field, LubricationField as L};
 use crate::lubrication::{
-    plausible_friction, roughness_from_um, FilmFormula, Friction, Lubricant, Surface,
+    plausible_friction, roughness_from_um, FilmFormula, Friction, Lubricant, SurfaceProperties,
     FRICTION_RULE, ROUGHNESS_RULE,
 };
 use crate::report::{LubricationRequest, Materials};
@@ -174,7 +174,7 @@ impl LubricationSpec {
             request: LubricationRequest {
                 lubricant,
                 formula,
-                surfaces: [0, 1].map(|i| Surface {
+                surfaces: [0, 1].map(|i| SurfaceProperties {
                     roughness: rq[i],
                     thermal: thermal[i],
                 }),

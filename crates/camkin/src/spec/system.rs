@@ -38,8 +38,8 @@ use crate::body::Pose;
 use crate::field::{Field, FollowerField, ProfileField, SystemField, SystemKey, SystemTable};
 use crate::geometry::Point2;
 use crate::system::{
-    Body, BodyId, Contact, Coordinate, Driver, ForceElement, ForceKind, Joint, JointKind, Law,
-    System,
+    Body, BodyId, Contact, Coordinate, Driver, DriverLaw, ForceElement, ForceKind, Joint,
+    JointKind, System,
 };
 use std::collections::HashMap;
 
@@ -412,7 +412,7 @@ impl SystemSpec {
                     )?;
                     (
                         Coordinate::Angle,
-                        Law::Quadratic {
+                        DriverLaw::Quadratic {
                             start: start.to_radians(),
                             rate: rpm * std::f64::consts::TAU / 60.0,
                             acceleration: acc.to_radians(),
@@ -435,7 +435,7 @@ impl SystemSpec {
                         } else {
                             Coordinate::Y
                         },
-                        Law::Quadratic {
+                        DriverLaw::Quadratic {
                             start: scale * start,
                             rate: scale * v,
                             acceleration: scale * acc,

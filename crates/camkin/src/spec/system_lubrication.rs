@@ -17,7 +17,7 @@
 use super::build::SpecError;
 use super::{ContactSpec, FrictionSpec};
 use crate::field::{Field, SystemField, SystemKey, SystemTable};
-use crate::lubrication::Surface;
+use crate::lubrication::SurfaceProperties;
 use crate::report::{ContactLubrication, LubricationRequest, Materials};
 
 /// `[lubrication]` of a system file as written.
@@ -149,7 +149,7 @@ pub(super) fn contact_lubrication(
         request: LubricationRequest {
             lubricant,
             formula,
-            surfaces: [0, 1].map(|k| Surface {
+            surfaces: [0, 1].map(|k| SurfaceProperties {
                 roughness: roughness[k],
                 thermal: thermal[k],
             }),

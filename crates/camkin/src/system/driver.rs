@@ -38,7 +38,7 @@ impl std::fmt::Display for Coordinate {
 /// How a driven coordinate moves in time.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
-pub enum Law {
+pub enum DriverLaw {
     /// `f(t) = start + rate t + acceleration t²/2` (a cam at constant speed: `acceleration` 0)
     Quadratic {
         /// `f(0)`
@@ -50,10 +50,10 @@ pub enum Law {
     },
 }
 
-impl Law {
+impl DriverLaw {
     /// A coordinate at constant rate.
     pub fn linear(start: f64, rate: f64) -> Self {
-        Law::Quadratic {
+        DriverLaw::Quadratic {
             start,
             rate,
             acceleration: 0.0,
@@ -63,7 +63,7 @@ impl Law {
     /// `(f, ḟ, f̈)` at time `t`.
     pub fn at(&self, t: f64) -> [f64; 3] {
         match *self {
-            Law::Quadratic {
+            DriverLaw::Quadratic {
                 start,
                 rate,
                 acceleration,
@@ -80,7 +80,7 @@ impl Law {
     pub fn taylor(&self, t: f64) -> [f64; 4] {
         let [f, fd, fdd] = self.at(t);
         match *self {
-            Law::Quadratic { .. } => [f, fd, 0.5 * fdd, 0.0],
+            DriverLaw::Quadratic { .. } => [f, fd, 0.5 * fdd, 0.0],
         }
     }
 }
@@ -95,5 +95,5 @@ pub struct Driver {
     /// which of its coordinates
     pub coordinate: Coordinate,
     /// how it moves
-    pub law: Law,
+    pub law: DriverLaw,
 }

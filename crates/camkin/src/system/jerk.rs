@@ -404,7 +404,7 @@ fn at_breakpoint(curve: &dyn Curve, u: f64) -> bool {
 mod tests {
     use super::*;
     use crate::body::Pose;
-    use crate::system::{Body, Driver, Joint, Law};
+    use crate::system::{Body, Driver, DriverLaw, Joint};
 
     /// A crank of length `L` pinned to the ground, its angle driven with an angular
     /// acceleration: its frame's origin moves on `L (cos θ, sin θ)`, whose third derivative is
@@ -434,7 +434,7 @@ mod tests {
             name: "drive".into(),
             body: crank,
             coordinate: Coordinate::Angle,
-            law: Law::Quadratic {
+            law: DriverLaw::Quadratic {
                 start: 0.2,
                 rate: w0,
                 acceleration: alpha,

@@ -43,7 +43,7 @@ mod solve;
 mod table_force;
 
 pub use coil_spring::CoilSpring;
-pub use driver::{Coordinate, Driver, Law};
+pub use driver::{Coordinate, Driver, DriverLaw};
 pub use error::SystemError;
 pub use jerk::BodyJerk;
 pub(crate) use joint::JointRows;
@@ -277,7 +277,7 @@ impl System {
 
     /// Driver `index`'s law replaced by `law` (a speed sweep: the same system at another speed);
     /// `false` when there is no such driver.
-    pub fn set_driver_law(&mut self, index: usize, law: Law) -> bool {
+    pub fn set_driver_law(&mut self, index: usize, law: DriverLaw) -> bool {
         match self.drivers.get_mut(index) {
             Some(d) => {
                 d.law = law;
@@ -422,7 +422,7 @@ impl System {
         match (d.coordinate, d.law) {
             (
                 Coordinate::Angle,
-                Law::Quadratic {
+                DriverLaw::Quadratic {
                     start,
                     rate,
                     acceleration,

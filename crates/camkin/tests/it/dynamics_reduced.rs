@@ -161,7 +161,7 @@ fn first_touch(m: &Mechanism, conjugate: bool, theta: f64) -> f64 {
         // the play is measured against the closing sense: for an arm closing ccw, the second
         // curve touches `play` further cw (away from the cam)
         let away = match m.follower_joint() {
-            camkin::cam::Joint::Rotating { closing, .. } => -closing.sign(),
+            camkin::cam::FollowerJoint::Rotating { closing, .. } => -closing.sign(),
             _ => 1.0,
         };
         s.position + away * m.conjugate_play(&s).unwrap().unwrap()

@@ -314,7 +314,7 @@ fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
 /// integrates the cubic exactly); the work it does is its kinetic energy.
 #[test]
 fn a_gas_force_from_a_crank_angle_table_moves_a_mass_as_its_closed_form() {
-    use camkin::system::{Coordinate, Driver, Law, TableForce};
+    use camkin::system::{Coordinate, Driver, DriverLaw, TableForce};
     let mut sys = System::new();
     let cam = sys.add_body(Body {
         name: "camshaft".into(),
@@ -336,7 +336,7 @@ fn a_gas_force_from_a_crank_angle_table_moves_a_mass_as_its_closed_form() {
         name: "drive".into(),
         body: cam,
         coordinate: Coordinate::Angle,
-        law: Law::linear(0.0, 600.0 * std::f64::consts::TAU / 60.0),
+        law: DriverLaw::linear(0.0, 600.0 * std::f64::consts::TAU / 60.0),
     });
     let slide = sys.add_body(Body {
         name: "slide".into(),

@@ -10,7 +10,9 @@
 use camkin::curve::{Line, PointCurve};
 use camkin::dynamics::{EventKind, SystemDynamicsOptions, SystemSimulation};
 use camkin::geometry::Rotation;
-use camkin::system::{Body, BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
+use camkin::system::{
+    Body, BodyId, Contact, Coordinate, Driver, DriverLaw, Joint, JointKind, System,
+};
 use camkin::{Point2, Vec2};
 use std::sync::Arc;
 
@@ -155,7 +157,7 @@ fn a_crank_speeding_up_under_gravity_needs_the_parallel_axis_torque() {
             name: "motor".into(),
             body: bar,
             coordinate: Coordinate::Angle,
-            law: Law::Quadratic {
+            law: DriverLaw::Quadratic {
                 start: frame.1,
                 rate: w0,
                 acceleration: alpha,
@@ -220,7 +222,7 @@ fn a_slide_driven_along_x_needs_its_mass_times_its_acceleration_wherever_its_cen
             name: "push".into(),
             body: slide,
             coordinate: Coordinate::X,
-            law: Law::Quadratic {
+            law: DriverLaw::Quadratic {
                 start: 0.0,
                 rate: 1.0,
                 acceleration: a,

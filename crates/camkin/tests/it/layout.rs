@@ -220,8 +220,8 @@ fn the_joint_is_matched_in_few_places() {
             continue;
         }
         for (k, line) in code(&t).lines().enumerate() {
-            let hits = line.matches("Joint::Translating").count()
-                + line.matches("Joint::Rotating").count();
+            let hits = line.matches("FollowerJoint::Translating").count()
+                + line.matches("FollowerJoint::Rotating").count();
             places.extend(std::iter::repeat_n(format!("{n}:{}", k + 1), hits));
         }
     }

@@ -8,7 +8,7 @@ use camkin::cam::{Follower, FollowerCurve, Mechanism, Sense};
 use camkin::curve::Circle;
 use camkin::dynamics::{surface_speeds, FollowerDynamics};
 use camkin::geometry::rot90;
-use camkin::lubrication::{FilmFormula, Friction, Lubricant, Surface, Thermal};
+use camkin::lubrication::{FilmFormula, Friction, Lubricant, SurfaceProperties, Thermal};
 use camkin::report::{ForceReport, ForceRequest, LubricationRequest, Materials};
 use camkin::{Point2, Vec2};
 use std::f64::consts::TAU;
@@ -85,7 +85,7 @@ fn surface_speeds_agree_with_the_bodies_velocities_from_positions() {
 }
 
 fn oil_request(friction: Friction) -> LubricationRequest {
-    let steel = Surface {
+    let steel = SurfaceProperties {
         roughness: 0.2e-6,
         thermal: Some(Thermal {
             conductivity: 46.0,
@@ -101,7 +101,7 @@ fn oil_request(friction: Friction) -> LubricationRequest {
         formula: FilmFormula::DowsonHigginson,
         surfaces: [
             steel,
-            Surface {
+            SurfaceProperties {
                 roughness: 0.3e-6,
                 ..steel
             },

@@ -10,7 +10,7 @@ use crate::common::system_body as body;
 use camkin::cam::{Cam, Follower, Mechanism, Sense};
 use camkin::curve::{Circle, Line};
 use camkin::reference::{paper_mechanism, paper_profile};
-use camkin::system::{BodyId, Contact, Coordinate, Driver, Joint, JointKind, Law, System};
+use camkin::system::{BodyId, Contact, Coordinate, Driver, DriverLaw, Joint, JointKind, System};
 use camkin::{Point2, Vec2};
 use std::sync::Arc;
 
@@ -31,7 +31,7 @@ fn cam_system(w: f64) -> (System, BodyId) {
         name: "drive".into(),
         body: cam,
         coordinate: Coordinate::Angle,
-        law: Law::linear(0.0, w),
+        law: DriverLaw::linear(0.0, w),
     });
     (sys, cam)
 }

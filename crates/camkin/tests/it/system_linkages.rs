@@ -6,7 +6,9 @@
 //! 1e-7 of their peaks.
 
 use crate::common::system_body as body;
-use camkin::system::{BodyId, Coordinate, Driver, Joint, JointKind, Law, System, SystemError};
+use camkin::system::{
+    BodyId, Coordinate, Driver, DriverLaw, Joint, JointKind, System, SystemError,
+};
 use camkin::{Point2, Vec2};
 
 fn pin(name: &str, a: BodyId, at_a: [f64; 2], b: BodyId, at_b: [f64; 2]) -> Joint {
@@ -72,7 +74,7 @@ fn a_four_bar_follows_its_loop_equations() {
         name: "motor".into(),
         body: crank,
         coordinate: Coordinate::Angle,
-        law: Law::linear(0.0, w),
+        law: DriverLaw::linear(0.0, w),
     });
     let mut sweep = sys.sweep().unwrap();
     let size = d + a;
@@ -169,7 +171,7 @@ fn an_offset_slider_crank_follows_its_closed_form() {
         name: "motor".into(),
         body: crank,
         coordinate: Coordinate::Angle,
-        law: Law::Quadratic {
+        law: DriverLaw::Quadratic {
             start: 0.0,
             rate: w,
             acceleration: al,
@@ -241,7 +243,7 @@ fn a_three_gear_train_turns_at_the_tooth_ratios() {
         name: "motor".into(),
         body: b1,
         coordinate: Coordinate::Angle,
-        law: Law::linear(0.0, w),
+        law: DriverLaw::linear(0.0, w),
     });
     sys.add_contact(Contact {
         name: "mesh 1-2".into(),
@@ -382,7 +384,7 @@ fn a_cam_drives_a_four_bar_through_its_arm() {
         name: "drive".into(),
         body: cam,
         coordinate: Coordinate::Angle,
-        law: Law::linear(0.0, w),
+        law: DriverLaw::linear(0.0, w),
     });
     sys.add_contact(Contact {
         name: "disc on roller".into(),
@@ -467,7 +469,7 @@ fn a_rocker_driven_four_bar_stops_at_its_toggle_and_says_so() {
         name: "drive rocker".into(),
         body: rocker,
         coordinate: Coordinate::Angle,
-        law: Law::linear(start, w),
+        law: DriverLaw::linear(start, w),
     });
     // |B|² = (d + c cos φ)² + (c sin φ)² = (b − a)²
     let toggle = (((b - a) * (b - a) - d * d - c * c) / (2.0 * d * c)).acos();

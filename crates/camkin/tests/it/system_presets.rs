@@ -50,7 +50,7 @@ fn differences(name: &str, text: &str) -> [f64; 7] {
     let (mut jerks, mut no_jerk) = (0, 0);
     // an arm's angle times the size: a length
     let scale = match mech.follower_joint() {
-        camkin::cam::Joint::Rotating { .. } => size,
+        camkin::cam::FollowerJoint::Rotating { .. } => size,
         _ => 1.0,
     };
     for k in 0..=360 {
@@ -65,7 +65,7 @@ fn differences(name: &str, text: &str) -> [f64; 7] {
         // an arm's angle is one modulo a turn (a driven gear turns more than half a turn in
         // the driver's revolution: the system's coordinate is within ±180° of its start)
         let dq = match mech.follower_joint() {
-            camkin::cam::Joint::Rotating { .. } => {
+            camkin::cam::FollowerJoint::Rotating { .. } => {
                 (q - c.position + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
                     - std::f64::consts::PI
             }
@@ -81,7 +81,7 @@ fn differences(name: &str, text: &str) -> [f64; 7] {
             (Ok(j), Some(cj)) => {
                 let i = preset.follower.index().unwrap();
                 let sj = match mech.follower_joint() {
-                    camkin::cam::Joint::Translating { direction, .. } => {
+                    camkin::cam::FollowerJoint::Translating { direction, .. } => {
                         j[i].linear.dot(&direction)
                     }
                     _ => j[i].angular,
@@ -235,7 +235,7 @@ fn a_cam_speeding_up_through_the_system_path_obeys_the_chain_rule() {
         let preset = speeding.to_system().unwrap();
         let size = steady.size();
         let scale = match steady.follower_joint() {
-            camkin::cam::Joint::Rotating { .. } => size,
+            camkin::cam::FollowerJoint::Rotating { .. } => size,
             _ => 1.0,
         };
         let mut sys = preset.system.sweep().unwrap();

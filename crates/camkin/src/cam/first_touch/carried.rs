@@ -232,7 +232,7 @@ impl FirstTouch {
         // the resting position (sampled) and the starts nearest it: (distance, u, v, q)
         let mut starts: Vec<(f64, f64, f64, f64)> = Vec::new();
         match self.geometry.joint {
-            crate::cam::Joint::Translating { .. } => {
+            crate::cam::FollowerJoint::Translating { .. } => {
                 let top = covers
                     .iter()
                     .map(|k| k.hi)
@@ -246,7 +246,7 @@ impl FirstTouch {
                     starts.push(((top - k.hi) * k.scale, k.u, k.v_hi, k.hi));
                 }
             }
-            crate::cam::Joint::Rotating {
+            crate::cam::FollowerJoint::Rotating {
                 closing,
                 toward_cam,
                 initial_angle,

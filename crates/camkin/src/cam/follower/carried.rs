@@ -17,7 +17,7 @@
 //! joint moves.
 
 use super::envelope::Envelope;
-use super::{Joint, Kind, Model, Rates, Sense, Synthesis};
+use super::{FollowerJoint, Kind, Model, Rates, Sense, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::CamError;
 use crate::curve::{Curve, Derivs, Domain};
@@ -30,11 +30,11 @@ use std::sync::Arc;
 /// found through `Kind` (see `crate::cam::carried`): only the joint is used from here.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct CarriedJoint {
-    pub(crate) joint: Joint,
+    pub(crate) joint: FollowerJoint,
 }
 
 impl Kind for CarriedJoint {
-    fn joint(&self) -> Joint {
+    fn joint(&self) -> FollowerJoint {
         self.joint
     }
     fn curve(&self) -> super::FollowerCurve {
@@ -84,12 +84,12 @@ impl Synthesis for CarriedJoint {
 impl CarriedJoint {
     pub(super) fn translating(cam_pivot: Point2, d: UnitVec2, offset: f64) -> Model {
         Model::Carried(Self {
-            joint: Joint::slide(cam_pivot + offset * rot90(*d), d),
+            joint: FollowerJoint::slide(cam_pivot + offset * rot90(*d), d),
         })
     }
     pub(super) fn rotating(cam_pivot: Point2, o: Point2, closing: Sense, phi0: f64) -> Model {
         Model::Carried(Self {
-            joint: Joint::arm(o, closing, phi0, super::toward(cam_pivot, o)),
+            joint: FollowerJoint::arm(o, closing, phi0, super::toward(cam_pivot, o)),
         })
     }
 }
@@ -141,9 +141,9 @@ pub(crate) type Stretch = ((f64, f64), (f64, f64));
 pub(crate) struct Carried {
     /// the curve in the follower frame
     pub(crate) curve: Arc<dyn Curve>,
-    /// the joint that carries it: a cam point moves along its track ([`Joint::along`]) at its
+    /// the joint that carries it: a cam point moves along its track ([`FollowerJoint::along`]) at its
     /// level
-    pub(crate) joint: Joint,
+    pub(crate) joint: FollowerJoint,
     /// the curve's period (closed curves)
     pub(crate) period: Option<f64>,
     /// parameter bounds of an open curve (the sampled stretch of an unbounded one)
@@ -206,7 +206,11 @@ const PER_CURVE: usize = 1024;
 impl Carried {
     /// Samples `curve` (given in the follower frame of `joint`; a translating follower's is turned
     /// first) and indexes it. `reach` bounds the stretch of an unbounded curve that is sampled.
-    pub(crate) fn new(curve: Arc<dyn Curve>, joint: &Joint, reach: f64) -> Result<Self, CamError> {
+    pub(crate) fn new(
+        curve: Arc<dyn Curve>,
+        joint: &FollowerJoint,
+        reach: f64,
+    ) -> Result<Self, CamError> {
         let joint = *joint;
         // a slide's curve turned into the world-aligned follower frame
         let angle = joint.direction().map_or(0.0, |d| d.y.atan2(d.x));
@@ -498,8 +502,8 @@ mod tests {
     use super::*;
     use crate::curve::{Ellipse, InvoluteGear, InvoluteGearSpec};
 
-    fn arm() -> Joint {
-        Joint::arm(
+    fn arm() -> FollowerJoint {
+        FollowerJoint::arm(
             Point2::new(62.0, 0.0),
             super::super::Sense::Ccw,
             0.0,

@@ -10,7 +10,7 @@ use crate::geometry::{rot90, Point2, UnitVec2, Vec2};
 /// How a follower moves: one coordinate `q`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
-pub enum Joint {
+pub enum FollowerJoint {
     /// A slide: the follower frame's origin is at `origin + q·direction`, its angle 0; `q` is a
     /// length measured from the cam axis along `direction`.
     Translating {
@@ -36,17 +36,17 @@ pub enum Joint {
     },
 }
 
-impl Joint {
+impl FollowerJoint {
     /// A slide along `direction` whose frame is at `origin` at `q = 0`.
     pub fn slide(origin: Point2, direction: UnitVec2) -> Self {
-        Joint::Translating { origin, direction }
+        FollowerJoint::Translating { origin, direction }
     }
 
     /// A revolute pair at `pivot` closed by its spring in the sense `closing`, the arm angle
     /// reported within ±180° of `initial_angle`, its first touch sought within ±180° of
-    /// `toward_cam` (see [`Joint::Rotating`]).
+    /// `toward_cam` (see [`FollowerJoint::Rotating`]).
     pub fn arm(pivot: Point2, closing: Sense, initial_angle: f64, toward_cam: f64) -> Self {
-        Joint::Rotating {
+        FollowerJoint::Rotating {
             pivot,
             closing,
             initial_angle,
@@ -58,8 +58,8 @@ impl Joint {
     #[inline]
     pub fn origin(&self) -> Point2 {
         match *self {
-            Joint::Translating { origin, .. } => origin,
-            Joint::Rotating { pivot, .. } => pivot,
+            FollowerJoint::Translating { origin, .. } => origin,
+            FollowerJoint::Rotating { pivot, .. } => pivot,
         }
     }
 
@@ -67,8 +67,8 @@ impl Joint {
     #[inline]
     pub fn direction(&self) -> Option<UnitVec2> {
         match *self {
-            Joint::Translating { direction, .. } => Some(direction),
-            Joint::Rotating { .. } => None,
+            FollowerJoint::Translating { direction, .. } => Some(direction),
+            FollowerJoint::Rotating { .. } => None,
         }
     }
 
@@ -76,8 +76,8 @@ impl Joint {
     #[inline]
     pub fn initial_angle(&self) -> Option<f64> {
         match *self {
-            Joint::Translating { .. } => None,
-            Joint::Rotating { initial_angle, .. } => Some(initial_angle),
+            FollowerJoint::Translating { .. } => None,
+            FollowerJoint::Rotating { initial_angle, .. } => Some(initial_angle),
         }
     }
 
@@ -92,50 +92,50 @@ impl Joint {
     #[inline]
     pub(crate) fn difference(&self, a: f64, b: f64) -> f64 {
         match *self {
-            Joint::Translating { .. } => a - b,
-            Joint::Rotating { .. } => crate::geometry::wrap_angle_near(a - b, 0.0),
+            FollowerJoint::Translating { .. } => a - b,
+            FollowerJoint::Rotating { .. } => crate::geometry::wrap_angle_near(a - b, 0.0),
         }
     }
 
-    /// Where a point `y` of the follower frame (relative to [`Joint::origin`] in a frame not
+    /// Where a point `y` of the follower frame (relative to [`FollowerJoint::origin`] in a frame not
     /// turned) lies along the joint's track: its distance along the slide's direction, or its
     /// polar angle about the pivot. As the follower moves by `Δq`, a point fixed elsewhere moves
-    /// along the track by `−Δq`, at its [`Joint::level`].
+    /// along the track by `−Δq`, at its [`FollowerJoint::level`].
     #[inline]
     pub(crate) fn along(&self, y: Vec2) -> f64 {
         match *self {
-            Joint::Translating { direction, .. } => y.dot(&direction),
-            Joint::Rotating { .. } => y.y.atan2(y.x),
+            FollowerJoint::Translating { direction, .. } => y.dot(&direction),
+            FollowerJoint::Rotating { .. } => y.y.atan2(y.x),
         }
     }
 
-    /// The level of `y` on the track (see [`Joint::along`]): its distance across the slide's
+    /// The level of `y` on the track (see [`FollowerJoint::along`]): its distance across the slide's
     /// direction, or its radius about the pivot.
     #[inline]
     pub(crate) fn level(&self, y: Vec2) -> f64 {
         match *self {
-            Joint::Translating { direction, .. } => y.dot(&rot90(*direction)),
-            Joint::Rotating { .. } => y.norm(),
+            FollowerJoint::Translating { direction, .. } => y.dot(&rot90(*direction)),
+            FollowerJoint::Rotating { .. } => y.norm(),
         }
     }
 
-    /// The length of a unit of [`Joint::along`] at `level`: 1 on a slide, the radius on an arm.
+    /// The length of a unit of [`FollowerJoint::along`] at `level`: 1 on a slide, the radius on an arm.
     #[inline]
     pub(crate) fn along_length(&self, level: f64) -> f64 {
         match *self {
-            Joint::Translating { .. } => 1.0,
-            Joint::Rotating { .. } => level,
+            FollowerJoint::Translating { .. } => 1.0,
+            FollowerJoint::Rotating { .. } => level,
         }
     }
 
-    /// The rate of [`Joint::velocity_jacobian`] at a point of the follower's curve along the
+    /// The rate of [`FollowerJoint::velocity_jacobian`] at a point of the follower's curve along the
     /// curve, per unit of its parameter, where the curve's derivative (world) is `t`: zero on a
     /// slide, `k × t` on an arm.
     #[inline]
     pub(crate) fn velocity_jacobian_along(&self, t: Vec2) -> Vec2 {
         match *self {
-            Joint::Translating { .. } => Vec2::zeros(),
-            Joint::Rotating { .. } => rot90(t),
+            FollowerJoint::Translating { .. } => Vec2::zeros(),
+            FollowerJoint::Rotating { .. } => rot90(t),
         }
     }
 
@@ -143,8 +143,10 @@ impl Joint {
     #[inline]
     pub fn pose(&self, q: f64) -> Pose {
         match *self {
-            Joint::Translating { origin, direction } => Pose::new(origin + q * *direction, 0.0),
-            Joint::Rotating { pivot, .. } => Pose::new(pivot, q),
+            FollowerJoint::Translating { origin, direction } => {
+                Pose::new(origin + q * *direction, 0.0)
+            }
+            FollowerJoint::Rotating { pivot, .. } => Pose::new(pivot, q),
         }
     }
 
@@ -153,14 +155,14 @@ impl Joint {
     pub fn body(&self, q: f64, qd: f64, qdd: f64) -> BodyState {
         let pose = self.pose(q);
         match *self {
-            Joint::Translating { direction, .. } => BodyState {
+            FollowerJoint::Translating { direction, .. } => BodyState {
                 pose,
                 velocity: qd * *direction,
                 omega: 0.0,
                 acceleration: qdd * *direction,
                 alpha: 0.0,
             },
-            Joint::Rotating { .. } => BodyState {
+            FollowerJoint::Rotating { .. } => BodyState {
                 pose,
                 velocity: Vec2::zeros(),
                 omega: qd,
@@ -175,7 +177,7 @@ impl Joint {
     pub fn system_joint(&self, follower: crate::system::BodyId) -> crate::system::JointKind {
         use crate::system::{BodyId, JointKind};
         match *self {
-            Joint::Translating { origin, direction } => JointKind::Prismatic {
+            FollowerJoint::Translating { origin, direction } => JointKind::Prismatic {
                 a: BodyId::GROUND,
                 at_a: origin,
                 axis: *direction,
@@ -183,7 +185,7 @@ impl Joint {
                 at_b: Point2::origin(),
                 angle: 0.0,
             },
-            Joint::Rotating { pivot, .. } => JointKind::Revolute {
+            FollowerJoint::Rotating { pivot, .. } => JointKind::Revolute {
                 a: BodyId::GROUND,
                 at_a: pivot,
                 b: follower,
@@ -193,16 +195,16 @@ impl Joint {
     }
 
     /// The coordinate `(q, q̇, q̈)` of a follower body's state (the inverse of
-    /// [`Joint::body`]): a slide's travel along its direction from its origin, or an arm's
+    /// [`FollowerJoint::body`]): a slide's travel along its direction from its origin, or an arm's
     /// angle within ±180° of the initial angle.
     pub fn coordinate_of(&self, b: &BodyState) -> [f64; 3] {
         match *self {
-            Joint::Translating { origin, direction } => [
+            FollowerJoint::Translating { origin, direction } => [
                 (b.pose.origin - origin).dot(&direction),
                 b.velocity.dot(&direction),
                 b.acceleration.dot(&direction),
             ],
-            Joint::Rotating { initial_angle, .. } => {
+            FollowerJoint::Rotating { initial_angle, .. } => {
                 let tau = std::f64::consts::TAU;
                 let d = (b.pose.angle - initial_angle).rem_euclid(tau);
                 let d = if d > std::f64::consts::PI { d - tau } else { d };
@@ -216,8 +218,8 @@ impl Joint {
     #[inline]
     pub fn velocity_jacobian(&self, c: Point2) -> Vec2 {
         match *self {
-            Joint::Translating { direction, .. } => *direction,
-            Joint::Rotating { pivot, .. } => rot90(c - pivot),
+            FollowerJoint::Translating { direction, .. } => *direction,
+            FollowerJoint::Rotating { pivot, .. } => rot90(c - pivot),
         }
     }
 
@@ -225,8 +227,8 @@ impl Joint {
     #[inline]
     pub(crate) fn coordinate_coefficient(&self, phi: &[f64; 6]) -> f64 {
         match *self {
-            Joint::Translating { direction: d, .. } => phi[3] * d.x + phi[4] * d.y,
-            Joint::Rotating { .. } => phi[5],
+            FollowerJoint::Translating { direction: d, .. } => phi[3] * d.x + phi[4] * d.y,
+            FollowerJoint::Rotating { .. } => phi[5],
         }
     }
 
@@ -235,8 +237,8 @@ impl Joint {
     #[inline]
     pub(crate) fn q_length_scale(&self, size: f64, cam_pivot: Point2) -> f64 {
         match *self {
-            Joint::Translating { .. } => 1.0,
-            Joint::Rotating { pivot, .. } => size + (pivot - cam_pivot).norm(),
+            FollowerJoint::Translating { .. } => 1.0,
+            FollowerJoint::Rotating { pivot, .. } => size + (pivot - cam_pivot).norm(),
         }
     }
 
@@ -244,8 +246,8 @@ impl Joint {
     #[inline]
     pub(crate) fn oriented(&self, q: f64) -> f64 {
         match *self {
-            Joint::Translating { .. } => q,
-            Joint::Rotating {
+            FollowerJoint::Translating { .. } => q,
+            FollowerJoint::Rotating {
                 closing,
                 toward_cam,
                 ..
@@ -259,21 +261,21 @@ impl Joint {
     #[inline]
     pub(crate) fn branch(&self, q: f64) -> (f64, f64) {
         match *self {
-            Joint::Translating { .. } => (q, q),
-            Joint::Rotating { initial_angle, .. } => (
+            FollowerJoint::Translating { .. } => (q, q),
+            FollowerJoint::Rotating { initial_angle, .. } => (
                 self.oriented(q),
                 crate::geometry::wrap_angle_near(q, initial_angle),
             ),
         }
     }
 
-    /// An upper bound of the oriented score ([`Joint::oriented`]) of every position within the
+    /// An upper bound of the oriented score ([`FollowerJoint::oriented`]) of every position within the
     /// interval `(mid, half width)`; +∞ when the interval may cross a rotating joint's branch cut.
     #[inline]
     pub(crate) fn oriented_bound(&self, (mid, half): (f64, f64)) -> f64 {
         match *self {
-            Joint::Translating { .. } => mid + half,
-            Joint::Rotating {
+            FollowerJoint::Translating { .. } => mid + half,
+            FollowerJoint::Rotating {
                 closing,
                 toward_cam,
                 ..
@@ -293,13 +295,13 @@ impl Joint {
     #[inline]
     pub fn away(&self) -> f64 {
         match *self {
-            Joint::Translating { .. } => 1.0,
-            Joint::Rotating { closing, .. } => -closing.sign(),
+            FollowerJoint::Translating { .. } => 1.0,
+            FollowerJoint::Rotating { closing, .. } => -closing.sign(),
         }
     }
 
     /// True for a revolute joint (`q` in rad).
     pub fn is_rotating(&self) -> bool {
-        matches!(self, Joint::Rotating { .. })
+        matches!(self, FollowerJoint::Rotating { .. })
     }
 }

@@ -33,7 +33,7 @@ pub(crate) trait Synthesis {
 /// supertraits [`Rates`] and [`Synthesis`].
 pub(crate) trait Kind: Rates + Synthesis {
     /// The joint that carries the follower.
-    fn joint(&self) -> Joint;
+    fn joint(&self) -> FollowerJoint;
     /// The contact curve in the follower's frame, oriented material-on-the-left.
     fn curve(&self) -> FollowerCurve;
     /// The position at which the follower's boundary first passes through the world cam point
@@ -157,7 +157,7 @@ pub(crate) use dispatch;
 impl Kind for Model {
     // some kinds are: a sweep through `Model` keeps the pose
     const ANGULAR: bool = true;
-    fn joint(&self) -> Joint {
+    fn joint(&self) -> FollowerJoint {
         dispatch!(self, k => k.joint())
     }
     fn curve(&self) -> FollowerCurve {

@@ -1,6 +1,6 @@
 //! The follower model: what a follower kind *is*, in one place.
 //!
-//! A follower is a [`Joint`] (a slide along a direction, or a revolute pair at a pivot) carrying a
+//! A follower is a [`FollowerJoint`] (a slide along a direction, or a revolute pair at a pivot) carrying a
 //! contact curve in its own frame ([`FollowerCurve`]: a line, a circle or a point). The five named
 //! kinds of [`Follower`] are presets of that shape; each is implemented once, in its own file, by
 //! the crate-private `Kind` trait: validation of its reach, the first-touch position through one
@@ -31,7 +31,7 @@ mod translating_roller;
 
 pub(crate) use centre_path::{pitch_point, CentrePath};
 pub use curve::FollowerCurve;
-pub use joint::Joint;
+pub use joint::FollowerJoint;
 pub(crate) use kind::{dispatch, Kind, Model, Rates, Synthesis};
 
 use super::pose::Pose;
@@ -470,8 +470,8 @@ impl Arm {
     }
 
     /// The arm's joint.
-    fn joint(&self) -> Joint {
-        Joint::arm(self.o, self.sense, self.phi0, self.toward_cam)
+    fn joint(&self) -> FollowerJoint {
+        FollowerJoint::arm(self.o, self.sense, self.phi0, self.toward_cam)
     }
 }
 
@@ -488,7 +488,7 @@ pub(crate) struct Geometry {
     /// cam axis (world)
     pub(crate) cam_pivot: Point2,
     pub(crate) model: Model,
-    pub(crate) joint: Joint,
+    pub(crate) joint: FollowerJoint,
     pub(crate) curve: FollowerCurve,
     /// a general follower's curve with its polyline index
     pub(crate) carried: Option<std::sync::Arc<carried::Carried>>,

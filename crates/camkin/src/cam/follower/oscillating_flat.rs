@@ -4,7 +4,9 @@
 
 use super::envelope::{jet_recip, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
+use super::{
+    arm_branch, first_touch_root, Arm, FollowerJoint, Kind, Model, Rates, Sense, Synthesis,
+};
 use crate::body::WorldDerivs;
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
@@ -41,7 +43,7 @@ impl OscillatingFlat {
 }
 
 impl Kind for OscillatingFlat {
-    fn joint(&self) -> Joint {
+    fn joint(&self) -> FollowerJoint {
         self.arm.joint()
     }
     fn curve(&self) -> super::FollowerCurve {

@@ -9,7 +9,9 @@
 
 use super::envelope::{arm_path, rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
+use super::{
+    arm_branch, first_touch_root, Arm, FollowerJoint, Kind, Model, Rates, Sense, Synthesis,
+};
 use crate::body::WorldDerivs;
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
@@ -87,7 +89,7 @@ impl OscillatingKnife {
 }
 
 impl Kind for OscillatingKnife {
-    fn joint(&self) -> Joint {
+    fn joint(&self) -> FollowerJoint {
         self.arm.joint()
     }
     fn curve(&self) -> super::FollowerCurve {

@@ -3,7 +3,9 @@
 
 use super::envelope::{arm_path, rotated_derivs, Envelope};
 use super::rates::{finite, roller_denominator, CamPoint, Refusals};
-use super::{arm_branch, first_touch_root, Arm, Joint, Kind, Model, Rates, Sense, Synthesis};
+use super::{
+    arm_branch, first_touch_root, Arm, FollowerJoint, Kind, Model, Rates, Sense, Synthesis,
+};
 use crate::body::WorldDerivs;
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
@@ -50,7 +52,7 @@ impl OscillatingRoller {
 }
 
 impl Kind for OscillatingRoller {
-    fn joint(&self) -> Joint {
+    fn joint(&self) -> FollowerJoint {
         self.arm.joint()
     }
     fn curve(&self) -> super::FollowerCurve {

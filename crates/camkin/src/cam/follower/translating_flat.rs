@@ -4,7 +4,7 @@
 
 use super::envelope::{rotated_derivs, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{Joint, Kind, Model, Rates, Synthesis};
+use super::{FollowerJoint, Kind, Model, Rates, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
@@ -30,9 +30,9 @@ impl TranslatingFlat {
 }
 
 impl Kind for TranslatingFlat {
-    fn joint(&self) -> Joint {
+    fn joint(&self) -> FollowerJoint {
         // `d` came in as a `UnitVec2` (`model`)
-        Joint::slide(self.cam_pivot, UnitVec2::new_unchecked(self.d))
+        FollowerJoint::slide(self.cam_pivot, UnitVec2::new_unchecked(self.d))
     }
     fn curve(&self) -> super::FollowerCurve {
         super::FollowerCurve::Line(Line::new(Point2::origin(), -self.p).expect("unit vector"))

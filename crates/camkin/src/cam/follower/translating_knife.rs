@@ -5,7 +5,7 @@
 
 use super::envelope::{rotated_derivs, translating_path, Envelope};
 use super::rates::{finite, CamPoint, Refusals};
-use super::{Joint, Kind, Model, Rates, Synthesis};
+use super::{FollowerJoint, Kind, Model, Rates, Synthesis};
 use crate::body::WorldDerivs;
 use crate::cam::pose::Pose;
 use crate::cam::CamError;
@@ -51,9 +51,9 @@ impl TranslatingKnife {
 }
 
 impl Kind for TranslatingKnife {
-    fn joint(&self) -> Joint {
+    fn joint(&self) -> FollowerJoint {
         // `d` came in as a `UnitVec2` (`model`)
-        Joint::slide(
+        FollowerJoint::slide(
             self.cam_pivot + self.e * self.p,
             UnitVec2::new_unchecked(self.d),
         )
