@@ -252,7 +252,7 @@ impl SystemSimulation<'_> {
         // that can be far larger than the accelerations they leave (a stiff spring's force
         // against the contact's), so `Φ_q q̈` misses `γ̃` by their rounding; the residual,
         // solved with the same factor, puts the accelerations on their rows to their own
-        // rounding (a follower in contact then moves as the kinematics to 1e-14 of its peak)
+        // rounding (a follower in contact then moves as the kinematics to 1e-13 of its peak)
         delta.clear();
         delta.extend(
             sparse
