@@ -211,8 +211,8 @@ fn an_hours_long_simulation_asks_first() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("3.6e9 steps"))
-        // 40 µs a step, and the kinematic sweep beside the 3.6 million rows at 1 µs an angle
-        .stderr(predicate::str::contains("would take about 144004 s"))
+        // 25 µs a step, and the kinematic sweep beside the 3.6 million rows at 1 µs an angle
+        .stderr(predicate::str::contains("would take about 90004 s"))
         .stderr(predicate::str::contains("--large"));
 }
 

@@ -212,15 +212,17 @@ impl PresetSimulation {
 
     /// The follower's state at the current time.
     pub fn sample(&mut self) -> Result<Sample, DynamicsError> {
-        let (q, qd, qdd, forces, efforts) = self.sim.motion()?;
         let i = 3 * self.follower;
-        let body = crate::BodyState {
-            pose: crate::Pose::new(crate::Point2::new(q[i], q[i + 1]), q[i + 2]),
-            velocity: crate::Vec2::new(qd[i], qd[i + 1]),
-            omega: qd[i + 2],
-            acceleration: crate::Vec2::new(qdd[i], qdd[i + 1]),
-            alpha: qdd[i + 2],
-        };
+        let (body, force, torque) = self.sim.motion(|q, qd, a| {
+            let body = crate::BodyState {
+                pose: crate::Pose::new(crate::Point2::new(q[i], q[i + 1]), q[i + 2]),
+                velocity: crate::Vec2::new(qd[i], qd[i + 1]),
+                omega: qd[i + 2],
+                acceleration: crate::Vec2::new(a.qdd[i], a.qdd[i + 1]),
+                alpha: a.qdd[i + 2],
+            };
+            (body, a.forces[0], a.efforts[0])
+        })?;
         let [position, velocity, acceleration] = match self.joint {
             // the arm's angle as integrated (not wrapped)
             FollowerJoint::Rotating { .. } => [body.pose.angle, body.omega, body.alpha],
@@ -233,10 +235,10 @@ impl PresetSimulation {
             position,
             velocity,
             acceleration,
-            contact_force: forces[0],
+            contact_force: force,
             in_contact: self.sim.in_contact(0),
             on_conjugate: false,
-            driver_torque: efforts[0],
+            driver_torque: torque,
             driver_work: self.sim.driver_work(),
         })
     }

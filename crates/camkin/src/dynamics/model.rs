@@ -133,17 +133,17 @@ impl Row {
 }
 
 /// The rows of one constraint (one to three).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Rows {
     rows: [Row; 3],
     len: usize,
 }
 
-impl Rows {
-    fn one(r: Row) -> Self {
-        Self {
-            rows: [r, Row::default(), Row::default()],
-            len: 1,
+impl Extend<Row> for Rows {
+    fn extend<I: IntoIterator<Item = Row>>(&mut self, rows: I) {
+        for r in rows {
+            self.rows[self.len] = r;
+            self.len += 1;
         }
     }
 }
@@ -191,7 +191,23 @@ impl System {
         qd: &[f64],
         pairing: &mut Option<Pairing>,
     ) -> Result<Rows, crate::contact::ContactError> {
-        Ok(match c {
+        let mut rows = Rows::default();
+        self.push_rows(c, t, q, qd, pairing, &mut rows)?;
+        Ok(rows)
+    }
+
+    /// [`System::rows`] added to `out` (a simulation's step writes them straight into its
+    /// buffer).
+    pub(crate) fn push_rows(
+        &self,
+        c: &Constraint,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        pairing: &mut Option<Pairing>,
+        out: &mut impl Extend<Row>,
+    ) -> Result<(), crate::contact::ContactError> {
+        match c {
             Constraint::Contact {
                 a,
                 curve_a,
@@ -228,9 +244,9 @@ impl System {
                         std::array::from_fn(|c| (3 * body + c, k.phi_q[side + c]));
                     Row::new(p.gap, &jac, k.gamma)
                 };
-                Rows::one(row)
+                out.extend(Some(row));
             }
-            Constraint::Joint(kind) => joint_rows(kind, q, qd),
+            Constraint::Joint(kind) => joint_rows(kind, q, qd, out),
             Constraint::Driver {
                 body,
                 coordinate,
@@ -238,36 +254,47 @@ impl System {
             } => {
                 let i = 3 * body + coordinate.index();
                 let [f, _, fdd] = law.at(t);
-                Rows::one(Row::new(q[i] - f, &[(i, 1.0)], fdd))
+                out.extend(Some(Row::new(q[i] - f, &[(i, 1.0)], fdd)));
             }
-        })
+        }
+        Ok(())
     }
 }
 
 /// A system joint's rows (out of line: the cam model's loop stays as small as it was).
 #[inline(never)]
-fn joint_rows(kind: &crate::system::JointKind, q: &[f64], qd: &[f64]) -> Rows {
+fn joint_rows(kind: &crate::system::JointKind, q: &[f64], qd: &[f64], out: &mut impl Extend<Row>) {
     let [a, b] = kind.bodies();
-    let mut evals = crate::system::JointRows::default();
-    kind.eval(&body_state(q, qd, a.0), &body_state(q, qd, b.0), &mut evals);
-    let mut out = Rows {
-        rows: [Row::default(); 3],
-        len: evals.len,
-    };
-    for (row, e) in out.rows.iter_mut().zip(&evals.rows[..evals.len]) {
-        let mut jac = [(0, 0.0); 6];
-        let mut len = 0;
-        for (id, g) in e.grads {
-            if let Some(i) = id.index() {
-                for (c, v) in g.into_iter().enumerate() {
-                    jac[len] = (3 * i + c, v);
-                    len += 1;
+    kind.eval(
+        &body_state(q, qd, a.0),
+        &body_state(q, qd, b.0),
+        &mut JointToRows(out),
+    );
+}
+
+/// A joint's rows written as [`Row`]s as it gives them: the ground's gradients dropped.
+struct JointToRows<'a, E>(&'a mut E);
+
+impl<E: Extend<Row>> Extend<crate::system::RowEval> for JointToRows<'_, E> {
+    fn extend<I: IntoIterator<Item = crate::system::RowEval>>(&mut self, rows: I) {
+        self.0.extend(rows.into_iter().map(|e| {
+            let mut row = Row {
+                phi: e.value,
+                jac: [(0, 0.0); 6],
+                len: 0,
+                gamma: e.gamma,
+            };
+            for (id, g) in e.grads {
+                if let Some(i) = id.index() {
+                    for (c, v) in g.into_iter().enumerate() {
+                        row.jac[row.len] = (3 * i + c, v);
+                        row.len += 1;
+                    }
                 }
             }
-        }
-        *row = Row::new(e.value, &jac[..len], e.gamma);
+            row
+        }));
     }
-    out
 }
 
 impl Row {

@@ -93,8 +93,9 @@ impl<'a> Simulation<'a> {
 
     /// A rough estimate of the seconds `steps` time steps take, for refusing runs of minutes up
     /// front (both front ends refuse over a minute unless asked).
-    /// - The preset system: about 40 µs a step (a 1° step counts 77 000 instructions, about
-    ///   27 µs on a 2-core host).
+    /// - The preset system: about 25 µs a step (a 1° step counts 49 000 instructions; 100
+    ///   revolutions of the paper's cam at 1° steps, 36 000 steps with their output, take
+    ///   0.73 s on a 2-core host: 20 µs a step).
     /// - The one-coordinate model searches each of the follower's curves' first touch, warm and
     ///   cold, every step, and by bisection at every event: measured, 4 (an ideal gear pair at
     ///   0.5° steps) to 12 (a gear pair rattling in its backlash at 1° steps) cold searches a
@@ -102,7 +103,7 @@ impl<'a> Simulation<'a> {
     ///   and curve: for hours of work, not for seconds.
     pub fn seconds_estimate(&self, steps: f64) -> f64 {
         match self {
-            Self::Preset(_) => steps * 4e-5,
+            Self::Preset(_) => steps * 2.5e-5,
             Self::Reduced(r) => steps * r.search_seconds() * 6.0,
         }
     }

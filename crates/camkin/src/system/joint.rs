@@ -81,36 +81,6 @@ pub(crate) struct RowEval {
     pub(crate) gamma: f64,
 }
 
-/// Up to three rows, without allocating: what one joint gives.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct JointRows {
-    pub(crate) rows: [RowEval; 3],
-    pub(crate) len: usize,
-}
-
-impl Default for JointRows {
-    fn default() -> Self {
-        let none = RowEval {
-            value: 0.0,
-            grads: [(BodyId::GROUND, [0.0; 3]); 2],
-            gamma: 0.0,
-        };
-        Self {
-            rows: [none; 3],
-            len: 0,
-        }
-    }
-}
-
-impl Extend<RowEval> for JointRows {
-    fn extend<I: IntoIterator<Item = RowEval>>(&mut self, rows: I) {
-        for r in rows {
-            self.rows[self.len] = r;
-            self.len += 1;
-        }
-    }
-}
-
 /// An arm's world vector `ρ = R s`, the point `P = r + ρ`, and the point's velocity.
 fn arm(s: &BodyState, at: Point2) -> (Vec2, Point2, Vec2) {
     let rho = s.pose.frame().rotation * at.coords;

@@ -46,7 +46,7 @@ pub use coil_spring::CoilSpring;
 pub use driver::{Coordinate, Driver, DriverLaw};
 pub use error::SystemError;
 pub use jerk::BodyJerk;
-pub(crate) use joint::JointRows;
+pub(crate) use joint::RowEval;
 pub use joint::{Joint, JointKind};
 pub use solve::{ContactState, Instants, SystemState, SystemSweep};
 pub use table_force::TableForce;

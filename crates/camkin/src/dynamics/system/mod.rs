@@ -24,6 +24,7 @@
 //! in m/s²; energies are reported in N·L.
 
 mod centre;
+mod eval;
 mod sparse;
 mod step;
 
@@ -190,9 +191,17 @@ pub struct SystemSimulation<'a> {
     pending: Vec<ContactEvent>,
     /// the last evaluation of the equations of motion: a step's end is evaluated by its force
     /// check, then by the sample, then by the next step's first stage — once
-    pub(super) last: std::cell::RefCell<Option<step::Evaluated>>,
+    pub(super) last: std::cell::RefCell<Option<eval::Evaluated>>,
     /// buffers an evaluation reuses
-    pub(super) scratch: std::cell::RefCell<step::Scratch>,
+    pub(super) scratch: std::cell::RefCell<eval::Scratch>,
+    /// buffers an RK4 step reuses
+    pub(super) stages: std::cell::RefCell<step::Stages>,
+    /// buffers of a step's end, its check for crossings and a projection's pairings
+    pub(super) spare_end: step::StepEnd,
+    pub(super) spare_check: step::StepCheck,
+    pub(super) spare_pairings: Vec<Option<Pairing>>,
+    /// buffers of [`SystemSimulation::motion`]
+    sampled: std::cell::RefCell<(Vec<Option<Pairing>>, eval::Accel)>,
     /// the inverse of the mass matrix's diagonal, one per coordinate
     pub(super) inv_mass: Vec<f64>,
 }
@@ -397,6 +406,11 @@ impl<'a> SystemSimulation<'a> {
             pending: Vec::new(),
             last: std::cell::RefCell::new(None),
             scratch: Default::default(),
+            stages: Default::default(),
+            spare_end: Default::default(),
+            spare_check: Default::default(),
+            spare_pairings: Vec::new(),
+            sampled: Default::default(),
             inv_mass: Vec::new(),
         };
         sim.inv_mass = sim
@@ -447,13 +461,15 @@ impl<'a> SystemSimulation<'a> {
             .into());
         }
         // a contact pulled at the start leaves at once
-        let (_, forces, _, _) = sim.accel(
-            0.0,
-            &sim.q,
-            &sim.qd,
-            &sim.in_contact.clone(),
-            &mut sim.pairings.clone(),
-        )?;
+        let forces = sim
+            .accel(
+                0.0,
+                &sim.q,
+                &sim.qd,
+                &sim.in_contact.clone(),
+                &mut sim.pairings.clone(),
+            )?
+            .forces;
         for (k, &force) in forces.iter().enumerate() {
             if sim.in_contact[k] && force < 0.0 {
                 sim.in_contact[k] = false;
@@ -524,8 +540,12 @@ impl<'a> SystemSimulation<'a> {
     /// The sample at the current state.
     pub fn sample(&self) -> Result<SystemSample, DynamicsError> {
         let mut p = self.pairings.clone();
-        let (mut qdd, contact_forces, _, driver_efforts) =
-            self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
+        let eval::Accel {
+            mut qdd,
+            forces: contact_forces,
+            efforts: driver_efforts,
+            ..
+        } = self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
         self.frame_accelerations(&self.q, &self.qd, &mut qdd);
         let (q, qd) = self.frames(&self.q, &self.qd);
         let mut gaps = vec![0.0; self.in_contact.len()];
@@ -585,20 +605,23 @@ impl<'a> SystemSimulation<'a> {
         })
     }
 
-    /// The frames' coordinates, rates and accelerations now, each contact's compressive force
-    /// and each driver's effort: the part of [`SystemSample`] a preset reads back (without the
-    /// gaps, energies and Hertz pressures a sample adds). The evaluation is the one that ended
-    /// the last step.
-    #[allow(clippy::type_complexity)]
-    pub(crate) fn motion(
+    /// `read` of the frames' coordinates, rates and the evaluation now (their accelerations,
+    /// each contact's compressive force and each driver's effort): the part of
+    /// [`SystemSample`] a preset reads back, without the gaps, energies and Hertz pressures a
+    /// sample adds, and without a copy. The evaluation is the one that ended the last step.
+    pub(crate) fn motion<R>(
         &self,
-    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>), DynamicsError> {
-        let mut p = self.pairings.clone();
-        let (mut qdd, forces, _, efforts) =
-            self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
-        self.frame_accelerations(&self.q, &self.qd, &mut qdd);
+        read: impl FnOnce(&[f64], &[f64], &eval::Accel) -> R,
+    ) -> Result<R, DynamicsError> {
+        let mut kept = self.sampled.take();
+        let (p, a) = &mut kept;
+        p.clone_from(&self.pairings);
+        self.accel_into(self.t, &self.q, &self.qd, &self.in_contact, p, a)?;
+        self.frame_accelerations(&self.q, &self.qd, &mut a.qdd);
         let (q, qd) = self.frames(&self.q, &self.qd);
-        Ok((q.into_owned(), qd.into_owned(), qdd, forces, efforts))
+        let r = read(&q, &qd, a);
+        self.sampled.replace(kept);
+        Ok(r)
     }
 
     /// Whether contact `k` is closed now.

@@ -28,6 +28,9 @@ pub(crate) struct Schur {
     diagonal: Vec<f64>,
     /// `Φ_q M⁻¹` dense, for a few rows
     weighted: Vec<f64>,
+    /// the rows of the factor held, where it succeeded: asked again for the same rows (a
+    /// projection's rates, then the step's check at the same positions) it is kept
+    factored: Vec<Row>,
 }
 
 impl Schur {
@@ -36,12 +39,33 @@ impl Schur {
     /// size). The factor keeps to each row's envelope (from its first nonzero column): a
     /// chain's rows touch their neighbours only.
     pub(super) fn factor(&mut self, rows: &[Row], inv_mass: &[f64]) -> bool {
+        // (the last rows first: contacts' rows come last and move most, joints' are often fixed)
+        let same = self.factored.len() == rows.len()
+            && self
+                .factored
+                .iter()
+                .rev()
+                .zip(rows.iter().rev())
+                .all(|(a, b)| a.jac() == b.jac());
+        if same {
+            return true;
+        }
+        self.factored.clear();
+        if !self.factor_anew(rows, inv_mass) {
+            return false;
+        }
+        self.factored.extend_from_slice(rows);
+        true
+    }
+
+    /// [`Schur::factor`] computed.
+    fn factor_anew(&mut self, rows: &[Row], inv_mass: &[f64]) -> bool {
         let m = rows.len();
         let n = inv_mass.len();
         self.m = m;
         if m <= DENSE_ROWS {
             self.fill_dense(rows, inv_mass);
-            return self.cholesky();
+            return self.cholesky_dense();
         }
         // every entry, bucketed by coordinate (a counting sort): S[a][b] sums over the
         // coordinates rows a and b share
@@ -128,6 +152,32 @@ impl Schur {
         }
     }
 
+    /// Cholesky of `S` filled whole in `l` (row `i` at `i(i+1)/2`): the envelope's, without
+    /// its bookkeeping.
+    fn cholesky_dense(&mut self) -> bool {
+        let l = &mut self.l;
+        let mut ri = 0;
+        for i in 0..self.m {
+            let (done, rest) = l.split_at_mut(ri);
+            let row = &mut rest[..=i];
+            let mut rj = 0;
+            for j in 0..i {
+                let lj = &done[rj..=rj + j];
+                let s = row[j] - dot(&row[..j], &lj[..j]);
+                row[j] = s / lj[j];
+                rj += j + 1;
+            }
+            let diagonal = row[i];
+            let s = diagonal - dot(&row[..i], &row[..i]);
+            if !(s > 1e-12 * diagonal) {
+                return false;
+            }
+            row[i] = s.sqrt();
+            ri += i + 1;
+        }
+        true
+    }
+
     /// Cholesky of `S` (filled in `l`) within the envelope: `false` where a pivot, squared,
     /// falls below 1e-12 of its row's own size (dependent rows).
     fn cholesky(&mut self) -> bool {
@@ -170,6 +220,9 @@ impl Schur {
     /// Solves `S μ = b` in place (`L y = b`, then `Lᵀ μ = y`, within the envelope).
     pub(super) fn solve(&self, b: &mut [f64]) {
         let m = self.m;
+        if m <= DENSE_ROWS {
+            return self.solve_dense(&mut b[..m]);
+        }
         for i in 0..m {
             let (f, row) = (self.first[i], self.start[i]);
             let entries = &self.l[row..row + i - f];
@@ -190,28 +243,34 @@ impl Schur {
             }
         }
     }
-}
 
-/// `x0 + M⁻¹ Φ_qᵀ μ` with `S μ = b − Φ_q x0`: the mass-orthogonal projection of `x0` onto
-/// `Φ_q x = b`.
-pub(super) fn project(
-    rows: &[Row],
-    inv_mass: &[f64],
-    schur: &Schur,
-    x0: &[f64],
-    b: &[f64],
-) -> Vec<f64> {
-    let mut mu: Vec<f64> = rows
-        .iter()
-        .zip(b)
-        .map(|(row, &b)| b - row.jac().iter().map(|&(c, v)| v * x0[c]).sum::<f64>())
-        .collect();
-    schur.solve(&mut mu);
-    let mut x = x0.to_vec();
-    for (row, &u) in rows.iter().zip(&mu) {
-        for &(c, v) in row.jac() {
-            x[c] += inv_mass[c] * v * u;
+    /// [`Schur::solve`] with `L` whole (row `i` at `i(i+1)/2`).
+    fn solve_dense(&self, b: &mut [f64]) {
+        let m = b.len();
+        let l = &self.l[..m * (m + 1) / 2];
+        let mut ri = 0;
+        for i in 0..m {
+            let row = &l[ri..=ri + i];
+            let mut s = b[i];
+            for (x, y) in row[..i].iter().zip(b.iter()) {
+                s -= x * y;
+            }
+            b[i] = s / row[i];
+            ri += i + 1;
+        }
+        for i in (0..m).rev() {
+            ri -= i + 1;
+            let row = &l[ri..=ri + i];
+            let y = b[i] / row[i];
+            b[i] = y;
+            for (x, l) in b.iter_mut().zip(&row[..i]) {
+                *x -= l * y;
+            }
         }
     }
-    x
+}
+
+/// `Σ aᵢ bᵢ`.
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

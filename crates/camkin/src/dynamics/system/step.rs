@@ -1,302 +1,89 @@
-//! A simulated system's steps: the equations of motion at a state (solved directly, or by the
-//! augmented Lagrangian where rows are dependent), RK4, the projection onto the rows, and the
-//! events inside a step (lift-offs by bisection on the force, impacts by bisection on the gap).
+//! A simulated system's steps: RK4 over the equations of motion ([`super::eval`]), the
+//! projection onto the rows, and the events inside a step (lift-offs by bisection on the force,
+//! impacts by bisection on the gap).
 
 use super::super::follower::{EventKind, REBOUND_TOLERANCE};
-use super::super::model::{Constraint, Row};
 use super::super::projection::DenseRows;
 use super::super::DynamicsError;
-use super::sparse::{self, Schur};
+use super::eval::{Accel, Scratch};
 use super::{ContactEvent, SystemSimulation, MAX_EVENTS};
 use crate::contact::{self, Pairing, Surface};
 
-/// `(q̈, each contact's compressive force, the drivers' power, each driver's effort)`.
-type Accel = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
-
-/// Buffers a step reuses from one evaluation to the next (nothing of them outlives a call).
+/// The buffers of an RK4 step: each stage's evaluation, a stage's state and pairings.
 #[derive(Debug, Clone, Default)]
-pub(crate) struct Scratch {
-    /// the active rows, sparse
-    rows: Vec<Row>,
-    /// their stabilised right-hand sides `γ̃`
-    rhs: Vec<f64>,
-    /// which constraints hold
-    active: Vec<bool>,
-    /// the residual of the refinement step
-    delta: Vec<f64>,
-    /// the Schur complement's factor
-    schur: Schur,
+pub(crate) struct Stages {
+    k: [Accel; 4],
+    q: Vec<f64>,
+    v: Vec<f64>,
+    /// the stages' second and third rates `v₂`, `v₃`
+    v2: Vec<f64>,
+    v3: Vec<f64>,
 }
 
-/// An evaluation kept: the state and modes it was at, the pairings it started from and ended
-/// with, and its answer.
+/// A state a step ends at: positions, rates and pairings (buffers swapped with the
+/// simulation's own, so that the state a step started from is kept without a copy).
 #[derive(Debug, Clone, Default)]
-pub(crate) struct Evaluated {
-    t: f64,
-    q: Vec<f64>,
-    qd: Vec<f64>,
-    modes: Vec<bool>,
-    before: Vec<Option<Pairing>>,
-    after: Vec<Option<Pairing>>,
-    answer: Accel,
+pub(crate) struct StepEnd {
+    pub(super) q: Vec<f64>,
+    pub(super) qd: Vec<f64>,
+    pub(super) pairings: Vec<Option<Pairing>>,
+}
+
+/// The buffers of a step's check for crossings: the pairings it follows and its evaluation.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct StepCheck {
+    pairings: Vec<Option<Pairing>>,
+    accel: Accel,
 }
 
 impl SystemSimulation<'_> {
-    /// `(q̈, each contact's compressive force, the drivers' power, each driver's effort)` at a
-    /// state in the modes `in_contact`: a driver's effort is the force (or torque) it applies
-    /// along its coordinate, `−λ`.
-    pub(super) fn accel(
-        &self,
-        t: f64,
-        q: &[f64],
-        qd: &[f64],
-        in_contact: &[bool],
-        pairings: &mut [Option<Pairing>],
-    ) -> Result<Accel, DynamicsError> {
-        // the same state, asked again from the pairings it started from or ended with
-        // (only the closed contacts' pairings enter it: a flying contact's is followed apart)
-        if let Some(e) = self.last.borrow().as_ref() {
-            let same = |kept: &[Option<Pairing>]| {
-                in_contact
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, &closed)| closed)
-                    .all(|(k, _)| {
-                        let i = self.first_contact + k;
-                        kept[i] == pairings[i]
-                    })
-            };
-            if e.t == t
-                && e.q == q
-                && e.qd == qd
-                && e.modes == in_contact
-                && (same(&e.before) || same(&e.after))
-            {
-                for (k, &closed) in in_contact.iter().enumerate() {
-                    if closed {
-                        let i = self.first_contact + k;
-                        pairings[i] = e.after[i];
-                    }
-                }
-                return Ok(e.answer.clone());
-            }
-        }
-        // the kept evaluation's buffers are reused: marked stale (its time NaN) until the new
-        // one has succeeded
-        {
-            let mut last = self.last.borrow_mut();
-            let e = last.get_or_insert_with(Evaluated::default);
-            e.t = f64::NAN;
-            e.before.clear();
-            e.before.extend_from_slice(pairings);
-        }
-        let answer = self.evaluate(t, q, qd, in_contact, pairings)?;
-        if let Some(e) = self.last.borrow_mut().as_mut() {
-            e.t = t;
-            e.q.clear();
-            e.q.extend_from_slice(q);
-            e.qd.clear();
-            e.qd.extend_from_slice(qd);
-            e.modes.clear();
-            e.modes.extend_from_slice(in_contact);
-            e.after.clear();
-            e.after.extend_from_slice(pairings);
-            e.answer.0.clone_from(&answer.0);
-            e.answer.1.clone_from(&answer.1);
-            e.answer.2 = answer.2;
-            e.answer.3.clone_from(&answer.3);
-        }
-        Ok(answer)
-    }
-
-    /// [`SystemSimulation::accel`] computed.
-    fn evaluate(
-        &self,
-        t: f64,
-        q: &[f64],
-        qd: &[f64],
-        in_contact: &[bool],
-        pairings: &mut [Option<Pairing>],
-    ) -> Result<Accel, DynamicsError> {
-        let mut active = std::mem::take(&mut self.scratch.borrow_mut().active);
-        self.active_into(in_contact, &mut active);
-        // (an early return leaves the buffer to be made again)
-        let (qdd, lambda, gas_power) = match self.direct(t, q, qd, &active, pairings)? {
-            Some(x) => x,
-            // forces from tables of the crank angle are not in the model the augmented
-            // Lagrangian solves: dependent rows with them are refused, not answered without them
-            None if !self.sys.table_forces().is_empty() => {
-                return Err(DynamicsError::Singular { time: t });
-            }
-            // nor are centres of mass away from the frames' origins
-            None if self.offset => return Err(DynamicsError::Singular { time: t }),
-            // dependent rows (a redundant joint): the augmented Lagrangian, whose matrix stays
-            // positive definite there
-            None => {
-                let e = self
-                    .model
-                    .evaluate(&self.opts.al, t, q, qd, &active, pairings)?;
-                (e.qdd, e.lambda, 0.0)
-            }
-        };
-        // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
-        // a contact's compressive force −λ (its row is the gap, positive apart)
-        let mut forces = vec![0.0; in_contact.len()];
-        let mut efforts = Vec::with_capacity(self.sys.drivers().len());
-        // the drivers' power and the table forces' (their work is the drivers' column's too)
-        let (mut r, mut power) = (0, gas_power);
-        for (k, c) in self.model.constraints.iter().enumerate() {
-            if !active[k] {
-                continue;
-            }
-            if let Constraint::Driver {
-                body, coordinate, ..
-            } = c
-            {
-                // the driven coordinate's rate: its frame's
-                let rate = match coordinate {
-                    crate::system::Coordinate::Angle => qd[3 * body + 2],
-                    crate::system::Coordinate::X => self.frame_state(q, qd, *body).velocity.x,
-                    crate::system::Coordinate::Y => self.frame_state(q, qd, *body).velocity.y,
-                };
-                power -= lambda[r] * rate;
-                efforts.push(-lambda[r]);
-            }
-            if k >= self.first_contact {
-                let c = k - self.first_contact;
-                forces[c] = -self.sense[c] * lambda[r];
-            }
-            r += c.rows();
-        }
-        self.scratch.borrow_mut().active = active;
-        Ok((qdd, forces, power, efforts))
-    }
-
-    /// The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ − 2ξΩ Φ̇ − Ω² Φ` solved directly
-    /// by the Schur complement: `(Φ_q M⁻¹ Φ_qᵀ) λ = Φ_q M⁻¹ Q − γ̃` (Cholesky; a symmetric
-    /// diagonal scaling does not change its accuracy, so masses a hundred thousand times apart
-    /// cost nothing), `q̈ = M⁻¹ (Q − Φ_qᵀ λ)`. `None` where the rows are dependent.
-    #[allow(clippy::type_complexity)]
-    fn direct(
-        &self,
-        t: f64,
-        q: &[f64],
-        qd: &[f64],
-        active: &[bool],
-        pairings: &mut [Option<Pairing>],
-    ) -> Result<Option<(Vec<f64>, Vec<f64>, f64)>, DynamicsError> {
-        let n = q.len();
-        let al = &self.opts.al;
-        let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
-        let (qf, qdf) = self.frames(q, qd);
-        let arms = self.arms(q);
-        // the active rows, sparse (at most six entries each), and their γ̃
-        let mut guard = self.scratch.borrow_mut();
-        let Scratch {
-            rows: sparse,
-            rhs,
-            delta,
-            schur,
-            ..
-        } = &mut *guard;
-        sparse.clear();
-        rhs.clear();
-        for (k, c) in self.model.constraints.iter().enumerate() {
-            if !active[k] {
-                continue;
-            }
-            let rows = self
-                .model
-                .rows(c, t, &qf, &qdf, &mut pairings[k])
-                .map_err(|source| DynamicsError::Contact { time: t, source })?;
-            for row in rows.iter() {
-                let mut row = *row;
-                self.row_about_centres(&arms, qd, &mut row);
-                let phi_dot: f64 =
-                    row.jac().iter().map(|&(col, v)| v * qd[col]).sum::<f64>() - c.target_rate(t);
-                rhs.push(row.gamma - c1 * phi_dot - c2 * row.phi);
-                sparse.push(row);
-            }
-        }
-        let inv_mass = &self.inv_mass;
-        let mut force = vec![0.0; n];
-        self.model.forces(&qf, &qdf, &mut force);
-        let gas_power = self.add_table_forces(t, &qf, &qdf, &mut force);
-        self.forces_about_centres(q, &mut force);
-        if !schur.factor(sparse, inv_mass) {
-            return Ok(None);
-        }
-        // S λ = Φ_q M⁻¹ Q − γ̃
-        let mut lambda: Vec<f64> = sparse
-            .iter()
-            .zip(rhs.iter())
-            .map(|(row, &g)| {
-                row.jac()
-                    .iter()
-                    .map(|&(col, v)| v * inv_mass[col] * force[col])
-                    .sum::<f64>()
-                    - g
-            })
-            .collect();
-        schur.solve(&mut lambda);
-        let mut qdd = force;
-        for (row, &l) in sparse.iter().zip(&lambda) {
-            for &(col, v) in row.jac() {
-                qdd[col] -= v * l;
-            }
-        }
-        for (x, w) in qdd.iter_mut().zip(inv_mass) {
-            *x *= w;
-        }
-        // one step of iterative refinement: `q̈ = M⁻¹ (Q − Φ_qᵀ λ)` is a difference of forces
-        // that can be far larger than the accelerations they leave (a stiff spring's force
-        // against the contact's), so `Φ_q q̈` misses `γ̃` by their rounding; the residual,
-        // solved with the same factor, puts the accelerations on their rows to their own
-        // rounding (a follower in contact then moves as the kinematics to 1e-13 of its peak)
-        delta.clear();
-        delta.extend(
-            sparse
-                .iter()
-                .zip(rhs.iter())
-                .map(|(row, &g)| g - row.jac().iter().map(|&(c, v)| v * qdd[c]).sum::<f64>()),
-        );
-        schur.solve(delta);
-        for ((row, &d), l) in sparse.iter().zip(delta.iter()).zip(lambda.iter_mut()) {
-            *l -= d;
-            for &(col, v) in row.jac() {
-                qdd[col] += inv_mass[col] * v * d;
-            }
-        }
-        Ok(Some((qdd, lambda, gas_power)))
-    }
-
-    /// One RK4 step of `h` from the current state in the current modes: the state at its end,
-    /// the pairings there and the drivers' work over it.
-    #[allow(clippy::type_complexity)]
-    fn rk4(
-        &self,
-        h: f64,
-    ) -> Result<(Vec<f64>, Vec<f64>, Vec<Option<Pairing>>, f64), DynamicsError> {
+    /// One RK4 step of `h` from the current state in the current modes, its end written to
+    /// `end`: the drivers' work over it.
+    fn rk4(&self, h: f64, end: &mut StepEnd) -> Result<f64, DynamicsError> {
         let (t, q, qd, modes) = (self.t, &self.q, &self.qd, &self.in_contact);
-        let mut p = self.pairings.clone();
-        let add = |a: &[f64], b: &[f64], s: f64| -> Vec<f64> {
-            a.iter().zip(b).map(|(x, y)| x + s * y).collect()
+        let mut stages = std::mem::take(&mut *self.stages.borrow_mut());
+        let Stages {
+            k,
+            q: qs,
+            v: v4,
+            v2,
+            v3,
+        } = &mut stages;
+        let p = &mut end.pairings;
+        p.clone_from(&self.pairings);
+        let set = |out: &mut Vec<f64>, a: &[f64], b: &[f64], s: f64| {
+            out.clear();
+            out.extend(a.iter().zip(b).map(|(x, y)| x + s * y));
         };
-        let (a1, _, w1, _) = self.accel(t, q, qd, modes, &mut p)?;
-        let (q2, v2) = (add(q, qd, 0.5 * h), add(qd, &a1, 0.5 * h));
-        let (a2, _, w2, _) = self.accel(t + 0.5 * h, &q2, &v2, modes, &mut p)?;
-        let (q3, v3) = (add(q, &v2, 0.5 * h), add(qd, &a2, 0.5 * h));
-        let (a3, _, w3, _) = self.accel(t + 0.5 * h, &q3, &v3, modes, &mut p)?;
-        let (q4, v4) = (add(q, &v3, h), add(qd, &a3, h));
-        let (a4, _, w4, _) = self.accel(t + h, &q4, &v4, modes, &mut p)?;
+        let [k1, k2, k3, k4] = k;
+        self.accel_into(t, q, qd, modes, p, k1)?;
+        set(qs, q, qd, 0.5 * h);
+        set(v2, qd, &k1.qdd, 0.5 * h);
+        self.accel_into(t + 0.5 * h, qs, v2, modes, p, k2)?;
+        set(qs, q, v2, 0.5 * h);
+        set(v3, qd, &k2.qdd, 0.5 * h);
+        self.accel_into(t + 0.5 * h, qs, v3, modes, p, k3)?;
+        set(qs, q, v3, h);
+        set(v4, qd, &k3.qdd, h);
+        self.accel_into(t + h, qs, v4, modes, p, k4)?;
         let n = q.len();
-        let qn = (0..n)
-            .map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]))
-            .collect();
-        let vn = (0..n)
-            .map(|i| qd[i] + h / 6.0 * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]))
-            .collect();
-        Ok((qn, vn, p, h / 6.0 * (w1 + 2.0 * w2 + 2.0 * w3 + w4)))
+        end.q.clear();
+        end.q
+            .extend((0..n).map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i])));
+        end.qd.clear();
+        end.qd.extend((0..n).map(|i| {
+            qd[i] + h / 6.0 * (k1.qdd[i] + 2.0 * k2.qdd[i] + 2.0 * k3.qdd[i] + k4.qdd[i])
+        }));
+        let work = h / 6.0 * (k1.power + 2.0 * k2.power + 2.0 * k3.power + k4.power);
+        *self.stages.borrow_mut() = stages;
+        Ok(work)
+    }
+
+    /// The current state exchanged with `end`'s (buffers swapped, nothing copied).
+    fn swap_state(&mut self, end: &mut StepEnd) {
+        std::mem::swap(&mut self.q, &mut end.q);
+        std::mem::swap(&mut self.qd, &mut end.qd);
+        std::mem::swap(&mut self.pairings, &mut end.pairings);
     }
 
     /// Contact `k`'s gap at the state `(q, q̇)` along the common normal of its nearest points
@@ -357,123 +144,118 @@ impl SystemSimulation<'_> {
     /// Positions by Newton onto the active rows (mass-orthogonal), then velocities onto
     /// `Φ_q q̇ = −Φ_t`.
     pub(super) fn project(&mut self) -> Result<(), DynamicsError> {
-        let mut pairings = self.pairings.clone();
-        let modes = self.in_contact.clone();
-        // the factor's buffers are the evaluations' (none is running now)
-        let mut schur = std::mem::take(&mut self.scratch.get_mut().schur);
-        let done = self.project_with(&mut schur, &modes, &mut pairings);
-        self.scratch.get_mut().schur = schur;
+        // the evaluations' buffers (none is running now)
+        let mut scratch = std::mem::take(self.scratch.get_mut());
+        let mut pairings = std::mem::take(&mut self.spare_pairings);
+        pairings.clone_from(&self.pairings);
+        let modes = std::mem::take(&mut self.in_contact);
+        let done = self.project_with(&mut scratch, &modes, &mut pairings);
+        self.in_contact = modes;
+        *self.scratch.get_mut() = scratch;
         match done? {
             true => {
-                self.pairings = pairings;
+                std::mem::swap(&mut self.pairings, &mut pairings);
+                self.spare_pairings = pairings;
                 Ok(())
             }
             false => self.project_dense(),
         }
     }
 
-    /// [`SystemSimulation::project`] with `schur`'s buffers; `false` where the rows are
+    /// [`SystemSimulation::project`] with the buffers `s`; `false` where the rows are
     /// dependent (the positions as far as they were moved: the dense projection goes on from
     /// there).
     fn project_with(
         &mut self,
-        schur: &mut Schur,
+        s: &mut Scratch,
         modes: &[bool],
         pairings: &mut [Option<Pairing>],
     ) -> Result<bool, DynamicsError> {
-        let (mut rows, mut phi, mut target) =
-            self.sparse_rows(&self.q, &self.qd, modes, pairings)?;
+        self.sparse_rows(modes, pairings, s)?;
         for _ in 0..8 {
-            if phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
+            if s.phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
                 break;
             }
-            if !schur.factor(&rows, &self.inv_mass) {
+            if !s.schur.factor(&s.rows, &self.inv_mass) {
                 return Ok(false);
             }
-            let b: Vec<f64> = phi.iter().map(|p| -p).collect();
-            let dq = sparse::project(&rows, &self.inv_mass, schur, &vec![0.0; self.q.len()], &b);
-            for (q, d) in self.q.iter_mut().zip(&dq) {
+            // Δq = M⁻¹ Φ_qᵀ μ, S μ = −Φ
+            s.lambda.clear();
+            s.lambda.extend(s.phi.iter().map(|p| -p));
+            s.schur.solve(&mut s.lambda);
+            // (summed apart, then added: each coordinate's correction whole)
+            s.delta.clear();
+            s.delta.resize(self.q.len(), 0.0);
+            for (row, &u) in s.rows.iter().zip(&s.lambda) {
+                for &(c, v) in row.jac() {
+                    s.delta[c] += self.inv_mass[c] * v * u;
+                }
+            }
+            for (q, d) in self.q.iter_mut().zip(&s.delta) {
                 *q += d;
             }
-            (rows, phi, target) = self.sparse_rows(&self.q, &self.qd, modes, pairings)?;
+            self.sparse_rows(modes, pairings, s)?;
         }
-        if !schur.factor(&rows, &self.inv_mass) {
+        // velocities: q̇ + M⁻¹ Φ_qᵀ μ with S μ = −Φ_t − Φ_q q̇ (the factor is the one the
+        // step's check evaluates with next: the same rows)
+        if !s.schur.factor(&s.rows, &self.inv_mass) {
             return Ok(false);
         }
-        self.qd = sparse::project(&rows, &self.inv_mass, schur, &self.qd, &target);
+        self.project_rates(s);
         Ok(true)
     }
 
-    /// Adds the forces from tables of the crank angle at `t` to `f`; their power.
-    fn add_table_forces(&self, t: f64, q: &[f64], qd: &[f64], f: &mut [f64]) -> f64 {
-        let forces = self.sys.table_forces();
-        let Some(d) = self.sys.drivers().first() else {
-            return 0.0;
-        };
-        if forces.is_empty() {
-            return 0.0;
+    /// The rates projected onto the rows `s.rows` (their rates `s.rhs`) with the factor
+    /// `s.schur`.
+    fn project_rates(&mut self, s: &mut Scratch) {
+        s.lambda.clear();
+        s.lambda.extend(
+            s.rows
+                .iter()
+                .zip(&s.rhs)
+                .map(|(row, &b)| b - row.jac().iter().map(|&(c, v)| v * self.qd[c]).sum::<f64>()),
+        );
+        s.schur.solve(&mut s.lambda);
+        for (row, &u) in s.rows.iter().zip(&s.lambda) {
+            for &(c, v) in row.jac() {
+                self.qd[c] += self.inv_mass[c] * v * u;
+            }
         }
-        let [angle, ..] = d.law.at(t);
-        let start = d.law.at(0.0)[0];
-        let driver_deg = (angle - start).to_degrees();
-        forces
-            .iter()
-            .map(|g| {
-                let s = super::super::model::body_state(q, qd, g.body.0);
-                g.add_force(driver_deg, s.pose, (s.velocity, s.omega), f)
-            })
-            .sum()
     }
 
-    /// How many rows the constraints `active` hold.
-    fn active_rows(&self, active: &[bool]) -> usize {
-        self.model
-            .constraints
-            .iter()
-            .zip(active)
-            .filter(|(_, &a)| a)
-            .map(|(c, _)| c.rows())
-            .sum()
-    }
-
-    /// The active rows at `(q, q̇)`, sparse, with `Φ` and the rate each must have (`−Φ_t`).
-    #[allow(clippy::type_complexity)]
+    /// The active rows now, sparse, into `s.rows`, with their `Φ` into `s.phi` and the rate
+    /// each must have (`−Φ_t`) into `s.rhs`.
     fn sparse_rows(
         &self,
-        q: &[f64],
-        qd: &[f64],
         in_contact: &[bool],
         pairings: &mut [Option<Pairing>],
-    ) -> Result<(Vec<Row>, Vec<f64>, Vec<f64>), DynamicsError> {
-        let active = self.active(in_contact);
+        s: &mut Scratch,
+    ) -> Result<(), DynamicsError> {
+        let (q, qd) = (&self.q, &self.qd);
+        self.active_into(in_contact, &mut s.active);
         let (qf, qdf) = self.frames(q, qd);
         let arms = self.arms(q);
-        let m = self.active_rows(&active);
-        let (mut rows, mut phi, mut target) = (
-            Vec::with_capacity(m),
-            Vec::with_capacity(m),
-            Vec::with_capacity(m),
-        );
+        s.rows.clear();
+        s.phi.clear();
+        s.rhs.clear();
         for (k, c) in self.model.constraints.iter().enumerate() {
-            if !active[k] {
+            if !s.active[k] {
                 continue;
             }
-            let rs = self
-                .model
-                .rows(c, self.t, &qf, &qdf, &mut pairings[k])
+            let from = s.rows.len();
+            self.model
+                .push_rows(c, self.t, &qf, &qdf, &mut pairings[k], &mut s.rows)
                 .map_err(|source| DynamicsError::Contact {
                     time: self.t,
                     source,
                 })?;
-            for row in rs.iter() {
-                let mut row = *row;
-                self.row_about_centres(&arms, qd, &mut row);
-                phi.push(row.phi);
-                target.push(c.target_rate(self.t));
-                rows.push(row);
+            for row in &mut s.rows[from..] {
+                self.row_about_centres(&arms, qd, row);
+                s.phi.push(row.phi);
+                s.rhs.push(c.target_rate(self.t));
             }
         }
-        Ok((rows, phi, target))
+        Ok(())
     }
 
     /// [`SystemSimulation::project`] on the whole saddle-point matrix, where the rows are
@@ -534,32 +316,38 @@ impl SystemSimulation<'_> {
         }
         self.wrap_pairings();
         let mut events = std::mem::take(&mut self.pending);
-        let end = self.t + h;
-        while self.t < end - 1e-15 * end.abs().max(1.0) {
+        // the buffers of a step's end (after the swap, of its start) and of its force check
+        let mut end = std::mem::take(&mut self.spare_end);
+        let mut check = std::mem::take(&mut self.spare_check);
+        let mut p = Vec::new();
+        let stop = self.t + h;
+        while self.t < stop - 1e-15 * stop.abs().max(1.0) {
             if events.len() > MAX_EVENTS {
                 return Err(DynamicsError::Chatter {
                     time: self.t,
                     events: MAX_EVENTS,
                 });
             }
-            let dt = end - self.t;
-            let saved = (
-                self.q.clone(),
-                self.qd.clone(),
-                self.pairings.clone(),
-                self.t,
-                self.work,
-            );
-            let (qn, vn, pn, dw) = self.rk4(dt)?;
-            (self.q, self.qd, self.pairings, self.t) = (qn, vn, pn, end);
+            let dt = stop - self.t;
+            let (t0, work0) = (self.t, self.work);
+            let dw = self.rk4(dt, &mut end)?;
+            self.swap_state(&mut end);
+            self.t = stop;
             self.work += dw;
             self.project()?;
             // what ended the step: a contact pulled, or a gap closed
-            let mut p = self.pairings.clone();
-            let (_, forces, _, _) =
-                self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
+            std::mem::swap(&mut p, &mut check.pairings);
+            p.clone_from(&self.pairings);
+            self.accel_into(
+                self.t,
+                &self.q,
+                &self.qd,
+                &self.in_contact,
+                &mut p,
+                &mut check.accel,
+            )?;
             let mut crossing = Vec::new();
-            for (k, &force) in forces.iter().enumerate() {
+            for (k, &force) in check.accel.forces.iter().enumerate() {
                 if self.in_contact[k] {
                     if force < 0.0 {
                         crossing.push(k);
@@ -572,10 +360,13 @@ impl SystemSimulation<'_> {
                 // the pairings followed to this state: a flying contact's from its last, so that
                 // Newton stays on the nearest pair of points (from the pairing at lift-off, a
                 // disc's far side under a flat face was found once the follower had flown)
-                self.pairings = p;
+                std::mem::swap(&mut self.pairings, &mut p);
+                std::mem::swap(&mut p, &mut check.pairings);
                 continue;
             }
-            (self.q, self.qd, self.pairings, self.t, self.work) = saved;
+            // back to the step's start
+            self.swap_state(&mut end);
+            (self.t, self.work) = (t0, work0);
             // the first crossing, each located by bisection on its own quantity
             let mut first = (f64::INFINITY, 0);
             for &k in &crossing {
@@ -585,8 +376,8 @@ impl SystemSimulation<'_> {
                 }
             }
             let (tau, k) = first;
-            let (qn, vn, pn, dw) = self.rk4(tau)?;
-            (self.q, self.qd, self.pairings) = (qn, vn, pn);
+            let dw = self.rk4(tau, &mut end)?;
+            self.swap_state(&mut end);
             self.t += tau;
             self.work += dw;
             if self.in_contact[k] {
@@ -612,6 +403,7 @@ impl SystemSimulation<'_> {
                 });
             }
         }
+        (self.spare_end, self.spare_check) = (end, check);
         Ok(events)
     }
 
@@ -639,14 +431,19 @@ impl SystemSimulation<'_> {
     /// crosses zero, integrating in the current modes.
     fn bisect(&self, dt: f64, k: usize) -> Result<f64, DynamicsError> {
         let (mut lo, mut hi) = (0.0, dt);
+        let mut end = StepEnd::default();
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);
-            let (q, v, mut p, _) = self.rk4(mid)?;
+            self.rk4(mid, &mut end)?;
+            let StepEnd {
+                ref q,
+                qd: ref v,
+                pairings: ref mut p,
+            } = end;
             let value = if self.in_contact[k] {
-                self.accel(self.t + mid, &q, &v, &self.in_contact, &mut p)?
-                    .1[k]
+                self.accel(self.t + mid, q, v, &self.in_contact, p)?.forces[k]
             } else {
-                self.gap(&q, &v, k, &mut p)? + 1e-12 * self.size
+                self.gap(q, v, k, p)? + 1e-12 * self.size
             };
             if value >= 0.0 {
                 lo = mid;
