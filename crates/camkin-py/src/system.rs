@@ -183,7 +183,7 @@ impl PySystem {
         large: bool,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let sys = &self.built.system;
-        let (run, t0, t1) = self.run_revolutions(py, revolutions, step_deg, substeps, large)?;
+        let (run, plan) = self.run_revolutions(py, revolutions, step_deg, substeps, large)?;
         let unit = self.built.length_unit.name();
         let mut samples = Columns::new(
             camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
@@ -199,7 +199,7 @@ impl PySystem {
         }
         let mut events = Columns::new(camkin::table::system_event_columns(unit), run.events.len());
         for e in &run.events {
-            let angle = step_deg * (e.time - t0) / (t1 - t0);
+            let angle = plan.angle_of(e.time);
             events.push(camkin::table::system_event_cells(sys, e, angle));
         }
         Ok((samples.into_dict(py, false)?, events.into_dict(py, false)?))
@@ -231,8 +231,8 @@ impl PySystem {
                 "the system's file has no [lubrication] table (its oil and roughness)".into(),
             ));
         };
-        let (run, t0, t1) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
-        let angle_of = |t: f64| step_deg * (t - t0) / (t1 - t0);
+        let (run, plan) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
+        let angle_of = |t: f64| plan.angle_of(t);
         let report =
             camkin::report::SystemLubricationReport::new(&self.built.system, &run, req, angle_of);
         let (names, rows) = report.table();
@@ -275,7 +275,7 @@ impl PySystem {
 
 impl PySystem {
     /// The simulation `simulate` and `lubrication` share: `revolutions` of the first driver in
-    /// `step_deg` output steps, with the instants of angle 0 and of the first step.
+    /// `step_deg` output steps (the library's plan), with the plan.
     pub(crate) fn run_revolutions(
         &self,
         py: Python<'_>,
@@ -283,66 +283,53 @@ impl PySystem {
         step_deg: f64,
         substeps: Option<usize>,
         large: bool,
-    ) -> PyResult<(camkin::dynamics::SystemRun, f64, f64)> {
+    ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
+        use camkin::spec::{PlanError, PlanField};
         let sys = &self.built.system;
         let h_ = camkin::human::human;
-        if !(revolutions > 0.0 && revolutions <= 1e4) {
-            return Err(errors::input(
-                "revolutions",
-                Some(h_(revolutions)),
-                format!("revolutions = {}: must be in (0, 10000]", h_(revolutions)),
-            ));
-        }
-        if !(1e-3..=90.0).contains(&step_deg) {
-            return Err(errors::input(
-                "step_deg",
-                Some(h_(step_deg)),
-                format!(
-                    "step_deg = {}: must be from 0.001 to 90 degrees",
-                    h_(step_deg)
-                ),
-            ));
-        }
-        let outputs = (revolutions * 360.0 / step_deg).round().max(1.0) as usize;
-        let (Some(t0), Some(t1)) = (
-            self.built.time_of(0.0),
-            self.built.time_of(step_deg.to_radians()),
-        ) else {
-            return Err(errors::input(
-                "driver",
-                None,
-                "the first driver does not turn an angle at a constant speed: a simulation's outputs are at its angles".into(),
-            ));
-        };
         let dyn_err = |e: camkin::dynamics::DynamicsError| errors::input("", None, e.to_string());
-        let mut sim = camkin::dynamics::SystemSimulation::new(sys, self.built.dynamics.clone())
-            .map_err(dyn_err)?;
-        let h_out = (t1 - t0).abs();
-        let fewest = sim.substeps(h_out);
-        let substeps = match substeps {
-            None => fewest,
-            Some(n) if n >= fewest && n <= 1000 => n,
-            Some(n) => {
-                let (rate, element) = sim.fastest_rate();
-                return Err(errors::input(
+        let (plan, mut sim) = self
+            .built
+            .plan(revolutions, step_deg, substeps)
+            .map_err(|e| match e {
+                PlanError::OutOfRange {
+                    field,
+                    value,
+                    range,
+                } => {
+                    let key = match field {
+                        PlanField::Revolutions => "revolutions",
+                        PlanField::Step => "step_deg",
+                        _ => "substeps",
+                    };
+                    errors::input(key, Some(value.clone()), format!("{key} = {value}: must be {range}"))
+                }
+                PlanError::NotAnAngle => errors::input("driver", None, e.to_string()),
+                PlanError::TooStiff {
+                    element,
+                    rate,
+                    substeps,
+                    need,
+                    ..
+                } => errors::input(
                     "substeps",
-                    Some(n.to_string()),
+                    Some(substeps.to_string()),
                     format!(
-                        "substeps = {n}: {element} is too stiff for {n} substeps of a {}° step (its rate {} /s): use substeps={fewest} or more (at most 1000)",
+                        "substeps = {substeps}: {element} is too stiff for {substeps} substeps of a {}° step (its rate {} /s): use substeps={need} or more (at most 1000)",
                         h_(step_deg),
                         h_(rate)
                     ),
-                ));
-            }
-        };
+                ),
+                PlanError::Dynamics(e) => dyn_err(e),
+                e => errors::input("", None, e.to_string()),
+            })?;
         errors::refuse_large(
-            &camkin::work::Work::system_simulation(sys, outputs * substeps, outputs + 1),
+            &camkin::work::Work::system_simulation(sys, plan.steps(), plan.outputs + 1),
             large,
             ", or simulate fewer revolutions",
         )?;
-        let h = h_out / substeps as f64;
         let run = py.detach(|| {
-            sim.run(outputs, substeps, h, |k| {
+            sim.run(plan.outputs, plan.substeps, plan.h(), |k| {
                 if k % 1024 == 0 && errors::interrupted().is_err() {
                     return std::ops::ControlFlow::Break(());
                 }
@@ -357,6 +344,6 @@ impl PySystem {
             }
             Err(e) => return Err(dyn_err(e)),
         };
-        Ok((run, t0, t1))
+        Ok((run, plan))
     }
 }

@@ -95,8 +95,8 @@ impl PySystem {
                 ", or use a coarser step_deg",
             )?;
         }
-        let (run, t0, t1) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
-        let angle_of = |t: f64| step_deg * (t - t0) / (t1 - t0);
+        let (run, plan) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
+        let angle_of = |t: f64| plan.angle_of(t);
         let report = camkin::report::SystemForces::new(
             sys,
             &run,

@@ -10,30 +10,25 @@ use super::system::scene_frames;
 use super::{Limits, StudioError};
 use crate::scene::system::{scene_at, Touch};
 use camkin::body::Pose;
-use camkin::dynamics::{EventKind, SystemRun, SystemSimulation};
-use camkin::spec::BuiltSystem;
+use camkin::dynamics::{EventKind, SystemRun};
+use camkin::spec::{BuiltSystem, PlanError, RunPlan};
 use std::time::Instant;
 
-/// A revolution of `built` simulated at `step_deg` outputs, the time step as the stiffest
-/// element needs; the work refused over the limits first.
+/// A revolution of `built` simulated at `step_deg` outputs (the library's plan: the time step
+/// as the stiffest element needs); the work refused over the limits first.
 pub(super) fn simulate(
     built: &BuiltSystem,
     step_deg: f64,
     limits: &Limits,
-) -> Result<SystemRun, StudioError> {
+) -> Result<(SystemRun, RunPlan), StudioError> {
     let input = |message: String| StudioError::Input { message, at: None };
-    let sys = &built.system;
-    let (Some(t0), Some(t1)) = (built.time_of(0.0), built.time_of(step_deg.to_radians())) else {
-        return Err(input(
+    let (plan, mut sim) = built.plan(1.0, step_deg, None).map_err(|e| match e {
+        PlanError::NotAnAngle => input(
             "its first driver does not turn an angle at a constant speed: the studio shows a simulated system over its revolution".into(),
-        ));
-    };
-    let outputs = (360.0 / step_deg).round() as usize;
-    let mut sim = SystemSimulation::new(sys, built.dynamics.clone())
-        .map_err(|e| input(format!("the system cannot be simulated: {e}")))?;
-    let h_out = (t1 - t0).abs();
-    let substeps = sim.substeps(h_out);
-    let work = camkin::work::Work::system_simulation(sys, outputs * substeps, outputs + 1);
+        ),
+        e => input(format!("the system cannot be simulated: {e}")),
+    })?;
+    let work = camkin::work::Work::system_simulation(&built.system, plan.steps(), plan.outputs + 1);
     if let Some(r) = work.refusal_within(limits.max_seconds, camkin::work::BYTES_LIMIT) {
         return Err(StudioError::TooMuch {
             message: format!(
@@ -42,10 +37,12 @@ pub(super) fn simulate(
             ),
         });
     }
-    sim.run(outputs, substeps, h_out / substeps as f64, |_| {
-        std::ops::ControlFlow::Continue(())
-    })
-    .map_err(|e| input(format!("the simulation stopped: {e}")))
+    let run = sim
+        .run(plan.outputs, plan.substeps, plan.h(), |_| {
+            std::ops::ControlFlow::Continue(())
+        })
+        .map_err(|e| input(format!("the simulation stopped: {e}")))?;
+    Ok((run, plan))
 }
 
 /// The studio's analysis of a simulated system (see the module docs).
@@ -58,7 +55,7 @@ pub fn analyze(
     let t0 = Instant::now();
     let sys = &built.system;
     let unit = built.length_unit.name();
-    let run = simulate(built, step_deg, limits)?;
+    let (run, plan) = simulate(built, step_deg, limits)?;
     let samples = &run.samples;
     let size = sys.size();
     let nb = sys.bodies().len();
@@ -193,12 +190,7 @@ pub fn analyze(
         });
     }
     // the impacts, for people: where and how fast
-    let angle_of = |t: f64| {
-        built
-            .time_of(step_deg.to_radians())
-            .zip(built.time_of(0.0))
-            .map_or(0.0, |(t1, t0)| step_deg * (t - t0) / (t1 - t0))
-    };
+    let angle_of = |t: f64| plan.angle_of(t);
     let events: Vec<Event> = run
         .events
         .iter()
@@ -235,7 +227,7 @@ pub fn table(
     step_deg: f64,
     limits: &Limits,
 ) -> Result<super::system::CellTable, StudioError> {
-    let run = simulate(built, step_deg, limits)?;
+    let (run, _) = simulate(built, step_deg, limits)?;
     let columns = camkin::table::system_sample_columns(
         &built.system,
         built.length_unit.name(),

@@ -11,7 +11,7 @@ use super::system_simulate::{bad, dyn_err};
 use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::dynamics::{SpeedSweep, SystemSimulation};
+use camkin::dynamics::SpeedSweep;
 use camkin::report::{SystemForceFailure, SystemForces};
 
 /// The revolution's simulation, its report and the checks.
@@ -48,17 +48,10 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
     }
     let sys = &built.system;
     let step = args.step.deg();
-    let time_of = |deg: f64| built.time_of(deg.to_radians());
-    let (Some(t0), Some(t1)) = (time_of(0.0), time_of(step)) else {
-        return Err(bad(format!(
-            "{name}: its first driver does not turn an angle at a constant speed: the forces are given over its revolution"
-        )));
-    };
-    let outputs = (360.0 / step).round() as usize;
-    let h_out = (t1 - t0).abs();
-    let mut sim =
-        SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| dyn_err(name, e))?;
-    let substeps = sim.substeps(h_out);
+    let (plan, mut sim) = built
+        .plan(1.0, step, None)
+        .map_err(|e| super::system_simulate::plan_err(name, e))?;
+    let (outputs, substeps) = (plan.outputs, plan.substeps);
     let rpm = sys.first_driver_rpm();
     // --target-rpm's sweep: from a quarter of the lower of the two speeds, in eight steps to
     // the target, then bisected to 1 rpm
@@ -83,11 +76,11 @@ pub fn run(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
     )?;
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let run = sim
-        .run(outputs, substeps, h_out / substeps as f64, |_| {
+        .run(outputs, substeps, plan.h(), |_| {
             std::ops::ControlFlow::Continue(())
         })
         .map_err(|e| dyn_err(name, e))?;
-    let angle_of = |t: f64| step * (t - t0) / (t1 - t0);
+    let angle_of = |t: f64| plan.angle_of(t);
     let u = built.dynamics.metres_per_unit;
     let report = SystemForces::new(sys, &run, u, angle_of);
     let h = camkin::human::human;

@@ -7,7 +7,7 @@ use super::simulate::SimulateArgs;
 use crate::output::{write_atomic, write_cell_table, Cell, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::dynamics::{DynamicsError, SystemSample, SystemSimulation};
+use camkin::dynamics::{DynamicsError, SystemSimulation};
 use camkin::table::{
     system_event_cells, system_event_columns, system_sample_cells, system_sample_columns,
 };
@@ -44,46 +44,28 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
     let sys = &built.system;
     let unit = built.length_unit.name();
     let step = args.step.deg();
-    let time_of = |deg: f64| built.time_of(deg.to_radians());
-    let (Some(t0), Some(t1)) = (time_of(0.0), time_of(step)) else {
-        return Err(bad(format!(
-            "{name}: its first driver does not turn an angle at a constant speed: a simulation's outputs are at its angles"
-        )));
-    };
     if let Some(range) = &args.no_follow {
+        if built.time_of(0.0).is_none() {
+            return Err(plan_err(name, camkin::spec::PlanError::NotAnAngle));
+        }
         return no_follow(args, name, &built, range);
     }
-    let h = (t1 - t0).abs() / args.substeps as f64;
-    let mut sim =
-        SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| dyn_err(name, e))?;
+    let (plan, mut sim) = built
+        .plan(args.revolutions, step, Some(args.substeps))
+        .map_err(|e| plan_err(name, e))?;
     // with --out, the pages' reference run at a tenth of the speed: ten times the steps at
     // least (its time step is as the stiffest element needs)
     let reference = if args.out.is_some() { 11 } else { 1 };
-    let steps = outputs * args.substeps * reference;
     crate::refuse_large(
-        &camkin::work::Work::system_simulation(sys, steps, outputs + 1),
+        &camkin::work::Work::system_simulation(sys, plan.steps() * reference, outputs + 1),
         args.work.large,
         ", or simulate fewer --revolutions",
     )?;
-    // the stiffest element bounds the step: say how many substeps would do
-    let max_step = sim.max_step();
-    if h > max_step {
-        let (rate, element) = sim.fastest_rate();
-        let need = ((t1 - t0).abs() / max_step).ceil();
-        return Err(bad(format!(
-            "{name}: {element} is too stiff for the time step {} s ({}° of the driver / {} substeps): its rate is {} /s, so the step must be at most {} s; use --substeps {need} or more",
-            camkin::human::human(h),
-            camkin::human::human(step),
-            args.substeps,
-            camkin::human::human(rate),
-            camkin::human::human(max_step),
-        )));
-    }
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
-    let angle_of = |t: f64| step * (t - t0) / (t1 - t0);
+    let angle_of = |t: f64| plan.angle_of(t);
     let pb = indicatif::ProgressBar::new(outputs as u64);
     let run = sim
-        .run(outputs, args.substeps, h, |k| {
+        .run(plan.outputs, plan.substeps, plan.h(), |k| {
             if k % 256 == 0 {
                 pb.set_position(k as u64);
             }
@@ -117,7 +99,7 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
             .map_err(Failure::output)?;
             // the same system at a tenth of the speed: its motion nearly quasi-static (inertia
             // forces a hundredth), the reference of the deviation plot
-            let slow = quasi_static(&built, args, outputs, step).map_err(|e| dyn_err(name, e))?;
+            let slow = built.quasi_static(&plan).map_err(|e| dyn_err(name, e))?;
             let impacts: Vec<f64> = events
                 .iter()
                 .filter(|e| e.kind == camkin::dynamics::EventKind::Impact)
@@ -186,46 +168,41 @@ pub fn run(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Resul
     Ok(())
 }
 
-/// The system's samples at the same driver angles with its first driver at a tenth of its
-/// speed (the time step what its stiffest element needs).
-fn quasi_static(
-    built: &camkin::spec::BuiltSystem,
-    args: &SimulateArgs,
-    outputs: usize,
-    step: f64,
-) -> Result<Vec<SystemSample>, DynamicsError> {
-    let mut sys = built.system.clone();
-    if let Some(d) = sys.drivers().first().cloned() {
-        if let camkin::system::DriverLaw::Quadratic {
-            start,
-            rate,
-            acceleration,
-        } = d.law
-        {
-            sys.set_driver_law(
-                0,
-                camkin::system::DriverLaw::Quadratic {
-                    start,
-                    rate: 0.1 * rate,
-                    acceleration: 0.01 * acceleration,
-                },
-            );
+/// A run's plan refused, as the command's flags name it.
+pub(super) fn plan_err(name: &str, e: camkin::spec::PlanError) -> Failure {
+    use camkin::spec::{PlanError, PlanField};
+    let h = camkin::human::human;
+    match e {
+        PlanError::OutOfRange {
+            field,
+            value,
+            range,
+        } => {
+            let flag = match field {
+                PlanField::Revolutions => "--revolutions",
+                PlanField::Step => "--step",
+                _ => "--substeps",
+            };
+            bad(format!("{flag}: {value} must be {range}"))
         }
+        PlanError::TooStiff {
+            element,
+            rate,
+            step,
+            step_deg,
+            substeps,
+            max_step,
+            need,
+        } => bad(format!(
+            "{name}: {element} is too stiff for the time step {} s ({}° of the driver / {substeps} substeps): its rate is {} /s, so the step must be at most {} s; use --substeps {need} or more",
+            h(step),
+            h(step_deg),
+            h(rate),
+            h(max_step),
+        )),
+        PlanError::Dynamics(e) => dyn_err(name, e),
+        e => bad(format!("{name}: {e}")),
     }
-    let mut sim = SystemSimulation::new(&sys, built.dynamics.clone())?;
-    let (t0, t1) = (
-        built.sweep_angle.time(&sys, 0.0).unwrap_or(0.0),
-        built
-            .sweep_angle
-            .time(&sys, step.to_radians())
-            .unwrap_or(0.0),
-    );
-    let h_out = (t1 - t0).abs();
-    let substeps = sim.substeps(h_out).max(args.substeps);
-    sim.run(outputs, substeps, h_out / substeps as f64, |_| {
-        std::ops::ControlFlow::Continue(())
-    })
-    .map(|r| r.samples)
 }
 
 /// `--no-follow FROM:TO:STEP`: the speed sweep, its answer printed.

@@ -48,6 +48,7 @@ mod lubrication;
 #[cfg(feature = "serde")]
 mod pair;
 mod profile;
+mod run_plan;
 mod system;
 mod system_contact;
 mod system_dynamics;
@@ -69,6 +70,7 @@ pub use gear_loads::{
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{FollowerKind, ProfileKind};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
+pub use run_plan::{PlanError, PlanField, RunPlan, MAX_REVOLUTIONS, MAX_SUBSTEPS, STEP_RANGE_DEG};
 pub use system::{
     BodySpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec, TorsionSpringSpec,
 };
