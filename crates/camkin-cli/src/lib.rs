@@ -37,6 +37,7 @@ pub mod out_dir;
 pub mod output;
 pub mod studio;
 pub mod study;
+pub mod sweep;
 
 use camkin::work::Work;
 

@@ -97,8 +97,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         let (name, text) =
             crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
         if args.system || camkin::spec::text::is_system(&text) {
-            let built = super::system::load(path, &name, &text)?;
-            return super::system::analyze(args, &name, &built);
+            let built = crate::mechfile::load_system(path, &name, &text)?;
+            return analyze_system(args, &name, &built);
         }
     }
     let loaded = load_mechanism(args.mechanism.as_ref())?;
@@ -106,7 +106,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         // the built-in cam
         let built = camkin::spec::BuiltSystem::from_mechanism(&loaded.mech, loaded.unit)
             .map_err(|e| Failure::Input(anyhow::anyhow!("{}: {e}", loaded.name)))?;
-        return super::system::analyze(args, &loaded.name, &built);
+        return analyze_system(args, &loaded.name, &built);
     }
     args.table.check()?;
     let mech = &loaded.mech;
@@ -163,6 +163,60 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         crate::say!(
             "camkin: {failed} of {} angles could not be analysed; see the error column",
             angles.len()
+        );
+    }
+    Ok(())
+}
+
+/// Analyses the system `built` (read from `name`).
+fn analyze_system(
+    args: &Args,
+    name: &str,
+    built: &camkin::spec::BuiltSystem,
+) -> Result<(), Failure> {
+    // the cam path's unit flags have no meaning here: refused, not ignored
+    if args.units.per != camkin::table::Per::S {
+        return Err(Failure::Input(anyhow::anyhow!(
+            "--per deg: a system's table gives its rates per second (the columns say so: _mm_s, _deg_s2); drop --per"
+        )));
+    }
+    if args.units.angle_unit.is_some() {
+        return Err(Failure::Input(anyhow::anyhow!(
+            "--angle-unit rad: a system's table gives its angles in degrees (the columns say so: _deg); drop --angle-unit"
+        )));
+    }
+    let sys = &built.system;
+    let angles = crate::sweep::angles_of(&args.at, args.angles);
+    let mut jumps = Vec::new();
+    crate::sweep::write_sweep(
+        &args.table,
+        &args.work,
+        name,
+        built,
+        &angles,
+        &camkin::table::system_columns(built),
+        |a, t, s| {
+            if s.as_ref()
+                .is_ok_and(|s| s.contacts.iter().any(|c| c.jumped))
+            {
+                jumps.push(a);
+            }
+            vec![camkin::table::system_cells(sys, a, t, s)]
+        },
+    )?;
+    if !jumps.is_empty() {
+        let h = camkin::human::human;
+        let shown: Vec<String> = jumps
+            .iter()
+            .take(5)
+            .map(|a| format!("{}°", h(*a)))
+            .collect();
+        crate::say!(
+            "camkin: warning: a contact moved to another pair of points at {} instant{} ({}{}): rows marked true in its jump column",
+            jumps.len(),
+            if jumps.len() == 1 { "" } else { "s" },
+            shown.join(", "),
+            if jumps.len() > 5 { ", …" } else { "" }
         );
     }
     Ok(())

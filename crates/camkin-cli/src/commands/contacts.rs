@@ -35,8 +35,8 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
         let (name, text) =
             crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
         if camkin::spec::text::is_system(&text) {
-            let built = super::system::load(path, &name, &text)?;
-            return super::system::contacts(args, &name, &built);
+            let built = crate::mechfile::load_system(path, &name, &text)?;
+            return system_contacts(args, &name, &built);
         }
     }
     let loaded = load_mechanism(args.mechanism.as_ref())?;
@@ -102,5 +102,36 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
             angles.len()
         );
     }
+    Ok(())
+}
+
+/// Every contact of the system `built` (read from `name`) at each instant, one row per contact
+/// ([`camkin::table::system_contact_columns`]): its point, normal, gap, sliding rates, normal
+/// accelerations with their terms and its acceleration constraint row.
+fn system_contacts(
+    args: &ContactsArgs,
+    name: &str,
+    built: &camkin::spec::BuiltSystem,
+) -> Result<(), Failure> {
+    use camkin::table::{system_contact_cells, system_contact_columns};
+    let sys = &built.system;
+    let angles = crate::sweep::angles_of(&args.at, args.angles);
+    crate::sweep::write_sweep(
+        &args.table,
+        &args.work,
+        name,
+        built,
+        &angles,
+        &system_contact_columns(built),
+        |a, t, s| system_contact_cells(sys, a, t, s),
+    )?;
+    let n = sys.contacts().len();
+    crate::say!(
+        "camkin: {n} contact{} at {} instant{} of {}",
+        if n == 1 { "" } else { "s" },
+        angles.len(),
+        if angles.len() == 1 { "" } else { "s" },
+        built.angle_name()
+    );
     Ok(())
 }

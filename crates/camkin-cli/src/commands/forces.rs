@@ -1,267 +1,29 @@
 //! `camkin forces`: with a `[dynamics]` section, the contact force and the camshaft torque over a
 //! revolution under permanent contact, the speed at which the follower leaves the cam, the
-//! spring that keeps it on up to a target speed, and the Hertz contact stress.
+//! spring that keeps it on up to a target speed, and the Hertz contact stress; a system file
+//! with `[dynamics]` simulated over a revolution of its first driver, each contact's largest and
+//! smallest force and Hertz pressure, each driver's effort, each impact
+//! (`camkin::report::SystemForces`); a gear pair's loads ([`super::gear_loads`]).
 
-use crate::args::RevolutionStep;
+use super::simulate::{bad, plan_err, system_err as dyn_err};
+pub use crate::args::forces::ForcesArgs;
+use crate::args::forces::{input_error, lubrication_request};
 use crate::draw::chart::{self, Chart, Series};
 use crate::forces_text::{self, num, LengthUnit};
 use crate::mechfile;
 use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
-use camkin::lubrication::{
-    plausible_friction, roughness_from_um, FilmFormula, Friction, Lubricant, LubricantError,
-    SurfaceProperties, FRICTION_RULE, ROUGHNESS_RULE,
-};
-use camkin::report::{
-    rpm, ForceField, ForceReport, ForceRequest, LubricationRequest, Materials, ReportError,
-};
-use std::path::{Path, PathBuf};
-use std::str::FromStr;
-
-/// The cam's and follower's materials as a flag: `CAM,FOLLOWER` (the library's reader).
-#[derive(Debug, Clone, PartialEq)]
-pub struct MaterialsArg(pub Materials);
-
-impl FromStr for MaterialsArg {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        s.parse()
-            .map(Self)
-            .map_err(|e: camkin::report::MaterialError| e.to_string())
-    }
-}
-
-/// A lubricant as a flag: a preset or `eta=<Pa·s>:alpha=<1/Pa>` (the library's reader).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct OilArg(pub Lubricant);
-
-impl FromStr for OilArg {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        s.parse()
-            .map(Self)
-            .map_err(|e: LubricantError| e.to_string())
-    }
-}
-
-/// The two surfaces' RMS roughness, `CAM,FOLLOWER` in µm, each above 0 and at most 100 µm.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RoughnessArg(pub [f64; 2]);
-
-impl FromStr for RoughnessArg {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        let (a, b) = s
-            .split_once(',')
-            .ok_or_else(|| format!("{s:?}: CAM,FOLLOWER in µm is needed, e.g. 0.2,0.3"))?;
-        let one = |t: &str| -> Result<f64, String> {
-            let t = t.trim();
-            let v: f64 = t
-                .parse()
-                .map_err(|_| format!("{t:?} is not a number (µm)"))?;
-            roughness_from_um(v).ok_or_else(|| format!("{t} µm {ROUGHNESS_RULE}"))
-        };
-        Ok(Self([one(a)?, one(b)?]))
-    }
-}
-
-/// The friction model as a flag: `MU` throughout, or `BOUNDARY:FULL` (boundary at λ ≤ 1, full
-/// film at λ ≥ 3, linear between), each from 0 to 1.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FrictionArg(pub Friction);
-
-impl FromStr for FrictionArg {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        let one = |t: &str| -> Result<f64, String> {
-            let t = t.trim();
-            match t.parse::<f64>() {
-                Ok(v) if plausible_friction(v) => Ok(v),
-                Ok(_) => Err(format!("{t} {FRICTION_RULE}")),
-                Err(_) => Err(format!("{t:?} is not a number")),
-            }
-        };
-        Ok(Self(match s.split_once(':') {
-            None => Friction::Constant(one(s)?),
-            Some((b, f)) => Friction::Mixed {
-                boundary: one(b)?,
-                full_film: one(f)?,
-            },
-        }))
-    }
-}
-
-/// The film formula as a flag.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FilmArg(pub FilmFormula);
-
-impl FromStr for FilmArg {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        FilmFormula::ALL
-            .into_iter()
-            .find(|f| f.name() == s.trim())
-            .map(Self)
-            .ok_or_else(|| {
-                format!(
-                    "{s:?} is not a film formula: {}",
-                    FilmFormula::ALL.map(FilmFormula::name).join(" or ")
-                )
-            })
-    }
-}
-
-#[derive(Debug, clap::Args)]
-pub struct ForcesArgs {
-    /// Mechanism file (TOML) with a `[dynamics]` section, or a system file (`[[body]]`, …) with
-    /// one: its simulation's contact forces, Hertz pressures, drivers' torques and impacts over
-    /// a revolution of its first driver (see docs/systems.md, "Dynamics of a system").
-    pub mechanism: PathBuf,
-    /// Cam-angle step, degrees.
-    #[arg(long, value_name = "DEG", default_value = "0.5")]
-    pub step: RevolutionStep,
-    /// The contact force that must remain, N.
-    #[arg(
-        long,
-        value_name = "N",
-        default_value_t = 0.0,
-        value_parser = crate::args::real,
-        allow_negative_numbers = true
-    )]
-    pub margin: f64,
-    /// The speed up to which the follower must stay on the cam, rpm [default: the file's].
-    #[arg(long, value_name = "RPM", value_parser = crate::args::real, allow_negative_numbers = true)]
-    pub target_rpm: Option<f64>,
-    /// Face width of the contact, in the file's length unit: the Hertz contact stress.
-    #[arg(long, value_name = "LENGTH", value_parser = crate::args::real, allow_negative_numbers = true)]
-    pub face_width: Option<f64>,
-    /// Cam and follower materials for the contact stress: presets (steel, aisi-52100,
-    /// aisi-4140, aisi-1045, stainless-440c, ductile-iron, cast-iron, bronze) or `E=<Pa>:nu=<ν>`
-    /// (with `:k=<W/(m·K)>:rho=<kg/m³>:c=<J/(kg·K)>` for the flash temperature) [default: the
-    /// file's `[lubrication]` materials, or steel,steel].
-    #[arg(long, value_name = "CAM,FOLLOWER")]
-    pub materials: Option<MaterialsArg>,
-    /// Allowable contact stress, MPa: exit 3 when the stress exceeds it.
-    #[arg(long, value_name = "MPA", value_parser = crate::args::real, allow_negative_numbers = true)]
-    pub allowable: Option<f64>,
-    /// Lubricant at the contact's inlet temperature, for the film thickness, λ, the flash
-    /// temperature and the friction (with --face-width and --roughness): a preset (sae-20@100c …
-    /// sae-50@100c, iso-vg-32@40c … iso-vg-320@40c) or `eta=<Pa·s>:alpha=<1/Pa>` [default: the
-    /// file's `[lubrication]`, whose values each of these flags replaces].
-    #[arg(long, value_name = "OIL")]
-    pub oil: Option<OilArg>,
-    /// RMS roughness Rq of the cam's and the follower's surfaces, µm (with --oil).
-    #[arg(long, value_name = "CAM,FOLLOWER")]
-    pub roughness: Option<RoughnessArg>,
-    /// EHL film formula of a line contact: dowson-higginson or hamrock (Pan and Hamrock's)
-    /// [default: the file's, or dowson-higginson].
-    #[arg(long, value_name = "FORMULA")]
-    pub film: Option<FilmArg>,
-    /// Friction coefficient: `MU` throughout, or `BOUNDARY:FULL` (boundary lubrication at
-    /// λ ≤ 1, a full film at λ ≥ 3, linear in λ between) [default: the file's, or 0.1:0.03].
-    #[arg(long, value_name = "MU")]
-    pub friction: Option<FrictionArg>,
-    /// Torque on a gear pair's driver, N·m: the loads along the whole path of contact (the
-    /// normal force shared between the pairs in contact, Hertz with --face-width, the specific
-    /// sliding, and with --oil the film and flash temperature); no `[dynamics]` needed.
-    #[arg(long, value_name = "N_M", value_parser = crate::args::real, allow_negative_numbers = true)]
-    pub torque: Option<f64>,
-    /// Power a gear pair's driver transmits, kW (instead of --torque: the torque is P/ω at the
-    /// file's speed).
-    #[arg(long, value_name = "KW", value_parser = crate::args::real, allow_negative_numbers = true, conflicts_with = "torque")]
-    pub power: Option<f64>,
-    /// Directory for forces.csv, force_speed.csv and their plots (and lubrication.csv and its
-    /// page with --oil; gear_loads.csv with --torque).
-    #[arg(long, value_name = "DIR")]
-    pub out: Option<PathBuf>,
-    #[command(flatten)]
-    pub force: crate::out_dir::ForceArg,
-    #[command(flatten)]
-    pub work: crate::args::WorkArgs,
-}
-
-/// The flag that sets a field of the request.
-fn flag(field: ForceField) -> &'static str {
-    match field {
-        ForceField::Step => "--step",
-        ForceField::Margin => "--margin",
-        ForceField::TargetRpm => "--target-rpm",
-        ForceField::FaceWidth => "--face-width",
-        ForceField::Materials => "--materials",
-        ForceField::Allowable => "--allowable",
-        ForceField::Viscosity | ForceField::PressureViscosity => "--oil",
-        ForceField::Roughness => "--roughness",
-        ForceField::Thermal => "--materials",
-        ForceField::Friction => "--friction",
-        _ => "an option",
-    }
-}
-
-fn input_error(e: ReportError) -> Failure {
-    Failure::Input(match e.field() {
-        Some(field) => anyhow!("{}: {e}", flag(field)),
-        None => anyhow!(e),
-    })
-}
-
-/// The lubrication the flags and the file's `[lubrication]` ask for, each flag replacing the
-/// file's value: `None` without an oil in either; --roughness needed with an oil, and none of
-/// --roughness, --film, --friction without one.
-pub(super) fn lubrication_request(
-    args: &ForcesArgs,
-    file: Option<&camkin::spec::BuiltLubrication>,
-    materials: &Materials,
-) -> Result<Option<LubricationRequest>, Failure> {
-    let from_file = file.map(|f| f.request);
-    let Some(lubricant) = args.oil.map(|o| o.0).or(from_file.map(|f| f.lubricant)) else {
-        let stray = [
-            (args.roughness.is_some(), "--roughness"),
-            (args.film.is_some(), "--film"),
-            (args.friction.is_some(), "--friction"),
-        ];
-        if let Some((_, flag)) = stray.iter().find(|s| s.0) {
-            return Err(Failure::Input(anyhow!(
-                "{flag}: this is for the lubrication; give the lubricant with --oil (e.g. --oil sae-30@100c) or a [lubrication] section"
-            )));
-        }
-        return Ok(None);
-    };
-    let rq = match (args.roughness, from_file) {
-        (Some(RoughnessArg(rq)), _) => rq,
-        (None, Some(f)) => f.surfaces.map(|s| s.roughness),
-        (None, None) => {
-            return Err(Failure::Input(anyhow!(
-                "--oil: λ needs each surface's RMS roughness: give --roughness CAM,FOLLOWER in µm (e.g. --roughness 0.2,0.3)"
-            )))
-        }
-    };
-    let thermal = [materials.cam.thermal, materials.follower.thermal];
-    Ok(Some(LubricationRequest {
-        lubricant,
-        formula: args
-            .film
-            .map(|f| f.0)
-            .or(from_file.map(|f| f.formula))
-            .unwrap_or_default(),
-        surfaces: [0, 1].map(|i| SurfaceProperties {
-            roughness: rq[i],
-            thermal: thermal[i],
-        }),
-        friction: args
-            .friction
-            .map(|f| f.0)
-            .or(from_file.map(|f| f.friction))
-            .unwrap_or(camkin::spec::DEFAULT_FRICTION),
-    }))
-}
+use camkin::dynamics::SpeedSweep;
+use camkin::report::{rpm, ForceReport, ForceRequest, Materials, SystemForceFailure, SystemForces};
+use std::path::Path;
 
 pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
     // a system file ([[body]], …, [dynamics]): its simulation's forces
     let (name, text) =
         crate::mechfile::read_text(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
     if camkin::spec::text::is_system(&text) {
-        return super::system_forces::run(args, &name, &text);
+        return run_system(args, &name, &text);
     }
     // a gear pair's loads: asked for by a flag, or by the file's [gear_loads]
     let file_loads =
@@ -485,4 +247,312 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
         &dir.join("force_speed"),
     )?;
     Ok(())
+}
+
+/// A system file's forces: its revolution simulated (the time step as the stiffest element
+/// needs), its report and the checks `--margin` (every contact closed all the revolution keeps
+/// that force), `--allowable` (every contact's Hertz pressure stays under it) and `--target-rpm`
+/// (no contact that stays closed at low speed opens up to it: the no-follow speed's sweep).
+fn run_system(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
+    // what a system's file says for each contact
+    if let Some(w) = args.face_width {
+        return Err(bad(format!(
+            "--face-width {}: a system's contacts take their widths in the file ([[contact]] face_width = …)",
+            camkin::human::human(w)
+        )));
+    }
+    if args.materials.is_some() {
+        return Err(bad(
+            "--materials: a system's contacts take their materials in the file ([[contact]] materials = \"A,B\")".into(),
+        ));
+    }
+    for (given, flag) in [
+        (args.oil.is_some(), "--oil"),
+        (args.roughness.is_some(), "--roughness"),
+        (args.film.is_some(), "--film"),
+        (args.friction.is_some(), "--friction"),
+    ] {
+        if given {
+            return Err(bad(format!(
+                "{flag}: a system's lubrication is in its file: a [lubrication] table (oil, roughness_um, film, friction) and each [[contact]]'s face_width, roughness_um and rolls"
+            )));
+        }
+    }
+    let built = crate::mechfile::load_system(&args.mechanism, name, text)?;
+    if !built.simulated {
+        return Err(bad(format!(
+            "{name}: a system's forces come from its simulation: give it a [dynamics] table (see docs/systems.md, \"Dynamics of a system\")"
+        )));
+    }
+    let sys = &built.system;
+    let step = args.step.deg();
+    let (plan, mut sim) = built.plan(1.0, step, None).map_err(|e| plan_err(name, e))?;
+    let (outputs, substeps) = (plan.outputs, plan.substeps);
+    let rpm = sys.first_driver_rpm();
+    // --target-rpm's sweep: from a quarter of the lower of the two speeds, in eight steps to
+    // the target, then bisected to 1 rpm
+    let sweep = match args.target_rpm {
+        Some(target) if !(target > 0.0 && target.is_finite() && target <= 1e6) => {
+            return Err(bad(format!(
+                "--target-rpm {}: must be a positive speed, rpm",
+                camkin::human::human(target)
+            )));
+        }
+        Some(target) => Some(SpeedSweep::to_target(sys, target, step)),
+        None => None,
+    };
+    // the revolution, and the sweep's runs (each at most a revolution at the target's speed)
+    let sweep_steps = sweep
+        .as_ref()
+        .map_or(0, |s| s.steps(outputs, |h| sim.substeps(h)));
+    crate::refuse_large(
+        &camkin::work::Work::system_simulation(sys, outputs * substeps + sweep_steps, outputs + 1),
+        args.work.large,
+        ", or use a coarser --step",
+    )?;
+    let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
+    let run = sim
+        .run(outputs, substeps, plan.h(), |_| {
+            std::ops::ControlFlow::Continue(())
+        })
+        .map_err(|e| dyn_err(name, e))?;
+    let angle_of = |t: f64| plan.angle_of(t);
+    let u = built.dynamics.metres_per_unit;
+    let report = SystemForces::new(sys, &run, u, angle_of);
+    let h = camkin::human::human;
+    let deg = |a: f64| h((a * 100.0).round() / 100.0);
+    let mut text = format!(
+        "forces on {name} at {} rpm of {:?}, simulated over a revolution in {}° steps ({substeps} RK4 step{} each):\n",
+        h((rpm * 10.0).round() / 10.0),
+        sys.drivers().first().map_or("", |d| d.name.as_str()),
+        h(step),
+        if substeps == 1 { "" } else { "s" },
+    );
+    let force = |x: f64| sig(x, 4);
+    let never: Vec<String> = report
+        .contacts
+        .iter()
+        .filter(|c| c.min_closed_n.is_none())
+        .map(|c| format!("{:?}", c.name))
+        .collect();
+    for c in report.contacts.iter().filter(|c| c.min_closed_n.is_some()) {
+        text += &format!(
+            "contact {:?}: max {} N at {}°",
+            c.name,
+            force(c.max_n.value),
+            deg(c.max_n.angle_deg)
+        );
+        match (&c.min_closed_n, c.always_closed) {
+            (Some(m), true) => {
+                text += &format!(
+                    ", min {} N at {}° (in touch all the revolution)",
+                    force(m.value),
+                    deg(m.angle_deg)
+                )
+            }
+            (Some(m), false) => {
+                text += &format!(
+                    ", min in touch {} N at {}° (opens and closes)",
+                    force(m.value),
+                    deg(m.angle_deg)
+                )
+            }
+            (None, _) => {}
+        }
+        if let Some(p) = &c.max_hertz_mpa {
+            text += &format!(
+                "; Hertz pressure max {} MPa at {}°",
+                force(p.value),
+                deg(p.angle_deg)
+            );
+        }
+        text += "\n";
+    }
+    if !never.is_empty() {
+        text += &format!("never in touch: {}\n", never.join(", "));
+    }
+    for d in &report.drivers {
+        text += &format!(
+            "driver {:?}: max {} {u} at {}°, min {} {u} at {}°, mean {} {u}, RMS {} {u}\n",
+            d.name,
+            force(d.max.value),
+            deg(d.max.angle_deg),
+            force(d.min.value),
+            deg(d.min.angle_deg),
+            force(d.mean),
+            force(d.rms),
+            u = d.unit,
+        );
+    }
+    for i in &report.impacts {
+        text += &format!(
+            "impact of {:?} at {}°: {} m/s\n",
+            i.contact,
+            deg(i.angle_deg),
+            sig(i.approach_m_s, 3)
+        );
+    }
+    let lubrication = built
+        .lubrication
+        .as_ref()
+        .map(|req| camkin::report::SystemLubricationReport::new(sys, &run, req, angle_of));
+    if let Some(l) = &lubrication {
+        text += &lubrication_text(l);
+    }
+    crate::out!("{text}")?;
+    if let Some(od) = od {
+        if let Some(l) = &lubrication {
+            let (columns, rows) = l.table();
+            write_atomic(Some(&od.path().join("lubrication.csv")), |w| {
+                write_cell_table(w, TableFormat::Csv, &columns, rows)
+            })
+            .map_err(Failure::output)?;
+        }
+        let dir = od.path().to_path_buf();
+        let (columns, rows) = camkin::table::system_force_table(
+            sys,
+            &run.samples,
+            built.length_unit.name(),
+            &built.dynamics.hertz,
+            step,
+        );
+        write_atomic(Some(&dir.join("forces.csv")), |w| {
+            write_cell_table(w, TableFormat::Csv, &columns, rows)
+        })
+        .map_err(Failure::output)?;
+        crate::draw::simulation::forces_page(&dir, name, sys, &run.samples, step)
+            .map_err(Failure::output)?;
+        crate::draw::simulation::efforts_page(&dir, name, sys, &run.samples, step, u)
+            .map_err(Failure::output)?;
+        let dir = od.commit().map_err(Failure::output)?;
+        crate::say!("camkin: wrote {}", dir.display());
+    }
+    // the checks
+    let mut failures: Vec<String> = report
+        .failures(args.margin, args.allowable)
+        .into_iter()
+        .map(|f| match f {
+            SystemForceFailure::Margin {
+                contact,
+                force: m,
+                margin,
+            } => format!(
+                "contact {contact:?}'s force falls to {} N at {}°, under the margin {} N",
+                force(m.value),
+                deg(m.angle_deg),
+                h(margin)
+            ),
+            SystemForceFailure::Allowable {
+                contact,
+                pressure: p,
+                allowable,
+            } => format!(
+                "contact {contact:?}'s Hertz pressure reaches {} MPa at {}°, over the allowable {} MPa",
+                force(p.value),
+                deg(p.angle_deg),
+                h(allowable)
+            ),
+            other => format!("{other:?}"),
+        })
+        .collect();
+    if let Some(sweep) = sweep {
+        let (from, target) = (sweep.from_rpm, sweep.to_rpm);
+        let found = camkin::dynamics::no_follow_speed(sys, &built.dynamics, &sweep)
+            .map_err(|e| dyn_err(name, e))?;
+        match found {
+            Some(nf) => failures.push(
+                match SystemForceFailure::no_follow(sys, &nf, &sweep) {
+                    SystemForceFailure::NoFollow {
+                        contact,
+                        angle_deg,
+                        speed_rpm,
+                        target_rpm,
+                        from_rpm,
+                    } => format!(
+                        "contact {contact:?} opens at {}° at {} rpm, below the target {} rpm (the no-follow speed, swept from {} rpm)",
+                        deg(angle_deg),
+                        h((speed_rpm * 10.0).round() / 10.0),
+                        h(target_rpm),
+                        h((from_rpm * 10.0).round() / 10.0),
+                    ),
+                    other => format!("{other:?}"),
+                },
+            ),
+            None => crate::out!(
+                "no contact that stays closed at {} rpm opens up to the target {} rpm\n",
+                h((from * 10.0).round() / 10.0),
+                h(target)
+            )?,
+        }
+    }
+    if failures.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure::Check(anyhow!(failures.join("; "))))
+    }
+}
+
+/// Each lubricated contact's lines: its smallest λ and regime shares, its largest flash
+/// temperature, its entrainment's reversals, its friction power.
+fn lubrication_text(l: &camkin::report::SystemLubricationReport) -> String {
+    let deg = |a: f64| camkin::human::human((a * 100.0).round() / 100.0);
+    let mut text = String::new();
+    for c in &l.contacts {
+        text += &format!("lubrication of {:?}", c.name);
+        if c.lubrication.rolls.is_some() {
+            text += " (its roller rolls without slip)";
+        }
+        match &c.min_lambda {
+            Some(m) => {
+                let [b, mixed, full] = c.regime_shares.map(|x| sig(100.0 * x, 3));
+                text += &format!(
+                    ": λ min {} at {}° ({}); boundary {b} %, mixed {mixed} %, full film {full} % of its loaded samples",
+                    sig(m.value, 3),
+                    deg(m.angle_deg),
+                    camkin::lubrication::regime(m.value).name()
+                );
+            }
+            None => text += ": it carries no load at any sample with a line contact",
+        }
+        if let Some(t) = &c.thinnest_film {
+            text += &format!(
+                "; film min {} µm at {}°",
+                sig(t.value * 1e6, 3),
+                deg(t.angle_deg)
+            );
+        }
+        if let Some(f) = c.max_flash_temperature.as_ref().filter(|f| f.value > 0.0) {
+            text += &format!(
+                "; flash temperature max {} K at {}°",
+                sig(f.value, 3),
+                deg(f.angle_deg)
+            );
+        }
+        if c.max_flash_temperature.is_some_and(|f| f.value == 0.0) {
+            text += "; nothing slides: no flash temperature";
+        }
+        text += &if c.entrainment_reversals_deg.is_empty() {
+            "; entrainment never reverses".to_string()
+        } else {
+            format!(
+                "; entrainment reverses near {} (between samples)",
+                c.entrainment_reversals_deg
+                    .iter()
+                    .map(|a| format!("{}°", deg(*a)))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        };
+        text += &format!("; friction {} W mean\n", sig(c.mean_friction_power, 3));
+    }
+    text
+}
+
+/// `x` to `n` significant digits, for people.
+fn sig(x: f64, n: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return camkin::human::human(x);
+    }
+    let scale = 10f64.powi(n - 1 - x.abs().log10().floor() as i32);
+    camkin::human::human((x * scale).round() / scale)
 }

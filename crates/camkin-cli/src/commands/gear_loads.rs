@@ -1,7 +1,7 @@
 //! `camkin forces GEAR.toml --torque T`: a gear pair's loads along its whole path of contact
 //! (the library's [`camkin::report::GearLoads`]).
 
-use super::forces::{lubrication_request, ForcesArgs};
+use crate::args::forces::{lubrication_request, ForcesArgs};
 use crate::forces_text::num;
 use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;

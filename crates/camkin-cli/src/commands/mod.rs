@@ -13,7 +13,3 @@ pub mod profile;
 pub mod serve;
 pub mod simulate;
 pub mod synth;
-pub mod system;
-pub mod system_forces;
-pub mod system_pages;
-pub mod system_simulate;

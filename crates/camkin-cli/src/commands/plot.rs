@@ -485,7 +485,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         let (name, text) =
             crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow!(e)))?;
         if camkin::spec::text::is_system(&text) {
-            return super::system::plot(args, path, &name, &text);
+            return plot_system(args, path, &name, &text);
         }
     }
     let angles = args.at.0.clone();
@@ -607,4 +607,97 @@ mod tests {
         stepped[0] = smooth(&|t| 3.0 * t + if t < 0.2 { 0.0 } else { 1.0 });
         assert_eq!(jump_order(&stepped, 20), Some(0));
     }
+}
+
+/// Draws the system in `text` at the driver angles `--at` (`drawing_<angle>.svg/png`) and over a
+/// revolution in `--frames` frames (`animation.svg`), into `--out`.
+fn plot_system(args: &PlotArgs, path: &Path, name: &str, text: &str) -> Result<(), Failure> {
+    use crate::draw::mechanism::Shape;
+    use crate::draw::system::system_scene;
+    let built = crate::mechfile::load_system(path, name, text)?;
+    let sys = &built.system;
+    let angles = args.at.0.clone();
+    if angles.len() > 360 || !(1..=3600).contains(&args.frames) {
+        return Err(Failure::Input(anyhow::anyhow!(
+            "--at: at most 360 drawings, --frames: 1 to 3600 (given {} and {})",
+            angles.len(),
+            args.frames
+        )));
+    }
+    let frames: Vec<f64> = (0..args.frames)
+        .map(|k| 360.0 * k as f64 / args.frames as f64)
+        .collect();
+    let all: Vec<f64> = angles.iter().chain(&frames).copied().collect();
+    crate::refuse_large(
+        // the instants drawn and those half a degree apart between them, and the pictures
+        &camkin::work::Work::system(sys, all.len() + 720).and(&camkin::work::Work::new(
+            "the pictures",
+            all.len() as f64 * 5e-3,
+        )),
+        args.work.large,
+        ", or use fewer --frames",
+    )?;
+    let times = crate::sweep::times_of(&built, name, &all)?;
+    let size = sys.size();
+    // the drawings at --at, then a revolution's frames, from one sweep in order through
+    // instants at most half a degree of the driver apart (a contact is followed, not guessed
+    // afresh after a long jump: a gear's tooth pairs hand over every pitch)
+    let mut scenes: Vec<(f64, Vec<Shape>)> = Vec::new();
+    let mut order: Vec<usize> = (0..all.len()).collect();
+    order.sort_by(|&i, &j| times[i].total_cmp(&times[j]));
+    let mut sweep = sys
+        .sweep()
+        .map_err(|e| Failure::Input(anyhow::anyhow!("{name}: {}", built.explain(&e))))?;
+    let mut by_index: Vec<Option<Vec<Shape>>> = vec![None; all.len()];
+    let per_degree =
+        built.time_of(1f64.to_radians()).unwrap_or(0.0) - built.time_of(0.0).unwrap_or(0.0);
+    let mut at: Option<f64> = None;
+    for i in order {
+        let to = times[i];
+        if let Some(from) = at {
+            let n = ((to - from) / (0.5 * per_degree).abs())
+                .abs()
+                .ceil()
+                .min(1e6) as usize;
+            for k in 1..n {
+                let _ = sweep.step(from + (to - from) * k as f64 / n as f64);
+            }
+        }
+        let s = sweep.step(to).map_err(|e| {
+            Failure::Input(anyhow::anyhow!(
+                "{name}: at {}°: {e}",
+                camkin::human::human(all[i])
+            ))
+        })?;
+        at = Some(to);
+        by_index[i] = Some(system_scene(sys, &s, size));
+    }
+    for (i, shapes) in by_index.into_iter().enumerate() {
+        scenes.push((all[i], shapes.unwrap_or_default()));
+    }
+    let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
+    let what = format!("{} at driver angle", built_name(path));
+    let written = draw_all(
+        od.path(),
+        &scenes,
+        angles.len(),
+        &what,
+        built.length_unit.name(),
+        "",
+    )?;
+    od.commit().map_err(Failure::output)?;
+    crate::say!(
+        "camkin: wrote {} files to {}",
+        written.len(),
+        args.out.display()
+    );
+    Ok(())
+}
+
+/// The file's name without its folder and extension, for titles.
+fn built_name(path: &Path) -> String {
+    path.file_stem().map_or_else(
+        || path.display().to_string(),
+        |s| s.to_string_lossy().into(),
+    )
 }

@@ -2,6 +2,8 @@
 //! parsers): a bad value is refused by clap with the option's name, the value and the reason,
 //! exit code 2, before any work starts.
 
+pub mod forces;
+
 use std::fmt;
 use std::str::FromStr;
 
