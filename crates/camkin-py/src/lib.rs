@@ -11,6 +11,7 @@ mod gear_loads;
 mod geometry;
 mod mech;
 mod motion;
+mod nodes;
 mod shop;
 mod sim;
 mod studio;

@@ -628,7 +628,7 @@ impl PyMechanism {
     ///     bigger = mech.with_nodes(1.1 * nodes)      # cm
     #[pyo3(signature = (points, *, large = false))]
     fn with_nodes(&self, points: numpy::PyReadonlyArray2<'_, f64>, large: bool) -> PyResult<Self> {
-        let spec = crate::study::spec_with_nodes(&self.spec, points.as_array())?;
+        let spec = crate::nodes::spec_with_nodes(&self.spec, points.as_array())?;
         Self::build(spec, self.base_dir.clone(), self.name.clone(), large)
     }
 }

@@ -2,7 +2,7 @@
 //! code as `camkin serve`'s ([`camkin_studio::api`]), for the Jupyter widget
 //! (`camkin.widget.Studio`), which carries them between the page and the kernel.
 
-use camkin_studio::model::Source;
+use camkin_studio::source::Source;
 use camkin_studio::{assets, Limits};
 use pyo3::prelude::*;
 use std::path::PathBuf;

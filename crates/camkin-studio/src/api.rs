@@ -4,13 +4,15 @@
 //!
 //! | request | answer |
 //! |---|---|
-//! | `analyze` | [`AnalyzeRequest`] → [`AnalyzeAnswer`]: `{toml, result}` ([`model::Analysis`], at the page's precision); `toml` is the text with dragged nodes written in |
-//! | `compare` | [`CompareRequest`] → [`model::Compare`] (at the page's precision) |
+//! | `analyze` | [`AnalyzeRequest`] → [`AnalyzeAnswer`]: `{toml, result}` ([`Analysis`], at the page's precision); `toml` is the text with dragged nodes written in |
+//! | `compare` | [`CompareRequest`] → [`Compare`] (at the page's precision) |
 //!
 //! A refusal is a [`StudioError`], answered as JSON `{"error": {kind, message, line, column}}`
 //! ([`StudioError::body`]) with its status ([`StudioError::status`]).
 
-use crate::model::{self, Source};
+use crate::answer::{Analysis, Compare};
+use crate::model;
+use crate::source::Source;
 use crate::{
     patch_nodes, pressure_limit, step, AnalyzeRequest, CompareRequest, Limits, StudioError,
 };
@@ -23,7 +25,7 @@ pub struct AnalyzeAnswer {
     /// the mechanism's text analysed
     pub toml: String,
     /// what the page shows
-    pub result: model::Analysis,
+    pub result: Analysis,
 }
 
 /// A request's JSON body read as `T`.
@@ -61,7 +63,7 @@ pub fn analyze_checked(
     limit: f64,
     limits: &Limits,
 ) -> Result<AnalyzeAnswer, StudioError> {
-    let mut result = model::analyze(&toml, source, step_deg, limit, limits)?;
+    let mut result = crate::analysis::analyze(&toml, source, step_deg, limit, limits)?;
     // the page's precision; downloads are computed apart, at full precision
     crate::page_precision::for_page(&mut result);
     Ok(AnalyzeAnswer { toml, result })
@@ -115,18 +117,14 @@ pub fn compare_checked(
     nodes: &[usize],
     source: &Source,
     limits: &Limits,
-) -> Result<model::Compare, StudioError> {
+) -> Result<Compare, StudioError> {
     let mut out = model::compare(&req.toml, source, nodes, step_deg, limits)?;
     crate::page_precision::compare_for_page(&mut out);
     Ok(out)
 }
 
 /// `compare`: a [`CompareRequest`]'s body answered.
-pub fn compare(
-    body: &[u8],
-    source: &Source,
-    limits: &Limits,
-) -> Result<model::Compare, StudioError> {
+pub fn compare(body: &[u8], source: &Source, limits: &Limits) -> Result<Compare, StudioError> {
     let (req, step_deg, nodes) = check_compare_request(body, limits)?;
     compare_checked(&req, step_deg, &nodes, source, limits)
 }
@@ -155,7 +153,7 @@ pub fn answer(what: &str, body: &[u8], source: &Source, limits: &Limits) -> (u16
 mod tests {
     use super::*;
 
-    fn analysis(file: &str) -> model::Analysis {
+    fn analysis(file: &str) -> Analysis {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("../../examples")
             .join(file);
@@ -170,7 +168,7 @@ mod tests {
             .result
     }
 
-    fn jumps(a: &model::Analysis) -> &model::Check {
+    fn jumps(a: &Analysis) -> &crate::answer::Check {
         a.checks
             .iter()
             .find(|c| c.kind == camkin::report::Check::Jumps)

@@ -11,13 +11,16 @@
 //!
 //! The page itself (`web/`: HTML, CSS, one script, no dependencies) is embedded.
 
+pub mod analysis;
+pub mod answer;
 pub mod api;
+pub mod kinematic;
 pub mod mechtext;
 pub mod model;
 pub mod page_precision;
 pub mod scene;
-pub mod system;
-pub mod system_sim;
+pub mod simulated;
+pub mod source;
 
 use crate::mechtext::InputError;
 use serde::{Deserialize, Serialize};
@@ -368,11 +371,11 @@ mod tests {
     #[test]
     fn loads_the_file_cannot_give_leave_the_kinematics_shown() {
         let text = "length_unit = \"mm\"\n[gear_pair]\nteeth = [20, 42]\nmodule = 2.0\nspeed_rpm = 1000.0\n[gear_loads]\ntorque = 5.0\n";
-        let source = model::Source {
+        let source = source::Source {
             name: "g.toml".into(),
             folder: None,
         };
-        let a = model::analyze(text, &source, 1.0, 30.0, &Limits::default()).unwrap();
+        let a = analysis::analyze(text, &source, 1.0, 30.0, &Limits::default()).unwrap();
         assert!(a.gear_loads.is_none());
         assert!(
             a.warnings.iter().any(|w| w.message.contains("face width")),
@@ -380,7 +383,7 @@ mod tests {
             a.warnings
         );
         let with = format!("{text}face_width = 20.0\n");
-        let a = model::analyze(&with, &source, 1.0, 30.0, &Limits::default()).unwrap();
+        let a = analysis::analyze(&with, &source, 1.0, 30.0, &Limits::default()).unwrap();
         assert!(a.gear_loads.is_some());
     }
 

@@ -12,7 +12,7 @@
 //! The spline's nodes, which a drag sends back into the file, and the force coefficients, which
 //! the page computes with, are left as they are.
 
-use super::model::{Analysis, Compare, ShapeOut};
+use super::answer::{Analysis, Compare, ShapeOut};
 
 /// `x` to the nearest multiple of `10^-k` (`k` may be negative), written with its shortest
 /// decimal: an integer over an exact power of ten is the double nearest that decimal.

@@ -3,8 +3,8 @@
 
 use crate::args::RevolutionStep;
 use crate::output::write_atomic;
-use crate::studio::model::Source;
 use crate::studio::server::{serve, Session};
+use crate::studio::source::Source;
 use crate::studio::{report, Limits, StudioError};
 use crate::{mechfile, Failure};
 use anyhow::anyhow;
@@ -99,10 +99,10 @@ pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
         return run_worker(args);
     }
     let session = open(args.mechanism.as_ref())?;
-    let checked = if crate::studio::system::is_system(&session.text) {
-        crate::studio::system::check(&session.text, &session.source, &Limits::default())
+    let checked = if crate::studio::source::is_system(&session.text) {
+        crate::studio::source::check_system(&session.text, &session.source, &Limits::default())
     } else {
-        crate::studio::model::build(&session.text, &session.source, &Limits::default()).map(|_| ())
+        crate::studio::source::build(&session.text, &session.source, &Limits::default()).map(|_| ())
     };
     if let Err(e) = checked {
         let e = match e {

@@ -3,8 +3,8 @@
 //! [`camkin_studio`]'s, shared with the Python package's Jupyter widget.
 
 pub use camkin_studio::{
-    api, assets, model, page_precision, patch_nodes, pressure_limit, step, system, system_sim,
-    AnalyzeRequest, CompareRequest, ErrorBody, ErrorDetail, Limits, StudioError,
+    analysis, answer, api, assets, model, page_precision, patch_nodes, pressure_limit, source,
+    step, AnalyzeRequest, CompareRequest, ErrorBody, ErrorDetail, Limits, StudioError,
 };
 
 pub mod report;

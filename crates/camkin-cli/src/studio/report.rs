@@ -2,7 +2,8 @@
 //! report, one self-contained HTML file (the page with its data, style and script inlined; no
 //! network, no server) for a design review.
 
-use super::model::{self, Source};
+use super::model;
+use super::source::Source;
 use super::{assets, Limits, StudioError};
 use crate::output::{write_cells, TableFormat};
 use camkin::table::{analysis_cells, analysis_columns, AnalysisSweep, AngleUnit, Per, Units};
@@ -20,14 +21,14 @@ pub fn csv(
     step_deg: f64,
     limits: &Limits,
 ) -> Result<String, StudioError> {
-    if super::system::is_system(text) {
-        let (columns, rows) = super::system::table(text, source, step_deg, limits)?;
+    if super::source::is_system(text) {
+        let (columns, rows) = super::analysis::system_table(text, source, step_deg, limits)?;
         let mut rows = Some(rows);
         return csv_text(&columns, || rows.take());
     }
-    let parsed = model::build(text, source, limits)?;
+    let parsed = super::source::build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
-    let angles = model::revolution(step_deg);
+    let angles = super::answer::revolution(step_deg);
     model::check_work(mech, angles.len(), limits)?;
     let units = Units::new(mech, parsed.built.length_unit, AngleUnit::Deg, Per::S);
     let columns = analysis_columns(&units);
@@ -58,8 +59,8 @@ pub fn csv_text(
 #[derive(Debug, Serialize)]
 struct ReportData<'a> {
     toml: &'a str,
-    result: model::Analysis,
-    compare: Option<model::Compare>,
+    result: super::answer::Analysis,
+    compare: Option<super::answer::Compare>,
     generated_by: String,
     review: Review,
 }
@@ -98,7 +99,7 @@ fn radius_range(points: &[[f64; 2]]) -> [f64; 2] {
 
 /// The shop summary of the mechanism in `text` (none when it cannot be made: a system).
 fn shop(text: &str, source: &Source, limits: &Limits) -> Option<Shop> {
-    let parsed = model::build(text, source, limits).ok()?;
+    let parsed = super::source::build(text, source, limits).ok()?;
     let req = camkin::report::ShopRequest {
         step_deg: 1.0,
         tool_radius: None,
@@ -159,9 +160,9 @@ pub fn html(
     pressure_limit_deg: f64,
     limits: &Limits,
 ) -> Result<String, StudioError> {
-    let result = model::analyze(text, source, step_deg, pressure_limit_deg, limits)?;
+    let result = super::analysis::analyze(text, source, step_deg, pressure_limit_deg, limits)?;
     // a study that cannot be made (an open profile, say) leaves the report without it
-    let compare = if super::system::is_system(text) {
+    let compare = if super::source::is_system(text) {
         None
     } else {
         model::compare(text, source, &[REPORT_COMPARE_NODES], step_deg, limits).ok()

@@ -4,8 +4,8 @@
 //! |---|---|
 //! | `GET /` `GET /studio.js` `GET /studio.css` | the page (embedded) |
 //! | `GET /api/session` | `{name, toml, folder}`: the mechanism opened |
-//! | `POST /api/analyze` | [`api::analyze`]: [`super::AnalyzeRequest`] → `{toml, result}` ([`super::model::Analysis`]); `toml` is the text with dragged nodes written in |
-//! | `POST /api/compare` | [`api::compare`]: [`super::CompareRequest`] → [`super::model::Compare`] |
+//! | `POST /api/analyze` | [`api::analyze`]: [`super::AnalyzeRequest`] → `{toml, result}` ([`super::answer::Analysis`]); `toml` is the text with dragged nodes written in |
+//! | `POST /api/compare` | [`api::compare`]: [`super::CompareRequest`] → [`super::answer::Compare`] |
 //! | `POST /api/csv` | [`super::AnalyzeRequest`] → the analysis table as `camkin analyze` writes it |
 //! | `POST /api/report` | [`super::AnalyzeRequest`] → the report's HTML |
 //!
@@ -14,7 +14,7 @@
 //! refused over its time limit; at most [`Limits::workers`] computations run at once and the
 //! others wait their turn, so no request is dropped while the server keeps up.
 
-use super::model::Source;
+use super::source::Source;
 use super::{api, assets, Limits, StudioError};
 use axum::body::Bytes;
 use axum::extract::rejection::BytesRejection;

@@ -4,8 +4,8 @@
 //! panel the same numbers).
 
 use crate::common::{camkin, examples};
-use camkin_cli::studio::model::Source;
 use camkin_cli::studio::server::{serve, Session};
+use camkin_cli::studio::source::Source;
 use camkin_cli::studio::Limits;
 use serde_json::{json, Value};
 use std::io::{Read, Write};

@@ -1,75 +1,16 @@
 //! Assembling a system's rows at an instant — `Φ`, `Φ_q` (angle columns scaled by the size, so
 //! that every entry is of order one), `γ` and the drivers' rates — and Newton on the positions.
 
-use super::joint::RowEval;
 use super::lu::Lu;
-use super::solve::{SystemSweep, MAX_ITERATIONS, SINGULAR, STEP_TOLERANCE, SUSPECT_GAP};
+use super::newton::{
+    fill_states, get, iamax, states, Assembly, Scratch, MAX_ITERATIONS, SINGULAR, STEP_TOLERANCE,
+    SUSPECT_GAP,
+};
+use super::solve::SystemSweep;
 use super::{BodyId, SystemError};
-use crate::body::{BodyState, Pose};
+use crate::body::BodyState;
 use crate::contact::{self, ContactKinematics, Pairing, Proximity, Surface};
-use crate::geometry::{rot90, Point2, Vec2};
-
-/// The rows of `Φ` at the states, their gradients (row-major, columns `(x, y, size·θ)` of each
-/// body) and `γ`, the drivers' rates, and every contact's pairing (refined from the pairing
-/// followed) with its kinematics when the states carry velocities. Kept between instants.
-#[derive(Debug, Default)]
-pub(super) struct Assembly {
-    pub(super) phi: Vec<f64>,
-    pub(super) jac: Vec<f64>,
-    pub(super) gamma: Vec<f64>,
-    pub(super) rate: Vec<f64>,
-    pub(super) contacts: Vec<(Pairing, Option<ContactKinematics>)>,
-    rows: Vec<RowEval>,
-}
-
-/// Buffers an instant reuses: the assembly, the factorisation, the solutions, the bodies'
-/// states, the positions predicted, the contacts' flags.
-#[derive(Debug, Default)]
-pub(super) struct Scratch {
-    pub(super) asm: Assembly,
-    pub(super) lu: Lu,
-    pub(super) x: Vec<f64>,
-    pub(super) neg: Vec<f64>,
-    pub(super) st: Vec<BodyState>,
-    pub(super) q0: Vec<f64>,
-    pub(super) jumped: Vec<bool>,
-    pub(super) still: Vec<bool>,
-}
-
-/// The index of the largest magnitude (0 for none).
-pub(super) fn iamax(v: &[f64]) -> usize {
-    (0..v.len()).fold(0, |b, i| if v[i].abs() > v[b].abs() { i } else { b })
-}
-
-/// Body `i`'s state from the coordinate vectors (`qd`, `qdd` optional).
-pub(super) fn state_of(q: &[f64], qd: Option<&[f64]>, i: usize) -> BodyState {
-    let k = 3 * i;
-    let mut s = BodyState::at_rest(Pose::new(Point2::new(q[k], q[k + 1]), q[k + 2]));
-    if let Some(v) = qd {
-        s.velocity = Vec2::new(v[k], v[k + 1]);
-        s.omega = v[k + 2];
-    }
-    s
-}
-
-/// The states of every body, and the ground's (at rest at the world's origin).
-pub(super) fn states(q: &[f64], qd: Option<&[f64]>, n: usize) -> Vec<BodyState> {
-    (0..n).map(|i| state_of(q, qd, i)).collect()
-}
-
-/// [`states`] into a buffer kept between instants.
-pub(super) fn fill_states(q: &[f64], qd: Option<&[f64]>, n: usize, out: &mut Vec<BodyState>) {
-    out.clear();
-    out.extend((0..n).map(|i| state_of(q, qd, i)));
-}
-
-pub(super) fn ground() -> BodyState {
-    BodyState::at_rest(Pose::new(Point2::origin(), 0.0))
-}
-
-pub(super) fn get(states: &[BodyState], id: BodyId) -> BodyState {
-    id.index().map_or_else(ground, |i| states[i])
-}
+use crate::geometry::rot90;
 
 impl SystemSweep<'_> {
     /// Assembles the rows at the states `st` into `out`. `with_kinematics`: the states carry

@@ -31,6 +31,7 @@
 //! answer from a singular matrix.
 
 mod assemble;
+mod bending;
 mod coil_spring;
 mod driver;
 mod error;
@@ -38,6 +39,7 @@ mod force;
 mod jerk;
 mod joint;
 mod lu;
+mod newton;
 mod search;
 mod solve;
 mod table_force;

@@ -3,27 +3,16 @@
 //! solve each with the same `Φ_q`. A [`SystemSweep`] warm-starts each instant from the last
 //! (positions predicted by the last velocities and accelerations, pairings by their rates).
 
-use super::assemble::{fill_states, iamax, Scratch};
-use super::search::bending;
+use super::bending::bending;
+use super::newton::{fill_states, iamax, Scratch};
 use super::{System, SystemError};
 use crate::body::BodyState;
 use crate::contact::{ContactKinematics, CurveIndex, Pairing, SearchOptions};
 use crate::geometry::Vec2;
 
-/// Newton iterations on the positions before giving up.
-pub(super) const MAX_ITERATIONS: u32 = 50;
-
-/// Newton stops when no coordinate moves more than this times the system's size (angles times
-/// the size).
-pub(super) const STEP_TOLERANCE: f64 = 1e-13;
-
 /// A converged instant whose rows are still off by more than this times the size did not
 /// assemble.
 const RESIDUAL_TOLERANCE: f64 = 1e-9;
-
-/// The LU's smallest pivot below this times its largest is a singular matrix (the angle columns
-/// scaled by the size, so that every entry is of order one).
-pub(super) const SINGULAR: f64 = 1e-10;
 
 /// One contact at an instant: its pairing points and its kinematics (sliding rates, normal
 /// acceleration terms, the row and `γ`).
@@ -82,10 +71,6 @@ struct Solved {
     /// (zero at the first): the predictor's cubic term
     qddd: Vec<f64>,
 }
-
-/// A contact's gap beyond this times the size, at a Newton step, has the global search check
-/// that no nearer pair of points is the contact (a warm-started step predicts gaps far smaller).
-pub(super) const SUSPECT_GAP: f64 = 1e-6;
 
 /// The farthest any body may move between two instants that Newton joins, as a fraction of the
 /// system's size (an angle counts times the size), predicted from the last instant's rates and

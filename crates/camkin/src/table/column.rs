@@ -2,8 +2,36 @@
 //! it, and its cell from a row, side by side in one list. The name list and a row's cells are
 //! read from the same list, so they cannot disagree, and a conditional column is written once.
 
-use super::columns::Cell;
 use super::units::Units;
+
+/// One cell of a table whose column names are only known at run time (they carry units).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// a number (absent: an empty CSV cell, JSON `null`, NaN in an array)
+    Num(Option<f64>),
+    /// a small whole number
+    Int(Option<u8>),
+    /// a count or an index
+    Count(Option<u32>),
+    /// yes or no (CSV `true`/`false`, JSON a boolean)
+    Flag(Option<bool>),
+    /// text
+    Text(Option<String>),
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Cell {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        match self {
+            Cell::Num(Some(x)) => s.serialize_f64(*x),
+            Cell::Int(Some(x)) => s.serialize_u8(*x),
+            Cell::Count(Some(x)) => s.serialize_u32(*x),
+            Cell::Flag(Some(x)) => s.serialize_bool(*x),
+            Cell::Text(Some(x)) => s.serialize_str(x),
+            _ => s.serialize_none(),
+        }
+    }
+}
 
 /// One column of a table of rows `R`, each read beside `X`: what a row's cells share, such as
 /// its motion converted to the table's units.

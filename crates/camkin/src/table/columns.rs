@@ -1,38 +1,9 @@
 //! The analysis table's columns with their units (`camkin analyze`, the Python package's
 //! `Mechanism.analyze`): [`AnalysisRow`] converted and named by [`Units`].
 
-use super::column::{cells, fixed, named, names, Col};
+use super::column::{cells, fixed, named, names, Cell, Col};
 use super::units::Units;
 use super::AnalysisRow;
-
-/// One cell of a table whose column names are only known at run time (they carry units).
-#[derive(Debug, Clone, PartialEq)]
-pub enum Cell {
-    /// a number (absent: an empty CSV cell, JSON `null`, NaN in an array)
-    Num(Option<f64>),
-    /// a small whole number
-    Int(Option<u8>),
-    /// a count or an index
-    Count(Option<u32>),
-    /// yes or no (CSV `true`/`false`, JSON a boolean)
-    Flag(Option<bool>),
-    /// text
-    Text(Option<String>),
-}
-
-#[cfg(feature = "serde")]
-impl serde::Serialize for Cell {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        match self {
-            Cell::Num(Some(x)) => s.serialize_f64(*x),
-            Cell::Int(Some(x)) => s.serialize_u8(*x),
-            Cell::Count(Some(x)) => s.serialize_u32(*x),
-            Cell::Flag(Some(x)) => s.serialize_bool(*x),
-            Cell::Text(Some(x)) => s.serialize_str(x),
-            _ => s.serialize_none(),
-        }
-    }
-}
 
 /// What an analysis row's cells share: its motion in the table's units.
 pub(crate) struct A {

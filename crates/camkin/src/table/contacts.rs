@@ -2,8 +2,8 @@
 //! [`ContactRow`] per contact per cam angle, from [`Mechanism::contacts_at`](crate::cam::Mechanism::contacts_at),
 //! with its columns named and converted by [`Units`].
 
+use super::column::Cell;
 use super::column::{cells, fixed, named, names, Col};
-use super::columns::Cell;
 use super::units::Units;
 use crate::cam::{CamError, Contact};
 

@@ -1,8 +1,8 @@
 //! The gear-mesh table (`camkin mesh`): one [`MeshRow`] per driver angle, read from a gear pair's
 //! [`MeshState`](crate::gears::MeshState), with its columns named and converted by [`Units`].
 
+use super::column::Cell;
 use super::column::{fixed, named, names, Col};
-use super::columns::Cell;
 use super::units::Units;
 use super::FoundBy;
 use crate::cam::{CamError, FollowerState, Mechanism};

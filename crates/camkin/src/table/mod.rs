@@ -18,9 +18,9 @@ mod units;
 pub use crate::cam::{contact_jumps, contact_jumps_with};
 use crate::cam::{CamError, FollowerState, Found, Mechanism};
 use crate::dynamics::{Event, EventKind, Sample};
+pub use column::Cell;
 pub use columns::{
     analysis_cells, analysis_columns, event_cells, event_columns, sample_cells, sample_columns,
-    Cell,
 };
 pub use contacts::{contact_cells, contact_columns, ContactRow};
 pub use grid::AngleGrid;

@@ -4,7 +4,7 @@
 //! paper's eqs. 1 and 2), `γ` and the residual of its row (eq. 11), named by the elements' names
 //! with their units; angles in degrees.
 
-use super::columns::Cell;
+use super::column::Cell;
 use crate::system::{System, SystemError, SystemState};
 
 /// A name made safe for a column: letters, digits and `_`.

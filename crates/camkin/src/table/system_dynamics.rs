@@ -4,7 +4,7 @@
 //! drivers' work — and one row an event (a contact's lift-off or
 //! impact). Lengths in the system's unit, forces in N, energies in N times that unit.
 
-use super::columns::Cell;
+use super::column::Cell;
 use super::system::{body_columns, key};
 use crate::dynamics::{ContactEvent, EventKind, SystemSample};
 use crate::system::System;

@@ -5,8 +5,8 @@
 //! force (those that ever close), its Hertz pressure, and each driver's torque, all on the
 //! slider's angle.
 
-use super::model::{Analysis, Event, Series};
-use super::system::scene_frames;
+use super::answer::{Analysis, CellTable, Event, Series};
+use super::kinematic::scene_frames;
 use super::{Limits, StudioError};
 use crate::scene::system::{scene_at, Touch};
 use camkin::body::Pose;
@@ -210,7 +210,7 @@ pub fn analyze(
     Ok(Analysis {
         simulated: true,
         events,
-        ..super::system::system_analysis(
+        ..super::kinematic::system_analysis(
             built,
             name,
             step_deg,
@@ -226,7 +226,7 @@ pub fn table(
     built: &BuiltSystem,
     step_deg: f64,
     limits: &Limits,
-) -> Result<super::system::CellTable, StudioError> {
+) -> Result<CellTable, StudioError> {
     let (run, _) = simulate(built, step_deg, limits)?;
     let columns = camkin::table::system_sample_columns(
         &built.system,

@@ -1,10 +1,10 @@
-//! The studio on a system file (`[[body]]`, `[[joint]]`, …): every body and contact drawn at
-//! each instant of a revolution of its first driver, the slider turning that driver, and each
+//! The studio on a system file (`[[body]]`, `[[joint]]`, …) whose every degree of freedom is
+//! driven: every body and contact drawn at each instant of a revolution of its first driver, the slider turning that driver, and each
 //! moving body's main coordinate (the one that moves most) and its acceleration plotted. The
 //! page draws it with the cam's code: the frames' shapes are the command's `plot` drawing
 //! ([`crate::scene::system::system_scene`]), a body's closed curve kept once in its frame.
 
-use super::model::{revolution, Analysis, Frame, Placed, Series, ShapeOut, Source};
+use super::answer::{revolution, Analysis, CellTable, Frame, Placed, Series, ShapeOut};
 use super::{Limits, StudioError};
 use crate::scene::mechanism::Shape;
 use crate::scene::system::system_scene;
@@ -13,25 +13,6 @@ use camkin::curve::Domain;
 use camkin::spec::BuiltSystem;
 use camkin::system::{Coordinate, SystemError, SystemState};
 use std::time::Instant;
-
-/// Whether `text` is a system file.
-pub fn is_system(text: &str) -> bool {
-    camkin::spec::text::is_system(text)
-}
-
-/// The system in `text`, its points files read only from the source's folder.
-fn build(text: &str, source: &Source, limits: &Limits) -> Result<BuiltSystem, StudioError> {
-    let options = super::model::build_options(false, source, false, limits)?;
-    camkin::spec::text::read_system(text, &source.name, &options).map_err(|e| StudioError::Input {
-        message: e.message,
-        at: e.at,
-    })
-}
-
-/// Whether the system in `text` builds (the studio opens a file with an error to be mended).
-pub fn check(text: &str, source: &Source, limits: &Limits) -> Result<(), StudioError> {
-    build(text, source, limits).map(|_| ())
-}
 
 /// A revolution solved: the driver angles (degrees), their instants (s), each instant's state.
 type Solved = (Vec<f64>, Vec<f64>, Vec<Result<SystemState, SystemError>>);
@@ -64,22 +45,18 @@ fn solve(built: &BuiltSystem, step_deg: f64, limits: &Limits) -> Result<Solved, 
     Ok((angles, times, states))
 }
 
-/// The studio's analysis of a system file.
+/// The studio's analysis of a system swept kinematically (every degree of freedom driven),
+/// read from `name`.
 pub fn analyze(
-    text: &str,
-    source: &Source,
+    built: &BuiltSystem,
+    name: &str,
     step_deg: f64,
     limits: &Limits,
 ) -> Result<Analysis, StudioError> {
     let t0 = Instant::now();
-    let built = build(text, source, limits)?;
-    // with [dynamics]: its simulation, and the force panel
-    if built.simulated {
-        return super::system_sim::analyze(&built, &source.name, step_deg, limits);
-    }
     let sys = &built.system;
     let unit = built.length_unit.name();
-    let (angles, _, states) = solve(&built, step_deg, limits)?;
+    let (angles, _, states) = solve(built, step_deg, limits)?;
     let size = sys.size();
     let scenes = states.iter().map(|s| {
         s.as_ref().ok().map(|s| {
@@ -88,7 +65,7 @@ pub fn analyze(
         })
     });
     let (frames, curves, extent) = scene_frames(sys, scenes);
-    let series = body_series(&built, &states, unit);
+    let series = body_series(built, &states, unit);
     let failed = states.iter().filter(|s| s.is_err()).count();
     let first_error = states
         .iter()
@@ -97,8 +74,8 @@ pub fn analyze(
         failed,
         first_error,
         ..system_analysis(
-            &built,
-            &source.name,
+            built,
+            name,
             step_deg,
             (angles, series),
             (frames, curves, extent),
@@ -213,7 +190,7 @@ pub(super) fn scene_frames(
                     ShapeOut::Curve {
                         i: k,
                         pose,
-                        color: super::model::rgb(color),
+                        color: super::answer::rgb(color),
                         width,
                     }
                 }
@@ -326,23 +303,15 @@ fn body_series(
     out
 }
 
-/// A table's column names and its rows of cells.
-pub type CellTable = (Vec<String>, Vec<Vec<camkin::table::Cell>>);
-
 /// The system table at `step_deg` over a revolution: what `camkin analyze FILE --angles
 /// 0:360:STEP` writes.
 pub fn table(
-    text: &str,
-    source: &Source,
+    built: &BuiltSystem,
     step_deg: f64,
     limits: &Limits,
 ) -> Result<CellTable, StudioError> {
-    let built = build(text, source, limits)?;
-    if built.simulated {
-        return super::system_sim::table(&built, step_deg, limits);
-    }
-    let (angles, times, states) = solve(&built, step_deg, limits)?;
-    let columns = camkin::table::system_columns(&built);
+    let (angles, times, states) = solve(built, step_deg, limits)?;
+    let columns = camkin::table::system_columns(built);
     let rows = states
         .iter()
         .enumerate()
