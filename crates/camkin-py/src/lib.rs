@@ -17,7 +17,6 @@ mod sim;
 mod studio;
 mod study;
 mod system;
-mod system_forces;
 
 use pyo3::prelude::*;
 

@@ -6,13 +6,7 @@ use std::path::PathBuf;
 
 #[test]
 fn default_runs_the_paper_cam_over_a_revolution() {
-    let out = camkin()
-        .arg("analyze")
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = camkin().arg("analyze").stdout_ok();
     let (header, rows) = parse_csv(&out);
     // the paper's cam is in cm: every column says so
     assert_eq!(
@@ -41,13 +35,7 @@ fn default_runs_the_paper_cam_over_a_revolution() {
 
 #[test]
 fn at_list_and_numbers_round_trip() {
-    let out = camkin()
-        .args(["analyze", "--at", "45,-10"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = camkin().args(["analyze", "--at", "45,-10"]).stdout_ok();
     let (_, rows) = parse_csv(&out);
     assert_eq!(rows.len(), 2);
     // the angle column echoes the angle asked for, exactly
@@ -80,11 +68,7 @@ fn every_example_file_analyses_without_errors() {
                 .arg("analyze")
                 .arg(&p)
                 .args(["--angles", "0:360:10"])
-                .assert()
-                .success()
-                .get_output()
-                .stdout
-                .clone();
+                .stdout_ok();
             let (header, rows) = parse_csv(&out);
             assert_eq!(rows.len(), 36, "{}", p.display());
             let err = header.iter().position(|h| h == "error").unwrap();
@@ -215,11 +199,7 @@ fn help_shows_examples_for_every_subcommand() {
 fn json_format_has_the_csv_columns_as_keys() {
     let out = camkin()
         .args(["analyze", "--at", "0,45", "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 2);
@@ -546,11 +526,7 @@ fn mushroom_follower_is_a_roller_shifted_by_its_radius() {
             .arg("analyze")
             .arg(f)
             .args(["--angles", "0:360:5"])
-            .assert()
-            .success()
-            .get_output()
-            .stdout
-            .clone();
+            .stdout_ok();
         parse_csv(&out).1
     };
     let (m, r) = (run(&file), run(&rfile));

@@ -13,11 +13,7 @@ fn the_tangent_cams_joins_are_reported_with_their_radii() {
         .arg(examples().join("tangent-cam.toml"))
         .arg("--out")
         .arg(dir.path().join("shop"))
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let text = String::from_utf8(out).unwrap();
     let joins: Vec<&str> = text.lines().filter(|l| l.starts_with("  at (")).collect();
     assert_eq!(joins.len(), 4, "{text}");

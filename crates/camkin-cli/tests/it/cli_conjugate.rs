@@ -12,11 +12,7 @@ fn the_examples_second_roller_has_no_play() {
     let out = camkin()
         .arg("analyze")
         .arg(examples().join("conjugate-yoke.toml"))
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let (header, rows) = parse_csv(&out);
     let col = columns(&header);
     assert_eq!(rows.len(), 360);
@@ -285,11 +281,7 @@ fn an_arms_play_is_in_degrees() {
         .arg("analyze")
         .arg(&mech)
         .args(["--angles", "0:360:10"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let (header, rows) = parse_csv(&out);
     let col = columns(&header);
     assert_eq!(rows.len(), 36);

@@ -70,11 +70,7 @@ fn gear_pair_has_two_to_four_contacts_each_with_its_row() {
 fn json_has_the_csv_columns_and_the_paper_cam_one_contact() {
     let out = camkin()
         .args(["contacts", "--at", "0,33", "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 2);

@@ -13,14 +13,7 @@ fn col(header: &[String], name: &str) -> usize {
 }
 
 fn analyze(args: &[&str]) -> (Vec<String>, Vec<Vec<f64>>) {
-    let out = camkin()
-        .arg("analyze")
-        .args(args)
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = camkin().arg("analyze").args(args).stdout_ok();
     let (h, rows) = parse_csv(&out);
     let rows = rows
         .iter()
@@ -175,11 +168,7 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
         .arg(&slow)
         .args(["--target-rpm", "1000", "--face-width", "10", "--out"])
         .arg(dir.path().join("out"))
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let report = String::from_utf8(out).unwrap();
     let (m, e, k, f0) = (0.3, 0.01, 2000.0, 20.0);
     let w = 1000.0 * std::f64::consts::TAU / 60.0;
@@ -433,11 +422,7 @@ fn measured_profiles_are_smoothed_within_the_noise() {
         .arg(examples().join("eccentric-roller.toml"))
         .args(["--tolerance", "0.0006", "--out"])
         .arg(dir.path().join("d"))
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let report = String::from_utf8(out).unwrap();
     let frac = |what: &str| -> f64 {
         let line = report

@@ -14,11 +14,7 @@ fn a_torque_loads_the_whole_path_of_contact() {
         .arg(examples().join("gear-pair-20-42.toml"))
         .args(["--torque", "50", "--face-width", "20", "--out"])
         .arg(dir.path().join("out"))
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let text = String::from_utf8(out).unwrap();
     let rb1 = 0.020 * 20f64.to_radians().cos();
     let force = 50.0 / rb1;

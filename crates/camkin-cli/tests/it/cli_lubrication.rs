@@ -39,11 +39,7 @@ fn the_lubrication_table_is_the_discs_closed_form() {
             "--out",
         ])
         .arg(dir.path().join("out"))
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let report = String::from_utf8(out).unwrap();
     for needle in [
         "lubrication (η₀ = 8.894 mPa·s, α = 20 1/GPa, Dowson–Higginson film",

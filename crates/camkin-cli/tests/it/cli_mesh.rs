@@ -123,11 +123,7 @@ fn tip_relief_table_units_plot_and_cold_queries_agree() {
         .arg("mesh")
         .arg(&file)
         .args(["--at", at])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let (c2, cold) = table(&cold);
     for r in &cold {
         let a = num(r, &c2, "angle_deg");
@@ -154,11 +150,7 @@ fn tip_relief_table_units_plot_and_cold_queries_agree() {
 fn json_keeps_counts_and_flags_as_numbers_and_booleans() {
     let out = camkin()
         .args(["mesh", "--at", "0,9", "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let r = &v[1];
     assert!(r["on_flanks"].is_boolean(), "{r}");

@@ -106,11 +106,7 @@ fn json_has_samples_and_events() {
         .arg("simulate")
         .arg(example("eccentric-flat-dynamics.toml"))
         .args(["--start-angle", "180", "--step", "2", "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     assert_eq!(v["samples"].as_array().unwrap().len(), 181);
     assert!(v["events"]

@@ -113,11 +113,7 @@ fn paper_json_summary() {
     let out = camkin()
         .args(["paper", "--step", "1", "--format", "json", "--out"])
         .arg(dir.path())
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     for cam in ["original", "revised"] {
         for n in ["100", "1000", "10000"] {
@@ -133,11 +129,7 @@ fn compare_json_has_errors_keyed_by_n() {
         .args(["compare"])
         .arg(examples().join("paper-revised.toml"))
         .args(["--nodes", "100,1000", "--step", "0.5", "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let m100 = v["max_rel_error"]["100"].as_f64().unwrap();
     let m1000 = v["max_rel_error"]["1000"].as_f64().unwrap();
@@ -157,11 +149,7 @@ fn compare_every_example_and_csv_format() {
             .arg("compare")
             .arg(examples().join(format!("{name}.toml")))
             .args(["--nodes", "50,500", "--step", "1", "--format", "csv"])
-            .assert()
-            .success()
-            .get_output()
-            .stdout
-            .clone();
+            .stdout_ok();
         let text = String::from_utf8(out).unwrap();
         assert!(text.starts_with("cam,nodes,max_rel_error"), "{text}");
         assert_eq!(text.lines().count(), 3, "{name}");
@@ -223,11 +211,7 @@ fn study_bad_input_exits_2() {
 fn bench_runs_and_reports_every_key() {
     let out = camkin()
         .args(["bench", "--repeats", "1", "--json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
     for key in [
         "single_query_ns",
@@ -256,11 +240,7 @@ fn bench_runs_and_reports_every_key() {
 fn bench_counts_instructions_with_callgrind() {
     let out = camkin()
         .args(["bench", "--repeats", "1", "--json", "--instructions"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let n = |k: &str| {
         j["instructions"][k]

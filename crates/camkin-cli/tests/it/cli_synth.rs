@@ -14,11 +14,7 @@ fn synth_writes_a_profile_a_dxf_reader_opens() {
         .arg(&mech)
         .arg("--out")
         .arg(dir.path())
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        .stdout_ok();
     let report = String::from_utf8(out).unwrap();
     assert!(report.contains("round trip"), "{report}");
     // the round trip's acceleration error, as a fraction of the peak, is tiny

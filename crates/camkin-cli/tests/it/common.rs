@@ -55,6 +55,10 @@ impl Cmd {
         self.0.stdout(file);
         self
     }
+    /// Runs the command to its end, checks that it succeeded, and returns its standard output.
+    pub fn stdout_ok(&mut self) -> Vec<u8> {
+        self.assert().success().get_output().stdout.clone()
+    }
     /// Runs the command to its end, stdin closed.
     pub fn assert(&mut self) -> Assert {
         let out = self
