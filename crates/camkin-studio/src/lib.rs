@@ -31,8 +31,13 @@ pub mod assets {
     pub const INDEX_HTML: &str = include_str!("../web/index.html");
     /// its style
     pub const STYLE_CSS: &str = include_str!("../web/studio.css");
-    /// its script
-    pub const STUDIO_JS: &str = include_str!("../web/studio.js");
+    /// its script, one for the page: the charts (`web/chart.js`) and the mechanism's drawing
+    /// (`web/scene.js`), then the page's state and controls (`web/studio.js`), which uses them
+    pub const STUDIO_JS: &str = concat!(
+        include_str!("../web/chart.js"),
+        include_str!("../web/scene.js"),
+        include_str!("../web/studio.js")
+    );
 }
 
 /// Bounds on the work and the input one request may bring.

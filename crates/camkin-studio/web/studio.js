@@ -28,12 +28,10 @@
   S.idle = () => !S.inflight && !S.pending && !S.drag && !S.comparing && (REPORT || !S.result || S.compareFor === S.toml);
 
   // ---------- numbers for people ----------
-  function fmt(x, digits) {
-    if (x === null || x === undefined || !isFinite(x)) return "—";
-    const a = Math.abs(x);
-    if (a !== 0 && (a >= 1e6 || a < 1e-3)) return x.toExponential((digits || 4) - 1);
-    return Number(x.toPrecision(digits || 5)).toString();
-  }
+  const { fmt, fitCanvas } = window.CamkinChart;
+  const { camToWorld, worldToCam, legendItems, drawLegend, drawShapes, drawContact, drawSense } =
+    window.CamkinScene;
+  function drawPlot(p) { window.CamkinChart.draw(p, S.result, S.result ? angleAt(S.index) : null); }
   function angleAt(i) { return S.result.angles_deg[i]; }
   // a value below its series' resolution is rounding: shown as 0
   function snap(s, v) { return s.resolution && v !== null && Math.abs(v) < s.resolution ? 0 : v; }
@@ -178,28 +176,6 @@
   }
 
   // ---------- the drawing ----------
-  function fitCanvas(c) {
-    const dpr = window.devicePixelRatio || 1;
-    const w = c.clientWidth || c.width, h = c.clientHeight || c.height;
-    if (c.width !== Math.round(w * dpr) || c.height !== Math.round(h * dpr)) {
-      c.width = Math.round(w * dpr);
-      c.height = Math.round(h * dpr);
-    }
-    const g = c.getContext("2d");
-    g.setTransform(dpr, 0, 0, dpr, 0, 0);
-    return { g, w, h };
-  }
-
-  function camToWorld(frame, p) {
-    const [ox, oy, a] = frame.cam, c = Math.cos(a), s = Math.sin(a);
-    return [ox + c * p[0] - s * p[1], oy + s * p[0] + c * p[1]];
-  }
-  function worldToCam(frame, p) {
-    const [ox, oy, a] = frame.cam, c = Math.cos(a), s = Math.sin(a);
-    const dx = p[0] - ox, dy = p[1] - oy;
-    return [c * dx + s * dy, -s * dx + c * dy];
-  }
-
   function drawMechanism() {
     const c = $("drawing");
     c.style.height = Math.round(c.clientWidth * 440 / 520) + "px";
@@ -222,33 +198,7 @@
     // the follower, from the server's model of it (a system: every body and contact)
     drawShapes(g, r, f, view, k);
     if (!r.system) drawContact(g, r, f, view, Math.max(x1 - x0, y1 - y0));
-    // the cam's sense of rotation: an arc round its axis with an arrowhead, from how its pose
-    // turns from one frame to the next
-    if (!r.system && r.frames.length > 1) {
-      let d = r.frames[1].cam[2] - r.frames[0].cam[2];
-      d = Math.atan2(Math.sin(d), Math.cos(d));
-      if (d !== 0) {
-        const sgn = Math.sign(d), rr = 0.12 * Math.max(x1 - x0, y1 - y0);
-        const pt = (t) => view.tx([r.pivot[0] + rr * Math.cos(t), r.pivot[1] + rr * Math.sin(t)]);
-        const a0 = sgn * Math.PI / 6, a1 = sgn * (5 * Math.PI / 6);
-        g.strokeStyle = "#1f77b4"; g.lineWidth = 1.2;
-        g.beginPath();
-        for (let i = 0; i <= 24; i++) {
-          const q = pt(a0 + (a1 - a0) * i / 24);
-          if (i) g.lineTo(q[0], q[1]); else g.moveTo(q[0], q[1]);
-        }
-        g.stroke();
-        const tip = pt(a1), back = pt(a1 - sgn * 0.25);
-        const ux = back[0] - tip[0], uy = back[1] - tip[1], n = Math.hypot(ux, uy) || 1;
-        const hl = 8;
-        for (const s2 of [-0.5, 0.5]) {
-          const c2 = Math.cos(s2), s3 = Math.sin(s2);
-          g.beginPath(); g.moveTo(tip[0], tip[1]);
-          g.lineTo(tip[0] + hl * (c2 * ux - s3 * uy) / n, tip[1] + hl * (s3 * ux + c2 * uy) / n);
-          g.stroke();
-        }
-      }
-    }
+    drawSense(g, r, view, Math.max(x1 - x0, y1 - y0));
     // a scale bar
     const size = Math.max(x1 - x0, y1 - y0);
     const bar = Math.pow(10, Math.floor(Math.log10(size / 4)));
@@ -260,37 +210,6 @@
     drawLegend(g, r, w);
   }
 
-  // the drawing's key, top right: what each colour and mark is
-  function legendItems(r) {
-    const items = r.system
-      ? [["none", "", "each body in its colour"], ["dot", "#d62728", "contact points"], ["line", "#2ca02c", "common normals"]]
-      : [["fill", "#1f77b4", "cam, the driver (turns)"], ["line", "#3c3c3c", "follower"],
-        ["dot", "#d62728", "contact point"], ["dash", "#2ca02c", "common normal"]];
-    if (!r.system && r.nodes_editable) items.push(["node", "#1f77b4", "spline node (drag)"]);
-    return items;
-  }
-
-  function drawLegend(g, r, w) {
-    const items = legendItems(r);
-    g.font = "11px DejaVu Sans, sans-serif";
-    const tw = Math.max(...items.map((it) => g.measureText(it[2]).width));
-    const x = w - tw - 40, lh = 15;
-    g.fillStyle = "rgba(255,255,255,0.85)";
-    g.fillRect(x - 6, 6, tw + 40, items.length * lh + 8);
-    items.forEach(([kind, col, label], i) => {
-      const y = 16 + i * lh;
-      g.strokeStyle = col; g.fillStyle = col; g.lineWidth = 2; g.setLineDash([]);
-      if (kind === "fill") { g.fillStyle = "rgba(31,119,180,0.15)"; g.fillRect(x, y - 5, 20, 10); g.strokeRect(x, y - 5, 20, 10); }
-      else if (kind === "line") { g.beginPath(); g.moveTo(x, y); g.lineTo(x + 20, y); g.stroke(); }
-      else if (kind === "dash") { g.lineWidth = 1.2; g.setLineDash([4, 3]); g.beginPath(); g.moveTo(x, y); g.lineTo(x + 20, y); g.stroke(); g.setLineDash([]); }
-      else if (kind === "dot") { g.beginPath(); g.arc(x + 10, y, 4, 0, 2 * Math.PI); g.fill(); }
-      else if (kind === "node") { g.beginPath(); g.arc(x + 10, y, 3.5, 0, 2 * Math.PI); g.fill(); }
-      g.fillStyle = "#333";
-      g.fillText(label, x + 26, y + 4);
-    });
-  }
-
-  // the cam: its profile turned with it, stretches the follower cannot follow, its axis, nodes
   function drawCam(g, r, f, view, x0, y0, x1, y1) {
     // the profile, turned with the cam
     g.beginPath();
@@ -338,67 +257,6 @@
     });
   }
 
-  function drawShapes(g, r, f, view, k) {
-    for (const s of f.follower) {
-      g.strokeStyle = s.color;
-      g.fillStyle = s.color;
-      g.lineWidth = s.width || 1;
-      if (s.t === "line") {
-        g.beginPath();
-        s.pts.forEach((p, i) => { const q = view.tx(p); if (i === 0) g.moveTo(q[0], q[1]); else g.lineTo(q[0], q[1]); });
-        if (s.closed) g.closePath();
-        g.stroke();
-      } else if (s.t === "circle") {
-        const q = view.tx(s.c);
-        g.beginPath(); g.arc(q[0], q[1], s.r * k, 0, 2 * Math.PI); g.stroke();
-      } else if (s.t === "dot") {
-        const q = view.tx(s.p);
-        g.beginPath(); g.arc(q[0], q[1], s.px, 0, 2 * Math.PI); g.fill();
-      } else if (s.t === "curve") {
-        // a closed curve of the follower, kept once in its body frame, placed at this pose
-        const [ox, oy, an] = s.pose, c = Math.cos(an), sn = Math.sin(an);
-        g.beginPath();
-        r.curves[s.i].forEach((p, i) => {
-          const q = view.tx([ox + c * p[0] - sn * p[1], oy + sn * p[0] + c * p[1]]);
-          if (i === 0) g.moveTo(q[0], q[1]); else g.lineTo(q[0], q[1]);
-        });
-        g.closePath();
-        g.stroke();
-      }
-    }
-  }
-
-  // the contact point and the common normal, and marks where a check fails
-  function drawContact(g, r, f, view, size) {
-    // marks of failed checks at this angle's neighbourhood: contacts where a check fails
-    for (const ch of r.checks) {
-      if (ch.ok) continue;
-      for (const a of ch.angles_deg) {
-        const i = Math.round(a / r.step_deg) % r.frames.length;
-        const ct = r.frames[i] && r.frames[i].contact;
-        if (!ct) continue;
-        const q = view.tx(camToWorld(f, worldToCam(r.frames[i], ct)));
-        g.fillStyle = "rgba(214,39,40,0.6)";
-        g.fillRect(q[0] - 2, q[1] - 2, 4, 4);
-      }
-    }
-    // the contact point and the common normal
-    if (f.contact) {
-      const q = view.tx(f.contact);
-      if (f.normal) {
-        const L = 0.3 * size;
-        const a = view.tx([f.contact[0] - L * f.normal[0], f.contact[1] - L * f.normal[1]]);
-        const b = view.tx([f.contact[0] + L * f.normal[0], f.contact[1] + L * f.normal[1]]);
-        g.strokeStyle = "#2ca02c"; g.lineWidth = 1; g.setLineDash([5, 4]);
-        g.beginPath(); g.moveTo(a[0], a[1]); g.lineTo(b[0], b[1]); g.stroke();
-        g.setLineDash([]);
-      }
-      g.fillStyle = "#d62728";
-      g.beginPath(); g.arc(q[0], q[1], 5, 0, 2 * Math.PI); g.fill();
-    }
-  }
-
-  // a readout within 1e-9 of its series' largest magnitude is rounding: shown as 0
   function readout(v, top) { return v !== null && top > 0 && Math.abs(v) <= 1e-9 * top ? 0 : v; }
   function drawValues() {
     const r = S.result, i = S.index;
@@ -491,123 +349,6 @@
       p.minSpan = p.key === "pressure_angle" ? 2 : 0;
       // a series that is zero but for rounding is drawn on a span that shows it as zero
       if (s.resolution) p.minSpan = Math.max(p.minSpan, 1e6 * s.resolution);
-    }
-  }
-
-  function niceTicks(lo, hi, n) {
-    const span = hi - lo;
-    if (!(span > 0)) return [lo];
-    const raw = span / n, mag = Math.pow(10, Math.floor(Math.log10(raw)));
-    const step = [1, 2, 2.5, 5, 10].map((m) => m * mag).find((s) => s >= raw) || 10 * mag;
-    const out = [];
-    for (let t = Math.ceil(lo / step) * step; t <= hi + 1e-9 * span; t += step) out.push(Math.abs(t) < 1e-12 * span ? 0 : t);
-    return out;
-  }
-
-  function quantile(sorted, q) { return sorted[Math.min(sorted.length - 1, Math.max(0, Math.floor(q * (sorted.length - 1))))]; }
-
-  function yRange(p) {
-    const vals = [];
-    for (const s of p.series) for (const v of s.values) if (v !== null && isFinite(v) && (!p.log || v > 0)) vals.push(p.log ? Math.log10(v) : v);
-    if (!vals.length) return [0, 1];
-    vals.sort((a, b) => a - b);
-    let lo = vals[0], hi = vals[vals.length - 1];
-    if (p.clip && vals.length > 20) {
-      // a radius of curvature near a straight stretch, or jerk at nodes, would flatten the rest
-      const q1 = quantile(vals, 0.02), q3 = quantile(vals, 0.98), w = q3 - q1;
-      lo = Math.max(lo, q1 - 0.5 * w); hi = Math.min(hi, q3 + 0.5 * w);
-    }
-    // a quantity that is zero but for rounding (the pressure angle under a flat face) is drawn
-    // on a span that shows it as zero, not its rounding noise
-    const minSpan = p.minSpan || 0;
-    if (hi - lo < minSpan) { const m = (hi + lo) / 2; lo = m - minSpan / 2; hi = m + minSpan / 2; }
-    if (lo === hi) { lo -= 1; hi += 1; }
-    const pad = 0.06 * (hi - lo);
-    return [lo - pad, hi + pad];
-  }
-
-  function drawPlot(p) {
-    const { g, w, h } = fitCanvas(p.canvas);
-    const L = 64, R = 10, T = 16, B = 18;
-    const x = p.x || S.result.angles_deg;
-    // the x axis: the cam angle over a revolution, or p.xr = [lo, hi] in p.xunit
-    const [x0, x1] = p.xr || [0, 360];
-    const [ylo, yhi] = yRange(p);
-    const X = (a) => L + ((a - x0) / (x1 - x0)) * (w - L - R);
-    const Y = (v) => T + (1 - (v - ylo) / (yhi - ylo)) * (h - T - B);
-    p.geom = { L, R, T, B, w, h, X, Y, ylo, yhi, x };
-    g.clearRect(0, 0, w, h);
-    g.fillStyle = "#fff"; g.fillRect(0, 0, w, h);
-    g.font = "11px DejaVu Sans, sans-serif";
-    // grid and axes
-    g.strokeStyle = "#eee"; g.lineWidth = 1; g.fillStyle = "#555";
-    for (const t of niceTicks(ylo, yhi, 4)) {
-      const yy = Y(t);
-      g.beginPath(); g.moveTo(L, yy); g.lineTo(w - R, yy); g.stroke();
-      g.textAlign = "right";
-      g.fillText(p.log ? `1e${Math.round(t)}` : fmt(t, 3), L - 4, yy + 4);
-    }
-    const xticks = p.xr ? niceTicks(x0, x1, 6).filter((t) => t >= x0 && t <= x1) : [0, 45, 90, 135, 180, 225, 270, 315, 360];
-    for (const a of xticks) {
-      const xx = X(a);
-      g.beginPath(); g.moveTo(xx, T); g.lineTo(xx, h - B); g.stroke();
-      g.textAlign = "center";
-      g.fillText(p.xr ? `${fmt(a, 4)} ${p.xunit}` : `${a}°`, xx, h - 5);
-    }
-    if (!p.log && ylo < 0 && yhi > 0) {
-      g.strokeStyle = "#bbb"; g.beginPath(); g.moveTo(L, Y(0)); g.lineTo(w - R, Y(0)); g.stroke();
-    }
-    g.textAlign = "left"; g.fillStyle = "#222"; g.font = "12px DejaVu Sans, sans-serif";
-    g.fillText(p.unit ? `${p.title} (${p.unit})` : p.title, L + 4, 12);
-    // failed checks at their angles
-    if (S.result && !p.noMarks) {
-      // a light band over the plot and a solid strip under it, so the curve stays readable
-      const cell = Math.max(2, X(S.result.step_deg) - X(0));
-      for (const ch of S.result.checks) {
-        if (ch.ok) continue;
-        for (const a of ch.angles_deg) {
-          g.fillStyle = "rgba(214,39,40,0.08)";
-          g.fillRect(X(a) - cell / 2, T, cell, h - T - B);
-          g.fillStyle = "rgba(214,39,40,0.9)";
-          g.fillRect(X(a) - cell / 2, h - B - 4, cell, 4);
-        }
-      }
-    }
-    if (p.shade) p.shade(g, X, Y, T, h - B);
-    // the curves
-    g.save();
-    g.beginPath(); g.rect(L, T, w - L - R, h - T - B); g.clip();
-    for (const s of p.series) {
-      g.strokeStyle = s.color; g.lineWidth = s.width || 1.5;
-      if (s.dash) g.setLineDash(s.dash);
-      g.beginPath();
-      let on = false;
-      s.values.forEach((v, i) => {
-        const ok = v !== null && isFinite(v) && (!p.log || v > 0);
-        if (!ok) { on = false; return; }
-        const xx = X(x[i]), yy = Y(p.log ? Math.log10(v) : v);
-        if (on) g.lineTo(xx, yy); else g.moveTo(xx, yy);
-        on = true;
-      });
-      g.stroke();
-      g.setLineDash([]);
-    }
-    g.restore();
-    // the cursor at the current angle (or where p.cursor puts it; none where it says null)
-    const xcv = p.cursor ? p.cursor() : angleAt(S.index);
-    if (xcv !== null && xcv >= x0 && xcv <= x1) {
-      const xc = X(xcv);
-      g.strokeStyle = "#d62728"; g.lineWidth = 1;
-      g.beginPath(); g.moveTo(xc, T); g.lineTo(xc, h - B); g.stroke();
-    }
-    if (p.legend) {
-      let lx = w - R - 6;
-      g.textAlign = "right"; g.font = "11px DejaVu Sans, sans-serif";
-      for (const s of p.series.slice().reverse()) {
-        g.fillStyle = s.color;
-        g.fillText(s.label, lx, 12);
-        lx -= g.measureText(s.label).width + 14;
-      }
     }
   }
 
