@@ -1,6 +1,6 @@
 // camkin studio: draws what the server (or a report's inlined data) computed. No numerics of
 // its own beyond placing points on the screen and evaluating the force quadratic the server
-// states (see model.rs, DynamicsOut).
+// states (see answer.rs, DynamicsOut).
 "use strict";
 (function () {
   const REPORT = window.CAMKIN_REPORT || null;
