@@ -150,6 +150,27 @@ fn build_spec(
     Ok(built)
 }
 
+/// The system in `text` (read from `path`, `name` for messages), built; errors at their keys.
+/// A cam-follower or gear-pair file is its mechanism as a system.
+pub fn load_system(
+    path: &Path,
+    name: &str,
+    text: &str,
+) -> Result<camkin::spec::BuiltSystem, crate::Failure> {
+    let options = camkin::spec::BuildOptions {
+        base_dir: path.parent().unwrap_or(Path::new(".")).to_path_buf(),
+        si: false,
+        confine: false,
+        limits: build_limits(),
+    };
+    let built = camkin::spec::text::read_system(text, name, &options)
+        .map_err(|e| crate::Failure::Input(anyhow::anyhow!(e.message)))?;
+    for w in &built.warnings {
+        crate::say!("camkin: warning: {name}: {w}");
+    }
+    Ok(built)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -185,25 +206,4 @@ mod tests {
         let e = err(&PAPER_TOML.replace("speed_rpm = 1000.0", "speed_rpm = \"fast\""));
         assert!(e.contains("line 6") && e.contains("speed_rpm"), "{e}");
     }
-}
-
-/// The system in `text` (read from `path`, `name` for messages), built; errors at their keys.
-/// A cam-follower or gear-pair file is its mechanism as a system.
-pub fn load_system(
-    path: &Path,
-    name: &str,
-    text: &str,
-) -> Result<camkin::spec::BuiltSystem, crate::Failure> {
-    let options = camkin::spec::BuildOptions {
-        base_dir: path.parent().unwrap_or(Path::new(".")).to_path_buf(),
-        si: false,
-        confine: false,
-        limits: build_limits(),
-    };
-    let built = camkin::spec::text::read_system(text, name, &options)
-        .map_err(|e| crate::Failure::Input(anyhow::anyhow!(e.message)))?;
-    for w in &built.warnings {
-        crate::say!("camkin: warning: {name}: {w}");
-    }
-    Ok(built)
 }

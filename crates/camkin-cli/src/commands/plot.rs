@@ -572,43 +572,6 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::jump_order;
-
-    /// Where the contact jumped, the mark goes on the derivative that jumps: the velocity of a
-    /// follower whose contact crossed a stretch it cannot follow, nothing for a gear's next tooth
-    /// pair taking over smoothly (it was marked as a jump of the position on every panel).
-    #[test]
-    fn contact_jump_marks_the_derivative_that_jumps() {
-        let n = 40;
-        let smooth = |f: &dyn Fn(f64) -> f64| -> Vec<Option<f64>> {
-            (0..n).map(|i| Some(f(f64::from(i) * 0.01))).collect()
-        };
-        // constant speed: nothing jumps
-        let steady = [
-            smooth(&|t| 3.0 * t),
-            smooth(&|_| 3.0),
-            smooth(&|_| 0.0),
-            vec![None; n as usize],
-        ];
-        assert_eq!(jump_order(&steady, 20), None);
-        // a kink of the position at row 20: the velocity jumps
-        let kink = |t: f64| if t < 0.2 { t } else { 0.2 - 2.0 * (t - 0.2) };
-        let kinked = [
-            smooth(&kink),
-            smooth(&|t| if t < 0.2 { 1.0 } else { -2.0 }),
-            smooth(&|_| 0.0),
-            vec![None; n as usize],
-        ];
-        assert_eq!(jump_order(&kinked, 20), Some(1));
-        // a step of the position
-        let mut stepped = steady.clone();
-        stepped[0] = smooth(&|t| 3.0 * t + if t < 0.2 { 0.0 } else { 1.0 });
-        assert_eq!(jump_order(&stepped, 20), Some(0));
-    }
-}
-
 /// Draws the system in `text` at the driver angles `--at` (`drawing_<angle>.svg/png`) and over a
 /// revolution in `--frames` frames (`animation.svg`), into `--out`.
 fn plot_system(args: &PlotArgs, path: &Path, name: &str, text: &str) -> Result<(), Failure> {
@@ -700,4 +663,41 @@ fn built_name(path: &Path) -> String {
         || path.display().to_string(),
         |s| s.to_string_lossy().into(),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::jump_order;
+
+    /// Where the contact jumped, the mark goes on the derivative that jumps: the velocity of a
+    /// follower whose contact crossed a stretch it cannot follow, nothing for a gear's next tooth
+    /// pair taking over smoothly (it was marked as a jump of the position on every panel).
+    #[test]
+    fn contact_jump_marks_the_derivative_that_jumps() {
+        let n = 40;
+        let smooth = |f: &dyn Fn(f64) -> f64| -> Vec<Option<f64>> {
+            (0..n).map(|i| Some(f(f64::from(i) * 0.01))).collect()
+        };
+        // constant speed: nothing jumps
+        let steady = [
+            smooth(&|t| 3.0 * t),
+            smooth(&|_| 3.0),
+            smooth(&|_| 0.0),
+            vec![None; n as usize],
+        ];
+        assert_eq!(jump_order(&steady, 20), None);
+        // a kink of the position at row 20: the velocity jumps
+        let kink = |t: f64| if t < 0.2 { t } else { 0.2 - 2.0 * (t - 0.2) };
+        let kinked = [
+            smooth(&kink),
+            smooth(&|t| if t < 0.2 { 1.0 } else { -2.0 }),
+            smooth(&|_| 0.0),
+            vec![None; n as usize],
+        ];
+        assert_eq!(jump_order(&kinked, 20), Some(1));
+        // a step of the position
+        let mut stepped = steady.clone();
+        stepped[0] = smooth(&|t| 3.0 * t + if t < 0.2 { 0.0 } else { 1.0 });
+        assert_eq!(jump_order(&stepped, 20), Some(0));
+    }
 }
