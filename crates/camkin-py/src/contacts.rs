@@ -3,7 +3,7 @@
 
 use crate::columns::{angles_from, Columns};
 use crate::errors;
-use crate::mech::{raise_first, PyMechanism};
+use crate::model::{raise_first, PyMechanism};
 use camkin::table::Units;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;

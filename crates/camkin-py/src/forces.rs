@@ -1,12 +1,12 @@
 //! `Mechanism.forces` and `System.forces`: the library's force reports (`camkin forces`) as
 //! arrays and a dict — a mechanism's ([`camkin::report::ForceReport`]), and a simulated
 //! system's over a revolution of its first driver ([`camkin::report::SystemForces`]: the columns
-//! of its `forces.csv`, bit for bit, and its report and checks).
+//! of its `forces.csv`, bit for bit, and its report and checks); and their lubrication
+//! (`Mechanism.lubrication` through the same request, `System.lubrication`).
 
 use crate::columns::Columns;
 use crate::errors;
-use crate::mech::PyMechanism;
-use crate::system::PySystem;
+use crate::model::{PyMechanism, PySystem};
 use camkin::lubrication::{FilmFormula, Friction, Lubricant, LubricantError, SurfaceProperties};
 use camkin::report::{
     ForceField, ForceReport, ForceRequest, LubricationRequest, Materials, ReportError,
@@ -467,6 +467,63 @@ impl PySystem {
             }
         }
         out.set_item("failures", loads(serde_json::to_string(&failures))?)?;
+        crate::columns::result(out)
+    }
+}
+
+#[pymethods]
+impl PySystem {
+    /// lubrication(*, step_deg=1.0, large=False) -> dict
+    ///
+    /// The lubrication of the system's contacts over a revolution of its first driver, as
+    /// ``camkin forces SYSTEM.toml --step STEP`` gives it (its file's ``[lubrication]`` and each
+    /// contact's ``face_width``, ``roughness_um`` and ``rolls``): ``{"columns": …, "report": …}``,
+    /// the columns of its ``lubrication.csv`` (a row per sample and lubricated contact: the
+    /// entrainment and sliding in m/s, the film in µm, λ, the regime, the flash temperature in
+    /// K, the friction power in W) and each contact's extremes.
+    ///
+    /// >>> s = camkin.System.from_toml("examples/valve-train.toml")
+    /// >>> r = s.lubrication(step_deg=1.0)
+    /// >>> r["report"]["contacts"][0]["min_lambda"]
+    #[pyo3(signature = (*, step_deg = 1.0, large = false))]
+    fn lubrication<'py>(
+        &self,
+        py: Python<'py>,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let Some(req) = self.built.lubrication.as_ref() else {
+            return Err(errors::input(
+                "lubrication",
+                None,
+                "the system's file has no [lubrication] table (its oil and roughness)".into(),
+            ));
+        };
+        let (run, plan) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
+        let angle_of = |t: f64| plan.angle_of(t);
+        let report =
+            camkin::report::SystemLubricationReport::new(&self.built.system, &run, req, angle_of);
+        let (names, rows) = report.table();
+        let mut cols = Columns::new(names, rows.len());
+        for r in rows {
+            cols.push(r);
+        }
+        let out = PyDict::new(py);
+        out.set_item("columns", cols.into_dict(py, false)?)?;
+        let mut v = serde_json::to_value(&report)
+            .map_err(|e| errors::contact(format!("the report cannot be written: {e}")))?;
+        if let Some(cs) = v.get_mut("contacts").and_then(|c| c.as_array_mut()) {
+            for c in cs {
+                if let Some(o) = c.as_object_mut() {
+                    o.remove("points");
+                }
+            }
+        }
+        if let Some(o) = v.as_object_mut() {
+            o.remove("angles_deg");
+        }
+        let json = py.import("json")?;
+        out.set_item("report", json.call_method1("loads", (v.to_string(),))?)?;
         crate::columns::result(out)
     }
 }

@@ -4,7 +4,7 @@
 use crate::columns::Columns;
 use crate::errors;
 use crate::forces::{lubrication, materials, real};
-use crate::mech::PyMechanism;
+use crate::model::PyMechanism;
 use camkin::gears::GearPair;
 use camkin::report::{GearLoadRequest, GearLoads};
 use camkin::spec::{GivenLoads, LoadInput};

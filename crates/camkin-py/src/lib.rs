@@ -2,6 +2,7 @@
 //! extension module is `camkin._camkin`; the package `camkin` (python/camkin) re-exports it with
 //! the error classes and the `Contact` result.
 
+mod analyze;
 mod columns;
 mod contacts;
 mod dict;
@@ -9,27 +10,26 @@ mod errors;
 mod forces;
 mod gear_loads;
 mod geometry;
-mod mech;
+mod model;
 mod motion;
 mod nodes;
 mod shop;
 mod sim;
 mod studio;
 mod study;
-mod system;
 
 use pyo3::prelude::*;
 
 /// The camkin extension module.
 #[pymodule]
 fn _camkin(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_class::<mech::PyMechanism>()?;
-    m.add_class::<system::PySystem>()?;
+    m.add_class::<model::PyMechanism>()?;
+    m.add_class::<model::PySystem>()?;
     m.add_class::<geometry::PyCurve>()?;
     m.add_class::<geometry::PyBody>()?;
-    m.add_function(wrap_pyfunction!(mech::paper_cam, m)?)?;
-    m.add_function(wrap_pyfunction!(mech::_mechanism_from_json, m)?)?;
-    m.add_function(wrap_pyfunction!(mech::_mechanism_from_text, m)?)?;
+    m.add_function(wrap_pyfunction!(model::paper_cam, m)?)?;
+    m.add_function(wrap_pyfunction!(model::_mechanism_from_json, m)?)?;
+    m.add_function(wrap_pyfunction!(model::_mechanism_from_text, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::_curve_from_state, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::_contact, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::spline, m)?)?;
@@ -43,7 +43,7 @@ fn _camkin(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::summarize, m)?)?;
     m.add_function(wrap_pyfunction!(studio::_studio_answer, m)?)?;
     m.add_function(wrap_pyfunction!(studio::_studio_assets, m)?)?;
-    m.add("MAX_ANGLES", mech::MAX_ANGLES)?;
+    m.add("MAX_ANGLES", model::MAX_ANGLES)?;
     m.add("MAX_TEXT_BYTES", camkin::spec::text::MAX_TEXT_BYTES)?;
     Ok(())
 }

@@ -3,7 +3,7 @@
 //! `camkin profile`'s and `camkin deviation`'s files (the same numbers, bit for bit).
 
 use crate::errors;
-use crate::mech::{revolution_steps, PyMechanism};
+use crate::model::{revolution_steps, PyMechanism};
 use camkin::report::{
     DeviationError, DeviationReport, ShopError, ShopField, ShopReport, ShopRequest,
 };

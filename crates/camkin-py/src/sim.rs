@@ -1,9 +1,9 @@
-//! `Mechanism.simulate`: the follower's dynamics with lift-off and impacts, the command's
+//! `Mechanism.simulate` and `System.simulate`: the dynamics with lift-off and impacts, the command's
 //! `simulate` as arrays.
 
 use crate::columns::Columns;
 use crate::errors;
-use crate::mech::PyMechanism;
+use crate::model::{PyMechanism, PySystem};
 use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Simulation, StepAdvice};
 use camkin::table::{
     event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow, Units,
@@ -158,5 +158,131 @@ impl PyMechanism {
         out.set_item("samples", samples.into_dict(py, false)?)?;
         out.set_item("events", ev)?;
         crate::columns::result(out)
+    }
+}
+
+#[pymethods]
+impl PySystem {
+    /// simulate(*, revolutions=1.0, step_deg=1.0, substeps=None, large=False) -> (dict, dict)
+    ///
+    /// The system's dynamics (a system file with ``[dynamics]``; see docs/systems.md, "Dynamics of a
+    /// system"): ``(samples, events)``, two dicts of NumPy arrays keyed by the columns of
+    /// ``camkin simulate SYSTEM.toml`` (``time_series.csv`` and ``events.csv``): a sample at the
+    /// start and every ``step_deg`` of the first driver, each body's pose, rates and
+    /// accelerations, each contact's force (N), gap and whether it is closed, the energy and the
+    /// drivers' work; each lift-off and impact with its contact, instant and approach speed.
+    /// ``substeps`` (integration steps per output step) is by default the fewest the stiffest
+    /// spring or damper allows; fewer raises ``camkin.InputError`` naming it.
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.System.from_toml("examples/valve-train.toml")
+    ///     samples, events = s.simulate(revolutions=1.0, step_deg=1.0)
+    ///     samples.to_pandas().iloc[:, :4]
+    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, substeps = None, large = false))]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::count_or_none)] substeps: Option<usize>,
+        large: bool,
+    ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+        let sys = &self.built.system;
+        let (run, plan) = self.run_revolutions(py, revolutions, step_deg, substeps, large)?;
+        let unit = self.built.length_unit.name();
+        let mut samples = Columns::new(
+            camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
+            run.samples.len(),
+        );
+        let grid = camkin::table::AngleGrid::new(0.0, step_deg);
+        for (k, s) in run.samples.iter().enumerate() {
+            samples.push(camkin::table::system_sample_cells(
+                grid.at(k),
+                s,
+                &self.built.dynamics.hertz,
+            ));
+        }
+        let mut events = Columns::new(camkin::table::system_event_columns(unit), run.events.len());
+        for e in &run.events {
+            let angle = plan.angle_of(e.time);
+            events.push(camkin::table::system_event_cells(sys, e, angle));
+        }
+        Ok((samples.into_dict(py, false)?, events.into_dict(py, false)?))
+    }
+}
+
+impl PySystem {
+    /// The simulation `simulate` and `lubrication` share: `revolutions` of the first driver in
+    /// `step_deg` output steps (the library's plan), with the plan.
+    pub(crate) fn run_revolutions(
+        &self,
+        py: Python<'_>,
+        revolutions: f64,
+        step_deg: f64,
+        substeps: Option<usize>,
+        large: bool,
+    ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
+        use camkin::spec::{PlanError, PlanField};
+        let sys = &self.built.system;
+        let h_ = camkin::human::human;
+        let dyn_err = |e: camkin::dynamics::DynamicsError| errors::input("", None, e.to_string());
+        let (plan, mut sim) = self
+            .built
+            .plan(revolutions, step_deg, substeps)
+            .map_err(|e| match e {
+                PlanError::OutOfRange {
+                    field,
+                    value,
+                    range,
+                } => {
+                    let key = match field {
+                        PlanField::Revolutions => "revolutions",
+                        PlanField::Step => "step_deg",
+                        _ => "substeps",
+                    };
+                    errors::input(key, Some(value.clone()), format!("{key} = {value}: must be {range}"))
+                }
+                PlanError::NotAnAngle => errors::input("driver", None, e.to_string()),
+                PlanError::TooStiff {
+                    element,
+                    rate,
+                    substeps,
+                    need,
+                    ..
+                } => errors::input(
+                    "substeps",
+                    Some(substeps.to_string()),
+                    format!(
+                        "substeps = {substeps}: {element} is too stiff for {substeps} substeps of a {}° step (its rate {} /s): use substeps={need} or more (at most 1000)",
+                        h_(step_deg),
+                        h_(rate)
+                    ),
+                ),
+                PlanError::Dynamics(e) => dyn_err(e),
+                e => errors::input("", None, e.to_string()),
+            })?;
+        errors::refuse_large(
+            &camkin::work::Work::system_simulation(sys, plan.steps(), plan.outputs + 1),
+            large,
+            ", or simulate fewer revolutions",
+        )?;
+        let run = py.detach(|| {
+            sim.run(plan.outputs, plan.substeps, plan.h(), |k| {
+                if k % 1024 == 0 && errors::interrupted().is_err() {
+                    return std::ops::ControlFlow::Break(());
+                }
+                std::ops::ControlFlow::Continue(())
+            })
+        });
+        let run = match run {
+            Ok(r) => r,
+            Err(camkin::dynamics::DynamicsError::Stopped { .. }) => {
+                errors::interrupted()?;
+                return Err(errors::contact("stopped".into()));
+            }
+            Err(e) => return Err(dyn_err(e)),
+        };
+        Ok((run, plan))
     }
 }

@@ -3,7 +3,7 @@
 
 use crate::columns::angles_from;
 use crate::errors;
-use crate::mech::{revolution_steps, PyMechanism};
+use crate::model::{revolution_steps, PyMechanism};
 use crate::nodes::{check_spline_kind, with_points};
 use camkin::cam::Mechanism;
 use camkin::geometry::deg_to_rad;
@@ -240,7 +240,7 @@ pub fn spline_variants<'py>(
                 base_dir: dir.clone(),
                 si: false,
                 confine: false,
-                limits: crate::mech::limits(large),
+                limits: crate::model::limits(large),
             };
             match s.build(&opts) {
                 Ok(b) => (summarize_one(&b.mechanism, &u, &angles), None),

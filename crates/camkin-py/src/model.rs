@@ -1,18 +1,19 @@
-//! `camkin.Mechanism`: a cam-follower mechanism from the mechanism-file schema (TOML text or file,
-//! or a dict), analysed, checked, compared and simulated by the library. Immutable; pickles as
-//! its spec.
+//! The two model classes and how they are read: `camkin.Mechanism`, a cam-follower mechanism from
+//! the mechanism-file schema (TOML text or file, or a dict; immutable, pickles as its spec), and
+//! `camkin.System`, a planar multibody system from a system file (or a mechanism file as its
+//! system). What each computes lives in the file of its query (`analyze.rs`, `contacts.rs`,
+//! `forces.rs`, `sim.rs`, …), both classes' beside each other.
 
-use crate::columns::{angles_from, Columns};
 use crate::errors;
 use camkin::cam::Mechanism;
-use camkin::spec::{BuildOptions, Built, MechanismSpec};
-use camkin::table::{AnalysisSweep, AngleUnit, Per, Units};
+use camkin::spec::{BuildOptions, Built, BuiltSystem, MechanismSpec};
+use camkin::table::{AngleUnit, Per, Units};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::path::{Path, PathBuf};
 
 /// Rows of an analysis computed per chunk (the GIL is released for the whole computation).
-const CHUNK: usize = 65_536;
+pub(crate) const CHUNK: usize = 65_536;
 /// Most angles in one call without `large=True`: the library's memory limit at about 200
 /// bytes each in the result ([`camkin::work::BYTES_LIMIT`]).
 pub const MAX_ANGLES: usize = (camkin::work::BYTES_LIMIT / 200.0) as usize;
@@ -34,7 +35,7 @@ pub struct PyMechanism {
     pub name: String,
     /// the follower's travel and the profile's unfollowable stretches, found at the first sweep
     /// (a search that costs about a thousand warm steps) and kept
-    parts: std::sync::OnceLock<SweepParts>,
+    pub(crate) parts: std::sync::OnceLock<SweepParts>,
     /// where each of `built.warnings` is in the mechanism's text, when it was read from text
     places: Vec<Option<(usize, usize)>>,
 }
@@ -129,7 +130,7 @@ impl PyMechanism {
         &self.built.mechanism
     }
 
-    fn units(&self, per: &str, angle_unit: &str) -> PyResult<Units> {
+    pub(crate) fn units(&self, per: &str, angle_unit: &str) -> PyResult<Units> {
         let per: Per = per.parse().map_err(|e: camkin::table::UnknownUnit| {
             errors::input("per", Some(per.into()), e.to_string())
         })?;
@@ -410,91 +411,6 @@ impl PyMechanism {
         self.spec.dynamics.is_some()
     }
 
-    /// analyze(angles_deg, *, per="s", angle_unit="deg", contiguous=None, strict=False,
-    /// large=False) -> dict
-    ///
-    /// The follower's motion and the contact at each cam angle (degrees; a number or a 1-D
-    /// array), by the exact contact method, warm-started from angle to angle, with the GIL
-    /// released. Returns a dict of NumPy arrays keyed by the columns of ``camkin analyze``, each
-    /// name carrying its unit (``position_mm``, ``acceleration_mm_s2``, ``pressure_angle_deg``,
-    /// …); for a number, a dict of numbers. A row that could not be computed has NaN in every
-    /// number column and its reason in ``error`` (``None`` elsewhere); ``strict=True`` raises
-    /// ``camkin.ContactError`` instead. ``per="deg"`` gives derivatives per degree of cam angle;
-    /// ``angle_unit`` is an arm's. ``contiguous`` (default: the angles increase) says the angles
-    /// trace the motion, so that a contact jump between rows is marked ``jump`` in ``found``.
-    ///
-    /// Example::
-    ///
-    ///     r = camkin.paper_cam().analyze(np.arange(0.0, 360.0, 0.5))
-    ///     r["acceleration_cm_s2"].max()             # cm/s²
-    ///     r.to_pandas().head()
-    #[pyo3(signature = (angles_deg, *, per = "s", angle_unit = "deg", contiguous = None, strict = false, large = false))]
-    #[allow(clippy::too_many_arguments)]
-    fn analyze<'py>(
-        &self,
-        py: Python<'py>,
-        angles_deg: &Bound<'py, PyAny>,
-        per: &str,
-        angle_unit: &str,
-        contiguous: Option<bool>,
-        strict: bool,
-        large: bool,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let units = self.units(per, angle_unit)?;
-        let (angles, scalar) = angles_from(py, angles_deg, "angles_deg")?;
-        self.check_work(angles.len(), large)?;
-        let contiguous = contiguous.unwrap_or_else(|| angles.windows(2).all(|w| w[1] > w[0]));
-        let mech = self.mech();
-        let parts = &self.parts;
-        let (cols, jumps, jump_at, first_error) = py.detach(|| -> PyResult<_> {
-            let (travel, stretches) = parts
-                .get_or_init(|| (mech.travel(), mech.unfollowable_stretches()))
-                .clone();
-            let names = camkin::table::analysis_columns(&units);
-            let mut cols = Columns::new(names, angles.len());
-            let mut rows =
-                AnalysisSweep::with_parts(mech, &angles, contiguous, CHUNK, travel, stretches);
-            let mut first_error = None;
-            for chunk in rows.by_ref() {
-                errors::interrupted()?;
-                for r in &chunk {
-                    if first_error.is_none() {
-                        if let Some(e) = &r.error {
-                            first_error = Some((r.angle_deg, e.clone()));
-                        }
-                    }
-                    cols.push(camkin::table::analysis_cells(r, &units));
-                }
-            }
-            Ok((cols, rows.jumps(), rows.jump_at().to_vec(), first_error))
-        })?;
-        if strict {
-            raise_first(first_error, "cam")?;
-        }
-        if jumps > 0 {
-            let at: Vec<String> = jump_at
-                .iter()
-                .take(5)
-                .map(|&k| format!("{}°", camkin::human::human(angles[k])))
-                .collect();
-            Self::warn(
-                py,
-                &format!(
-                    "the contact jumps at {jumps} of the angles (at {}{}; rows marked \"jump\" in found): {}",
-                    at.join(", "),
-                    if jumps > at.len() { ", …" } else { "" },
-                    if camkin::gears::GearPair::new(self.mech()).is_ok() {
-                        "the next tooth pair takes over the first contact there (camkin mesh gives the transmission error at the handovers)"
-                    } else {
-                        "the follower's first touch moves to another part of the profile, and its acceleration is impulsive there"
-                    }
-                ),
-                Some("angles_deg"),
-            )?;
-        }
-        cols.into_dict(py, scalar)
-    }
-
     /// travel() -> dict: the follower's rest (nearest the cam) and farthest positions over a
     /// revolution, their cam angles (degrees) and the stroke; positions in the file's length
     /// unit, an arm's in degrees. Keys carry the units.
@@ -724,5 +640,93 @@ pub fn raise_first(first_error: Option<(f64, String)>, what: &str) -> PyResult<(
             camkin::human::human(a)
         ))),
         None => Ok(()),
+    }
+}
+
+/// A planar multibody system: bodies, joints, drivers and contacts, as a system file describes
+/// them (``[[body]]``, ``[[joint]]``, ``[[driver]]``, ``[[contact]]``; see docs/systems.md). Every
+/// contact is the paper's exact row. Build one with ``System.from_toml(path_or_text)``.
+#[pyclass(frozen, module = "camkin", name = "System")]
+#[derive(Debug, Clone)]
+pub struct PySystem {
+    pub(crate) built: BuiltSystem,
+    name: String,
+}
+
+#[pymethods]
+impl PySystem {
+    /// System.from_toml(source, *, large=False) -> System
+    ///
+    /// A system from a system file (a path, ``str`` or ``os.PathLike``) or its TOML text. A
+    /// cam-follower or gear-pair file is its mechanism as a system (bodies ``cam`` and
+    /// ``follower``, one contact), analysed at cam angles: ``camkin analyze --system``. Bad
+    /// input raises ``camkin.InputError`` naming the element, its key and the value, with the
+    /// line and column (``.line``, ``.column``), as the command does.
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.System.from_toml("examples/valve-train.toml")
+    ///     s.bodies, s.contacts
+    #[staticmethod]
+    #[pyo3(signature = (source, *, large = false))]
+    fn from_toml(py: Python<'_>, source: &Bound<'_, PyAny>, large: bool) -> PyResult<Self> {
+        let s = TomlSource::read(py, source, "System.from_toml", "system")?;
+        let options = BuildOptions {
+            base_dir: s.base,
+            si: false,
+            confine: false,
+            limits: crate::model::limits(large),
+        };
+        let built =
+            camkin::spec::text::read_system(&s.text, &s.file, &options).map_err(errors::text)?;
+        for w in &built.warnings {
+            let field = errors::spec_warning_field(w);
+            errors::warn(
+                py,
+                &format!("{}: {w}", s.file),
+                field.as_deref(),
+                None,
+                None,
+            )?;
+        }
+        Ok(Self {
+            built,
+            name: s.name,
+        })
+    }
+
+    /// The bodies' names, in the file's order.
+    #[getter]
+    fn bodies(&self) -> Vec<String> {
+        self.built
+            .system
+            .bodies()
+            .iter()
+            .map(|b| b.name.clone())
+            .collect()
+    }
+
+    /// The contacts' names, in the file's order.
+    #[getter]
+    fn contacts(&self) -> Vec<String> {
+        self.built
+            .system
+            .contacts()
+            .iter()
+            .map(|c| c.name.clone())
+            .collect()
+    }
+
+    fn __repr__(&self) -> String {
+        let s = &self.built.system;
+        format!(
+            "<camkin.System {:?}: {} bodies, {} joints, {} drivers, {} contacts, lengths in {}>",
+            self.name,
+            s.bodies().len(),
+            s.joints().len(),
+            s.drivers().len(),
+            s.contacts().len(),
+            self.built.length_unit.name()
+        )
     }
 }
