@@ -21,8 +21,8 @@
 //! (`s' = −s`: a slide's first touch always comes from `s = +∞`).
 
 use super::{
-    CamError, Contact, Follower, FollowerJoint, FollowerProfile, FollowerState, Instant, Mechanism,
-    Sense,
+    CamContact, CamError, Follower, FollowerJoint, FollowerProfile, FollowerState, Instant,
+    Mechanism, Sense,
 };
 use crate::curve::{Curve, Derivs, Domain};
 use crate::field::{Field, ProfileField};
@@ -206,8 +206,11 @@ impl Mechanism {
 
     /// The second curve's contact at the state `s` when it touches or cuts into the cam (its
     /// play at most the touch tolerance), in this mechanism's coordinates; its
-    /// [`Contact::gap`] is the play as a length.
-    pub(super) fn conjugate_contact(&self, s: &FollowerState) -> Result<Option<Contact>, CamError> {
+    /// [`CamContact::gap`] is the play as a length.
+    pub(super) fn conjugate_contact(
+        &self,
+        s: &FollowerState,
+    ) -> Result<Option<CamContact>, CamError> {
         let Some(c) = self.conjugate.as_ref() else {
             return Ok(None);
         };

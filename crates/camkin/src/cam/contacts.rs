@@ -3,7 +3,7 @@
 //! is above one, a roller bridging a notch, a flat face on two equal lobes) is a contact too,
 //! with its own sliding rates, normal accelerations and acceleration constraint row.
 //!
-//! Each [`Contact`]'s row is eq. 11 in the mechanism's two coordinates, the cam angle `θ` (in
+//! Each [`CamContact`]'s row is eq. 11 in the mechanism's two coordinates, the cam angle `θ` (in
 //! the cam's own direction, as everywhere in [`crate::cam`]) and the follower's `q`:
 //!
 //! ```text
@@ -13,8 +13,8 @@
 //! with `Φ_θA`, `Φ_pB`, `Φ_θB` the entries of [`ContactKinematics::phi_q`](crate::contact::ContactKinematics::phi_q) for the cam's and the
 //! follower's body coordinates. The first contact's row is the one the follower's acceleration
 //! is solved from; another contact's row holds at the same motion only if the two contacts agree
-//! (ideal involutes do; a worn tooth would not): its [`Contact::residual`] says by how much, and
-//! its [`Contact::normal_velocity`] whether the motion opens or closes it.
+//! (ideal involutes do; a worn tooth would not): its [`CamContact::residual`] says by how much, and
+//! its [`CamContact::normal_velocity`] whether the motion opens or closes it.
 
 use super::follower::Kind as _;
 use super::{CamError, FollowerState, Mechanism, Touch};
@@ -27,7 +27,7 @@ use crate::geometry::{Point2, UnitVec2};
 /// mechanism's unit, time in s; `q` in length (slide) or rad (pivot).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Contact {
+pub struct CamContact {
     /// the cam angle `θ`, rad
     pub cam_angle: f64,
     /// the cam-profile parameter at the contact
@@ -71,7 +71,7 @@ pub struct Contact {
 }
 
 /// The body of [`Mechanism::contacts`] (documented there).
-pub(crate) fn contacts(mech: &Mechanism, theta: f64) -> Result<Vec<Contact>, CamError> {
+pub(crate) fn contacts(mech: &Mechanism, theta: f64) -> Result<Vec<CamContact>, CamError> {
     contacts_at(mech, &mech.analyze(theta)?)
 }
 
@@ -91,7 +91,10 @@ pub(crate) fn contacts_seconds_estimate(mech: &Mechanism, angles: usize) -> f64 
 }
 
 /// The body of [`Mechanism::contacts_at`] (documented there).
-pub(crate) fn contacts_at(mech: &Mechanism, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
+pub(crate) fn contacts_at(
+    mech: &Mechanism,
+    s: &FollowerState,
+) -> Result<Vec<CamContact>, CamError> {
     let at = &Instant::new(mech.cam(), s.cam_angle);
     let frame = &at.frame;
     let first = Touch {
@@ -154,7 +157,7 @@ pub(crate) fn contact(
     at: &Instant,
     t: &Touch,
     s: &FollowerState,
-) -> Result<Contact, CamError> {
+) -> Result<CamContact, CamError> {
     let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
     let g = &mech.touch.geometry;
     let ea = frame.derivs_to_world(&mech.touch.cam.profile.eval(t.u));
@@ -163,7 +166,7 @@ pub(crate) fn contact(
     let (u_b, k) = mech.pair_kinematics(theta, cam, &ea, &body_b, *t)?;
     let row_cam = k.phi_q[2] * mech.touch.cam.direction.sign();
     let row_follower = g.joint.coordinate_coefficient(&k.phi_q);
-    Ok(Contact {
+    Ok(CamContact {
         cam_angle: theta,
         cam_param: t.u,
         follower_param: u_b,

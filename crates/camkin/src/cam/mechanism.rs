@@ -5,7 +5,7 @@ use super::follower::{Geometry, Kind as _};
 use super::instant::Instant;
 use super::summary::ProfileSummary;
 use super::{
-    bracket_samples, AnalysisOptions, Cam, CamError, Contact, DesignChecks, Follower,
+    bracket_samples, AnalysisOptions, Cam, CamContact, CamError, DesignChecks, Follower,
     FollowerCurve, FollowerJoint, FollowerState, Found, IndependentCheck, Mechanism, Motion, Sweep,
     Travel,
 };
@@ -469,7 +469,7 @@ impl Mechanism {
     /// Every contact at cam angle `theta` (rad): the first touch of [`Mechanism::analyze`]
     /// first, then each other place where the follower's curve touches the cam at that position
     /// (see [`Mechanism::contacts_at`]).
-    pub fn contacts(&self, theta: f64) -> Result<Vec<Contact>, CamError> {
+    pub fn contacts(&self, theta: f64) -> Result<Vec<CamContact>, CamError> {
         super::contacts::contacts(self, theta)
     }
 
@@ -489,7 +489,7 @@ impl Mechanism {
     /// and refined by Newton, then a conjugate follower's second curve where its play is within
     /// the touch tolerance or negative. Each has its kinematics at the state's velocity and
     /// acceleration.
-    pub fn contacts_at(&self, s: &FollowerState) -> Result<Vec<Contact>, CamError> {
+    pub fn contacts_at(&self, s: &FollowerState) -> Result<Vec<CamContact>, CamError> {
         super::contacts::contacts_at(self, s)
     }
 

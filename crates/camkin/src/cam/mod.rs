@@ -42,7 +42,7 @@ mod travel;
 pub use build_work::build_work;
 pub use checks::{ConjugatePlay, DesignChecks, RoundTrip};
 pub use conjugate::ConjugateSweep;
-pub use contacts::Contact;
+pub use contacts::CamContact;
 pub use error::{CamError, StopReason};
 pub use first_touch::starts::MAX_CANDIDATES;
 pub use follower::{Follower, FollowerCurve, FollowerJoint, FollowerProfile, Sense, LENGTH_RANGE};

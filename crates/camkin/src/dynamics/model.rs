@@ -69,7 +69,7 @@ impl Constraint {
 
 /// An applied force.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ForceElement {
+pub enum Load {
     /// Gravity on every body, m/s².
     Gravity(Vec2),
     /// A spring, damper or torsion spring of a [`crate::system::System`] between two bodies or a
@@ -77,15 +77,16 @@ pub enum ForceElement {
     Element(crate::system::ForceKind),
 }
 
-/// A planar multibody system: bodies, constraints, forces.
+/// The engine's model of a [`crate::system::System`]: its bodies in absolute coordinates, every
+/// joint, driver and contact as a [`Constraint`], and the applied [`Load`]s.
 #[derive(Debug, Clone)]
-pub struct System {
+pub struct Model {
     /// the bodies; body `i` owns coordinates `3i .. 3i + 3`
     pub bodies: Vec<RigidBody>,
     /// the constraints
     pub constraints: Vec<Constraint>,
     /// the applied forces
-    pub forces: Vec<ForceElement>,
+    pub forces: Vec<Load>,
     /// tolerances of the contact pairing search
     pub search: SearchOptions,
 }
@@ -155,7 +156,7 @@ impl std::ops::Deref for Rows {
     }
 }
 
-impl System {
+impl Model {
     /// Number of coordinates.
     pub fn dofs(&self) -> usize {
         3 * self.bodies.len()
@@ -166,13 +167,13 @@ impl System {
         f.fill(0.0);
         for e in &self.forces {
             match *e {
-                ForceElement::Gravity(g) => {
+                Load::Gravity(g) => {
                     for (i, b) in self.bodies.iter().enumerate() {
                         f[3 * i] += b.mass * g.x;
                         f[3 * i + 1] += b.mass * g.y;
                     }
                 }
-                ForceElement::Element(kind) => {
+                Load::Element(kind) => {
                     let state = |id: crate::system::BodyId| body_state(q, qd, id.0);
                     kind.add_forces(state, f);
                 }

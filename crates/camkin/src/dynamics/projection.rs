@@ -5,7 +5,7 @@ use super::dense::{
     cholesky, cholesky_solve, dot, lu_solve, small, unit_padding, Buf, Dim, Fixed, KKT, MAT, SMALL,
     VEC,
 };
-use super::model::System;
+use super::model::Model;
 use crate::contact::{ContactError, Pairing};
 
 /// The active constraints as dense rows (`m × n`, row-major, padded with zero rows to six for
@@ -27,7 +27,7 @@ impl DenseRows {
     }
 }
 
-impl System {
+impl Model {
     /// The constraints with `active[k]` at `(q, q̇)` and time `t` as dense rows, with `Φ` and the
     /// velocity each row's `Φ_q q̇` must have (`−Φ_t`: a driver's speed, else 0); a contact
     /// follows its pairing in `pairings[k]`.

@@ -3,7 +3,7 @@
 use super::dense::{
     cholesky, cholesky_solve, dot, small, unit_padding, Buf, Dim, Fixed, MAT, SMALL, VEC,
 };
-use super::model::System;
+use super::model::Model;
 use super::DynamicsError;
 use crate::contact::Pairing;
 
@@ -60,7 +60,7 @@ pub(crate) struct Solution<'a> {
     pub(crate) phi_dot: &'a mut [f64],
 }
 
-impl System {
+impl Model {
     /// Solves for `q̈` and `λ` at `(t, q, q̇)` with the constraints flagged `active`; `pairings`
     /// holds each contact's pairing (updated in place).
     pub fn evaluate(
@@ -365,13 +365,13 @@ fn al_iterate(
 mod tests {
     //! The augmented Lagrangian on its own: closed-form motions under an applied torque and
     //! gravity.
-    use super::super::model::{Constraint, ForceElement, RigidBody, System};
+    use super::super::model::{Constraint, Load, Model, RigidBody};
     use super::AugmentedLagrangian;
     use crate::system::{BodyId, ForceKind, JointKind};
     use crate::{Point2, Vec2};
 
-    fn pinned(body: RigidBody, at: Point2, ground: Point2, force: ForceElement) -> System {
-        System {
+    fn pinned(body: RigidBody, at: Point2, ground: Point2, force: Load) -> Model {
+        Model {
             bodies: vec![body],
             constraints: vec![Constraint::Joint(JointKind::Revolute {
                 a: BodyId::GROUND,
@@ -396,7 +396,7 @@ mod tests {
             },
             Point2::origin(),
             Point2::new(1.0, 2.0),
-            ForceElement::Element(ForceKind::TorsionSpring {
+            Load::Element(ForceKind::TorsionSpring {
                 a: BodyId::GROUND,
                 b: BodyId(0),
                 stiffness: 0.0,
@@ -431,7 +431,7 @@ mod tests {
             },
             Point2::new(-l, 0.0),
             Point2::origin(),
-            ForceElement::Gravity(Vec2::new(0.0, -g)),
+            Load::Gravity(Vec2::new(0.0, -g)),
         );
         for (th, w) in [(0.3f64, 1.0f64), (-1.0, -2.0), (2.0, 0.5)] {
             let q = [l * th.cos(), l * th.sin(), th];

@@ -5,7 +5,7 @@
 use super::column::Cell;
 use super::column::{cells, fixed, named, names, Col};
 use super::units::Units;
-use crate::cam::{CamError, Contact};
+use crate::cam::{CamContact, CamError};
 
 /// One contact at one cam angle. A row for an angle that could not be analysed has only
 /// `angle_deg` and `error`. Lengths in the mechanism's unit, time in s; the constraint row is
@@ -63,7 +63,7 @@ pub struct ContactRow {
 
 impl ContactRow {
     /// The rows of one angle's contacts (one row with the error when there are none).
-    pub fn of(angle_deg: f64, result: &Result<Vec<Contact>, CamError>) -> Vec<Self> {
+    pub fn of(angle_deg: f64, result: &Result<Vec<CamContact>, CamError>) -> Vec<Self> {
         match result {
             Ok(cs) => cs
                 .iter()

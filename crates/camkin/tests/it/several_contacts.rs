@@ -4,7 +4,7 @@
 //! ideal involutes, mirror symmetry).
 
 use crate::common::base_pitches_inside;
-use camkin::cam::{Cam, Contact, Follower, FollowerProfile, Mechanism, Sense};
+use camkin::cam::{Cam, CamContact, Follower, FollowerProfile, Mechanism, Sense};
 use camkin::curve::{Circle, ClosedSpline, Curve, InvoluteGear, InvoluteGearSpec, Line};
 use camkin::{Point2, Vec2};
 use std::f64::consts::{PI, TAU};
@@ -142,7 +142,7 @@ fn mesh_cycles(teeth1: u32, teeth2: u32, backlash: f64) {
         assert_eq!(on_line[1].is_empty(), backlash > 0.0, "{what}");
         for (i, line) in on_line.iter().enumerate() {
             let Some(first) = line.first() else { continue };
-            let x = |c: &Contact| (c.point - pitch).dot(&lines[i].1);
+            let x = |c: &CamContact| (c.point - pitch).dot(&lines[i].1);
             for c in line {
                 let j = (x(c) - x(first)) / pb;
                 assert!((j - j.round()).abs() <= 1e-10, "{what}: {j} base pitches");
@@ -270,7 +270,7 @@ fn roller_or_face_on_a_notch_touches_both_shoulders() {
 }
 
 fn on_both_shoulders(named: &Mechanism, general: &Mechanism, d: Vec2) {
-    let mut found: Vec<Vec<Contact>> = Vec::new();
+    let mut found: Vec<Vec<CamContact>> = Vec::new();
     for m in [named, general] {
         let s = m.analyze(0.0).unwrap();
         let cs = m.contacts_at(&s).unwrap();

@@ -10,7 +10,7 @@
 //!   f_y ρ_x)`, the moment about the centre (the same map transposed); gravity acts at the
 //!   centre and is taken about it as it is.
 
-use super::super::model::{body_state, ForceElement, Row};
+use super::super::model::{body_state, Load, Row};
 use super::super::projection::DenseRows;
 use super::SystemSimulation;
 use crate::body::BodyState;
@@ -128,7 +128,7 @@ impl SystemSimulation<'_> {
             .forces
             .iter()
             .find_map(|e| match e {
-                ForceElement::Gravity(g) => Some(*g),
+                Load::Gravity(g) => Some(*g),
                 _ => None,
             })
             .unwrap_or_else(Vec2::zeros);

@@ -29,7 +29,7 @@ mod sparse;
 mod step;
 
 use super::follower::EventKind;
-use super::model::{Constraint, ForceElement, RigidBody, System};
+use super::model::{Constraint, Load, Model, RigidBody};
 use super::{AugmentedLagrangian, DynamicsError};
 use crate::contact::{self, Pairing, Proximity, SearchOptions, Surface};
 use crate::geometry::Vec2;
@@ -163,7 +163,7 @@ pub struct SystemSimulation<'a> {
     /// the longest step, where the system's preset sets it from its own rule (a cam
     /// follower's damped rate, [`super::FollowerDynamics::max_step`]) instead of the elements'
     step_limit: Option<f64>,
-    model: System,
+    model: Model,
     opts: SystemDynamicsOptions,
     /// the model's constraint index of contact 0 (joints, then drivers, then contacts)
     first_contact: usize,
@@ -315,16 +315,12 @@ impl<'a> SystemSimulation<'a> {
             curve_b: c.curve_b.clone(),
         }));
         let gravity = opts.gravity / u;
-        let mut forces: Vec<ForceElement> = sys
-            .forces()
-            .iter()
-            .map(|f| ForceElement::Element(f.kind))
-            .collect();
+        let mut forces: Vec<Load> = sys.forces().iter().map(|f| Load::Element(f.kind)).collect();
         if gravity != Vec2::zeros() {
-            forces.push(ForceElement::Gravity(gravity));
+            forces.push(Load::Gravity(gravity));
         }
         let size = sys.size();
-        let model = System {
+        let model = Model {
             bodies,
             constraints,
             forces,
@@ -524,10 +520,10 @@ impl<'a> SystemSimulation<'a> {
         }
         for f in &self.model.forces {
             match f {
-                ForceElement::Element(kind) => {
+                Load::Element(kind) => {
                     e += kind.potential(|id| self.state(id.0));
                 }
-                ForceElement::Gravity(g) => {
+                Load::Gravity(g) => {
                     for (i, b) in self.model.bodies.iter().enumerate() {
                         e -= b.mass * (g.x * self.q[3 * i] + g.y * self.q[3 * i + 1]);
                     }
