@@ -114,8 +114,8 @@ impl Mechanism {
                 reason: "a point (a knife edge) cannot be a follower's second curve: give a circle of small radius".into(),
             });
         }
-        let pivot = self.touch.cam.pivot;
-        let (follower, flip) = match self.touch.geometry.joint {
+        let pivot = self.touch.cam().pivot;
+        let (follower, flip) = match self.touch.geometry().joint {
             FollowerJoint::Translating { origin, direction } => (
                 Follower::Translating {
                     direction: -*direction,
@@ -143,11 +143,12 @@ impl Mechanism {
                 false,
             ),
         };
-        let mech =
-            Mechanism::new(self.touch.cam.clone(), follower).map_err(|e| CamError::Conjugate {
+        let mech = Mechanism::new(self.touch.cam().clone(), follower).map_err(|e| {
+            CamError::Conjugate {
                 field: table,
                 reason: e.to_string(),
-            })?;
+            }
+        })?;
         mech.analyze(0.0).map_err(|e| CamError::Conjugate {
             field: table,
             reason: format!(

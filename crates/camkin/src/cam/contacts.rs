@@ -109,11 +109,11 @@ pub(crate) fn contacts_at(
         None => named_touching(mech, at, &first, &mut touches),
     }
     // one contact per place
-    let close = 1e-6 * mech.touch.size;
+    let close = 1e-6 * mech.touch.size();
     let mut places: Vec<Point2> = Vec::new();
     let mut out = Vec::with_capacity(touches.len());
     for t in &touches {
-        let x = frame.curve_position(mech.touch.cam.profile.as_ref(), t.u);
+        let x = frame.curve_position(mech.touch.cam().profile.as_ref(), t.u);
         if places.iter().any(|y| (x - y).norm() <= close) {
             continue;
         }
@@ -133,12 +133,12 @@ pub(crate) fn contacts_at(
 fn named_touching(mech: &Mechanism, at: &Instant, t: &Touch, out: &mut Vec<Touch>) {
     let frame = &at.frame;
     let mut starts = super::first_touch::starts::Candidates::new(super::MAX_CANDIDATES);
-    if mech.touch.geometry.model.centre_path().is_some() {
+    if mech.touch.geometry().model.centre_path().is_some() {
         mech.touch
-            .path_starts(frame, &mech.touch.index.dense, &mut starts);
+            .path_starts(frame, &mech.touch.index().dense, &mut starts);
     } else {
         mech.touch
-            .score_starts(frame, &mech.touch.index.dense, &mut starts);
+            .score_starts(frame, &mech.touch.index().dense, &mut starts);
     }
     let slack = mech.touch.touch_slack();
     for &(_, u0, q0) in starts.as_slice() {
@@ -159,12 +159,12 @@ pub(crate) fn contact(
     s: &FollowerState,
 ) -> Result<CamContact, CamError> {
     let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
-    let g = &mech.touch.geometry;
-    let ea = frame.derivs_to_world(&mech.touch.cam.profile.eval(t.u));
+    let g = &mech.touch.geometry();
+    let ea = frame.derivs_to_world(&mech.touch.cam().profile.eval(t.u));
     let (c, nu) = (ea.p, mech.contact_normal(&ea, t));
     let body_b = g.joint.body(s.position, s.velocity, s.acceleration);
     let (u_b, k) = mech.pair_kinematics(theta, cam, &ea, &body_b, *t)?;
-    let row_cam = k.phi_q[2] * mech.touch.cam.direction.sign();
+    let row_cam = k.phi_q[2] * mech.touch.cam().direction.sign();
     let row_follower = g.joint.coordinate_coefficient(&k.phi_q);
     Ok(CamContact {
         cam_angle: theta,
@@ -172,7 +172,7 @@ pub(crate) fn contact(
         follower_param: u_b,
         point: c,
         normal: UnitVec2::new_unchecked(nu),
-        gap: mech.touch.ahead(s.position, t.q) * g.q_length_scale(mech.touch.size),
+        gap: mech.touch.ahead(s.position, t.q) * g.q_length_scale(mech.touch.size()),
         normal_velocity: k.normal_velocity,
         sliding_rate_cam: k.sliding_rate_a,
         sliding_rate_follower: k.sliding_rate_b,
@@ -181,7 +181,7 @@ pub(crate) fn contact(
         row_cam,
         row_follower,
         gamma: k.gamma,
-        residual: row_cam * mech.touch.cam.angular_acceleration + row_follower * s.acceleration
+        residual: row_cam * mech.touch.cam().angular_acceleration + row_follower * s.acceleration
             - k.gamma,
         conjugate: false,
         corner: t.corner,

@@ -25,7 +25,7 @@ pub(crate) fn angle_derivatives(mech: &Mechanism, theta: f64) -> Result<[f64; 3]
 
 /// The cam's point and tangent at `u + dl` (world) as jets in the cam angle `θ + ε`.
 fn cam_jets(mech: &Mechanism, r: &Derivs, theta: f64, dl: Jet) -> (V2<Jet>, V2<Jet>) {
-    let s = mech.touch.cam.direction.sign();
+    let s = mech.touch.cam().direction.sign();
     let rot0 = Rotation::new(s * theta);
     // R(θ + ε) = R(θ) R(s ε) as jets: cos(sε) = 1 − ε²/2, sin(sε) = s ε − s ε³/6 (s = ±1)
     let (ce, se) = (Jet([1.0, 0.0, -0.5, 0.0]), Jet([0.0, s, 0.0, -s / 6.0]));
@@ -33,7 +33,7 @@ fn cam_jets(mech: &Mechanism, r: &Derivs, theta: f64, dl: Jet) -> (V2<Jet>, V2<J
     let rot = (scale(ce, c0) - scale(se, s0), scale(se, c0) + scale(ce, s0));
     let (x, x1) = curve_jets(r, dl);
     (
-        turned(rot, x) + V2::c(mech.touch.cam.pivot.coords),
+        turned(rot, x) + V2::c(mech.touch.cam().pivot.coords),
         turned(rot, x1),
     )
 }
@@ -45,11 +45,11 @@ pub(crate) fn jet_derivatives(
     cam: &BodyState,
     touch: Touch,
 ) -> Result<[f64; 3], CamError> {
-    let profile = mech.touch.cam.profile.as_ref();
+    let profile = mech.touch.cam().profile.as_ref();
     let r = profile.eval(touch.u);
-    let j = mech.touch.geometry.model.jacobian(
+    let j = mech.touch.geometry().model.jacobian(
         &cam.eval_curve(profile, touch.u),
-        &mech.touch.geometry.model.pose(touch.q),
+        &mech.touch.geometry().model.pose(touch.q),
     );
     if !solve2(&j, [1.0, 1.0]).iter().all(|x| x.is_finite()) {
         return Err(CamError::NoConvergence {
@@ -61,7 +61,7 @@ pub(crate) fn jet_derivatives(
     let mut q = [touch.q, 0.0, 0.0, 0.0];
     for k in 1..=3 {
         let (x, x1) = cam_jets(mech, &r, theta, Jet([0.0, u[1], u[2], u[3]]));
-        let f = mech.touch.geometry.model.residual_value(x, x1, Jet(q));
+        let f = mech.touch.geometry().model.residual_value(x, x1, Jet(q));
         [u[k], q[k]] = solve2(&j, [f[0].0[k], f[1].0[k]]);
     }
     Ok([q[1], 2.0 * q[2], 6.0 * q[3]])
@@ -84,7 +84,10 @@ pub(crate) fn carried_jet_derivatives(
         angle_deg: theta.to_degrees(),
         reason: StopReason::SingularJacobian,
     };
-    let (a, b) = (mech.touch.cam.profile.eval(touch.u), c.curve.eval(touch.v));
+    let (a, b) = (
+        mech.touch.cam().profile.eval(touch.u),
+        c.curve.eval(touch.v),
+    );
     let (.., j) = mech
         .touch
         .carried_system(c, frame, (touch.u, touch.v, touch.q));
@@ -95,7 +98,7 @@ pub(crate) fn carried_jet_derivatives(
         let (y, y1) = curve_jets(&b, Jet([0.0, v[1], v[2], v[3]]));
         // the follower's frame at q: a slide's keeps its angle 0 (the curve was turned to
         // the world's axes when it was carried), an arm's turns by q
-        let (xb, xb1) = match mech.touch.geometry.joint {
+        let (xb, xb1) = match mech.touch.geometry().joint {
             FollowerJoint::Translating { origin, direction } => (
                 V2::c(origin.coords) + V2::c(*direction).scale(Jet(q)) + y,
                 y1,

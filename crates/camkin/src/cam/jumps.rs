@@ -55,7 +55,7 @@ pub fn contact_jumps_with(
 /// The body of [`Mechanism::jump_angles`] (documented there).
 pub(crate) fn jump_angles(mech: &Mechanism, step_deg: f64) -> Vec<f64> {
     // on a convex profile the first touch moves continuously: nothing to scan
-    if mech.touch.convex {
+    if mech.touch.convex() {
         return Vec::new();
     }
     let n = (360.0 / step_deg).ceil().max(1.0) as usize;

@@ -37,9 +37,9 @@ impl Mechanism {
         let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
         // a named kind: the closed-form rates at the contact (no normal, body states or
         // constraint row); declined near a refusal, where the paper's method says why
-        if self.touch.geometry.carried.is_none() && touch.corner.is_none() {
-            let profile = self.touch.cam.profile.as_ref();
-            let fast = dispatch!(&self.touch.geometry.model, k => {
+        if self.touch.geometry().carried.is_none() && touch.corner.is_none() {
+            let profile = self.touch.cam().profile.as_ref();
+            let fast = dispatch!(&self.touch.geometry().model, k => {
                 let at = curve_in(frame, profile, touch.u);
                 self.closed_form_motion(k, theta, cam, &at, (touch, k.pose(touch.q)), found)
             });
@@ -72,8 +72,8 @@ impl Mechanism {
         (touch, pose): (Touch, Pose),
         found: Found,
     ) -> Option<Motion> {
-        let at = CamPoint::new(e, self.touch.cam.pivot, cam.omega, cam.alpha);
-        let [qd, qdd, ud] = k.rates(&at, &pose, &self.touch.prepared.refuse)?;
+        let at = CamPoint::new(e, self.touch.cam().pivot, cam.omega, cam.alpha);
+        let [qd, qdd, ud] = k.rates(&at, &pose, &self.touch.prepared().refuse)?;
         Some(Motion {
             cam_angle: theta,
             position: touch.q,
@@ -91,8 +91,8 @@ impl Mechanism {
     #[inline(always)]
     fn core(&self, at: &Instant, touch: Touch) -> Result<Core, CamError> {
         let (theta, cam, frame) = (at.theta, &at.cam, &at.frame);
-        let g = &self.touch.geometry;
-        let profile = self.touch.cam.profile.as_ref();
+        let g = &self.touch.geometry();
+        let profile = self.touch.cam().profile.as_ref();
         let angle_deg = theta.to_degrees();
         let body_a = profile.eval(touch.u);
         let ea = frame.derivs_to_world(&body_a);
@@ -101,7 +101,7 @@ impl Mechanism {
         let jb = g.joint.velocity_jacobian(c);
         // velocity constraint Φ_q q̇ = 0: ν·v_A^P = q̇ ν·J_B
         let den = nu.dot(&jb);
-        if !(den.abs() > self.touch.options.lock_tolerance * jb.norm()) {
+        if !(den.abs() > self.touch.options().lock_tolerance * jb.norm()) {
             return Err(CamError::Locked {
                 angle_deg,
                 pressure_angle_deg: pressure_angle(jb, nu).to_degrees(),
@@ -139,7 +139,7 @@ impl Mechanism {
         body_b: &BodyState,
         t: Touch,
     ) -> Result<(f64, ContactKinematics), CamError> {
-        let g = &self.touch.geometry;
+        let g = &self.touch.geometry();
         let c = ea.p;
         let nu = self.contact_normal(ea, &t);
         let (u_b, mut eb) = g.curve.world_at(&body_b.frame(), c, t.v);
@@ -152,18 +152,18 @@ impl Mechanism {
             gap: nu.dot(&(c - eb.p)),
             iterations: 0,
         };
-        let tol = self.touch.options.conformal_tolerance;
+        let tol = self.touch.options().conformal_tolerance;
         let k = match (t.corner, self.touch.carried()) {
             // the cam's corner is a point of the cam resting on the follower's curve
             (Some(Corner::Cam), Some(carried)) => {
-                let corner = PointCurve::new(self.touch.cam.profile.position(t.u))?;
+                let corner = PointCurve::new(self.touch.cam().profile.position(t.u))?;
                 let a = Surface::new(&corner, cam);
                 let b = Surface::new(carried.curve.as_ref(), body_b);
                 ContactKinematics::new(&a, &b, &pairing, tol)
             }
             // a named follower resting on a corner of the cam: the corner is a point of the cam
             (Some(Corner::Cam), None) => {
-                let corner = PointCurve::new(self.touch.cam.profile.position(t.u))?;
+                let corner = PointCurve::new(self.touch.cam().profile.position(t.u))?;
                 let curve = g.curve.clone().to_arc();
                 let a = Surface::new(&corner, cam);
                 let b = Surface::new(curve.as_ref(), body_b);
@@ -199,8 +199,8 @@ impl Mechanism {
     #[inline(always)]
     pub(crate) fn contact_normal(&self, ea: &WorldDerivs, t: &Touch) -> Vec2 {
         if t.corner == Some(Corner::Cam) {
-            let fb = self.touch.geometry.joint.pose(t.q).frame();
-            let (_, eb) = self.touch.geometry.curve.world_at(&fb, ea.p, t.v);
+            let fb = self.touch.geometry().joint.pose(t.q).frame();
+            let (_, eb) = self.touch.geometry().curve.world_at(&fb, ea.p, t.v);
             -eb.as_derivs().normal()
         } else {
             ea.as_derivs().normal()
@@ -224,7 +224,7 @@ impl Mechanism {
             u_b,
             k,
         } = self.core(at, touch)?;
-        let g = &self.touch.geometry;
+        let g = &self.touch.geometry();
         let c = ea.p;
         let body_b = g.joint.body(touch.q, qd, qdd);
         // a roller's centre (a circle on the follower turns on its pin: the force passes through
@@ -233,12 +233,12 @@ impl Mechanism {
             Some(r) => g.joint.velocity_jacobian(body_b.pose.to_world(r.center())),
             None => jb,
         };
-        let kappa_conv = self.touch.orientation * k.kappa_a;
+        let kappa_conv = self.touch.orientation() * k.kappa_a;
         let at_breakpoint = self.at_breakpoint(touch.u);
         // none where a curve's third derivative jumps (a spline node, a piece joint of the
         // carried curve) or the contact sits on a corner
         let dq = match self.touch.carried() {
-            _ if at_breakpoint || !self.touch.options.jerk || touch.corner.is_some() => None,
+            _ if at_breakpoint || !self.touch.options().jerk || touch.corner.is_some() => None,
             Some(c) if self.carried_at_breakpoint(c, touch.v) => None,
             Some(c) => Some(super::derivatives::carried_jet_derivatives(
                 self, c, at, touch,
@@ -248,7 +248,10 @@ impl Mechanism {
             )?),
         };
         let jerk = dq.map(|dq| {
-            let (w, al) = (self.touch.cam.speed, self.touch.cam.angular_acceleration);
+            let (w, al) = (
+                self.touch.cam().speed,
+                self.touch.cam().angular_acceleration,
+            );
             w * w * w * dq[2] + 3.0 * w * al * dq[1]
         });
         Ok(FollowerState {
@@ -281,7 +284,7 @@ impl Mechanism {
     /// breakpoint tolerance of its parameter span).
     fn carried_at_breakpoint(&self, c: &Carried, v: f64) -> bool {
         let span = c.period.unwrap_or(c.bounds.1 - c.bounds.0);
-        let tol = self.touch.options.breakpoint_tolerance * span;
+        let tol = self.touch.options().breakpoint_tolerance * span;
         let bp = &c.breakpoints;
         let i = bp.partition_point(|&b| b <= v);
         let near = |k: usize| bp.get(k).is_some_and(|&b| (b - v).abs() <= tol);
@@ -295,21 +298,21 @@ impl Mechanism {
 
     /// True when `u` is within the breakpoint tolerance of a node of the profile.
     fn at_breakpoint(&self, u: f64) -> bool {
-        let bp = &self.touch.breakpoints;
+        let bp = &self.touch.breakpoints();
         if bp.is_empty() {
             return false;
         }
-        let tol = self.touch.options.breakpoint_tolerance * self.touch.period;
+        let tol = self.touch.options().breakpoint_tolerance * self.touch.period();
         let i = bp.partition_point(|&b| b <= u);
         let below = if i == 0 {
-            bp[bp.len() - 1] - self.touch.period
+            bp[bp.len() - 1] - self.touch.period()
         } else {
             bp[i - 1]
         };
         let above = if i < bp.len() {
             bp[i]
         } else {
-            bp[0] + self.touch.period
+            bp[0] + self.touch.period()
         };
         u - below < tol || above - u < tol
     }

@@ -53,31 +53,21 @@ impl Mechanism {
             .min(min_radius)
             .min(geometry.model.roller_radius().unwrap_or(f64::INFINITY));
         options.newton_contraction = 1e3 / sharpest;
-        let roller = geometry.model.roller_radius().is_some();
         let corners = std::sync::Arc::new(super::corners::Corners::of(profile, &samples));
-        let mut m = Self {
-            touch: super::first_touch::FirstTouch {
-                cam,
-                geometry,
-                options,
-                prepared: Default::default(),
-                index: Arc::default(),
-                sample_points: Vec::new(),
-                sample_chord: 0.0,
-                period,
-                size,
-                orientation,
-                convex,
-                roller,
-                mean_speed,
-                cusps,
-                breakpoints,
-                corners,
-            },
-            conjugate: None,
+        let facts = super::first_touch::ProfileFacts {
+            period,
+            size,
+            orientation,
+            convex,
+            mean_speed,
+            cusps,
+            breakpoints,
+            corners,
         };
-        m.set_options(options);
-        Ok(m)
+        Ok(Self {
+            touch: super::first_touch::FirstTouch::new(cam, geometry, facts, options),
+            conjugate: None,
+        })
     }
 
     /// Replaces the analysis options.
@@ -87,37 +77,37 @@ impl Mechanism {
 
     /// The analysis options in force.
     pub fn options(&self) -> &AnalysisOptions {
-        &self.touch.options
+        &self.touch.options()
     }
 
     /// The cam.
     pub fn cam(&self) -> &Cam {
-        &self.touch.cam
+        &self.touch.cam()
     }
 
     /// The follower.
     pub fn follower(&self) -> &Follower {
-        &self.touch.geometry.follower
+        &self.touch.geometry().follower
     }
 
     /// The joint that carries the follower.
     pub fn follower_joint(&self) -> FollowerJoint {
-        self.touch.geometry.joint
+        self.touch.geometry().joint
     }
 
     /// The follower's contact curve in its own frame (see [`Mechanism::follower_body`]).
     pub fn follower_curve(&self) -> FollowerCurve {
-        self.touch.geometry.curve.clone()
+        self.touch.geometry().curve.clone()
     }
 
     /// The radius of a roller follower.
     pub fn roller_radius(&self) -> Option<f64> {
-        self.touch.geometry.model.roller_radius()
+        self.touch.geometry().model.roller_radius()
     }
 
     /// Largest distance of a profile point from the cam axis (the length scale of tolerances).
     pub fn size(&self) -> f64 {
-        self.touch.size
+        self.touch.size()
     }
 
     /// A rough estimate of the seconds a warm-started sweep over `angles` cam angles takes, for
@@ -140,10 +130,10 @@ impl Mechanism {
             // measured, on this machine, by a few steps at the spacing asked (the first cold)
             let step = std::f64::consts::TAU / angles.clamp(8, 1 << 20) as f64;
             2e-4f64.max(self.measured_step_seconds(step))
-        } else if self.touch.convex {
+        } else if self.touch.convex() {
             1e-6
         } else {
-            2e-6 + 2e-6 * (self.touch.index.dense.params.len().max(2) as f64).log2()
+            2e-6 + 2e-6 * (self.touch.index().dense.params.len().max(2) as f64).log2()
         }
     }
 
@@ -163,7 +153,7 @@ impl Mechanism {
     pub fn search_cost_reason(&self) -> Option<String> {
         if self.touch.carried().is_some() {
             Some("the follower carries a curve: every angle checks the cam's samples within its reach".into())
-        } else if self.touch.convex {
+        } else if self.touch.convex() {
             None
         } else {
             Some(format!(
@@ -204,7 +194,7 @@ impl Mechanism {
 
     /// The number of dense samples of the profile the global search looks among.
     pub fn sample_count(&self) -> usize {
-        self.touch.index.dense.params.len()
+        self.touch.index().dense.params.len()
     }
 
     /// True when the follower carries a curve whose first touch is found by the coverage search
@@ -216,7 +206,7 @@ impl Mechanism {
 
     /// True when the profile's curvature has one sign all round (sampled densely).
     pub fn is_convex(&self) -> bool {
-        self.touch.convex
+        self.touch.convex()
     }
 
     /// Parameter ranges `(from, to)` of the profile that the follower cannot follow: concave
@@ -227,24 +217,24 @@ impl Mechanism {
     /// and the acceleration is impulsive there. Found on a dense sampling of the profile; empty
     /// for a knife edge and for convex profiles.
     pub fn unfollowable_stretches(&self) -> Vec<(f64, f64)> {
-        let Some(limit) = self.touch.geometry.model.concave_limit() else {
+        let Some(limit) = self.touch.geometry().model.concave_limit() else {
             return Vec::new();
         };
-        let profile = self.touch.cam.profile.as_ref();
-        let u = bracket_samples(&self.touch.breakpoints, self.touch.period, 64, 2048);
+        let profile = self.touch.cam().profile.as_ref();
+        let u = bracket_samples(&self.touch.breakpoints(), self.touch.period(), 64, 2048);
         let mut bad: Vec<bool> = u
             .iter()
-            .map(|&v| self.touch.orientation * profile.curvature(v) < limit)
+            .map(|&v| self.touch.orientation() * profile.curvature(v) < limit)
             .collect();
         // a folded profile (a swallowtail between two cusps, found once by the summary): the
         // branch between the cusps runs backwards and the follower cannot follow it whatever its
         // curvature says; the tangent reverses at each cusp, the shorter alternate branches are
         // the reversed ones
         let n = u.len();
-        if self.touch.cusps.len() >= 2 {
+        if self.touch.cusps().len() >= 2 {
             let mut reversed: Vec<bool> = u
                 .iter()
-                .map(|&v| self.touch.cusps.iter().filter(|&&c| c <= v).count() % 2 == 1)
+                .map(|&v| self.touch.cusps().iter().filter(|&&c| c <= v).count() % 2 == 1)
                 .collect();
             if reversed.iter().filter(|&&r| r).count() * 2 > n {
                 reversed.iter_mut().for_each(|r| *r = !*r);
@@ -255,7 +245,7 @@ impl Mechanism {
         }
         let mut out = Vec::new();
         let Some(start) = (0..n).find(|&k| !bad[k]) else {
-            return vec![(0.0, self.touch.period)];
+            return vec![(0.0, self.touch.period())];
         };
         let mut k = start;
         for _ in 0..n {
@@ -277,8 +267,8 @@ impl Mechanism {
     /// frame (face: a line, roller: a circle, knife: a point; oriented material-on-the-left).
     pub fn follower_body(&self, q: f64) -> (crate::body::Pose, Arc<dyn Curve>) {
         (
-            self.touch.geometry.joint.pose(q),
-            self.touch.geometry.curve.clone().to_arc(),
+            self.touch.geometry().joint.pose(q),
+            self.touch.geometry().curve.clone().to_arc(),
         )
     }
 
@@ -290,12 +280,12 @@ impl Mechanism {
 
     /// The shared profile.
     pub fn profile_arc(&self) -> Arc<dyn Curve> {
-        self.touch.cam.profile.clone()
+        self.touch.cam().profile.clone()
     }
 
     /// +1 when the profile runs counter-clockwise, −1 when clockwise.
     pub fn orientation(&self) -> f64 {
-        self.touch.orientation
+        self.touch.orientation()
     }
 
     /// The follower's motion at cam angle `theta` (rad) with the cam's own speed and

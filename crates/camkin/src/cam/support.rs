@@ -75,10 +75,13 @@ pub(crate) fn independent_check(
     mech: &Mechanism,
     thetas: &[f64],
 ) -> Result<IndependentCheck, CamError> {
-    let (w, al) = (mech.touch.cam.speed, mech.touch.cam.angular_acceleration);
-    let reach = mech.touch.size
+    let (w, al) = (
+        mech.touch.cam().speed,
+        mech.touch.cam().angular_acceleration,
+    );
+    let reach = mech.touch.size()
         + match mech.follower_joint() {
-            FollowerJoint::Rotating { pivot, .. } => (pivot - mech.touch.cam.pivot).norm(),
+            FollowerJoint::Rotating { pivot, .. } => (pivot - mech.touch.cam().pivot).norm(),
             FollowerJoint::Translating { .. } => 0.0,
         };
     let q_length = |dq: f64| match mech.follower_joint() {
@@ -105,7 +108,7 @@ pub(crate) fn independent_check(
             FollowerJoint::Rotating { .. } => wrap_near_zero(s.position - centre.q),
             FollowerJoint::Translating { .. } => s.position - centre.q,
         };
-        out.position = out.position.max(q_length(dq) / mech.touch.size);
+        out.position = out.position.max(q_length(dq) / mech.touch.size());
         let Some((d1, d2)) = differences(mech, theta, centre) else {
             out.skipped += 1;
             continue;
@@ -127,7 +130,7 @@ pub(crate) fn independent_check(
 /// steps have a stencil.
 fn differences(mech: &Mechanism, theta: f64, centre: Support) -> Option<(f64, f64)> {
     let half = (NODES / 2) as i32;
-    let piece = |u: f64| mech.touch.breakpoints.partition_point(|&b| b <= u);
+    let piece = |u: f64| mech.touch.breakpoints().partition_point(|&b| b <= u);
     let home = piece(centre.u);
     // each derivative with the rounding it carries: the positions' own rounding (a few ulps
     // of the largest) through the stencil's weights
@@ -148,7 +151,7 @@ fn differences(mech: &Mechanism, theta: f64, centre: Support) -> Option<(f64, f6
                     _ => break,
                 }
             }
-            if nodes.len() < NODES || !steady(&nodes, mech.touch.period) {
+            if nodes.len() < NODES || !steady(&nodes, mech.touch.period()) {
                 continue;
             }
             let x: Vec<f64> = ks.iter().map(|&k| k as f64 * h).collect();
@@ -188,9 +191,9 @@ fn differences(mech: &Mechanism, theta: f64, centre: Support) -> Option<(f64, f6
 
 /// The support function at `theta`.
 fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
-    let profile = mech.touch.cam.profile.as_ref();
-    let (sn, cs) = (mech.touch.cam.direction.sign() * theta).sin_cos();
-    let pivot = mech.touch.cam.pivot;
+    let profile = mech.touch.cam().profile.as_ref();
+    let (sn, cs) = (mech.touch.cam().direction.sign() * theta).sin_cos();
+    let pivot = mech.touch.cam().pivot;
     let world = |u: f64| {
         let x = profile.position(u);
         pivot + Vec2::new(cs * x.x - sn * x.y, sn * x.x + cs * x.y)
@@ -213,8 +216,8 @@ fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
         q: report.map_or(s.q, |a| a + wrap_near_zero(s.q - a)),
         u: s.u,
     };
-    let period = mech.touch.period;
-    let grid = sample_grid(&mech.touch.breakpoints, period);
+    let period = mech.touch.period();
+    let grid = sample_grid(&mech.touch.breakpoints(), period);
     match mech.follower_curve() {
         curve @ (FollowerCurve::Point(_) | FollowerCurve::Circle(_)) => {
             // the extreme of the crossings of the tip's path with the profile, or of the
@@ -226,7 +229,7 @@ fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
                 FollowerCurve::Point(p) => (p.at().coords, 0.0),
                 _ => unreachable!("matched above"),
             };
-            let shift = -mech.touch.orientation * r;
+            let shift = -mech.touch.orientation() * r;
             let offset = |u: f64| {
                 if r == 0.0 {
                     return world(u);

@@ -102,8 +102,8 @@ impl<'a> Sweep<'a> {
     pub(crate) fn new(mech: &'a Mechanism) -> Self {
         Self {
             mech,
-            spline: mech.touch.cam.profile.as_spline(),
-            conic: CarriedConic::of(mech.touch.cam.profile.as_ref()),
+            spline: mech.touch.cam().profile.as_spline(),
+            conic: CarriedConic::of(mech.touch.cam().profile.as_ref()),
             prev: None,
             last: None,
             turn: None,
@@ -125,15 +125,15 @@ impl<'a> Sweep<'a> {
     pub fn step_motion(&mut self, theta: f64) -> Result<Motion, CamError> {
         // the last step by reference: copying it out costs a dozen instructions a step
         let fast = match self.prev {
-            Some(ref p) if self.mech.touch.convex && (theta - p.theta).abs() <= MAX_WARM_STEP => {
-                let angle = self.mech.touch.cam.direction.sign() * theta;
+            Some(ref p) if self.mech.touch.convex() && (theta - p.theta).abs() <= MAX_WARM_STEP => {
+                let angle = self.mech.touch.cam().direction.sign() * theta;
                 let turn = match self.turn {
                     Some(t) => t.angle_to(angle),
                     None => Pose::angle(angle),
                 };
                 self.turn = Some(turn);
                 let rotation = Rotation::from_cos_sin_unchecked(turn.cos, turn.sin);
-                dispatch!(&self.mech.touch.geometry.model, k => self.warm_motion(k, theta, p, rotation))
+                dispatch!(&self.mech.touch.geometry().model, k => self.warm_motion(k, theta, p, rotation))
             }
             _ => None,
         };
@@ -162,7 +162,7 @@ impl<'a> Sweep<'a> {
         p: &Prev,
         rotation: Rotation,
     ) -> Option<(Motion, Option<Pose>)> {
-        if self.mech.touch.geometry.carried.is_some() {
+        if self.mech.touch.geometry().carried.is_some() {
             return None;
         }
         match (self.spline, &self.conic) {
@@ -170,7 +170,7 @@ impl<'a> Sweep<'a> {
             (Some(s), _) => self.warm_motion_on(k, s, theta, p, rotation, false),
             (None, Some(c)) => self.warm_motion_on(k, c, theta, p, rotation, false),
             (None, None) => {
-                let profile = self.mech.touch.cam.profile.as_ref();
+                let profile = self.mech.touch.cam().profile.as_ref();
                 self.warm_motion_on(k, profile, theta, p, rotation, true)
             }
         }
@@ -191,7 +191,7 @@ impl<'a> Sweep<'a> {
         extrapolate: bool,
     ) -> Option<(Motion, Option<Pose>)> {
         let m = self.mech;
-        let cam = m.touch.cam.state(theta);
+        let cam = m.touch.cam().state(theta);
         // the frame from the rotation carried from the last step (no sin_cos)
         let at = &Instant {
             theta,
@@ -212,8 +212,8 @@ impl<'a> Sweep<'a> {
                     Some(last) if K::ANGULAR => last,
                     _ => k.pose(q0),
                 };
-                let (centre, _) = pitch_point((e.p, e.d1, e.d2), r, m.touch.orientation);
-                let pose = path.pose(m.touch.cam.pivot, centre, near);
+                let (centre, _) = pitch_point((e.p, e.d1, e.d2), r, m.touch.orientation());
+                let pose = path.pose(m.touch.cam().pivot, centre, near);
                 if !m.touch.convex_warm_touch_with(k, &e, &pose) {
                     return None;
                 }
@@ -249,7 +249,7 @@ impl<'a> Sweep<'a> {
     /// step when it was a continuation).
     #[inline(always)]
     fn note(&mut self, theta: f64, t: Touch, found: Found) {
-        if self.mech.touch.geometry.carried.is_none() {
+        if self.mech.touch.geometry().carried.is_none() {
             return;
         }
         let rate = match (self.prev, self.last) {
@@ -284,7 +284,7 @@ impl<'a> Sweep<'a> {
     ) {
         let m = self.mech;
         self.prev = r.map(|(u, u_rate, q, v, a, found)| {
-            let inv_rate = 1.0 / m.touch.cam.speed;
+            let inv_rate = 1.0 / m.touch.cam().speed;
             let du = u_rate * inv_rate;
             // the second derivative of u from the last two rates, when they are close
             let d2u = match self.prev {
@@ -299,7 +299,7 @@ impl<'a> Sweep<'a> {
                 q,
                 du_dtheta: du,
                 dq_dtheta: v * inv_rate,
-                d2q_dtheta2: (a - m.touch.cam.angular_acceleration * v * inv_rate)
+                d2q_dtheta2: (a - m.touch.cam().angular_acceleration * v * inv_rate)
                     * inv_rate
                     * inv_rate,
                 d2u_dtheta2: d2u,
@@ -323,12 +323,12 @@ impl<'a> Sweep<'a> {
         // the line of travel grazes the profile) and the tip falls to another crossing: a
         // contact is a continuation only if Newton at the previous angle, started from it, comes
         // back to the previous contact (local rates diverge at the fold, so no step bound works)
-        let knife_fold = !m.touch.convex && m.touch.geometry.is_knife();
+        let knife_fold = !m.touch.convex() && m.touch.geometry().is_knife();
         let continues = |t: &Touch| {
             let back = &Instant::new(m.cam(), p.theta);
             m.touch.newton_at(back, t.u, t.q).is_ok_and(|(b, _)| {
-                let d = (b.u - p.u).rem_euclid(m.touch.period);
-                d.min(m.touch.period - d) <= 1e-6 * m.touch.period
+                let d = (b.u - p.u).rem_euclid(m.touch.period());
+                d.min(m.touch.period() - d) <= 1e-6 * m.touch.period()
             })
         };
         match m.touch.newton_at(at, u0, q0) {
@@ -337,13 +337,13 @@ impl<'a> Sweep<'a> {
             // can leap (its residual bends on the scale of the roller's radius, which may be
             // tiny), so its touch must also be the first touch of its cam point
             Ok((t, e))
-                if (m.touch.convex && dispatch!(&m.touch.geometry.model, k => m.touch.convex_warm_touch_with(k, &e, &k.pose(t.q))))
+                if (m.touch.convex() && dispatch!(&m.touch.geometry().model, k => m.touch.convex_warm_touch_with(k, &e, &k.pose(t.q))))
                     // evaluated at the converged point itself: near a cusp the tangent (and
                     // with it the normal) turns over within the last Newton step
-                    || (!m.touch.convex && m.touch.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
+                    || (!m.touch.convex() && m.touch.is_first_touch(frame, &t) && (!knife_fold || continues(&t))) =>
             {
                 // on a convex profile nothing can overtake the first touch
-                if m.touch.convex {
+                if m.touch.convex() {
                     return Ok((t, Found::WarmStart));
                 }
                 // non-convex: another part of the profile may touch first. A knife's or a
@@ -351,7 +351,7 @@ impl<'a> Sweep<'a> {
                 // them the global search (crossings of the path) decides; for the others the
                 // guard bounds the continuous profile and refines the parts that may be ahead
                 let threshold = m.touch.oriented(t.q) + m.touch.touch_slack();
-                let over = if m.touch.geometry.model.centre_path().is_some() {
+                let over = if m.touch.geometry().model.centre_path().is_some() {
                     Overtaken::Sampled
                 } else {
                     m.touch.overtaken(at, threshold, t.u)
@@ -381,7 +381,7 @@ impl<'a> Sweep<'a> {
             // the contact followed so far is gone: on a non-convex profile, a contact found
             // elsewhere is a jump
             _ => m.touch.global_touch(at).map(|g| {
-                if !m.touch.convex && !continues(&g) {
+                if !m.touch.convex() && !continues(&g) {
                     (g, Found::Jump { from_cam_param: u0 })
                 } else {
                     (g, Found::Global)

@@ -6,7 +6,7 @@
 //! and Newton (`search.rs`), the starts (`starts.rs`), a carried curve against a profile
 //! (`carried.rs`, `carried_accept.rs`), corners (`corner_touch.rs`), overtaking (`overtake.rs`).
 
-use super::follower::Geometry;
+use super::follower::{Geometry, Kind as _};
 pub(crate) mod carried;
 mod carried_accept;
 pub(crate) mod corner_touch;
@@ -18,28 +18,17 @@ use super::{corners, AnalysisOptions, Cam};
 use crate::geometry::Point2;
 use std::sync::Arc;
 
-/// The first-touch engine of one cam profile and one follower.
+/// What the mechanism's constructor measured of the profile, handed to [`FirstTouch::new`].
 #[derive(Debug, Clone)]
-pub(crate) struct FirstTouch {
-    /// the cam: its profile (cam frame), axis, sense and speed
-    pub(crate) cam: Cam,
-    pub(crate) geometry: Geometry,
-    pub(crate) options: AnalysisOptions,
-    /// what the options give Newton and the first-touch test, prepared once
-    pub(crate) prepared: search::Prepared,
-    /// the profile's samples and their trees for the first-touch search
-    pub(crate) index: Arc<starts::SearchIndex>,
-    /// the profile's points at the dense samples (cam frame), for the coverage of a carried curve
-    pub(crate) sample_points: Vec<Point2>,
-    /// the longest chord between neighbouring `sample_points` (0 without them)
-    pub(crate) sample_chord: f64,
+pub(crate) struct ProfileFacts {
+    /// the profile's parameter period
     pub(crate) period: f64,
+    /// the cam's size, its greatest reach from its axis
     pub(crate) size: f64,
+    /// `+1` for a counter-clockwise profile, `−1` for a clockwise one
     pub(crate) orientation: f64,
     pub(crate) convex: bool,
-    /// the follower is a roller (translating or oscillating)
-    pub(crate) roller: bool,
-    /// the mean `|r'|` of the profile: below 1e-6 of it a contact is taken to sit on a cusp
+    /// the mean `|r'|` of the profile
     pub(crate) mean_speed: f64,
     /// the cusps of a folded profile (parameters)
     pub(crate) cusps: Vec<f64>,
@@ -48,7 +37,134 @@ pub(crate) struct FirstTouch {
     pub(crate) corners: Arc<corners::Corners>,
 }
 
+/// The first-touch engine of one cam profile and one follower. Its fields are its own: the
+/// mechanism reads them through the accessors below.
+#[derive(Debug, Clone)]
+pub(crate) struct FirstTouch {
+    /// the cam: its profile (cam frame), axis, sense and speed
+    cam: Cam,
+    geometry: Geometry,
+    options: AnalysisOptions,
+    /// what the options give Newton and the first-touch test, prepared once
+    prepared: search::Prepared,
+    /// the profile's samples and their trees for the first-touch search
+    index: Arc<starts::SearchIndex>,
+    /// the profile's points at the dense samples (cam frame), for the coverage of a carried curve
+    sample_points: Vec<Point2>,
+    /// the longest chord between neighbouring `sample_points` (0 without them)
+    sample_chord: f64,
+    period: f64,
+    size: f64,
+    orientation: f64,
+    convex: bool,
+    /// the follower is a roller (translating or oscillating)
+    roller: bool,
+    /// the mean `|r'|` of the profile: below 1e-6 of it a contact is taken to sit on a cusp
+    mean_speed: f64,
+    /// the cusps of a folded profile (parameters)
+    cusps: Vec<f64>,
+    breakpoints: Vec<f64>,
+    /// the profile's corners and the samples to measure a depth inside the cam from
+    corners: Arc<corners::Corners>,
+}
+
 impl FirstTouch {
+    /// The engine of `cam` and the follower `geometry` with the profile's `facts`, its samples,
+    /// trees and Newton's constants prepared for `options`.
+    pub(crate) fn new(
+        cam: Cam,
+        geometry: Geometry,
+        facts: ProfileFacts,
+        options: AnalysisOptions,
+    ) -> Self {
+        let roller = geometry.model.roller_radius().is_some();
+        let ProfileFacts {
+            period,
+            size,
+            orientation,
+            convex,
+            mean_speed,
+            cusps,
+            breakpoints,
+            corners,
+        } = facts;
+        let mut touch = Self {
+            cam,
+            geometry,
+            options,
+            prepared: Default::default(),
+            index: Arc::default(),
+            sample_points: Vec::new(),
+            sample_chord: 0.0,
+            period,
+            size,
+            orientation,
+            convex,
+            roller,
+            mean_speed,
+            cusps,
+            breakpoints,
+            corners,
+        };
+        touch.set_options(options);
+        touch
+    }
+
+    /// The cam: its profile (cam frame), axis, sense and speed.
+    pub(crate) fn cam(&self) -> &Cam {
+        &self.cam
+    }
+
+    /// The follower: its model, joint and curve.
+    pub(crate) fn geometry(&self) -> &Geometry {
+        &self.geometry
+    }
+
+    /// The analysis options in force.
+    pub(crate) fn options(&self) -> &AnalysisOptions {
+        &self.options
+    }
+
+    /// What the options give Newton and the first-touch test.
+    pub(crate) fn prepared(&self) -> &search::Prepared {
+        &self.prepared
+    }
+
+    /// The profile's samples and their trees.
+    pub(crate) fn index(&self) -> &starts::SearchIndex {
+        &self.index
+    }
+
+    /// The profile's parameter period.
+    pub(crate) fn period(&self) -> f64 {
+        self.period
+    }
+
+    /// The cam's size, its greatest reach from its axis.
+    pub(crate) fn size(&self) -> f64 {
+        self.size
+    }
+
+    /// `+1` for a counter-clockwise profile, `−1` for a clockwise one.
+    pub(crate) fn orientation(&self) -> f64 {
+        self.orientation
+    }
+
+    /// The profile is convex.
+    pub(crate) fn convex(&self) -> bool {
+        self.convex
+    }
+
+    /// The cusps of a folded profile (parameters).
+    pub(crate) fn cusps(&self) -> &[f64] {
+        &self.cusps
+    }
+
+    /// The profile's breakpoints (parameters).
+    pub(crate) fn breakpoints(&self) -> &[f64] {
+        &self.breakpoints
+    }
+
     /// How much earlier, in units of `q`, the follower touches at `q` than at `other`.
     pub(crate) fn ahead(&self, q: f64, other: f64) -> f64 {
         self.geometry
