@@ -6,8 +6,7 @@ use crate::curve::{Curve, Derivs};
 use crate::geometry::{rot90, Frame, Point2, Rotation, Vec2};
 
 /// Where a body is: origin `p` (length) and angle `θ` (rad, counter-clockwise).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Pose {
     /// the body frame's origin in the world
     pub origin: Point2,
@@ -42,8 +41,7 @@ impl Pose {
 }
 
 /// The state of a planar rigid body at one instant.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct BodyState {
     /// pose
     pub pose: Pose,

@@ -87,8 +87,7 @@ pub struct GearPair {
 
 /// A gear pair's state at one driver angle. Angles in rad, lengths in the mechanism's unit,
 /// time in s.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct MeshState {
     /// the driver's (cam) angle `θ`, rad
     pub driver_angle: f64,

@@ -45,8 +45,7 @@ impl Default for Limits {
 }
 
 /// An estimate of the work an entry point is about to do.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Work {
     /// what is counted, as a person reads it (`720 cam angles on this profile`)
     pub what: String,

@@ -11,8 +11,7 @@ use super::{CamError, FollowerCurve, FollowerState, Mechanism, StopReason};
 
 /// The round trip of a synthesised profile: the follower's motion by the contact method against
 /// the motion law it was synthesised from, largest differences over the checked angles.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct RoundTrip {
     /// largest |Δ position|, length (rad for an arm)
     pub position: f64,
@@ -32,8 +31,7 @@ pub struct RoundTrip {
 }
 
 /// The design checks of a mechanism at a list of cam angles ([`Mechanism::design_checks`]).
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DesignChecks {
     /// the pressure-angle limit checked against, degrees
     pub pressure_limit_deg: f64,
@@ -74,8 +72,7 @@ pub struct DesignChecks {
 
 /// A conjugate follower's play over the checked angles ([`Mechanism::conjugate_play`]): in
 /// units of the follower's position (length, or rad for an arm), angles in degrees.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct ConjugatePlay {
     /// the smallest play (negative: interference) and its cam angle
     pub min: (f64, f64),

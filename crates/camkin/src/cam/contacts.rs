@@ -25,8 +25,7 @@ use crate::geometry::{Point2, UnitVec2};
 
 /// One contact between the cam and the follower at an instant. World frame; lengths in the
 /// mechanism's unit, time in s; `q` in length (slide) or rad (pivot).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct CamContact {
     /// the cam angle `θ`, rad
     pub cam_angle: f64,

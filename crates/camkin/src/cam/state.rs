@@ -9,8 +9,7 @@ use crate::geometry::{cross, Point2, UnitVec2, Vec2};
 /// Position, velocity, acceleration and jerk are of the follower's coordinate: translating
 /// followers in length, length/s, length/s², length/s³ (measured from the cam axis along `d`);
 /// oscillating followers in rad, rad/s, rad/s², rad/s³ (absolute arm angle).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct FollowerState {
     /// cam angle `θ`, rad
     pub cam_angle: f64,
@@ -75,9 +74,8 @@ pub struct FollowerState {
 }
 
 /// Which curve has a corner at a contact ([`FollowerState::corner`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Corner {
     /// a corner of the cam's profile touches the follower's curve
     Cam,

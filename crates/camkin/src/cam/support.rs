@@ -32,8 +32,7 @@ const NODES: usize = 7;
 const SAMPLES: usize = 512;
 
 /// The contact method against the support function over a set of cam angles.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct IndependentCheck {
     /// cam angles compared
     pub angles: usize,

@@ -18,8 +18,7 @@ use crate::curve::{ClosedSpline, Curve};
 use crate::geometry::{Frame, Rotation};
 
 /// How the contact at an angle was found.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub enum Found {
     /// global bracketing then Newton
     Global,

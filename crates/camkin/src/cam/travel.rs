@@ -5,8 +5,7 @@
 use super::{CamError, Mechanism};
 
 /// The follower's extreme positions over one revolution of the cam.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Travel {
     /// the rest position, nearest the cam (length, or arm angle in rad): the origin of lift
     pub rest: f64,

@@ -110,8 +110,7 @@ impl Default for SearchOptions {
 }
 
 /// A pair of pairing points: the parameters where `x_A − x_B` is normal to both curves.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Pairing {
     /// parameter on A
     pub u_a: f64,
@@ -284,8 +283,7 @@ fn sample_params(c: &dyn Curve, opts: &SearchOptions) -> Option<Vec<f64>> {
 
 /// How two curves lie relative to each other: the result of [`find_contact`]. Overlap is a
 /// result (the curves are placed so), not a failure of the search.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[non_exhaustive]
 pub enum Proximity {
     /// The curves are apart: the nearest pair, with `gap > contact_tolerance`.
@@ -495,8 +493,7 @@ fn project_onto(s: &Surface<'_>, x: Point2, u0: f64, opts: &SearchOptions) -> f6
 
 /// Velocity-level contact kinematics at a pairing (paper eqs. 3–7, 9) and the acceleration
 /// constraint row (eq. 11). All quantities are in the world frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct ContactKinematics {
     /// the contact point `c` (A's pairing point), length
     pub point: Point2,
@@ -539,8 +536,7 @@ pub struct ContactKinematics {
 
 /// The normal acceleration of the contact point as seen from one body (eq. 1 or 2), split in its
 /// terms; components along the common normal `ν_A`, length/s².
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct NormalAcceleration {
     /// `ν_A·a_X^P`: the material point of the body under `c`
     pub material: f64,

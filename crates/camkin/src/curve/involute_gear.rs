@@ -45,9 +45,8 @@ mod joints;
 mod trochoid;
 
 /// How tip relief grows from its start to the tip.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum ReliefShape {
     /// `δ = C_a (L − L_s)/ℓ`
     Linear,
@@ -68,9 +67,8 @@ pub struct TipRelief {
 }
 
 /// Which way a tooth's flank faces.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum FlankSide {
     /// facing clockwise (tooth 0's flank below the x axis): its involute unwinds
     /// counter-clockwise from the base circle

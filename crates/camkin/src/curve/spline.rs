@@ -13,9 +13,8 @@ pub const MAX_COORDINATE: f64 = 1e300;
 pub const CHORD_RANGE: (f64, f64) = (1e-150, 1e150);
 
 /// Where the nodes sit in the parameter.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Parameterization {
     /// Node i at `u = i`; `u ∈ [0, n)`. The paper's choice and the default.
     #[default]

@@ -48,8 +48,7 @@ impl FollowerDynamics {
 }
 
 /// The follower's state at one instant of a simulation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Sample {
     /// time, s
     pub time: f64,
@@ -75,8 +74,7 @@ pub struct Sample {
 }
 
 /// What happened at an event.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub enum EventKind {
     /// the contact force reached zero: the follower leaves the cam
     LiftOff,
@@ -89,8 +87,7 @@ pub enum EventKind {
 }
 
 /// A located event.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Event {
     /// lift-off, impact or jump
     pub kind: EventKind,

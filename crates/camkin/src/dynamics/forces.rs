@@ -38,8 +38,7 @@ use crate::cam::{CamError, FollowerCurve, FollowerState, Mechanism, Sweep, Trave
 use crate::geometry::cross;
 
 /// The forces at one cam angle under permanent contact (SI units).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct ForceState {
     /// cam angle, rad
     pub cam_angle: f64,
@@ -84,8 +83,7 @@ impl ForceState {
 }
 
 /// The second curve of a form-closed follower at one cam angle ([`ForceState::second`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SecondContact {
     /// the force it carries along its common normal, N, ≥ 0 (zero where the follower's own curve
     /// carries)

@@ -4,9 +4,8 @@
 use super::{LineContact, Lubricant};
 
 /// Which curve fit gives the film thickness of a line contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 #[non_exhaustive]
 pub enum FilmFormula {
     /// Dowson and Higginson's minimum film, `H_min = 2.65 U^0.70 G^0.54 W^−0.13` (Dowson and
@@ -44,8 +43,7 @@ impl FilmFormula {
 }
 
 /// The film of a lubricated line contact, m.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Film {
     /// the central film thickness `h_c`
     pub central: f64,

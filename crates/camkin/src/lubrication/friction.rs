@@ -8,9 +8,8 @@ pub const MIXED_LAMBDA: f64 = 1.0;
 pub const FULL_FILM_LAMBDA: f64 = 3.0;
 
 /// The lubrication regime of a contact by its λ ratio (`h_min / σ`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 #[non_exhaustive]
 pub enum Regime {
     /// λ < 1: the asperities carry the load
@@ -44,8 +43,7 @@ pub fn regime(lambda: f64) -> Regime {
 }
 
 /// How the friction coefficient is found.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[non_exhaustive]
 pub enum Friction {
     /// one coefficient throughout

@@ -31,8 +31,7 @@ pub use friction::{regime, Friction, Regime, FULL_FILM_LAMBDA, MIXED_LAMBDA};
 pub use oils::{LubricantError, OIL_PRESETS, PRESSURE_VISCOSITY_RANGE, VISCOSITY_RANGE};
 
 /// A lubricant at the contact's inlet temperature.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Lubricant {
     /// dynamic viscosity at the inlet temperature and atmospheric pressure `η₀`, Pa·s
     pub viscosity: f64,
@@ -41,8 +40,7 @@ pub struct Lubricant {
 }
 
 /// How a body conducts the heat of friction away.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Thermal {
     /// thermal conductivity `k`, W/(m·K)
     pub conductivity: f64,
@@ -61,8 +59,7 @@ impl Thermal {
 
 /// A body's surface at the contact: its roughness and, for the flash temperature, its thermal
 /// constants.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SurfaceProperties {
     /// root-mean-square roughness `Rq`, m
     pub roughness: f64,
@@ -94,8 +91,7 @@ pub fn composite_roughness(a: &SurfaceProperties, b: &SurfaceProperties) -> f64 
 }
 
 /// One instant of a lubricated line contact (SI units).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LineContact {
     /// surface speeds relative to the contact point along one tangent, m/s: body 1's, body 2's
     pub surface_speeds: [f64; 2],

@@ -10,9 +10,8 @@ use crate::cam::{ConjugatePlay, DesignChecks};
 use crate::human::human;
 
 /// Which check a [`Verdict`] is of.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 #[non_exhaustive]
 pub enum Check {
     /// a synthesised profile's round trip: the contact method against its motion law
@@ -50,8 +49,7 @@ impl Check {
 }
 
 /// One check's verdict and what a person reads of it.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Verdict {
     /// the check
     pub check: Check,
@@ -83,8 +81,7 @@ impl Verdict {
 }
 
 /// The design checks with their verdicts ([`DesignReport::new`]).
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DesignReport {
     /// the values checked
     pub checks: DesignChecks,

@@ -44,8 +44,7 @@ pub enum DeviationError {
 }
 
 /// The deviation in radius at each measured point.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
 pub struct RadiusDeviation {
     /// the points' polar angles, degrees in [0, 360)
     pub polar_angle_deg: Vec<f64>,
@@ -61,8 +60,7 @@ pub struct RadiusDeviation {
 
 /// One of the follower's motions (lift, velocity, acceleration) by the design and by the
 /// smoothed measured profile.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct MotionDeviation {
     /// `"lift"`, `"velocity"` or `"acceleration"`
     pub name: &'static str,
@@ -81,8 +79,7 @@ pub struct MotionDeviation {
 }
 
 /// A measured profile against the design.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DeviationReport {
     /// the length unit
     pub length_unit: &'static str,

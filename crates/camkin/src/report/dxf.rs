@@ -9,8 +9,7 @@ use std::f64::consts::PI;
 const MAX_VERTICES: usize = 2_000_000;
 
 /// A DXF drawing: its text, and what it holds.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DxfDrawing {
     /// the file's text
     pub text: String,

@@ -57,8 +57,7 @@ impl Default for ForceRequest {
 
 /// The jump speed: the lowest constant speed at which the contact force reaches the margin
 /// somewhere (a form-closed follower: from which its second curve takes load).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Jump {
     /// the speed, rad/s (∞: never; 0: at rest already)
     pub speed: f64,
@@ -70,8 +69,7 @@ pub struct Jump {
 
 /// A form-closed follower: the load on each of its curves, where it passes between them, and
 /// the second curve's play.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct FormClosed {
     /// the largest force on the follower's own curve
     pub own_peak: Extreme,
@@ -89,8 +87,7 @@ pub struct FormClosed {
 }
 
 /// The Hertz stress at one of the contacts (the follower's own curve, or the second curve).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct HertzSide {
     /// 0: the follower's own curve; 1: the second curve of a form-closed follower
     pub side: usize,
@@ -103,8 +100,7 @@ pub struct HertzSide {
 }
 
 /// The Hertz stress over the revolution.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct HertzReport {
     /// face width, m
     pub face_width: f64,
@@ -121,9 +117,8 @@ pub struct HertzReport {
 }
 
 /// A check of the force report that failed.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(tag = "check", rename_all = "snake_case"))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[serde(tag = "check", rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum ForceCheck {
     /// the contact force falls below the margin at the file's speed
@@ -150,8 +145,7 @@ pub enum ForceCheck {
 }
 
 /// Forces over a revolution: the extremes, checks and curves of the module's notes.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ForceReport {
     /// the cam's speed, rad/s
     pub speed: f64,

@@ -36,8 +36,7 @@ pub struct GearLoadRequest {
 }
 
 /// One point of the path of contact.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct PathPoint {
     /// roll length from the driver's base tangent point `T₁` along the line of action, m
     pub roll: f64,
@@ -69,8 +68,7 @@ pub struct PathPoint {
 }
 
 /// Loads along the whole path of contact.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct GearLoads {
     /// the normal force `T/r_b1`, N
     pub normal_force: f64,

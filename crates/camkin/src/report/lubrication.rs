@@ -15,8 +15,7 @@ use std::f64::consts::TAU;
 
 /// What a lubrication report needs beyond the forces: the oil, the film formula, the two
 /// surfaces (the cam's, the follower's) and the friction model.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LubricationRequest {
     /// the lubricant at the inlet temperature
     pub lubricant: Lubricant,
@@ -98,8 +97,7 @@ impl LubricationRequest {
 }
 
 /// One contact at one cam angle.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LubricationPoint {
     /// entrainment (mean rolling) speed `(u₁ + u₂)/2`, m/s, signed along the cam's tangent
     pub entrainment: f64,
@@ -127,8 +125,7 @@ pub struct LubricationPoint {
 }
 
 /// The lubrication over a revolution.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct LubricationReport {
     /// what was asked
     pub request: LubricationRequest,

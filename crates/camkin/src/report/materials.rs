@@ -7,8 +7,7 @@ use std::fmt;
 use std::str::FromStr;
 
 /// A material's elastic constants.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Material {
     /// its name (a preset's, or `E = … GPa, ν = …`)
     pub name: String,
@@ -251,8 +250,7 @@ impl fmt::Display for Material {
 }
 
 /// The cam's and the follower's materials, written `CAM,FOLLOWER`.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Materials {
     /// the cam's (the driving gear's)
     pub cam: Material,

@@ -52,8 +52,7 @@ use crate::dynamics::DynamicsError;
 use std::fmt;
 
 /// A value of a report and the cam angle where it is.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Extreme {
     /// the value (in the report's unit for it)
     pub value: f64,

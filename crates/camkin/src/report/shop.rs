@@ -61,8 +61,7 @@ pub enum ShopError {
 }
 
 /// A path at a distance outside the profile, at the polar table's angles.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct OffsetPath {
     /// `"pitch"` (the roller centre's) or `"cutter"` (the tool centre's)
     pub name: &'static str,
@@ -73,8 +72,7 @@ pub struct OffsetPath {
 }
 
 /// The cutter's undercut check: where the profile is concave more sharply than the tool.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct CutterCheck {
     /// the tool's radius
     pub radius: f64,
@@ -87,8 +85,7 @@ pub struct CutterCheck {
 }
 
 /// The polar table: the profile's point at each polar angle of the cam frame.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct PolarTable {
     /// polar angles, degrees (the decimals of the step: [`crate::table::AngleGrid`])
     pub angle_deg: Vec<f64>,
@@ -97,8 +94,7 @@ pub struct PolarTable {
 }
 
 /// A cam's manufacturing output.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ShopReport {
     /// the length unit of every length (`"mm"`)
     pub length_unit: &'static str,

@@ -7,8 +7,7 @@ use crate::extreme::best_refined;
 use std::f64::consts::TAU;
 
 /// The spring that keeps a spring-held follower on up to the target speed with the margin.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SpringSizing {
     /// the smallest preload with the file's stiffness, N (N·m); at least 0
     pub preload: f64,
@@ -29,8 +28,7 @@ pub struct SpringSizing {
 /// angle, `s` the lift), the one with the least force at full lift `P + k h` — the spring line
 /// tangent to the force the motion needs (a cam designer's construction) — and the softest
 /// (`k = 0`, a constant force).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SpringDesign {
     /// its stiffness, N/m (N·m/rad)
     pub stiffness: f64,

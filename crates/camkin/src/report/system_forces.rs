@@ -6,8 +6,7 @@ use crate::dynamics::{EventKind, SystemRun};
 use crate::system::{Coordinate, System};
 
 /// A value and the driver angle where it is.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct AtAngle {
     /// the value
     pub value: f64,
@@ -16,8 +15,7 @@ pub struct AtAngle {
 }
 
 /// One contact's forces over the run.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ContactForces {
     /// its name
     pub name: String,
@@ -33,8 +31,7 @@ pub struct ContactForces {
 
 /// One driver's effort over the run: a turning driver's torque (N·m, counter-clockwise
 /// positive), a sliding one's force (N).
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DriverEffort {
     /// its name
     pub name: String,
@@ -51,8 +48,7 @@ pub struct DriverEffort {
 }
 
 /// An impact of the run.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Impact {
     /// the contact's name
     pub contact: String,
@@ -63,8 +59,7 @@ pub struct Impact {
 }
 
 /// A simulated system's forces (see the module docs).
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct SystemForces {
     /// each contact's, in the system's order
     pub contacts: Vec<ContactForces>,
@@ -177,8 +172,7 @@ impl SystemForces {
 
 /// A check of a system's forces that failed (`camkin forces SYSTEM.toml --margin`,
 /// `--allowable`; Python's `System.forces(margin=…, allowable_mpa=…)`).
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 #[non_exhaustive]
 pub enum SystemForceFailure {
     /// a contact closed all the revolution whose force falls under the margin, N

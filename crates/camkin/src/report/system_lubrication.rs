@@ -18,8 +18,7 @@ use crate::system::System;
 use crate::table::Cell;
 
 /// What one contact's lubrication needs.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct ContactLubrication {
     /// the oil, the film formula, curve A's and curve B's surfaces, the friction model
     pub request: LubricationRequest,
@@ -40,8 +39,7 @@ pub struct SystemLubricationRequest {
 }
 
 /// One contact's lubrication over the run.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ContactLubricationReport {
     /// the contact's name
     pub name: String,
@@ -68,8 +66,7 @@ pub struct ContactLubricationReport {
 }
 
 /// A simulated system's lubrication.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct SystemLubricationReport {
     /// the first driver's angle of each sample, degrees
     pub angles_deg: Vec<f64>,

@@ -14,9 +14,8 @@
 //! ```
 
 /// `[[coil_spring]]`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct CoilSpringSpec {
     /// its name
     pub name: String,
@@ -29,13 +28,13 @@ pub struct CoilSpringSpec {
     /// length unit
     pub free_length: f64,
     /// N at the free length (default 0), a tension as a `[[spring]]`'s
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub preload: Option<f64>,
     /// kg: the active coils' mass
     pub mass: f64,
     /// lumped masses in the chain (0: massless)
     pub masses: usize,
     /// length unit: the length at which its coils touch (optional)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub solid_length: Option<f64>,
 }

@@ -16,33 +16,20 @@ use crate::field::{Field, GearLoadsField as G};
 use crate::report::{plausible_face_width, Materials};
 
 /// `[gear_loads]` as written.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct GearLoadsSpec {
     /// the torque on the driver, N·m
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub torque: Option<f64>,
     /// the power the driver transmits, kW (the torque is `P/ω` at the file's speed)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub power_kw: Option<f64>,
     /// the teeth's face width, in the file's length unit
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub face_width: Option<f64>,
     /// `"DRIVER,DRIVEN"` materials (default `[lubrication]`'s, else steel on steel)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub materials: Option<String>,
 }
 

@@ -26,51 +26,49 @@ use crate::curve::{InvoluteGear, InvoluteGearSpec};
 use crate::field::{CamField, Field, FollowerField, GearPairField, ProfileField};
 
 /// A gear-pair file.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct GearPairFile {
     /// the unit of every length (required)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub length_unit: Option<String>,
     /// `[gear_pair]`
     pub gear_pair: GearPairSpec,
     /// `[dynamics]`: the driven gear's (its `inertia`; `spring_preload` is the load torque)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub dynamics: Option<DynamicsSpec>,
     /// `[lubrication]`: the flanks' lubrication along the path of contact
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub lubrication: Option<super::LubricationSpec>,
     /// `[gear_loads]`: the torque on the driver and the face width
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub gear_loads: Option<super::GearLoadsSpec>,
 }
 
 /// `[gear_pair]`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct GearPairSpec {
     /// the driver's and the driven gear's numbers of teeth
     pub teeth: [u32; 2],
     /// the module (length)
     pub module: f64,
     /// degrees (default 20)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub pressure_angle_deg: Option<f64>,
     /// each gear's profile shift coefficient (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub profile_shift: Option<[f64; 2]>,
     /// the centre distance (length; default the tight mesh's for these shifts)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub centre_distance: Option<f64>,
     /// the play on the pitch circle (length; default 0): the driven gear's coast flanks
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub backlash: Option<f64>,
     /// the driver's speed, rpm
     pub speed_rpm: f64,
     /// the driver's sense (default ccw)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub direction: Option<Sense>,
 }
 

@@ -19,9 +19,8 @@ use crate::lubrication::{
 use crate::report::{LubricationRequest, Materials};
 
 /// `[lubrication]` as written.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct LubricationSpec {
     /// a preset oil or `eta=<Pa·s>:alpha=<1/Pa>`
     pub oil: String,
@@ -30,29 +29,19 @@ pub struct LubricationSpec {
     /// the contact's face width, in the file's length unit
     pub face_width: f64,
     /// `"dowson-higginson"` (default) or `"hamrock"`
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub film: Option<String>,
     /// one coefficient, or `[boundary, full_film]` (default `[0.1, 0.03]`)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub friction: Option<FrictionSpec>,
     /// `"CAM,FOLLOWER"` materials (default steel on steel)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub materials: Option<String>,
 }
 
 /// `friction`: one coefficient, or the mixed model's two.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(untagged))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(untagged)]
 pub enum FrictionSpec {
     /// one coefficient throughout
     Constant(f64),

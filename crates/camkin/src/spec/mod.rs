@@ -14,7 +14,6 @@
 //! # Example
 //!
 //! ```
-//! # #[cfg(feature = "serde")] {
 //! use camkin::cam::Mechanism;
 //! use camkin::spec::{Field, FollowerField, MechanismSpec, SpecError};
 //!
@@ -33,7 +32,6 @@
 //! let err = Mechanism::try_from(bad).unwrap_err();
 //! assert!(matches!(err, SpecError::Invalid { field: Field::Follower(FollowerField::RollerRadius), .. }));
 //! assert_eq!(err.to_string(), "follower.roller_radius = -1: must be positive and finite");
-//! # }
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
@@ -45,7 +43,6 @@ mod gear_loads;
 mod gear_pair;
 mod kinds;
 mod lubrication;
-#[cfg(feature = "serde")]
 mod pair;
 mod profile;
 mod run_plan;
@@ -84,42 +81,29 @@ use crate::curve::Parameterization;
 /// A mechanism: the cam, the follower and, for simulations, the follower's dynamics. Two specs
 /// are equal when they describe the same mechanism (whether it was read from a `[gear_pair]`
 /// only changes how errors are named).
-#[derive(Debug, Clone, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct MechanismSpec {
     /// the unit of every length: "mm", "cm", "m" or "in" (required: a missing unit is an error);
     /// converted to metres only for simulations ([`BuildOptions::si`])
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub length_unit: Option<String>,
     /// `[cam]`
     pub cam: CamSpec,
     /// `[follower]`
     pub follower: FollowerSpec,
     /// `[dynamics]`, SI units
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<DynamicsSpec>,
     /// `[lubrication]`: the force report's lubrication
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubrication: Option<LubricationSpec>,
     /// `[gear_loads]`: a gear pair's torque and face width
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gear_loads: Option<GearLoadsSpec>,
     /// read from a `[gear_pair]` file ([`GearPairFile::to_mechanism`]): errors then name the
     /// `gear_pair` keys
-    #[cfg_attr(feature = "serde", serde(skip))]
+    #[serde(skip)]
     pub from_gear_pair: bool,
 }
 
@@ -147,33 +131,23 @@ impl MechanismSpec {
 }
 
 /// `[cam]`: the cam's motion and profile.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct CamSpec {
     /// speed, revolutions per minute (> 0)
     pub speed_rpm: f64,
     /// direction of rotation (default counter-clockwise)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub direction: Option<Sense>,
     /// the rotation axis, world (default the origin)
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "pair::option"
     )]
     pub pivot: Option<[f64; 2]>,
     /// constant angular acceleration, deg/s² (default 0)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub angular_acceleration_deg_s2: Option<f64>,
     /// `[cam.profile]`
     pub profile: ProfileSpec,
@@ -194,26 +168,19 @@ macro_rules! spec_table {
         }
     ) => {
         $(#[$sm])*
-        #[derive(Debug, Clone, PartialEq, Default)]
-        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-        #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+        #[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+        #[serde(deny_unknown_fields)]
         pub struct $name {
             $(#[$km])*
             pub kind: String,
             $(
                 $(#[$m])*
-                #[cfg_attr(
-                    feature = "serde",
-                    serde(default, skip_serializing_if = "Option::is_none")
-                )]
+                #[serde(default, skip_serializing_if = "Option::is_none")]
                 pub $f: Option<$t>,
             )*
             $($(
                 $(#[$am])*
-                #[cfg_attr(
-                    feature = "serde",
-                    serde(default, skip_serializing_if = "Option::is_none")
-                )]
+                #[serde(default, skip_serializing_if = "Option::is_none")]
                 pub $af: Option<$at>,
             )*)?
         }
@@ -234,19 +201,19 @@ spec_table! {
         /// `tangent-cam`, `circular-arc-cam`, `involute-gear`, or a follower's `line` or `point`
         pub kind: String,
         /// `spline`: the nodes, cam frame
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option_list"))]
+        #[serde(deserialize_with = "pair::option_list")]
         points: Vec<[f64; 2]> => Points,
         /// where the nodes sit in the parameter: `uniform` by default for `spline` (the paper's),
         /// `chord-length` for `points-file`; uneven nodes under `uniform` draw a
         /// [`SpecWarning::UnevenNodes`]
         parameterization: Parameterization => Parameterization,
         /// `circle`, `ellipse`: the centre
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         center: [f64; 2] => Center,
         /// `circle`: the radius
         radius: f64 => Radius,
         /// `ellipse`: the semi-axes along its own x and y
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         semi_axes: [f64; 2] => SemiAxes,
         /// `ellipse`: its turn, degrees counter-clockwise (default 0)
         rotation_deg: f64 => RotationDeg,
@@ -264,7 +231,7 @@ spec_table! {
         /// `circular-arc-cam`: the flanks' radius
         flank_radius: f64 => FlankRadius,
         /// `arcs-and-lines`: where the chain starts
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         start: [f64; 2] => Start,
         /// `arcs-and-lines`: the chain, counter-clockwise round the cam
         pieces: Vec<PieceSpec> => Pieces,
@@ -291,56 +258,45 @@ spec_table! {
         /// `involute-gear`: tip relief, its shape (default linear)
         tip_relief_shape: crate::curve::ReliefShape => TipReliefShape,
         /// `line`: a point on it (default the origin)
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         anchor: [f64; 2] => Anchor,
         /// `line`: its direction, the follower's material on its left
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         direction: [f64; 2] => Direction,
         /// `point`: where it is (default the origin)
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         at: [f64; 2] => At,
     }
 }
 
 /// One piece of a `kind = "arcs-and-lines"` profile: a line to `to`, or with `centre` an arc
 /// about it to `to` (counter-clockwise unless `clockwise`), from where the piece before ends.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct PieceSpec {
     /// where the piece ends
-    #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::exact"))]
+    #[serde(deserialize_with = "pair::exact")]
     pub to: [f64; 2],
     /// an arc's centre
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "pair::option"
     )]
     pub centre: Option<[f64; 2]>,
     /// an arc turning clockwise (concave on a counter-clockwise profile); default false
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub clockwise: Option<bool>,
 }
 
 /// One segment of a `kind = "motion"` profile.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SegmentSpec {
     /// the law's name (`dwell`, `cycloidal`, `3-4-5`, …)
     pub law: String,
     /// the rise: a length (translating followers) or degrees of arm angle (oscillating)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rise: Option<f64>,
     /// the segment's extent, degrees of cam angle
     pub degrees: f64,
@@ -355,14 +311,14 @@ spec_table! {
         /// `oscillating-flat`, `oscillating-roller`
         pub kind: String,
         /// a slide's direction of travel (default the x axis)
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         direction: [f64; 2] => Direction,
         /// a slide's offset from the cam axis, or a flat arm's face offset from its pivot
         offset: f64 => Offset,
         /// a roller's radius
         roller_radius: f64 => RollerRadius,
         /// an arm's pivot, world
-        #[cfg_attr(feature = "serde", serde(deserialize_with = "pair::option"))]
+        #[serde(deserialize_with = "pair::option")]
         pivot: [f64; 2] => Pivot,
         /// an arm's length to the roller's centre
         arm_length: f64 => ArmLength,
@@ -381,48 +337,32 @@ spec_table! {
 }
 
 /// `[dynamics]`: the follower's mass properties, spring and damper, SI units.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct DynamicsSpec {
     /// kg, translating followers
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mass: Option<f64>,
     /// kg·m² about the pivot, oscillating followers
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub inertia: Option<f64>,
     /// N/m (N·m/rad); default 0: no spring (`camkin forces` sizes one from the motion)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub spring_stiffness: f64,
     /// N (N·m) at the follower's lowest position; default 0
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub spring_preload: f64,
     /// N·s/m (N·m·s/rad), default 0
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub damping: Option<f64>,
     /// of impacts, 0 to 1, default 0
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub restitution: Option<f64>,
     /// m/s², default none
-    #[cfg_attr(
-        feature = "serde",
-        serde(
-            default,
-            skip_serializing_if = "Option::is_none",
-            deserialize_with = "pair::option"
-        )
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "pair::option"
     )]
     pub gravity: Option<[f64; 2]>,
 }

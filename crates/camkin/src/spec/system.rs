@@ -44,59 +44,51 @@ use crate::system::{
 use std::collections::HashMap;
 
 /// A system file.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SystemSpec {
     /// the unit of every length: "mm", "cm", "m" or "in" (required)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub length_unit: Option<String>,
     /// `[[body]]`: the moving bodies (the ground is `"ground"`)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub body: Vec<BodySpec>,
     /// `[[joint]]`
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub joint: Vec<JointSpec>,
     /// `[[driver]]`
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub driver: Vec<DriverSpec>,
     /// `[[contact]]`
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub contact: Vec<ContactSpec>,
     /// `[[spring]]`: linear springs between two points (for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub spring: Vec<SpringSpec>,
     /// `[[damper]]`: linear dampers between two points (for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub damper: Vec<DamperSpec>,
     /// `[[torsion_spring]]`: between two bodies' angles (for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub torsion_spring: Vec<TorsionSpringSpec>,
     /// `[dynamics]`: what a simulation needs beyond the bodies' masses and the force elements;
     /// with it the system's degrees of freedom need not all be driven (forces move them)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<super::SystemDynamicsSpec>,
     /// `[[coil_spring]]`: coil springs with mass, as chains of lumped masses (for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub coil_spring: Vec<super::CoilSpringSpec>,
     /// `[[gas_force]]`: forces from tables of the crank angle (for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub gas_force: Vec<super::GasForceSpec>,
     /// `[lubrication]`: the oil of every contact with a face width (for dynamics)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubrication: Option<super::SystemLubricationSpec>,
 }
 
 /// `[[spring]]`: `stiffness` N per length, `free_length` (length), `preload` N at it.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SpringSpec {
     /// its name
     pub name: String,
@@ -109,14 +101,13 @@ pub struct SpringSpec {
     /// length unit
     pub free_length: f64,
     /// N (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub preload: Option<f64>,
 }
 
 /// `[[damper]]`: `damping` N·s per length.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct DamperSpec {
     /// its name
     pub name: String,
@@ -129,9 +120,8 @@ pub struct DamperSpec {
 }
 
 /// `[[torsion_spring]]`: `stiffness` N·length per rad, `free_angle_deg`, `preload` N·length.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct TorsionSpringSpec {
     /// its name
     pub name: String,
@@ -140,42 +130,40 @@ pub struct TorsionSpringSpec {
     /// N·length unit per rad
     pub stiffness: f64,
     /// degrees (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub free_angle_deg: Option<f64>,
     /// N·length unit (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub preload: Option<f64>,
 }
 
 /// `[[body]]`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct BodySpec {
     /// its name (unique; not "ground")
     pub name: String,
     /// kg (default 1; for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub mass: Option<f64>,
     /// kg·m² about its centre of mass (default 1; for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub inertia: Option<f64>,
     /// its centre of mass in its frame, in the file's length unit (default its frame's origin;
     /// for dynamics)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub centre_of_mass: Option<[f64; 2]>,
     /// where its frame's origin starts (a guess for the first instant; default the origin)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub position: Option<[f64; 2]>,
     /// its frame's starting angle, degrees (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub angle_deg: Option<f64>,
 }
 
 /// `[[joint]]`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct JointSpec {
     /// its name
     pub name: String,
@@ -184,20 +172,19 @@ pub struct JointSpec {
     /// the two bodies (either may be "ground")
     pub bodies: [String; 2],
     /// the joint's point in each body's frame (default the origins)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub at: Option<[[f64; 2]; 2]>,
     /// prismatic: the guide's direction in the first body's frame
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub axis: Option<[f64; 2]>,
     /// prismatic and fixed: the second body's angle to the first, degrees (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub angle_deg: Option<f64>,
 }
 
 /// `[[driver]]`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct DriverSpec {
     /// its name
     pub name: String,
@@ -206,16 +193,16 @@ pub struct DriverSpec {
     /// "angle", "x" or "y"
     pub coordinate: String,
     /// angle: rpm (counter-clockwise positive)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub speed_rpm: Option<f64>,
     /// x or y: length/s
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub speed: Option<f64>,
     /// the value at time 0: degrees for an angle, length for x or y (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub start: Option<f64>,
     /// a constant acceleration: deg/s² for an angle, length/s² for x or y (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub acceleration: Option<f64>,
 }
 

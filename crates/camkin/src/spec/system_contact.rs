@@ -4,9 +4,8 @@
 use super::ProfileSpec;
 
 /// `[[contact]]`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ContactSpec {
     /// its name
     pub name: String,
@@ -20,49 +19,28 @@ pub struct ContactSpec {
     /// for a `kind = "motion"` curve: the follower its program is written for, as a
     /// mechanism file's `[follower]`, in that curve's body's frame (whose origin is the cam's
     /// axis)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub motion_follower: Option<super::FollowerSpec>,
     /// for a `kind = "motion"` curve: the sense the cam turns in for its program (`ccw` by
     /// default)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub motion_direction: Option<crate::cam::Sense>,
     /// Newton's coefficient of restitution of its impacts, 0 to 1 (for dynamics; default the
     /// `[dynamics]` table's)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub restitution: Option<f64>,
     /// its line contact's face width, length unit: with it the simulation gives its Hertz
     /// pressure (for dynamics)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub face_width: Option<f64>,
     /// its curves' materials, `A,B` (presets or `E=<Pa>:nu=<ratio>`; default `steel,steel`)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub materials: Option<String>,
     /// its curves' RMS roughness, µm (with `[lubrication]`; default that table's)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub roughness_um: Option<[f64; 2]>,
     /// `"a"` or `"b"`: that curve, a circle, is a roller turning freely on its pin, rolling on
     /// the other without slip (its lubrication; without it a circle slides with its body)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rolls: Option<String>,
 }

@@ -7,15 +7,14 @@ use super::ContactSpec;
 use crate::field::{Field, ProfileField, SystemField, SystemKey, SystemTable};
 
 /// `[dynamics]` of a system file.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SystemDynamicsSpec {
     /// gravity in the world, m/s² (default none)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub gravity: Option<[f64; 2]>,
     /// Newton's coefficient of restitution of every contact without its own, 0 to 1 (default 0)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub restitution: Option<f64>,
 }
 
@@ -82,26 +81,25 @@ pub(super) fn contact_hertz(
 /// crank_per_driver = 2            # crank degrees a degree of the first driver (default 2)
 /// period_deg = 720                # the table's period in crank degrees (default 720)
 /// ```
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct GasForceSpec {
     /// its name
     pub name: String,
     /// the body it pushes
     pub body: String,
     /// where, in the body's frame (default its origin)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub at: Option<[f64; 2]>,
     /// its direction in the world
     pub direction: [f64; 2],
     /// `[crank degrees, N]`, the angles increasing within one period
     pub table: Vec<[f64; 2]>,
     /// crank degrees a degree of the first driver (default 2: a four-stroke's camshaft)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub crank_per_driver: Option<f64>,
     /// the table's period, crank degrees (default 720)
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[serde(default)]
     pub period_deg: Option<f64>,
 }
 

@@ -21,29 +21,19 @@ use crate::lubrication::SurfaceProperties;
 use crate::report::{ContactLubrication, LubricationRequest, Materials};
 
 /// `[lubrication]` of a system file as written.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SystemLubricationSpec {
     /// a preset oil or `eta=<Pa·s>:alpha=<1/Pa>`
     pub oil: String,
     /// every contact's curve A and curve B RMS roughness, µm, unless it gives its own
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub roughness_um: Option<[f64; 2]>,
     /// `"dowson-higginson"` (default) or `"hamrock"`
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub film: Option<String>,
     /// one coefficient, or `[boundary, full_film]` (default `[0.1, 0.03]`)
-    #[cfg_attr(
-        feature = "serde",
-        serde(default, skip_serializing_if = "Option::is_none")
-    )]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub friction: Option<FrictionSpec>,
 }
 

@@ -19,7 +19,6 @@ pub enum Cell {
     Text(Option<String>),
 }
 
-#[cfg(feature = "serde")]
 impl serde::Serialize for Cell {
     fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         match self {

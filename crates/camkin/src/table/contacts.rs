@@ -10,8 +10,7 @@ use crate::cam::{CamContact, CamError};
 /// One contact at one cam angle. A row for an angle that could not be analysed has only
 /// `angle_deg` and `error`. Lengths in the mechanism's unit, time in s; the constraint row is
 /// in rad for angles (the cam's and an arm's).
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
 pub struct ContactRow {
     /// the cam angle, degrees, as asked for
     pub angle_deg: f64,

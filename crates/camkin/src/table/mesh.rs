@@ -12,8 +12,7 @@ use crate::gears::GearPair;
 /// One row of the mesh table: the pair's state at one driver angle. A row that could not be
 /// computed has only `angle_deg` and `error`. Angles in rad, lengths in the mechanism's unit,
 /// time in seconds (the columns convert: see [`mesh_columns`]).
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
 pub struct MeshRow {
     /// the driver's angle, degrees, as asked for
     pub angle_deg: f64,

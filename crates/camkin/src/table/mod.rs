@@ -34,9 +34,8 @@ pub use system_dynamics::{
 pub use units::{AngleUnit, Per, Units, UnknownUnit};
 
 /// How a row's contact was found.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 #[non_exhaustive]
 pub enum FoundBy {
     /// a global search (a first angle, or after a failed warm start)
@@ -72,8 +71,7 @@ impl FoundBy {
 
 /// One row of the analysis (`camkin analyze`): the follower's motion and the contact at one cam
 /// angle. A row that could not be computed has only `angle_deg` and `error`.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
 pub struct AnalysisRow {
     /// cam angle, degrees, as asked for
     pub angle_deg: f64,
@@ -203,8 +201,7 @@ pub fn analysis_rows(
 }
 
 /// One row of a simulation's time series (`camkin simulate`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SampleRow {
     /// time, s
     pub time: f64,
@@ -248,8 +245,7 @@ impl SampleRow {
 }
 
 /// One row of a simulation's events.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct EventRow {
     /// `lift-off`, `impact` or `jump`
     pub event: &'static str,

@@ -312,7 +312,6 @@ fn motion_spec_errors_name_the_segment() {
     );
 }
 
-#[cfg(feature = "serde")]
 #[test]
 fn specs_round_trip_through_json() {
     let s = circle_spec(FollowerSpec {
@@ -337,7 +336,6 @@ fn specs_round_trip_through_json() {
 /// follower tables are the field enums' names, no more and no fewer (read from serde's own
 /// "expected one of" list for an unknown key), and a key present for a kind that does not take it
 /// is refused naming it.
-#[cfg(feature = "serde")]
 #[test]
 fn the_schemas_keys_are_the_field_enums_names() {
     fn serde_names<T: serde::de::DeserializeOwned + std::fmt::Debug>() -> Vec<String> {

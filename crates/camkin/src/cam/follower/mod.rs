@@ -52,9 +52,8 @@ use translating_knife::TranslatingKnife;
 use translating_roller::TranslatingRoller;
 
 /// Rotation sense: of the cam's motion, or of the spring that closes an oscillating follower.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Sense {
     /// counter-clockwise
     #[default]
