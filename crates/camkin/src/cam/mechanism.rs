@@ -27,14 +27,8 @@ impl Mechanism {
         };
         let breakpoints = profile.breakpoints();
         let samples = bracket_samples(&breakpoints, period, 16, 256);
-        let ProfileSummary {
-            size,
-            orientation,
-            convex,
-            mean_speed,
-            cusps,
-            min_radius,
-        } = ProfileSummary::of(profile, &breakpoints, period)?;
+        let summary = ProfileSummary::of(profile, &breakpoints, period)?;
+        let size = summary.size;
         if !(super::LENGTH_RANGE.0..=super::LENGTH_RANGE.1).contains(&size) {
             return Err(CamError::Invalid {
                 field: Field::Profile(ProfileField::Table),
@@ -50,22 +44,20 @@ impl Mechanism {
         // profile's sharpest curvature, a small roller (a 1e-9 roller accepted a step of 1e-8
         // that left an error of 1e-7)
         let sharpest = size
-            .min(min_radius)
+            .min(summary.min_radius)
             .min(geometry.model.roller_radius().unwrap_or(f64::INFINITY));
         options.newton_contraction = 1e3 / sharpest;
         let corners = std::sync::Arc::new(super::corners::Corners::of(profile, &samples));
-        let facts = super::first_touch::ProfileFacts {
-            period,
-            size,
-            orientation,
-            convex,
-            mean_speed,
-            cusps,
-            breakpoints,
-            corners,
-        };
         Ok(Self {
-            touch: super::first_touch::FirstTouch::new(cam, geometry, facts, options),
+            touch: super::first_touch::FirstTouch::new(
+                cam,
+                geometry,
+                summary,
+                period,
+                breakpoints,
+                corners,
+                options,
+            ),
             conjugate: None,
         })
     }
@@ -77,12 +69,12 @@ impl Mechanism {
 
     /// The analysis options in force.
     pub fn options(&self) -> &AnalysisOptions {
-        &self.touch.options()
+        self.touch.options()
     }
 
     /// The cam.
     pub fn cam(&self) -> &Cam {
-        &self.touch.cam()
+        self.touch.cam()
     }
 
     /// The follower.
@@ -221,7 +213,7 @@ impl Mechanism {
             return Vec::new();
         };
         let profile = self.touch.cam().profile.as_ref();
-        let u = bracket_samples(&self.touch.breakpoints(), self.touch.period(), 64, 2048);
+        let u = bracket_samples(self.touch.breakpoints(), self.touch.period(), 64, 2048);
         let mut bad: Vec<bool> = u
             .iter()
             .map(|&v| self.touch.orientation() * profile.curvature(v) < limit)

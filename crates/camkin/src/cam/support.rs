@@ -216,7 +216,7 @@ fn support(mech: &Mechanism, theta: f64) -> Option<Support> {
         u: s.u,
     };
     let period = mech.touch.period();
-    let grid = sample_grid(&mech.touch.breakpoints(), period);
+    let grid = sample_grid(mech.touch.breakpoints(), period);
     match mech.follower_curve() {
         curve @ (FollowerCurve::Point(_) | FollowerCurve::Circle(_)) => {
             // the extreme of the crossings of the tip's path with the profile, or of the

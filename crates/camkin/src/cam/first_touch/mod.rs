@@ -14,28 +14,10 @@ pub(crate) mod overtake;
 pub(crate) mod search;
 pub(crate) mod starts;
 
+use super::summary::ProfileSummary;
 use super::{corners, AnalysisOptions, Cam};
 use crate::geometry::Point2;
 use std::sync::Arc;
-
-/// What the mechanism's constructor measured of the profile, handed to [`FirstTouch::new`].
-#[derive(Debug, Clone)]
-pub(crate) struct ProfileFacts {
-    /// the profile's parameter period
-    pub(crate) period: f64,
-    /// the cam's size, its greatest reach from its axis
-    pub(crate) size: f64,
-    /// `+1` for a counter-clockwise profile, `−1` for a clockwise one
-    pub(crate) orientation: f64,
-    pub(crate) convex: bool,
-    /// the mean `|r'|` of the profile
-    pub(crate) mean_speed: f64,
-    /// the cusps of a folded profile (parameters)
-    pub(crate) cusps: Vec<f64>,
-    pub(crate) breakpoints: Vec<f64>,
-    /// the profile's corners and the samples to measure a depth inside the cam from
-    pub(crate) corners: Arc<corners::Corners>,
-}
 
 /// The first-touch engine of one cam profile and one follower. Its fields are its own: the
 /// mechanism reads them through the accessors below.
@@ -69,25 +51,27 @@ pub(crate) struct FirstTouch {
 }
 
 impl FirstTouch {
-    /// The engine of `cam` and the follower `geometry` with the profile's `facts`, its samples,
-    /// trees and Newton's constants prepared for `options`.
+    /// The engine of `cam` and the follower `geometry` on the profile of `summary` (its
+    /// `period`, `breakpoints` and `corners`), its samples, trees and Newton's constants
+    /// prepared for `options`.
     pub(crate) fn new(
         cam: Cam,
         geometry: Geometry,
-        facts: ProfileFacts,
+        summary: ProfileSummary,
+        period: f64,
+        breakpoints: Vec<f64>,
+        corners: Arc<corners::Corners>,
         options: AnalysisOptions,
     ) -> Self {
         let roller = geometry.model.roller_radius().is_some();
-        let ProfileFacts {
-            period,
+        let ProfileSummary {
             size,
             orientation,
             convex,
             mean_speed,
             cusps,
-            breakpoints,
-            corners,
-        } = facts;
+            ..
+        } = summary;
         let mut touch = Self {
             cam,
             geometry,
