@@ -148,115 +148,86 @@ mod tests {
     #[test]
     fn closed_forms_decline_where_the_method_refuses() {
         let refuse = Refusals::new(1e-9, 1e-9);
-        let model = |f: Follower| f.model(Point2::origin()).unwrap();
+        // each kind at its position `q`: (contact point, x', x'', answers)
+        type Case = ([f64; 2], [f64; 2], [f64; 2], bool);
+        let check = |f: Follower, q: f64, cases: &[Case]| {
+            let model = f.model(Point2::origin()).unwrap();
+            for &(p, d1, d2, answers) in cases {
+                let got = model.rates(&at(p, d1, d2), &model.pose(q), &refuse);
+                assert_eq!(got.is_some(), answers, "{f:?} at {p:?}, {d1:?}, {d2:?}");
+            }
+        };
         // a flat face along y on a cam straight at the contact (x'' ∥ the face): conformal
-        let flat = model(Follower::TranslatingFlat {
-            direction: Vec2::y(),
-        });
-        assert!(flat
-            .rates(
-                &at([0.0, 2.0], [1.0, 0.0], [1.0, 0.0]),
-                &flat.pose(2.0),
-                &refuse
-            )
-            .is_none());
-        assert!(flat
-            .rates(
-                &at([0.0, 2.0], [1.0, 0.0], [0.0, -1.0]),
-                &flat.pose(2.0),
-                &refuse
-            )
-            .is_some());
-        // a roller of radius 1 on the y axis, centre at the origin (q = 0)
-        let roller = model(Follower::TranslatingRoller {
-            direction: Vec2::y(),
-            offset: 0.0,
-            roller_radius: 1.0,
-        });
-        // the normal along x, perpendicular to the travel: locked
-        assert!(roller
-            .rates(
-                &at([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]),
-                &roller.pose(0.0),
-                &refuse
-            )
-            .is_none());
-        // below the roller, curved as the roller (concave, radius 1): conformal
-        assert!(roller
-            .rates(
-                &at([0.0, -1.0], [1.0, 0.0], [0.0, 1.0]),
-                &roller.pose(0.0),
-                &refuse
-            )
-            .is_none());
-        assert!(roller
-            .rates(
-                &at([0.0, -1.0], [1.0, 0.0], [0.0, 0.5]),
-                &roller.pose(0.0),
-                &refuse
-            )
-            .is_some());
+        check(
+            Follower::TranslatingFlat {
+                direction: Vec2::y(),
+            },
+            2.0,
+            &[
+                ([0.0, 2.0], [1.0, 0.0], [1.0, 0.0], false),
+                ([0.0, 2.0], [1.0, 0.0], [0.0, -1.0], true),
+            ],
+        );
+        // a roller of radius 1 on the y axis, centre at the origin (q = 0): the normal along x,
+        // perpendicular to the travel, is locked; below the roller, curved as the roller
+        // (concave, radius 1), conformal
+        check(
+            Follower::TranslatingRoller {
+                direction: Vec2::y(),
+                offset: 0.0,
+                roller_radius: 1.0,
+            },
+            0.0,
+            &[
+                ([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], false),
+                ([0.0, -1.0], [1.0, 0.0], [0.0, 1.0], false),
+                ([0.0, -1.0], [1.0, 0.0], [0.0, 0.5], true),
+            ],
+        );
         // a knife along y whose profile runs along its line of travel: locked
-        let knife = model(Follower::TranslatingKnife {
-            direction: Vec2::y(),
-            offset: 0.0,
-        });
-        assert!(knife
-            .rates(
-                &at([0.0, 2.0], [0.0, 1.0], [1.0, 0.0]),
-                &knife.pose(2.0),
-                &refuse
-            )
-            .is_none());
-        assert!(knife
-            .rates(
-                &at([0.0, 2.0], [1.0, 0.2], [0.0, -1.0]),
-                &knife.pose(2.0),
-                &refuse
-            )
-            .is_some());
+        check(
+            Follower::TranslatingKnife {
+                direction: Vec2::y(),
+                offset: 0.0,
+            },
+            2.0,
+            &[
+                ([0.0, 2.0], [0.0, 1.0], [1.0, 0.0], false),
+                ([0.0, 2.0], [1.0, 0.2], [0.0, -1.0], true),
+            ],
+        );
         // an arm pivoted at (−3, 2), face offset 0, at φ = 0 (the face is the line y = 2): the
         // contact right under the pivot is locked
-        let arm = model(Follower::OscillatingFlat {
-            pivot: Point2::new(-3.0, 2.0),
-            face_offset: 0.0,
-            closing: Sense::Cw,
-            initial_angle: 0.0,
-        });
-        assert!(arm
-            .rates(
-                &at([-3.0, 2.0], [1.0, 0.0], [0.0, -1.0]),
-                &arm.pose(0.0),
-                &refuse
-            )
-            .is_none());
-        assert!(arm
-            .rates(
-                &at([0.5, 2.0], [1.0, 0.0], [0.0, -1.0]),
-                &arm.pose(0.0),
-                &refuse
-            )
-            .is_some());
+        check(
+            Follower::OscillatingFlat {
+                pivot: Point2::new(-3.0, 2.0),
+                face_offset: 0.0,
+                closing: Sense::Cw,
+                initial_angle: 0.0,
+            },
+            0.0,
+            &[
+                ([-3.0, 2.0], [1.0, 0.0], [0.0, -1.0], false),
+                ([0.5, 2.0], [1.0, 0.0], [0.0, -1.0], true),
+            ],
+        );
         // an arm of length 3 pivoted at (−3, 0), roller radius 1 centred at the origin: a
-        // contact on the arm's line has its normal through the pivot (locked)
-        let arm_roller = model(Follower::OscillatingRoller {
-            pivot: Point2::new(-3.0, 0.0),
-            arm_length: 3.0,
-            roller_radius: 1.0,
-            closing: Sense::Cw,
-            initial_angle: 0.0,
-        });
-        let locked = at([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]);
-        assert!(arm_roller
-            .rates(&locked, &arm_roller.pose(0.0), &refuse)
-            .is_none());
-        let below = at([0.0, -1.0], [1.0, 0.0], [0.0, 0.5]);
-        assert!(arm_roller
-            .rates(&below, &arm_roller.pose(0.0), &refuse)
-            .is_some());
-        let conformal = at([0.0, -1.0], [1.0, 0.0], [0.0, 1.0]);
-        assert!(arm_roller
-            .rates(&conformal, &arm_roller.pose(0.0), &refuse)
-            .is_none());
+        // contact on the arm's line has its normal through the pivot (locked); below it as the
+        // translating roller
+        check(
+            Follower::OscillatingRoller {
+                pivot: Point2::new(-3.0, 0.0),
+                arm_length: 3.0,
+                roller_radius: 1.0,
+                closing: Sense::Cw,
+                initial_angle: 0.0,
+            },
+            0.0,
+            &[
+                ([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], false),
+                ([0.0, -1.0], [1.0, 0.0], [0.0, 0.5], true),
+                ([0.0, -1.0], [1.0, 0.0], [0.0, 1.0], false),
+            ],
+        );
     }
 }
