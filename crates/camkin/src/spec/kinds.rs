@@ -5,6 +5,7 @@
 //! one arm in the build.
 
 use super::{FollowerField as F, ProfileField as P};
+use crate::field::SystemKey as S;
 
 /// Declares a kind enum: each variant with its name in mechanism files and its keys.
 macro_rules! kinds {
@@ -99,6 +100,30 @@ kinds! {
     }
 }
 
+kinds! {
+    /// `[[joint]]`'s `kind`.
+    pub enum JointKindName (S) {
+        /// a pin: the two points stay together
+        Revolute = "revolute" [At],
+        /// a slide along `axis` of the first body, at a fixed relative angle
+        Prismatic = "prismatic" [At, Axis, AngleDeg],
+        /// the two bodies welded at a relative angle
+        Fixed = "fixed" [At, AngleDeg],
+    }
+}
+
+kinds! {
+    /// `[[driver]]`'s `coordinate`.
+    pub enum DriverCoordinate (S) {
+        /// the body's angle, at `speed_rpm`
+        Angle = "angle" [SpeedRpm, Start, Acceleration],
+        /// the body's x, at `speed` (length/s)
+        X = "x" [Speed, Start, Acceleration],
+        /// the body's y, at `speed` (length/s)
+        Y = "y" [Speed, Start, Acceleration],
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -112,6 +137,12 @@ mod tests {
         for &k in FollowerKind::ALL {
             assert_eq!(FollowerKind::parse(k.name()), Some(k));
             assert!(!k.fields().contains(&F::Kind), "{k}");
+        }
+        for &k in JointKindName::ALL {
+            assert_eq!(JointKindName::parse(k.name()), Some(k));
+        }
+        for &k in DriverCoordinate::ALL {
+            assert_eq!(DriverCoordinate::parse(k.name()), Some(k));
         }
         assert_eq!(ProfileKind::parse("Circle"), None);
         assert_eq!(FollowerKind::parse(""), None);

@@ -65,7 +65,7 @@ pub use gear_loads::{
     ResolvedLoads,
 };
 pub use gear_pair::{GearPairFile, GearPairSpec};
-pub use kinds::{FollowerKind, ProfileKind};
+pub use kinds::{DriverCoordinate, FollowerKind, JointKindName, ProfileKind};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
 pub use run_plan::{PlanError, PlanField, RunPlan, MAX_REVOLUTIONS, MAX_SUBSTEPS, STEP_RANGE_DEG};
 pub use system::{

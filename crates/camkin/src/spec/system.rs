@@ -31,6 +31,7 @@ use super::build::{
     coordinate, direction, finite, length_unit, point, positive, BuildOptions, SpecError,
     SpecWarning,
 };
+use super::kinds::{DriverCoordinate, JointKindName};
 use super::profile::Place;
 use super::{BuiltSystem, SweepAngle};
 use super::{ContactSpec, ProfileSpec};
@@ -315,22 +316,26 @@ impl SystemSpec {
             );
             let angle =
                 finite(at(T::Joint, i, K::AngleDeg), j.angle_deg.unwrap_or(0.0))?.to_radians();
-            let foreign = |key: K, present: bool, kind: &str| -> Result<(), SpecError> {
-                if present {
+            let kind = JointKindName::parse(&j.kind).ok_or_else(|| SpecError::Unknown {
+                field: at(T::Joint, i, K::Kind),
+                value: j.kind.clone(),
+                what: "a joint kind",
+                known: JointKindName::names(),
+            })?;
+            for (key, present) in [
+                (K::Axis, j.axis.is_some()),
+                (K::AngleDeg, j.angle_deg.is_some()),
+            ] {
+                if present && !kind.fields().contains(&key) {
                     return Err(SpecError::Rule {
                         field: at(T::Joint, i, key),
                         reason: format!("a {kind} joint takes no {}", at(T::Joint, i, key)),
                     });
                 }
-                Ok(())
-            };
-            let kind = match j.kind.as_str() {
-                "revolute" => {
-                    foreign(K::Axis, j.axis.is_some(), "revolute")?;
-                    foreign(K::AngleDeg, j.angle_deg.is_some(), "revolute")?;
-                    JointKind::Revolute { a, at_a, b, at_b }
-                }
-                "prismatic" => {
+            }
+            let kind = match kind {
+                JointKindName::Revolute => JointKind::Revolute { a, at_a, b, at_b },
+                JointKindName::Prismatic => {
                     let axis = j.axis.ok_or_else(|| SpecError::Rule {
                         field: at(T::Joint, i, K::Kind),
                         reason: "a prismatic joint needs `axis`, the guide's direction in the first body's frame".into(),
@@ -344,24 +349,13 @@ impl SystemSpec {
                         angle,
                     }
                 }
-                "fixed" => {
-                    foreign(K::Axis, j.axis.is_some(), "fixed")?;
-                    JointKind::Fixed {
-                        a,
-                        at_a,
-                        b,
-                        at_b,
-                        angle,
-                    }
-                }
-                other => {
-                    return Err(SpecError::Unknown {
-                        field: at(T::Joint, i, K::Kind),
-                        value: other.to_string(),
-                        what: "a joint kind",
-                        known: "revolute, prismatic, fixed".into(),
-                    })
-                }
+                JointKindName::Fixed => JointKind::Fixed {
+                    a,
+                    at_a,
+                    b,
+                    at_b,
+                    angle,
+                },
             };
             sys.add_joint(Joint {
                 name: j.name.clone(),
@@ -382,8 +376,15 @@ impl SystemSpec {
                 at(T::Driver, i, K::Acceleration),
                 d.acceleration.unwrap_or(0.0),
             )?;
-            let (coordinate, law) = match d.coordinate.as_str() {
-                "angle" => {
+            let coord =
+                DriverCoordinate::parse(&d.coordinate).ok_or_else(|| SpecError::Unknown {
+                    field: at(T::Driver, i, K::Coordinate),
+                    value: d.coordinate.clone(),
+                    what: "a coordinate",
+                    known: DriverCoordinate::names(),
+                })?;
+            let (coordinate, law) = match coord {
+                DriverCoordinate::Angle => {
                     if d.speed.is_some() {
                         return Err(SpecError::Rule {
                             field: at(T::Driver, i, K::Speed),
@@ -406,7 +407,7 @@ impl SystemSpec {
                         },
                     )
                 }
-                c @ ("x" | "y") => {
+                c @ (DriverCoordinate::X | DriverCoordinate::Y) => {
                     if d.speed_rpm.is_some() {
                         return Err(SpecError::Rule {
                             field: at(T::Driver, i, K::SpeedRpm),
@@ -417,7 +418,7 @@ impl SystemSpec {
                     }
                     let v = coordinate(at(T::Driver, i, K::Speed), d.speed.unwrap_or(0.0))?;
                     (
-                        if c == "x" {
+                        if c == DriverCoordinate::X {
                             Coordinate::X
                         } else {
                             Coordinate::Y
@@ -428,14 +429,6 @@ impl SystemSpec {
                             acceleration: scale * acc,
                         },
                     )
-                }
-                other => {
-                    return Err(SpecError::Unknown {
-                        field: at(T::Driver, i, K::Coordinate),
-                        value: other.to_string(),
-                        what: "a coordinate",
-                        known: "angle, x, y".into(),
-                    })
                 }
             };
             if let Some((k, _)) = self.driver[..i]

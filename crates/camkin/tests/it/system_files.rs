@@ -55,7 +55,7 @@ fn bad_system_files_name_the_element_and_its_line() {
             .nth(k - 1)
             .map_or(0, |(i, _)| i + 1)
     };
-    let cases: [Case<'_>; 6] = [
+    let cases: [Case<'_>; 9] = [
         (
             "a joint naming a missing body",
             VALVE_TRAIN.replace(
@@ -79,6 +79,24 @@ fn bad_system_files_name_the_element_and_its_line() {
             VALVE_TRAIN.replace("kind = \"prismatic\"", "kind = \"slider\""),
             &["joint[2].kind", "\"slider\"", "revolute, prismatic, fixed"],
             ("\"slider\"", 1),
+        ),
+        (
+            "a key the joint's kind does not take (each kind's keys: spec::JointKindName)",
+            VALVE_TRAIN.replacen("kind = \"revolute\"\n", "kind = \"revolute\"\naxis = [1.0, 0.0]\n", 1),
+            &["joint[0].axis", "a revolute joint takes no"],
+            ("axis = [1.0, 0.0]", 1),
+        ),
+        (
+            "an unknown coordinate",
+            VALVE_TRAIN.replace("coordinate = \"angle\"", "coordinate = \"z\""),
+            &["driver[0].coordinate", "\"z\"", "angle, x, y"],
+            ("coordinate = \"z\"", 1),
+        ),
+        (
+            "an angle driven at a length's speed",
+            VALVE_TRAIN.replace("speed_rpm = 3000.0\n", "speed_rpm = 3000.0\nspeed = 1.0\n"),
+            &["driver[0].speed", "takes speed_rpm, not speed"],
+            ("speed = 1.0", 1),
         ),
         (
             "a contact's curve with a bad radius",
