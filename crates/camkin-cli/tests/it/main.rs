@@ -15,6 +15,7 @@ mod cli_lubrication;
 mod cli_mesh;
 mod cli_output;
 mod cli_plot;
+mod cli_refusals;
 mod cli_simulate;
 mod cli_studio;
 mod cli_study;

@@ -23,6 +23,7 @@ mod eccentric_circle;
 mod ellipse_flat;
 mod extremes;
 mod forces;
+mod gear_limits;
 mod gear_loads;
 mod gear_mesh;
 #[cfg(feature = "text")]
