@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 #[test]
 fn default_runs_the_paper_cam_over_a_revolution() {
-    let out = camkin().arg("analyze").stdout_ok();
+    let out = run!("analyze").stdout_ok();
     let (header, rows) = parse_csv(&out);
     // the paper's cam is in cm: every column says so
     assert_eq!(
@@ -35,7 +35,7 @@ fn default_runs_the_paper_cam_over_a_revolution() {
 
 #[test]
 fn at_list_and_numbers_round_trip() {
-    let out = camkin().args(["analyze", "--at", "45,-10"]).stdout_ok();
+    let out = run!("analyze", "--at", "45,-10").stdout_ok();
     let (_, rows) = parse_csv(&out);
     assert_eq!(rows.len(), 2);
     // the angle column echoes the angle asked for, exactly
@@ -53,22 +53,13 @@ fn every_example_file_analyses_without_errors() {
         let text = std::fs::read_to_string(&p).unwrap_or_default();
         // a system with [dynamics] and free degrees of freedom is simulated: analysing it says so
         if text.contains("[[body]]") && text.contains("[dynamics]") {
-            let out = camkin()
-                .arg("analyze")
-                .arg(&p)
-                .args(["--angles", "0:360:10"])
-                .assert()
-                .code(2);
+            let out = run!("analyze", &p, "--angles", "0:360:10").assert().code(2);
             let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
             assert!(stderr.contains("camkin simulate"), "{stderr}");
             continue;
         }
         if p.extension().is_some_and(|e| e == "toml") {
-            let out = camkin()
-                .arg("analyze")
-                .arg(&p)
-                .args(["--angles", "0:360:10"])
-                .stdout_ok();
+            let out = run!("analyze", &p, "--angles", "0:360:10").stdout_ok();
             let (header, rows) = parse_csv(&out);
             assert_eq!(rows.len(), 36, "{}", p.display());
             let err = header.iter().position(|h| h == "error").unwrap();
@@ -85,21 +76,14 @@ fn every_example_file_analyses_without_errors() {
 fn output_file_is_written_and_failed_runs_leave_existing_file_alone() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.csv");
-    camkin()
-        .args(["analyze", "--angles", "0:10:1", "-o"])
-        .arg(&out)
+    run!("analyze", "--angles", "0:10:1", "-o", &out)
         .assert()
         .success()
         .stdout("");
     let good = std::fs::read_to_string(&out).unwrap();
     assert_eq!(good.lines().count(), 11);
     // bad input: exit 2, the good file untouched, no temporary left behind
-    camkin()
-        .args(["analyze", "--angles", "0:10:0", "-o"])
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("STEP"));
+    run!("analyze", "--angles", "0:10:0", "-o", &out).refused("STEP");
     assert_eq!(std::fs::read_to_string(&out).unwrap(), good);
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
 }
@@ -124,13 +108,8 @@ fn bad_input_exits_2_with_a_message_naming_the_problem() {
         (write("pfile.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"points-file\"\npath = \"nope.csv\"\n[follower]\nkind = \"translating-flat\"\n"), "nope.csv"),
     ];
     for (path, needle) in cases {
-        camkin()
-            .arg("analyze")
-            .arg(&path)
-            .args(["--at", "0"])
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains(needle))
+        run!("analyze", &path, "--at", "0")
+            .refused(needle)
             .stderr(predicate::str::contains("panicked").not());
     }
 }
@@ -140,13 +119,8 @@ fn follower_that_never_touches_is_bad_input() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("far.toml");
     std::fs::write(&p, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 5.0\n").unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&p)
-        .args(["--at", "0"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("follower.offset = 5"))
+    run!("analyze", &p, "--at", "0")
+        .refused("follower.offset = 5")
         .stderr(predicate::str::contains("misses the cam"));
 }
 
@@ -157,10 +131,7 @@ fn rows_where_the_follower_misses_carry_the_error() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("some.toml");
     std::fs::write(&p, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0.8, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 1.5\n").unwrap();
-    let out = camkin()
-        .arg("analyze")
-        .arg(&p)
-        .args(["--at", "0,90"])
+    let out = run!("analyze", &p, "--at", "0,90")
         .assert()
         .success()
         .stderr(predicate::str::contains("could not be analysed"))
@@ -181,15 +152,13 @@ fn help_shows_examples_for_every_subcommand() {
     for cmd in [
         "analyze", "paper", "compare", "plot", "bench", "simulate", "synth",
     ] {
-        camkin()
-            .args([cmd, "--help"])
+        run!(cmd, "--help")
             .assert()
             .success()
             .stdout(predicate::str::contains("Examples:"))
             .stdout(predicate::str::contains("Exit codes"));
     }
-    camkin()
-        .arg("--help")
+    run!("--help")
         .assert()
         .success()
         .stdout(predicate::str::contains("Exit codes"));
@@ -197,9 +166,7 @@ fn help_shows_examples_for_every_subcommand() {
 
 #[test]
 fn json_format_has_the_csv_columns_as_keys() {
-    let out = camkin()
-        .args(["analyze", "--at", "0,45", "--format", "json"])
-        .stdout_ok();
+    let out = run!("analyze", "--at", "0,45", "--format", "json").stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 2);
@@ -213,8 +180,7 @@ fn json_format_has_the_csv_columns_as_keys() {
 /// angle and any angle congruent to it give the same row (1e20 ≡ 280, −90 ≡ 270).
 #[test]
 fn congruent_angles_give_the_same_row() {
-    let a = camkin()
-        .args(["analyze", "--at", "280,1e20,270,-90,0.5,720.5"])
+    let a = run!("analyze", "--at", "280,1e20,270,-90,0.5,720.5")
         .assert()
         .success();
     let out = String::from_utf8(a.get_output().stdout.clone()).unwrap();
@@ -256,12 +222,7 @@ fn dotted_keys_and_wordy_headers_are_valid() {
         "x_info,y_info\n4,0\n0,4\n-4,0\n0,-4\n",
     )
     .unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&m)
-        .args(["--at", "10"])
-        .assert()
-        .success();
+    run!("analyze", &m, "--at", "10").assert().success();
 }
 
 /// Issue 12, class 6: a long run is written in chunks (bounded memory) with the same rows as the
@@ -274,11 +235,7 @@ fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
     std::fs::write(&m, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n").unwrap();
     let out = dir.path().join("rows.csv");
     // 0.005° over a revolution: 72 000 rows, two chunks
-    camkin()
-        .arg("analyze")
-        .arg(&m)
-        .args(["--angles", "0:360:0.005", "-o"])
-        .arg(&out)
+    run!("analyze", &m, "--angles", "0:360:0.005", "-o", &out)
         .assert()
         .success();
     let mech = camkin_cli::mechfile::load(&m).unwrap();
@@ -318,14 +275,9 @@ fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
         2
     );
 
-    camkin()
-        .args(["analyze", "--angles", "0:1e7:1"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains(
+    run!("analyze", "--angles", "0:1e7:1").refused(
             "10000000 cam angles on this profile, with the follower's travel, would take about 11 s and 3.8 GB",
-        ))
-        .stderr(predicate::str::contains("--large"));
+        ).stderr(predicate::str::contains("--large"));
 }
 
 /// Issue 12, class 3 (regressions): an oscillating roller with `initial_angle_deg = 120` failed
@@ -345,10 +297,7 @@ fn any_initial_angle_and_a_small_roller_analyse_every_angle() {
         } else {
             &[]
         };
-        let a = camkin()
-            .arg("analyze")
-            .arg(&p)
-            .args(["--angles", "0:360:1"])
+        let a = run!("analyze", &p, "--angles", "0:360:1")
             .args(unit)
             .assert()
             .success();
@@ -411,10 +360,7 @@ fn uneven_points_under_uniform_parameterisation_warn_and_files_default_to_chord_
     let run = |name: &str, text: String| {
         let p = dir.path().join(name);
         std::fs::write(&p, text).unwrap();
-        let a = camkin()
-            .arg("analyze")
-            .arg(&p)
-            .args(["--angles", "0:360:5"])
+        let a = run!("analyze", &p, "--angles", "0:360:5")
             .assert()
             .success();
         let o = a.get_output();
@@ -498,9 +444,7 @@ fn sweeps_of_minutes_on_a_large_non_convex_profile_ask_first() {
             .collect();
         camkin()
             .args(&args)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains("would take about"))
+            .refused("would take about")
             .stderr(predicate::str::contains("--large"));
         assert!(!out.exists());
     }
@@ -522,11 +466,7 @@ fn mushroom_follower_is_a_roller_shifted_by_its_radius() {
     let rfile = dir.path().join("roller.toml");
     std::fs::write(&rfile, roller).unwrap();
     let run = |f: &std::path::Path| {
-        let out = camkin()
-            .arg("analyze")
-            .arg(f)
-            .args(["--angles", "0:360:5"])
-            .stdout_ok();
+        let out = run!("analyze", f, "--angles", "0:360:5").stdout_ok();
         parse_csv(&out).1
     };
     let (m, r) = (run(&file), run(&rfile));

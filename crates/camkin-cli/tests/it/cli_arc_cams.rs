@@ -8,12 +8,13 @@ use crate::common::*;
 #[test]
 fn the_tangent_cams_joins_are_reported_with_their_radii() {
     let dir = tempfile::tempdir().unwrap();
-    let out = camkin()
-        .arg("profile")
-        .arg(examples().join("tangent-cam.toml"))
-        .arg("--out")
-        .arg(dir.path().join("shop"))
-        .stdout_ok();
+    let out = run!(
+        "profile",
+        examples().join("tangent-cam.toml"),
+        "--out",
+        dir.path().join("shop")
+    )
+    .stdout_ok();
     let text = String::from_utf8(out).unwrap();
     let joins: Vec<&str> = text.lines().filter(|l| l.starts_with("  at (")).collect();
     assert_eq!(joins.len(), 4, "{text}");
@@ -37,12 +38,8 @@ fn a_chain_that_does_not_close_is_refused_at_its_last_piece() {
         "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"arcs-and-lines\"\nstart = [20.0, 0.0]\npieces = [\n  { to = [-20.0, 0.0], centre = [0.0, 0.0] },\n  { to = [19.0, 0.0] },\n]\n[follower]\nkind = \"translating-flat\"\ndirection = [1.0, 0.0]\n",
     )
     .unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&file)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("open.toml:9:"))
+    run!("analyze", &file)
+        .refused("open.toml:9:")
         .stderr(predicate::str::contains("cam.profile.pieces[1].to"))
         .stderr(predicate::str::contains("does not close"));
 }

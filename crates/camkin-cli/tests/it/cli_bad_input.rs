@@ -20,11 +20,7 @@ pub(crate) fn bad(name: &str, toml: &str, files: &[(&str, &str)], needles: &[&st
     let mech = dir.path().join("m.toml");
     std::fs::write(&mech, toml).unwrap();
     let out = dir.path().join("out.csv");
-    let a = camkin()
-        .arg("analyze")
-        .arg(&mech)
-        .args(["--at", "0,90", "-o"])
-        .arg(&out)
+    let a = run!("analyze", &mech, "--at", "0,90", "-o", &out)
         .assert()
         .code(2);
     let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
@@ -345,13 +341,7 @@ fn huge_inputs_are_refused_quickly() {
     std::fs::write(dir.path().join("big.csv"), &text).unwrap();
     let mech = dir.path().join("m.toml");
     std::fs::write(&mech, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1\n[cam.profile]\nkind = \"points-file\"\npath = \"big.csv\"\n[follower]\nkind = \"translating-flat\"\n").unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&mech)
-        .args(["--at", "0"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("more than 100000 points"));
+    run!("analyze", &mech, "--at", "0").refused("more than 100000 points");
 }
 
 #[test]
@@ -366,29 +356,14 @@ fn mechanism_file_size_limit_is_8_mib_exactly() {
     assert_eq!(text.len(), limit);
     let at_limit = dir.path().join("at.toml");
     std::fs::write(&at_limit, &text).unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&at_limit)
-        .args(["--at", "0"])
-        .assert()
-        .success();
+    run!("analyze", &at_limit, "--at", "0").assert().success();
     text.insert(text.len() - 1, 'x');
     let over = dir.path().join("over.toml");
     std::fs::write(&over, &text).unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&over)
-        .args(["--at", "0"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("more than 8388608 bytes (8 MiB)"));
+    run!("analyze", &over, "--at", "0").refused("more than 8388608 bytes (8 MiB)");
     // a device has no length in its metadata: the cap is counted while reading
     if std::path::Path::new("/dev/zero").exists() {
-        camkin()
-            .args(["analyze", "/dev/zero", "--at", "0"])
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains("more than 8388608 bytes"));
+        run!("analyze", "/dev/zero", "--at", "0").refused("more than 8388608 bytes");
     }
 }
 
@@ -401,10 +376,7 @@ fn degenerate_geometry_is_reported_not_hidden() {
         "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n",
     )
     .unwrap();
-    let a = camkin()
-        .arg("analyze")
-        .arg(&mech)
-        .args(["--angles", "0:360:2"])
+    let a = run!("analyze", &mech, "--angles", "0:360:2")
         .assert()
         .success();
     let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
@@ -429,10 +401,7 @@ fn degenerate_geometry_is_reported_not_hidden() {
         ),
     )
     .unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&roller)
-        .args(["--angles", "0:360:2"])
+    run!("analyze", &roller, "--angles", "0:360:2")
         .assert()
         .success()
         .stderr(predicate::str::contains("more sharply than the roller"));
@@ -557,10 +526,7 @@ fn extreme_speeds_are_refused_by_their_own_field() {
             ),
         )
         .unwrap();
-        let a = camkin()
-            .arg("analyze")
-            .arg(&mech)
-            .args(["--angles", "0:360:7"])
+        let a = run!("analyze", &mech, "--angles", "0:360:7")
             .assert()
             .success();
         let out = String::from_utf8(a.get_output().stdout.clone()).unwrap();

@@ -9,10 +9,7 @@ use crate::common::*;
 /// the pitch curve for a motion with `s(θ + 180°) = 20 − s(θ)`: the play is zero at every angle.
 #[test]
 fn the_examples_second_roller_has_no_play() {
-    let out = camkin()
-        .arg("analyze")
-        .arg(examples().join("conjugate-yoke.toml"))
-        .stdout_ok();
+    let out = run!("analyze", examples().join("conjugate-yoke.toml")).stdout_ok();
     let (header, rows) = parse_csv(&out);
     let col = columns(&header);
     assert_eq!(rows.len(), 360);
@@ -27,16 +24,18 @@ fn the_examples_second_roller_has_no_play() {
 /// each with its row satisfied by the motion (γ and the residual in mm/s²).
 #[test]
 fn contacts_lists_both_rollers() {
-    let out = camkin()
-        .arg("contacts")
-        .arg(examples().join("conjugate-yoke.toml"))
-        .args(["--angles", "0:360:5"])
-        .assert()
-        .success()
-        .stderr(predicate::str::contains("144 contacts at 72 cam angles"))
-        .get_output()
-        .stdout
-        .clone();
+    let out = run!(
+        "contacts",
+        examples().join("conjugate-yoke.toml"),
+        "--angles",
+        "0:360:5"
+    )
+    .assert()
+    .success()
+    .stderr(predicate::str::contains("144 contacts at 72 cam angles"))
+    .get_output()
+    .stdout
+    .clone();
     let (header, rows) = parse_csv(&out);
     let col = columns(&header);
     assert_eq!(rows.len(), 144);
@@ -75,32 +74,29 @@ fn dynamics_of_a_form_closed_follower() {
     let dir = with_dynamics();
     let mech = dir.path().join("m.toml");
     let out = dir.path().join("f");
-    camkin()
-        .arg("forces")
-        .arg(&mech)
-        .args(["--margin", "5", "--out"])
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains(
-            "--margin: the follower is form-closed (follower.conjugate)",
-        ));
+    run!("forces", &mech, "--margin", "5", "--out", &out)
+        .refused("--margin: the follower is form-closed (follower.conjugate)");
     assert!(!out.exists(), "forces wrote {out:?}");
-    camkin()
-        .arg("forces")
-        .arg(&mech)
-        .args(["--step", "2", "--face-width", "10", "--out"])
-        .arg(&out)
-        .assert()
-        .success()
-        // the cycloidal rise's and return's accelerations change sign at 90° and 270°
-        .stdout(predicate::str::contains(
-            "load reversals: 2 a revolution, where the load passes to the other curve (at 90°, 270°)",
-        ))
-        .stdout(predicate::str::contains("play of the second curve: none"))
-        .stdout(predicate::str::contains(
-            "contact stress on the second curve",
-        ));
+    run!(
+        "forces",
+        &mech,
+        "--step",
+        "2",
+        "--face-width",
+        "10",
+        "--out",
+        &out
+    )
+    .assert()
+    .success()
+    // the cycloidal rise's and return's accelerations change sign at 90° and 270°
+    .stdout(predicate::str::contains(
+        "load reversals: 2 a revolution, where the load passes to the other curve (at 90°, 270°)",
+    ))
+    .stdout(predicate::str::contains("play of the second curve: none"))
+    .stdout(predicate::str::contains(
+        "contact stress on the second curve",
+    ));
     let (fh, frows) = parse_csv(&std::fs::read(out.join("forces.csv")).unwrap());
     let fc = columns(&fh);
     let forces: Vec<(f64, f64, f64)> = frows
@@ -122,10 +118,7 @@ fn dynamics_of_a_form_closed_follower() {
             "{f:?}"
         );
     }
-    let a = camkin()
-        .arg("simulate")
-        .arg(&mech)
-        .args(["--step", "2"])
+    let a = run!("simulate", &mech, "--step", "2")
         .assert()
         .success()
         .stderr(predicate::str::contains("no lift-off"));
@@ -164,16 +157,8 @@ fn dynamics_of_a_form_closed_follower() {
         .replace("center = [-120.0, 0.0]", "center = [-119.8, 0.0]");
     std::fs::write(&tight, text).unwrap();
     let out = dir.path().join("s");
-    camkin()
-        .arg("simulate")
-        .arg(&tight)
-        .arg("--out")
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains(
-            "follower.conjugate: the second curve cuts 0.0002 m into the cam",
-        ));
+    run!("simulate", &tight, "--out", &out)
+        .refused("follower.conjugate: the second curve cuts 0.0002 m into the cam");
     assert!(!out.exists(), "simulate wrote {out:?}");
 }
 
@@ -195,7 +180,7 @@ fn a_bad_second_curve_is_placed_in_the_file() {
         let dir = tempfile::tempdir().unwrap();
         let mech = dir.path().join("m.toml");
         std::fs::write(&mech, format!("{base}{tail}")).unwrap();
-        let a = camkin().arg("analyze").arg(&mech).assert().code(2);
+        let a = run!("analyze", &mech).assert().code(2);
         let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
         for n in needles {
             assert!(err.contains(n), "{n:?} not in {err}");
@@ -209,16 +194,17 @@ fn a_bad_second_curve_is_placed_in_the_file() {
 #[test]
 fn synth_checks_the_conjugate_play() {
     let dir = tempfile::tempdir().unwrap();
-    camkin()
-        .arg("synth")
-        .arg(examples().join("conjugate-yoke.toml"))
-        .arg("--out")
-        .arg(dir.path().join("ok"))
-        .assert()
-        .success()
-        .stdout(predicate::str::contains(
-            "conjugate play: none: both curves touch everywhere",
-        ));
+    run!(
+        "synth",
+        examples().join("conjugate-yoke.toml"),
+        "--out",
+        dir.path().join("ok")
+    )
+    .assert()
+    .success()
+    .stdout(predicate::str::contains(
+        "conjugate play: none: both curves touch everywhere",
+    ));
     let text = std::fs::read_to_string(examples().join("conjugate-yoke.toml")).unwrap();
     let uneven = text.replace(
         "{ law = \"cycloidal\", rise = 20.0, degrees = 180 },",
@@ -227,11 +213,7 @@ fn synth_checks_the_conjugate_play() {
     assert_ne!(uneven, text);
     let mech = dir.path().join("uneven.toml");
     std::fs::write(&mech, uneven).unwrap();
-    camkin()
-        .arg("synth")
-        .arg(&mech)
-        .arg("--out")
-        .arg(dir.path().join("bad"))
+    run!("synth", &mech, "--out", dir.path().join("bad"))
         .assert()
         .code(3)
         .stdout(predicate::str::contains(
@@ -248,13 +230,14 @@ fn synth_checks_the_conjugate_play() {
 fn the_report_checks_the_conjugate_play() {
     let dir = tempfile::tempdir().unwrap();
     let page = dir.path().join("report.html");
-    camkin()
-        .arg("report")
-        .arg(examples().join("conjugate-yoke.toml"))
-        .arg("-o")
-        .arg(&page)
-        .assert()
-        .success();
+    run!(
+        "report",
+        examples().join("conjugate-yoke.toml"),
+        "-o",
+        &page
+    )
+    .assert()
+    .success();
     let html = std::fs::read_to_string(&page).unwrap();
     assert!(html.contains("conjugate play: none: both curves touch everywhere"));
 }
@@ -277,11 +260,7 @@ fn an_arms_play_is_in_degrees() {
         ),
     )
     .unwrap();
-    let out = camkin()
-        .arg("analyze")
-        .arg(&mech)
-        .args(["--angles", "0:360:10"])
-        .stdout_ok();
+    let out = run!("analyze", &mech, "--angles", "0:360:10").stdout_ok();
     let (header, rows) = parse_csv(&out);
     let col = columns(&header);
     assert_eq!(rows.len(), 36);

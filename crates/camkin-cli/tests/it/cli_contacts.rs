@@ -14,10 +14,7 @@ use std::collections::HashMap;
 #[test]
 fn gear_pair_has_two_to_four_contacts_each_with_its_row() {
     let pair = examples().join("gear-pair-20-42.toml");
-    let out = camkin()
-        .args(["contacts"])
-        .arg(&pair)
-        .args(["--angles", "0:18:0.25"])
+    let out = run!("contacts", &pair, "--angles", "0:18:0.25")
         .assert()
         .success()
         .stderr(predicate::str::contains("at most 4 at once"))
@@ -68,9 +65,7 @@ fn gear_pair_has_two_to_four_contacts_each_with_its_row() {
 
 #[test]
 fn json_has_the_csv_columns_and_the_paper_cam_one_contact() {
-    let out = camkin()
-        .args(["contacts", "--at", "0,33", "--format", "json"])
-        .stdout_ok();
+    let out = run!("contacts", "--at", "0,33", "--format", "json").stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 2);
@@ -83,22 +78,14 @@ fn json_has_the_csv_columns_and_the_paper_cam_one_contact() {
 
 #[test]
 fn refusals_name_the_value_and_exit_2() {
-    camkin()
-        .args(["contacts", "--angles", "0:10"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("0:10"));
-    camkin()
-        .args(["contacts", "no-such-file.toml"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("no-such-file.toml"));
+    run!("contacts", "--angles", "0:10").refused("0:10");
+    run!("contacts", "no-such-file.toml").refused("no-such-file.toml");
     // 3.6 million angles of a gear pair: hours of searching, refused with the estimate
-    camkin()
-        .arg("contacts")
-        .arg(examples().join("gear-pair-20-42.toml"))
-        .args(["--angles", "0:360:0.0001"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("would take about"));
+    run!(
+        "contacts",
+        examples().join("gear-pair-20-42.toml"),
+        "--angles",
+        "0:360:0.0001"
+    )
+    .refused("would take about");
 }

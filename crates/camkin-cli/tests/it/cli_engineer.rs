@@ -13,7 +13,7 @@ fn col(header: &[String], name: &str) -> usize {
 }
 
 fn analyze(args: &[&str]) -> (Vec<String>, Vec<Vec<f64>>) {
-    let out = camkin().arg("analyze").args(args).stdout_ok();
+    let out = run!("analyze").args(args).stdout_ok();
     let (h, rows) = parse_csv(&out);
     let rows = rows
         .iter()
@@ -38,12 +38,7 @@ fn a_missing_or_unknown_length_unit_is_refused_by_name() {
     ] {
         let p = dir.path().join("m.toml");
         std::fs::write(&p, bad).unwrap();
-        camkin()
-            .arg("analyze")
-            .arg(&p)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains(needle));
+        run!("analyze", &p).refused(needle);
     }
 }
 
@@ -163,12 +158,17 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
             .replace("speed_rpm = 1380.0", "speed_rpm = 1000.0"),
     )
     .unwrap();
-    let out = camkin()
-        .arg("forces")
-        .arg(&slow)
-        .args(["--target-rpm", "1000", "--face-width", "10", "--out"])
-        .arg(dir.path().join("out"))
-        .stdout_ok();
+    let out = run!(
+        "forces",
+        &slow,
+        "--target-rpm",
+        "1000",
+        "--face-width",
+        "10",
+        "--out",
+        dir.path().join("out")
+    )
+    .stdout_ok();
     let report = String::from_utf8(out).unwrap();
     let (m, e, k, f0) = (0.3, 0.01, 2000.0, 20.0);
     let w = 1000.0 * std::f64::consts::TAU / 60.0;
@@ -211,9 +211,7 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
     );
     assert!(svg.contains(&jump_label), "{jump_label} not in the page");
     // at the file's 1380 rpm the follower leaves the cam: exit 3, with the spring that would do
-    camkin()
-        .arg("forces")
-        .arg(&mech)
+    run!("forces", &mech)
         .assert()
         .code(3)
         .stdout(predicate::str::contains("preload ≥ "))
@@ -221,34 +219,30 @@ fn forces_of_the_eccentric_disc_are_the_closed_forms() {
             "the follower leaves the cam at 1350",
         ));
     // an allowable stress below the Hertz stress exits 3; bad materials exit 2
-    camkin()
-        .arg("forces")
-        .arg(&mech)
-        .args([
-            "--target-rpm",
-            "100",
-            "--face-width",
-            "10",
-            "--allowable",
-            "10",
-        ])
-        .assert()
-        .code(3)
-        .stderr(predicate::str::contains("exceeds the allowable"));
-    camkin()
-        .arg("forces")
-        .arg(&mech)
-        .args(["--face-width", "10", "--materials", "steel,unobtainium"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("unobtainium"));
+    run!(
+        "forces",
+        &mech,
+        "--target-rpm",
+        "100",
+        "--face-width",
+        "10",
+        "--allowable",
+        "10"
+    )
+    .assert()
+    .code(3)
+    .stderr(predicate::str::contains("exceeds the allowable"));
+    run!(
+        "forces",
+        &mech,
+        "--face-width",
+        "10",
+        "--materials",
+        "steel,unobtainium"
+    )
+    .refused("unobtainium");
     // a file without [dynamics] is refused by name
-    camkin()
-        .arg("forces")
-        .arg(examples().join("paper.toml"))
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("[dynamics]"));
+    run!("forces", examples().join("paper.toml")).refused("[dynamics]");
 }
 
 /// Regression (`forces --face-width` on a mushroom follower said "a knife-edge follower has no
@@ -273,11 +267,7 @@ fn forces_face_width_on_a_mushroom_follower_is_not_called_a_knife_edge() {
     let mut tables = Vec::new();
     for (name, file) in [("mushroom", &mushroom), ("roller", &roller)] {
         let out = dir.path().join(name);
-        camkin()
-            .arg("forces")
-            .arg(file)
-            .args(["--face-width", "10", "--out"])
-            .arg(&out)
+        run!("forces", file, "--face-width", "10", "--out", &out)
             .assert()
             .success()
             .stdout(predicate::str::contains(
@@ -308,14 +298,17 @@ fn forces_face_width_on_a_mushroom_follower_is_not_called_a_knife_edge() {
 #[test]
 fn manufacturing_files_follow_their_definitions() {
     let dir = tempfile::tempdir().unwrap();
-    camkin()
-        .arg("profile")
-        .arg(examples().join("eccentric-roller.toml"))
-        .args(["--tool-radius", "2.5", "--out"])
-        .arg(dir.path())
-        .assert()
-        .success()
-        .stdout(predicate::str::contains("cuts the whole profile"));
+    run!(
+        "profile",
+        examples().join("eccentric-roller.toml"),
+        "--tool-radius",
+        "2.5",
+        "--out",
+        dir.path()
+    )
+    .assert()
+    .success()
+    .stdout(predicate::str::contains("cuts the whole profile"));
     let (rr, e, r) = (4.0f64, 1.0f64, 1.0f64);
     let read = |name: &str| {
         let (h, rows) = parse_csv(&std::fs::read(dir.path().join(name)).unwrap());
@@ -351,11 +344,7 @@ fn manufacturing_files_follow_their_definitions() {
     }
     // the paper's cam: its arcs within the default tolerance (1e-6 of the size) of the spline
     let d2 = dir.path().join("paper");
-    camkin()
-        .arg("profile")
-        .arg(examples().join("paper.toml"))
-        .arg("--out")
-        .arg(&d2)
+    run!("profile", examples().join("paper.toml"), "--out", &d2)
         .assert()
         .success();
     let dxf = read_dxf(&std::fs::read_to_string(d2.join("profile.dxf")).unwrap());
@@ -379,14 +368,17 @@ fn manufacturing_files_follow_their_definitions() {
     // a cutter larger than the paper cam's concave radius cannot cut it: exit 3
     let peanut = dir.path().join("peanut.toml");
     std::fs::write(&peanut, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n").unwrap();
-    camkin()
-        .arg("profile")
-        .arg(&peanut)
-        .args(["--tool-radius", "3", "--out"])
-        .arg(dir.path().join("p"))
-        .assert()
-        .code(3)
-        .stdout(predicate::str::contains("UNDERCUT"));
+    run!(
+        "profile",
+        &peanut,
+        "--tool-radius",
+        "3",
+        "--out",
+        dir.path().join("p")
+    )
+    .assert()
+    .code(3)
+    .stdout(predicate::str::contains("UNDERCUT"));
 }
 
 /// `camkin deviation`: noisy, unevenly spaced points measured on the eccentric disc. Smoothed
@@ -415,14 +407,17 @@ fn measured_profiles_are_smoothed_within_the_noise() {
     }
     let meas = dir.path().join("measured.csv");
     std::fs::write(&meas, &text).unwrap();
-    let out = camkin()
-        .arg("deviation")
-        .arg(&meas)
-        .arg("--against")
-        .arg(examples().join("eccentric-roller.toml"))
-        .args(["--tolerance", "0.0006", "--out"])
-        .arg(dir.path().join("d"))
-        .stdout_ok();
+    let out = run!(
+        "deviation",
+        &meas,
+        "--against",
+        examples().join("eccentric-roller.toml"),
+        "--tolerance",
+        "0.0006",
+        "--out",
+        dir.path().join("d")
+    )
+    .stdout_ok();
     let report = String::from_utf8(out).unwrap();
     let frac = |what: &str| -> f64 {
         let line = report
@@ -480,15 +475,16 @@ fn measured_profiles_are_smoothed_within_the_noise() {
         text += &format!("{},{}\n", rad * ph.cos(), rad * ph.sin());
     }
     std::fs::write(&meas, &text).unwrap();
-    camkin()
-        .arg("deviation")
-        .arg(&meas)
-        .arg("--against")
-        .arg(examples().join("eccentric-roller.toml"))
-        .args(["--out"])
-        .arg(dir.path().join("b"))
-        .assert()
-        .success();
+    run!(
+        "deviation",
+        &meas,
+        "--against",
+        examples().join("eccentric-roller.toml"),
+        "--out",
+        dir.path().join("b")
+    )
+    .assert()
+    .success();
     let (_, rows) = parse_csv(&std::fs::read(dir.path().join("b/radius.csv")).unwrap());
     for r in &rows {
         let ph: f64 = r[0].parse::<f64>().unwrap().to_radians();
@@ -512,20 +508,17 @@ fn deviation_refuses_a_scan_of_part_of_the_cam() {
     }
     std::fs::write(&meas, &text).unwrap();
     let out = dir.path().join("out");
-    camkin()
-        .arg("deviation")
-        .arg(&meas)
-        .arg("--against")
-        .arg(examples().join("eccentric-roller.toml"))
-        .arg("--out")
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains(
-            "no point measured between polar angles",
-        ))
-        .stderr(predicate::str::contains("measure the whole profile round"))
-        .stderr(predicate::str::contains("--tolerance").not());
+    run!(
+        "deviation",
+        &meas,
+        "--against",
+        examples().join("eccentric-roller.toml"),
+        "--out",
+        &out
+    )
+    .refused("no point measured between polar angles")
+    .stderr(predicate::str::contains("measure the whole profile round"))
+    .stderr(predicate::str::contains("--tolerance").not());
     assert!(!out.exists());
 }
 
@@ -548,13 +541,7 @@ fn the_readmes_mechanism_file_runs_as_pasted() {
     for b in blocks {
         let p = dir.path().join("cam.toml");
         std::fs::write(&p, b).unwrap();
-        camkin()
-            .arg("analyze")
-            .arg(&p)
-            .arg("--at")
-            .arg("0")
-            .assert()
-            .success();
+        run!("analyze", &p, "--at", "0").assert().success();
     }
 }
 
@@ -607,9 +594,7 @@ fn forces_refuses_implausible_materials_widths_and_outputs_up_front() {
         (vec!["--face-width", "0"], vec!["--face-width", "0 mm"]),
         (vec!["--allowable", "-5"], vec!["--allowable", "-5 MPa"]),
     ] {
-        let out = camkin()
-            .arg("forces")
-            .arg(&mech)
+        let out = run!("forces", &mech)
             .args(&args)
             .assert()
             .code(2)
@@ -624,14 +609,7 @@ fn forces_refuses_implausible_materials_widths_and_outputs_up_front() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("taken");
     std::fs::write(&file, "keep me").unwrap();
-    camkin()
-        .arg("forces")
-        .arg(&mech)
-        .arg("--out")
-        .arg(&file)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("a file, not a folder"));
+    run!("forces", &mech, "--out", &file).refused("a file, not a folder");
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep me");
 }
 
@@ -650,10 +628,7 @@ fn forces_sizes_the_spring_from_the_motion_when_the_file_has_none() {
         .join("\n");
     let file = dir.path().join("nospring.toml");
     std::fs::write(&file, text).unwrap();
-    let out = camkin()
-        .arg("forces")
-        .arg(&file)
-        .args(["--target-rpm", "1000", "--margin", "5"])
+    let out = run!("forces", &file, "--target-rpm", "1000", "--margin", "5")
         .assert()
         .code(3);
     let stdout = String::from_utf8_lossy(&out.get_output().stdout).to_string();
@@ -690,7 +665,7 @@ fn a_constant_force_over_a_dwell_is_named_as_its_stretch() {
         + "\n[dynamics]\nmass = 0.3\nspring_stiffness = 20000.0\nspring_preload = 50.0\n";
     let file = dir.path().join("dwell.toml");
     std::fs::write(&file, text).unwrap();
-    let out = camkin().arg("forces").arg(&file).assert().success();
+    let out = run!("forces", &file).assert().success();
     let stdout = String::from_utf8_lossy(&out.get_output().stdout).to_string();
     assert!(stdout.contains("from 300° to 360° (constant)"), "{stdout}");
 }

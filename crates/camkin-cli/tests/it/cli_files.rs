@@ -94,9 +94,7 @@ fn an_output_onto_an_input_is_refused_for_every_command() {
         camkin()
             .current_dir(d)
             .args(&args)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains("an input of this run"))
+            .refused("an input of this run")
             .stderr(predicate::str::contains(named));
         assert_eq!(snapshot(d), before, "{args:?} changed a file");
     }
@@ -168,9 +166,7 @@ fn results_folders_change_whole_and_never_take_an_input_or_a_strangers_file() {
             .current_dir(d)
             .args(c)
             .arg(".")
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains("holds an input of this run"));
+            .refused("holds an input of this run");
         assert_eq!(snapshot(d), before, "{c:?}");
         // a folder with someone else's file
         let out = d.join(format!("out{k}"));
@@ -180,9 +176,7 @@ fn results_folders_change_whole_and_never_take_an_input_or_a_strangers_file() {
             .current_dir(d)
             .args(c)
             .arg(&out)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains("notes.txt"))
+            .refused("notes.txt")
             .stderr(predicate::str::contains("--force"));
         assert_eq!(
             std::fs::read_to_string(out.join("notes.txt")).unwrap(),

@@ -1,6 +1,5 @@
 //! `camkin forces GEAR.toml --torque T`: the loads along the whole path of contact, and the
 //! torque refused where it does not apply.
-use crate::common::predicate;
 use crate::common::*;
 
 /// The 20/42 pair (module 2 mm, 20°) under 50 N·m: the normal force T/r_b1, each row's load the
@@ -9,12 +8,17 @@ use crate::common::*;
 #[test]
 fn a_torque_loads_the_whole_path_of_contact() {
     let dir = tempfile::tempdir().unwrap();
-    let out = camkin()
-        .arg("forces")
-        .arg(examples().join("gear-pair-20-42.toml"))
-        .args(["--torque", "50", "--face-width", "20", "--out"])
-        .arg(dir.path().join("out"))
-        .stdout_ok();
+    let out = run!(
+        "forces",
+        examples().join("gear-pair-20-42.toml"),
+        "--torque",
+        "50",
+        "--face-width",
+        "20",
+        "--out",
+        dir.path().join("out")
+    )
+    .stdout_ok();
     let text = String::from_utf8(out).unwrap();
     let rb1 = 0.020 * 20f64.to_radians().cos();
     let force = 50.0 / rb1;
@@ -110,9 +114,7 @@ fn a_torque_where_it_does_not_apply_is_refused() {
             vec!["--oil", "--roughness"],
         ),
     ] {
-        let a = camkin()
-            .arg("forces")
-            .arg(examples().join(file))
+        let a = run!("forces", examples().join(file))
             .args(&args)
             .assert()
             .code(2);
@@ -122,12 +124,7 @@ fn a_torque_where_it_does_not_apply_is_refused() {
         }
     }
     // a gear pair without a torque still needs [dynamics] for the forces
-    camkin()
-        .arg("forces")
-        .arg(examples().join("gear-pair-20-42.toml"))
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("[dynamics]"));
+    run!("forces", examples().join("gear-pair-20-42.toml")).refused("[dynamics]");
 }
 
 /// The file's `[gear_loads]` loads the pair with no flag; `--torque` and `--power` replace it,
@@ -143,12 +140,7 @@ fn the_files_gear_loads_and_a_power() {
     )
     .unwrap();
     let run = |args: &[&str]| {
-        let a = camkin()
-            .arg("forces")
-            .arg(&file)
-            .args(args)
-            .assert()
-            .success();
+        let a = run!("forces", &file).args(args).assert().success();
         String::from_utf8(a.get_output().stdout.clone()).unwrap()
     };
     let from_file = run(&[]);
@@ -160,10 +152,7 @@ fn the_files_gear_loads_and_a_power() {
     let other = run(&["--torque", "20"]);
     assert!(other.contains("torque 20 N·m"), "{other}");
     // --torque and --power together: clap's usage error
-    camkin()
-        .arg("forces")
-        .arg(&file)
-        .args(["--torque", "2", "--power", "3"])
+    run!("forces", &file, "--torque", "2", "--power", "3")
         .assert()
         .code(2);
 }

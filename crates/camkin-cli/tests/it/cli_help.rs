@@ -77,11 +77,7 @@ fn the_commands_that_exit_3_are_the_listed_ones() {
         .replace("base_radius = 40.0          # mm", "base_radius = 8.0");
     let file = dir.path().join("tight.toml");
     std::fs::write(&file, text).unwrap();
-    let code = camkin()
-        .arg("synth")
-        .arg(&file)
-        .arg("--out")
-        .arg(dir.path().join("s"))
+    let code = run!("synth", &file, "--out", dir.path().join("s"))
         .assert()
         .get_output()
         .status
@@ -111,21 +107,20 @@ fn flags_say_what_is_wrong_with_them() {
             "--angle-unit",
         ),
     ] {
-        let out = camkin()
-            .arg(args[0])
-            .arg(&paper)
-            .args(&args[1..])
-            .assert()
-            .code(2);
+        let out = run!(args[0], &paper).args(&args[1..]).assert().code(2);
         let err = String::from_utf8_lossy(&out.get_output().stderr).to_string();
         assert!(err.contains(says), "{args:?}: {err}");
         assert!(!err.contains("unexpected argument"), "{args:?}: {err}");
     }
     // an arm takes either unit
-    camkin()
-        .args(["analyze"])
-        .arg(examples().join("oscillating-roller.toml"))
-        .args(["--at", "0", "--angle-unit", "rad"])
-        .assert()
-        .success();
+    run!(
+        "analyze",
+        examples().join("oscillating-roller.toml"),
+        "--at",
+        "0",
+        "--angle-unit",
+        "rad"
+    )
+    .assert()
+    .success();
 }

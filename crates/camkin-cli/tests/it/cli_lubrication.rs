@@ -1,5 +1,4 @@
 //! `camkin forces --oil …`: the lubrication table, page and summary, and its bad input.
-use crate::common::predicate;
 use crate::common::*;
 use std::path::Path;
 
@@ -26,20 +25,19 @@ fn slow_disc(dir: &Path) -> std::path::PathBuf {
 #[test]
 fn the_lubrication_table_is_the_discs_closed_form() {
     let dir = tempfile::tempdir().unwrap();
-    let out = camkin()
-        .arg("forces")
-        .arg(slow_disc(dir.path()))
-        .args([
-            "--face-width",
-            "10",
-            "--oil",
-            "sae-30@100c",
-            "--roughness",
-            "0.2,0.3",
-            "--out",
-        ])
-        .arg(dir.path().join("out"))
-        .stdout_ok();
+    let out = run!(
+        "forces",
+        slow_disc(dir.path()),
+        "--face-width",
+        "10",
+        "--oil",
+        "sae-30@100c",
+        "--roughness",
+        "0.2,0.3",
+        "--out",
+        dir.path().join("out")
+    )
+    .stdout_ok();
     let report = String::from_utf8(out).unwrap();
     for needle in [
         "lubrication (η₀ = 8.894 mPa·s, α = 20 1/GPa, Dowson–Higginson film",
@@ -214,9 +212,7 @@ fn bad_lubrication_input_is_refused_naming_the_flag() {
             vec!["--oil", "\"castor\" is not a lubricant", "sae-30@100c"],
         ),
     ] {
-        let a = camkin()
-            .arg("forces")
-            .arg(&disc)
+        let a = run!("forces", &disc)
             .args(&args)
             .arg("--out")
             .arg(&out)
@@ -238,20 +234,17 @@ fn bad_lubrication_input_is_refused_naming_the_flag() {
         ),
     )
     .unwrap();
-    camkin()
-        .arg("forces")
-        .arg(&knife)
-        .args([
-            "--face-width",
-            "10",
-            "--oil",
-            "sae-30@100c",
-            "--roughness",
-            "0.2,0.3",
-        ])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("--face-width"));
+    run!(
+        "forces",
+        &knife,
+        "--face-width",
+        "10",
+        "--oil",
+        "sae-30@100c",
+        "--roughness",
+        "0.2,0.3"
+    )
+    .refused("--face-width");
 }
 
 /// A `[lubrication]` section gives what the flags would (the same `lubrication.csv`, byte for
@@ -265,9 +258,7 @@ fn a_lubrication_section_is_the_flags_in_the_file() {
     let section = "\n[lubrication]\noil = \"sae-30@100c\"\nroughness_um = [0.2, 0.3]\nface_width = 10.0\nfriction = [0.12, 0.04]\nmaterials = \"steel,bronze\"\n";
     std::fs::write(&with, std::fs::read_to_string(&disc).unwrap() + section).unwrap();
     let run = |file: &Path, args: &[&str], out: &str| {
-        camkin()
-            .arg("forces")
-            .arg(file)
+        run!("forces", file)
             .args(args)
             .arg("--out")
             .arg(dir.path().join(out))
@@ -329,12 +320,7 @@ fn a_lubrication_section_is_the_flags_in_the_file() {
         .position(|l| l.starts_with("roughness_um"))
         .unwrap()
         + 1;
-    camkin()
-        .arg("forces")
-        .arg(&bad)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains(format!(
-            "bad.toml:{line}:22: lubrication.roughness_um[1] = -1"
-        )));
+    run!("forces", &bad).refused(format!(
+        "bad.toml:{line}:22: lubrication.roughness_um[1] = -1"
+    ));
 }

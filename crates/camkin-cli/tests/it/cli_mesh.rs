@@ -25,8 +25,7 @@ fn num(r: &[String], col: &HashMap<String, usize>, name: &str) -> f64 {
 /// point), written here from m, z and α alone.
 #[test]
 fn default_is_the_ideal_pair_with_its_handover_where_the_line_of_action_ends() {
-    let out = camkin()
-        .arg("mesh")
+    let out = run!("mesh")
         .assert()
         .success()
         .stderr(predicate::str::contains("contact ratio 1.6399"))
@@ -87,11 +86,7 @@ fn default_is_the_ideal_pair_with_its_handover_where_the_line_of_action_ends() {
 fn tip_relief_table_units_plot_and_cold_queries_agree() {
     let dir = tempfile::tempdir().unwrap();
     let file = examples().join("gear-pair-tip-relief.toml");
-    let out = camkin()
-        .arg("mesh")
-        .arg(&file)
-        .args(["--angles", "0:18:0.25", "--plot"])
-        .arg(dir.path())
+    let out = run!("mesh", &file, "--angles", "0:18:0.25", "--plot", dir.path())
         .assert()
         .success()
         .stderr(predicate::str::contains("peak to peak"))
@@ -119,11 +114,7 @@ fn tip_relief_table_units_plot_and_cold_queries_agree() {
     }
     // cold queries at some of the same angles
     let at = "0.25,3.75,7.5,12.75";
-    let cold = camkin()
-        .arg("mesh")
-        .arg(&file)
-        .args(["--at", at])
-        .stdout_ok();
+    let cold = run!("mesh", &file, "--at", at).stdout_ok();
     let (c2, cold) = table(&cold);
     for r in &cold {
         let a = num(r, &c2, "angle_deg");
@@ -148,9 +139,7 @@ fn tip_relief_table_units_plot_and_cold_queries_agree() {
 
 #[test]
 fn json_keeps_counts_and_flags_as_numbers_and_booleans() {
-    let out = camkin()
-        .args(["mesh", "--at", "0,9", "--format", "json"])
-        .stdout_ok();
+    let out = run!("mesh", "--at", "0,9", "--format", "json").stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let r = &v[1];
     assert!(r["on_flanks"].is_boolean(), "{r}");
@@ -164,14 +153,8 @@ fn json_keeps_counts_and_flags_as_numbers_and_booleans() {
 fn not_a_gear_pair_is_refused_and_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("mesh.csv");
-    camkin()
-        .arg("mesh")
-        .arg(examples().join("paper.toml"))
-        .arg("-o")
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("not a gear pair"))
+    run!("mesh", examples().join("paper.toml"), "-o", &out)
+        .refused("not a gear pair")
         .stderr(predicate::str::contains(
             "cam.profile.kind = \"involute-gear\"",
         ));
@@ -192,12 +175,8 @@ fn interfering_or_distant_gears_are_refused_naming_the_distance() {
     )
     .unwrap();
     for cmd in ["analyze", "mesh", "contacts"] {
-        camkin()
-            .arg(cmd)
-            .arg(&fzg)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains("fzg.toml:12:9: follower.pivot"))
+        run!(cmd, &fzg)
+            .refused("fzg.toml:12:9: follower.pivot")
             .stderr(predicate::str::contains(
                 "tight-mesh (zero-backlash) distance 91.500078596",
             ))
@@ -210,12 +189,8 @@ fn interfering_or_distant_gears_are_refused_naming_the_distance() {
         text.replace("pivot = [62.0, 0.0]", "pivot = [70.0, 0.0]"),
     )
     .unwrap();
-    camkin()
-        .args(["mesh"])
-        .arg(&far)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("no path of contact"))
+    run!("mesh", &far)
+        .refused("no path of contact")
         .stderr(predicate::str::contains("at most 63.3917"));
     let low = dir.path().join("low.toml");
     std::fs::write(
@@ -223,10 +198,7 @@ fn interfering_or_distant_gears_are_refused_naming_the_distance() {
         text.replace("pivot = [62.0, 0.0]", "pivot = [64.0, 0.0]"),
     )
     .unwrap();
-    camkin()
-        .args(["mesh"])
-        .arg(&low)
-        .args(["--angles", "0:18:1"])
+    run!("mesh", &low, "--angles", "0:18:1")
         .assert()
         .success()
         .stderr(predicate::str::contains(

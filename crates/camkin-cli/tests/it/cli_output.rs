@@ -90,18 +90,11 @@ fn an_output_path_that_cannot_be_written_is_exit_2_in_every_command() {
     for args in runs {
         camkin()
             .args(&args)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains("a-file"))
+            .refused("a-file")
             .stderr(predicate::str::contains("panicked").not());
     }
     // a directory where the file should go
-    camkin()
-        .args(["analyze", "--at", "0", "-o"])
-        .arg(dir.path())
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("cannot write"));
+    run!("analyze", "--at", "0", "-o", dir.path()).refused("cannot write");
 }
 
 #[test]
@@ -111,8 +104,7 @@ fn standard_output_that_cannot_be_written_is_exit_1() {
         eprintln!("no /dev/full on this system: skipped");
         return;
     };
-    camkin()
-        .args(["analyze", "--at", "0,1,2"])
+    run!("analyze", "--at", "0,1,2")
         .stdout_to(full)
         .assert()
         .code(1)

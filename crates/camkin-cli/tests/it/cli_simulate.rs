@@ -12,16 +12,18 @@ fn example(name: &str) -> PathBuf {
 
 #[test]
 fn stiff_spring_stays_on_the_cam_and_follows_the_kinematics() {
-    let out = camkin()
-        .arg("simulate")
-        .arg(example("paper-dynamics.toml"))
-        .args(["--revolutions", "1"])
-        .assert()
-        .success()
-        .stderr(predicate::str::contains("no lift-off"))
-        .get_output()
-        .stdout
-        .clone();
+    let out = run!(
+        "simulate",
+        example("paper-dynamics.toml"),
+        "--revolutions",
+        "1"
+    )
+    .assert()
+    .success()
+    .stderr(predicate::str::contains("no lift-off"))
+    .get_output()
+    .stdout
+    .clone();
     let text = String::from_utf8(out).unwrap();
     let mut lines = text.lines();
     let header = lines.next().unwrap();
@@ -53,15 +55,20 @@ fn stiff_spring_stays_on_the_cam_and_follows_the_kinematics() {
 #[test]
 fn lift_off_and_impacts_are_reported_and_written() {
     let dir = tempfile::tempdir().unwrap();
-    camkin()
-        .arg("simulate")
-        .arg(example("eccentric-flat-dynamics.toml"))
-        .args(["--start-angle", "180", "--revolutions", "1", "--out"])
-        .arg(dir.path())
-        .assert()
-        .success()
-        .stderr(predicate::str::contains("lift-off"))
-        .stderr(predicate::str::contains("impact"));
+    run!(
+        "simulate",
+        example("eccentric-flat-dynamics.toml"),
+        "--start-angle",
+        "180",
+        "--revolutions",
+        "1",
+        "--out",
+        dir.path()
+    )
+    .assert()
+    .success()
+    .stderr(predicate::str::contains("lift-off"))
+    .stderr(predicate::str::contains("impact"));
     let events = std::fs::read_to_string(dir.path().join("events.csv")).unwrap();
     assert!(events.starts_with("event,time_s,cam_angle_deg,impact_velocity_mm_s"));
     let lift: f64 = events
@@ -102,11 +109,17 @@ fn lift_off_and_impacts_are_reported_and_written() {
 
 #[test]
 fn json_has_samples_and_events() {
-    let out = camkin()
-        .arg("simulate")
-        .arg(example("eccentric-flat-dynamics.toml"))
-        .args(["--start-angle", "180", "--step", "2", "--format", "json"])
-        .stdout_ok();
+    let out = run!(
+        "simulate",
+        example("eccentric-flat-dynamics.toml"),
+        "--start-angle",
+        "180",
+        "--step",
+        "2",
+        "--format",
+        "json"
+    )
+    .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     assert_eq!(v["samples"].as_array().unwrap().len(), 181);
     assert!(v["events"]
@@ -178,20 +191,18 @@ fn bad_dynamics_input_exits_2() {
     for (i, (text, needle)) in cases.iter().enumerate() {
         let p = dir.path().join(format!("m{i}.toml"));
         std::fs::write(&p, text).unwrap();
-        camkin()
-            .arg("simulate")
-            .arg(&p)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains(*needle))
+        run!("simulate", &p)
+            .refused(*needle)
             .stderr(predicate::str::contains("panicked").not());
     }
-    camkin()
-        .arg("simulate")
-        .arg(example("eccentric-flat-dynamics.toml"))
-        .args(["--revolutions", "0"])
-        .assert()
-        .code(2);
+    run!(
+        "simulate",
+        example("eccentric-flat-dynamics.toml"),
+        "--revolutions",
+        "0"
+    )
+    .assert()
+    .code(2);
 }
 
 /// Issue 12, class 6: a simulation estimated at hours is refused up front with the estimate and
@@ -200,16 +211,18 @@ fn bad_dynamics_input_exits_2() {
 fn an_hours_long_simulation_asks_first() {
     let m =
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-dynamics.toml");
-    camkin()
-        .arg("simulate")
-        .arg(&m)
-        .args(["--revolutions", "10000", "--substeps", "1000"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("3.6e9 steps"))
-        // 25 µs a step, and the kinematic sweep beside the 3.6 million rows at 1 µs an angle
-        .stderr(predicate::str::contains("would take about 90004 s"))
-        .stderr(predicate::str::contains("--large"));
+    run!(
+        "simulate",
+        &m,
+        "--revolutions",
+        "10000",
+        "--substeps",
+        "1000"
+    )
+    .refused("3.6e9 steps")
+    // 25 µs a step, and the kinematic sweep beside the 3.6 million rows at 1 µs an angle
+    .stderr(predicate::str::contains("would take about 90004 s"))
+    .stderr(predicate::str::contains("--large"));
 }
 
 /// Issue 16: the one-coordinate model's cost is the library's estimate (six cold searches of 1 ms
@@ -219,17 +232,18 @@ fn an_hours_long_simulation_asks_first() {
 #[test]
 fn a_long_gear_simulation_is_refused_with_the_librarys_estimate() {
     let dir = tempfile::tempdir().unwrap();
-    camkin()
-        .arg("simulate")
-        .arg(example("gear-pair-backlash.toml"))
-        .args(["--revolutions", "100", "--out"])
-        .arg(dir.path().join("out"))
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("36000 steps of this mechanism"))
-        // the library's 432 s of steps and the sweep beside them: 37 441 angles at 0.2 ms
-        .stderr(predicate::str::contains("would take about 440 s"))
-        .stderr(predicate::str::contains("--large"));
+    run!(
+        "simulate",
+        example("gear-pair-backlash.toml"),
+        "--revolutions",
+        "100",
+        "--out",
+        dir.path().join("out")
+    )
+    .refused("36000 steps of this mechanism")
+    // the library's 432 s of steps and the sweep beside them: 37 441 angles at 0.2 ms
+    .stderr(predicate::str::contains("would take about 440 s"))
+    .stderr(predicate::str::contains("--large"));
     assert!(!dir.path().join("out").exists(), "nothing written");
 }
 
@@ -243,11 +257,7 @@ fn a_cam_whose_contact_jumps_is_simulated_with_jump_events() {
     let p = dir.path().join("m.toml");
     std::fs::write(&p, text).unwrap();
     let out = dir.path().join("run");
-    camkin()
-        .arg("simulate")
-        .arg(&p)
-        .arg("--out")
-        .arg(&out)
+    run!("simulate", &p, "--out", &out)
         .assert()
         .success()
         .stderr(predicate::str::contains("jump"))

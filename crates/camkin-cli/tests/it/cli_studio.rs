@@ -1,17 +1,14 @@
 //! `camkin report` and `camkin serve` as a newcomer runs them: the report is one file that needs
 //! nothing else; bad input exits 2 with the reason and leaves no file.
 
-use crate::common::{camkin, examples, predicate};
+use crate::common::run;
+use crate::common::{examples, predicate};
 
 #[test]
 fn the_report_is_one_file_that_fetches_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("review.html");
-    camkin()
-        .arg("report")
-        .arg(examples().join("paper-dynamics.toml"))
-        .arg("-o")
-        .arg(&out)
+    run!("report", examples().join("paper-dynamics.toml"), "-o", &out)
         .assert()
         .success()
         .stderr(predicate::str::contains("no network needed"));
@@ -42,29 +39,10 @@ fn bad_report_input_exits_2_and_writes_nothing() {
     )
     .unwrap();
     let out = dir.path().join("r.html");
-    camkin()
-        .args(["report"])
-        .arg(&bad)
-        .arg("-o")
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("bad.toml:6:13"));
-    camkin()
-        .args(["report", "--step", "0.01", "-o"])
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("--step: 0.01°"));
-    camkin()
-        .args(["report", "--pressure-limit", "90", "-o"])
-        .arg(&out)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("--pressure-limit"));
-    camkin()
-        .args(["report", "-o"])
-        .arg(dir.path().join("no/such/dir/r.html"))
+    run!("report", &bad, "-o", &out).refused("bad.toml:6:13");
+    run!("report", "--step", "0.01", "-o", &out).refused("--step: 0.01°");
+    run!("report", "--pressure-limit", "90", "-o", &out).refused("--pressure-limit");
+    run!("report", "-o", dir.path().join("no/such/dir/r.html"))
         .assert()
         .code(2);
     assert!(!out.exists());
@@ -74,14 +52,6 @@ fn bad_report_input_exits_2_and_writes_nothing() {
 fn serve_refuses_a_port_in_use_and_a_missing_file() {
     let taken = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     let port = taken.local_addr().unwrap().port().to_string();
-    camkin()
-        .args(["serve", "--port", &port])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("pass --port"));
-    camkin()
-        .args(["serve", "no-such-file.toml", "--port", "0"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("no-such-file.toml"));
+    run!("serve", "--port", &port).refused("pass --port");
+    run!("serve", "no-such-file.toml", "--port", "0").refused("no-such-file.toml");
 }

@@ -46,11 +46,7 @@ fn csv(p: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
 fn paper_writes_data_plots_and_summary() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("study");
-    let assert = camkin()
-        .args(["paper", "--out"])
-        .arg(&out)
-        .assert()
-        .success();
+    let assert = run!("paper", "--out", &out).assert().success();
     let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
     assert!(stdout.contains("| 10000 |"), "{stdout}");
     assert!(
@@ -110,10 +106,16 @@ fn paper_writes_data_plots_and_summary() {
 #[test]
 fn paper_json_summary() {
     let dir = tempfile::tempdir().unwrap();
-    let out = camkin()
-        .args(["paper", "--step", "1", "--format", "json", "--out"])
-        .arg(dir.path())
-        .stdout_ok();
+    let out = run!(
+        "paper",
+        "--step",
+        "1",
+        "--format",
+        "json",
+        "--out",
+        dir.path()
+    )
+    .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     for cam in ["original", "revised"] {
         for n in ["100", "1000", "10000"] {
@@ -125,11 +127,17 @@ fn paper_json_summary() {
 
 #[test]
 fn compare_json_has_errors_keyed_by_n() {
-    let out = camkin()
-        .args(["compare"])
-        .arg(examples().join("paper-revised.toml"))
-        .args(["--nodes", "100,1000", "--step", "0.5", "--format", "json"])
-        .stdout_ok();
+    let out = run!(
+        "compare",
+        examples().join("paper-revised.toml"),
+        "--nodes",
+        "100,1000",
+        "--step",
+        "0.5",
+        "--format",
+        "json"
+    )
+    .stdout_ok();
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let m100 = v["max_rel_error"]["100"].as_f64().unwrap();
     let m1000 = v["max_rel_error"]["1000"].as_f64().unwrap();
@@ -145,11 +153,17 @@ fn compare_every_example_and_csv_format() {
         "oscillating-flat",
         "oscillating-roller",
     ] {
-        let out = camkin()
-            .arg("compare")
-            .arg(examples().join(format!("{name}.toml")))
-            .args(["--nodes", "50,500", "--step", "1", "--format", "csv"])
-            .stdout_ok();
+        let out = run!(
+            "compare",
+            examples().join(format!("{name}.toml")),
+            "--nodes",
+            "50,500",
+            "--step",
+            "1",
+            "--format",
+            "csv"
+        )
+        .stdout_ok();
         let text = String::from_utf8(out).unwrap();
         assert!(text.starts_with("cam,nodes,max_rel_error"), "{text}");
         assert_eq!(text.lines().count(), 3, "{name}");
@@ -159,13 +173,20 @@ fn compare_every_example_and_csv_format() {
 #[test]
 fn compare_writes_plots_with_zoom() {
     let dir = tempfile::tempdir().unwrap();
-    camkin()
-        .arg("compare")
-        .arg(examples().join("oscillating-roller.toml"))
-        .args(["--nodes", "100", "--step", "1", "--zoom", "5:10", "--out"])
-        .arg(dir.path())
-        .assert()
-        .success();
+    run!(
+        "compare",
+        examples().join("oscillating-roller.toml"),
+        "--nodes",
+        "100",
+        "--step",
+        "1",
+        "--zoom",
+        "5:10",
+        "--out",
+        dir.path()
+    )
+    .assert()
+    .success();
     for base in [
         "displacement",
         "acceleration",
@@ -191,27 +212,15 @@ fn study_bad_input_exits_2() {
         (vec!["--step", "0.7"], "divide"),
         (vec!["--zoom", "10:5"], "--zoom"),
     ] {
-        camkin()
-            .arg("compare")
-            .arg(&paper)
-            .args(&args)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains(needle));
+        run!("compare", &paper).args(&args).refused(needle);
     }
-    camkin()
-        .args(["compare", "no-such.toml"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("cannot read"));
-    camkin().args(["paper", "--step", "-1"]).assert().code(2);
+    run!("compare", "no-such.toml").refused("cannot read");
+    run!("paper", "--step", "-1").assert().code(2);
 }
 
 #[test]
 fn bench_runs_and_reports_every_key() {
-    let out = camkin()
-        .args(["bench", "--repeats", "1", "--json"])
-        .stdout_ok();
+    let out = run!("bench", "--repeats", "1", "--json").stdout_ok();
     let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
     for key in [
         "single_query_ns",
@@ -231,16 +240,14 @@ fn bench_runs_and_reports_every_key() {
     assert!(c["position"].as_f64().unwrap() < 2e-14, "{j}");
     assert!(c["velocity"].as_f64().unwrap() < 1e-10, "{j}");
     assert!(c["acceleration"].as_f64().unwrap() < 1e-7, "{j}");
-    camkin().args(["bench", "--repeats", "0"]).assert().code(2);
+    run!("bench", "--repeats", "0").assert().code(2);
 }
 
 /// `bench --instructions` counts a cold query, a warm step and a full-state step under callgrind
 /// (scripts/test installs valgrind); without valgrind it refuses before timing anything.
 #[test]
 fn bench_counts_instructions_with_callgrind() {
-    let out = camkin()
-        .args(["bench", "--repeats", "1", "--json", "--instructions"])
-        .stdout_ok();
+    let out = run!("bench", "--repeats", "1", "--json", "--instructions").stdout_ok();
     let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let n = |k: &str| {
         j["instructions"][k]
@@ -258,9 +265,7 @@ fn bench_counts_instructions_with_callgrind() {
     camkin()
         .env("PATH", "")
         .args(["bench", "--repeats", "1", "--instructions"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("valgrind was not found"));
+        .refused("valgrind was not found");
 }
 
 /// Issue 12, class 6: a study estimated at over 30 s, or 1 GB of memory or of files, is
@@ -291,9 +296,7 @@ fn studies_that_would_take_minutes_or_gigabytes_ask_first() {
             .collect();
         camkin()
             .args(&args)
-            .assert()
-            .code(2)
-            .stderr(predicate::str::contains(needle))
+            .refused(needle)
             .stderr(predicate::str::contains("--large"));
         assert!(!out.exists(), "{args:?} wrote {}", out.display());
     }

@@ -9,12 +9,7 @@ use std::path::PathBuf;
 fn synth_writes_a_profile_a_dxf_reader_opens() {
     let dir = tempfile::tempdir().unwrap();
     let mech = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/motion-roller.toml");
-    let out = camkin()
-        .arg("synth")
-        .arg(&mech)
-        .arg("--out")
-        .arg(dir.path())
-        .stdout_ok();
+    let out = run!("synth", &mech, "--out", dir.path()).stdout_ok();
     let report = String::from_utf8(out).unwrap();
     assert!(report.contains("round trip"), "{report}");
     // the round trip's acceleration error, as a fraction of the peak, is tiny
@@ -86,11 +81,7 @@ fn design_checks_catch_cams_built_to_violate_them() {
         2.0,
         60.0,
     );
-    camkin()
-        .arg("synth")
-        .arg(&m)
-        .arg("--out")
-        .arg(dir.path().join("a"))
+    run!("synth", &m, "--out", dir.path().join("a"))
         .assert()
         .code(3)
         .stderr(predicate::str::contains("design checks failed: round trip"))
@@ -106,11 +97,7 @@ fn design_checks_catch_cams_built_to_violate_them() {
         2.0,
         60.0,
     );
-    camkin()
-        .arg("synth")
-        .arg(&m)
-        .arg("--out")
-        .arg(dir.path().join("u"))
+    run!("synth", &m, "--out", dir.path().join("u"))
         .assert()
         .code(3)
         .stderr(predicate::str::contains("undercut"))
@@ -125,11 +112,7 @@ fn design_checks_catch_cams_built_to_violate_them() {
         3.0,
         60.0,
     );
-    camkin()
-        .arg("synth")
-        .arg(&m)
-        .arg("--out")
-        .arg(dir.path().join("b"))
+    run!("synth", &m, "--out", dir.path().join("b"))
         .assert()
         .code(3)
         .stderr(predicate::str::contains(
@@ -142,14 +125,7 @@ fn design_checks_catch_cams_built_to_violate_them() {
 #[test]
 fn synth_needs_a_motion_profile() {
     let mech = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper.toml");
-    camkin()
-        .arg("synth")
-        .arg(&mech)
-        .arg("--out")
-        .arg(tempfile::tempdir().unwrap().path())
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("kind = \"motion\""));
+    run!("synth", &mech, "--out", tempfile::tempdir().unwrap().path()).refused("kind = \"motion\"");
 }
 
 /// Regression (issue 12): a program with no acceleration (constant velocity) was reported as
@@ -163,11 +139,7 @@ fn round_trip_of_a_program_without_acceleration_is_not_failed() {
         "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40.0\nsegments = [{ law = \"constant-velocity\", rise = 10.0, degrees = 180 }, { law = \"constant-velocity\", rise = -10.0, degrees = 180 }]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n",
     )
     .unwrap();
-    camkin()
-        .arg("synth")
-        .arg(&m)
-        .arg("--out")
-        .arg(dir.path().join("o"))
+    run!("synth", &m, "--out", dir.path().join("o"))
         .assert()
         .success()
         .stdout(predicate::str::contains("the program has no acceleration"))
@@ -180,16 +152,16 @@ fn round_trip_of_a_program_without_acceleration_is_not_failed() {
 fn a_profile_of_gigabytes_asks_first() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("s");
-    camkin()
-        .arg("synth")
-        .arg(examples().join("motion-roller.toml"))
-        .arg("--out")
-        .arg(&out)
-        .args(["--step", "0.00004"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("s and 1.5 GB"))
-        .stderr(predicate::str::contains("--large"));
+    run!(
+        "synth",
+        examples().join("motion-roller.toml"),
+        "--out",
+        &out,
+        "--step",
+        "0.00004"
+    )
+    .refused("s and 1.5 GB")
+    .stderr(predicate::str::contains("--large"));
     assert!(!out.exists());
 }
 
@@ -209,15 +181,17 @@ fn concave_stretches_a_roller_fits_in_are_no_undercut() {
         rise,
         beta,
     );
-    let a = camkin()
-        .arg("synth")
-        .arg(&m)
-        .arg("--out")
-        .arg(dir.path().join("c"))
-        .args(["--pressure-limit", "35"])
-        .assert()
-        .success()
-        .stdout(predicate::str::contains("undercut: none"));
+    let a = run!(
+        "synth",
+        &m,
+        "--out",
+        dir.path().join("c"),
+        "--pressure-limit",
+        "35"
+    )
+    .assert()
+    .success()
+    .stdout(predicate::str::contains("undercut: none"));
     let out = String::from_utf8(a.get_output().stdout.clone()).unwrap();
     let line = out
         .lines()
@@ -257,13 +231,14 @@ fn concave_stretches_a_roller_fits_in_are_no_undercut() {
 #[test]
 fn the_profile_svg_is_drawn_to_scale() {
     let dir = tempfile::tempdir().unwrap();
-    camkin()
-        .arg("synth")
-        .arg(examples().join("motion-roller.toml"))
-        .arg("--out")
-        .arg(dir.path())
-        .assert()
-        .success();
+    run!(
+        "synth",
+        examples().join("motion-roller.toml"),
+        "--out",
+        dir.path()
+    )
+    .assert()
+    .success();
     let svg = std::fs::read_to_string(dir.path().join("profile.svg")).unwrap();
     let attr = |name: &str| -> String {
         let at = svg.find(&format!("{name}=\"")).unwrap() + name.len() + 2;
@@ -306,11 +281,7 @@ fn the_profile_svg_is_drawn_to_scale() {
 fn the_svaj_page_names_a_dwells_extreme_as_its_stretch() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("cam");
-    camkin()
-        .arg("synth")
-        .arg(examples().join("design-a-cam.toml"))
-        .arg("--out")
-        .arg(&out)
+    run!("synth", examples().join("design-a-cam.toml"), "--out", &out)
         .assert()
         .success();
     let svg = std::fs::read_to_string(out.join("svaj.svg")).unwrap();

@@ -8,12 +8,14 @@ use std::f64::consts::TAU;
 
 #[test]
 fn the_valve_train_file_is_analysed_as_a_system() {
-    let out = camkin()
-        .arg("analyze")
-        .arg(examples().join("valve-train-kinematics.toml"))
-        .args(["--angles", "0:360:15"])
-        .assert()
-        .success();
+    let out = run!(
+        "analyze",
+        examples().join("valve-train-kinematics.toml"),
+        "--angles",
+        "0:360:15"
+    )
+    .assert()
+    .success();
     let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -87,12 +89,8 @@ fn a_bad_system_file_exits_2_naming_the_element() {
         );
     std::fs::write(&f, &text).unwrap();
     let line = text.lines().position(|l| l.contains("\"vlave\"")).unwrap() + 1;
-    camkin()
-        .arg("analyze")
-        .arg(&f)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains(format!("s.toml:{line}:")))
+    run!("analyze", &f)
+        .refused(format!("s.toml:{line}:"))
         .stderr(predicate::str::contains("contact[1].bodies"))
         .stderr(predicate::str::contains("\"vlave\""));
 }
@@ -145,20 +143,10 @@ speed_rpm = 60.0
     let f = dir.path().join("s.toml");
     // it closes with a coupler of 35 (10 + 35 > 30 + 25 > …)
     std::fs::write(&f, four_bar(35.0)).unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&f)
-        .args(["--at", "0,90"])
-        .assert()
-        .success();
+    run!("analyze", &f, "--at", "0,90").assert().success();
     std::fs::write(&f, four_bar(3.0)).unwrap();
-    camkin()
-        .arg("analyze")
-        .arg(&f)
-        .args(["--at", "0,90"])
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains("cannot be"))
+    run!("analyze", &f, "--at", "0,90")
+        .refused("cannot be")
         .stderr(predicate::str::contains("joint \""));
     let spring = format!(
         "{}[[spring]]\nname = \"return spring\"\nbodies = [\"rocker\", \"rocker\"]\nat = [[5.0, 0.0], [5.0, 0.0]]\nstiffness = 10.0\nfree_length = 20.0\n",
@@ -170,12 +158,8 @@ speed_rpm = 60.0
         .position(|l| l.starts_with("at = [[5.0"))
         .unwrap()
         + 1;
-    camkin()
-        .arg("analyze")
-        .arg(&f)
-        .assert()
-        .code(2)
-        .stderr(predicate::str::contains(format!("s.toml:{line}:")))
+    run!("analyze", &f)
+        .refused(format!("s.toml:{line}:"))
         .stderr(predicate::str::contains("spring[0].at"))
         .stderr(predicate::str::contains("one point of \"rocker\""));
 }
@@ -187,14 +171,18 @@ fn a_system_is_drawn_at_its_driver_angles() {
     let dir = tempfile::tempdir().unwrap();
     for example in ["valve-train-kinematics.toml", "gear-train.toml"] {
         let out = dir.path().join(example);
-        camkin()
-            .arg("plot")
-            .arg(examples().join(example))
-            .arg("--out")
-            .arg(&out)
-            .args(["--at", "0,90", "--frames", "8"])
-            .assert()
-            .success();
+        run!(
+            "plot",
+            examples().join(example),
+            "--out",
+            &out,
+            "--at",
+            "0,90",
+            "--frames",
+            "8"
+        )
+        .assert()
+        .success();
         for f in [
             "drawing_0.svg",
             "drawing_0.png",
@@ -324,12 +312,14 @@ fn a_cam_file_as_a_system_gives_the_cam_paths_motion() {
 #[test]
 fn a_cam_rocker_and_slider_against_the_program_and_the_loop() {
     use std::f64::consts::PI;
-    let out = camkin()
-        .arg("analyze")
-        .arg(examples().join("cam-rocker-slider.toml"))
-        .args(["--angles", "0:360:1.5"])
-        .assert()
-        .success();
+    let out = run!(
+        "analyze",
+        examples().join("cam-rocker-slider.toml"),
+        "--angles",
+        "0:360:1.5"
+    )
+    .assert()
+    .success();
     let (header, rows) = parse_csv(&out.get_output().stdout);
     let col = columns(&header);
     let w = 600.0 * TAU / 60.0;
@@ -434,12 +424,7 @@ fn a_cam_rocker_and_slider_against_the_program_and_the_loop() {
 fn a_systems_contacts_are_rows_that_the_accelerations_meet() {
     let file = examples().join("valve-train-kinematics.toml");
     let run = |cmd: &str| {
-        let out = camkin()
-            .arg(cmd)
-            .arg(&file)
-            .args(["--angles", "0:360:10"])
-            .assert()
-            .success();
+        let out = run!(cmd, &file, "--angles", "0:360:10").assert().success();
         parse_csv(&out.get_output().stdout)
     };
     let (ch, crows) = run("contacts");
@@ -513,9 +498,7 @@ fn unit_flags_a_system_cannot_honour_are_refused() {
             "--angle-unit rad",
         ),
     ] {
-        let out = camkin()
-            .arg("analyze")
-            .arg(examples().join(file))
+        let out = run!("analyze", examples().join(file))
             .args(&extra)
             .args(["--at", "0"])
             .assert()
@@ -530,12 +513,15 @@ fn unit_flags_a_system_cannot_honour_are_refused() {
 /// so on stderr; the table still holds the first contact.
 #[test]
 fn a_form_closed_follower_as_a_system_says_its_second_curve_is_left_out() {
-    let out = camkin()
-        .arg("analyze")
-        .arg(examples().join("conjugate-yoke.toml"))
-        .args(["--system", "--at", "0,90"])
-        .assert()
-        .success();
+    let out = run!(
+        "analyze",
+        examples().join("conjugate-yoke.toml"),
+        "--system",
+        "--at",
+        "0,90"
+    )
+    .assert()
+    .success();
     let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
     assert!(
         err.contains("warning") && err.contains("second curve is left out"),

@@ -68,11 +68,7 @@ fn system() -> (tempfile::TempDir, std::path::PathBuf) {
 fn a_discs_contact_force_and_torque_are_the_closed_forms() {
     let (dir, path) = system();
     let out_dir = dir.path().join("out");
-    let out = camkin()
-        .arg("forces")
-        .arg(&path)
-        .args(["--step", "1", "--out"])
-        .arg(&out_dir)
+    let out = run!("forces", &path, "--step", "1", "--out", &out_dir)
         .assert()
         .success();
     let (m, e, k, p) = (0.2, 5.0, 2.0, 20.0);
@@ -128,10 +124,7 @@ fn the_checks_exit_3_and_the_files_flags_exit_2() {
     let (_dir, path) = system();
     // the no-follow speed: m e ω² − k e = P, ω = √((P + k e) / (m e))
     let jump = ((20.0 + 10.0) / (0.2 * 0.005f64)).sqrt() * 60.0 / TAU;
-    let out = camkin()
-        .arg("forces")
-        .arg(&path)
-        .args(["--target-rpm", "2000"])
+    let out = run!("forces", &path, "--target-rpm", "2000")
         .assert()
         .code(3);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
@@ -142,19 +135,11 @@ fn the_checks_exit_3_and_the_files_flags_exit_2() {
         .and_then(|s| s.parse().ok())
         .unwrap_or_else(|| panic!("{stderr}"));
     assert!((at - jump).abs() <= 1.0, "{at} rpm, closed form {jump} rpm");
-    camkin()
-        .arg("forces")
-        .arg(&path)
-        .args(["--target-rpm", "1600"])
+    run!("forces", &path, "--target-rpm", "1600")
         .assert()
         .success();
     // the force's least, 20 − 6.05 N, under a margin of 15 N
-    let out = camkin()
-        .arg("forces")
-        .arg(&path)
-        .args(["--margin", "15"])
-        .assert()
-        .code(3);
+    let out = run!("forces", &path, "--margin", "15").assert().code(3);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(
         stderr.contains("\"disc on face\"") && stderr.contains("margin 15 N"),
@@ -164,31 +149,28 @@ fn the_checks_exit_3_and_the_files_flags_exit_2() {
         (vec!["--face-width", "8"], "--face-width 8"),
         (vec!["--materials", "steel,bronze"], "--materials"),
     ] {
-        let out = camkin()
-            .arg("forces")
-            .arg(&path)
-            .args(flags)
-            .assert()
-            .code(2);
+        let out = run!("forces", &path).args(flags).assert().code(2);
         let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
         assert!(stderr.contains(says), "{stderr}");
     }
     // the sweep's work is in the estimate: refused up front
-    let out = camkin()
-        .arg("forces")
-        .arg(examples().join("valve-train.toml"))
-        .args(["--target-rpm", "1000000", "--step", "0.05"])
-        .assert()
-        .code(2);
+    let out = run!(
+        "forces",
+        examples().join("valve-train.toml"),
+        "--target-rpm",
+        "1000000",
+        "--step",
+        "0.05"
+    )
+    .assert()
+    .code(2);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(
         stderr.contains("simulated steps") && stderr.contains("--large"),
         "{stderr}"
     );
     // a system without [dynamics]: its forces come from a simulation
-    let out = camkin()
-        .arg("forces")
-        .arg(examples().join("two-followers.toml"))
+    let out = run!("forces", examples().join("two-followers.toml"))
         .assert()
         .code(2);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
@@ -208,13 +190,16 @@ fn a_systems_lubrication_against_the_discs_closed_forms() {
         "curve_b = { kind = \"line\", anchor = [0.0, 0.0], direction = [1.0, 0.0] }\nface_width = 10.0\n",
     ) + "\n[lubrication]\noil = \"sae-30@100c\"\nroughness_um = [0.2, 0.3]\n";
     std::fs::write(&path, text).unwrap();
-    let out = camkin()
-        .arg("forces")
-        .arg(&path)
-        .args(["--step", "1", "--out"])
-        .arg(dir.path().join("out"))
-        .assert()
-        .success();
+    let out = run!(
+        "forces",
+        &path,
+        "--step",
+        "1",
+        "--out",
+        dir.path().join("out")
+    )
+    .assert()
+    .success();
     let stdout = String::from_utf8_lossy(&out.get_output().stdout).to_string();
     assert!(
         stdout.contains("lubrication of \"disc on face\": λ min"),
@@ -246,12 +231,7 @@ fn a_systems_lubrication_against_the_discs_closed_forms() {
         assert_eq!(row[c["contact"]], "disc on face");
     }
     for flag in [["--oil", "sae-30@100c"], ["--roughness", "0.1,0.1"]] {
-        let out = camkin()
-            .arg("forces")
-            .arg(&path)
-            .args(flag)
-            .assert()
-            .code(2);
+        let out = run!("forces", &path).args(flag).assert().code(2);
         let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
         assert!(
             stderr.contains(flag[0]) && stderr.contains("[lubrication]"),

@@ -25,10 +25,7 @@ fn valve_train_at(rpm: f64) -> (tempfile::TempDir, std::path::PathBuf) {
 fn a_slow_valve_train_seats_at_its_ramps_speed_and_lifts_as_its_program_says() {
     let rpm = 300.0;
     let (_dir, path) = valve_train_at(rpm);
-    let out = camkin()
-        .arg("simulate")
-        .arg(&path)
-        .args(["--step", "0.25", "--substeps", "4"])
+    let out = run!("simulate", &path, "--step", "0.25", "--substeps", "4")
         .assert()
         .success();
     let (header, rows) = parse_csv(&out.get_output().stdout);
@@ -112,7 +109,7 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
     ] {
         let path = dir.path().join("bad.toml");
         std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
-        let out = camkin().arg("simulate").arg(&path).assert().code(2);
+        let out = run!("simulate", &path).assert().code(2);
         let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
         assert!(stderr.contains(says), "{to}: {stderr}");
     }
@@ -128,7 +125,7 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         ),
     )
     .unwrap();
-    let out = camkin().arg("simulate").arg(&path).assert().code(2);
+    let out = run!("simulate", &path).assert().code(2);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(
         stderr.contains("contact[0].curve_a.segments[3].law")
@@ -143,19 +140,23 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         format!("{text}\n[[spring]]\nname = \"loose\"\nstiffness = 1.0\nfree_length = 1.0\n"),
     )
     .unwrap();
-    let out = camkin().arg("simulate").arg(&path).assert().code(2);
+    let out = run!("simulate", &path).assert().code(2);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(
         stderr.contains("spring") && stderr.contains("bodies"),
         "{stderr}"
     );
     // work over the limit: refused up front with its estimate
-    let out = camkin()
-        .arg("simulate")
-        .arg(examples().join("valve-train.toml"))
-        .args(["--revolutions", "5000", "--step", "0.25"])
-        .assert()
-        .code(2);
+    let out = run!(
+        "simulate",
+        examples().join("valve-train.toml"),
+        "--revolutions",
+        "5000",
+        "--step",
+        "0.25"
+    )
+    .assert()
+    .code(2);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(
         stderr.contains("simulated steps") && stderr.contains("--large"),
@@ -166,9 +167,7 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         (["--start-angle", "10"], "--start-angle"),
         (["--format", "json"], "--format json"),
     ] {
-        let out = camkin()
-            .arg("simulate")
-            .arg(examples().join("valve-train.toml"))
+        let out = run!("simulate", examples().join("valve-train.toml"))
             .args(flags)
             .assert()
             .code(2);
@@ -176,12 +175,14 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         assert!(stderr.contains(says), "{stderr}");
     }
     // a step the stiffest element refuses: named, with the substeps that would do
-    let out = camkin()
-        .arg("simulate")
-        .arg(examples().join("valve-train.toml"))
-        .args(["--step", "2"])
-        .assert()
-        .code(2);
+    let out = run!(
+        "simulate",
+        examples().join("valve-train.toml"),
+        "--step",
+        "2"
+    )
+    .assert()
+    .code(2);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(
         stderr.contains("lash adjuster") && stderr.contains("--substeps 3"),
@@ -195,12 +196,16 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
 /// `--out` writes the time series, the events and the lift, force and deviation pages.
 #[test]
 fn the_no_follow_speed_and_the_pages() {
-    let out = camkin()
-        .arg("simulate")
-        .arg(examples().join("valve-train.toml"))
-        .args(["--no-follow", "1000:6000:500", "--step", "0.5"])
-        .assert()
-        .success();
+    let out = run!(
+        "simulate",
+        examples().join("valve-train.toml"),
+        "--no-follow",
+        "1000:6000:500",
+        "--step",
+        "0.5"
+    )
+    .assert()
+    .success();
     let text = String::from_utf8_lossy(&out.get_output().stdout).to_string();
     let rpm: f64 = text
         .split("no-follow speed: ")
@@ -215,14 +220,16 @@ fn the_no_follow_speed_and_the_pages() {
     assert!(text.contains("\"cam on roller\""), "{text}");
     let dir = tempfile::tempdir().unwrap();
     let pages = dir.path().join("vt");
-    camkin()
-        .arg("simulate")
-        .arg(examples().join("valve-train.toml"))
-        .args(["--step", "0.5"])
-        .arg("--out")
-        .arg(&pages)
-        .assert()
-        .success();
+    run!(
+        "simulate",
+        examples().join("valve-train.toml"),
+        "--step",
+        "0.5",
+        "--out",
+        &pages
+    )
+    .assert()
+    .success();
     for f in [
         "time_series.csv",
         "events.csv",
@@ -246,12 +253,14 @@ fn the_no_follow_speed_and_the_pages() {
 /// millimetres in it.
 #[test]
 fn the_cams_hertz_pressure_on_its_base_circle_is_the_closed_forms() {
-    let out = camkin()
-        .arg("simulate")
-        .arg(examples().join("valve-train.toml"))
-        .args(["--step", "0.5"])
-        .assert()
-        .success();
+    let out = run!(
+        "simulate",
+        examples().join("valve-train.toml"),
+        "--step",
+        "0.5"
+    )
+    .assert()
+    .success();
     let (header, rows) = parse_csv(&out.get_output().stdout);
     let col = columns(&header);
     let e_star = 206e9 / (2.0 * (1.0 - 0.3 * 0.3));
@@ -285,10 +294,7 @@ fn a_gas_force_table_pushes_the_valve() {
     let seat_at_start = |extra: &str| {
         let path = dir.path().join("gas.toml");
         std::fs::write(&path, format!("{text}\n{extra}")).unwrap();
-        let out = camkin()
-            .arg("simulate")
-            .arg(&path)
-            .args(["--step", "0.25", "--revolutions", "0.01"])
+        let out = run!("simulate", &path, "--step", "0.25", "--revolutions", "0.01")
             .assert()
             .success();
         let (header, rows) = parse_csv(&out.get_output().stdout);
@@ -307,7 +313,7 @@ fn a_gas_force_table_pushes_the_valve() {
         format!("{text}\n[[gas_force]]\nname = \"cylinder\"\nbody = \"valve\"\ndirection = [0.0, -1.0]\ntable = [[360.0, 50.0], [10.0, 5.0]]\n"),
     )
     .unwrap();
-    let out = camkin().arg("simulate").arg(&path).assert().code(2);
+    let out = run!("simulate", &path).assert().code(2);
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(stderr.contains("gas_force[0].table"), "{stderr}");
 }

@@ -11,6 +11,17 @@ pub fn camkin() -> Cmd {
     Cmd(Command::new(env!("CARGO_BIN_EXE_camkin")))
 }
 
+/// The `camkin` binary with these arguments (each anything a command line takes: `&str`,
+/// `String`, a path), ready to run: `run!("analyze", &file, "--at", "0").stdout_ok()`.
+macro_rules! run {
+    ($($a:expr),* $(,)?) => {{
+        let mut c = $crate::common::camkin();
+        $(c.arg($a);)*
+        c
+    }};
+}
+pub(crate) use run;
+
 /// The repository's `examples/` folder.
 pub fn examples() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
@@ -58,6 +69,13 @@ impl Cmd {
     /// Runs the command to its end, checks that it succeeded, and returns its standard output.
     pub fn stdout_ok(&mut self) -> Vec<u8> {
         self.assert().success().get_output().stdout.clone()
+    }
+    /// Runs the command to its end and checks that it refused its input (exit code 2) with a
+    /// message holding `needle`; the run for more checks.
+    pub fn refused(&mut self, needle: impl Into<String>) -> Assert {
+        self.assert()
+            .code(2)
+            .stderr(predicate::str::contains(needle))
     }
     /// Runs the command to its end, stdin closed.
     pub fn assert(&mut self) -> Assert {

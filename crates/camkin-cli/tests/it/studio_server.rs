@@ -3,7 +3,8 @@
 //! download equal to `camkin analyze` (a simulated system's to `camkin simulate`, its force
 //! panel the same numbers).
 
-use crate::common::{camkin, examples};
+use crate::common::examples;
+use crate::common::run;
 use camkin_cli::studio::server::{serve, Session};
 use camkin_cli::studio::source::Source;
 use camkin_cli::studio::Limits;
@@ -349,12 +350,15 @@ fn the_csv_download_is_what_camkin_analyze_writes() {
     assert_eq!(s, 200);
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("a.csv");
-    camkin()
-        .arg("analyze")
-        .arg(examples().join("paper.toml"))
-        .args(["--angles", "0:360:0.5", "-o"])
-        .arg(&out)
-        .assert();
+    run!(
+        "analyze",
+        examples().join("paper.toml"),
+        "--angles",
+        "0:360:0.5",
+        "-o",
+        &out
+    )
+    .assert();
     let expected = std::fs::read_to_string(&out).unwrap_or_default();
     assert_eq!(csv, expected);
 }
@@ -598,12 +602,7 @@ fn a_simulated_systems_force_panel_and_csv_are_camkin_simulates() {
         &json!({"toml": text, "step_deg": 0.5}).to_string(),
     );
     assert_eq!(s, 200, "{csv}");
-    let out = camkin()
-        .arg("simulate")
-        .arg(&path)
-        .args(["--step", "0.5"])
-        .assert()
-        .success();
+    let out = run!("simulate", &path, "--step", "0.5").assert().success();
     let expected = String::from_utf8_lossy(&out.get_output().stdout).to_string();
     assert_eq!(csv, expected);
     let (s, v) = post(
