@@ -116,9 +116,7 @@ fn bad_input_exits_2_with_a_message_naming_the_problem() {
 
 #[test]
 fn follower_that_never_touches_is_bad_input() {
-    let dir = tempfile::tempdir().unwrap();
-    let p = dir.path().join("far.toml");
-    std::fs::write(&p, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 5.0\n").unwrap();
+    let (_dir, p) = written("far.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 5.0\n");
     run!("analyze", &p, "--at", "0")
         .refused("follower.offset = 5")
         .stderr(predicate::str::contains("misses the cam"));
@@ -128,9 +126,7 @@ fn follower_that_never_touches_is_bad_input() {
 fn rows_where_the_follower_misses_carry_the_error() {
     // an eccentric circle (axis distances 0.2 to 1.8) and a knife line at 1.5: it touches only
     // while the cam's far side passes
-    let dir = tempfile::tempdir().unwrap();
-    let p = dir.path().join("some.toml");
-    std::fs::write(&p, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0.8, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 1.5\n").unwrap();
+    let (_dir, p) = written("some.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 10\n[cam.profile]\nkind = \"circle\"\ncenter = [0.8, 0]\nradius = 1\n[follower]\nkind = \"translating-knife\"\noffset = 1.5\n");
     let out = run!("analyze", &p, "--at", "0,90")
         .assert()
         .success()
@@ -214,9 +210,7 @@ fn congruent_angles_give_the_same_row() {
 /// points-file header whose words hold `inf` or `nan` (`x_info,y_info`).
 #[test]
 fn dotted_keys_and_wordy_headers_are_valid() {
-    let dir = tempfile::tempdir().unwrap();
-    let m = dir.path().join("dotted.toml");
-    std::fs::write(&m, "length_unit = \"mm\"\ncam.speed_rpm = 1000.0\ncam.profile.kind = \"points-file\"\ncam.profile.path = \"p.csv\"\nfollower.kind = \"translating-flat\"\n").unwrap();
+    let (dir, m) = written("dotted.toml", "length_unit = \"mm\"\ncam.speed_rpm = 1000.0\ncam.profile.kind = \"points-file\"\ncam.profile.path = \"p.csv\"\nfollower.kind = \"translating-flat\"\n");
     std::fs::write(
         dir.path().join("p.csv"),
         "x_info,y_info\n4,0\n0,4\n-4,0\n0,-4\n",
@@ -230,9 +224,7 @@ fn dotted_keys_and_wordy_headers_are_valid() {
 /// 1 GiB is refused up front with the estimate unless `--large`.
 #[test]
 fn long_runs_stream_the_same_rows_and_huge_ones_ask_first() {
-    let dir = tempfile::tempdir().unwrap();
-    let m = dir.path().join("peanut.toml");
-    std::fs::write(&m, "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n").unwrap();
+    let (dir, m) = written("peanut.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n");
     let out = dir.path().join("rows.csv");
     // 0.005° over a revolution: 72 000 rows, two chunks
     run!("analyze", &m, "--angles", "0:360:0.005", "-o", &out)
@@ -462,9 +454,7 @@ fn mushroom_follower_is_a_roller_shifted_by_its_radius() {
         "kind = \"translating\"\n",
         "kind = \"translating-roller\"\nroller_radius = 60.0\n",
     );
-    let dir = tempfile::tempdir().unwrap();
-    let rfile = dir.path().join("roller.toml");
-    std::fs::write(&rfile, roller).unwrap();
+    let (_dir, rfile) = written("roller.toml", roller);
     let run = |f: &std::path::Path| {
         let out = run!("analyze", f, "--angles", "0:360:5").stdout_ok();
         parse_csv(&out).1

@@ -31,13 +31,7 @@ fn the_tangent_cams_joins_are_reported_with_their_radii() {
 
 #[test]
 fn a_chain_that_does_not_close_is_refused_at_its_last_piece() {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("open.toml");
-    std::fs::write(
-        &file,
-        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"arcs-and-lines\"\nstart = [20.0, 0.0]\npieces = [\n  { to = [-20.0, 0.0], centre = [0.0, 0.0] },\n  { to = [19.0, 0.0] },\n]\n[follower]\nkind = \"translating-flat\"\ndirection = [1.0, 0.0]\n",
-    )
-    .unwrap();
+    let (_dir, file) = written("open.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100.0\n[cam.profile]\nkind = \"arcs-and-lines\"\nstart = [20.0, 0.0]\npieces = [\n  { to = [-20.0, 0.0], centre = [0.0, 0.0] },\n  { to = [19.0, 0.0] },\n]\n[follower]\nkind = \"translating-flat\"\ndirection = [1.0, 0.0]\n");
     run!("analyze", &file)
         .refused("open.toml:9:")
         .stderr(predicate::str::contains("cam.profile.pieces[1].to"))

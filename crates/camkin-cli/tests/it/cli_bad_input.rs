@@ -369,13 +369,7 @@ fn mechanism_file_size_limit_is_8_mib_exactly() {
 
 #[test]
 fn degenerate_geometry_is_reported_not_hidden() {
-    let dir = tempfile::tempdir().unwrap();
-    let mech = dir.path().join("peanut.toml");
-    std::fs::write(
-        &mech,
-        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n",
-    )
-    .unwrap();
+    let (_dir, mech) = written("peanut.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000\n[cam.profile]\nkind = \"spline\"\npoints = [[4.0, 0.0], [3.0, 2.4], [0.5, 1.1], [-2.0, 2.4], [-3.5, 0.1], [-2.2, -2.5], [0.6, -1.0], [3.1, -2.3]]\n[follower]\nkind = \"translating-flat\"\n");
     let a = run!("analyze", &mech, "--angles", "0:360:2")
         .assert()
         .success();
@@ -516,16 +510,13 @@ fn extreme_speeds_are_refused_by_their_own_field() {
         );
     }
     for rpm in ["1e60", "1e-60"] {
-        let dir = tempfile::tempdir().unwrap();
-        let mech = dir.path().join("m.toml");
-        std::fs::write(
-            &mech,
+        let (_dir, mech) = written(
+            "m.toml",
             format!(
                 "{}{FLAT}",
                 CIRCLE.replace("speed_rpm = 100", &format!("speed_rpm = {rpm}"))
             ),
-        )
-        .unwrap();
+        );
         let a = run!("analyze", &mech, "--angles", "0:360:7")
             .assert()
             .success();

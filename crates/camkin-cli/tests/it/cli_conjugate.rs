@@ -177,9 +177,7 @@ fn a_bad_second_curve_is_placed_in_the_file() {
             vec!["follower.conjugate: the second curve must touch the cam from the other side"],
         ),
     ] {
-        let dir = tempfile::tempdir().unwrap();
-        let mech = dir.path().join("m.toml");
-        std::fs::write(&mech, format!("{base}{tail}")).unwrap();
+        let (_dir, mech) = written("m.toml", format!("{base}{tail}"));
         let a = run!("analyze", &mech).assert().code(2);
         let err = String::from_utf8(a.get_output().stderr.clone()).unwrap();
         for n in needles {

@@ -44,15 +44,12 @@ fn a_missing_or_unknown_length_unit_is_refused_by_name() {
 
 #[test]
 fn every_column_carries_the_files_unit_and_inches_work() {
-    let dir = tempfile::tempdir().unwrap();
-    let p = dir.path().join("in.toml");
-    std::fs::write(
-        &p,
+    let (_dir, p) = written(
+        "in.toml",
         std::fs::read_to_string(examples().join("eccentric-roller.toml"))
             .unwrap()
             .replace("length_unit = \"cm\"", "length_unit = \"in\""),
-    )
-    .unwrap();
+    );
     let (h, _) = analyze(&[p.to_str().unwrap(), "--at", "0"]);
     for c in &h {
         let unitless = [
@@ -606,9 +603,7 @@ fn forces_refuses_implausible_materials_widths_and_outputs_up_front() {
         }
         assert!(out.stdout.is_empty(), "{args:?}: refused before any output");
     }
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("taken");
-    std::fs::write(&file, "keep me").unwrap();
+    let (_dir, file) = written("taken", "keep me");
     run!("forces", &mech, "--out", &file).refused("a file, not a folder");
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep me");
 }

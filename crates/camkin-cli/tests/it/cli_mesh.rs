@@ -167,13 +167,7 @@ fn not_a_gear_pair_is_refused_and_writes_nothing() {
 /// with failures about tip corners or a negative contact ratio; a ratio below 1 is warned of.
 #[test]
 fn interfering_or_distant_gears_are_refused_naming_the_distance() {
-    let dir = tempfile::tempdir().unwrap();
-    let fzg = dir.path().join("fzg.toml");
-    std::fs::write(
-        &fzg,
-        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000.0\n[cam.profile]\nkind = \"involute-gear\"\nmodule = 4.5\nteeth = 16\npressure_angle_deg = 20.0\nprofile_shift = 0.1817\n[follower]\nkind = \"rotating\"\npivot = [91.5, 0.0]\nclosing = \"ccw\"\ninitial_angle_deg = 187.5\n[follower.profile]\nkind = \"involute-gear\"\nmodule = 4.5\nteeth = 24\npressure_angle_deg = 20.0\nprofile_shift = 0.1715\n",
-    )
-    .unwrap();
+    let (dir, fzg) = written("fzg.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 1000.0\n[cam.profile]\nkind = \"involute-gear\"\nmodule = 4.5\nteeth = 16\npressure_angle_deg = 20.0\nprofile_shift = 0.1817\n[follower]\nkind = \"rotating\"\npivot = [91.5, 0.0]\nclosing = \"ccw\"\ninitial_angle_deg = 187.5\n[follower.profile]\nkind = \"involute-gear\"\nmodule = 4.5\nteeth = 24\npressure_angle_deg = 20.0\nprofile_shift = 0.1715\n");
     for cmd in ["analyze", "mesh", "contacts"] {
         run!(cmd, &fzg)
             .refused("fzg.toml:12:9: follower.pivot")

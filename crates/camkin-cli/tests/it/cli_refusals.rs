@@ -263,13 +263,10 @@ fn errors_name_the_key_and_value_the_user_wrote() {
         &[],
         &["cam.profile.segments: 1001 segments is more than the 1000"],
     );
-    let dir = tempfile::tempdir().unwrap();
-    let m = dir.path().join("m.toml");
-    std::fs::write(
-        &m,
+    let (_dir, m) = written(
+        "m.toml",
         format!("{CIRCLE}[follower]\nkind = \"translating-flat\"\ndirection = [1e-300, 0]\n"),
-    )
-    .unwrap();
+    );
     run!("analyze", &m, "--at", "0").assert().success();
 }
 
@@ -301,9 +298,7 @@ fn a_mechanism_too_large_to_index_is_refused_before_it_is_built() {
         &[],
         &["cam.profile", "would take about", "GB", "--large"],
     );
-    let dir = tempfile::tempdir().unwrap();
-    let mech = dir.path().join("m.toml");
-    std::fs::write(&mech, &toml).unwrap();
+    let (dir, mech) = written("m.toml", &toml);
     for args in [
         vec!["report", "-o"],
         vec!["plot", "--out"],

@@ -2,7 +2,7 @@
 //! nothing else; bad input exits 2 with the reason and leaves no file.
 
 use crate::common::run;
-use crate::common::{examples, predicate};
+use crate::common::{examples, predicate, written};
 
 #[test]
 fn the_report_is_one_file_that_fetches_nothing() {
@@ -29,15 +29,12 @@ fn the_report_is_one_file_that_fetches_nothing() {
 
 #[test]
 fn bad_report_input_exits_2_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
-    let bad = dir.path().join("bad.toml");
-    std::fs::write(
-        &bad,
+    let (dir, bad) = written(
+        "bad.toml",
         std::fs::read_to_string(examples().join("paper.toml"))
             .unwrap()
             .replace("speed_rpm = 1000.0", "speed_rpm = 0.0"),
-    )
-    .unwrap();
+    );
     let out = dir.path().join("r.html");
     run!("report", &bad, "-o", &out).refused("bad.toml:6:13");
     run!("report", "--step", "0.01", "-o", &out).refused("--step: 0.01°");

@@ -132,13 +132,7 @@ fn synth_needs_a_motion_profile() {
 /// "round trip FAILED … 9.2e297 of the peak": its rounding-level peak was taken as the scale.
 #[test]
 fn round_trip_of_a_program_without_acceleration_is_not_failed() {
-    let dir = tempfile::tempdir().unwrap();
-    let m = dir.path().join("cv.toml");
-    std::fs::write(
-        &m,
-        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40.0\nsegments = [{ law = \"constant-velocity\", rise = 10.0, degrees = 180 }, { law = \"constant-velocity\", rise = -10.0, degrees = 180 }]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n",
-    )
-    .unwrap();
+    let (dir, m) = written("cv.toml", "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40.0\nsegments = [{ law = \"constant-velocity\", rise = 10.0, degrees = 180 }, { law = \"constant-velocity\", rise = -10.0, degrees = 180 }]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n");
     run!("synth", &m, "--out", dir.path().join("o"))
         .assert()
         .success()

@@ -58,9 +58,7 @@ preload = 20.0
 "#;
 
 fn system() -> (tempfile::TempDir, std::path::PathBuf) {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("disc.toml");
-    std::fs::write(&path, SYSTEM).unwrap();
+    let (dir, path) = written("disc.toml", SYSTEM);
     (dir, path)
 }
 

@@ -15,9 +15,7 @@ fn valve_train_at(rpm: f64) -> (tempfile::TempDir, std::path::PathBuf) {
     let text = text
         .replace("speed_rpm = 3000.0", &format!("speed_rpm = {rpm:?}"))
         .replace("masses = 8", "masses = 0");
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("vt.toml");
-    std::fs::write(&path, text).unwrap();
+    let (dir, path) = written("vt.toml", text);
     (dir, path)
 }
 

@@ -27,6 +27,15 @@ pub fn examples() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
 }
 
+/// `text` written to a file `name` in a new temporary folder (removed when the folder is dropped:
+/// keep it while the file is read).
+pub fn written(name: &str, text: impl AsRef<[u8]>) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    (dir, path)
+}
+
 /// A command to run.
 #[derive(Debug)]
 pub struct Cmd(Command);
