@@ -28,13 +28,11 @@ pub struct CoilSpringSpec {
     /// length unit
     pub free_length: f64,
     /// N at the free length (default 0), a tension as a `[[spring]]`'s
-    #[serde(default)]
     pub preload: Option<f64>,
     /// kg: the active coils' mass
     pub mass: f64,
     /// lumped masses in the chain (0: massless)
     pub masses: usize,
     /// length unit: the length at which its coils touch (optional)
-    #[serde(default)]
     pub solid_length: Option<f64>,
 }

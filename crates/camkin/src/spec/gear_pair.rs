@@ -30,18 +30,14 @@ use crate::field::{CamField, Field, FollowerField, GearPairField, ProfileField};
 #[serde(deny_unknown_fields)]
 pub struct GearPairFile {
     /// the unit of every length (required)
-    #[serde(default)]
     pub length_unit: Option<String>,
     /// `[gear_pair]`
     pub gear_pair: GearPairSpec,
     /// `[dynamics]`: the driven gear's (its `inertia`; `spring_preload` is the load torque)
-    #[serde(default)]
     pub dynamics: Option<DynamicsSpec>,
     /// `[lubrication]`: the flanks' lubrication along the path of contact
-    #[serde(default)]
     pub lubrication: Option<super::LubricationSpec>,
     /// `[gear_loads]`: the torque on the driver and the face width
-    #[serde(default)]
     pub gear_loads: Option<super::GearLoadsSpec>,
 }
 
@@ -54,21 +50,16 @@ pub struct GearPairSpec {
     /// the module (length)
     pub module: f64,
     /// degrees (default 20)
-    #[serde(default)]
     pub pressure_angle_deg: Option<f64>,
     /// each gear's profile shift coefficient (default 0)
-    #[serde(default)]
     pub profile_shift: Option<[f64; 2]>,
     /// the centre distance (length; default the tight mesh's for these shifts)
-    #[serde(default)]
     pub centre_distance: Option<f64>,
     /// the play on the pitch circle (length; default 0): the driven gear's coast flanks
-    #[serde(default)]
     pub backlash: Option<f64>,
     /// the driver's speed, rpm
     pub speed_rpm: f64,
     /// the driver's sense (default ccw)
-    #[serde(default)]
     pub direction: Option<Sense>,
 }
 

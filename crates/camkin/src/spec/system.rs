@@ -49,7 +49,6 @@ use std::collections::HashMap;
 #[serde(deny_unknown_fields)]
 pub struct SystemSpec {
     /// the unit of every length: "mm", "cm", "m" or "in" (required)
-    #[serde(default)]
     pub length_unit: Option<String>,
     /// `[[body]]`: the moving bodies (the ground is `"ground"`)
     #[serde(default)]
@@ -102,7 +101,6 @@ pub struct SpringSpec {
     /// length unit
     pub free_length: f64,
     /// N (default 0)
-    #[serde(default)]
     pub preload: Option<f64>,
 }
 
@@ -131,10 +129,8 @@ pub struct TorsionSpringSpec {
     /// N·length unit per rad
     pub stiffness: f64,
     /// degrees (default 0)
-    #[serde(default)]
     pub free_angle_deg: Option<f64>,
     /// N·length unit (default 0)
-    #[serde(default)]
     pub preload: Option<f64>,
 }
 
@@ -145,20 +141,15 @@ pub struct BodySpec {
     /// its name (unique; not "ground")
     pub name: String,
     /// kg (default 1; for dynamics)
-    #[serde(default)]
     pub mass: Option<f64>,
     /// kg·m² about its centre of mass (default 1; for dynamics)
-    #[serde(default)]
     pub inertia: Option<f64>,
     /// its centre of mass in its frame, in the file's length unit (default its frame's origin;
     /// for dynamics)
-    #[serde(default)]
     pub centre_of_mass: Option<[f64; 2]>,
     /// where its frame's origin starts (a guess for the first instant; default the origin)
-    #[serde(default)]
     pub position: Option<[f64; 2]>,
     /// its frame's starting angle, degrees (default 0)
-    #[serde(default)]
     pub angle_deg: Option<f64>,
 }
 
@@ -173,13 +164,10 @@ pub struct JointSpec {
     /// the two bodies (either may be "ground")
     pub bodies: [String; 2],
     /// the joint's point in each body's frame (default the origins)
-    #[serde(default)]
     pub at: Option<[[f64; 2]; 2]>,
     /// prismatic: the guide's direction in the first body's frame
-    #[serde(default)]
     pub axis: Option<[f64; 2]>,
     /// prismatic and fixed: the second body's angle to the first, degrees (default 0)
-    #[serde(default)]
     pub angle_deg: Option<f64>,
 }
 
@@ -194,16 +182,12 @@ pub struct DriverSpec {
     /// "angle", "x" or "y"
     pub coordinate: String,
     /// angle: rpm (counter-clockwise positive)
-    #[serde(default)]
     pub speed_rpm: Option<f64>,
     /// x or y: length/s
-    #[serde(default)]
     pub speed: Option<f64>,
     /// the value at time 0: degrees for an angle, length for x or y (default 0)
-    #[serde(default)]
     pub start: Option<f64>,
     /// a constant acceleration: deg/s² for an angle, length/s² for x or y (default 0)
-    #[serde(default)]
     pub acceleration: Option<f64>,
 }
 

@@ -11,10 +11,8 @@ use crate::field::{Field, ProfileField, SystemField, SystemKey, SystemTable};
 #[serde(deny_unknown_fields)]
 pub struct SystemDynamicsSpec {
     /// gravity in the world, m/s² (default none)
-    #[serde(default)]
     pub gravity: Option<[f64; 2]>,
     /// Newton's coefficient of restitution of every contact without its own, 0 to 1 (default 0)
-    #[serde(default)]
     pub restitution: Option<f64>,
 }
 
@@ -89,17 +87,14 @@ pub struct GasForceSpec {
     /// the body it pushes
     pub body: String,
     /// where, in the body's frame (default its origin)
-    #[serde(default)]
     pub at: Option<[f64; 2]>,
     /// its direction in the world
     pub direction: [f64; 2],
     /// `[crank degrees, N]`, the angles increasing within one period
     pub table: Vec<[f64; 2]>,
     /// crank degrees a degree of the first driver (default 2: a four-stroke's camshaft)
-    #[serde(default)]
     pub crank_per_driver: Option<f64>,
     /// the table's period, crank degrees (default 720)
-    #[serde(default)]
     pub period_deg: Option<f64>,
 }
 
