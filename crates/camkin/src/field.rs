@@ -4,6 +4,42 @@
 
 use std::fmt;
 
+/// Declares a field enum: the fields that are not one key (the table as a whole, indexed
+/// ones), then each key with its name in files, the one place that name is written (the
+/// variant's doc, [`name`](ProfileField::name) and the list of keys [`KEYED`](ProfileField::KEYED)
+/// come from it).
+macro_rules! keys {
+    (
+        $(#[$m:meta])*
+        pub enum $name:ident {
+            $( $(#[$om:meta])* $other:ident $( ( $($ot:ty),* ) )?, )*
+            ; keys {
+                $( $(#[$km:meta])* $v:ident = $s:literal, )*
+            }
+        }
+    ) => {
+        $(#[$m])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        #[non_exhaustive]
+        pub enum $name {
+            $( $(#[$om])* $other $( ( $($ot),* ) )?, )*
+            $( #[doc = concat!("`", $s, "`")] $(#[$km])* $v, )*
+        }
+        impl $name {
+            /// Every field that is one key, in the order declared: the one list of its keys.
+            pub const KEYED: &'static [$name] = &[$($name::$v),*];
+            /// The key's name in files (`None` for the table and the indexed fields).
+            #[allow(unreachable_patterns)]
+            pub fn name(self) -> Option<&'static str> {
+                match self {
+                    $( $name::$v => Some($s), )*
+                    _ => None,
+                }
+            }
+        }
+    };
+}
+
 /// A field of a mechanism specification.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
@@ -32,44 +68,38 @@ pub enum Field {
     GearLoads(GearLoadsField),
 }
 
-/// Fields of `[gear_loads]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum GearLoadsField {
-    /// the whole table
-    Table,
-    /// `torque`
-    Torque,
-    /// `power_kw`
-    PowerKw,
-    /// `face_width`
-    FaceWidth,
-    /// `materials`
-    Materials,
+keys! {
+    /// Fields of `[gear_loads]`.
+    pub enum GearLoadsField {
+        /// the whole table
+        Table,
+        ; keys {
+            Torque = "torque",
+            PowerKw = "power_kw",
+            FaceWidth = "face_width",
+            Materials = "materials",
+        }
+    }
 }
 
-/// Fields of `[gear_pair]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum GearPairField {
-    /// the whole table
-    Table,
-    /// `teeth[i]`
-    Teeth(usize),
-    /// `module`
-    Module,
-    /// `pressure_angle_deg`
-    PressureAngle,
-    /// `profile_shift[i]`
-    ProfileShift(usize),
-    /// `centre_distance`
-    CentreDistance,
-    /// `backlash`
-    Backlash,
-    /// `speed_rpm`
-    SpeedRpm,
-    /// `direction`
-    Direction,
+keys! {
+    /// Fields of `[gear_pair]`.
+    pub enum GearPairField {
+        /// the whole table
+        Table,
+        /// `teeth[i]`
+        Teeth(usize),
+        /// `profile_shift[i]`
+        ProfileShift(usize),
+        ; keys {
+            Module = "module",
+            PressureAngle = "pressure_angle_deg",
+            CentreDistance = "centre_distance",
+            Backlash = "backlash",
+            SpeedRpm = "speed_rpm",
+            Direction = "direction",
+        }
+    }
 }
 
 /// A field of an element of a system file: which table, which element (0-based, in the file's
@@ -128,326 +158,210 @@ impl SystemTable {
     }
 }
 
-/// The keys of a system file's elements.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum SystemKey {
-    /// the element as a whole
-    Table,
-    /// `name`
-    Name,
-    /// `mass`
-    Mass,
-    /// `inertia`
-    Inertia,
-    /// `position`
-    Position,
-    /// `angle_deg`
-    AngleDeg,
-    /// `centre_of_mass`
-    CentreOfMass,
-    /// `kind`
-    Kind,
-    /// `bodies`
-    Bodies,
-    /// `at`
-    At,
-    /// `axis`
-    Axis,
-    /// `body`
-    Body,
-    /// `coordinate`
-    Coordinate,
-    /// `start`
-    Start,
-    /// `speed_rpm`
-    SpeedRpm,
-    /// `speed`
-    Speed,
-    /// `acceleration`
-    Acceleration,
-    /// `stiffness`
-    Stiffness,
-    /// `free_length`
-    FreeLength,
-    /// `free_angle_deg`
-    FreeAngleDeg,
-    /// `preload`
-    Preload,
-    /// `damping`
-    Damping,
-    /// a key of `curve_a`
-    CurveA(ProfileField),
-    /// a key of `curve_b`
-    CurveB(ProfileField),
-    /// a key of `motion_follower`
-    MotionFollower(FollowerField),
-    /// `motion_direction`
-    MotionDirection,
-    /// `restitution`
-    Restitution,
-    /// `gravity`
-    Gravity,
-    /// `masses`
-    Masses,
-    /// `solid_length`
-    SolidLength,
-    /// `face_width`
-    FaceWidth,
-    /// `materials`
-    Materials,
-    /// `direction`
-    Direction,
-    /// `table` (a force's, of the crank angle)
-    ForceTable,
-    /// `crank_per_driver`
-    CrankPerDriver,
-    /// `period_deg`
-    PeriodDeg,
-    /// `roughness_um[i]` (a contact's: 0 curve A's, 1 curve B's)
-    RoughnessUm(usize),
-    /// `rolls`
-    Rolls,
-}
-
-impl SystemKey {
-    fn name(self) -> Option<&'static str> {
-        Some(match self {
-            SystemKey::Table
-            | SystemKey::CurveA(_)
-            | SystemKey::CurveB(_)
-            | SystemKey::MotionFollower(_) => return None,
-            SystemKey::MotionDirection => "motion_direction",
-            SystemKey::Name => "name",
-            SystemKey::Mass => "mass",
-            SystemKey::Inertia => "inertia",
-            SystemKey::Position => "position",
-            SystemKey::AngleDeg => "angle_deg",
-            SystemKey::CentreOfMass => "centre_of_mass",
-            SystemKey::Kind => "kind",
-            SystemKey::Bodies => "bodies",
-            SystemKey::At => "at",
-            SystemKey::Axis => "axis",
-            SystemKey::Body => "body",
-            SystemKey::Coordinate => "coordinate",
-            SystemKey::Start => "start",
-            SystemKey::SpeedRpm => "speed_rpm",
-            SystemKey::Speed => "speed",
-            SystemKey::Acceleration => "acceleration",
-            SystemKey::Stiffness => "stiffness",
-            SystemKey::FreeLength => "free_length",
-            SystemKey::FreeAngleDeg => "free_angle_deg",
-            SystemKey::Preload => "preload",
-            SystemKey::Damping => "damping",
-            SystemKey::Restitution => "restitution",
-            SystemKey::Gravity => "gravity",
-            SystemKey::Masses => "masses",
-            SystemKey::SolidLength => "solid_length",
-            SystemKey::FaceWidth => "face_width",
-            SystemKey::Materials => "materials",
-            SystemKey::Direction => "direction",
-            SystemKey::ForceTable => "table",
-            SystemKey::CrankPerDriver => "crank_per_driver",
-            SystemKey::PeriodDeg => "period_deg",
-            SystemKey::RoughnessUm(_) => "roughness_um",
-            SystemKey::Rolls => "rolls",
-        })
+keys! {
+    /// The keys of a system file's elements.
+    pub enum SystemKey {
+        /// the element as a whole
+        Table,
+        /// a key of `curve_a`
+        CurveA(ProfileField),
+        /// a key of `curve_b`
+        CurveB(ProfileField),
+        /// a key of `motion_follower`
+        MotionFollower(FollowerField),
+        /// `roughness_um[i]` (a contact's: 0 curve A's, 1 curve B's)
+        RoughnessUm(usize),
+        ; keys {
+            Name = "name",
+            Mass = "mass",
+            Inertia = "inertia",
+            Position = "position",
+            AngleDeg = "angle_deg",
+            CentreOfMass = "centre_of_mass",
+            Kind = "kind",
+            Bodies = "bodies",
+            At = "at",
+            Axis = "axis",
+            Body = "body",
+            Coordinate = "coordinate",
+            Start = "start",
+            SpeedRpm = "speed_rpm",
+            Speed = "speed",
+            Acceleration = "acceleration",
+            Stiffness = "stiffness",
+            FreeLength = "free_length",
+            FreeAngleDeg = "free_angle_deg",
+            Preload = "preload",
+            Damping = "damping",
+            MotionDirection = "motion_direction",
+            Restitution = "restitution",
+            Gravity = "gravity",
+            Masses = "masses",
+            SolidLength = "solid_length",
+            FaceWidth = "face_width",
+            Materials = "materials",
+            Direction = "direction",
+            /// (a force's, of the crank angle)
+            ForceTable = "table",
+            CrankPerDriver = "crank_per_driver",
+            PeriodDeg = "period_deg",
+            Rolls = "rolls",
+        }
     }
 }
 
-/// Fields of `[cam]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum CamField {
-    /// the whole table
-    Table,
-    /// `speed_rpm`
-    SpeedRpm,
-    /// the speed in rad/s of [`crate::cam::Cam::new`] (no file key: `speed_rpm` in files)
-    Speed,
-    /// `direction`
-    Direction,
-    /// `pivot`
-    Pivot,
-    /// `angular_acceleration_deg_s2`
-    AngularAcceleration,
-}
-
-/// Fields of `[cam.profile]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum ProfileField {
-    /// the whole table (a property of the profile as a whole: its size, a cusp)
-    Table,
-    /// `kind`
-    Kind,
-    /// `points`
-    Points,
-    /// `points[i]`
-    Point(usize),
-    /// `parameterization`
-    Parameterization,
-    /// `center`
-    Center,
-    /// `radius`
-    Radius,
-    /// `semi_axes`
-    SemiAxes,
-    /// `rotation_deg`
-    RotationDeg,
-    /// `path`
-    Path,
-    /// `base_radius`
-    BaseRadius,
-    /// `segments`
-    Segments,
-    /// `nose_radius` (an arc cam's)
-    NoseRadius,
-    /// `lift` (an arc cam's)
-    Lift,
-    /// `flank_radius` (a circular-arc cam's)
-    FlankRadius,
-    /// `start` (an arcs-and-lines profile's first point)
-    Start,
-    /// `pieces`
-    Pieces,
-    /// `pieces[i]`, or its `to`, `centre` or `clockwise`
-    Piece(usize, PieceField),
-    /// `segments[i].law`, `.rise` or `.degrees`
-    Segment(usize, SegmentField),
-    /// `module` (a gear's)
-    Module,
-    /// `teeth`
-    Teeth,
-    /// `pressure_angle_deg`
-    PressureAngle,
-    /// `addendum` (factor)
-    Addendum,
-    /// `dedendum` (factor)
-    Dedendum,
-    /// `profile_shift` (coefficient)
-    ProfileShift,
-    /// `backlash` (thinning on the pitch circle, length)
-    Backlash,
-    /// `fillet_radius`
-    FilletRadius,
-    /// `tip_relief` (amount at the tip, length)
-    TipRelief,
-    /// `tip_relief_length` (along the line of action)
-    TipReliefLength,
-    /// `tip_relief_shape`
-    TipReliefShape,
-    /// `anchor` (a line's point)
-    Anchor,
-    /// `direction` (a line's)
-    Direction,
-    /// `at` (a point's place)
-    At,
-}
-
-/// Fields of one motion segment.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum SegmentField {
-    /// `law`
-    Law,
-    /// `rise`
-    Rise,
-    /// `degrees`
-    Degrees,
-}
-
-/// Keys of a piece of an `arcs-and-lines` profile.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum PieceField {
-    /// the piece as a whole
-    Table,
-    /// `to`
-    To,
-    /// `centre`
-    Centre,
-    /// `clockwise`
-    Clockwise,
-}
-
-impl PieceField {
-    fn name(self) -> Option<&'static str> {
-        Some(match self {
-            PieceField::Table => return None,
-            PieceField::To => "to",
-            PieceField::Centre => "centre",
-            PieceField::Clockwise => "clockwise",
-        })
+keys! {
+    /// Fields of `[cam]`.
+    pub enum CamField {
+        /// the whole table
+        Table,
+        ; keys {
+            SpeedRpm = "speed_rpm",
+            /// the speed in rad/s of [`crate::cam::Cam::new`] (no file key: `speed_rpm` in files)
+            Speed = "speed",
+            Direction = "direction",
+            Pivot = "pivot",
+            AngularAcceleration = "angular_acceleration_deg_s2",
+        }
     }
 }
 
-/// Fields of `[follower]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum FollowerField {
-    /// the whole table
-    Table,
-    /// `kind`
-    Kind,
-    /// `direction`
-    Direction,
-    /// `offset` (of the line of travel, or of an oscillating face)
-    Offset,
-    /// `roller_radius`
-    RollerRadius,
-    /// `pivot`
-    Pivot,
-    /// `arm_length`
-    ArmLength,
-    /// `closing`
-    Closing,
-    /// `initial_angle_deg`
-    InitialAngle,
-    /// `[follower.profile]`: the curve a general follower carries
-    Profile,
+keys! {
+    /// Fields of `[cam.profile]`.
+    pub enum ProfileField {
+        /// the whole table (a property of the profile as a whole: its size, a cusp)
+        Table,
+        /// `points[i]`
+        Point(usize),
+        /// `pieces[i]`, or its `to`, `centre` or `clockwise`
+        Piece(usize, PieceField),
+        /// `segments[i].law`, `.rise` or `.degrees`
+        Segment(usize, SegmentField),
+        ; keys {
+            Kind = "kind",
+            Points = "points",
+            Parameterization = "parameterization",
+            Center = "center",
+            Radius = "radius",
+            SemiAxes = "semi_axes",
+            RotationDeg = "rotation_deg",
+            Path = "path",
+            BaseRadius = "base_radius",
+            Segments = "segments",
+            /// (an arc cam's)
+            NoseRadius = "nose_radius",
+            /// (an arc cam's)
+            Lift = "lift",
+            /// (a circular-arc cam's)
+            FlankRadius = "flank_radius",
+            /// (an arcs-and-lines profile's first point)
+            Start = "start",
+            Pieces = "pieces",
+            /// (a gear's)
+            Module = "module",
+            Teeth = "teeth",
+            PressureAngle = "pressure_angle_deg",
+            /// (factor)
+            Addendum = "addendum",
+            /// (factor)
+            Dedendum = "dedendum",
+            /// (coefficient)
+            ProfileShift = "profile_shift",
+            /// (thinning on the pitch circle, length)
+            Backlash = "backlash",
+            FilletRadius = "fillet_radius",
+            /// (amount at the tip, length)
+            TipRelief = "tip_relief",
+            /// (along the line of action)
+            TipReliefLength = "tip_relief_length",
+            TipReliefShape = "tip_relief_shape",
+            /// (a line's point)
+            Anchor = "anchor",
+            /// (a line's)
+            Direction = "direction",
+            /// (a point's place)
+            At = "at",
+        }
+    }
 }
 
-/// Fields of `[dynamics]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum DynamicsField {
-    /// the whole table
-    Table,
-    /// `mass`
-    Mass,
-    /// `inertia`
-    Inertia,
-    /// `spring_stiffness`
-    SpringStiffness,
-    /// `spring_preload`
-    SpringPreload,
-    /// `damping`
-    Damping,
-    /// `restitution`
-    Restitution,
-    /// `gravity`
-    Gravity,
+keys! {
+    /// Fields of one motion segment.
+    pub enum SegmentField {
+        ; keys {
+            Law = "law",
+            Rise = "rise",
+            Degrees = "degrees",
+        }
+    }
 }
 
-/// Fields of `[lubrication]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum LubricationField {
-    /// the whole table
-    Table,
-    /// `oil`
-    Oil,
-    /// `roughness_um[i]` (0: the cam's, 1: the follower's)
-    RoughnessUm(usize),
-    /// `face_width`
-    FaceWidth,
-    /// `film`
-    Film,
-    /// `friction`
-    Friction,
-    /// `materials`
-    Materials,
+keys! {
+    /// Keys of a piece of an `arcs-and-lines` profile.
+    pub enum PieceField {
+        /// the piece as a whole
+        Table,
+        ; keys {
+            To = "to",
+            Centre = "centre",
+            Clockwise = "clockwise",
+        }
+    }
+}
+
+keys! {
+    /// Fields of `[follower]`.
+    pub enum FollowerField {
+        /// the whole table
+        Table,
+        ; keys {
+            Kind = "kind",
+            Direction = "direction",
+            /// (of the line of travel, or of an oscillating face)
+            Offset = "offset",
+            RollerRadius = "roller_radius",
+            Pivot = "pivot",
+            ArmLength = "arm_length",
+            Closing = "closing",
+            InitialAngle = "initial_angle_deg",
+            /// `[follower.profile]`: the curve a general follower carries
+            Profile = "profile",
+        }
+    }
+}
+
+keys! {
+    /// Fields of `[dynamics]`.
+    pub enum DynamicsField {
+        /// the whole table
+        Table,
+        ; keys {
+            Mass = "mass",
+            Inertia = "inertia",
+            SpringStiffness = "spring_stiffness",
+            SpringPreload = "spring_preload",
+            Damping = "damping",
+            Restitution = "restitution",
+            Gravity = "gravity",
+        }
+    }
+}
+
+keys! {
+    /// Fields of `[lubrication]`.
+    pub enum LubricationField {
+        /// the whole table
+        Table,
+        /// `roughness_um[i]` (0: the cam's, 1: the follower's)
+        RoughnessUm(usize),
+        ; keys {
+            Oil = "oil",
+            FaceWidth = "face_width",
+            Film = "film",
+            Friction = "friction",
+            Materials = "materials",
+        }
+    }
 }
 
 impl Field {
@@ -493,9 +407,7 @@ impl Field {
             Field::LengthUnit => p.push(Name("length_unit")),
             Field::Cam(c) => {
                 p.push(Name("cam"));
-                if let Some(n) = c.name() {
-                    p.push(Name(n));
-                }
+                p.extend(c.name().map(Name));
             }
             Field::Profile(f) | Field::FollowerProfile(f) | Field::FollowerConjugate(f) => {
                 p.extend(match self {
@@ -503,17 +415,7 @@ impl Field {
                     Field::FollowerProfile(_) => [Name("follower"), Name("profile")],
                     _ => [Name("follower"), Name("conjugate")],
                 });
-                match f {
-                    ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),
-                    ProfileField::Segment(i, s) => {
-                        p.extend([Name("segments"), Index(i), Name(s.name())]);
-                    }
-                    ProfileField::Piece(i, k) => {
-                        p.extend([Name("pieces"), Index(i)]);
-                        p.extend(k.name().map(Name));
-                    }
-                    other => p.extend(other.name().map(Name)),
-                }
+                f.push_path(&mut p);
             }
             Field::Follower(f) => {
                 p.push(Name("follower"));
@@ -525,41 +427,23 @@ impl Field {
             }
             Field::Lubrication(f) => {
                 p.push(Name("lubrication"));
-                use LubricationField as L;
                 match f {
-                    L::Table => {}
-                    L::Oil => p.push(Name("oil")),
-                    L::RoughnessUm(i) => p.extend([Name("roughness_um"), Index(i)]),
-                    L::FaceWidth => p.push(Name("face_width")),
-                    L::Film => p.push(Name("film")),
-                    L::Friction => p.push(Name("friction")),
-                    L::Materials => p.push(Name("materials")),
+                    LubricationField::RoughnessUm(i) => {
+                        p.extend([Name("roughness_um"), Index(i)]);
+                    }
+                    f => p.extend(f.name().map(Name)),
                 }
             }
             Field::GearLoads(g) => {
                 p.push(Name("gear_loads"));
-                use GearLoadsField as G;
-                match g {
-                    G::Table => {}
-                    G::Torque => p.push(Name("torque")),
-                    G::PowerKw => p.push(Name("power_kw")),
-                    G::FaceWidth => p.push(Name("face_width")),
-                    G::Materials => p.push(Name("materials")),
-                }
+                p.extend(g.name().map(Name));
             }
             Field::GearPair(g) => {
                 p.push(Name("gear_pair"));
-                use GearPairField as G;
                 match g {
-                    G::Table => {}
-                    G::Teeth(i) => p.extend([Name("teeth"), Index(i)]),
-                    G::ProfileShift(i) => p.extend([Name("profile_shift"), Index(i)]),
-                    G::Module => p.push(Name("module")),
-                    G::PressureAngle => p.push(Name("pressure_angle_deg")),
-                    G::CentreDistance => p.push(Name("centre_distance")),
-                    G::Backlash => p.push(Name("backlash")),
-                    G::SpeedRpm => p.push(Name("speed_rpm")),
-                    G::Direction => p.push(Name("direction")),
+                    GearPairField::Teeth(i) => p.extend([Name("teeth"), Index(i)]),
+                    GearPairField::ProfileShift(i) => p.extend([Name("profile_shift"), Index(i)]),
+                    g => p.extend(g.name().map(Name)),
                 }
             }
             Field::System(f) => {
@@ -568,23 +452,13 @@ impl Field {
                     p.push(Index(f.index));
                 }
                 match f.key {
-                    SystemKey::CurveA(c) | SystemKey::CurveB(c) => {
-                        p.push(Name(if matches!(f.key, SystemKey::CurveA(_)) {
-                            "curve_a"
-                        } else {
-                            "curve_b"
-                        }));
-                        match c {
-                            ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),
-                            ProfileField::Segment(i, s) => {
-                                p.extend([Name("segments"), Index(i), Name(s.name())]);
-                            }
-                            ProfileField::Piece(i, k) => {
-                                p.extend([Name("pieces"), Index(i)]);
-                                p.extend(k.name().map(Name));
-                            }
-                            other => p.extend(other.name().map(Name)),
-                        }
+                    SystemKey::CurveA(c) => {
+                        p.push(Name("curve_a"));
+                        c.push_path(&mut p);
+                    }
+                    SystemKey::CurveB(c) => {
+                        p.push(Name("curve_b"));
+                        c.push_path(&mut p);
                     }
                     SystemKey::MotionFollower(k) => {
                         p.push(Name("motion_follower"));
@@ -599,6 +473,25 @@ impl Field {
     }
 }
 
+impl ProfileField {
+    /// The field's path inside its profile table (`points[3]`, `segments[1].law`, `radius`).
+    fn push_path(self, p: &mut Vec<Key>) {
+        use Key::{Index, Name};
+        match self {
+            ProfileField::Point(i) => p.extend([Name("points"), Index(i)]),
+            ProfileField::Segment(i, s) => {
+                p.extend([Name("segments"), Index(i)]);
+                p.extend(s.name().map(Name));
+            }
+            ProfileField::Piece(i, k) => {
+                p.extend([Name("pieces"), Index(i)]);
+                p.extend(k.name().map(Name));
+            }
+            other => p.extend(other.name().map(Name)),
+        }
+    }
+}
+
 /// One step of a key path.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Key {
@@ -606,150 +499,6 @@ pub enum Key {
     Name(&'static str),
     /// an array index
     Index(usize),
-}
-
-impl CamField {
-    fn name(self) -> Option<&'static str> {
-        Some(match self {
-            CamField::Table => return None,
-            CamField::SpeedRpm => "speed_rpm",
-            CamField::Speed => "speed",
-            CamField::Direction => "direction",
-            CamField::Pivot => "pivot",
-            CamField::AngularAcceleration => "angular_acceleration_deg_s2",
-        })
-    }
-}
-
-impl ProfileField {
-    /// Every keyed field of a profile table: the one list of its keys (their names are
-    /// [`ProfileField::name`]'s; the schema's serde names are checked equal to them).
-    pub const KEYED: [ProfileField; 29] = [
-        ProfileField::Kind,
-        ProfileField::Points,
-        ProfileField::Parameterization,
-        ProfileField::Center,
-        ProfileField::Radius,
-        ProfileField::SemiAxes,
-        ProfileField::RotationDeg,
-        ProfileField::Path,
-        ProfileField::BaseRadius,
-        ProfileField::Segments,
-        ProfileField::NoseRadius,
-        ProfileField::Lift,
-        ProfileField::FlankRadius,
-        ProfileField::Start,
-        ProfileField::Pieces,
-        ProfileField::Module,
-        ProfileField::Teeth,
-        ProfileField::PressureAngle,
-        ProfileField::Addendum,
-        ProfileField::Dedendum,
-        ProfileField::ProfileShift,
-        ProfileField::Backlash,
-        ProfileField::FilletRadius,
-        ProfileField::TipRelief,
-        ProfileField::TipReliefLength,
-        ProfileField::TipReliefShape,
-        ProfileField::Anchor,
-        ProfileField::Direction,
-        ProfileField::At,
-    ];
-
-    /// The key's name (`None` for the table, and for indexed fields).
-    pub fn name(self) -> Option<&'static str> {
-        Some(match self {
-            ProfileField::Table
-            | ProfileField::Point(_)
-            | ProfileField::Segment(..)
-            | ProfileField::Piece(..) => return None,
-            ProfileField::Kind => "kind",
-            ProfileField::Points => "points",
-            ProfileField::Parameterization => "parameterization",
-            ProfileField::Center => "center",
-            ProfileField::Radius => "radius",
-            ProfileField::SemiAxes => "semi_axes",
-            ProfileField::RotationDeg => "rotation_deg",
-            ProfileField::Path => "path",
-            ProfileField::BaseRadius => "base_radius",
-            ProfileField::Segments => "segments",
-            ProfileField::NoseRadius => "nose_radius",
-            ProfileField::Lift => "lift",
-            ProfileField::FlankRadius => "flank_radius",
-            ProfileField::Start => "start",
-            ProfileField::Pieces => "pieces",
-            ProfileField::Module => "module",
-            ProfileField::Teeth => "teeth",
-            ProfileField::PressureAngle => "pressure_angle_deg",
-            ProfileField::Addendum => "addendum",
-            ProfileField::Dedendum => "dedendum",
-            ProfileField::ProfileShift => "profile_shift",
-            ProfileField::Backlash => "backlash",
-            ProfileField::FilletRadius => "fillet_radius",
-            ProfileField::TipRelief => "tip_relief",
-            ProfileField::TipReliefLength => "tip_relief_length",
-            ProfileField::TipReliefShape => "tip_relief_shape",
-            ProfileField::Anchor => "anchor",
-            ProfileField::Direction => "direction",
-            ProfileField::At => "at",
-        })
-    }
-}
-
-impl SegmentField {
-    fn name(self) -> &'static str {
-        match self {
-            SegmentField::Law => "law",
-            SegmentField::Rise => "rise",
-            SegmentField::Degrees => "degrees",
-        }
-    }
-}
-
-impl FollowerField {
-    /// Every keyed field of `[follower]` (see [`ProfileField::KEYED`]).
-    pub const KEYED: [FollowerField; 9] = [
-        FollowerField::Kind,
-        FollowerField::Direction,
-        FollowerField::Offset,
-        FollowerField::RollerRadius,
-        FollowerField::Pivot,
-        FollowerField::ArmLength,
-        FollowerField::Closing,
-        FollowerField::InitialAngle,
-        FollowerField::Profile,
-    ];
-
-    /// The key's name (`None` for the table).
-    pub fn name(self) -> Option<&'static str> {
-        Some(match self {
-            FollowerField::Table => return None,
-            FollowerField::Kind => "kind",
-            FollowerField::Direction => "direction",
-            FollowerField::Offset => "offset",
-            FollowerField::RollerRadius => "roller_radius",
-            FollowerField::Pivot => "pivot",
-            FollowerField::ArmLength => "arm_length",
-            FollowerField::Closing => "closing",
-            FollowerField::InitialAngle => "initial_angle_deg",
-            FollowerField::Profile => "profile",
-        })
-    }
-}
-
-impl DynamicsField {
-    fn name(self) -> Option<&'static str> {
-        Some(match self {
-            DynamicsField::Table => return None,
-            DynamicsField::Mass => "mass",
-            DynamicsField::Inertia => "inertia",
-            DynamicsField::SpringStiffness => "spring_stiffness",
-            DynamicsField::SpringPreload => "spring_preload",
-            DynamicsField::Damping => "damping",
-            DynamicsField::Restitution => "restitution",
-            DynamicsField::Gravity => "gravity",
-        })
-    }
 }
 
 impl fmt::Display for Field {
@@ -785,5 +534,63 @@ mod tests {
             "follower"
         );
         assert_eq!(Field::LengthUnit.to_string(), "length_unit");
+        // the tables whose keys the path once spelled out by hand, and their indexed keys
+        let cases = [
+            (
+                Field::GearPair(GearPairField::Teeth(1)),
+                "gear_pair.teeth[1]",
+            ),
+            (
+                Field::GearPair(GearPairField::PressureAngle),
+                "gear_pair.pressure_angle_deg",
+            ),
+            (
+                Field::GearLoads(GearLoadsField::PowerKw),
+                "gear_loads.power_kw",
+            ),
+            (
+                Field::Lubrication(LubricationField::RoughnessUm(0)),
+                "lubrication.roughness_um[0]",
+            ),
+            (Field::Lubrication(LubricationField::Table), "lubrication"),
+            (
+                Field::Cam(CamField::AngularAcceleration),
+                "cam.angular_acceleration_deg_s2",
+            ),
+            (
+                Field::System(SystemField {
+                    table: SystemTable::Contact,
+                    index: 2,
+                    key: SystemKey::CurveB(ProfileField::Piece(4, PieceField::Centre)),
+                }),
+                "contact[2].curve_b.pieces[4].centre",
+            ),
+            (
+                Field::System(SystemField {
+                    table: SystemTable::GasForce,
+                    index: 0,
+                    key: SystemKey::ForceTable,
+                }),
+                "gas_force[0].table",
+            ),
+        ];
+        for (field, path) in cases {
+            assert_eq!(field.to_string(), path);
+        }
+        // every key's name is its variant's, once: no two keys of a table share a name
+        for names in [
+            ProfileField::KEYED
+                .iter()
+                .map(|f| f.name())
+                .collect::<Vec<_>>(),
+            SystemKey::KEYED.iter().map(|f| f.name()).collect(),
+            FollowerField::KEYED.iter().map(|f| f.name()).collect(),
+        ] {
+            let mut sorted = names.clone();
+            sorted.sort();
+            sorted.dedup();
+            assert_eq!(sorted.len(), names.len());
+            assert!(names.iter().all(Option::is_some));
+        }
     }
 }
