@@ -2,7 +2,6 @@
 //! `camkin contacts`: the instants of the angles asked, the work refused first, the rows written
 //! 4096 instants at a time.
 
-use crate::args::AngleRange;
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::spec::BuiltSystem;
@@ -76,12 +75,4 @@ pub fn write_sweep(
         );
     }
     Ok(())
-}
-
-/// The angles of `--at` or `--angles` (a revolution by default).
-pub fn angles_of(at: &Option<crate::args::AngleList>, range: Option<AngleRange>) -> Vec<f64> {
-    match (at, range) {
-        (Some(list), _) => list.0.clone(),
-        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
-    }
 }

@@ -167,6 +167,47 @@ impl MotionUnitArgs {
     }
 }
 
+/// The angles a command visits: a list of separate instants or a range that traces the motion
+/// (`analyze`, `contacts`, `mesh`).
+#[derive(Debug, Clone, clap::Args)]
+pub struct AngleArgs {
+    /// Angles in degrees, comma-separated (e.g. 0,45,90): the cam's, or a system's or gear
+    /// pair's driver's; separate instants, in any order (no contact jump is marked between
+    /// them, as it is along a range).
+    #[arg(
+        long,
+        value_name = "A1,A2,...",
+        conflicts_with = "angles",
+        allow_hyphen_values = true
+    )]
+    pub at: Option<AngleList>,
+    /// Range of angles in degrees: START:STOP:STEP, STOP excluded [default: 0:360:1; mesh: two
+    /// mesh cycles, 0:720/z1, 360 steps each: a tooth pair's whole time in mesh and a handover].
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
+    pub angles: Option<AngleRange>,
+}
+
+impl AngleArgs {
+    /// The angles given, or `default`'s when none are.
+    pub fn or_else(&self, default: impl FnOnce() -> Vec<f64>) -> Vec<f64> {
+        match (&self.at, self.angles) {
+            (Some(list), _) => list.0.clone(),
+            (None, Some(range)) => range.angles(),
+            (None, None) => default(),
+        }
+    }
+
+    /// The angles given, a revolution in 1° steps by default.
+    pub fn or_revolution(&self) -> Vec<f64> {
+        self.or_else(|| AngleRange::REVOLUTION.angles())
+    }
+
+    /// The angles trace the motion (a range): a contact jump between rows is marked.
+    pub fn contiguous(&self) -> bool {
+        self.at.is_none()
+    }
+}
+
 /// Cam angles in degrees, comma-separated: `A1,A2,...`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AngleList(pub Vec<f64>);

@@ -1,6 +1,5 @@
 //! `camkin analyze`: the one-instant analysis at a list or range of cam angles, as CSV.
 
-use crate::args::{AngleList, AngleRange};
 use crate::output::TableFormat;
 use crate::{load_mechanism, Failure};
 use anyhow::Result;
@@ -16,17 +15,8 @@ pub struct Args {
     /// tables `body`, `joint`, `driver`, `contact`: see examples/valve-train-kinematics.toml) is swept over
     /// its first driver's angle, one row an instant with every body and contact.
     pub mechanism: Option<PathBuf>,
-    /// Cam angles in degrees, comma-separated (e.g. 0,45,90).
-    #[arg(
-        long,
-        value_name = "A1,A2,...",
-        conflicts_with = "angles",
-        allow_hyphen_values = true
-    )]
-    pub at: Option<AngleList>,
-    /// Range of cam angles in degrees: START:STOP:STEP, STOP excluded [default: 0:360:1].
-    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
-    pub angles: Option<AngleRange>,
+    #[command(flatten)]
+    pub sweep: crate::args::AngleArgs,
     /// Analyse a cam or gear-pair file as a system of bodies (the cam and the follower, jointed
     /// to the ground, one contact): each body's pose, velocity and acceleration and the
     /// contact's terms, the columns of a system file, at each cam angle. The motion is the one
@@ -117,10 +107,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         args.units.per,
     );
     let columns = analysis_columns(&units);
-    let angles = match (&args.at, args.angles) {
-        (Some(list), _) => list.0.clone(),
-        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
-    };
+    let angles = args.sweep.or_revolution();
     let per_row = match args.table.format {
         TableFormat::Csv => BYTES_PER_ROW,
         TableFormat::Json => 2.0 * BYTES_PER_ROW,
@@ -131,7 +118,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         args.work.large,
         ", or use fewer angles",
     )?;
-    let contiguous = args.at.is_none();
+    let contiguous = args.sweep.contiguous();
     let mut rows = AnalysisSweep::new(mech, &angles, contiguous, CHUNK);
     // lift is measured from the lowest position over the revolution
     if let Err(e) = rows.travel() {
@@ -186,7 +173,7 @@ fn analyze_system(
         )));
     }
     let sys = &built.system;
-    let angles = crate::sweep::angles_of(&args.at, args.angles);
+    let angles = args.sweep.or_revolution();
     let mut jumps = Vec::new();
     crate::sweep::write_sweep(
         &args.table,

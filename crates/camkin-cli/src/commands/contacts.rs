@@ -2,7 +2,6 @@
 //! one row per contact, each with its sliding rates, normal accelerations and acceleration
 //! constraint row `Φ_θ θ̈ + Φ_q q̈ = γ`; CSV or JSON.
 
-use crate::args::{AngleList, AngleRange};
 use crate::{load_mechanism, Failure};
 use camkin::table::{contact_cells, contact_columns, ContactRow, Units};
 use std::path::PathBuf;
@@ -13,17 +12,8 @@ pub struct ContactsArgs {
     /// of its contacts at each instant of its first driver's angle, with its constraint row in
     /// its two bodies' coordinates.
     pub mechanism: Option<PathBuf>,
-    /// Cam angles in degrees, comma-separated (each a cold query).
-    #[arg(
-        long,
-        value_name = "A1,A2,...",
-        conflicts_with = "angles",
-        allow_hyphen_values = true
-    )]
-    pub at: Option<AngleList>,
-    /// Range of cam angles in degrees: START:STOP:STEP, STOP excluded [default: 0:360:1].
-    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
-    pub angles: Option<AngleRange>,
+    #[command(flatten)]
+    pub sweep: crate::args::AngleArgs,
     #[command(flatten)]
     pub table: crate::args::TableArgs,
     #[command(flatten)]
@@ -42,16 +32,13 @@ pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
     let loaded = load_mechanism(args.mechanism.as_ref())?;
     args.table.check()?;
     let mech = &loaded.mech;
-    let angles = match (&args.at, args.angles) {
-        (Some(list), _) => list.0.clone(),
-        (None, range) => range.unwrap_or(AngleRange::REVOLUTION).angles(),
-    };
+    let angles = args.sweep.or_revolution();
     crate::refuse_large(
         &camkin::work::Work::contacts(mech, angles.len()),
         args.work.large,
         ", or use fewer angles",
     )?;
-    let contiguous = args.at.is_none();
+    let contiguous = args.sweep.contiguous();
     let states = mech.analyze_deg_each(&angles, contiguous);
     let rows: Vec<ContactRow> = angles
         .iter()
@@ -115,7 +102,7 @@ fn system_contacts(
 ) -> Result<(), Failure> {
     use camkin::table::{system_contact_cells, system_contact_columns};
     let sys = &built.system;
-    let angles = crate::sweep::angles_of(&args.at, args.angles);
+    let angles = args.sweep.or_revolution();
     crate::sweep::write_sweep(
         &args.table,
         &args.work,

@@ -2,7 +2,6 @@
 //! transmission error and its rates, tooth pairs, line of action, sliding; CSV or JSON, and a
 //! page of plots over the angles.
 
-use crate::args::{AngleList, AngleRange};
 use crate::draw::svaj;
 use crate::mechfile;
 use crate::{load_mechanism, Failure, Loaded};
@@ -18,18 +17,8 @@ pub struct MeshArgs {
     /// Mechanism file (TOML) whose cam and follower profiles are involute gears; without it, the
     /// built-in 20/42 pair (examples/gear-pair-20-42.toml).
     pub mechanism: Option<PathBuf>,
-    /// Driver angles in degrees, comma-separated (each a cold query).
-    #[arg(
-        long,
-        value_name = "A1,A2,...",
-        conflicts_with = "angles",
-        allow_hyphen_values = true
-    )]
-    pub at: Option<AngleList>,
-    /// Range of driver angles in degrees: START:STOP:STEP, STOP excluded [default: two mesh
-    /// cycles, 0:720/z1, 360 steps each: a tooth pair's whole time in mesh and a handover].
-    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
-    pub angles: Option<AngleRange>,
+    #[command(flatten)]
+    pub sweep: crate::args::AngleArgs,
     #[command(flatten)]
     pub table: crate::args::TableArgs,
     /// Also draw the transmission error, the driven gear's acceleration, the sliding velocity
@@ -83,21 +72,17 @@ pub fn run(args: &MeshArgs) -> Result<(), Failure> {
         ))
     })?;
     let z1 = pair.driver().teeth();
-    let angles = match (&args.at, args.angles) {
-        (Some(list), _) => list.0.clone(),
-        (None, Some(range)) => range.angles(),
-        (None, None) => {
-            let cycle = 360.0 / f64::from(z1);
-            (0..720).map(|k| f64::from(k) * cycle / 360.0).collect()
-        }
-    };
+    let angles = args.sweep.or_else(|| {
+        let cycle = 360.0 / f64::from(z1);
+        (0..720).map(|k| f64::from(k) * cycle / 360.0).collect()
+    });
     // the rows are held in memory, about 250 bytes each
     crate::refuse_large(
         &camkin::work::Work::sweep(mech, angles.len(), 1).with_bytes(angles.len() as f64 * 250.0),
         args.work.large,
         ", or use fewer angles",
     )?;
-    let contiguous = args.at.is_none();
+    let contiguous = args.sweep.contiguous();
     let results = mech.analyze_deg_each(&angles, contiguous);
     let jumps = contact_jumps(mech, &results, contiguous);
     let rows: Vec<MeshRow> = angles
