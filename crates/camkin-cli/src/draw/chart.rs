@@ -178,6 +178,34 @@ fn bounds(chart: &Chart) -> ((f64, f64), (f64, f64)) {
     ((x0, x1), (y0, y1))
 }
 
+/// The grid, ticks and axis names of one panel of a stacked page: the y axis named `y_desc`, the
+/// x axis named `x_desc` (only under the last panel), 19 x labels.
+pub fn panel_mesh<DB, Y>(
+    ch: &mut ChartContext<'_, DB, Cartesian2d<RangedCoordf64, Y>>,
+    y_desc: &str,
+    x_desc: Option<&str>,
+    y_fmt: &dyn Fn(&f64) -> String,
+    x_fmt: &dyn Fn(&f64) -> String,
+) -> Result<()>
+where
+    DB: DrawingBackend,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    DB::ErrorType: 'static,
+{
+    let mut mesh = ch.configure_mesh();
+    mesh.y_desc(y_desc)
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 17))
+        .y_label_formatter(y_fmt)
+        .x_label_formatter(x_fmt)
+        .x_labels(19)
+        .light_line_style(RGBColor(235, 235, 235));
+    if let Some(x) = x_desc {
+        mesh.x_desc(x);
+    }
+    mesh.draw().map_err(|e| anyhow!("{e}"))
+}
+
 /// Draws the chart on any backend.
 pub fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, chart: &Chart) -> Result<()>
 where

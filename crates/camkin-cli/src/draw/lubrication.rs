@@ -158,18 +158,13 @@ where
                 .map_err(e)?;
             }
             let y_fmt = |v: &f64| tick(*v, *v);
-            let mut mesh = ch.configure_mesh();
-            mesh.y_desc(&p.label)
-                .label_style(("sans-serif", 15))
-                .axis_desc_style(("sans-serif", 17))
-                .y_label_formatter(&y_fmt)
-                .x_label_formatter(&x_fmt)
-                .x_labels(19)
-                .light_line_style(RGBColor(235, 235, 235));
-            if last {
-                mesh.x_desc("cam angle (°)");
-            }
-            mesh.draw().map_err(e)?;
+            super::chart::panel_mesh(
+                &mut ch,
+                &p.label,
+                last.then_some("cam angle (°)"),
+                &y_fmt,
+                &x_fmt,
+            )?;
             curves(&mut ch, p, |y| y > 0.0).map_err(e)?;
         } else {
             let pad = 0.12 * (y1 - y0).max(1e-9 * y1.abs().max(1.0));
@@ -178,18 +173,13 @@ where
             let mut ch = b.build_cartesian_2d(x0..x1, lo..hi).map_err(e)?;
             shade_regimes(&mut ch, l, &deg, lo, hi).map_err(e)?;
             let y_fmt = |v: &f64| tick(*v, span);
-            let mut mesh = ch.configure_mesh();
-            mesh.y_desc(&p.label)
-                .label_style(("sans-serif", 15))
-                .axis_desc_style(("sans-serif", 17))
-                .y_label_formatter(&y_fmt)
-                .x_label_formatter(&x_fmt)
-                .x_labels(19)
-                .light_line_style(RGBColor(235, 235, 235));
-            if last {
-                mesh.x_desc("cam angle (°)");
-            }
-            mesh.draw().map_err(e)?;
+            super::chart::panel_mesh(
+                &mut ch,
+                &p.label,
+                last.then_some("cam angle (°)"),
+                &y_fmt,
+                &x_fmt,
+            )?;
             if lo < 0.0 && hi > 0.0 {
                 ch.draw_series(std::iter::once(PathElement::new(
                     vec![(x0, 0.0), (x1, 0.0)],

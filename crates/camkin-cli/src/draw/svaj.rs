@@ -142,18 +142,13 @@ where
             }
         };
         let y_fmt = |v: &f64| tick(*v, span);
-        let mut mesh = ch.configure_mesh();
-        mesh.y_desc(&p.label)
-            .label_style(("sans-serif", 15))
-            .axis_desc_style(("sans-serif", 17))
-            .y_label_formatter(&y_fmt)
-            .x_label_formatter(&x_fmt)
-            .x_labels(19)
-            .light_line_style(RGBColor(235, 235, 235));
-        if last {
-            mesh.x_desc(&page.x_label);
-        }
-        mesh.draw().map_err(e)?;
+        super::chart::panel_mesh(
+            &mut ch,
+            &p.label,
+            last.then_some(&page.x_label),
+            &y_fmt,
+            &x_fmt,
+        )?;
         // the zero line
         if lo < 0.0 && hi > 0.0 {
             ch.draw_series(std::iter::once(PathElement::new(
