@@ -121,7 +121,7 @@ pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
     if is_system(text) {
         return Err(TextError {
             message: format!(
-                "{name}: a system file ([[body]], [[joint]], [[driver]], [[contact]]), not a mechanism file ([cam], [follower]): `camkin analyze`, `camkin simulate` (with [dynamics]) and Python's camkin.System read systems"
+                "{name}: a system file ([[body]], [[joint]], [[driver]], [[contact]]), not a mechanism file ([cam], [follower]): `camkin analyze`, `contacts`, `plot`, `serve`, `simulate` and `forces` (with [dynamics]) and Python's camkin.System read systems"
             ),
             at: None,
             path: None,
