@@ -146,11 +146,10 @@ fn write_files(
         title: format!("{title}: follower displacement"),
         x_label: "cam angle (°)".into(),
         y_label: format!("displacement ({})", u.motion_symbol(0)),
-        series: vec![Series {
-            name: "displacement".into(),
-            points: xy(&|k| u.coord_value(study.exact[k].position)),
-            dashed: false,
-        }],
+        series: vec![Series::line(
+            "displacement",
+            xy(&|k| u.coord_value(study.exact[k].position)),
+        )],
         log_y: false,
         x_range: Some((0.0, 360.0)),
     };
@@ -165,16 +164,14 @@ fn write_files(
             x_label: "cam angle (°)".into(),
             y_label: format!("acceleration ({})", u.motion_symbol(2)),
             series: vec![
-                Series {
-                    name: "contact method (exact)".into(),
-                    points: xy(&|k| u.coord_value(study.exact[k].acceleration)),
-                    dashed: false,
-                },
-                Series {
-                    name: format!("interpolated, N = {}", r.nodes),
-                    points: xy(&|k| u.coord_value(r.acceleration[k])),
-                    dashed: true,
-                },
+                Series::line(
+                    "contact method (exact)",
+                    xy(&|k| u.coord_value(study.exact[k].acceleration)),
+                ),
+                Series::dashed(
+                    format!("interpolated, N = {}", r.nodes),
+                    xy(&|k| u.coord_value(r.acceleration[k])),
+                ),
             ],
             log_y: false,
             x_range: Some((0.0, 360.0)),
@@ -188,11 +185,7 @@ fn write_files(
         series: study
             .runs
             .iter()
-            .map(|r| Series {
-                name: format!("N = {}", r.nodes),
-                points: xy(&|k| r.rel_error[k]),
-                dashed: false,
-            })
+            .map(|r| Series::line(format!("N = {}", r.nodes), xy(&|k| r.rel_error[k])))
             .collect(),
         log_y: true,
         x_range: Some((0.0, 360.0)),

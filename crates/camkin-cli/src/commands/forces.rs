@@ -196,11 +196,7 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
             "smallest contact force (N)",
             vec![
                 curve(0, "smallest contact force", false),
-                Series {
-                    name: "margin".into(),
-                    points: vec![(0.0, r.margin), (top, r.margin)],
-                    dashed: true,
-                },
+                Series::dashed("margin", vec![(0.0, r.margin), (top, r.margin)]),
             ],
         )
     };
@@ -214,11 +210,7 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
             (a.min(v), b.max(v))
         });
     if lo.is_finite() {
-        let mark = |x: f64, name: String| Series {
-            name,
-            points: vec![(x, lo), (x, hi)],
-            dashed: true,
-        };
+        let mark = |x: f64, name: String| Series::dashed(name, vec![(x, lo), (x, hi)]);
         series.push(mark(
             rpm(r.speed),
             format!("operating speed {} rpm", num(rpm(r.speed))),
@@ -236,14 +228,7 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
         }
     }
     chart::save(
-        &Chart {
-            title,
-            x_label: "cam speed (rpm)".into(),
-            y_label: y_label.into(),
-            series,
-            log_y: false,
-            x_range: None,
-        },
+        &Chart::new(title, "cam speed (rpm)", y_label, series),
         &dir.join("force_speed"),
     )?;
     Ok(())

@@ -174,30 +174,26 @@ fn charts(
         unit.name()
     );
     chart::save(
-        &Chart {
-            title: "Hertz pressure along the path of contact (load shared equally where two pairs touch)".into(),
-            x_label: x_label.clone(),
-            y_label: "Hertz pressure (MPa)".into(),
-            series: vec![series("Hertz pressure", false, &|p| {
+        &Chart::new(
+            "Hertz pressure along the path of contact (load shared equally where two pairs touch)",
+            x_label.clone(),
+            "Hertz pressure (MPa)",
+            vec![series("Hertz pressure", false, &|p| {
                 p.hertz.is_finite().then_some(p.hertz / 1e6)
             })],
-            log_y: false,
-            x_range: None,
-        },
+        ),
         &dir.join("gear_hertz"),
     )?;
     chart::save(
-        &Chart {
-            title: "specific sliding along the path of contact".into(),
+        &Chart::new(
+            "specific sliding along the path of contact",
             x_label,
-            y_label: "specific sliding (1)".into(),
-            series: vec![
+            "specific sliding (1)",
+            vec![
                 series("driver (w1 - w2)/w1", false, &|p| p.specific_sliding[0]),
                 series("driven (w2 - w1)/w2", true, &|p| p.specific_sliding[1]),
             ],
-            log_y: false,
-            x_range: None,
-        },
+        ),
         &dir.join("gear_specific_sliding"),
     )?;
     Ok(())

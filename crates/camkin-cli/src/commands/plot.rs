@@ -258,11 +258,7 @@ fn kinematics(
         title: title.into(),
         x_label: "cam angle (°)".into(),
         y_label: unit.into(),
-        series: vec![Series {
-            name: title.into(),
-            points: pts,
-            dashed: false,
-        }],
+        series: vec![Series::line(title, pts)],
         log_y: false,
         x_range: Some((0.0, 360.0)),
     };

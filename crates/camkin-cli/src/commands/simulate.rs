@@ -300,79 +300,52 @@ fn plot(
             .map(|(k, s)| (s.cam_angle.to_degrees(), f(k)))
             .collect()
     };
-    let motion = Chart {
-        title: "follower position: dynamic and kinematic".into(),
-        x_label: "cam angle (°)".into(),
-        y_label: format!("position ({pu})"),
-        series: vec![
-            Series {
-                name: "dynamic".into(),
-                points: pts(&|k| c(samples[k].position)),
-                dashed: false,
-            },
-            Series {
-                name: "kinematic (contact method)".into(),
-                points: pts(&|k| c(rows[k].kinematic_position)),
-                dashed: true,
-            },
+    let motion = Chart::new(
+        "follower position: dynamic and kinematic",
+        "cam angle (°)",
+        format!("position ({pu})"),
+        vec![
+            Series::line("dynamic", pts(&|k| c(samples[k].position))),
+            Series::dashed(
+                "kinematic (contact method)",
+                pts(&|k| c(rows[k].kinematic_position)),
+            ),
         ],
-        log_y: false,
-        x_range: None,
-    };
+    );
     chart::save(&motion, &dir.join("motion"))?;
     // the two positions differ by microns where they differ at all: their difference, drawn
-    let deviation = Chart {
-        title: "follower position less the kinematic one (lift-off, play)".into(),
-        x_label: "cam angle (°)".into(),
-        y_label: format!("dynamic − kinematic position ({pu})"),
-        series: vec![Series {
-            name: "dynamic − kinematic".into(),
-            points: pts(&|k| c(samples[k].position) - c(rows[k].kinematic_position)),
-            dashed: false,
-        }],
-        log_y: false,
-        x_range: None,
-    };
+    let deviation = Chart::new(
+        "follower position less the kinematic one (lift-off, play)",
+        "cam angle (°)",
+        format!("dynamic − kinematic position ({pu})"),
+        vec![Series::line(
+            "dynamic − kinematic",
+            pts(&|k| c(samples[k].position) - c(rows[k].kinematic_position)),
+        )],
+    );
     chart::save(&deviation, &dir.join("deviation"))?;
-    let acc = Chart {
-        title: "follower acceleration: dynamic and kinematic".into(),
-        x_label: "cam angle (°)".into(),
-        y_label: format!("acceleration ({au})"),
-        series: vec![
-            Series {
-                name: "dynamic".into(),
-                points: pts(&|k| c(samples[k].acceleration)),
-                dashed: false,
-            },
-            Series {
-                name: "kinematic (contact method)".into(),
-                points: pts(&|k| c(rows[k].kinematic_acceleration)),
-                dashed: true,
-            },
+    let acc = Chart::new(
+        "follower acceleration: dynamic and kinematic",
+        "cam angle (°)",
+        format!("acceleration ({au})"),
+        vec![
+            Series::line("dynamic", pts(&|k| c(samples[k].acceleration))),
+            Series::dashed(
+                "kinematic (contact method)",
+                pts(&|k| c(rows[k].kinematic_acceleration)),
+            ),
         ],
-        log_y: false,
-        x_range: None,
-    };
+    );
     chart::save(&acc, &dir.join("acceleration"))?;
-    let force = Chart {
-        title: "contact force (0 while the follower is off the cam)".into(),
-        x_label: "cam angle (°)".into(),
-        y_label: "contact force (N)".into(),
-        series: vec![
-            Series {
-                name: "contact force".into(),
-                points: pts(&|k| samples[k].contact_force),
-                dashed: false,
-            },
-            Series {
-                name: "zero".into(),
-                points: pts(&|_| 0.0),
-                dashed: true,
-            },
+    let force = Chart::new(
+        "contact force (0 while the follower is off the cam)",
+        "cam angle (°)",
+        "contact force (N)",
+        vec![
+            Series::line("contact force", pts(&|k| samples[k].contact_force)),
+            Series::dashed("zero", pts(&|_| 0.0)),
         ],
-        log_y: false,
-        x_range: None,
-    };
+    );
     chart::save(&force, &dir.join("contact_force"))?;
     Ok(())
 }

@@ -50,6 +50,45 @@ pub struct Chart {
     pub x_range: Option<(f64, f64)>,
 }
 
+impl Series {
+    /// A solid line.
+    pub fn line(name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        Self {
+            name: name.into(),
+            points,
+            dashed: false,
+        }
+    }
+
+    /// A dashed line (a reference, drawn thinner on top).
+    pub fn dashed(name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        Self {
+            name: name.into(),
+            points,
+            dashed: true,
+        }
+    }
+}
+
+impl Chart {
+    /// A chart of `series` on linear axes showing all their points.
+    pub fn new(
+        title: impl Into<String>,
+        x_label: impl Into<String>,
+        y_label: impl Into<String>,
+        series: Vec<Series>,
+    ) -> Self {
+        Self {
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            series,
+            log_y: false,
+            x_range: None,
+        }
+    }
+}
+
 /// Pixel size of the figures.
 pub const SIZE: (u32, u32) = (1000, 600);
 

@@ -110,16 +110,15 @@ pub fn write(
         ),
         x_label: "driver angle (°)".into(),
         y_label: format!("dynamic − quasi-static lift ({u})"),
-        series: vec![Series {
-            name: "dynamic − quasi-static".into(),
-            points: samples
+        series: vec![Series::line(
+            "dynamic − quasi-static",
+            samples
                 .iter()
                 .zip(slow)
                 .enumerate()
                 .map(|(i, (s, q))| (angle(i), sign * ((s.q[k] - start) - (q.q[k] - slow_start))))
                 .collect(),
-            dashed: false,
-        }],
+        )],
         log_y: false,
         x_range: Some((0.0, 360.0)),
     };
@@ -163,10 +162,11 @@ pub fn forces_page(
         y_label: "compressive force (N)".into(),
         series: closed
             .iter()
-            .map(|&j| Series {
-                name: sys.contacts()[j].name.clone(),
-                points: series(&|s| s.contact_forces[j]),
-                dashed: false,
+            .map(|&j| {
+                Series::line(
+                    sys.contacts()[j].name.clone(),
+                    series(&|s| s.contact_forces[j]),
+                )
             })
             .collect(),
         log_y: false,
@@ -212,15 +212,14 @@ pub fn efforts_page(
                     camkin::system::Coordinate::Angle => metres_per_unit,
                     _ => 1.0,
                 };
-                Series {
-                    name: driver.name.clone(),
-                    points: samples
+                Series::line(
+                    driver.name.clone(),
+                    samples
                         .iter()
                         .enumerate()
                         .map(|(i, s)| (step * i as f64, s.driver_efforts[d] * scale))
                         .collect(),
-                    dashed: false,
-                }
+                )
             })
             .collect(),
         log_y: false,
