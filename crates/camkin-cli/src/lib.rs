@@ -107,6 +107,17 @@ pub struct Loaded {
     pub name: String,
 }
 
+impl Loaded {
+    /// A cam preset's mechanism as the cam path takes it (`stem` for titles).
+    pub fn of(preset: camkin::spec::Preset, stem: String) -> Self {
+        Self {
+            mech: preset.built.mechanism,
+            unit: preset.built.length_unit,
+            name: stem,
+        }
+    }
+}
+
 /// Loads the mechanism file, or the paper's built-in mechanism (in cm) when none is given.
 pub fn load_mechanism(path: Option<&PathBuf>) -> Result<Loaded, Failure> {
     match path {

@@ -3,15 +3,16 @@
 //! keys' lines and columns), with the command's own wording of a missing `[dynamics]` and its
 //! warnings printed on stderr.
 
+use crate::Failure;
 use camkin::cam::Mechanism;
 use camkin::dynamics::FollowerDynamics;
 use camkin::spec::text;
-use camkin::spec::{BuildOptions, Built, MechanismSpec};
+use camkin::spec::{BuildOptions, Built, MechanismSpec, ModelFile};
 use std::path::Path;
 
 pub use camkin_studio::mechtext::{
-    build_placed, line_column, paper, parse_spec, FromText, InputError, Warning, MAX_FILE_BYTES,
-    MAX_POINTS, PAPER_TOML,
+    build_placed, line_column, paper, parse_spec, InputError, MAX_FILE_BYTES, MAX_POINTS,
+    PAPER_TOML,
 };
 
 /// Whether the user allowed large work (`--large`): set once by the command from its
@@ -56,68 +57,46 @@ pub fn load_built(path: &Path) -> Result<Built, InputError> {
 pub fn load_with_spec(path: &Path) -> Result<(MechanismSpec, Built), InputError> {
     let (name, text) = read_text(path)?;
     let spec = parse_spec(&text, &name)?;
-    let built = build_spec(
-        &spec,
-        &text,
-        &name,
-        path.parent().unwrap_or(Path::new(".")),
-        false,
-    )?;
+    let built = build_spec(&spec, &text, &name, path.parent().unwrap_or(Path::new(".")))?;
     Ok((spec, built))
 }
 
-/// Reads a mechanism file for a simulation (see [`parse_dynamics`]).
-pub fn load_dynamics(
-    path: &Path,
-) -> Result<(Mechanism, FollowerDynamics, camkin::spec::LengthUnit), InputError> {
-    load_forces(path).map(|(m, p, u, _)| (m, p, u))
-}
-
-/// A mechanism file built in SI units (lengths in metres), `[dynamics]` or not, with its length
-/// unit and its `[lubrication]`.
-pub fn load_si(path: &Path) -> Result<Built, InputError> {
-    let (name, text) = read_text(path)?;
-    build(&text, &name, path.parent().unwrap_or(Path::new(".")), true)
-}
-
-/// [`load_dynamics`] and the file's `[lubrication]`, when it has one.
-pub fn load_forces(
-    path: &Path,
-) -> Result<
-    (
-        Mechanism,
-        FollowerDynamics,
-        camkin::spec::LengthUnit,
-        Option<camkin::spec::BuiltLubrication>,
-    ),
-    InputError,
-> {
-    let (name, text) = read_text(path)?;
-    let b = build(&text, &name, path.parent().unwrap_or(Path::new(".")), true)?;
-    let unit = b.length_unit;
-    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: this command needs a [dynamics] section (mass or inertia; spring_stiffness and spring_preload, default 0, damping, restitution, gravity optional)")))?, unit, b.lubrication))
+/// A preset's `[dynamics]` (`name` for the message when it has none).
+pub fn dynamics_of(built: &Built, name: &str) -> Result<FollowerDynamics, Failure> {
+    built.dynamics.ok_or_else(|| Failure::Input(anyhow::anyhow!("{name}: this command needs a [dynamics] section (mass or inertia; spring_stiffness and spring_preload, default 0, damping, restitution, gravity optional)")))
 }
 
 /// Parses and builds a mechanism from the text of a mechanism file called `name` (for messages);
 /// `base` resolves a relative points-file path.
 pub fn parse(text: &str, name: &str, base: &Path) -> Result<Mechanism, InputError> {
-    build(text, name, base, false).map(|b| b.mechanism)
-}
-
-/// Parses a mechanism file for a dynamic simulation: the geometry converted to metres with the
-/// file's `length_unit`, and the `[dynamics]` section (required).
-pub fn parse_dynamics(
-    text: &str,
-    name: &str,
-    base: &Path,
-) -> Result<(Mechanism, FollowerDynamics), InputError> {
-    let b = build(text, name, base, true)?;
-    Ok((b.mechanism, b.dynamics.ok_or_else(|| InputError::new(format!("{name}: a simulation needs a [dynamics] section (mass or inertia; spring_stiffness and spring_preload, default 0, damping, restitution, gravity optional)")))?))
-}
-
-fn build(text: &str, name: &str, base: &Path, si: bool) -> Result<Built, InputError> {
     let spec = parse_spec(text, name)?;
-    build_spec(&spec, text, name, base, si)
+    build_spec(&spec, text, name, base).map(|b| b.mechanism)
+}
+
+/// How a file in the folder `base` is built in this run (`si`: in metres).
+fn options(base: &Path, si: bool) -> BuildOptions {
+    BuildOptions {
+        base_dir: base.to_path_buf(),
+        si,
+        confine: false,
+        limits: build_limits(),
+    }
+}
+
+/// Notes the points files of `spec` (in the folder `base`) as inputs of the run: no output may
+/// replace them.
+fn note_files(spec: &MechanismSpec, base: &Path) {
+    for f in spec.files() {
+        crate::output::note_input(&base.join(f));
+    }
+}
+
+/// `e`, saying how to build what is over the work limits anyway.
+fn with_large_hint(mut e: InputError) -> InputError {
+    if e.too_much {
+        e.message.push_str("; pass --large to build it anyway");
+    }
+    e
 }
 
 /// Builds a parsed spec, placing errors in `text`; warnings are printed.
@@ -126,49 +105,123 @@ fn build_spec(
     text: &str,
     name: &str,
     base: &Path,
-    si: bool,
 ) -> Result<Built, InputError> {
-    let options = BuildOptions {
-        base_dir: base.to_path_buf(),
-        si,
-        confine: false,
-        limits: build_limits(),
-    };
-    // its points files are inputs of the run too: no output may replace them
-    for f in spec.files() {
-        crate::output::note_input(&base.join(f));
-    }
-    let (built, warnings) = build_placed(spec, text, name, &options).map_err(|mut e| {
-        if e.too_much {
-            e.message.push_str("; pass --large to build it anyway");
-        }
-        e
-    })?;
+    note_files(spec, base);
+    let (built, warnings) =
+        build_placed(spec, text, name, &options(base, false)).map_err(with_large_hint)?;
     for w in warnings {
         crate::say!("camkin: warning: {}", w.message);
     }
     Ok(built)
 }
 
-/// The system in `text` (read from `path`, `name` for messages), built; errors at their keys.
-/// A cam-follower or gear-pair file is its mechanism as a system.
-pub fn load_system(
-    path: &Path,
-    name: &str,
-    text: &str,
-) -> Result<camkin::spec::BuiltSystem, crate::Failure> {
-    let options = camkin::spec::BuildOptions {
-        base_dir: path.parent().unwrap_or(Path::new(".")).to_path_buf(),
-        si: false,
-        confine: false,
-        limits: build_limits(),
-    };
-    let built = camkin::spec::text::read_system(text, name, &options)
-        .map_err(|e| crate::Failure::Input(anyhow::anyhow!(e.message)))?;
-    for w in &built.warnings {
-        crate::say!("camkin: warning: {name}: {w}");
+/// A mechanism file read once as one model, which picks its solver
+/// ([`camkin::spec::ModelFile::solver`]), with its name for titles.
+#[derive(Debug, Clone)]
+pub struct LoadedModel {
+    /// the model
+    pub model: ModelFile,
+    /// the file's name without its folder and extension (`paper` for the built-in cam)
+    pub stem: String,
+}
+
+/// What a command answers, as the model's solver picked it.
+#[derive(Debug)]
+pub enum BySolver {
+    /// the one-coordinate cam solver's preset (a cam-follower or gear-pair file)
+    Cam {
+        /// the preset
+        preset: Box<camkin::spec::Preset>,
+        /// the file's name, for messages
+        name: String,
+        /// the file's name without its folder and extension, for titles
+        stem: String,
+    },
+    /// the general solver's system
+    General {
+        /// the file's name, for messages
+        name: String,
+        /// the file's name without its folder and extension, for titles
+        stem: String,
+        /// the system
+        built: Box<camkin::spec::BuiltSystem>,
+    },
+}
+
+impl LoadedModel {
+    /// What the command answers: the solver the model picks, or the general one on any model
+    /// when `general` (`--system`: a preset's mechanism as a system); its warnings printed.
+    pub fn by_solver(self, general: bool) -> Result<BySolver, Failure> {
+        let name = self.model.name().to_string();
+        if general || self.model.preset().is_none() {
+            let built = self
+                .model
+                .into_system()
+                .map_err(|e| Failure::Input(anyhow::anyhow!(e.message)))?;
+            for w in &built.warnings {
+                crate::say!("camkin: warning: {name}: {w}");
+            }
+            return Ok(BySolver::General {
+                name,
+                stem: self.stem,
+                built: Box::new(built),
+            });
+        }
+        for w in self.model.warning_messages() {
+            crate::say!("camkin: warning: {w}");
+        }
+        match self.model.into_preset() {
+            Some(preset) => Ok(BySolver::Cam {
+                preset: Box::new(preset),
+                name,
+                stem: self.stem,
+            }),
+            None => unreachable!("a model without a preset is answered above"),
+        }
     }
-    Ok(built)
+}
+
+/// Reads the mechanism file at `path` once as one model (`si`: a preset in metres, see
+/// [`camkin::spec::read_model`]), or the paper's built-in cam (in cm) when there is none;
+/// nothing is printed yet ([`LoadedModel::warn`]).
+pub fn load_model(path: Option<&std::path::PathBuf>, si: bool) -> Result<LoadedModel, Failure> {
+    let Some(path) = path else {
+        crate::say!(
+            "camkin: no mechanism file given; using the paper's cam (examples/paper.toml, lengths in cm)"
+        );
+        let preset = camkin::spec::Preset {
+            spec: parse_spec(PAPER_TOML, "paper.toml")
+                .map_err(|e| Failure::Input(anyhow::anyhow!(e)))?,
+            built: Built {
+                mechanism: paper(),
+                dynamics: None,
+                lubrication: None,
+                gear_loads: None,
+                length_unit: camkin::spec::LengthUnit::Cm,
+                si: false,
+                warnings: Vec::new(),
+            },
+            warnings: Vec::new(),
+        };
+        return Ok(LoadedModel {
+            model: ModelFile::of_preset(preset, "paper"),
+            stem: "paper".into(),
+        });
+    };
+    let (name, text) = read_text(path).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
+    let base = path.parent().unwrap_or(Path::new("."));
+    let model = camkin::spec::read_model(&text, &name, &options(base, si))
+        .map_err(|e| Failure::Input(anyhow::anyhow!(with_large_hint(e.into()))))?;
+    if let Some(p) = model.preset() {
+        note_files(&p.spec, base);
+    }
+    Ok(LoadedModel {
+        model,
+        stem: path.file_stem().map_or_else(
+            || path.display().to_string(),
+            |s| s.to_string_lossy().into(),
+        ),
+    })
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! and the command share. The command's file reading is its own (`camkin_cli::mechfile`).
 
 use camkin::cam::Mechanism;
-use camkin::spec::text::{self, TextError};
+use camkin::spec::text::{self, PlacedWarning, TextError};
 use camkin::spec::{BuildOptions, Built, MechanismSpec};
 
 /// Largest mechanism file read, bytes (the library's bound).
@@ -32,26 +32,6 @@ impl InputError {
             too_much: false,
         }
     }
-}
-
-/// A warning about a valid mechanism (uneven nodes, say), placed in the text where it can be.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Warning {
-    /// `file:line:column: message`
-    pub message: String,
-    /// 1-based `(line, column)`, when known
-    pub at: Option<(usize, usize)>,
-}
-
-/// A mechanism built from a file's text, with its spec and placed warnings.
-#[derive(Debug, Clone)]
-pub struct FromText {
-    /// the spec as read
-    pub spec: MechanismSpec,
-    /// what it builds
-    pub built: Built,
-    /// warnings, placed
-    pub warnings: Vec<Warning>,
 }
 
 impl std::fmt::Display for InputError {
@@ -88,16 +68,8 @@ pub fn build_placed(
     text: &str,
     name: &str,
     options: &BuildOptions,
-) -> Result<(Built, Vec<Warning>), InputError> {
-    let (built, warnings) = text::build_placed(spec, text, name, options)?;
-    let warnings = warnings
-        .into_iter()
-        .map(|w| Warning {
-            message: w.message,
-            at: w.at,
-        })
-        .collect();
-    Ok((built, warnings))
+) -> Result<(Built, Vec<PlacedWarning>), InputError> {
+    Ok(text::build_placed(spec, text, name, options)?)
 }
 
 /// 1-based `(line, column)` of byte offset `at` in `text` (column in characters).

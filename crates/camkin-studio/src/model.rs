@@ -7,7 +7,7 @@ use super::answer::{
     revolution, rgb, Analysis, Check, Compare, CompareRun, DynamicsOut, Frame, GearLoadsOut,
     LubricationOut, Placed, Series, ShapeOut, SHARED_POINTS,
 };
-use super::source::{build, build_options_for, Source};
+use super::source::{build, options_for, Source};
 use super::{Limits, StudioError};
 use crate::mechtext as mechfile;
 use crate::scene::mechanism::follower_shapes;
@@ -16,7 +16,7 @@ use camkin::curve::Domain;
 use camkin::geometry::deg_to_rad;
 use camkin::interp::{max_and_mean, relative_errors, Interpolated};
 use camkin::report::{DesignReport, ForceReport, ForceRequest};
-use camkin::spec::MechanismSpec;
+use camkin::spec::{MechanismSpec, Preset};
 use camkin::table::{AnalysisRow, AnalysisSweep, AngleUnit, Per, Units};
 use std::time::Instant;
 
@@ -38,13 +38,13 @@ pub fn check_work(mech: &Mechanism, angles: usize, limits: &Limits) -> Result<()
 /// checks against `pressure_limit_deg`.
 pub fn analyze_mechanism(
     text: &str,
+    parsed: &Preset,
     source: &Source,
     step_deg: f64,
     pressure_limit_deg: f64,
     limits: &Limits,
 ) -> Result<Analysis, StudioError> {
     let t0 = Instant::now();
-    let parsed = build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
     let unit = parsed.built.length_unit;
     let angles = revolution(step_deg);
@@ -257,9 +257,9 @@ pub fn analyze_mechanism(
         checks,
         warnings: parsed
             .warnings
-            .into_iter()
+            .iter()
             .map(|w| Placed {
-                message: w.message,
+                message: w.message.clone(),
                 line: w.at.map(|a| a.0),
                 column: w.at.map(|a| a.1),
             })
@@ -334,7 +334,7 @@ fn dynamics(
         return Ok(None);
     }
     // the spec already read, built again in SI units
-    let options = build_options_for(spec, source, true, limits)?;
+    let options = options_for(spec, source, true, limits)?;
     let (si, _) = mechfile::build_placed(spec, text, &source.name, &options)?;
     let (Some(params), mech) = (si.dynamics, &si.mechanism) else {
         return Ok(None);
@@ -409,7 +409,7 @@ fn gear_loads(
     if spec.gear_loads.is_none() {
         return Ok(None);
     }
-    let options = build_options_for(spec, source, true, limits)?;
+    let options = options_for(spec, source, true, limits)?;
     let (si, _) = mechfile::build_placed(spec, text, &source.name, &options)?;
     let input = |message: String| StudioError::Input { message, at: None };
     let pair = camkin::gears::GearPair::new(&si.mechanism)
@@ -540,8 +540,17 @@ pub fn compare(
     step_deg: f64,
     limits: &Limits,
 ) -> Result<Compare, StudioError> {
+    compare_preset(&build(text, source, limits)?, nodes, step_deg, limits)
+}
+
+/// The interpolation study of the cam `parsed`.
+pub fn compare_preset(
+    parsed: &Preset,
+    nodes: &[usize],
+    step_deg: f64,
+    limits: &Limits,
+) -> Result<Compare, StudioError> {
     let t0 = Instant::now();
-    let parsed = build(text, source, limits)?;
     let mech = &parsed.built.mechanism;
     let angles = revolution(step_deg);
     let total_nodes: usize = nodes.iter().sum();

@@ -2,8 +2,9 @@
 //! gear-pair file) or a system, its points files confined to the source's folder.
 
 use super::{Limits, StudioError};
-use crate::mechtext::{self as mechfile, FromText};
-use camkin::spec::{BuildOptions, MechanismSpec};
+use crate::mechtext::{self as mechfile, InputError};
+use camkin::spec::text;
+use camkin::spec::{BuildOptions, ModelFile, Preset};
 use std::path::PathBuf;
 
 /// Where a mechanism's text comes from: its name for messages and the folder its points files
@@ -16,19 +17,10 @@ pub struct Source {
     pub folder: Option<PathBuf>,
 }
 
-/// How a spec from `source` is built: points files confined to the source's folder (the
-/// built-in cam has none, so it may read no file at all).
-pub fn build_options_for(
-    spec: &MechanismSpec,
-    source: &Source,
-    si: bool,
-    limits: &Limits,
-) -> Result<BuildOptions, StudioError> {
-    build_options(spec.cam.profile.path.is_some(), source, si, limits)
-}
-
-/// How a file from `source` that reads a points file for its cam (`cam_file`) is built.
-pub fn build_options(
+/// How a file from `source` is built: points files confined to the source's folder; the
+/// built-in cam has none, so a file read there that asks for a points file (`cam_file`) is
+/// refused.
+fn build_options(
     cam_file: bool,
     source: &Source,
     si: bool,
@@ -55,37 +47,42 @@ pub fn build_options(
     })
 }
 
-/// Builds the mechanism in `text` (in its own units), errors and warnings placed in the text.
-pub fn build(text: &str, source: &Source, limits: &Limits) -> Result<FromText, StudioError> {
+/// How the spec of the cam `spec` from `source` is built (`si`: in metres, for its dynamics).
+pub fn options_for(
+    spec: &camkin::spec::MechanismSpec,
+    source: &Source,
+    si: bool,
+    limits: &Limits,
+) -> Result<BuildOptions, StudioError> {
+    build_options(spec.cam.profile.path.is_some(), source, si, limits)
+}
+
+/// Reads `text` once as one model (see [`camkin::spec::read_model`]): its solver is the
+/// studio's answer, a preset in its own units; errors and warnings placed in the text.
+pub fn read(text: &str, source: &Source, limits: &Limits) -> Result<ModelFile, StudioError> {
+    // without a folder no points file may be read: a cam that asks for one is refused first
+    let cam_file = source.folder.is_none()
+        && !camkin::spec::text::is_system(text)
+        && mechfile::parse_spec(text, &source.name)?
+            .cam
+            .profile
+            .path
+            .is_some();
+    let options = build_options(cam_file, source, false, limits)?;
+    Ok(camkin::spec::read_model(text, &source.name, &options).map_err(InputError::from)?)
+}
+
+/// Builds the cam-follower or gear-pair file `text` (in its own units) for what only a cam
+/// has (the interpolation study, shop output): a system file is refused with the library's
+/// message.
+pub fn build(text: &str, source: &Source, limits: &Limits) -> Result<Preset, StudioError> {
     let spec = mechfile::parse_spec(text, &source.name)?;
-    let options = build_options_for(&spec, source, false, limits)?;
-    let (built, warnings) = mechfile::build_placed(&spec, text, &source.name, &options)?;
-    Ok(FromText {
+    let options = options_for(&spec, source, false, limits)?;
+    let (built, warnings) =
+        text::build_placed(&spec, text, &source.name, &options).map_err(InputError::from)?;
+    Ok(Preset {
         spec,
         built,
         warnings,
     })
-}
-
-/// Whether `text` is a system file.
-pub fn is_system(text: &str) -> bool {
-    camkin::spec::text::is_system(text)
-}
-
-/// The system in `text`, its points files read only from the source's folder.
-pub fn build_system(
-    text: &str,
-    source: &Source,
-    limits: &Limits,
-) -> Result<camkin::spec::BuiltSystem, StudioError> {
-    let options = build_options(false, source, false, limits)?;
-    camkin::spec::text::read_system(text, &source.name, &options).map_err(|e| StudioError::Input {
-        message: e.message,
-        at: e.at,
-    })
-}
-
-/// Whether the system in `text` builds (the studio opens a file with an error to be mended).
-pub fn check_system(text: &str, source: &Source, limits: &Limits) -> Result<(), StudioError> {
-    build_system(text, source, limits).map(|_| ())
 }

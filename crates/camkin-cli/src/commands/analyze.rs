@@ -1,7 +1,8 @@
 //! `camkin analyze`: the one-instant analysis at a list or range of cam angles, as CSV.
 
+use crate::mechfile::BySolver;
 use crate::output::TableFormat;
-use crate::{load_mechanism, Failure};
+use crate::Failure;
 use anyhow::Result;
 use camkin::cam::Mechanism;
 use camkin::table::AnalysisSweep;
@@ -82,22 +83,12 @@ const CHUNK: usize = 65_536;
 const BYTES_PER_ROW: f64 = 380.0;
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    // a system file ([[body]], [[joint]], …) is analysed as a system
-    if let Some(path) = &args.mechanism {
-        let (name, text) =
-            crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
-        if args.system || camkin::spec::text::is_system(&text) {
-            let built = crate::mechfile::load_system(path, &name, &text)?;
-            return analyze_system(args, &name, &built);
-        }
-    }
-    let loaded = load_mechanism(args.mechanism.as_ref())?;
-    if args.system {
-        // the built-in cam
-        let built = camkin::spec::BuiltSystem::from_mechanism(&loaded.mech, loaded.unit)
-            .map_err(|e| Failure::Input(anyhow::anyhow!("{}: {e}", loaded.name)))?;
-        return analyze_system(args, &loaded.name, &built);
-    }
+    // the model picks its solver (--system: the general one on a cam's preset too)
+    let model = crate::mechfile::load_model(args.mechanism.as_ref(), false)?;
+    let loaded = match model.by_solver(args.system)? {
+        BySolver::General { name, built, .. } => return analyze_system(args, &name, &built),
+        BySolver::Cam { preset, stem, .. } => crate::Loaded::of(*preset, stem),
+    };
     args.table.check()?;
     let mech = &loaded.mech;
     let units = Units::new(

@@ -2,7 +2,8 @@
 //! one row per contact, each with its sliding rates, normal accelerations and acceleration
 //! constraint row `Φ_θ θ̈ + Φ_q q̈ = γ`; CSV or JSON.
 
-use crate::{load_mechanism, Failure};
+use crate::mechfile::BySolver;
+use crate::Failure;
 use camkin::table::{contact_cells, contact_columns, ContactRow, Units};
 use std::path::PathBuf;
 
@@ -21,15 +22,11 @@ pub struct ContactsArgs {
 }
 
 pub fn run(args: &ContactsArgs) -> Result<(), Failure> {
-    if let Some(path) = &args.mechanism {
-        let (name, text) =
-            crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
-        if camkin::spec::text::is_system(&text) {
-            let built = crate::mechfile::load_system(path, &name, &text)?;
-            return system_contacts(args, &name, &built);
-        }
-    }
-    let loaded = load_mechanism(args.mechanism.as_ref())?;
+    let model = crate::mechfile::load_model(args.mechanism.as_ref(), false)?;
+    let loaded = match model.by_solver(false)? {
+        BySolver::General { name, built, .. } => return system_contacts(args, &name, &built),
+        BySolver::Cam { preset, stem, .. } => crate::Loaded::of(*preset, stem),
+    };
     args.table.check()?;
     let mech = &loaded.mech;
     let angles = args.sweep.or_revolution();

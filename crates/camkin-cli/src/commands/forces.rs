@@ -10,7 +10,7 @@ pub use crate::args::forces::ForcesArgs;
 use crate::args::forces::{input_error, lubrication_request};
 use crate::draw::chart::{self, Chart, Series};
 use crate::forces_text::{self, num, LengthUnit};
-use crate::mechfile;
+use crate::mechfile::BySolver;
 use crate::output::{write_atomic, write_cell_table, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
@@ -19,20 +19,21 @@ use camkin::report::{rpm, ForceReport, ForceRequest, Materials, SystemForceFailu
 use std::path::Path;
 
 pub fn run(args: &ForcesArgs) -> Result<(), Failure> {
-    // a system file ([[body]], …, [dynamics]): its simulation's forces
-    let (name, text) =
-        crate::mechfile::read_text(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
-    if camkin::spec::text::is_system(&text) {
-        return run_system(args, &name, &text);
-    }
+    // the model picks its solver: a system file ([[body]], …, [dynamics]) gives its
+    // simulation's forces; a cam preset is built in metres
+    let model = crate::mechfile::load_model(Some(&args.mechanism), true)?;
+    let (preset, name) = match model.by_solver(false)? {
+        BySolver::General { name, built, .. } => return run_system(args, &name, &built),
+        BySolver::Cam { preset, name, .. } => (preset, name),
+    };
     // a gear pair's loads: asked for by a flag, or by the file's [gear_loads]
-    let file_loads =
-        crate::mechfile::parse_spec(&text, &name).is_ok_and(|s| s.gear_loads.is_some());
-    if args.torque.is_some() || args.power.is_some() || file_loads {
-        return super::gear_loads::run(args, &name);
+    if args.torque.is_some() || args.power.is_some() || preset.spec.gear_loads.is_some() {
+        return super::gear_loads::run(args, &name, &preset.built);
     }
-    let (mech, params, unit, file) =
-        mechfile::load_forces(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    let unit = preset.built.length_unit;
+    let params = crate::mechfile::dynamics_of(&preset.built, &name)?;
+    let file = preset.built.lubrication.clone();
+    let mech = preset.built.mechanism;
     // the folder is checked before any work (a file in its place, an input in it, someone
     // else's files)
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
@@ -238,7 +239,11 @@ fn write_files(dir: &Path, r: &ForceReport) -> anyhow::Result<()> {
 /// needs), its report and the checks `--margin` (every contact closed all the revolution keeps
 /// that force), `--allowable` (every contact's Hertz pressure stays under it) and `--target-rpm`
 /// (no contact that stays closed at low speed opens up to it: the no-follow speed's sweep).
-fn run_system(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> {
+fn run_system(
+    args: &ForcesArgs,
+    name: &str,
+    built: &camkin::spec::BuiltSystem,
+) -> Result<(), Failure> {
     // what a system's file says for each contact
     if let Some(w) = args.face_width {
         return Err(bad(format!(
@@ -263,7 +268,6 @@ fn run_system(args: &ForcesArgs, name: &str, text: &str) -> Result<(), Failure> 
             )));
         }
     }
-    let built = crate::mechfile::load_system(&args.mechanism, name, text)?;
     if !built.simulated {
         return Err(bad(format!(
             "{name}: a system's forces come from its simulation: give it a [dynamics] table (see docs/systems.md, \"Dynamics of a system\")"

@@ -17,8 +17,8 @@ fn bad(msg: String) -> Failure {
     Failure::Input(anyhow!(msg))
 }
 
-pub fn run(args: &ForcesArgs, name: &str) -> Result<(), Failure> {
-    let built = crate::mechfile::load_si(&args.mechanism).map_err(|e| bad(e.to_string()))?;
+/// The loads of the gear pair `built` (in metres, read from `name`).
+pub fn run(args: &ForcesArgs, name: &str, built: &camkin::spec::Built) -> Result<(), Failure> {
     let unit = built.length_unit;
     let mech = &built.mechanism;
     let asked = match (args.torque, args.power) {

@@ -4,7 +4,8 @@ use crate::args::{AngleList, RevolutionStep};
 use crate::draw::chart::{self, Chart, Series};
 use crate::draw::mechanism::{self as scene, Shape};
 use crate::draw::svaj;
-use crate::{load_mechanism, Failure, Loaded};
+use crate::mechfile::BySolver;
+use crate::{Failure, Loaded};
 use anyhow::{anyhow, Result};
 use camkin::cam::{FollowerState, Mechanism};
 use camkin::table::{Per, Units};
@@ -476,14 +477,12 @@ fn jump_order(motion: &[Vec<Option<f64>>; 4], k: usize) -> Option<usize> {
 }
 
 pub fn run(args: &PlotArgs) -> Result<(), Failure> {
-    // a system file ([[body]], [[joint]], …) is drawn as a system
-    if let Some(path) = &args.mechanism {
-        let (name, text) =
-            crate::mechfile::read_text(path).map_err(|e| Failure::Input(anyhow!(e)))?;
-        if camkin::spec::text::is_system(&text) {
-            return plot_system(args, path, &name, &text);
-        }
-    }
+    // the model picks its solver: a system file is drawn as a system
+    let model = crate::mechfile::load_model(args.mechanism.as_ref(), false)?;
+    let loaded = match model.by_solver(false)? {
+        BySolver::General { name, stem, built } => return plot_system(args, &name, &stem, &built),
+        BySolver::Cam { preset, stem, .. } => crate::Loaded::of(*preset, stem),
+    };
     let angles = args.at.0.clone();
     if angles.len() > 360 {
         return Err(Failure::Input(anyhow!(
@@ -498,7 +497,6 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             args.frames
         )));
     }
-    let loaded = load_mechanism(args.mechanism.as_ref())?;
     let mech = &loaded.mech;
     let units = Units::new(
         mech,
@@ -570,10 +568,14 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
 
 /// Draws the system in `text` at the driver angles `--at` (`drawing_<angle>.svg/png`) and over a
 /// revolution in `--frames` frames (`animation.svg`), into `--out`.
-fn plot_system(args: &PlotArgs, path: &Path, name: &str, text: &str) -> Result<(), Failure> {
+fn plot_system(
+    args: &PlotArgs,
+    name: &str,
+    stem: &str,
+    built: &camkin::spec::BuiltSystem,
+) -> Result<(), Failure> {
     use crate::draw::mechanism::Shape;
     use crate::draw::system::system_scene;
-    let built = crate::mechfile::load_system(path, name, text)?;
     let sys = &built.system;
     let angles = args.at.0.clone();
     if angles.len() > 360 || !(1..=3600).contains(&args.frames) {
@@ -596,7 +598,7 @@ fn plot_system(args: &PlotArgs, path: &Path, name: &str, text: &str) -> Result<(
         args.work.large,
         ", or use fewer --frames",
     )?;
-    let times = crate::sweep::times_of(&built, name, &all)?;
+    let times = crate::sweep::times_of(built, name, &all)?;
     let size = sys.size();
     // the drawings at --at, then a revolution's frames, from one sweep in order through
     // instants at most half a degree of the driver apart (a contact is followed, not guessed
@@ -635,7 +637,7 @@ fn plot_system(args: &PlotArgs, path: &Path, name: &str, text: &str) -> Result<(
         scenes.push((all[i], shapes.unwrap_or_default()));
     }
     let od = crate::out_dir::OutDir::begin(&args.out, args.force.force)?;
-    let what = format!("{} at driver angle", built_name(path));
+    let what = format!("{stem} at driver angle");
     let written = draw_all(
         od.path(),
         &scenes,
@@ -654,13 +656,6 @@ fn plot_system(args: &PlotArgs, path: &Path, name: &str, text: &str) -> Result<(
 }
 
 /// The file's name without its folder and extension, for titles.
-fn built_name(path: &Path) -> String {
-    path.file_stem().map_or_else(
-        || path.display().to_string(),
-        |s| s.to_string_lossy().into(),
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::jump_order;

@@ -99,11 +99,7 @@ pub fn run_serve(args: &ServeArgs) -> Result<(), Failure> {
         return run_worker(args);
     }
     let session = open(args.mechanism.as_ref())?;
-    let checked = if crate::studio::source::is_system(&session.text) {
-        crate::studio::source::check_system(&session.text, &session.source, &Limits::default())
-    } else {
-        crate::studio::source::build(&session.text, &session.source, &Limits::default()).map(|_| ())
-    };
+    let checked = crate::studio::source::read(&session.text, &session.source, &Limits::default());
     if let Err(e) = checked {
         let e = match e {
             StudioError::Input { message, .. } => message,

@@ -5,7 +5,7 @@
 
 use crate::args::RevolutionStep;
 use crate::draw::chart::{self, Chart, Series};
-use crate::mechfile;
+use crate::mechfile::{self, BySolver};
 use crate::output::{write_atomic, write_cell_table, Cell, Keyed, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
@@ -96,20 +96,22 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         )));
     }
     let steps = outputs as f64 * args.substeps as f64;
-    // a system file ([[body]], [[joint]], …, [dynamics]) is simulated as a system
-    let (name, text) =
-        crate::mechfile::read_text(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
-    if camkin::spec::text::is_system(&text) {
-        return run_system(args, &name, &text, outputs);
-    }
-    if args.no_follow.is_some() {
+    // the model picks its solver: a system file ([[body]], [[joint]], …, [dynamics]) is
+    // simulated as a system, a cam preset in metres by its one-coordinate model
+    let model = mechfile::load_model(Some(&args.mechanism), true)?;
+    if args.no_follow.is_some() && model.model.preset().is_some() {
         return Err(Failure::Input(anyhow!(
             "--no-follow: for a system file ([[body]], [[joint]], …, [dynamics]); {} is a mechanism file",
-            name
+            model.model.name()
         )));
     }
-    let (mech, params, unit) =
-        mechfile::load_dynamics(&args.mechanism).map_err(|e| Failure::Input(anyhow!(e)))?;
+    let (preset, name) = match model.by_solver(false)? {
+        BySolver::General { name, built, .. } => return run_system(args, &name, &built, outputs),
+        BySolver::Cam { preset, name, .. } => (preset, name),
+    };
+    let unit = preset.built.length_unit;
+    let params = mechfile::dynamics_of(&preset.built, &name)?;
+    let mech = preset.built.mechanism;
     let units = Units::plain(&mech, unit);
     // the simulation computes in metres: lengths back to the file's unit
     let k_len = if units.oscillating {
@@ -365,10 +367,15 @@ pub(super) fn system_err(name: &str, e: DynamicsError) -> Failure {
     }
 }
 
-/// Simulates the system file `text` (read from `name`) over `outputs` output intervals:
+/// Simulates the system `built` (read from `name`) over `outputs` output intervals:
 /// the samples as CSV (stdout, or `time_series.csv` with `--out`), its lift-offs and impacts as
 /// a table on stderr (and `events.csv`), the pages of its motion and forces.
-fn run_system(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Result<(), Failure> {
+fn run_system(
+    args: &SimulateArgs,
+    name: &str,
+    built: &camkin::spec::BuiltSystem,
+    outputs: usize,
+) -> Result<(), Failure> {
     if args.start_angle != 0.0 {
         return Err(bad(format!(
             "--start-angle: {}: a system starts where its file puts it (its bodies' poses, at driver angle 0)",
@@ -380,7 +387,6 @@ fn run_system(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Re
             "--format json: a system's time series is written as CSV".into(),
         ));
     }
-    let built = crate::mechfile::load_system(&args.mechanism, name, text)?;
     let sys = &built.system;
     let unit = built.length_unit.name();
     let step = args.step.deg();
@@ -388,7 +394,7 @@ fn run_system(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Re
         if built.time_of(0.0).is_none() {
             return Err(plan_err(name, camkin::spec::PlanError::NotAnAngle));
         }
-        return no_follow(args, name, &built, range);
+        return no_follow(args, name, built, range);
     }
     let (plan, mut sim) = built
         .plan(args.revolutions, step, Some(args.substeps))
@@ -445,7 +451,7 @@ fn run_system(args: &SimulateArgs, name: &str, text: &str, outputs: usize) -> Re
                 .filter(|e| e.kind == camkin::dynamics::EventKind::Impact)
                 .map(|e| angle_of(e.time))
                 .collect();
-            crate::draw::simulation::write(&dir, name, &built, &samples, &slow, step, &impacts)
+            crate::draw::simulation::write(&dir, name, built, &samples, &slow, step, &impacts)
                 .map_err(Failure::output)?;
             od.commit().map_err(Failure::output)?;
         }

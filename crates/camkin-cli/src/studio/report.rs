@@ -6,6 +6,7 @@ use super::model;
 use super::source::Source;
 use super::{assets, Limits, StudioError};
 use crate::output::{write_cells, TableFormat};
+use camkin::spec::Solver;
 use camkin::table::{analysis_cells, analysis_columns, AnalysisSweep, AngleUnit, Per, Units};
 use serde::Serialize;
 
@@ -21,12 +22,16 @@ pub fn csv(
     step_deg: f64,
     limits: &Limits,
 ) -> Result<String, StudioError> {
-    if super::source::is_system(text) {
-        let (columns, rows) = super::analysis::system_table(text, source, step_deg, limits)?;
-        let mut rows = Some(rows);
-        return csv_text(&columns, || rows.take());
-    }
-    let parsed = super::source::build(text, source, limits)?;
+    let model = super::source::read(text, source, limits)?;
+    let parsed = match model.solver() {
+        Solver::Cam(preset) => preset,
+        Solver::General(built) => {
+            let (columns, rows) = super::analysis::system_table(built, step_deg, limits)?;
+            let mut rows = Some(rows);
+            return csv_text(&columns, || rows.take());
+        }
+        _ => unreachable!("the studio answers every solver"),
+    };
     let mech = &parsed.built.mechanism;
     let angles = super::answer::revolution(step_deg);
     model::check_work(mech, angles.len(), limits)?;
@@ -97,9 +102,8 @@ fn radius_range(points: &[[f64; 2]]) -> [f64; 2] {
     })
 }
 
-/// The shop summary of the mechanism in `text` (none when it cannot be made: a system).
-fn shop(text: &str, source: &Source, limits: &Limits) -> Option<Shop> {
-    let parsed = super::source::build(text, source, limits).ok()?;
+/// The shop summary of the cam `parsed` (none when it cannot be made).
+fn shop(parsed: &camkin::spec::Preset) -> Option<Shop> {
     let req = camkin::report::ShopRequest {
         step_deg: 1.0,
         tool_radius: None,
@@ -160,20 +164,17 @@ pub fn html(
     pressure_limit_deg: f64,
     limits: &Limits,
 ) -> Result<String, StudioError> {
-    let result = super::analysis::analyze(text, source, step_deg, pressure_limit_deg, limits)?;
-    // a study that cannot be made (an open profile, say) leaves the report without it
-    let compare = if super::source::is_system(text) {
-        None
-    } else {
-        model::compare(text, source, &[REPORT_COMPARE_NODES], step_deg, limits).ok()
-    };
+    let model = super::source::read(text, source, limits)?;
+    let result =
+        super::analysis::analyze_model(&model, source, step_deg, pressure_limit_deg, limits)?;
+    // what only a cam has: the interpolation study (one that cannot be made, an open profile
+    // say, leaves the report without it), the radii and the shop summary
+    let preset = model.preset();
+    let compare = preset
+        .and_then(|p| model::compare_preset(p, &[REPORT_COMPARE_NODES], step_deg, limits).ok());
     let radius =
         (!result.system && !result.profile.is_empty()).then(|| radius_range(&result.profile));
-    let shop = if result.system {
-        None
-    } else {
-        shop(text, source, limits)
-    };
+    let shop = preset.and_then(shop);
     let data = ReportData {
         toml: text,
         result,

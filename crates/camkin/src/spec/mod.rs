@@ -43,6 +43,8 @@ mod gear_loads;
 mod gear_pair;
 mod kinds;
 mod lubrication;
+#[cfg(feature = "text")]
+mod model_file;
 mod pair;
 mod profile;
 mod run_plan;
@@ -67,6 +69,8 @@ pub use gear_loads::{
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{DriverCoordinate, FollowerKind, JointKindName, ProfileKind};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
+#[cfg(feature = "text")]
+pub use model_file::{read_model, ModelFile, Preset, Solver};
 pub use run_plan::{PlanError, PlanField, RunPlan, MAX_REVOLUTIONS, MAX_SUBSTEPS, STEP_RANGE_DEG};
 pub use system::{
     BodySpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec, TorsionSpringSpec,

@@ -118,8 +118,17 @@ fn bounded<'t>(text: &'t str, name: &str) -> Result<&'t str, TextError> {
 /// The spec in a mechanism file's TOML `text` (`name` for messages): a syntax or type error is
 /// placed at toml's line and column, with the key path of the value that failed.
 pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
-    if is_system(text) {
-        return Err(TextError {
+    parse_toml_of(text, name, FileKind::of(text))
+}
+
+/// [`parse_toml`] of text whose kind is known (one parse fewer).
+pub(crate) fn parse_toml_of(
+    text: &str,
+    name: &str,
+    kind: FileKind,
+) -> Result<MechanismSpec, TextError> {
+    match kind {
+        FileKind::System => Err(TextError {
             message: format!(
                 "{name}: a system file ([[body]], [[joint]], [[driver]], [[contact]]), not a mechanism file ([cam], [follower]): `camkin analyze`, `contacts`, `plot`, `serve`, `simulate` and `forces` (with [dynamics]) and Python's camkin.System read systems"
             ),
@@ -127,30 +136,56 @@ pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
             path: None,
             problem: TextProblem::Syntax { value: None },
             name: name.to_string(),
-        });
+        }),
+        FileKind::GearPair => {
+            let file: super::GearPairFile = parse_toml_as(text, name)?;
+            file.to_mechanism().map_err(|e| place(text, name, e))
+        }
+        FileKind::Mechanism => parse_toml_as(text, name),
     }
-    if is_gear_pair(text) {
-        let file: super::GearPairFile = parse_toml_as(text, name)?;
-        return file.to_mechanism().map_err(|e| place(text, name, e));
+}
+
+/// What a TOML file describes, by its top-level tables (read in one parse; text that is not
+/// TOML is a mechanism file, whose parse says where it fails).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum FileKind {
+    /// `[[body]]`, `[[joint]]`, `[[driver]]` or `[[contact]]`, and no `[cam]`
+    System,
+    /// `[gear_pair]`
+    GearPair,
+    /// `[cam]` and `[follower]`
+    Mechanism,
+}
+
+impl FileKind {
+    pub(crate) fn of(text: &str) -> Self {
+        let Ok(doc) = toml_edit::ImDocument::parse(text) else {
+            return FileKind::Mechanism;
+        };
+        let t = doc.as_table();
+        if ["body", "joint", "driver", "contact"]
+            .iter()
+            .any(|k| t.contains_key(k))
+            && !t.contains_key("cam")
+        {
+            FileKind::System
+        } else if t.contains_key("gear_pair") {
+            FileKind::GearPair
+        } else {
+            FileKind::Mechanism
+        }
     }
-    parse_toml_as(text, name)
 }
 
 /// Whether TOML `text` is a gear-pair file (`[gear_pair]`).
 pub fn is_gear_pair(text: &str) -> bool {
-    toml_edit::ImDocument::parse(text).is_ok_and(|d| d.as_table().contains_key("gear_pair"))
+    FileKind::of(text) == FileKind::GearPair
 }
 
 /// Whether TOML `text` is a system file (`[[body]]`, `[[joint]]`, …) rather than a mechanism
 /// file (`[cam]` and `[follower]`).
 pub fn is_system(text: &str) -> bool {
-    toml_edit::ImDocument::parse(text).is_ok_and(|d| {
-        let t = d.as_table();
-        ["body", "joint", "driver", "contact"]
-            .iter()
-            .any(|k| t.contains_key(k))
-            && !t.contains_key("cam")
-    })
+    FileKind::of(text) == FileKind::System
 }
 
 /// The spec in a system file's TOML `text`, errors placed as [`parse_toml`]'s.
@@ -169,25 +204,15 @@ pub fn build_system_placed(
     spec.build(options).map_err(|e| place(text, name, e))
 }
 
-/// The system a file describes, for the front ends that take either kind of file (one reader
-/// of both): a system file's bodies, joints, drivers and contacts; or a cam-follower or
-/// gear-pair file's mechanism as a system ([`crate::cam::Mechanism::to_system`]), swept over
-/// its cam angle.
+/// The system a file describes ([`super::read_model`] then [`super::ModelFile::into_system`]):
+/// a system file's bodies, joints, drivers and contacts; or a cam-follower or gear-pair file's
+/// mechanism as a system ([`crate::cam::Mechanism::to_system`]), swept over its cam angle.
 pub fn read_system(
     text: &str,
     name: &str,
     options: &BuildOptions,
 ) -> Result<super::BuiltSystem, TextError> {
-    if is_system(text) {
-        let spec = parse_system_toml(text, name)?;
-        return build_system_placed(&spec, text, name, options);
-    }
-    let spec = parse_toml(text, name)?;
-    let (built, _) = build_placed(&spec, text, name, options)?;
-    let mut system = super::BuiltSystem::from_mechanism(&built.mechanism, built.length_unit)
-        .map_err(|e| place(text, name, e.into()))?;
-    system.warnings.extend(built.warnings);
-    Ok(system)
+    super::read_model(text, name, options)?.into_system()
 }
 
 fn parse_toml_as<T: serde::de::DeserializeOwned>(text: &str, name: &str) -> Result<T, TextError> {
@@ -341,7 +366,7 @@ fn located(text: &str, name: &str, field: Option<Field>) -> (String, Option<(usi
 
 /// The error as `name:line:column: message`, at the key of the field it names (the nearest
 /// enclosing key when that one is absent: the kind's, for a field the kind needs).
-fn place(text: &str, name: &str, e: SpecError) -> TextError {
+pub(crate) fn place(text: &str, name: &str, e: SpecError) -> TextError {
     let path = Some(e.field().to_string());
     if let SpecError::PointsFile { .. } = e {
         return TextError {
