@@ -106,112 +106,54 @@ fn bad_lubrication_input_is_refused_naming_the_flag() {
     let dir = tempfile::tempdir().unwrap();
     let disc = slow_disc(dir.path());
     let out = dir.path().join("out");
+    // (the flags, split at spaces; what the refusal says)
     for (args, needles) in [
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "eta=-0.01:alpha=2e-8",
-                "--roughness",
-                "0.2,0.3",
-            ],
+            "--face-width 10 --oil eta=-0.01:alpha=2e-8 --roughness 0.2,0.3",
             vec!["--oil", "eta = -0.01"],
         ),
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "eta=9000:alpha=2e-8",
-                "--roughness",
-                "0.2,0.3",
-            ],
+            "--face-width 10 --oil eta=9000:alpha=2e-8 --roughness 0.2,0.3",
             vec!["--oil", "did you write mPa·s"],
         ),
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "eta=0.01:alpha=20",
-                "--roughness",
-                "0.2,0.3",
-            ],
+            "--face-width 10 --oil eta=0.01:alpha=20 --roughness 0.2,0.3",
             vec!["--oil", "did you write 1/GPa"],
         ),
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "sae-30@100c",
-                "--roughness",
-                "0,0.3",
-            ],
+            "--face-width 10 --oil sae-30@100c --roughness 0,0.3",
             vec!["--roughness", "0 µm is not a plausible roughness"],
         ),
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "sae-30@100c",
-                "--roughness",
-                "0.2",
-            ],
+            "--face-width 10 --oil sae-30@100c --roughness 0.2",
             vec!["--roughness", "CAM,FOLLOWER"],
         ),
         (
-            vec!["--face-width", "10", "--oil", "sae-30@100c"],
+            "--face-width 10 --oil sae-30@100c",
             vec!["--oil", "--roughness CAM,FOLLOWER"],
         ),
         (
-            vec!["--face-width", "10", "--roughness", "0.2,0.3"],
+            "--face-width 10 --roughness 0.2,0.3",
             vec!["--roughness", "--oil"],
         ),
         (
-            vec!["--oil", "sae-30@100c", "--roughness", "0.2,0.3"],
+            "--oil sae-30@100c --roughness 0.2,0.3",
             vec!["--face-width", "lubrication needs the contact's face width"],
         ),
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "sae-30@100c",
-                "--roughness",
-                "0.2,0.3",
-                "--friction",
-                "1.5",
-            ],
+            "--face-width 10 --oil sae-30@100c --roughness 0.2,0.3 --friction 1.5",
             vec!["--friction", "1.5 is not a friction coefficient"],
         ),
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "sae-30@100c",
-                "--roughness",
-                "0.2,0.3",
-                "--film",
-                "grubin",
-            ],
+            "--face-width 10 --oil sae-30@100c --roughness 0.2,0.3 --film grubin",
             vec!["--film", "\"grubin\" is not a film formula"],
         ),
         (
-            vec![
-                "--face-width",
-                "10",
-                "--oil",
-                "castor",
-                "--roughness",
-                "0.2,0.3",
-            ],
+            "--face-width 10 --oil castor --roughness 0.2,0.3",
             vec!["--oil", "\"castor\" is not a lubricant", "sae-30@100c"],
         ),
     ] {
+        let args: Vec<&str> = args.split(' ').collect();
         let a = run!("forces", &disc)
             .args(&args)
             .arg("--out")

@@ -17,77 +17,25 @@ fn an_output_path_that_cannot_be_written_is_exit_2_in_every_command() {
     let dir = tempfile::tempdir().unwrap();
     let bad = blocked(dir.path());
     let ex = examples();
-    let runs: Vec<Vec<String>> = vec![
-        vec![
-            "analyze".into(),
-            "--at".into(),
-            "0".into(),
-            "-o".into(),
-            bad.join("x.csv").display().to_string(),
-        ],
-        vec![
-            "plot".into(),
-            "--at".into(),
-            "0".into(),
-            "--step".into(),
-            "5".into(),
-            "--frames".into(),
-            "4".into(),
-            "--out".into(),
-            bad.display().to_string(),
-        ],
-        vec![
-            "synth".into(),
-            ex.join("motion-roller.toml").display().to_string(),
-            "--step".into(),
-            "5".into(),
-            "--out".into(),
-            bad.display().to_string(),
-        ],
-        vec![
-            "simulate".into(),
-            ex.join("paper-dynamics.toml").display().to_string(),
-            "--step".into(),
-            "5".into(),
-            "--out".into(),
-            bad.display().to_string(),
-        ],
-        vec![
-            "compare".into(),
-            ex.join("paper.toml").display().to_string(),
-            "--nodes".into(),
-            "10".into(),
-            "--step".into(),
-            "5".into(),
-            "--out".into(),
-            bad.display().to_string(),
-        ],
-        vec![
-            "paper".into(),
-            "--nodes".into(),
-            "10".into(),
-            "--step".into(),
-            "5".into(),
-            "--out".into(),
-            bad.display().to_string(),
-        ],
-        vec![
-            "mesh".into(),
-            "--at".into(),
-            "0".into(),
-            "-o".into(),
-            bad.join("x.csv").display().to_string(),
-        ],
-        vec![
-            "contacts".into(),
-            ex.join("gear-pair-20-42.toml").display().to_string(),
-            "--at".into(),
-            "0".into(),
-            "-o".into(),
-            bad.join("x.csv").display().to_string(),
-        ],
+    // each run's arguments, split at spaces; {ex}/ is the examples' folder, {bad} the path
+    let runs = [
+        "analyze --at 0 -o {bad}/x.csv",
+        "plot --at 0 --step 5 --frames 4 --out {bad}",
+        "synth {ex}/motion-roller.toml --step 5 --out {bad}",
+        "simulate {ex}/paper-dynamics.toml --step 5 --out {bad}",
+        "compare {ex}/paper.toml --nodes 10 --step 5 --out {bad}",
+        "paper --nodes 10 --step 5 --out {bad}",
+        "mesh --at 0 -o {bad}/x.csv",
+        "contacts {ex}/gear-pair-20-42.toml --at 0 -o {bad}/x.csv",
     ];
-    for args in runs {
+    for run in runs {
+        let args: Vec<String> = run
+            .split(' ')
+            .map(|a| {
+                a.replace("{ex}", &ex.display().to_string())
+                    .replace("{bad}", &bad.display().to_string())
+            })
+            .collect();
         camkin()
             .args(&args)
             .refused("a-file")

@@ -133,66 +133,75 @@ fn json_has_samples_and_events() {
 fn bad_dynamics_input_exits_2() {
     let dir = tempfile::tempdir().unwrap();
     let base = std::fs::read_to_string(example("eccentric-flat-dynamics.toml")).unwrap();
+    // (what the example says, what the case says instead, what the refusal names)
     let cases = [
+        ("mass = 0.3", "mass = -1", "dynamics.mass = -1"),
+        ("mass = 0.3", "inertia = 0.1", "takes `mass`, not `inertia`"),
         (
-            base.replace("mass = 0.3", "mass = -1"),
-            "dynamics.mass = -1",
-        ),
-        (
-            base.replace("mass = 0.3", "inertia = 0.1"),
-            "takes `mass`, not `inertia`",
-        ),
-        (
-            base.replace("restitution = 0.6", "restitution = 1.5"),
+            "restitution = 0.6",
+            "restitution = 1.5",
             "dynamics.restitution = 1.5",
         ),
         (
-            base.replace("length_unit = \"mm\"", "length_unit = \"inch\""),
+            "length_unit = \"mm\"",
+            "length_unit = \"inch\"",
             "length_unit = \"inch\"",
         ),
         (
-            base.replace("spring_preload = 20.0", "spring_preload = nan"),
+            "spring_preload = 20.0",
+            "spring_preload = nan",
             "dynamics.spring_preload = NaN",
         ),
         (
-            base.split("[dynamics]").next().unwrap().to_string(),
-            "needs a [dynamics] section",
-        ),
-        (
-            base.replace("damping = 0.0", "damping = 0.0\nfriction = 1"),
+            "damping = 0.0",
+            "damping = 0.0\nfriction = 1",
             "unknown field `friction`",
         ),
         // issue 12, class 2: magnitudes the dynamics cannot compute in are refused by field
         (
-            base.replace("mass = 0.3", "mass = 1e300"),
+            "mass = 0.3",
+            "mass = 1e300",
             "dynamics.mass = 1e300: is outside the range",
         ),
         (
-            base.replace("mass = 0.3", "mass = 1e-300"),
+            "mass = 0.3",
+            "mass = 1e-300",
             "dynamics.mass = 1e-300: is outside the range",
         ),
         (
-            base.replace("spring_stiffness = ", "spring_stiffness = 1e300 #"),
+            "spring_stiffness = ",
+            "spring_stiffness = 1e300 #",
             "dynamics.spring_stiffness = 1e300",
         ),
         (
-            base.replace("damping = 0.0", "damping = 1e9"),
+            "damping = 0.0",
+            "damping = 1e9",
             "dynamics.damping = 1e9: too stiff for the time step",
         ),
         (
-            base.replace("spring_stiffness = 2000.0", "spring_stiffness = 1e9"),
+            "spring_stiffness = 2000.0",
+            "spring_stiffness = 1e9",
             "dynamics.spring_stiffness = 1e9: too stiff for the time step",
         ),
         (
-            base.replace("damping = 0.0", "damping = 0.0\ngravity = [0, -1e308]"),
+            "damping = 0.0",
+            "damping = 0.0\ngravity = [0, -1e308]",
             "dynamics.gravity = [0, -1e308]",
         ),
     ];
-    for (i, (text, needle)) in cases.iter().enumerate() {
+    let texts = cases
+        .iter()
+        .map(|(from, to, needle)| (base.replace(from, to), *needle))
+        // no [dynamics] at all
+        .chain([(
+            base.split("[dynamics]").next().unwrap().to_string(),
+            "needs a [dynamics] section",
+        )]);
+    for (i, (text, needle)) in texts.enumerate() {
         let p = dir.path().join(format!("m{i}.toml"));
         std::fs::write(&p, text).unwrap();
         run!("simulate", &p)
-            .refused(*needle)
+            .refused(needle)
             .stderr(predicate::str::contains("panicked").not());
     }
     run!(

@@ -186,6 +186,23 @@ fn seven_followers(pivot: Point2) -> Vec<Follower> {
     f
 }
 
+/// The random cam `nodes` turning either way (`ccw`) about one pivot with follower number `kind`
+/// of [`seven_followers`], when it is convex (the cases below need it): `(pivot, follower,
+/// mechanism)`.
+fn convex_case(nodes: &[Point2], kind: usize, ccw: bool) -> Option<(Point2, Follower, Mechanism)> {
+    let pivot = Point2::new(0.7, -0.4);
+    let sense = if ccw { Sense::Ccw } else { Sense::Cw };
+    let f = seven_followers(pivot)[kind].clone();
+    let m = mechanism(
+        Arc::new(ClosedSpline::new(nodes).unwrap()),
+        pivot,
+        sense,
+        1000.0,
+        f.clone(),
+    );
+    m.is_convex().then_some((pivot, f, m))
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
@@ -232,15 +249,13 @@ proptest! {
         ccw in any::<bool>(),
         theta in 0.0f64..360.0,
     ) {
-        let pivot = Point2::new(0.7, -0.4);
-        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = all_followers(pivot)[kind].clone();
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
-        prop_assume!(m.is_convex());
+        let case = convex_case(&nodes, kind, ccw);
+        prop_assume!(case.is_some());
+        let (pivot, f, m) = case.unwrap();
         let r = Rotation::new(beta);
         let nodes_r: Vec<Point2> = nodes.iter().map(|p| r * p).collect();
         let mr = Mechanism::new(
-            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&nodes_r).unwrap()), r * pivot, sense, 1000.0).unwrap(),
+            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&nodes_r).unwrap()), r * pivot, m.cam().direction(), 1000.0).unwrap(),
             rotate_follower(&f, &r, beta),
         ).unwrap();
         let (a, b) = (m.analyze_deg(theta), mr.analyze_deg(theta));
@@ -268,11 +283,9 @@ proptest! {
         ccw in any::<bool>(),
         theta in 0.0f64..360.0,
     ) {
-        let pivot = Point2::new(0.7, -0.4);
-        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = seven_followers(pivot)[kind].clone();
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
-        prop_assume!(m.is_convex());
+        let case = convex_case(&nodes, kind, ccw);
+        prop_assume!(case.is_some());
+        let (pivot, f, m) = case.unwrap();
         let nodes_m: Vec<Point2> = nodes.iter().map(|p| Point2::new(p.x, -p.y)).collect();
         let other = if ccw { Sense::Cw } else { Sense::Ccw };
         let mm = Mechanism::new(
@@ -303,11 +316,9 @@ proptest! {
         ccw in any::<bool>(),
         theta in 0.0f64..360.0,
     ) {
-        let pivot = Point2::new(0.7, -0.4);
-        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = seven_followers(pivot)[kind].clone();
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
-        prop_assume!(m.is_convex());
+        let case = convex_case(&nodes, kind, ccw);
+        prop_assume!(case.is_some());
+        let (_, _, m) = case.unwrap();
         let th = theta.to_radians();
         let a = m.analyze(th);
         prop_assume!(a.is_ok());
@@ -345,14 +356,12 @@ proptest! {
         theta0 in 0.0f64..360.0,
     ) {
         let k = 10f64.powf(exponent);
-        let pivot = Point2::new(0.7, -0.4);
-        let sense = if ccw { Sense::Ccw } else { Sense::Cw };
-        let f = seven_followers(pivot)[kind].clone();
-        let m = mechanism(Arc::new(ClosedSpline::new(&nodes).unwrap()), pivot, sense, 1000.0, f.clone());
-        prop_assume!(m.is_convex());
+        let case = convex_case(&nodes, kind, ccw);
+        prop_assume!(case.is_some());
+        let (pivot, f, m) = case.unwrap();
         let scaled: Vec<Point2> = nodes.iter().map(|p| Point2::from(p.coords * k)).collect();
         let ms = Mechanism::new(
-            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&scaled).unwrap()), Point2::from(pivot.coords * k), sense, 1000.0).unwrap(),
+            camkin::cam::Cam::from_rpm(Arc::new(ClosedSpline::new(&scaled).unwrap()), Point2::from(pivot.coords * k), m.cam().direction(), 1000.0).unwrap(),
             scale_follower(&f, k),
         ).unwrap();
         let lk = if f.is_oscillating() { 1.0 } else { k };
