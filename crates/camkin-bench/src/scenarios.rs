@@ -290,11 +290,12 @@ pub fn example_mechanism(file: &str) -> Option<Mechanism> {
 /// `examples/valve-train.toml`, built as the command builds it.
 pub fn valve_train_example() -> camkin::spec::BuiltSystem {
     let text = include_str!("../../../examples/valve-train.toml");
-    camkin::spec::text::read_system(
+    camkin::spec::read_model(
         text,
         "valve-train.toml",
         &camkin::spec::BuildOptions::default(),
     )
+    .and_then(camkin::spec::ModelFile::into_system)
     .expect("the example builds")
 }
 

@@ -167,15 +167,17 @@ impl LoadedModel {
                 built: Box::new(built),
             });
         }
-        for w in self.model.warning_messages() {
-            crate::say!("camkin: warning: {w}");
-        }
         match self.model.into_preset() {
-            Some(preset) => Ok(BySolver::Cam {
-                preset: Box::new(preset),
-                name,
-                stem: self.stem,
-            }),
+            Some(preset) => {
+                for w in &preset.warnings {
+                    crate::say!("camkin: warning: {}", w.message);
+                }
+                Ok(BySolver::Cam {
+                    preset: Box::new(preset),
+                    name,
+                    stem: self.stem,
+                })
+            }
             None => unreachable!("a model without a preset is answered above"),
         }
     }

@@ -677,8 +677,9 @@ impl PySystem {
             confine: false,
             limits: crate::model::limits(large),
         };
-        let built =
-            camkin::spec::text::read_system(&s.text, &s.file, &options).map_err(errors::text)?;
+        let built = camkin::spec::read_model(&s.text, &s.file, &options)
+            .and_then(camkin::spec::ModelFile::into_system)
+            .map_err(errors::text)?;
         for w in &built.warnings {
             let field = errors::spec_warning_field(w);
             errors::warn(

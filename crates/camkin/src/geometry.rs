@@ -50,11 +50,6 @@ pub fn wrap_angle_near(a: f64, centre: f64) -> f64 {
     centre + d
 }
 
-/// True when every coordinate is finite.
-pub fn is_finite_point(p: &Point2) -> bool {
-    p.x.is_finite() && p.y.is_finite()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

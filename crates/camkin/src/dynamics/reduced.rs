@@ -1,7 +1,7 @@
-//! The follower as one coordinate driven by the cam through its contacts: the model for a
-//! follower whose contact jumps from one part of the curves to another (gears at a tooth
-//! handover, a flat face across a concave stretch) and for a form-closed follower, with or
-//! without play (a conjugate cam, gear backlash).
+//! The cam solver's dynamics (`spec::Solver::Cam`): a preset's follower as one coordinate
+//! driven by the cam through its contacts, where its contact jumps from one part of the curves
+//! to another (gears at a tooth handover, a flat face across a concave stretch) or it is
+//! form-closed, with or without play (a conjugate cam, gear backlash).
 //!
 //! # Model
 //!

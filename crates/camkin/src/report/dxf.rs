@@ -56,32 +56,6 @@ pub fn bulge(a: Point2, m: Point2, b: Point2) -> f64 {
     }
 }
 
-/// The points of the arc from `a` to `b` with bulge `bulge`, `n` of them (the ends included).
-pub fn arc_points(a: Point2, b: Point2, bulge: f64, n: usize) -> Vec<Point2> {
-    let theta = 4.0 * bulge.atan();
-    if theta.abs() < 1e-12 {
-        return (0..n)
-            .map(|k| a + (b - a) * (k as f64 / (n - 1) as f64))
-            .collect();
-    }
-    let chord = b - a;
-    let c = chord.norm();
-    let r = c / (2.0 * (theta / 2.0).sin());
-    // the centre: from the chord's midpoint along its left normal (counter-clockwise arc)
-    let mid = a + 0.5 * chord;
-    let left = Vec2::new(-chord.y, chord.x) / c;
-    let h = r * (theta / 2.0).cos();
-    let centre = mid + h * left;
-    let a0 = (a.y - centre.y).atan2(a.x - centre.x);
-    let rr = (a - centre).norm();
-    (0..n)
-        .map(|k| {
-            let t = a0 + theta * k as f64 / (n - 1) as f64;
-            centre + rr * Vec2::new(t.cos(), t.sin())
-        })
-        .collect()
-}
-
 /// Distance of `q` from the arc through `a`, `m`, `b` (its circle, or the chord's line when the
 /// three are collinear).
 fn arc_distance(a: Point2, m: Point2, b: Point2, q: Point2) -> f64 {

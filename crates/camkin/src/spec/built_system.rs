@@ -87,15 +87,15 @@ impl BuiltSystem {
         length_unit: LengthUnit,
     ) -> Result<Self, crate::cam::CamError> {
         let preset = mechanism.to_system()?;
-        let mut warnings = Vec::new();
-        if mechanism.is_conjugate() {
-            warnings.push(SpecWarning::ConjugateLeftOut);
-        }
+        let conjugate = mechanism
+            .is_conjugate()
+            .then_some(SpecWarning::ConjugateLeftOut);
         Ok(Self {
             sweep_angle: preset.sweep_angle(),
             system: preset.system,
             length_unit,
-            warnings,
+            // the conjugate curve is no contact of the system
+            warnings: conjugate.into_iter().collect(),
             dynamics: crate::dynamics::SystemDynamicsOptions {
                 metres_per_unit: length_unit.metres(),
                 ..crate::dynamics::SystemDynamicsOptions::default()

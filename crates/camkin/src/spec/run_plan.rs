@@ -203,7 +203,6 @@ impl BuiltSystem {
 #[cfg(all(test, feature = "text"))]
 mod tests {
     use super::*;
-    use crate::spec::text::read_system;
     use crate::spec::BuildOptions;
 
     fn valve_train() -> BuiltSystem {
@@ -213,7 +212,9 @@ mod tests {
             base_dir: dir,
             ..BuildOptions::default()
         };
-        read_system(text, "valve-train.toml", &options).expect("valve train")
+        crate::spec::read_model(text, "valve-train.toml", &options)
+            .and_then(crate::spec::ModelFile::into_system)
+            .expect("valve train")
     }
 
     #[test]

@@ -121,7 +121,7 @@ pub fn parse_toml(text: &str, name: &str) -> Result<MechanismSpec, TextError> {
     parse_toml_of(text, name, FileKind::of(text))
 }
 
-/// [`parse_toml`] of text whose kind is known (one parse fewer).
+/// [`parse_toml`] of text whose kind is known.
 pub(crate) fn parse_toml_of(
     text: &str,
     name: &str,
@@ -145,15 +145,13 @@ pub(crate) fn parse_toml_of(
     }
 }
 
-/// What a TOML file describes, by its top-level tables (read in one parse; text that is not
-/// TOML is a mechanism file, whose parse says where it fails).
+/// What a TOML file describes, by its top-level tables in one parse: `[[body]]`, `[[joint]]`,
+/// `[[driver]]` or `[[contact]]` without `[cam]`; `[gear_pair]`; or else (text that is not TOML
+/// too, whose parse says where it fails) `[cam]` and `[follower]`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum FileKind {
-    /// `[[body]]`, `[[joint]]`, `[[driver]]` or `[[contact]]`, and no `[cam]`
     System,
-    /// `[gear_pair]`
     GearPair,
-    /// `[cam]` and `[follower]`
     Mechanism,
 }
 
@@ -177,45 +175,15 @@ impl FileKind {
     }
 }
 
-/// Whether TOML `text` is a gear-pair file (`[gear_pair]`).
-pub fn is_gear_pair(text: &str) -> bool {
-    FileKind::of(text) == FileKind::GearPair
-}
-
-/// Whether TOML `text` is a system file (`[[body]]`, `[[joint]]`, …) rather than a mechanism
-/// file (`[cam]` and `[follower]`).
+/// Whether TOML `text` is a system file (`[[body]]`, …), not a mechanism file (`[cam]`, …).
 pub fn is_system(text: &str) -> bool {
     FileKind::of(text) == FileKind::System
 }
 
-/// The spec in a system file's TOML `text`, errors placed as [`parse_toml`]'s.
-pub fn parse_system_toml(text: &str, name: &str) -> Result<super::SystemSpec, TextError> {
-    parse_toml_as(text, name)
-}
-
-/// Builds a system spec parsed from `text` with `options`, placing the error at the key of the
-/// element it names.
-pub fn build_system_placed(
-    spec: &super::SystemSpec,
+pub(crate) fn parse_toml_as<T: serde::de::DeserializeOwned>(
     text: &str,
     name: &str,
-    options: &BuildOptions,
-) -> Result<super::BuiltSystem, TextError> {
-    spec.build(options).map_err(|e| place(text, name, e))
-}
-
-/// The system a file describes ([`super::read_model`] then [`super::ModelFile::into_system`]):
-/// a system file's bodies, joints, drivers and contacts; or a cam-follower or gear-pair file's
-/// mechanism as a system ([`crate::cam::Mechanism::to_system`]), swept over its cam angle.
-pub fn read_system(
-    text: &str,
-    name: &str,
-    options: &BuildOptions,
-) -> Result<super::BuiltSystem, TextError> {
-    super::read_model(text, name, options)?.into_system()
-}
-
-fn parse_toml_as<T: serde::de::DeserializeOwned>(text: &str, name: &str) -> Result<T, TextError> {
+) -> Result<T, TextError> {
     let text = bounded(text, name)?;
     // the path of the value that failed (`follower.direction`), which the TOML error's own
     // message does not name for a value of the wrong shape

@@ -9,8 +9,8 @@
 //! form's to 0.2 %; with the example's, the adjuster's give lowers it by about 1 % (both with the
 //! valve spring massless, as the reduced model has it).
 
+use crate::common::read_system;
 use camkin::dynamics::{no_follow_speed, SpeedSweep};
-use camkin::spec::text::read_system;
 use std::f64::consts::{PI, TAU};
 
 const DEG: f64 = PI / 180.0;

@@ -2,15 +2,16 @@
 //! reference builds, and gives its answers to the bit; bad files are refused naming the element
 //! by its table, index and name, at its key's line and column.
 
-use camkin::spec::text::{build_system_placed, is_system, parse_system_toml, TextError};
-use camkin::spec::BuildOptions;
+use camkin::spec::text::{is_system, TextError};
+use camkin::spec::{read_model, BuildOptions, Solver};
+use std::borrow::Cow;
 use std::f64::consts::TAU;
 
 const VALVE_TRAIN: &str = include_str!("../../../../examples/valve-train-kinematics.toml");
 
 fn build(text: &str) -> Result<camkin::spec::BuiltSystem, TextError> {
-    let spec = parse_system_toml(text, "s.toml")?;
-    build_system_placed(&spec, text, "s.toml", &BuildOptions::default())
+    read_model(text, "s.toml", &BuildOptions::default())
+        .and_then(camkin::spec::ModelFile::into_system)
 }
 
 #[test]
@@ -279,4 +280,44 @@ fn instants_far_apart_are_the_assembly_a_fine_sweep_reaches() {
         }
     }
     assert!(checked >= 30, "{checked}");
+}
+
+const CAM_FILE: &str = include_str!("../../../../examples/paper.toml");
+const SYSTEM_FILE: &str = include_str!("../../../../examples/cam-four-bar.toml");
+
+/// A cam-follower file is answered by the cam solver and a system file by the general one,
+/// whatever else they hold; the cam file as a system is swept over its cam angle, and a
+/// system is built in its file's unit even when a preset would be built in metres.
+#[test]
+fn the_model_picks_its_solver() {
+    let options = BuildOptions::default();
+    let cam = read_model(CAM_FILE, "paper.toml", &options).unwrap();
+    assert!(matches!(cam.solver(), Solver::Cam(_)));
+    assert!(cam.preset().is_some());
+    let as_system = cam.to_system().unwrap();
+    assert_eq!(as_system.angle_name(), "cam angle");
+    assert_eq!(as_system.length_unit, camkin::spec::LengthUnit::Cm);
+
+    let si = BuildOptions {
+        si: true,
+        ..options.clone()
+    };
+    let system = read_model(SYSTEM_FILE, "cam-four-bar.toml", &si).unwrap();
+    let Solver::General(built) = system.solver() else {
+        panic!("a system file is answered by the general solver")
+    };
+    let plain = read_model(SYSTEM_FILE, "cam-four-bar.toml", &options).unwrap();
+    let Solver::General(plain) = plain.solver() else {
+        panic!("a system file is answered by the general solver")
+    };
+    assert_eq!(
+        built.dynamics.metres_per_unit,
+        plain.dynamics.metres_per_unit
+    );
+    assert!(built.dynamics.metres_per_unit < 1.0);
+    assert!(system.preset().is_none());
+    assert!(matches!(system.to_system(), Ok(Cow::Borrowed(_))));
+
+    let cam_si = read_model(CAM_FILE, "paper.toml", &si).unwrap();
+    assert!(cam_si.preset().unwrap().built.si);
 }

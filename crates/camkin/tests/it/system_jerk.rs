@@ -8,7 +8,8 @@
 //! train of ideal involutes has none, and its jerk must be zero to 1e-12 of that) (the differences' truncation, `h⁴` with the
 //! driver turning 1e-3 rad a step, and their round-off, `ε q̈ / h`, are below it: 2e-11 measured).
 
-use camkin::spec::text::{is_system, read_system};
+use crate::common::read_system;
+use camkin::spec::text::is_system;
 use camkin::spec::BuildOptions;
 use camkin::system::SystemError;
 use std::path::Path;

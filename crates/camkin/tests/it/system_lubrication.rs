@@ -5,9 +5,9 @@
 //! disc's material passes the contact at `ωR` and the face's at `−eω cos θ` — sharing nothing
 //! with the report's route (the contact's sliding rates at the simulated state).
 #![allow(clippy::unwrap_used)]
+use crate::common::read_system;
 use camkin::dynamics::SystemSimulation;
 use camkin::report::SystemLubricationReport;
-use camkin::spec::text::read_system;
 use camkin::spec::BuildOptions;
 
 const DISC: &str = r#"length_unit = "mm"

@@ -7,6 +7,16 @@ use camkin::curve::{Circle, Curve, Ellipse, Line};
 use camkin::{Point2, Vec2};
 use std::sync::Arc;
 
+/// The system a file describes (a cam-follower file's mechanism as one), as the front ends read
+/// it.
+pub fn read_system(
+    text: &str,
+    name: &str,
+    options: &camkin::spec::BuildOptions,
+) -> Result<camkin::spec::BuiltSystem, camkin::spec::text::TextError> {
+    camkin::spec::read_model(text, name, options).and_then(camkin::spec::ModelFile::into_system)
+}
+
 /// Central finite-difference derivatives of `f` at `x` with step `h`, of 8th order for the first
 /// and second derivative (error O(h⁸)). Returns `(f', f'')`.
 pub fn fd8(f: impl Fn(f64) -> f64, x: f64, h: f64) -> (f64, f64) {
