@@ -185,7 +185,7 @@ impl LoadedModel {
 
 /// Reads the mechanism file at `path` once as one model (`si`: a preset in metres, see
 /// [`camkin::spec::read_model`]), or the paper's built-in cam (in cm) when there is none;
-/// nothing is printed yet ([`LoadedModel::warn`]).
+/// nothing is printed yet ([`LoadedModel::by_solver`] prints its warnings).
 pub fn load_model(path: Option<&std::path::PathBuf>, si: bool) -> Result<LoadedModel, Failure> {
     let Some(path) = path else {
         crate::say!(

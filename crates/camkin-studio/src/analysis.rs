@@ -21,7 +21,7 @@ pub fn analyze(
 }
 
 /// The analysis of `model` read from `source`, by the solver it picks: a preset's by the cam
-/// solver; a system's by the general one, with [dynamics] its simulation and the force panel.
+/// solver; a system's by the general one, with `[dynamics]` its simulation and the force panel.
 pub fn analyze_model(
     model: &ModelFile,
     source: &Source,

@@ -29,7 +29,7 @@ pub enum Solver<'m> {
     General(&'m BuiltSystem),
 }
 
-/// A mechanism file read as one model (see the [module docs](self)).
+/// A mechanism file read as one model ([`read_model`]), which picks its solver.
 #[derive(Debug, Clone)]
 pub struct ModelFile {
     name: String,
