@@ -214,8 +214,9 @@ pub fn load_model(path: Option<&std::path::PathBuf>, si: bool) -> Result<LoadedM
     let base = path.parent().unwrap_or(Path::new("."));
     let model = camkin::spec::read_model(&text, &name, &options(base, si))
         .map_err(|e| Failure::Input(anyhow::anyhow!(with_large_hint(e.into()))))?;
-    if let Some(p) = model.preset() {
-        note_files(&p.spec, base);
+    // every file the model reads is an input of the run: no output may replace it
+    for f in model.inputs() {
+        crate::output::note_input(f);
     }
     Ok(LoadedModel {
         model,

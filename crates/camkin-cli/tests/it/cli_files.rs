@@ -340,3 +340,56 @@ fn an_unwritable_stderr_or_stdout_never_panics() {
         assert_ne!(piped, Some(101), "{r:?}");
     }
 }
+
+/// Issue 63: every file a system file reads is an input of the run too, as a cam file's are: a
+/// contact's points file is not replaced by `-o` and its folder is not replaced by `--out`, even
+/// with `--force`.
+#[test]
+fn a_systems_points_files_are_inputs_too() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::create_dir(d.join("pts")).unwrap();
+    // the example's disc (radius 20 about (5, 0)) as 36 measured points
+    let disc: String = (0..36)
+        .map(|k| {
+            let t = f64::from(k) * std::f64::consts::TAU / 36.0;
+            format!("{},{}\n", 5.0 + 20.0 * t.cos(), 20.0 * t.sin())
+        })
+        .collect();
+    std::fs::write(d.join("pts/disc.csv"), &disc).unwrap();
+    let text = std::fs::read_to_string(examples().join("two-followers.toml"))
+        .unwrap()
+        .replacen(
+            "curve_a = { kind = \"circle\", center = [5.0, 0.0], radius = 20.0 }",
+            "curve_a = { kind = \"points-file\", path = \"pts/disc.csv\" }",
+            1,
+        );
+    assert!(text.contains("pts/disc.csv"));
+    std::fs::write(d.join("system.toml"), text).unwrap();
+    // the file is good: what follows is refused for its output alone
+    camkin()
+        .current_dir(d)
+        .args(["contacts", "system.toml", "--at", "0"])
+        .stdout_ok();
+    for args in [
+        vec!["contacts", "system.toml", "--at", "0", "-o", "pts/disc.csv"],
+        vec!["analyze", "system.toml", "--at", "0", "-o", "pts/disc.csv"],
+        vec![
+            "plot",
+            "system.toml",
+            "--frames",
+            "2",
+            "--out",
+            "pts",
+            "--force",
+        ],
+    ] {
+        camkin()
+            .current_dir(d)
+            .args(&args)
+            .refused("input of this run")
+            .stderr(predicate::str::contains("pts"));
+        let now = std::fs::read_to_string(d.join("pts/disc.csv")).unwrap();
+        assert_eq!(now, disc, "{args:?} changed the points file");
+    }
+}

@@ -35,6 +35,8 @@ pub struct ModelFile {
     name: String,
     text: String,
     model: Model,
+    /// every file it reads (points files), in the folder it was read from
+    inputs: Vec<std::path::PathBuf>,
 }
 
 #[derive(Debug, Clone)]
@@ -49,25 +51,35 @@ enum Model {
 /// [`crate::dynamics::SystemDynamicsOptions::metres_per_unit`].
 pub fn read_model(text: &str, name: &str, options: &BuildOptions) -> Result<ModelFile, TextError> {
     let kind = text::FileKind::of(text);
-    let model = if kind == text::FileKind::System {
+    let (model, files) = if kind == text::FileKind::System {
         let spec: super::SystemSpec = text::parse_toml_as(text, name)?;
         let mut options = options.clone();
         options.si = false;
         let built = spec.build(&options);
-        Model::System(Box::new(built.map_err(|e| text::place(text, name, e))?))
+        let files = spec.contact.iter().flat_map(|c| [&c.curve_a, &c.curve_b]);
+        let files = files.filter_map(|p| p.path.clone()).collect();
+        (
+            Model::System(Box::new(built.map_err(|e| text::place(text, name, e))?)),
+            files,
+        )
     } else {
         let spec = text::parse_toml_of(text, name, kind)?;
         let (built, warnings) = text::build_placed(&spec, text, name, options)?;
-        Model::Preset(Box::new(Preset {
-            spec,
-            built,
-            warnings,
-        }))
+        let files: Vec<String> = spec.files().into_iter().map(String::from).collect();
+        (
+            Model::Preset(Box::new(Preset {
+                spec,
+                built,
+                warnings,
+            })),
+            files,
+        )
     };
     Ok(ModelFile {
         name: name.to_string(),
         text: text.to_string(),
         model,
+        inputs: files.iter().map(|f| options.base_dir.join(f)).collect(),
     })
 }
 
@@ -78,6 +90,7 @@ impl ModelFile {
             name: name.to_string(),
             text: String::new(),
             model: Model::Preset(Box::new(preset)),
+            inputs: Vec::new(),
         }
     }
 
@@ -89,6 +102,11 @@ impl ModelFile {
     /// The text it was read from (empty for a built-in model).
     pub fn text(&self) -> &str {
         &self.text
+    }
+
+    /// Every file the model reads (its points files): inputs, which no output may replace.
+    pub fn inputs(&self) -> &[std::path::PathBuf] {
+        &self.inputs
     }
 
     /// The solver that answers this model, with what it answers.
