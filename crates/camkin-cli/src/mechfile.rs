@@ -153,33 +153,35 @@ impl LoadedModel {
     /// when `general` (`--system`: a preset's mechanism as a system); its warnings printed.
     pub fn by_solver(self, general: bool) -> Result<BySolver, Failure> {
         let name = self.model.name().to_string();
-        if general || self.model.preset().is_none() {
-            let built = self
-                .model
-                .into_system()
-                .map_err(|e| Failure::Input(anyhow::anyhow!(e.message)))?;
-            for w in &built.warnings {
-                crate::say!("camkin: warning: {name}: {w}");
-            }
-            return Ok(BySolver::General {
-                name,
-                stem: self.stem,
-                built: Box::new(built),
-            });
-        }
-        match self.model.into_preset() {
-            Some(preset) => {
-                for w in &preset.warnings {
-                    crate::say!("camkin: warning: {}", w.message);
+        let model = if general {
+            // --system: the general solver on any model (a cam's preset as a system)
+            self.model
+        } else {
+            match self.model.into_preset() {
+                Ok(preset) => {
+                    for w in &preset.warnings {
+                        crate::say!("camkin: warning: {}", w.message);
+                    }
+                    return Ok(BySolver::Cam {
+                        preset: Box::new(preset),
+                        name,
+                        stem: self.stem,
+                    });
                 }
-                Ok(BySolver::Cam {
-                    preset: Box::new(preset),
-                    name,
-                    stem: self.stem,
-                })
+                Err(model) => model,
             }
-            None => unreachable!("a model without a preset is answered above"),
+        };
+        let built = model
+            .into_system()
+            .map_err(|e| Failure::Input(anyhow::anyhow!(e.message)))?;
+        for w in &built.warnings {
+            crate::say!("camkin: warning: {name}: {w}");
         }
+        Ok(BySolver::General {
+            name,
+            stem: self.stem,
+            built: Box::new(built),
+        })
     }
 }
 

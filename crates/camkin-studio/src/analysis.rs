@@ -42,7 +42,6 @@ pub fn analyze_model(
             pressure_limit_deg,
             limits,
         ),
-        _ => unreachable!("the studio answers every solver"),
     }
 }
 

@@ -20,8 +20,9 @@ pub struct Preset {
 }
 
 /// Which solver answers a model, with what it answers.
+/// Not `non_exhaustive`: a new solver must be answered by every front end, which the compiler
+/// checks.
 #[derive(Debug, Clone, Copy)]
-#[non_exhaustive]
 pub enum Solver<'m> {
     /// the one-coordinate cam solver (the follower's closed forms per kind) of a preset
     Cam(&'m Preset),
@@ -125,11 +126,11 @@ impl ModelFile {
         }
     }
 
-    /// The preset, taken; `None` for a system file.
-    pub fn into_preset(self) -> Option<Preset> {
+    /// The preset, taken; a system file's model is given back.
+    pub fn into_preset(self) -> Result<Preset, Self> {
         match self.model {
-            Model::Preset(p) => Some(*p),
-            Model::System(_) => None,
+            Model::Preset(p) => Ok(*p),
+            Model::System(_) => Err(self),
         }
     }
 
