@@ -160,6 +160,7 @@ impl PresetSimulation {
             restitution: vec![params.restitution],
             al,
             hertz: Vec::new(),
+            start_touching: Vec::new(),
         };
         let sim = SystemSimulation::owning(system, opts, Some(params.max_step(rotating)))?;
         Ok(Self {

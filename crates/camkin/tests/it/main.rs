@@ -35,6 +35,7 @@ mod jerk;
 mod layout;
 mod lubrication;
 mod motion_closed_form;
+mod no_follow;
 mod oscillating_branch;
 mod paper_cam;
 mod point_follower;

@@ -51,6 +51,13 @@ pub struct SystemDynamicsOptions {
     /// each contact's line-contact width and materials for its Hertz pressure, in the system's
     /// order (none past the list's end)
     pub hertz: Vec<Option<ContactHertz>>,
+    /// the contacts that start in touch whatever their gap at the starting poses (the poses are
+    /// assembled onto them), in the system's order; a contact not marked starts in touch only
+    /// where its curves are within 1e-3 of the system's size (otherwise it starts apart, and
+    /// its bodies move onto it: a drop). The speed sweep ([`super::no_follow_speed`]) marks
+    /// the contacts that a slow revolution closes and keeps closed, so that its verdict does
+    /// not depend on how near the file's poses were.
+    pub start_touching: Vec<bool>,
 }
 
 /// A contact's face width and elastic materials: its Hertz line pressure
@@ -76,6 +83,7 @@ impl Default for SystemDynamicsOptions {
             gravity: Vec2::zeros(),
             restitution: Vec::new(),
             hertz: Vec::new(),
+            start_touching: Vec::new(),
             al: AugmentedLagrangian {
                 penalty: 1e4,
                 ..AugmentedLagrangian::default()
@@ -434,7 +442,8 @@ impl<'a> SystemSimulation<'a> {
                 reason: e.to_string(),
             })?;
             let (Proximity::Apart(p) | Proximity::Touching(p) | Proximity::Overlapping(p)) = found;
-            sim.in_contact[k] = sim.sense[k] * p.gap <= STARTS_IN_TOUCH * size;
+            sim.in_contact[k] = sim.sense[k] * p.gap <= STARTS_IN_TOUCH * size
+                || sim.opts.start_touching.get(k) == Some(&true);
             sim.pairings[first_contact + k] = Some(p);
         }
         sim.project().map_err(|e| match e {
