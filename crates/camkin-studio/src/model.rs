@@ -441,8 +441,9 @@ fn gear_loads(
         pts.iter().map(f).collect::<Vec<_>>()
     };
     let finite = |x: f64| x.is_finite().then_some(x);
-    let at = |i: Option<usize>, v: &dyn Fn(&camkin::report::PathPoint) -> Option<f64>| {
-        i.and_then(|i| v(&pts[i]).map(|x| [x, len(pts[i].radius[0])]))
+    let at = |p: &Option<camkin::report::PathPoint>,
+              v: &dyn Fn(&camkin::report::PathPoint) -> Option<f64>| {
+        p.as_ref().and_then(|p| v(p).map(|x| [x, len(p.radius[0])]))
     };
     use camkin::lubrication::Regime;
     Ok(Some(GearLoadsOut {
@@ -473,9 +474,9 @@ fn gear_loads(
         }),
         flash_temperature_k: lub.then(|| col(&|p| p.flash_temperature)),
         pitch: [len(l.at_pitch.radius[0]), l.at_pitch.hertz / 1e6],
-        max_hertz: at(l.max_hertz, &|p| finite(p.hertz / 1e6)),
-        min_lambda: at(l.min_lambda, &|p| p.lambda),
-        max_flash_k: at(l.max_flash_temperature, &|p| p.flash_temperature),
+        max_hertz: at(&l.max_hertz, &|p| finite(p.hertz / 1e6)),
+        min_lambda: at(&l.min_lambda, &|p| p.lambda),
+        max_flash_k: at(&l.max_flash_temperature, &|p| p.flash_temperature),
     }))
 }
 

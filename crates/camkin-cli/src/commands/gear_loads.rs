@@ -111,14 +111,39 @@ fn summary(
         num(eps),
         mm(((2.0 - eps) * l.base_pitch).max(0.0)),
     );
-    if let Some(worst) = l.max_hertz.map(|i| &l.points[i]) {
+    let at = |p: &camkin::report::PathPoint| {
+        format!(
+            "{}the driver's radius {}, {} pair{}",
+            p.name.map_or(String::new(), |n| format!("{n}, ")),
+            mm(p.radius[0]),
+            p.pairs,
+            if p.pairs == 1 { "" } else { "s" },
+        )
+    };
+    if let (Some(max), Some(min)) = (&l.max_hertz, &l.min_hertz) {
         out += &format!(
-            "Hertz: max {} MPa at the driver's radius {} ({} pair{}); {} MPa at the pitch point\n",
-            num(worst.hertz / 1e6),
-            mm(worst.radius[0]),
-            worst.pairs,
-            if worst.pairs == 1 { "" } else { "s" },
+            "Hertz: max {} MPa ({}), min {} MPa ({}); {} MPa at the pitch point\n",
+            num(max.hertz / 1e6),
+            at(max),
+            num(min.hertz / 1e6),
+            at(min),
             num(l.at_pitch.hertz / 1e6),
+        );
+    }
+    out += "named points (ISO 6336-2; two rows where the pairs change):\n";
+    for p in l.named() {
+        out += &format!(
+            "  {:<6} driver's radius {:>10}  {} pair{}  load {:>8} N  Hertz {:>8} MPa\n",
+            p.name.unwrap_or(""),
+            mm(p.radius[0]),
+            p.pairs,
+            if p.pairs == 1 { " " } else { "s" },
+            num(p.load),
+            if p.hertz.is_finite() {
+                num(p.hertz / 1e6)
+            } else {
+                "—".into()
+            },
         );
     }
     let first = &l.points[0];
@@ -131,7 +156,7 @@ fn summary(
         z(last.specific_sliding[1]),
         mm(last.radius[1]),
     );
-    if let Some(p) = l.min_lambda.map(|i| &l.points[i]) {
+    if let Some(p) = &l.min_lambda {
         let x = p.lambda.unwrap_or(f64::NAN);
         out += &format!(
             "lubrication: λ min {} at the driver's radius {} ({})\n",
@@ -140,7 +165,7 @@ fn summary(
             camkin::lubrication::regime(x).name()
         );
     }
-    if let Some(p) = l.max_flash_temperature.map(|i| &l.points[i]) {
+    if let Some(p) = &l.max_flash_temperature {
         out += &format!(
             "flash temperature (Blok): max {} K at the driver's radius {}\n",
             num(p.flash_temperature.unwrap_or(f64::NAN)),

@@ -39,7 +39,28 @@ fn a_torque_loads_the_whole_path_of_contact() {
     let (h, rows) =
         parse_csv(&std::fs::read(dir.path().join("out").join("gear_loads.csv")).unwrap());
     let c = columns(&h);
-    assert_eq!(rows.len(), 201);
+    // the grid's 201 points (its ends A and E) and the named C, and B and D of either side
+    assert_eq!(rows.len(), 206);
+    let named: Vec<(&str, &str)> = rows
+        .iter()
+        .filter(|r| !r[c["point"]].is_empty())
+        .map(|r| (r[c["point"]].as_str(), r[c["pairs_in_contact"]].as_str()))
+        .collect();
+    assert_eq!(
+        named,
+        [
+            ("A", "2"),
+            ("B", "2"),
+            ("B", "1"),
+            ("C", "1"),
+            ("D", "1"),
+            ("D", "2"),
+            ("E", "2")
+        ]
+    );
+    for name in ["A", "B", "C", "D", "E"] {
+        assert!(text.contains(&format!("\n  {name} ")), "{name}: {text}");
+    }
     let x = |r: &Vec<String>, k: &str| -> f64 { r[c[k]].parse().unwrap() };
     let (mut one, mut two) = (0, 0);
     for r in &rows {
@@ -58,9 +79,9 @@ fn a_torque_loads_the_whole_path_of_contact() {
     assert!(one > 20 && two > 100, "{one} {two}");
     // the driver's root first, its tip last: the driver's specific sliding rises through 0
     let first = x(&rows[0], "specific_sliding_driver");
-    let last = x(&rows[200], "specific_sliding_driver");
+    let last = x(&rows[205], "specific_sliding_driver");
     assert!(first < -1.0 && last > 0.0, "{first} {last}");
-    assert!(x(&rows[0], "driver_radius_m") < x(&rows[200], "driver_radius_m"));
+    assert!(x(&rows[0], "driver_radius_m") < x(&rows[205], "driver_radius_m"));
 }
 
 #[test]

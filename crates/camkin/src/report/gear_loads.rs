@@ -12,6 +12,16 @@
 //! torque `T` on the driver puts `F = T/r_b1` along the line of action, shared **equally** between
 //! the pairs in contact (rigid teeth; the stated rule of this report, not a mesh-stiffness model).
 //! Bending, friction's share of the torque and the tooth's deflection are not in it.
+//!
+//! The path's named points (ISO 6336-2, §5.2) are rows of their own, evaluated exactly: `A` its
+//! start, `B = E − p_b` the driver's inner point of single-pair contact, `C` the pitch point,
+//! `D = A + p_b` its outer point, `E` its end (above a contact ratio of 2, also `E − 2p_b` and
+//! `A + 2p_b`, where three pairs start and stop sharing). Where the pairs in contact change the
+//! load steps, so such a point has two rows, one of either side. Between the points the pairs are
+//! constant, and the extremes are taken over these pieces: Hertz's `p² ∝ 1/ρ₁ + 1/ρ₂` is convex
+//! in `x` with its least at `x = g/2`, so its largest is at a piece's end and its smallest there
+//! or at `g/2` (closed form); λ and the flash temperature are bracketed on the grid of each piece
+//! and refined by golden-section search to 1e-12 of the line of action.
 
 use super::{LubricationRequest, Materials};
 use crate::gears::GearPair;
@@ -38,6 +48,9 @@ pub struct GearLoadRequest {
 /// One point of the path of contact.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct PathPoint {
+    /// the named point this is (`"A"`, `"B"`, `"C"`, `"D"`, `"E"`, `"E-2pb"`, `"A+2pb"`), or
+    /// `None` for a point of the grid
+    pub name: Option<&'static str>,
     /// roll length from the driver's base tangent point `T₁` along the line of action, m
     pub roll: f64,
     /// the contact's radius on the driver and on the driven gear, m
@@ -80,14 +93,28 @@ pub struct GearLoads {
     pub base_pitch: f64,
     /// the pitch point (the pitch circles' contact, where nothing slides)
     pub at_pitch: PathPoint,
-    /// the points, from the path's start (the driven gear's tip) to its end
+    /// the points, from the path's start (the driven gear's tip) to its end: the grid and the
+    /// named points (two rows where the pairs change, one of either side)
     pub points: Vec<PathPoint>,
-    /// the index of the point of the largest Hertz pressure
-    pub max_hertz: Option<usize>,
-    /// the index of the point of the smallest λ (with a lubricant)
-    pub min_lambda: Option<usize>,
-    /// the index of the point of the largest flash temperature (with a lubricant)
-    pub max_flash_temperature: Option<usize>,
+    /// the largest Hertz pressure on the path (at a piece's end: see the module docs)
+    pub max_hertz: Option<PathPoint>,
+    /// the smallest Hertz pressure on the path
+    pub min_hertz: Option<PathPoint>,
+    /// the smallest λ (with a lubricant)
+    pub min_lambda: Option<PathPoint>,
+    /// the largest flash temperature (with a lubricant and the thermal constants)
+    pub max_flash_temperature: Option<PathPoint>,
+}
+
+/// Which side of a roll length the pairs are counted on, where they change there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Side {
+    /// at the point, every pair within a rounding of the path's ends
+    At,
+    /// just before it (towards `A`)
+    Before,
+    /// just after it (towards `E`)
+    After,
 }
 
 /// Why a gear load report could not be made.
@@ -150,17 +177,35 @@ impl<'a> Along<'a> {
         })
     }
 
-    /// The point at roll length `x` from `T₁`.
-    fn at(&self, x: f64) -> PathPoint {
+    /// A roll length within this of a point counts as at it.
+    fn tol(&self) -> f64 {
+        1e-9 * self.g
+    }
+
+    /// The tooth pairs in contact at roll length `x` on `side` of it: this one and each one a
+    /// whole number of base pitches away on the path.
+    fn pairs(&self, x: f64, side: Side) -> u32 {
         let [start, end] = self.path;
-        let pb = self.pb;
-        // a roll length within a rounding of the path's ends counts as on it
-        let tol = 1e-9 * self.g;
-        let on = |y: f64| y >= start - tol && y <= end + tol;
-        let pairs = 1 + [-2.0, -1.0, 1.0, 2.0]
-            .iter()
-            .filter(|&&k| on(x + k * pb))
-            .count() as u32;
+        let tol = self.tol();
+        let on = |y: f64| match side {
+            Side::At => y >= start - tol && y <= end + tol,
+            Side::Before => y > start + tol && y <= end + tol,
+            Side::After => y >= start - tol && y < end - tol,
+        };
+        // the path is at most a few base pitches long: a contact ratio below 8
+        1 + (1..8)
+            .flat_map(|k| [-f64::from(k), f64::from(k)])
+            .filter(|&k| on(x + k * self.pb))
+            .count() as u32
+    }
+
+    /// The point at roll length `x` from `T₁`, the pairs counted at it.
+    fn at(&self, x: f64) -> PathPoint {
+        self.with_pairs(x, self.pairs(x, Side::At), None)
+    }
+
+    /// The point at roll length `x` with `pairs` in contact, named `name`.
+    fn with_pairs(&self, x: f64, pairs: u32, name: Option<&'static str>) -> PathPoint {
         let load = self.force / f64::from(pairs);
         let rho = [x, self.g - x];
         let speeds = [self.w[0] * rho[0], self.w[1] * rho[1]];
@@ -186,6 +231,7 @@ impl<'a> Along<'a> {
             .zip(self.beta)
             .and_then(|((l, c), b)| blok_flash_temperature(c, l.friction.coefficient(lambda), b));
         PathPoint {
+            name,
             roll: x,
             radius: [self.rb[0].hypot(rho[0]), self.rb[1].hypot(rho[1])],
             curvature_radius: rho,
@@ -211,23 +257,98 @@ impl GearLoads {
     pub fn new(pair: &GearPair, omega: f64, req: &GearLoadRequest) -> Result<Self, GearLoadError> {
         let along = Along::new(pair, omega, req)?;
         let [start, end] = along.path;
-        let n = req.points;
-        let points: Vec<PathPoint> = (0..n)
-            .map(|k| along.at(start + (end - start) * k as f64 / (n - 1) as f64))
-            .collect();
-        // the index of the point where `get` is largest times `sign`
-        let best = |get: &dyn Fn(&PathPoint) -> Option<f64>, sign: f64| {
-            points
-                .iter()
-                .enumerate()
-                .filter_map(|(i, p)| get(p).filter(|v| v.is_finite()).map(|v| (i, sign * v)))
-                .max_by(|a, b| a.1.total_cmp(&b.1))
-                .map(|(i, _)| i)
-        };
-        let max_hertz = best(&|p| Some(p.hertz), 1.0);
-        let min_lambda = best(&|p| p.lambda, -1.0);
-        let max_flash_temperature = best(&|p| p.flash_temperature, 1.0);
+        let (tol, pb) = (along.tol(), along.pb);
         let pitch = along.rb[0] * pair.operating_pressure_angle().tan();
+        // the points where the pairs change, named, in the path's order
+        let mut breaks: Vec<(f64, &'static str)> = vec![(start, "A"), (end, "E")];
+        for (k, [early, late]) in [["B", "D"], ["E-2pb", "A+2pb"], ["E-3pb", "A+3pb"]]
+            .into_iter()
+            .enumerate()
+        {
+            let k = (k + 1) as f64;
+            for (x, name) in [(end - k * pb, early), (start + k * pb, late)] {
+                if x > start + tol && x < end - tol {
+                    breaks.push((x, name));
+                }
+            }
+        }
+        breaks.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // the named rows: each side of a break where its pairs differ, and the pitch point
+        let mut named = Vec::with_capacity(2 * breaks.len() + 1);
+        for (i, &(x, name)) in breaks.iter().enumerate() {
+            let before = (i > 0).then(|| along.pairs(x, Side::Before));
+            let after = (i + 1 < breaks.len()).then(|| along.pairs(x, Side::After));
+            match (before, after) {
+                (Some(b), Some(a)) if a != b => {
+                    named.push(along.with_pairs(x, b, Some(name)));
+                    named.push(along.with_pairs(x, a, Some(name)));
+                }
+                (Some(n), _) | (None, Some(n)) => named.push(along.with_pairs(x, n, Some(name))),
+                (None, None) => {}
+            }
+        }
+        if pitch > start - tol && pitch < end + tol {
+            let c = along.with_pairs(pitch, along.pairs(pitch, Side::At), Some("C"));
+            let at = named.partition_point(|p| p.roll <= pitch);
+            named.insert(at, c);
+        }
+        // the grid, a point within a rounding of a named one giving way to it
+        let n = req.points;
+        let mut points: Vec<PathPoint> = Vec::with_capacity(n + named.len());
+        let mut named_rows = named.iter().peekable();
+        for k in 0..n {
+            let x = start + (end - start) * k as f64 / (n - 1) as f64;
+            while let Some(p) = named_rows.next_if(|p| p.roll <= x + tol) {
+                points.push(*p);
+            }
+            if !named.iter().any(|p| (p.roll - x).abs() <= tol) {
+                points.push(along.at(x));
+            }
+        }
+        points.extend(named_rows.copied());
+        // the pieces between the breaks, each with its pairs
+        let pieces: Vec<([f64; 2], u32)> = breaks
+            .windows(2)
+            .map(|w| {
+                let (a, b) = (w[0].0, w[1].0);
+                ([a, b], along.pairs(0.5 * (a + b), Side::At))
+            })
+            .collect();
+        let best = |candidates: &mut dyn Iterator<Item = PathPoint>,
+                    get: &dyn Fn(&PathPoint) -> Option<f64>,
+                    sign: f64| {
+            candidates
+                .filter_map(|p| get(&p).filter(|v| v.is_finite()).map(|v| (p, sign * v)))
+                .max_by(|a, b| a.1.total_cmp(&b.1))
+                .map(|(p, _)| p)
+        };
+        let hertz = |p: &PathPoint| Some(p.hertz);
+        // Hertz: the largest at a piece's end (the named rows), the smallest there or at g/2
+        let max_hertz = best(&mut named.iter().copied(), &hertz, 1.0);
+        let half = 0.5 * along.g;
+        // (a named row last: it is the one taken where a value ties)
+        let min_hertz = best(
+            &mut pieces
+                .iter()
+                .filter(|(r, _)| half > r[0] && half < r[1])
+                .map(|&(_, n)| along.with_pairs(half, n, None))
+                .chain(named.iter().copied()),
+            &hertz,
+            -1.0,
+        );
+        // λ and the flash temperature: bracketed on each piece's grid, refined
+        let refined = |get: &dyn Fn(&PathPoint) -> Option<f64>, sign: f64| {
+            let per_piece = pieces.iter().filter_map(|&(r, pairs)| {
+                extreme_on(&along, r, pairs, n, &|p| get(p).map(|v| sign * v))
+            });
+            best(
+                &mut per_piece.chain(named.iter().copied()),
+                &|p| get(p).map(|v| sign * v),
+                1.0,
+            )
+        };
+        let min_lambda = refined(&|p| p.lambda, -1.0);
+        let max_flash_temperature = refined(&|p| p.flash_temperature, 1.0);
         Ok(Self {
             normal_force: along.force,
             path: along.path,
@@ -236,9 +357,15 @@ impl GearLoads {
             at_pitch: along.at(pitch),
             points,
             max_hertz,
+            min_hertz,
             min_lambda,
             max_flash_temperature,
         })
+    }
+
+    /// The named points' rows (two where the pairs change there), in the path's order.
+    pub fn named(&self) -> impl Iterator<Item = &PathPoint> {
+        self.points.iter().filter(|p| p.name.is_some())
     }
 
     /// The point at roll length `x` from `T₁` (on the path or off it), as [`GearLoads::new`]
@@ -254,13 +381,60 @@ impl GearLoads {
     }
 }
 
+/// The point of `range` (with `pairs` in contact) where `value` is largest: the best of
+/// `grid`-spaced samples over the path, bracketed by its neighbours and refined by
+/// golden-section search to 1e-12 of the line of action (a piece too short for a sample inside
+/// is searched whole).
+fn extreme_on(
+    along: &Along<'_>,
+    range: [f64; 2],
+    pairs: u32,
+    grid: usize,
+    value: &dyn Fn(&PathPoint) -> Option<f64>,
+) -> Option<PathPoint> {
+    let [a, b] = range;
+    let spacing = (along.path[1] - along.path[0]) / (grid.max(2) - 1) as f64;
+    let samples = (((b - a) / spacing).ceil() as usize).clamp(2, 100_000);
+    let x = |i: usize| a + (b - a) * i as f64 / samples as f64;
+    let v = |x: f64| value(&along.with_pairs(x, pairs, None)).filter(|v| v.is_finite());
+    let (i, _) = (0..=samples)
+        .filter_map(|i| v(x(i)).map(|y| (i, y)))
+        .max_by(|p, q| p.1.total_cmp(&q.1))?;
+    let (mut lo, mut hi) = (x(i.saturating_sub(1)), x((i + 1).min(samples)));
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let goal = 1e-12 * along.g;
+    let f = |x: f64| v(x).unwrap_or(f64::NEG_INFINITY);
+    let (mut c, mut d) = (hi - r * (hi - lo), lo + r * (hi - lo));
+    let (mut fc, mut fd) = (f(c), f(d));
+    while hi - lo > goal {
+        if fc >= fd {
+            hi = d;
+            (d, fd) = (c, fc);
+            c = hi - r * (hi - lo);
+            fc = f(c);
+        } else {
+            lo = c;
+            (c, fc) = (d, fd);
+            d = lo + r * (hi - lo);
+            fd = f(d);
+        }
+    }
+    // the bracket's ends (a piece's end) are candidates too
+    let xs = [lo, 0.5 * (lo + hi), hi, x(i)];
+    let x = xs
+        .into_iter()
+        .max_by(|p, q| f(*p).total_cmp(&f(*q)))
+        .unwrap_or(x(i));
+    Some(along.with_pairs(x, pairs, None))
+}
+
 impl GearLoads {
     /// The per-point table (`gear_loads.csv`): each column's name with its unit and its cell,
     /// written once.
     pub fn table(&self) -> (Vec<String>, Vec<Vec<crate::table::Cell>>) {
         use crate::table::Cell;
         type Get = fn(&PathPoint) -> Cell;
-        let columns: [(&str, Get); 16] = [
+        let columns: [(&str, Get); 17] = [
             ("roll_length_m", |p| Cell::Num(Some(p.roll))),
             ("driver_radius_m", |p| Cell::Num(Some(p.radius[0]))),
             ("driven_radius_m", |p| Cell::Num(Some(p.radius[1]))),
@@ -289,6 +463,7 @@ impl GearLoads {
             ("curvature_radius_driver_m", |p| {
                 Cell::Num(Some(p.curvature_radius[0]))
             }),
+            ("point", |p| Cell::Text(p.name.map(str::to_string))),
         ];
         let rows = self
             .points
