@@ -129,10 +129,49 @@ fn a_roller_rolls_and_an_entrainment_that_reverses_is_found_between_samples() {
     let w = 300.0 * std::f64::consts::TAU / 60.0;
     let req = built.lubrication.as_ref().unwrap();
     let rep = SystemLubricationReport::new(&built.system, &run, req, |t| w * t.to_degrees());
-    for p in rep.contacts[0].points.iter().flatten() {
+    let e = 0.010;
+    for (k, p) in rep.contacts[0].points.iter().enumerate() {
+        let p = p.expect("the disc holds the face all the revolution");
         assert_eq!(p.sliding, 0.0);
+        // the entrainment is the face's surface speed past the contact, −eω cos θ, value by
+        // value (the roller's own ωR would be 0.4/0.1 = 4 times the largest)
+        let th = w * run.samples[k].time;
+        let face = e * w * th.cos();
+        assert!(
+            (p.entrainment.abs() - face.abs()).abs() < 1e-12 * w * e,
+            "{k}: {} vs {face}",
+            p.entrainment
+        );
     }
     assert_eq!(rep.contacts[0].mean_friction_power, 0.0);
+    // a roller on the follower (`rolls = "b"`, radius 10 mm on the slider, its centre on the
+    // slide's line through the axis) rolling on the disc: the entrainment is the disc's surface
+    // speed past the contact point, R (ω − ψ̇), ψ the common normal's angle, here
+    // ψ = −asin(e sin θ / (R + r)): R ω (1 + e cos θ / √((R + r)² − e² sin² θ)) (the roller's
+    // own material speed would be the slider's, at most eω)
+    let roller = DISC.replace("ROLLS", "rolls = \"b\"").replace(
+        "curve_b = { kind = \"line\", anchor = [50.0, 0.0], direction = [0.0, -1.0] }",
+        "curve_b = { kind = \"circle\", center = [60.0, 0.0], radius = 10.0 }",
+    );
+    let (built, run) = simulate(&roller);
+    let rep = SystemLubricationReport::new(
+        &built.system,
+        &run,
+        built.lubrication.as_ref().unwrap(),
+        |t| w * t.to_degrees(),
+    );
+    let (r, reach) = (0.040, 0.050);
+    for (k, p) in rep.contacts[0].points.iter().enumerate() {
+        let p = p.expect("the roller holds the disc all the revolution");
+        let th = w * run.samples[k].time;
+        let disc = r * w * (1.0 + e * th.cos() / (reach * reach - (e * th.sin()).powi(2)).sqrt());
+        assert!(
+            (p.entrainment.abs() - disc).abs() < 1e-9 * disc,
+            "{k}: {} vs {disc}",
+            p.entrainment
+        );
+        assert_eq!(p.sliding, 0.0);
+    }
     // the disc smaller than its eccentricity: its surface passes at ωR, the face's at −eω cos θ
     let small = DISC
         .replace("ROLLS", "")
