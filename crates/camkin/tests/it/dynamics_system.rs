@@ -4,6 +4,7 @@
 //! force `m g`), a mass on a spring in millimetres (the period `2π √(m/k)` with the unit's size
 //! in it), and a pendulum with a spring, undamped, that keeps its energy.
 
+use crate::common::read_system;
 use camkin::curve::{Line, PointCurve};
 use camkin::dynamics::{EventKind, SystemDynamicsOptions, SystemSimulation};
 use camkin::system::{Body, BodyId, Contact, ForceElement, ForceKind, Joint, JointKind, System};
@@ -181,6 +182,58 @@ fn a_mass_on_a_spring_in_millimetres_has_the_closed_form_frequency() {
         worst = worst.max((s.q[1] - 2.0 * (w * s.time).cos()).abs());
     }
     assert!(worst < 1e-9 * 2.0, "off the closed form by {worst} mm");
+}
+
+/// A wheel on a pin in a file in mm, its centre of mass 20 mm from the pin, on a torsion spring
+/// of 500 N·mm/rad, no gravity: released 0.1 rad from the spring's free angle it swings as
+/// `θ = 0.1 cos(ω t)`, `ω = √(k / I_O)`, `I_O = I_G + m d²` in kg·m² (`k` 0.5 N·m/rad, `d` 0.02 m):
+/// the inertia's conversion from kg·m² to the file's N·mm·s² and the offset's from mm are in
+/// that number (an inertia taken in kg·mm², or a `m d²` in mm², is off by 1e6).
+#[test]
+fn a_torsion_pendulum_in_millimetres_has_the_closed_form_frequency() {
+    let (m, i_g, d, k): (f64, f64, f64, f64) = (0.5, 2e-4, 0.020, 0.5);
+    let text = format!(
+        r#"length_unit = "mm"
+[dynamics]
+
+[[body]]
+name = "wheel"
+mass = {m}
+inertia = {i_g}
+centre_of_mass = [{dmm}, 0.0]
+angle_deg = {start}
+
+[[joint]]
+name = "pin"
+kind = "revolute"
+bodies = ["ground", "wheel"]
+
+[[torsion_spring]]
+name = "spring"
+bodies = ["ground", "wheel"]
+stiffness = {kmm}
+free_angle_deg = 0.0
+preload = 0.0
+"#,
+        dmm = d * 1e3,
+        start = 0.1f64.to_degrees(),
+        kmm = k * 1e3,
+    );
+    let built = read_system(&text, "wheel.toml", &Default::default()).unwrap();
+    let mut sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+    let w = (k / (i_g + m * d * d)).sqrt();
+    // a twentieth of a period in 1000 steps, then to half a period
+    let h = std::f64::consts::PI / w / 10_000.0;
+    let mut worst: f64 = 0.0;
+    for _ in 0..10_000 {
+        sim.advance(h).unwrap();
+        let s = sim.sample().unwrap();
+        worst = worst.max((s.q[2] - 0.1 * (w * s.time).cos()).abs());
+    }
+    assert!(worst < 1e-9 * 0.1, "off the closed form by {worst} rad");
+    // at half a period it is at −0.1 rad
+    let s = sim.sample().unwrap();
+    assert!((s.q[2] + 0.1).abs() < 1e-9, "{}", s.q[2]);
 }
 
 /// A bar pinned to the ground at one end, under gravity, with a spring from its other end to a
