@@ -22,6 +22,8 @@ fn every_sweeping_command_refuses_gigabytes_up_front_with_one_sentence() {
     let measured = measured.to_str().unwrap();
     let motion = examples().join("motion-roller.toml");
     let motion = motion.to_str().unwrap();
+    let paper_dynamics = examples().join("paper-dynamics.toml");
+    let paper_dynamics = paper_dynamics.to_str().unwrap();
     for args in [
         vec!["plot", "--step", "0.000036", "--out", out],
         vec![
@@ -45,6 +47,9 @@ fn every_sweeping_command_refuses_gigabytes_up_front_with_one_sentence() {
         ],
         vec!["synth", motion, "--step", "0.00004", "--out", out],
         vec!["analyze", "--angles", "0:1e7:1", "-o", out],
+        // issue 63: the force report's states held for 1e7 angles (2.4 GB before it was
+        // counted)
+        vec!["forces", paper_dynamics, "--step", "0.000036", "--out", out],
     ] {
         camkin()
             .args(&args)
