@@ -139,7 +139,10 @@ pub const CONNECTION_TIMEOUT: Duration = Duration::from_secs(600);
 /// computations run at once). Each connection is served by hyper with a header timeout
 /// ([`Limits::header_seconds`]) and a lifetime ([`CONNECTION_TIMEOUT`]); at most
 /// [`Limits::max_connections`] are open at once, well within the process's file descriptors,
-/// so that accepting never fails for lack of them.
+/// so that accepting never fails for lack of them. A connection beyond them is admitted by
+/// closing the oldest one that is not answering a request (idle, or still without its headers),
+/// so that slow clients holding every place cannot keep a normal request waiting; only where
+/// every connection is being answered is the new one closed.
 pub fn serve(
     listener: std::net::TcpListener,
     session: Session,
@@ -153,7 +156,7 @@ pub fn serve(
     runtime.block_on(async move {
         let listener = tokio::net::TcpListener::from_std(listener)?;
         let app = router(session, limits);
-        let open = Arc::new(Semaphore::new(limits.max_connections.max(1)));
+        let open = Arc::new(Connections::default());
         let header = Duration::from_secs_f64(limits.header_seconds.max(0.001));
         loop {
             let stream = match listener.accept().await {
@@ -164,12 +167,28 @@ pub fn serve(
                     continue;
                 }
             };
-            let Ok(permit) = open.clone().try_acquire_owned() else {
+            if !open.make_room(limits.max_connections.max(1)) {
                 drop(stream);
                 continue;
-            };
-            let service = hyper_util::service::TowerToHyperService::new(app.clone());
-            tokio::spawn(async move {
+            }
+            let busy = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+            let counted = busy.clone();
+            let router = app.clone();
+            // the connection is answering while a request's response is being made
+            let service =
+                tower::service_fn(move |request: hyper::Request<hyper::body::Incoming>| {
+                    let answering = Answering::start(counted.clone());
+                    let mut router = router.clone();
+                    async move {
+                        let response = tower::Service::call(&mut router, request).await;
+                        drop(answering);
+                        response
+                    }
+                });
+            let service = hyper_util::service::TowerToHyperService::new(service);
+            let id = open.next_id();
+            let registry = open.clone();
+            let task = tokio::spawn(async move {
                 let io = hyper_util::rt::TokioIo::new(stream);
                 let mut http = hyper::server::conn::http1::Builder::new();
                 http.timer(hyper_util::rt::TokioTimer::new())
@@ -177,10 +196,91 @@ pub fn serve(
                 let _ =
                     tokio::time::timeout(CONNECTION_TIMEOUT, http.serve_connection(io, service))
                         .await;
-                drop(permit);
+                registry.remove(id);
             });
+            open.insert(id, busy, task.abort_handle());
         }
     })
+}
+
+/// The connections open, oldest first: each one's number, whether it is answering a request,
+/// and the handle that closes it.
+#[derive(Default)]
+struct Connections {
+    open: std::sync::Mutex<std::collections::VecDeque<Connection>>,
+    next: std::sync::atomic::AtomicU64,
+}
+
+struct Connection {
+    id: u64,
+    busy: Arc<std::sync::atomic::AtomicUsize>,
+    close: tokio::task::AbortHandle,
+}
+
+impl Connections {
+    fn next_id(&self) -> u64 {
+        self.next.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+    }
+
+    fn list(&self) -> std::sync::MutexGuard<'_, std::collections::VecDeque<Connection>> {
+        self.open
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    }
+
+    fn insert(
+        &self,
+        id: u64,
+        busy: Arc<std::sync::atomic::AtomicUsize>,
+        close: tokio::task::AbortHandle,
+    ) {
+        let mut open = self.list();
+        // a connection that ended before it was listed is not listed
+        if !close.is_finished() {
+            open.push_back(Connection { id, busy, close });
+        }
+    }
+
+    fn remove(&self, id: u64) {
+        self.list().retain(|c| c.id != id);
+    }
+
+    /// Whether a new connection may open: below `max`, or after closing the oldest that is not
+    /// answering a request.
+    fn make_room(&self, max: usize) -> bool {
+        let mut open = self.list();
+        open.retain(|c| !c.close.is_finished());
+        if open.len() < max {
+            return true;
+        }
+        let idle = open
+            .iter()
+            .position(|c| c.busy.load(std::sync::atomic::Ordering::SeqCst) == 0);
+        match idle.and_then(|k| open.remove(k)) {
+            Some(c) => {
+                c.close.abort();
+                true
+            }
+            None => false,
+        }
+    }
+}
+
+/// A request being answered on a connection (counted while it lives, so a request dropped
+/// half-way is no longer counted).
+struct Answering(Arc<std::sync::atomic::AtomicUsize>);
+
+impl Answering {
+    fn start(busy: Arc<std::sync::atomic::AtomicUsize>) -> Self {
+        busy.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        Self(busy)
+    }
+}
+
+impl Drop for Answering {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, std::sync::atomic::Ordering::SeqCst);
+    }
 }
 
 /// A response that is `body` of type `content_type`, never cached (the page follows the binary).

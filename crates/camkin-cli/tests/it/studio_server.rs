@@ -505,6 +505,43 @@ fn clients_that_never_finish_their_headers_cannot_lock_anyone_out() {
     assert_eq!(closed, 300);
 }
 
+/// Issue 63: while slow clients hold every place (64 connections without their headers, a cap
+/// of 64), a normal request is admitted at once by closing the oldest of them, and answered on
+/// its first try within the header timeout — not reset, and not after waiting for timeouts.
+#[test]
+fn a_normal_request_is_served_at_once_while_slow_clients_hold_every_place() {
+    let limits = Limits {
+        header_seconds: 5.0,
+        max_connections: 64,
+        ..Limits::default()
+    };
+    let addr = start(None, limits);
+    let slow: Vec<TcpStream> = (0..200)
+        .filter_map(|_| {
+            let mut s = TcpStream::connect(addr).ok()?;
+            let _ = s.write_all(b"GET /api/session HTTP/1.1\r\nHost: x\r\n");
+            Some(s)
+        })
+        .collect();
+    assert_eq!(slow.len(), 200);
+    // the server has taken them all (each beyond the cap closing the oldest)
+    std::thread::sleep(Duration::from_millis(300));
+    for k in 0..5 {
+        let t0 = std::time::Instant::now();
+        let (status, _) = raw(
+            addr,
+            b"GET /api/session HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n",
+        );
+        assert_eq!(status, 200, "request {k}");
+        assert!(
+            t0.elapsed() < Duration::from_secs(2),
+            "request {k}: {:?}",
+            t0.elapsed()
+        );
+    }
+    drop(slow);
+}
+
 /// Issue 44: the server survives any one request. Under a memory cap (`ulimit -v`, 700 MB of
 /// address space) a request within the server's own estimate (an 80 000-node cam, about 420 MB
 /// estimated) runs out of memory and aborts the server process; `camkin serve` starts it again on
