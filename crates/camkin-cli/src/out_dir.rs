@@ -93,9 +93,18 @@ impl OutDir {
         if meta.is_err() || force {
             return Ok(());
         }
-        let ours: Vec<String> = std::fs::read_to_string(target.join(MANIFEST))
-            .map(|t| t.lines().map(str::to_string).collect())
-            .unwrap_or_default();
+        // no list: no file of camkin's; a list that cannot be read (a folder without read or
+        // search permission, a list that is not a file) is said as it is, not taken as none
+        let ours: Vec<String> = match std::fs::read_to_string(target.join(MANIFEST)) {
+            Ok(t) => t.lines().map(str::to_string).collect(),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
+            Err(e) => {
+                return Err(anyhow!(
+                    "--out {}: cannot read {MANIFEST}, camkin's list of the files it wrote there ({e}); the results replace the folder whole only when camkin can tell its own files: give a folder you can read and write, or pass --force to replace it (its files are lost)",
+                    target.display()
+                ))
+            }
+        };
         let entries = std::fs::read_dir(target)
             .with_context(|| format!("--out {}: cannot read the folder", target.display()))?;
         for e in entries {
@@ -247,5 +256,22 @@ mod tests {
         std::fs::write(d.path().join("x"), "1").unwrap();
         d.commit().unwrap();
         assert_eq!(names(&empty), [MANIFEST, "x"]);
+    }
+
+    /// Issue 63: a list of camkin's files that cannot be read (here a folder in its place; a
+    /// folder without read permission does the same to anyone but root) is said as it is, not
+    /// taken for someone else's files.
+    #[test]
+    fn a_list_that_cannot_be_read_is_said_as_it_is() {
+        let root = tempfile::tempdir().unwrap();
+        let out = root.path().join("plots");
+        std::fs::create_dir_all(out.join(MANIFEST)).unwrap();
+        std::fs::write(out.join("a.csv"), "1").unwrap();
+        let e = OutDir::check(&out, false).unwrap_err().to_string();
+        assert!(
+            e.contains(&format!("cannot read {MANIFEST}")) && !e.contains("did not write"),
+            "{e}"
+        );
+        assert_eq!(std::fs::read_to_string(out.join("a.csv")).unwrap(), "1");
     }
 }

@@ -529,6 +529,31 @@ pub fn _contact<'py>(
     #[pyo3(from_py_with = crate::errors::real_or_none)] length_scale: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (ba, bb) = (body_a.state, body_b.state);
+    // a parameter pair must be numbers on the curves (a closed curve's is taken modulo its
+    // period; an open one's must be within its ends)
+    for (name, pair) in [("at", at), ("guess", guess)] {
+        let Some((ua, ub)) = pair else { continue };
+        for (k, (u, curve)) in [(ua, &curve_a), (ub, &curve_b)].into_iter().enumerate() {
+            let on = match curve.curve.domain() {
+                camkin::curve::Domain::Interval { min, max } => u >= min && u <= max,
+                _ => u.is_finite(),
+            };
+            if !(u.is_finite() && on) {
+                let which = if k == 0 { "curve_a" } else { "curve_b" };
+                return Err(errors::input(
+                    name,
+                    Some(format!("({ua}, {ub})")),
+                    format!(
+                        "{name} = ({ua}, {ub}): {u} is not a parameter of {which} (a finite number{})",
+                        match curve.curve.domain() {
+                            camkin::curve::Domain::Interval { min, max } => format!(" from {min} to {max}"),
+                            _ => String::new(),
+                        }
+                    ),
+                ));
+            }
+        }
+    }
     let scale = match length_scale {
         Some(l) if l.is_finite() && l > 0.0 => l,
         Some(l) => {

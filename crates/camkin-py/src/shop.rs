@@ -201,7 +201,7 @@ impl PyMechanism {
                 DeviationError::Tolerance { value, .. } => {
                     errors::input("tolerance", Some(value.clone()), format!("tolerance = {e}"))
                 }
-                DeviationError::Fit(_) | DeviationError::Polar(_) => {
+                DeviationError::Fit(_) | DeviationError::Polar(_) | DeviationError::Size { .. } => {
                     errors::input("measured", None, format!("measured: {e}"))
                 }
                 _ => errors::contact(e.to_string()),

@@ -131,6 +131,23 @@ def test_contact_errors_say_why():
         camkin.contact(hole_curve, body, camkin.Circle((0, 0), 1.0), body, at=(0.0, 0.0))
 
 
+@pytest.mark.parametrize(
+    "kw, field",
+    [
+        ({"at": (float("nan"), 0.0)}, "at"),
+        ({"at": (0.0, float("inf"))}, "at"),
+        ({"guess": (float("nan"), 0.0)}, "guess"),
+    ],
+)
+def test_a_contact_parameter_that_is_not_on_its_curve_is_bad_input(kw, field):
+    # issue 63: it was a ContactError ("zero-length tangent at u = NaN")
+    body = camkin.Body()
+    line = camkin.Line((0.0, 2.0), (1.0, 0.0))
+    with pytest.raises(camkin.InputError, match="is not a parameter of") as e:
+        camkin.contact(camkin.Circle((0, 0), 1.0), body, line, body, **kw)
+    assert e.value.field == field
+
+
 def test_errors_pickle():
     import pickle
 

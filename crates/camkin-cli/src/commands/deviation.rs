@@ -79,6 +79,7 @@ pub fn run(args: &DeviationArgs) -> Result<(), Failure> {
                 fail(format!("{}: {f}{hint}", args.measured.display()))
             }
             DeviationError::Polar(why) => fail(format!("{}: {why}", args.against.display())),
+            DeviationError::Size { .. } => fail(format!("{}: {e}", args.measured.display())),
             e => fail(e.to_string()),
         },
     )?;

@@ -18,6 +18,7 @@ use camkin::table::{
     system_event_columns, system_sample_cells, system_sample_columns, EventRow, SampleRow,
 };
 use rayon::prelude::*;
+use std::f64::consts::TAU;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -153,7 +154,17 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         let fix = match advice {
             StepAdvice::Substeps(n) => format!("use --substeps {n} or more"),
             StepAdvice::FinerStep { step_deg } => {
-                format!("use --substeps 1000 and --step {}° or finer", h_(step_deg))
+                // or the cam at a speed the step asked resolves: the follower's rate is the
+                // same, the cam angle a step covers is not
+                let rpm = step.to_radians() / (1000.0 * sim.max_step()) * 60.0 / TAU;
+                format!(
+                    "use --substeps 1000 and --step {}° or finer ({} rows a revolution), or raise cam.speed_rpm = {} to at least {} rpm for --step {}°",
+                    h_(step_deg),
+                    h_((360.0 / step_deg).ceil()),
+                    h_(w * 60.0 / TAU),
+                    h_(rpm),
+                    h_(step),
+                )
             }
             StepAdvice::FasterCam { rpm } => format!(
                 "the cam turns too slowly for outputs by cam angle (at most 1000 substeps of a {}° step): raise cam.speed_rpm to at least {} rpm",

@@ -519,6 +519,52 @@ fn deviation_refuses_a_scan_of_part_of_the_cam() {
     assert!(!out.exists());
 }
 
+/// Issue 63: a measured profile of huge coordinates is refused at its line (it was "an RMS
+/// residual of NaN"), and one of another size than the design's — measured in mm against a
+/// design in cm — names both sizes and the unit (it was a fit that found no tolerance).
+#[test]
+fn deviation_names_huge_points_and_a_profile_of_another_size() {
+    let dir = tempfile::tempdir().unwrap();
+    let ring = |scale: f64| {
+        let mut text = String::from("x,y\n");
+        for i in 0..360 {
+            let t = f64::from(i).to_radians();
+            let r = scale * (4.0 + 0.5 * t.cos());
+            text += &format!("{:e},{:e}\n", r * t.cos(), r * t.sin());
+        }
+        text
+    };
+    for (name, scale, needles) in [
+        (
+            "huge.csv",
+            1e200,
+            vec!["huge.csv: points file line 2", "at most 1e100 in magnitude"],
+        ),
+        (
+            "mm.csv",
+            10.0,
+            vec![
+                "the measured points reach 45 cm from the axis, the design's profile 5 cm",
+                "not the same unit",
+            ],
+        ),
+    ] {
+        let meas = dir.path().join(name);
+        std::fs::write(&meas, ring(scale)).unwrap();
+        let mut a = run!(
+            "deviation",
+            &meas,
+            "--against",
+            examples().join("eccentric-roller.toml")
+        )
+        .refused(needles[0]);
+        for n in &needles[1..] {
+            a = a.stderr(predicate::str::contains(*n));
+        }
+        let _ = a.stderr(predicate::str::contains("NaN").not());
+    }
+}
+
 /// Issue 13, item 9: the guide's mechanism-file reference (docs/mechanism-files.md) is a complete file that runs as it is
 /// (it used to fail with "takes no `offset`").
 #[test]

@@ -259,6 +259,21 @@ fn errors_name_the_key_and_value_the_user_wrote() {
         &[],
         &["m.toml:7:10: cam.profile.radius = 1e200: must be from 1e-100 to 1e100"],
     );
+    // issue 63: a size derived from what the user wrote is named at what they wrote
+    for (module, distance) in [("1e300", "3.1e301"), ("1e99", "3.1e100")] {
+        bad(
+            "gear pair module",
+            &format!("length_unit = \"mm\"\n[gear_pair]\nteeth = [20, 42]\nmodule = {module}\nspeed_rpm = 1000.0\n"),
+            &[],
+            &[&format!("m.toml:4:10: gear_pair.module = {module}: gives a centre distance of {distance}")],
+        );
+    }
+    bad(
+        "huge rise",
+        "length_unit = \"mm\"\n[cam]\nspeed_rpm = 100\n[cam.profile]\nkind = \"motion\"\nbase_radius = 40\nsegments = [{ law = \"cycloidal\", rise = 1e300, degrees = 180 }, { law = \"cycloidal\", rise = -1e300, degrees = 180 }]\n[follower]\nkind = \"translating-roller\"\nroller_radius = 5\n",
+        &[],
+        &["cam.profile.segments[0].rise = 1e300: must be at most 1e100 in magnitude"],
+    );
     let segs: String = (0..1001)
         .map(|_| "[[cam.profile.segments]]\nlaw = \"dwell\"\ndegrees = 0.3\n".to_string())
         .collect();

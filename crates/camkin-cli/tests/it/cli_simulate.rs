@@ -188,6 +188,13 @@ fn bad_dynamics_input_exits_2() {
             "damping = 0.0\ngravity = [0, -1e308]",
             "dynamics.gravity = [0, -1e308]",
         ),
+        // issue 63: a very slow cam's advice names its speed as the alternative to a step
+        // of millions of rows
+        (
+            "speed_rpm = 1380.0",
+            "speed_rpm = 1e-6",
+            "or raise cam.speed_rpm = 1e-6 to at least",
+        ),
     ];
     let texts = cases
         .iter()

@@ -70,6 +70,12 @@ pub fn parse_points_with_lines(text: &str) -> Result<(Vec<Point2>, Vec<usize>), 
         if !(x.is_finite() && y.is_finite()) {
             return Err(syntax("coordinates must be finite"));
         }
+        // the sizes the computation takes (their squares stay in f64), as a file's coordinates
+        if x.abs().max(y.abs()) > 1e100 {
+            return Err(syntax(
+                "coordinates must be at most 1e100 in magnitude (their squares must stay finite)",
+            ));
+        }
         if points.len() == MAX_POINTS {
             return Err(syntax(&format!("more than {MAX_POINTS} points")));
         }

@@ -29,6 +29,16 @@ pub enum DeviationError {
         /// the length unit
         unit: &'static str,
     },
+    /// the measured points are not the design's size: another cam, or another unit
+    #[error("the measured points reach {measured} {unit} from the axis, the design's profile {design} {unit}: not the same cam, or not the same unit (the points are read in the design's unit, {unit})")]
+    Size {
+        /// the points' farthest distance from the axis, rounded for people
+        measured: String,
+        /// the design's, rounded for people
+        design: String,
+        /// the length unit
+        unit: &'static str,
+    },
     /// the points could not be smoothed
     #[error("{0}")]
     Fit(MeasuredError),
@@ -124,6 +134,16 @@ impl DeviationReport {
             return Err(DeviationError::Tolerance {
                 value: h(tol),
                 size: h(size),
+                unit: l,
+            });
+        }
+        // a worn or misground cam is within a few per cent of its design; twice or half its
+        // size is another cam or another unit (a fit to it would be measured against nothing)
+        let reach = points.iter().fold(0.0f64, |m, p| m.max(p.coords.norm()));
+        if !(reach <= 2.0 * size && reach >= 0.5 * size) {
+            return Err(DeviationError::Size {
+                measured: h(reach),
+                design: h(size),
                 unit: l,
             });
         }

@@ -119,6 +119,18 @@ impl GearPairFile {
                 }
             }
         };
+        // a size the file did not write, derived from the module: beyond the sizes the
+        // computation takes it is the module's fault, named as written
+        if g.centre_distance.is_none() && !(1e-100..=1e100).contains(&centre.abs()) {
+            return Err(SpecError::Invalid {
+                field: Field::GearPair(GearPairField::Module),
+                value: crate::human::human(g.module),
+                reason: format!(
+                    "gives a centre distance of {} (the module times the teeth's half sum), beyond the sizes the computation takes (1e-100 to 1e100)",
+                    crate::human::human(centre)
+                ),
+            });
+        }
         let direction = g.direction.unwrap_or(Sense::Ccw);
         let z2 = f64::from(g.teeth[1]).max(1.0);
         Ok(MechanismSpec {

@@ -1,7 +1,8 @@
 //! Validation of `[cam.profile]`: the profile kinds, inline and file points, motion programs.
 
 use super::build::{
-    check_kind, finite, key, length, need, point, positive, vector, SpecError, SpecWarning,
+    check_kind, coordinate, finite, key, length, need, point, positive, vector, SpecError,
+    SpecWarning,
 };
 use super::{ProfileKind, ProfileSpec};
 use crate::cam::synthesis::synthesize;
@@ -380,7 +381,7 @@ impl ProfileSpec {
                             })
                         }
                         (_, Some(r)) => {
-                            let r = finite(seg(SegmentField::Rise), r)?;
+                            let r = coordinate(seg(SegmentField::Rise), r)?;
                             if r == 0.0 {
                                 return Err(SpecError::Invalid {
                                     field: seg(SegmentField::Rise),
