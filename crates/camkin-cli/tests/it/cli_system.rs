@@ -155,13 +155,99 @@ speed_rpm = 60.0
     std::fs::write(&f, &spring).unwrap();
     let line = spring
         .lines()
-        .position(|l| l.starts_with("at = [[5.0"))
+        .position(|l| l.starts_with("bodies = [\"rocker\", \"rocker\"]"))
         .unwrap()
         + 1;
     run!("analyze", &f)
         .refused(format!("s.toml:{line}:"))
-        .stderr(predicate::str::contains("spring[0].at"))
-        .stderr(predicate::str::contains("one point of \"rocker\""));
+        .stderr(predicate::str::contains("spring[0].bodies"))
+        .stderr(predicate::str::contains("joins \"rocker\" to itself"));
+}
+
+/// A rocker on an eccentric held by a torsion spring, for dynamics (issue 63's examples).
+const ROCKER: &str = r#"length_unit = "mm"
+[dynamics]
+gravity = [0.0, -9.81]
+[[body]]
+name = "cam"
+mass = 1.0
+inertia = 1e-3
+[[body]]
+name = "rocker"
+position = [-50.0, 45.0]
+angle_deg = -4.78
+mass = 0.05
+inertia = 2e-5
+[[joint]]
+name = "camshaft"
+kind = "revolute"
+bodies = ["ground", "cam"]
+[[joint]]
+name = "pivot"
+kind = "revolute"
+bodies = ["ground", "rocker"]
+at = [[-50.0, 45.0], [0.0, 0.0]]
+[[driver]]
+name = "drive"
+body = "cam"
+coordinate = "angle"
+speed_rpm = 1000.0
+[[contact]]
+name = "cam on roller"
+bodies = ["cam", "rocker"]
+curve_a = { kind = "circle", center = [10.0, 0.0], radius = 30.0 }
+curve_b = { kind = "circle", center = [60.0, 0.0], radius = 10.0 }
+face_width = 10.0
+[[torsion_spring]]
+name = "return spring"
+bodies = ["ground", "rocker"]
+stiffness = 200.0
+free_angle_deg = -90.0
+preload = 0.0
+"#;
+
+/// Issue 63, class "invalid models accepted silently": each change to a valid system file is
+/// refused (exit 2) at its key with what the user wrote — names used twice (their columns would
+/// appear twice), a list of three where two are meant, an element joining a body to itself, a
+/// gas force on the ground, magnitudes beyond the range the dynamics is computed in, a face
+/// width whose Hertz pressure is infinite.
+#[test]
+fn invalid_system_models_are_refused_at_their_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("s.toml");
+    std::fs::write(&f, ROCKER).unwrap();
+    run!("simulate", &f, "--revolutions", "0.1")
+        .assert()
+        .success();
+    let contact =
+        &ROCKER[ROCKER.find("[[contact]]").unwrap()..ROCKER.find("[[torsion_spring]]").unwrap()];
+    let gas = "[[gas_force]]\nname = \"gas\"\nbody = \"ground\"\ndirection = [0.0, 1.0]\ntable = [[0.0, 10.0], [360.0, 20.0]]\n";
+    let coil = "[[coil_spring]]\nname = \"coil\"\nbodies = [\"ground\", \"rocker\"]\nat = [[-50.0, 100.0], [0.0, 0.0]]\nstiffness = 1.0\nfree_length = 60.0\nmass = 1e300\nmasses = 4\n";
+    let cases: Vec<(String, &str)> = vec![
+        (format!("{ROCKER}{contact}"), "contact[1].name: \"cam on roller\": contact[0] has this name already"),
+        (ROCKER.replace("name = \"return spring\"", "name = \"cam\""), "torsion_spring[0].name: \"cam\": body[0] has this name already"),
+        (format!("{ROCKER}[[driver]]\nname = \"drive\"\nbody = \"rocker\"\ncoordinate = \"angle\"\nspeed_rpm = 1.0\n"), "driver[1].name: \"drive\": driver[0] has this name already"),
+        (ROCKER.replace("bodies = [\"ground\", \"cam\"]", "bodies = [\"ground\", \"cam\", \"rocker\"]"), "expected two bodies' names"),
+        (ROCKER.replace("gravity = [0.0, -9.81]", "gravity = [0.0, -9.81, 0.0]"), "dynamics.gravity"),
+        (ROCKER.replace("bodies = [\"ground\", \"rocker\"]\nstiffness", "bodies = [\"rocker\", \"rocker\"]\nstiffness"), "joins \"rocker\" to itself"),
+        (format!("{ROCKER}{gas}"), "gas_force[0].body: the ground does not move"),
+        (ROCKER.replace("mass = 0.05", "mass = 1e12"), "body[1].mass = 1e12: is outside the range"),
+        (ROCKER.replace("inertia = 2e-5", "inertia = 1e-20"), "body[1].inertia = 1e-20: is outside the range"),
+        (ROCKER.replace("gravity = [0.0, -9.81]", "gravity = [0.0, -1e7]"), "dynamics.gravity = [0, -1e7]: is outside the range"),
+        (ROCKER.replace("preload = 0.0", "preload = 1e300"), "torsion_spring[0].preload = 1e300: is outside the range"),
+        (ROCKER.replace("free_angle_deg = -90.0", "free_angle_deg = 1e300"), "torsion_spring[0].free_angle_deg = 1e300: is outside the range"),
+        (ROCKER.replace("speed_rpm = 1000.0", "speed_rpm = 1e300"), "driver[0].speed_rpm = 1e300: is outside the range"),
+        (ROCKER.replace("face_width = 10.0", "face_width = 1e-300"), "contact[0].face_width = 1e-300"),
+        (format!("{ROCKER}{coil}"), "coil_spring[0].mass = 1e300: is outside the range"),
+    ];
+    for (text, needle) in cases {
+        std::fs::write(&f, &text).unwrap();
+        for command in ["simulate", "analyze"] {
+            run!(command, &f)
+                .refused(needle)
+                .stderr(predicate::str::contains("panicked").not());
+        }
+    }
 }
 
 /// `camkin plot` on a system file draws it at the driver angles asked (SVG and PNG) and over a

@@ -20,8 +20,10 @@ pub struct CoilSpringSpec {
     /// its name
     pub name: String,
     /// the body its first end sits on and the body its other end pushes
+    #[serde(deserialize_with = "super::pair::names")]
     pub bodies: [String; 2],
     /// its ends, each in its body's frame
+    #[serde(deserialize_with = "super::pair::points")]
     pub at: [[f64; 2]; 2],
     /// the whole spring's stiffness, N per length unit
     pub stiffness: f64,

@@ -46,12 +46,14 @@ pub struct GearPairFile {
 #[serde(deny_unknown_fields)]
 pub struct GearPairSpec {
     /// the driver's and the driven gear's numbers of teeth
+    #[serde(deserialize_with = "super::pair::counts")]
     pub teeth: [u32; 2],
     /// the module (length)
     pub module: f64,
     /// degrees (default 20)
     pub pressure_angle_deg: Option<f64>,
     /// each gear's profile shift coefficient (default 0)
+    #[serde(default, deserialize_with = "super::pair::option")]
     pub profile_shift: Option<[f64; 2]>,
     /// the centre distance (length; default the tight mesh's for these shifts)
     pub centre_distance: Option<f64>,

@@ -25,6 +25,7 @@ pub struct LubricationSpec {
     /// a preset oil or `eta=<Pa·s>:alpha=<1/Pa>`
     pub oil: String,
     /// the cam's and the follower's RMS roughness, µm
+    #[serde(deserialize_with = "super::pair::exact")]
     pub roughness_um: [f64; 2],
     /// the contact's face width, in the file's length unit
     pub face_width: f64,

@@ -78,3 +78,73 @@ impl<'de> serde::Deserialize<'de> for Pair {
 pub fn option_list<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Vec<[f64; 2]>>, D::Error> {
     d.deserialize_seq(Pairs).map(Some)
 }
+
+/// Exactly `N` values of `T` (a list of another length is refused, saying how many it has).
+struct Exact<T, const N: usize> {
+    what: &'static str,
+    of: std::marker::PhantomData<T>,
+}
+
+impl<'de, T: serde::Deserialize<'de>, const N: usize> Visitor<'de> for Exact<T, N> {
+    type Value = [T; N];
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.what)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<[T; N], A::Error> {
+        let mut got: Vec<T> = Vec::with_capacity(N);
+        let mut count = 0usize;
+        while let Some(v) = seq.next_element::<T>()? {
+            count += 1;
+            if got.len() < N {
+                got.push(v);
+            }
+            if count > 64 {
+                break;
+            }
+        }
+        if count != N {
+            return Err(A::Error::custom(format!(
+                "expected {}, found {count} value{}",
+                self.what,
+                if count == 1 { "" } else { "s" }
+            )));
+        }
+        got.try_into()
+            .map_err(|_| A::Error::custom(format!("expected {}", self.what)))
+    }
+}
+
+fn exactly<'de, D: Deserializer<'de>, T: serde::Deserialize<'de>, const N: usize>(
+    d: D,
+    what: &'static str,
+) -> Result<[T; N], D::Error> {
+    d.deserialize_seq(Exact::<T, N> {
+        what,
+        of: std::marker::PhantomData,
+    })
+}
+
+/// Two bodies' names, exactly (`bodies = ["ground", "cam"]`).
+pub fn names<'de, D: Deserializer<'de>>(d: D) -> Result<[String; 2], D::Error> {
+    exactly(d, "two bodies' names [\"a\", \"b\"]")
+}
+
+/// Two points, each a pair, exactly (`at = [[0, 0], [10, 0]]`).
+pub fn points<'de, D: Deserializer<'de>>(d: D) -> Result<[[f64; 2]; 2], D::Error> {
+    exactly::<D, Pair, 2>(d, "two points [[x, y], [x, y]]").map(|[a, b]| [a.0, b.0])
+}
+
+/// Optional [`points`] (with `#[serde(default)]`).
+pub fn option_points<'de, D: Deserializer<'de>>(d: D) -> Result<Option<[[f64; 2]; 2]>, D::Error> {
+    points(d).map(Some)
+}
+
+/// Two whole numbers, exactly (`teeth = [20, 42]`).
+pub fn counts<'de, D: Deserializer<'de>>(d: D) -> Result<[u32; 2], D::Error> {
+    exactly(d, "two whole numbers [a, b]")
+}
+
+/// A list of pairs (`table = [[0, 0], [90, 1.5]]`).
+pub fn list<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<[f64; 2]>, D::Error> {
+    d.deserialize_seq(Pairs)
+}

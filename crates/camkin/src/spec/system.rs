@@ -93,8 +93,10 @@ pub struct SpringSpec {
     /// its name
     pub name: String,
     /// the two bodies its ends are on
+    #[serde(deserialize_with = "super::pair::names")]
     pub bodies: [String; 2],
     /// its ends, each in its body's frame
+    #[serde(deserialize_with = "super::pair::points")]
     pub at: [[f64; 2]; 2],
     /// N per length unit
     pub stiffness: f64,
@@ -111,8 +113,10 @@ pub struct DamperSpec {
     /// its name
     pub name: String,
     /// the two bodies its ends are on
+    #[serde(deserialize_with = "super::pair::names")]
     pub bodies: [String; 2],
     /// its ends, each in its body's frame
+    #[serde(deserialize_with = "super::pair::points")]
     pub at: [[f64; 2]; 2],
     /// N·s per length unit
     pub damping: f64,
@@ -125,6 +129,7 @@ pub struct TorsionSpringSpec {
     /// its name
     pub name: String,
     /// the two bodies whose relative angle it resists
+    #[serde(deserialize_with = "super::pair::names")]
     pub bodies: [String; 2],
     /// N·length unit per rad
     pub stiffness: f64,
@@ -146,8 +151,10 @@ pub struct BodySpec {
     pub inertia: Option<f64>,
     /// its centre of mass in its frame, in the file's length unit (default its frame's origin;
     /// for dynamics)
+    #[serde(default, deserialize_with = "super::pair::option")]
     pub centre_of_mass: Option<[f64; 2]>,
     /// where its frame's origin starts (a guess for the first instant; default the origin)
+    #[serde(default, deserialize_with = "super::pair::option")]
     pub position: Option<[f64; 2]>,
     /// its frame's starting angle, degrees (default 0)
     pub angle_deg: Option<f64>,
@@ -162,10 +169,13 @@ pub struct JointSpec {
     /// "revolute", "prismatic" or "fixed"
     pub kind: String,
     /// the two bodies (either may be "ground")
+    #[serde(deserialize_with = "super::pair::names")]
     pub bodies: [String; 2],
     /// the joint's point in each body's frame (default the origins)
+    #[serde(default, deserialize_with = "super::pair::option_points")]
     pub at: Option<[[f64; 2]; 2]>,
     /// prismatic: the guide's direction in the first body's frame
+    #[serde(default, deserialize_with = "super::pair::option")]
     pub axis: Option<[f64; 2]>,
     /// prismatic and fixed: the second body's angle to the first, degrees (default 0)
     pub angle_deg: Option<f64>,
@@ -194,6 +204,26 @@ pub struct DriverSpec {
 /// The field `key` of element `index` of `table`.
 fn at(table: SystemTable, index: usize, key: SystemKey) -> Field {
     Field::System(SystemField { table, index, key })
+}
+
+/// `x` (as written, at `field`) within the range a simulation is computed in: its magnitude
+/// from `lo` to `hi`, or zero where `lo` is (the cam follower's dynamics' ranges: wide for any
+/// machine, narrow enough that forces, energies and rates stay far from overflow).
+pub(super) fn within(field: Field, x: f64, lo: f64, hi: f64) -> Result<f64, SpecError> {
+    if x == 0.0 && lo == 0.0 || (lo..=hi).contains(&x.abs()) {
+        Ok(x)
+    } else {
+        Err(SpecError::Invalid {
+            field,
+            value: crate::human::human(x),
+            reason: format!(
+                "is outside the range the dynamics is computed in ({}{} to {})",
+                if lo == 0.0 { "" } else { "magnitude " },
+                crate::human::human(lo),
+                crate::human::human(hi)
+            ),
+        })
+    }
 }
 
 /// A spec error of a carried curve, moved from the follower's profile (where the curve builder
@@ -226,6 +256,70 @@ impl SystemSpec {
             }
             Ok(())
         };
+        // one name, one element: the names are the columns' names in every table (a body
+        // "cam" and a contact "cam" would both write `cam_x_mm`)
+        let mut seen: HashMap<&str, (T, usize)> = HashMap::new();
+        let names = [
+            (
+                T::Body,
+                self.body
+                    .iter()
+                    .map(|e| e.name.as_str())
+                    .collect::<Vec<_>>(),
+            ),
+            (
+                T::Joint,
+                self.joint.iter().map(|e| e.name.as_str()).collect(),
+            ),
+            (
+                T::Driver,
+                self.driver.iter().map(|e| e.name.as_str()).collect(),
+            ),
+            (
+                T::Contact,
+                self.contact.iter().map(|e| e.name.as_str()).collect(),
+            ),
+            (
+                T::Spring,
+                self.spring.iter().map(|e| e.name.as_str()).collect(),
+            ),
+            (
+                T::Damper,
+                self.damper.iter().map(|e| e.name.as_str()).collect(),
+            ),
+            (
+                T::TorsionSpring,
+                self.torsion_spring
+                    .iter()
+                    .map(|e| e.name.as_str())
+                    .collect(),
+            ),
+            (
+                T::CoilSpring,
+                self.coil_spring.iter().map(|e| e.name.as_str()).collect(),
+            ),
+            (
+                T::GasForce,
+                self.gas_force.iter().map(|e| e.name.as_str()).collect(),
+            ),
+        ];
+        for (t, list) in &names {
+            for (i, &name) in list.iter().enumerate() {
+                if name.trim().is_empty() || (*t == T::Body && name == "ground") {
+                    continue;
+                }
+                if let Some(&(t0, i0)) = seen.get(name) {
+                    return Err(SpecError::Rule {
+                        field: at(*t, i, K::Name),
+                        reason: format!(
+                            "{name:?}: {}[{i0}] has this name already (every element's name is its own: it names its columns in the tables)",
+                            t0.name()
+                        ),
+                    });
+                }
+                seen.insert(name, (*t, i));
+            }
+        }
         for (i, b) in self.body.iter().enumerate() {
             named(T::Body, i, &b.name)?;
             if ids.contains_key(b.name.as_str()) {
@@ -244,6 +338,8 @@ impl SystemSpec {
             }
             let mass = positive(at(T::Body, i, K::Mass), b.mass.unwrap_or(1.0))?;
             let inertia = positive(at(T::Body, i, K::Inertia), b.inertia.unwrap_or(1.0))?;
+            within(at(T::Body, i, K::Mass), mass, 1e-9, 1e9)?;
+            within(at(T::Body, i, K::Inertia), inertia, 1e-15, 1e9)?;
             let p = point(
                 at(T::Body, i, K::Position),
                 b.position.unwrap_or([0.0, 0.0]),
@@ -281,7 +377,10 @@ impl SystemSpec {
             if a == b {
                 return Err(SpecError::Rule {
                     field: at(t, i, K::Bodies),
-                    reason: format!("joins {:?} to itself", names[0]),
+                    reason: format!(
+                        "joins {:?} to itself: an element joins two bodies (one may be \"ground\")",
+                        names[0]
+                    ),
                 });
             }
             Ok([a, b])
@@ -355,10 +454,20 @@ impl SystemSpec {
                     reason: "the ground does not move: drive a body".into(),
                 });
             }
-            let start = finite(at(T::Driver, i, K::Start), d.start.unwrap_or(0.0))?;
-            let acc = finite(
+            let start = within(
+                at(T::Driver, i, K::Start),
+                finite(at(T::Driver, i, K::Start), d.start.unwrap_or(0.0))?,
+                0.0,
+                1e9,
+            )?;
+            let acc = within(
                 at(T::Driver, i, K::Acceleration),
-                d.acceleration.unwrap_or(0.0),
+                finite(
+                    at(T::Driver, i, K::Acceleration),
+                    d.acceleration.unwrap_or(0.0),
+                )?,
+                0.0,
+                1e15,
             )?;
             let coord =
                 DriverCoordinate::parse(&d.coordinate).ok_or_else(|| SpecError::Unknown {
@@ -382,6 +491,7 @@ impl SystemSpec {
                             reason: "an angle's driver needs speed_rpm".into(),
                         })?,
                     )?;
+                    within(at(T::Driver, i, K::SpeedRpm), rpm, 0.0, 1e9)?;
                     (
                         Coordinate::Angle,
                         DriverLaw::Quadratic {
@@ -401,6 +511,7 @@ impl SystemSpec {
                         });
                     }
                     let v = coordinate(at(T::Driver, i, K::Speed), d.speed.unwrap_or(0.0))?;
+                    within(at(T::Driver, i, K::Speed), v, 0.0, 1e12)?;
                     (
                         if c == DriverCoordinate::X {
                             Coordinate::X
@@ -548,26 +659,15 @@ impl SystemSpec {
                 })
             }
         };
-        // a spring or damper with both ends at one point of one body does nothing: a mistake
+        // a spring or damper with both ends on one body does nothing (a rigid body never
+        // stretches it): a mistake
         let ends = |t: T, i: usize, names: &[String; 2], pts: [[f64; 2]; 2]| {
-            let [a, b] = [
-                body(t, i, K::Bodies, &names[0])?,
-                body(t, i, K::Bodies, &names[1])?,
-            ];
+            let [a, b] = two(t, i, names)?;
             let (pa, pb) = (
                 point(at(t, i, K::At), pts[0])?,
                 point(at(t, i, K::At), pts[1])?,
             );
-            if a == b && pa == pb {
-                return Err(SpecError::Rule {
-                    field: at(t, i, K::At),
-                    reason: format!(
-                        "both ends at one point of {:?}: it would never stretch",
-                        names[0]
-                    ),
-                });
-            }
-            Ok((
+            Ok::<_, SpecError>((
                 a,
                 Point2::new(scale * pa.x, scale * pa.y),
                 b,
@@ -584,10 +684,20 @@ impl SystemSpec {
                     at_a,
                     b,
                     at_b,
-                    stiffness: non_negative(at(T::Spring, i, K::Stiffness), sp.stiffness)? / scale,
+                    stiffness: within(
+                        at(T::Spring, i, K::Stiffness),
+                        non_negative(at(T::Spring, i, K::Stiffness), sp.stiffness)?,
+                        0.0,
+                        1e15,
+                    )? / scale,
                     free_length: scale
                         * non_negative(at(T::Spring, i, K::FreeLength), sp.free_length)?,
-                    preload: finite(at(T::Spring, i, K::Preload), sp.preload.unwrap_or(0.0))?,
+                    preload: within(
+                        at(T::Spring, i, K::Preload),
+                        finite(at(T::Spring, i, K::Preload), sp.preload.unwrap_or(0.0))?,
+                        0.0,
+                        1e12,
+                    )?,
                 },
             });
         }
@@ -601,7 +711,12 @@ impl SystemSpec {
                     at_a,
                     b,
                     at_b,
-                    damping: non_negative(at(T::Damper, i, K::Damping), d.damping)? / scale,
+                    damping: within(
+                        at(T::Damper, i, K::Damping),
+                        non_negative(at(T::Damper, i, K::Damping), d.damping)?,
+                        0.0,
+                        1e12,
+                    )? / scale,
                 },
             });
         }
@@ -614,16 +729,32 @@ impl SystemSpec {
                     a,
                     b,
                     stiffness: scale
-                        * non_negative(at(T::TorsionSpring, i, K::Stiffness), ts.stiffness)?,
-                    free_angle: finite(
+                        * within(
+                            at(T::TorsionSpring, i, K::Stiffness),
+                            non_negative(at(T::TorsionSpring, i, K::Stiffness), ts.stiffness)?,
+                            0.0,
+                            1e15,
+                        )?,
+                    // a free angle within a thousand turns or so of the body's
+                    free_angle: within(
                         at(T::TorsionSpring, i, K::FreeAngleDeg),
-                        ts.free_angle_deg.unwrap_or(0.0),
+                        finite(
+                            at(T::TorsionSpring, i, K::FreeAngleDeg),
+                            ts.free_angle_deg.unwrap_or(0.0),
+                        )?,
+                        0.0,
+                        1e6,
                     )?
                     .to_radians(),
                     preload: scale
-                        * finite(
+                        * within(
                             at(T::TorsionSpring, i, K::Preload),
-                            ts.preload.unwrap_or(0.0),
+                            finite(
+                                at(T::TorsionSpring, i, K::Preload),
+                                ts.preload.unwrap_or(0.0),
+                            )?,
+                            0.0,
+                            1e12,
                         )?,
                 },
             });
@@ -639,10 +770,20 @@ impl SystemSpec {
                 at_a,
                 b,
                 at_b,
-                stiffness: non_negative(f(K::Stiffness), c.stiffness)? / scale,
+                stiffness: within(
+                    f(K::Stiffness),
+                    non_negative(f(K::Stiffness), c.stiffness)?,
+                    0.0,
+                    1e15,
+                )? / scale,
                 free_length: scale * non_negative(f(K::FreeLength), c.free_length)?,
-                preload: finite(f(K::Preload), c.preload.unwrap_or(0.0))?,
-                mass: non_negative(f(K::Mass), c.mass)?,
+                preload: within(
+                    f(K::Preload),
+                    finite(f(K::Preload), c.preload.unwrap_or(0.0))?,
+                    0.0,
+                    1e12,
+                )?,
+                mass: within(f(K::Mass), non_negative(f(K::Mass), c.mass)?, 0.0, 1e9)?,
                 masses: match c.masses {
                     n if n <= 64 => n,
                     n => {
@@ -691,6 +832,13 @@ impl SystemSpec {
             gravity: match gravity {
                 Some(g) => {
                     let g = point(at(T::Dynamics, 0, K::Gravity), g)?;
+                    if g.coords.norm() > 1e6 {
+                        return Err(SpecError::Invalid {
+                            field: at(T::Dynamics, 0, K::Gravity),
+                            value: super::build::vector([g.x, g.y]),
+                            reason: "is outside the range the dynamics is computed in (at most 1e6 m/s²)".into(),
+                        });
+                    }
                     crate::Vec2::new(g.x, g.y)
                 }
                 None => crate::Vec2::zeros(),

@@ -10,6 +10,7 @@ pub struct ContactSpec {
     /// its name
     pub name: String,
     /// the bodies carrying curve A and curve B
+    #[serde(deserialize_with = "super::pair::names")]
     pub bodies: [String; 2],
     /// curve A in the first body's frame (any curve a follower may carry: spline, circle,
     /// ellipse, points-file, involute-gear, line, point), material on its left
@@ -37,7 +38,11 @@ pub struct ContactSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub materials: Option<String>,
     /// its curves' RMS roughness, µm (with `[lubrication]`; default that table's)
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "super::pair::option"
+    )]
     pub roughness_um: Option<[f64; 2]>,
     /// `"a"` or `"b"`: that curve, a circle, is a roller turning freely on its pin, rolling on
     /// the other without slip (its lubrication; without it a circle slides with its body)

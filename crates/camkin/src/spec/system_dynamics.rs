@@ -11,6 +11,7 @@ use crate::field::{Field, ProfileField, SystemField, SystemKey, SystemTable};
 #[serde(deny_unknown_fields)]
 pub struct SystemDynamicsSpec {
     /// gravity in the world, m/s² (default none)
+    #[serde(default, deserialize_with = "super::pair::option")]
     pub gravity: Option<[f64; 2]>,
     /// Newton's coefficient of restitution of every contact without its own, 0 to 1 (default 0)
     pub restitution: Option<f64>,
@@ -45,7 +46,7 @@ pub(super) fn contact_hertz(
     };
     match c.face_width {
         Some(w) => {
-            let width = scale * positive(at(SystemKey::FaceWidth), w)?;
+            let width = scale * super::build::length(at(SystemKey::FaceWidth), w)?;
             let text = c.materials.as_deref().unwrap_or("steel,steel");
             let m: crate::report::Materials =
                 text.parse()
@@ -87,10 +88,13 @@ pub struct GasForceSpec {
     /// the body it pushes
     pub body: String,
     /// where, in the body's frame (default its origin)
+    #[serde(default, deserialize_with = "super::pair::option")]
     pub at: Option<[f64; 2]>,
     /// its direction in the world
+    #[serde(deserialize_with = "super::pair::exact")]
     pub direction: [f64; 2],
     /// `[crank degrees, N]`, the angles increasing within one period
+    #[serde(deserialize_with = "super::pair::list")]
     pub table: Vec<[f64; 2]>,
     /// crank degrees a degree of the first driver (default 2: a four-stroke's camshaft)
     pub crank_per_driver: Option<f64>,
@@ -114,6 +118,12 @@ pub(super) fn gas_force(
         })
     };
     let id = body(&g.body)?;
+    if id.is_ground() {
+        return Err(SpecError::Rule {
+            field: at(SystemKey::Body),
+            reason: "the ground does not move: a gas force pushes a body (a piston)".into(),
+        });
+    }
     let p = point(at(SystemKey::At), g.at.unwrap_or([0.0, 0.0]))?;
     let period = positive(at(SystemKey::PeriodDeg), g.period_deg.unwrap_or(720.0))?;
     let ratio = positive(
@@ -124,7 +134,12 @@ pub(super) fn gas_force(
     for [angle, force] in &g.table {
         let (angle, force) = (
             finite(at(SystemKey::ForceTable), *angle)?,
-            finite(at(SystemKey::ForceTable), *force)?,
+            super::system::within(
+                at(SystemKey::ForceTable),
+                finite(at(SystemKey::ForceTable), *force)?,
+                0.0,
+                1e12,
+            )?,
         );
         if !(0.0..period).contains(&angle) || table.last().is_some_and(|&(a, _)| angle <= a) {
             return Err(SpecError::Rule {

@@ -27,7 +27,11 @@ pub struct SystemLubricationSpec {
     /// a preset oil or `eta=<Pa·s>:alpha=<1/Pa>`
     pub oil: String,
     /// every contact's curve A and curve B RMS roughness, µm, unless it gives its own
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "super::pair::option"
+    )]
     pub roughness_um: Option<[f64; 2]>,
     /// `"dowson-higginson"` (default) or `"hamrock"`
     #[serde(default, skip_serializing_if = "Option::is_none")]
