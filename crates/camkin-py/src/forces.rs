@@ -380,18 +380,16 @@ impl PySystem {
         large: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let h = camkin::human::human;
-        if !margin.is_finite() {
+        // the library's checks, as a cam's forces take them
+        if let Err(e) = camkin::report::check_limits(margin, allowable_mpa) {
+            let (key, value) = match e.field() {
+                Some(ForceField::Allowable) => ("allowable_mpa", allowable_mpa.unwrap_or(f64::NAN)),
+                _ => ("margin", margin),
+            };
             return Err(errors::input(
-                "margin",
-                Some(h(margin)),
-                format!("margin = {}: must be a finite force, N", h(margin)),
-            ));
-        }
-        if let Some(a) = allowable_mpa.filter(|a| !(a.is_finite() && *a > 0.0)) {
-            return Err(errors::input(
-                "allowable_mpa",
-                Some(h(a)),
-                format!("allowable_mpa = {}: must be a positive pressure, MPa", h(a)),
+                key,
+                Some(h(value)),
+                format!("{key} = {}: {e}", h(value)),
             ));
         }
         if let Some(t) = target_rpm.filter(|t| !(t.is_finite() && *t > 0.0 && *t <= 1e6)) {

@@ -273,6 +273,8 @@ fn run_system(
             "{name}: a system's forces come from its simulation: give it a [dynamics] table (see docs/systems.md, \"Dynamics of a system\")"
         )));
     }
+    // the checks a cam's forces take
+    camkin::report::check_limits(args.margin, args.allowable).map_err(input_error)?;
     let sys = &built.system;
     let step = args.step.deg();
     let (plan, mut sim) = built.plan(1.0, step, None).map_err(|e| plan_err(name, e))?;

@@ -199,6 +199,30 @@ fn angles(step_deg: f64) -> usize {
     (360.0 / step_deg).round() as usize
 }
 
+/// The checks every force report takes, a cam's or a system's: the smallest contact force
+/// allowed (`margin`, N, finite and ≥ 0) and the allowable Hertz pressure (MPa, positive).
+pub fn check_limits(margin: f64, allowable_mpa: Option<f64>) -> Result<(), ReportError> {
+    if !(margin.is_finite() && margin >= 0.0) {
+        return Err(ReportError::Invalid {
+            field: ForceField::Margin,
+            value: margin,
+            unit: "N",
+            reason: "must be finite and ≥ 0",
+        });
+    }
+    if let Some(a) = allowable_mpa {
+        if !(a.is_finite() && a > 0.0) {
+            return Err(ReportError::Invalid {
+                field: ForceField::Allowable,
+                value: a,
+                unit: "MPa",
+                reason: "must be positive",
+            });
+        }
+    }
+    Ok(())
+}
+
 impl ForceRequest {
     /// Checks the request's values against `mech` (in metres), naming the field.
     pub fn validate(&self, mech: &Mechanism) -> Result<(), ReportError> {
@@ -220,22 +244,10 @@ impl ForceRequest {
                 "must be in (0°, 90°] and divide 360°",
             ));
         }
-        if !(self.margin.is_finite() && self.margin >= 0.0) {
-            return Err(bad(
-                ForceField::Margin,
-                self.margin,
-                "N",
-                "must be finite and ≥ 0",
-            ));
-        }
+        check_limits(self.margin, self.allowable_mpa)?;
         if let Some(r) = self.target_rpm {
             if !(r.is_finite() && r > 0.0 && r <= 1e7) {
                 return Err(bad(ForceField::TargetRpm, r, "rpm", "must be in (0, 1e7]"));
-            }
-        }
-        if let Some(a) = self.allowable_mpa {
-            if !(a.is_finite() && a > 0.0) {
-                return Err(bad(ForceField::Allowable, a, "MPa", "must be positive"));
             }
         }
         let unit = self.unit.name();

@@ -30,8 +30,8 @@ mod system_lubrication;
 pub use design::{split_jumps, Check, DesignReport, Verdict};
 pub use deviation::{DeviationError, DeviationReport, MotionDeviation, RadiusDeviation};
 pub use forces::{
-    plausible_face_width, rpm, ForceCheck, ForceReport, ForceRequest, FormClosed, HertzReport,
-    HertzSide, Jump,
+    check_limits, plausible_face_width, rpm, ForceCheck, ForceReport, ForceRequest, FormClosed,
+    HertzReport, HertzSide, Jump,
 };
 pub use gear_loads::{GearLoadError, GearLoadRequest, GearLoads, PathPoint};
 pub use lubrication::{LubricationPoint, LubricationReport, LubricationRequest};

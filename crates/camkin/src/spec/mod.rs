@@ -51,6 +51,7 @@ mod run_plan;
 mod system;
 mod system_contact;
 mod system_dynamics;
+mod system_elements;
 mod system_lubrication;
 #[cfg(feature = "text")]
 pub mod text;
@@ -72,11 +73,10 @@ pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_F
 #[cfg(feature = "text")]
 pub use model_file::{read_model, ModelFile, Preset, Solver};
 pub use run_plan::{PlanError, PlanField, RunPlan, MAX_REVOLUTIONS, MAX_SUBSTEPS, STEP_RANGE_DEG};
-pub use system::{
-    BodySpec, DamperSpec, DriverSpec, JointSpec, SpringSpec, SystemSpec, TorsionSpringSpec,
-};
+pub use system::{BodySpec, DriverSpec, JointSpec, SystemSpec};
 pub use system_contact::ContactSpec;
 pub use system_dynamics::{GasForceSpec, SystemDynamicsSpec};
+pub use system_elements::{DamperSpec, SpringSpec, TorsionSpringSpec};
 pub use system_lubrication::SystemLubricationSpec;
 
 use crate::cam::Sense;

@@ -94,6 +94,10 @@ pub enum PlanError {
         /// the fewest substeps that do
         need: usize,
     },
+    /// The system file has no `[dynamics]`: its masses, gravity and forces are not meant for a
+    /// simulation (its degrees of freedom are all driven, or it is a kinematic model).
+    #[error("it has no [dynamics] table: a system is simulated with it (gravity, restitution; its bodies' masses and its force elements), see docs/systems.md, \"Dynamics of a system\"")]
+    NoDynamics,
     /// The system cannot be simulated (its elements, its assembly).
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
@@ -110,6 +114,9 @@ impl BuiltSystem {
         substeps: Option<usize>,
     ) -> Result<(RunPlan, SystemSimulation<'_>), PlanError> {
         let h = crate::human::human;
+        if !self.simulated {
+            return Err(PlanError::NoDynamics);
+        }
         if !(revolutions > 0.0 && revolutions <= MAX_REVOLUTIONS) {
             return Err(PlanError::OutOfRange {
                 field: PlanField::Revolutions,

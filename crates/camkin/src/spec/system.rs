@@ -33,8 +33,10 @@ use super::build::{
 };
 use super::kinds::{DriverCoordinate, JointKindName};
 use super::profile::Place;
+use super::system_elements::within;
 use super::{BuiltSystem, SweepAngle};
 use super::{ContactSpec, ProfileSpec};
+use super::{DamperSpec, SpringSpec, TorsionSpringSpec};
 use crate::body::Pose;
 use crate::field::{Field, FollowerField, ProfileField, SystemField, SystemKey, SystemTable};
 use crate::geometry::Point2;
@@ -84,59 +86,6 @@ pub struct SystemSpec {
     /// `[lubrication]`: the oil of every contact with a face width (for dynamics)
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubrication: Option<super::SystemLubricationSpec>,
-}
-
-/// `[[spring]]`: `stiffness` N per length, `free_length` (length), `preload` N at it.
-#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SpringSpec {
-    /// its name
-    pub name: String,
-    /// the two bodies its ends are on
-    #[serde(deserialize_with = "super::pair::names")]
-    pub bodies: [String; 2],
-    /// its ends, each in its body's frame
-    #[serde(deserialize_with = "super::pair::points")]
-    pub at: [[f64; 2]; 2],
-    /// N per length unit
-    pub stiffness: f64,
-    /// length unit
-    pub free_length: f64,
-    /// N (default 0)
-    pub preload: Option<f64>,
-}
-
-/// `[[damper]]`: `damping` N·s per length.
-#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct DamperSpec {
-    /// its name
-    pub name: String,
-    /// the two bodies its ends are on
-    #[serde(deserialize_with = "super::pair::names")]
-    pub bodies: [String; 2],
-    /// its ends, each in its body's frame
-    #[serde(deserialize_with = "super::pair::points")]
-    pub at: [[f64; 2]; 2],
-    /// N·s per length unit
-    pub damping: f64,
-}
-
-/// `[[torsion_spring]]`: `stiffness` N·length per rad, `free_angle_deg`, `preload` N·length.
-#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct TorsionSpringSpec {
-    /// its name
-    pub name: String,
-    /// the two bodies whose relative angle it resists
-    #[serde(deserialize_with = "super::pair::names")]
-    pub bodies: [String; 2],
-    /// N·length unit per rad
-    pub stiffness: f64,
-    /// degrees (default 0)
-    pub free_angle_deg: Option<f64>,
-    /// N·length unit (default 0)
-    pub preload: Option<f64>,
 }
 
 /// `[[body]]`.
@@ -206,26 +155,6 @@ fn at(table: SystemTable, index: usize, key: SystemKey) -> Field {
     Field::System(SystemField { table, index, key })
 }
 
-/// `x` (as written, at `field`) within the range a simulation is computed in: its magnitude
-/// from `lo` to `hi`, or zero where `lo` is (the cam follower's dynamics' ranges: wide for any
-/// machine, narrow enough that forces, energies and rates stay far from overflow).
-pub(super) fn within(field: Field, x: f64, lo: f64, hi: f64) -> Result<f64, SpecError> {
-    if x == 0.0 && lo == 0.0 || (lo..=hi).contains(&x.abs()) {
-        Ok(x)
-    } else {
-        Err(SpecError::Invalid {
-            field,
-            value: crate::human::human(x),
-            reason: format!(
-                "is outside the range the dynamics is computed in ({}{} to {})",
-                if lo == 0.0 { "" } else { "magnitude " },
-                crate::human::human(lo),
-                crate::human::human(hi)
-            ),
-        })
-    }
-}
-
 /// A spec error of a carried curve, moved from the follower's profile (where the curve builder
 /// names it) to the contact's curve.
 fn moved(e: SpecError, to: impl Fn(ProfileField) -> Field) -> SpecError {
@@ -256,70 +185,7 @@ impl SystemSpec {
             }
             Ok(())
         };
-        // one name, one element: the names are the columns' names in every table (a body
-        // "cam" and a contact "cam" would both write `cam_x_mm`)
-        let mut seen: HashMap<&str, (T, usize)> = HashMap::new();
-        let names = [
-            (
-                T::Body,
-                self.body
-                    .iter()
-                    .map(|e| e.name.as_str())
-                    .collect::<Vec<_>>(),
-            ),
-            (
-                T::Joint,
-                self.joint.iter().map(|e| e.name.as_str()).collect(),
-            ),
-            (
-                T::Driver,
-                self.driver.iter().map(|e| e.name.as_str()).collect(),
-            ),
-            (
-                T::Contact,
-                self.contact.iter().map(|e| e.name.as_str()).collect(),
-            ),
-            (
-                T::Spring,
-                self.spring.iter().map(|e| e.name.as_str()).collect(),
-            ),
-            (
-                T::Damper,
-                self.damper.iter().map(|e| e.name.as_str()).collect(),
-            ),
-            (
-                T::TorsionSpring,
-                self.torsion_spring
-                    .iter()
-                    .map(|e| e.name.as_str())
-                    .collect(),
-            ),
-            (
-                T::CoilSpring,
-                self.coil_spring.iter().map(|e| e.name.as_str()).collect(),
-            ),
-            (
-                T::GasForce,
-                self.gas_force.iter().map(|e| e.name.as_str()).collect(),
-            ),
-        ];
-        for (t, list) in &names {
-            for (i, &name) in list.iter().enumerate() {
-                if name.trim().is_empty() || (*t == T::Body && name == "ground") {
-                    continue;
-                }
-                if let Some(&(t0, i0)) = seen.get(name) {
-                    return Err(SpecError::Rule {
-                        field: at(*t, i, K::Name),
-                        reason: format!(
-                            "{name:?}: {}[{i0}] has this name already (every element's name is its own: it names its columns in the tables)",
-                            t0.name()
-                        ),
-                    });
-                }
-                seen.insert(name, (*t, i));
-            }
-        }
+        self.unique_names()?;
         for (i, b) in self.body.iter().enumerate() {
             named(T::Body, i, &b.name)?;
             if ids.contains_key(b.name.as_str()) {

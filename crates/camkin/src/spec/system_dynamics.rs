@@ -134,7 +134,7 @@ pub(super) fn gas_force(
     for [angle, force] in &g.table {
         let (angle, force) = (
             finite(at(SystemKey::ForceTable), *angle)?,
-            super::system::within(
+            super::system_elements::within(
                 at(SystemKey::ForceTable),
                 finite(at(SystemKey::ForceTable), *force)?,
                 0.0,

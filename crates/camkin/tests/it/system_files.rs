@@ -108,7 +108,7 @@ fn bad_system_files_name_the_element_and_its_line() {
         (
             "a body named twice",
             VALVE_TRAIN.replace("name = \"valve\"\n", "name = \"finger\"\n"),
-            &["body[2].name", "another body has this name"],
+            &["body[2].name", "body[1] has this name already"],
             ("name = \"finger\"", 2),
         ),
         (
