@@ -233,12 +233,14 @@ fn invalid_system_models_are_refused_at_their_key() {
         (format!("{ROCKER}{gas}"), "gas_force[0].body: the ground does not move"),
         (ROCKER.replace("mass = 0.05", "mass = 1e12"), "body[1].mass = 1e12: is outside the range"),
         (ROCKER.replace("inertia = 2e-5", "inertia = 1e-20"), "body[1].inertia = 1e-20: is outside the range"),
-        (ROCKER.replace("gravity = [0.0, -9.81]", "gravity = [0.0, -1e7]"), "dynamics.gravity = [0, -1e7]: is outside the range"),
+        (ROCKER.replace("gravity = [0.0, -9.81]", "gravity = [0.0, -1e7]"), "dynamics.gravity = [0, -10000000]: is outside the range the dynamics is computed in (at most 1e6 m/s²)"),
         (ROCKER.replace("preload = 0.0", "preload = 1e300"), "torsion_spring[0].preload = 1e300: is outside the range"),
         (ROCKER.replace("free_angle_deg = -90.0", "free_angle_deg = 1e300"), "torsion_spring[0].free_angle_deg = 1e300: is outside the range"),
         (ROCKER.replace("speed_rpm = 1000.0", "speed_rpm = 1e300"), "driver[0].speed_rpm = 1e300: is outside the range"),
         (ROCKER.replace("face_width = 10.0", "face_width = 1e-300"), "contact[0].face_width = 1e-300"),
         (format!("{ROCKER}{coil}"), "coil_spring[0].mass = 1e300: is outside the range"),
+        // it was "largest residual NaN, in )"
+        (format!("{ROCKER}{}", coil.replace("mass = 1e300", "mass = 0.02\nsolid_length = 70.0")), "coil_spring[0].solid_length = 70: must be below the free length 60"),
     ];
     for (text, needle) in cases {
         std::fs::write(&f, &text).unwrap();

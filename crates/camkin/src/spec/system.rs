@@ -665,6 +665,16 @@ impl SystemSpec {
                     .map(|s| non_negative(f(K::SolidLength), s).map(|s| scale * s))
                     .transpose()?,
             };
+            if let Some(solid) = spring.solid_length.filter(|&s| s >= spring.free_length) {
+                return Err(SpecError::Invalid {
+                    field: f(K::SolidLength),
+                    value: crate::human::human(solid / scale),
+                    reason: format!(
+                        "must be below the free length {} (a spring is solid when its coils touch, shorter than free)",
+                        crate::human::human(spring.free_length / scale)
+                    ),
+                });
+            }
             if spring.masses > 0 && !(spring.mass > 0.0) {
                 return Err(SpecError::Rule {
                     field: f(K::Mass),

@@ -61,7 +61,7 @@ pub enum SystemError {
     },
     /// Newton on the positions did not converge: the system cannot assemble at this instant
     /// (a closed loop that does not close, a contact lost).
-    #[error("at t = {} s the system cannot be assembled: {reason} (largest residual {}, in {row})", crate::human::human(*time), crate::human::human(*residual))]
+    #[error("at t = {} s the system cannot be assembled: {reason}{}", crate::human::human(*time), residual_note(*residual, row))]
     NoAssembly {
         /// the instant, s
         time: f64,
@@ -93,4 +93,19 @@ pub enum SystemError {
         /// why
         reason: &'static str,
     },
+}
+
+/// ` (largest residual R, in ROW)` where Newton left one; nothing where it did not get as far
+/// (the rows were dependent before a residual was reduced).
+fn residual_note(residual: f64, row: &str) -> String {
+    if residual.is_finite() && !row.is_empty() {
+        format!(
+            " (largest residual {}, in {row})",
+            crate::human::human(residual)
+        )
+    } else if residual.is_finite() {
+        format!(" (largest residual {})", crate::human::human(residual))
+    } else {
+        String::new()
+    }
 }
