@@ -40,6 +40,7 @@ mod jerk;
 mod joint;
 mod lu;
 mod newton;
+mod period;
 mod search;
 mod solve;
 mod table_force;

@@ -89,6 +89,10 @@ const DEAD_POINT: f64 = 1e-2;
 /// Most instants between two asked for.
 const MAX_SUBSTEPS: f64 = 65_536.0;
 
+/// An instant farther from the last than this many instants between is reached through the
+/// system's period where it repeats ([`super::period`]).
+const FAR_INSTANTS: f64 = 2048.0;
+
 /// Most times one instant moves its contacts to other pairs of points.
 const MAX_JUMPS: usize = 8;
 
@@ -113,6 +117,9 @@ pub struct SystemSweep<'a> {
     jumps: Vec<bool>,
     /// buffers an instant reuses
     scratch: Scratch,
+    /// after how long the system repeats, once an instant far away asked for it (`Some(None)`:
+    /// it does not within [`super::period::MAX_REVOLUTIONS`] revolutions)
+    period: Option<Option<super::period::Period>>,
 }
 
 impl System {
@@ -158,6 +165,7 @@ impl System {
             sharpest,
             jumps: vec![false; self.contacts.len()],
             scratch: Scratch::default(),
+            period: None,
         })
     }
 }
@@ -216,12 +224,57 @@ impl SystemSweep<'_> {
             self.step_once(0.0)?;
         }
         self.jumps.iter_mut().for_each(|j| *j = false);
+        if let Some(s) = self.far(t)? {
+            return Ok(s);
+        }
         let mut s = self.step_reached(t)?;
         // a jump in an instant between (the continuation's) is this step's
         for (c, &j) in s.contacts.iter_mut().zip(&self.jumps) {
             c.jumped = j && !first;
         }
         Ok(s)
+    }
+
+    /// An instant more than [`FAR_INSTANTS`] instants between from the last: where the system
+    /// repeats, the instant that many whole periods nearer the start, reached from the start
+    /// and turned on by the periods' turns (this sweep goes on from there); where it does not
+    /// and more than [`MAX_SUBSTEPS`] instants would be needed, refused ([`SystemError::TooFar`]);
+    /// `None` for the instants between.
+    fn far(&mut self, t: f64) -> Result<Option<SystemState>, SystemError> {
+        let Some(last) = &self.last else {
+            return Ok(None);
+        };
+        let from = last.time;
+        let n = last.predicted_move(t - from, self.size) / (MAX_MOVE * self.size);
+        if !(n > FAR_INSTANTS) {
+            return Ok(None);
+        }
+        if self.period.is_none() {
+            self.period = Some(self.sys.period()?);
+        }
+        match self.period.clone().flatten() {
+            Some(p) => {
+                let periods = (t / p.time).floor();
+                let mut near = self.sys.sweep()?;
+                let state = near.step(t - periods * p.time)?;
+                let Some(mut last) = near.last.take() else {
+                    return Ok(None);
+                };
+                last.time += periods * p.time;
+                for (b, turn) in p.turns.iter().enumerate() {
+                    last.q[3 * b + 2] += periods * turn;
+                }
+                self.last = Some(last);
+                self.spare = None;
+                Ok(Some(p.shift(state, periods)))
+            }
+            None if n > MAX_SUBSTEPS => Err(SystemError::TooFar {
+                time: t,
+                from,
+                instants: n,
+            }),
+            None => Ok(None),
+        }
     }
 
     /// `t` from the last instant, through instants between where the bodies would move far

@@ -282,6 +282,69 @@ fn instants_far_apart_are_the_assembly_a_fine_sweep_reaches() {
     assert!(checked >= 30, "{checked}");
 }
 
+/// Issue 63: an instant many revolutions away (the valve train's kinematics at 1e7° of its
+/// cam) is the instant a whole number of periods nearer the start, each body turned by whole
+/// turns: the same poses, rates and accelerations as a half-degree sweep from the start to the
+/// angle within the revolution (it was reported as a dead point it does not have, or ran for
+/// minutes); a system that does not repeat within 8 revolutions (a gear train of 20, 31 and 42
+/// teeth) is refused that far away, saying why, in about a second.
+#[test]
+fn an_instant_many_revolutions_away_is_the_one_its_period_nearer() {
+    let built = build(include_str!(
+        "../../../../examples/valve-train-kinematics.toml"
+    ))
+    .unwrap();
+    let sys = &built.system;
+    let size = sys.size();
+    for deg in [1e7, -1e7, 1e8 + 12.5] {
+        let far = sys
+            .analyze(built.time_of(f64::to_radians(deg)).unwrap())
+            .unwrap();
+        let within = deg.rem_euclid(360.0);
+        let mut fine = sys.sweep().unwrap();
+        let steps = (within / 0.5).ceil() as usize;
+        let mut near = fine.step(0.0).unwrap();
+        for k in 1..=steps {
+            let a = within * k as f64 / steps as f64;
+            near = fine.step(built.time_of(a.to_radians()).unwrap()).unwrap();
+        }
+        for (x, y) in far.bodies.iter().zip(&near.bodies) {
+            assert!(
+                (x.pose.origin - y.pose.origin).norm() <= 1e-9 * size,
+                "{deg}°"
+            );
+            let turned = x.pose.angle - y.pose.angle;
+            let whole = (turned / TAU).round() * TAU;
+            assert!((turned - whole).abs() <= 1e-9, "{deg}°: {turned}");
+            let w = y.omega.abs().max(1.0);
+            assert!((x.omega - y.omega).abs() <= 1e-9 * w, "{deg}°");
+            let a = y.alpha.abs().max(1.0);
+            assert!(
+                (x.alpha - y.alpha).abs() <= 1e-7 * a,
+                "{deg}°: {} {}",
+                x.alpha,
+                y.alpha
+            );
+        }
+    }
+    let gears = build(include_str!("../../../../examples/gear-train.toml")).unwrap();
+    let t0 = std::time::Instant::now();
+    let e = gears
+        .system
+        .analyze(gears.time_of(f64::to_radians(1e6)).unwrap())
+        .unwrap_err();
+    assert!(
+        matches!(e, camkin::system::SystemError::TooFar { .. }),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .contains("does not repeat within 8 revolutions"),
+        "{e}"
+    );
+    eprintln!("refused in {:?}", t0.elapsed());
+}
+
 const CAM_FILE: &str = include_str!("../../../../examples/paper.toml");
 const SYSTEM_FILE: &str = include_str!("../../../../examples/cam-four-bar.toml");
 
