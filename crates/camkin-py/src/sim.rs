@@ -245,20 +245,34 @@ impl PySystem {
                 }
                 PlanError::NotAnAngle => errors::input("driver", None, e.to_string()),
                 PlanError::TooStiff {
-                    element,
+                    ref element,
                     rate,
                     substeps,
-                    need,
                     ..
-                } => errors::input(
-                    "substeps",
-                    Some(substeps.to_string()),
-                    format!(
-                        "substeps = {substeps}: {element} is too stiff for {substeps} substeps of a {}° step (its rate {} /s): use substeps={need} or more (at most 1000)",
-                        h_(step_deg),
-                        h_(rate)
-                    ),
-                ),
+                } => {
+                    let fix = match e.stiff_advice() {
+                        Some(camkin::dynamics::StepAdvice::Substeps(n)) => {
+                            format!("use substeps={n} or more")
+                        }
+                        Some(camkin::dynamics::StepAdvice::FinerStep { step_deg }) => format!(
+                            "use substeps=1000 and step_deg={} or finer",
+                            h_(step_deg)
+                        ),
+                        _ => format!(
+                            "no step_deg from 0.001 with up to 1000 substeps resolves a rate of {} /s at this speed: check the element's stiffness and its bodies' masses (and their units)",
+                            h_(rate)
+                        ),
+                    };
+                    errors::input(
+                        "substeps",
+                        Some(substeps.to_string()),
+                        format!(
+                            "substeps = {substeps}: {element} is too stiff for {substeps} substeps of a {}° step (its rate {} /s): {fix}",
+                            h_(step_deg),
+                            h_(rate)
+                        ),
+                    )
+                }
                 PlanError::Dynamics(e) => dyn_err(e),
                 e => errors::input("", None, e.to_string()),
             })?;

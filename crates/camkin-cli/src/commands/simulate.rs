@@ -543,20 +543,32 @@ pub(super) fn plan_err(name: &str, e: camkin::spec::PlanError) -> Failure {
             bad(format!("{flag}: {value} must be {range}"))
         }
         PlanError::TooStiff {
-            element,
+            ref element,
             rate,
             step,
             step_deg,
             substeps,
             max_step,
-            need,
-        } => bad(format!(
-            "{name}: {element} is too stiff for the time step {} s ({}° of the driver / {substeps} substeps): its rate is {} /s, so the step must be at most {} s; use --substeps {need} or more",
-            h(step),
-            h(step_deg),
-            h(rate),
-            h(max_step),
-        )),
+            ..
+        } => {
+            let fix = match e.stiff_advice() {
+                Some(StepAdvice::Substeps(n)) => format!("use --substeps {n} or more"),
+                Some(StepAdvice::FinerStep { step_deg }) => {
+                    format!("use --substeps 1000 and --step {}° or finer", h(step_deg))
+                }
+                _ => format!(
+                    "no --step from 0.001° with up to 1000 --substeps resolves a rate of {} /s at this speed: check the element's stiffness and its bodies' masses (and their units)",
+                    h(rate)
+                ),
+            };
+            bad(format!(
+                "{name}: {element} is too stiff for the time step {} s ({}° of the driver / {substeps} substeps): its rate is {} /s, so the step must be at most {} s; {fix}",
+                h(step),
+                h(step_deg),
+                h(rate),
+                h(max_step),
+            ))
+        }
         PlanError::Dynamics(e) => system_err(name, e),
         e => bad(format!("{name}: {e}")),
     }

@@ -69,10 +69,10 @@ impl SweepAngle {
 #[non_exhaustive]
 pub enum SweepError {
     /// The system's first driver does not turn at a constant speed.
-    #[error("a system is swept over its first driver's angle: [[driver]] number 1 must drive an angle at a constant speed_rpm")]
+    #[error("a system is swept over its first driver's angle: [[driver]] number 1 must drive an angle, with a speed_rpm")]
     NotAnAngle,
     /// A cam slowing down never turns so far.
-    #[error("the cam, slowing down, never turns {}°", crate::human::human(*.angle_deg))]
+    #[error("the driver, slowing down, never turns {}°", crate::human::human(*.angle_deg))]
     NeverReached {
         /// the angle asked, degrees
         angle_deg: f64,
@@ -130,6 +130,10 @@ impl BuiltSystem {
             .iter()
             .map(|&a| {
                 self.time_of(a.to_radians()).ok_or(match self.sweep_angle {
+                    // an angle driver that slows down and never turns so far
+                    SweepAngle::FirstDriver if self.time_of(0.0).is_some() => {
+                        SweepError::NeverReached { angle_deg: a }
+                    }
                     SweepAngle::FirstDriver => SweepError::NotAnAngle,
                     _ => SweepError::NeverReached { angle_deg: a },
                 })

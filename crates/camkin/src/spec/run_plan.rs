@@ -103,6 +103,35 @@ pub enum PlanError {
     Dynamics(#[from] DynamicsError),
 }
 
+impl PlanError {
+    /// What resolves a [`PlanError::TooStiff`] within the settings' ranges: more substeps (at
+    /// most [`MAX_SUBSTEPS`]), else the most substeps and a finer output step (at least
+    /// [`STEP_RANGE_DEG`]'s least), else `None`: no output step resolves the element at this
+    /// speed (a rate beyond a simulation: a stiffness or a mass off by a unit, most often).
+    pub fn stiff_advice(&self) -> Option<crate::dynamics::StepAdvice> {
+        use crate::dynamics::StepAdvice;
+        let PlanError::TooStiff {
+            step_deg,
+            substeps,
+            need,
+            ..
+        } = self
+        else {
+            return None;
+        };
+        if *need <= MAX_SUBSTEPS {
+            return Some(StepAdvice::Substeps(*need));
+        }
+        // `need` substeps of `step_deg` resolve it: the most substeps, of a step this much finer
+        let _ = substeps;
+        let finer = step_deg * MAX_SUBSTEPS as f64 / *need as f64;
+        // rounded down to two significant digits
+        let unit = 10f64.powf(finer.log10().floor() - 1.0);
+        let finer = (finer / unit).floor() * unit;
+        (finer >= STEP_RANGE_DEG.0).then_some(StepAdvice::FinerStep { step_deg: finer })
+    }
+}
+
 impl BuiltSystem {
     /// A run of `revolutions` of the sweep angle with outputs every `step_deg`, each output
     /// interval cut into `substeps` time steps (`None`: the fewest the stiffest element
@@ -138,7 +167,17 @@ impl BuiltSystem {
                 range: "from 1 to 1000",
             });
         }
-        let (Some(t0), Some(t1)) = (self.time_of(0.0), self.time_of(step_deg.to_radians())) else {
+        // outputs at equal steps of the first driver's angle are equal steps of time only at a
+        // constant speed
+        let steady = self.system.drivers().first().is_some_and(|d| {
+            let crate::system::DriverLaw::Quadratic { acceleration, .. } = d.law;
+            acceleration == 0.0
+        });
+        let (true, Some(t0), Some(t1)) = (
+            steady,
+            self.time_of(0.0),
+            self.time_of(step_deg.to_radians()),
+        ) else {
             return Err(PlanError::NotAnAngle);
         };
         let sim = SystemSimulation::new(&self.system, self.dynamics.clone())?;

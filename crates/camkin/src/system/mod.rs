@@ -417,9 +417,10 @@ impl System {
         Ok(())
     }
 
-    /// The time at which the first driver, an angle at constant rate, is at `angle` (rad): how a
-    /// sweep over a driver angle maps to instants; `None` when the first driver is not an angle
-    /// or its rate is zero or changes.
+    /// The time at which the first driver, an angle, is at `angle` (rad): how a sweep over a
+    /// driver angle maps to instants (with an acceleration, the instant nearest the start at
+    /// which it is there); `None` when the first driver is not an angle, its rate at the start
+    /// is zero, or, slowing down, it never turns so far.
     pub fn driver_time(&self, angle: f64) -> Option<f64> {
         let d = self.drivers.first()?;
         match (d.coordinate, d.law) {
@@ -432,6 +433,21 @@ impl System {
                 },
             ) if acceleration == 0.0 && rate != 0.0 && rate.is_finite() => {
                 Some((angle - start) / rate)
+            }
+            // accelerating: the first instant it reaches the angle, 2Δ/(ω + √(ω² + 2αΔ)) (no
+            // cancellation for a small α); none where, slowing down, it never does
+            (
+                Coordinate::Angle,
+                DriverLaw::Quadratic {
+                    start,
+                    rate,
+                    acceleration,
+                },
+            ) if rate != 0.0 && rate.is_finite() && acceleration.is_finite() => {
+                let d = angle - start;
+                let disc = rate * rate + 2.0 * acceleration * d;
+                let t = 2.0 * d / (rate + rate.signum() * disc.sqrt());
+                t.is_finite().then_some(t)
             }
             _ => None,
         }

@@ -345,6 +345,46 @@ fn an_instant_many_revolutions_away_is_the_one_its_period_nearer() {
     eprintln!("refused in {:?}", t0.elapsed());
 }
 
+/// Issue 63: a first driver with the documented `acceleration` is swept over its angle (it was
+/// refused): at each angle θ the instant is the first root of `θ = ω t + α t²/2`, and the driven
+/// body's angle, rate and acceleration are θ, `ω + α t` and α there.
+#[test]
+fn an_accelerating_first_driver_is_swept_over_its_angle() {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/valve-train-kinematics.toml"),
+    )
+    .unwrap();
+    let text = text.replace(
+        "speed_rpm = 3000.0\n",
+        "speed_rpm = 3000.0\nacceleration = 36000.0\n",
+    );
+    assert!(text.contains("acceleration = 36000.0"));
+    let built = build(&text).unwrap();
+    let cam = built
+        .system
+        .bodies()
+        .iter()
+        .position(|b| b.name == "camshaft")
+        .unwrap();
+    let (w, a) = (3000.0 * TAU / 60.0, 36000f64.to_radians());
+    let times = built.times(&[0.0, 90.0, 400.0, 7200.0]).unwrap();
+    let mut sweep = built.system.sweep().unwrap();
+    for (deg, t) in [0.0, 90.0, 400.0, 7200.0].into_iter().zip(times) {
+        let th = f64::to_radians(deg);
+        let closed = (-w + (w * w + 2.0 * a * th).sqrt()) / a;
+        assert!(
+            (t - closed).abs() <= 1e-12 * closed.max(1e-3),
+            "{deg}°: {t} vs {closed}"
+        );
+        let s = sweep.step(t).unwrap();
+        let b = &s.bodies[cam];
+        assert!((b.pose.angle - th).abs() <= 1e-9 * th.max(1.0), "{deg}°");
+        assert!((b.omega - (w + a * t)).abs() <= 1e-9 * w, "{deg}°");
+        assert!((b.alpha - a).abs() <= 1e-9 * a, "{deg}°");
+    }
+}
+
 const CAM_FILE: &str = include_str!("../../../../examples/paper.toml");
 const SYSTEM_FILE: &str = include_str!("../../../../examples/cam-four-bar.toml");
 
