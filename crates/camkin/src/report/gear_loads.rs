@@ -261,9 +261,19 @@ impl GearLoads {
         let pitch = along.rb[0] * pair.operating_pressure_angle().tan();
         // the points where the pairs change, named, in the path's order
         let mut breaks: Vec<(f64, &'static str)> = vec![(start, "A"), (end, "E")];
-        for (k, [early, late]) in [["B", "D"], ["E-2pb", "A+2pb"], ["E-3pb", "A+3pb"]]
-            .into_iter()
-            .enumerate()
+        // every whole number of base pitches from either end inside the path, as many as
+        // `pairs` counts (a contact ratio below 8)
+        for (k, [early, late]) in [
+            ["B", "D"],
+            ["E-2pb", "A+2pb"],
+            ["E-3pb", "A+3pb"],
+            ["E-4pb", "A+4pb"],
+            ["E-5pb", "A+5pb"],
+            ["E-6pb", "A+6pb"],
+            ["E-7pb", "A+7pb"],
+        ]
+        .into_iter()
+        .enumerate()
         {
             let k = (k + 1) as f64;
             for (x, name) in [(end - k * pb, early), (start + k * pb, late)] {
