@@ -60,7 +60,8 @@ pub struct Limits {
     /// the longest a client may take to send a request's headers, s (its connection is closed
     /// then: clients that never finish cannot hold the server)
     pub header_seconds: f64,
-    /// the most connections open at once (a new one beyond is closed at once)
+    /// the most connections open at once (beyond, the oldest one not answering a request is
+    /// closed to admit the new one; where every one is answering, the new one is closed)
     pub max_connections: usize,
     /// the most memory one request may be estimated to hold, bytes (a mechanism whose search
     /// indexes would take more is refused before it is built)

@@ -292,7 +292,12 @@ impl SystemSpec {
                     JointKind::Prismatic {
                         a,
                         at_a,
-                        axis: direction(at(T::Joint, i, K::Axis), axis)?,
+                        // a unit vector: by its largest component first, so that
+                        // [1e-300, 0] is the x axis (its norm's square underflows)
+                        axis: {
+                            let v = direction(at(T::Joint, i, K::Axis), axis)?;
+                            (v / v.x.abs().max(v.y.abs())).normalize()
+                        },
                         b,
                         at_b,
                         angle,

@@ -21,6 +21,12 @@ pub enum SystemError {
         /// the body's name
         body: String,
     },
+    /// A prismatic joint's axis is not a direction (zero, or not finite).
+    #[error("{element:?}: its axis is not a direction (it must be finite and not zero)")]
+    Axis {
+        /// the joint's name
+        element: String,
+    },
     /// Two drivers set the same coordinate.
     #[error(
         "{element:?} drives the {coordinate} of {body:?}, which another driver already drives"

@@ -337,7 +337,7 @@ impl System {
                     angle: phi,
                 } => {
                     let (pa, pb) = (pose(a), pose(b));
-                    let normal = turned(pa.rot, V2::c(rot90(axis / axis.norm())));
+                    let normal = turned(pa.rot, V2::c(rot90(super::joint::unit(axis))));
                     let h = pb.point(at_b) - pa.point(at_a);
                     out.extend([normal.dot(h), angle(b) - angle(a) - Jet::c(phi)]);
                 }

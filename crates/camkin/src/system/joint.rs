@@ -138,7 +138,7 @@ impl JointKind {
             } => {
                 let (rho_a, pa, va) = arm(a, at_a);
                 let (rho_b, pb, vb) = arm(b, at_b);
-                let d = axis / axis.norm();
+                let d = unit(axis);
                 let n = a.pose.frame().rotation * rot90(d);
                 let h = pb - pa;
                 let hd = vb - va;
@@ -269,4 +269,10 @@ mod tests {
             }
         }
     }
+}
+
+/// `v` made a unit vector by its largest component first (a direction `[1e-300, 0]` is the x
+/// axis: its norm's square underflows).
+pub(super) fn unit(v: Vec2) -> Vec2 {
+    (v / v.x.abs().max(v.y.abs())).normalize()
 }

@@ -370,6 +370,14 @@ impl System {
                     body: self.body_name(a).to_string(),
                 });
             }
+            if let JointKind::Prismatic { axis, .. } = j.kind {
+                let unit = joint::unit(axis);
+                if !(unit.x.is_finite() && unit.y.is_finite()) {
+                    return Err(SystemError::Axis {
+                        element: j.name.clone(),
+                    });
+                }
+            }
         }
         for c in &self.contacts {
             if !known(c.a) || !known(c.b) {

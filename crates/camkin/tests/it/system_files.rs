@@ -385,6 +385,29 @@ fn an_accelerating_first_driver_is_swept_over_its_angle() {
     }
 }
 
+/// Issue 63: a prismatic joint's axis is a direction of any length — `[0, 1e-300]` is the y axis
+/// (its norm's square underflows; it hung) — and the valve train's kinematics with it are the
+/// example's to 1e-12 of the size.
+#[test]
+fn a_tiny_prismatic_axis_is_its_direction() {
+    let text = include_str!("../../../../examples/valve-train-kinematics.toml");
+    let tiny = text.replace("axis = [0.0, 1.0]", "axis = [0.0, 1e-300]");
+    assert_ne!(tiny, text);
+    let (a, b) = (build(text).unwrap(), build(&tiny).unwrap());
+    let size = a.system.size();
+    for deg in [0.0, 30.0, 100.0] {
+        let t = a.time_of(f64::to_radians(deg)).unwrap();
+        let (x, y) = (a.system.analyze(t).unwrap(), b.system.analyze(t).unwrap());
+        for (p, q) in x.bodies.iter().zip(&y.bodies) {
+            assert!(
+                (p.pose.origin - q.pose.origin).norm() <= 1e-12 * size,
+                "{deg}°"
+            );
+            assert!((p.pose.angle - q.pose.angle).abs() <= 1e-12, "{deg}°");
+        }
+    }
+}
+
 const CAM_FILE: &str = include_str!("../../../../examples/paper.toml");
 const SYSTEM_FILE: &str = include_str!("../../../../examples/cam-four-bar.toml");
 
