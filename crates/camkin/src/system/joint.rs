@@ -195,6 +195,12 @@ fn same_angle(ia: BodyId, a: &BodyState, ib: BodyId, b: &BodyState, angle: f64) 
     }
 }
 
+/// `v` made a unit vector by its largest component first (a direction `[1e-300, 0]` is the x
+/// axis: its norm's square underflows).
+pub(super) fn unit(v: Vec2) -> Vec2 {
+    (v / v.x.abs().max(v.y.abs())).normalize()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -269,10 +275,4 @@ mod tests {
             }
         }
     }
-}
-
-/// `v` made a unit vector by its largest component first (a direction `[1e-300, 0]` is the x
-/// axis: its norm's square underflows).
-pub(super) fn unit(v: Vec2) -> Vec2 {
-    (v / v.x.abs().max(v.y.abs())).normalize()
 }
