@@ -204,6 +204,13 @@ fn built(text: &str) -> Result<camkin::spec::Built, String> {
         .map_err(|e| e.to_string())
 }
 
+/// The FZG C pair of `examples/fzg-c.toml`, built in SI units, and its gear pair.
+fn fzg() -> (camkin::spec::Built, GearPair) {
+    let b = built(include_str!("../../../../examples/fzg-c.toml")).unwrap();
+    let p = GearPair::new(&b.mechanism).unwrap();
+    (b, p)
+}
+
 /// The FZG test gears' load stages (ISO 14635-1, DIN 51354: the pinion torque of each load stage
 /// and the nominal Hertz pressure at the pitch point it gives, N/mm², as published). The
 /// pressure is tabulated for the A gear's 20 mm face width; the A and C gears share the teeth,
@@ -227,13 +234,7 @@ const FZG_LOAD_STAGES: [(f64, f64); 12] = [
 
 #[test]
 fn the_fzg_load_stages_published_hertz_pressures() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../examples/fzg-c.toml"
-    ))
-    .unwrap();
-    let b = built(&text).unwrap();
-    let p = GearPair::new(&b.mechanism).unwrap();
+    let (b, p) = fzg();
     for (torque, published) in FZG_LOAD_STAGES {
         let req = GearLoadRequest {
             torque,
@@ -370,13 +371,7 @@ fn the_file_section_and_its_overrides() {
 /// the centre distance, the tip circles' roll lengths), and the extremes equal to them to 1e-9.
 #[test]
 fn the_named_points_and_the_extremes_are_the_closed_forms() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../examples/fzg-c.toml"
-    ))
-    .unwrap();
-    let b = built(&text).unwrap();
-    let p = GearPair::new(&b.mechanism).unwrap();
+    let (b, p) = fzg();
     let req = GearLoadRequest {
         torque: 200.0,
         face_width: 0.014,
@@ -508,13 +503,7 @@ fn a_contact_ratio_above_two_has_three_pairs_sharing() {
 /// driver's curvature sharpest, and are reported as A.
 #[test]
 fn the_film_and_flash_extremes_are_found_not_sampled() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../examples/fzg-c.toml"
-    ))
-    .unwrap();
-    let b = built(&text).unwrap();
-    let p = GearPair::new(&b.mechanism).unwrap();
+    let (b, p) = fzg();
     let materials = Materials::default();
     let mut lub = b.lubrication.as_ref().unwrap().request;
     lub.surfaces[0].thermal = materials.cam.thermal;
