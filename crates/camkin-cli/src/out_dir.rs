@@ -46,12 +46,16 @@ impl OutDir {
         std::fs::create_dir_all(&parent)
             .with_context(|| format!("cannot create {}", parent.display()))
             .map_err(crate::Failure::Input)?;
-        let staging = tempfile::Builder::new()
-            .prefix(&format!(".{name}.camkin-"))
-            .tempdir_in(&parent)
-            .with_context(|| format!("cannot create a folder in {}", parent.display()))
-            .map_err(crate::Failure::Input)?;
-        let registered = Registered::new(staging.path());
+        let (staging, registered) = Registered::make(
+            || {
+                tempfile::Builder::new()
+                    .prefix(&format!(".{name}.camkin-"))
+                    .tempdir_in(&parent)
+            },
+            |t| t.path(),
+        )
+        .with_context(|| format!("cannot create a folder in {}", parent.display()))
+        .map_err(crate::Failure::Input)?;
         Ok(Self {
             target: target.to_path_buf(),
             staging: Some(staging),
@@ -152,35 +156,39 @@ impl OutDir {
             use std::os::unix::fs::PermissionsExt;
             std::fs::set_permissions(staging.path(), std::fs::Permissions::from_mode(0o755)).ok();
         }
-        let staged = staging.keep();
-        let t = &self.target;
-        let empty = std::fs::read_dir(t).map(|mut d| d.next().is_none());
-        match empty {
-            // new, or an empty folder (renamed over)
-            Err(_) | Ok(true) => std::fs::rename(&staged, t).with_context(|| {
-                let _ = std::fs::remove_dir_all(&staged);
-                format!("cannot put the results in {}", t.display())
-            })?,
-            Ok(false) => {
-                let old = tempfile::Builder::new()
-                    .prefix(".camkin-old-")
-                    .tempdir_in(parent_of(t))?
-                    .keep();
-                std::fs::remove_dir(&old)?;
-                std::fs::rename(t, &old).with_context(|| {
+        let t = self.target.clone();
+        crate::output::uninterrupted(|| -> Result<()> {
+            let staged = staging.keep();
+            let t = &t;
+            let empty = std::fs::read_dir(t).map(|mut d| d.next().is_none());
+            match empty {
+                // new, or an empty folder (renamed over)
+                Err(_) | Ok(true) => std::fs::rename(&staged, t).with_context(|| {
                     let _ = std::fs::remove_dir_all(&staged);
-                    format!("cannot move the old {} aside", t.display())
-                })?;
-                if let Err(e) = std::fs::rename(&staged, t) {
-                    // put the old folder back: nothing changed
-                    let _ = std::fs::rename(&old, t);
-                    let _ = std::fs::remove_dir_all(&staged);
-                    return Err(e)
-                        .with_context(|| format!("cannot put the results in {}", t.display()));
+                    format!("cannot put the results in {}", t.display())
+                })?,
+                Ok(false) => {
+                    let old = tempfile::Builder::new()
+                        .prefix(".camkin-old-")
+                        .tempdir_in(parent_of(t))?
+                        .keep();
+                    std::fs::remove_dir(&old)?;
+                    std::fs::rename(t, &old).with_context(|| {
+                        let _ = std::fs::remove_dir_all(&staged);
+                        format!("cannot move the old {} aside", t.display())
+                    })?;
+                    if let Err(e) = std::fs::rename(&staged, t) {
+                        // put the old folder back: nothing changed
+                        let _ = std::fs::rename(&old, t);
+                        let _ = std::fs::remove_dir_all(&staged);
+                        return Err(e)
+                            .with_context(|| format!("cannot put the results in {}", t.display()));
+                    }
+                    let _ = std::fs::remove_dir_all(&old);
                 }
-                let _ = std::fs::remove_dir_all(&old);
             }
-        }
+            Ok(())
+        })?;
         Ok(self.target.clone())
     }
 }

@@ -10,15 +10,37 @@ use std::path::Path;
 static TEMPORARIES: std::sync::Mutex<Vec<std::path::PathBuf>> = std::sync::Mutex::new(Vec::new());
 
 /// Removes the temporary files and folders of writes in progress (called from the interrupt
-/// handler).
+/// handler, while the run goes on writing).
 pub fn remove_temporaries() {
     if let Ok(list) = TEMPORARIES.lock() {
-        for p in list.iter() {
-            if p.is_dir() {
-                let _ = std::fs::remove_dir_all(p);
-            } else {
+        remove_all(&list);
+    }
+}
+
+/// Removes each file or folder of `list`. A folder is first renamed aside, so that the run, which
+/// writes into it by its path, can no longer add to it while it is emptied.
+fn remove_all(list: &[std::path::PathBuf]) {
+    for p in list {
+        match std::fs::symlink_metadata(p) {
+            Ok(m) if m.is_dir() => {
+                let mut aside = p.clone().into_os_string();
+                aside.push(".removing");
+                let aside = std::path::PathBuf::from(aside);
+                let gone = if std::fs::rename(p, &aside).is_ok() {
+                    &aside
+                } else {
+                    p
+                };
+                for _ in 0..100 {
+                    if std::fs::remove_dir_all(gone).is_ok() || !gone.exists() {
+                        break;
+                    }
+                }
+            }
+            Ok(_) => {
                 let _ = std::fs::remove_file(p);
             }
+            Err(_) => {}
         }
     }
 }
@@ -88,12 +110,27 @@ pub fn refuse_input(p: &Path, flag: &str) -> Result<()> {
 pub(crate) struct Registered(std::path::PathBuf);
 
 impl Registered {
-    pub(crate) fn new(p: &Path) -> Self {
-        if let Ok(mut list) = TEMPORARIES.lock() {
-            list.push(p.to_path_buf());
-        }
-        Self(p.to_path_buf())
+    /// Makes a temporary file or folder with `make` and registers it (its path by `path`) while
+    /// holding the list, so an interrupt between making and registering cannot leave it behind:
+    /// the interrupt handler waits for the list and then sees it.
+    pub(crate) fn make<T, E>(
+        make: impl FnOnce() -> Result<T, E>,
+        path: impl Fn(&T) -> &Path,
+    ) -> Result<(T, Self), E> {
+        let mut list = TEMPORARIES.lock().unwrap_or_else(|e| e.into_inner());
+        let made = make()?;
+        let p = path(&made).to_path_buf();
+        list.push(p.clone());
+        Ok((made, Self(p)))
     }
+}
+
+/// Runs `f` (renames that put results in place) with the interrupt handler held off: an interrupt
+/// while an old folder is moved aside and the new one moved in waits until both are done, so it
+/// never finds the target missing. `f` must not make or drop a [`Registered`].
+pub(crate) fn uninterrupted<R>(f: impl FnOnce() -> R) -> R {
+    let _list = TEMPORARIES.lock().unwrap_or_else(|e| e.into_inner());
+    f()
 }
 
 impl Drop for Registered {
@@ -165,9 +202,9 @@ pub fn write_atomic(
                 Some(d) if !d.as_os_str().is_empty() => d,
                 _ => Path::new("."),
             };
-            let tmp = tempfile::NamedTempFile::new_in(dir)
-                .with_context(|| format!("cannot create a file in {}", dir.display()))?;
-            let _registered = Registered::new(tmp.path());
+            let (tmp, _registered) =
+                Registered::make(|| tempfile::NamedTempFile::new_in(dir), |t| t.path())
+                    .with_context(|| format!("cannot create a file in {}", dir.display()))?;
             let mut w = std::io::BufWriter::new(tmp);
             fill(&mut w)?;
             let tmp = w
@@ -333,6 +370,31 @@ pub fn write_cell_table(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A folder the run is still writing into is removed all the same (the CI once found one
+    /// left: a file written between emptying it and removing it kept it).
+    #[test]
+    fn a_folder_being_filled_is_removed() {
+        for _ in 0..5 {
+            let root = tempfile::tempdir().unwrap();
+            let dir = root.path().join("staging");
+            std::fs::create_dir(&dir).unwrap();
+            let d = dir.clone();
+            let writer = std::thread::spawn(move || {
+                let mut i = 0u64;
+                while std::fs::write(d.join(format!("f{i}")), b"frame").is_ok() {
+                    i += 1;
+                }
+            });
+            // let it write a while, then remove the folder under it
+            while std::fs::read_dir(&dir).unwrap().count() < 200 {
+                std::thread::yield_now();
+            }
+            remove_all(std::slice::from_ref(&dir));
+            assert!(!dir.exists());
+            writer.join().unwrap();
+        }
+    }
     use camkin::cam::{CamError, FollowerState};
     use camkin::table::AnalysisRow;
 

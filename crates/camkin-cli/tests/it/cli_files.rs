@@ -233,7 +233,8 @@ fn a_dangling_link_is_written_through() {
 }
 
 /// A run interrupted while it computes (Ctrl-C) leaves its old results folder as it was and no
-/// staging folder.
+/// staging folder (a CI run once found one left: the interrupt emptied the folder while the run
+/// wrote a frame into it, so removing it failed).
 #[test]
 fn an_interrupted_run_leaves_the_old_folder() {
     let ws = workspace();
@@ -254,32 +255,50 @@ fn an_interrupted_run_leaves_the_old_folder() {
         .assert()
         .success();
     let before = snapshot(&out);
-    // a slow run into the same folder, interrupted
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_camkin"))
-        .current_dir(d)
-        .args([
-            "plot",
-            "paper.toml",
-            "--step",
-            "0.01",
-            "--frames",
-            "3600",
-            "--large",
-            "--out",
-        ])
-        .arg(&out)
-        .stderr(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    std::thread::sleep(std::time::Duration::from_millis(700));
-    std::process::Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    let status = child.wait().unwrap();
-    assert!(!status.success());
-    assert_eq!(snapshot(&out), before);
-    assert!(strays(d).is_empty(), "{:?}", strays(d));
+    // a slow run into the same folder, interrupted while it starts, and while it writes its
+    // frames into the staging folder (a folder being filled as it is removed)
+    for writing in [false, true] {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_camkin"))
+            .current_dir(d)
+            .args([
+                "plot",
+                "paper.toml",
+                "--step",
+                "0.01",
+                "--frames",
+                "3600",
+                "--large",
+                "--out",
+            ])
+            .arg(&out)
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        if writing {
+            // wait until the run has begun writing into its staging folder
+            let filled = || {
+                strays(d)
+                    .iter()
+                    .any(|s| std::fs::read_dir(d.join(s)).is_ok_and(|r| r.count() >= 1))
+            };
+            let start = std::time::Instant::now();
+            while !filled() {
+                assert!(child.try_wait().unwrap().is_none(), "the run ended first");
+                assert!(start.elapsed().as_secs() < 120, "no frames written");
+                std::thread::sleep(std::time::Duration::from_millis(2));
+            }
+        } else {
+            std::thread::sleep(std::time::Duration::from_millis(150));
+        }
+        std::process::Command::new("kill")
+            .args(["-INT", &child.id().to_string()])
+            .status()
+            .unwrap();
+        let status = child.wait().unwrap();
+        assert!(!status.success(), "writing: {writing}");
+        assert_eq!(snapshot(&out), before, "writing: {writing}");
+        assert!(strays(d).is_empty(), "writing: {writing}: {:?}", strays(d));
+    }
 }
 
 /// Issue 44: a run whose stderr cannot be written (`/dev/full`, closed) never panics (exit
