@@ -15,6 +15,7 @@ fn dyn_err(e: DynamicsError) -> PyErr {
     match e {
         DynamicsError::Invalid { .. }
         | DynamicsError::StepTooLong { .. }
+        | DynamicsError::Unassembled { .. }
         | DynamicsError::Chatter { .. } => errors::input("dynamics", None, e.to_string()),
         DynamicsError::FormClosed | DynamicsError::Interference { .. } => {
             errors::input("follower.conjugate", None, e.to_string())

@@ -71,6 +71,7 @@ fn dyn_err(e: DynamicsError) -> Failure {
         | DynamicsError::FormClosed
         | DynamicsError::Interference { .. }
         | DynamicsError::Chatter { .. }
+        | DynamicsError::Unassembled { .. }
         | DynamicsError::StepTooLong { .. } => Failure::Input(anyhow!("{e}")),
         _ => Failure::Internal(anyhow!("{e}")),
     }
@@ -373,6 +374,7 @@ pub(super) fn system_err(name: &str, e: DynamicsError) -> Failure {
         DynamicsError::Element { .. }
         | DynamicsError::System(_)
         | DynamicsError::SystemStepTooLong { .. }
+        | DynamicsError::Unassembled { .. }
         | DynamicsError::Chatter { .. } => bad(format!("{name}: {e}")),
         _ => Failure::Internal(anyhow!("{name}: {e}")),
     }

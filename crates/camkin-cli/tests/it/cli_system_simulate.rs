@@ -144,6 +144,21 @@ fn bad_dynamics_input_exits_2_naming_the_element_and_its_value() {
         stderr.contains("spring") && stderr.contains("bodies"),
         "{stderr}"
     );
+    // a four-bar driven by its rocker into the toggle it cannot pass (crank 20, coupler 50,
+    // rocker 40, ground 60 mm; at 153.6°, 0.1489 s from 100° at 60 rpm): simulate and forces
+    // stop there, naming the dead point, exit 2 (an internal error "the augmented mass matrix
+    // is singular" half a second later, before)
+    let path = dir.path().join("toggle.toml");
+    std::fs::write(&path, FOUR_BAR_INTO_ITS_TOGGLE).unwrap();
+    for cmd in ["simulate", "forces"] {
+        let out = run!(cmd, &path).assert().code(2);
+        let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+        assert!(
+            stderr.contains("at t = 0.149 s") || stderr.contains("at t = 0.15 s"),
+            "{cmd}: {stderr}"
+        );
+        assert!(stderr.contains("dead point (toggle)"), "{cmd}: {stderr}");
+    }
     // work over the limit: refused up front with its estimate
     let out = run!(
         "simulate",
@@ -315,3 +330,52 @@ fn a_gas_force_table_pushes_the_valve() {
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(stderr.contains("gas_force[0].table"), "{stderr}");
 }
+
+/// A four-bar driven by its rocker past its toggle (see
+/// `bad_dynamics_input_exits_2_naming_the_element_and_its_value`).
+const FOUR_BAR_INTO_ITS_TOGGLE: &str = r#"length_unit = "mm"
+[dynamics]
+gravity = [0.0, 0.0]
+[[body]]
+name = "crank"
+mass = 0.1
+inertia = 1e-5
+angle_deg = 5.0
+[[body]]
+name = "coupler"
+mass = 0.1
+inertia = 1e-5
+position = [20.0, 0.0]
+angle_deg = 50.0
+[[body]]
+name = "rocker"
+mass = 0.1
+inertia = 1e-5
+position = [60.0, 0.0]
+angle_deg = 100.0
+[[joint]]
+name = "O2"
+kind = "revolute"
+bodies = ["ground", "crank"]
+[[joint]]
+name = "A"
+kind = "revolute"
+bodies = ["crank", "coupler"]
+at = [[20.0, 0.0], [0.0, 0.0]]
+[[joint]]
+name = "B"
+kind = "revolute"
+bodies = ["coupler", "rocker"]
+at = [[50.0, 0.0], [40.0, 0.0]]
+[[joint]]
+name = "O4"
+kind = "revolute"
+bodies = ["rocker", "ground"]
+at = [[0.0, 0.0], [60.0, 0.0]]
+[[driver]]
+name = "drive rocker"
+body = "rocker"
+coordinate = "angle"
+speed_rpm = 60.0
+start = 100.0
+"#;

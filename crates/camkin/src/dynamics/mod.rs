@@ -76,6 +76,18 @@ pub enum DynamicsError {
         /// time, s
         time: f64,
     },
+    /// A system's positions cannot be brought back onto its joints, drivers and contacts after a
+    /// step: its drivers take it into a dead point (toggle) it cannot pass, or a loop cannot
+    /// close. The run stops there rather than go on off the constraints.
+    #[error("at t = {} s the positions cannot be kept on the constraints (largest residual {}, in {rows}): the drivers take the system into a dead point (toggle) it cannot be driven past, or a loop cannot close; simulate it up to that instant, or drive it another way", crate::human::human(*.time), crate::human::human(*.residual))]
+    Unassembled {
+        /// time, s
+        time: f64,
+        /// the largest residual, in the system's length unit (angles' rows in rad)
+        residual: f64,
+        /// the rows with the largest residuals, named
+        rows: String,
+    },
     /// The multiplier iteration did not converge.
     #[error("at t = {} s: the augmented Lagrangian iteration did not converge ({iterations} iterations, residual {})", crate::human::human(*.time), crate::human::human(*.residual))]
     NoConvergence {

@@ -6,7 +6,7 @@
 
 use crate::common::read_system;
 use camkin::curve::{Line, PointCurve};
-use camkin::dynamics::{EventKind, SystemDynamicsOptions, SystemSimulation};
+use camkin::dynamics::{DynamicsError, EventKind, SystemDynamicsOptions, SystemSimulation};
 use camkin::system::{Body, BodyId, Contact, ForceElement, ForceKind, Joint, JointKind, System};
 use camkin::{Point2, Vec2};
 use std::sync::Arc;
@@ -443,5 +443,102 @@ fn a_gas_force_from_a_crank_angle_table_moves_a_mass_as_its_closed_form() {
             "{} {ke}",
             s.driver_work
         );
+    }
+}
+
+/// A four-bar driven by its rocker (crank 20, coupler 50, rocker 40, ground 60 mm) simulated
+/// into its toggle: the rocker cannot turn past `acos(((b − a)² − d² − c²)/(2dc))` = 153.6°,
+/// where crank and coupler fold onto one line. The run stops within one step of that instant
+/// saying why (a dead point, naming the rows it cannot keep), never a sample past it; before it,
+/// every sample is on the loop (a regression: the projection's Newton stopped after eight
+/// iterations off the rows without a word, and the run went on to a singular matrix).
+#[test]
+fn a_four_bar_simulated_into_its_toggle_stops_there_and_says_so() {
+    let (a, b, c, d) = (20.0f64, 50.0f64, 40.0f64, 60.0f64);
+    let (start_deg, rpm) = (100.0f64, 60.0f64);
+    let text = format!(
+        r#"length_unit = "mm"
+[dynamics]
+gravity = [0.0, 0.0]
+[[body]]
+name = "crank"
+mass = 0.1
+inertia = 1e-5
+angle_deg = 5.0
+[[body]]
+name = "coupler"
+mass = 0.1
+inertia = 1e-5
+position = [{a}, 0.0]
+angle_deg = 50.0
+[[body]]
+name = "rocker"
+mass = 0.1
+inertia = 1e-5
+position = [{d}, 0.0]
+angle_deg = {start_deg}
+[[joint]]
+name = "O2"
+kind = "revolute"
+bodies = ["ground", "crank"]
+[[joint]]
+name = "A"
+kind = "revolute"
+bodies = ["crank", "coupler"]
+at = [[{a}, 0.0], [0.0, 0.0]]
+[[joint]]
+name = "B"
+kind = "revolute"
+bodies = ["coupler", "rocker"]
+at = [[{b}, 0.0], [{c}, 0.0]]
+[[joint]]
+name = "O4"
+kind = "revolute"
+bodies = ["rocker", "ground"]
+at = [[0.0, 0.0], [{d}, 0.0]]
+[[driver]]
+name = "drive rocker"
+body = "rocker"
+coordinate = "angle"
+speed_rpm = {rpm}
+start = {start_deg}
+"#
+    );
+    let built = read_system(&text, "toggle.toml", &Default::default()).unwrap();
+    let w = rpm / 60.0 * std::f64::consts::TAU;
+    let toggle = (((b - a) * (b - a) - d * d - c * c) / (2.0 * d * c)).acos();
+    let t_toggle = (toggle - start_deg.to_radians()) / w;
+    for h in [1e-3, 2.5e-4] {
+        let mut sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+        let e = loop {
+            match sim.advance(h) {
+                Ok(_) => {
+                    let s = sim.sample().unwrap();
+                    assert!(
+                        s.time <= t_toggle,
+                        "a sample at {} s past the toggle",
+                        s.time
+                    );
+                    // B on the rocker and on the coupler: |O₂B| = the loop's
+                    let (phi, psi) = (s.q[8], s.q[2]);
+                    let bx = d + c * phi.cos() - a * psi.cos();
+                    let by = c * phi.sin() - a * psi.sin();
+                    assert!(((bx * bx + by * by).sqrt() - b).abs() < 1e-9 * d);
+                }
+                Err(e) => break e,
+            }
+            assert!(sim.time() < 2.0 * t_toggle, "ran on past the toggle");
+        };
+        match &e {
+            DynamicsError::Unassembled { time, rows, .. } => {
+                assert!(
+                    *time > t_toggle && *time <= t_toggle + h + 1e-12,
+                    "{time} against {t_toggle}"
+                );
+                assert!(rows.contains("joint"), "{rows}");
+            }
+            other => panic!("{other}"),
+        }
+        assert!(e.to_string().contains("dead point (toggle)"), "{e}");
     }
 }

@@ -9,6 +9,12 @@ use super::eval::{Accel, Scratch};
 use super::{ContactEvent, SystemSimulation, MAX_EVENTS};
 use crate::contact::{self, Pairing, Surface};
 
+/// The largest residual (times the system's size, see
+/// [`SystemSimulation::unassembled_tolerance`]) the positions may keep
+/// after a step's projection: beyond it they are not on the constraints, and the run stops
+/// ([`DynamicsError::Unassembled`]) rather than go on off them.
+const UNASSEMBLED: f64 = 1e-8;
+
 /// The buffers of an RK4 step: each stage's evaluation, a stage's state and pairings.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Stages {
@@ -196,6 +202,11 @@ impl SystemSimulation<'_> {
             }
             self.sparse_rows(modes, pairings, s)?;
         }
+        let tol = self.unassembled_tolerance();
+        if !s.phi.iter().all(|p| p.abs() <= tol) {
+            // not converged: the dense projection goes on from here, and says so if it fails
+            return Ok(false);
+        }
         // velocities: q̇ + M⁻¹ Φ_qᵀ μ with S μ = −Φ_t − Φ_q q̇ (the factor is the one the
         // step's check evaluates with next: the same rows)
         if !s.schur.factor(&s.rows, &self.inv_mass) {
@@ -275,12 +286,16 @@ impl SystemSimulation<'_> {
                 .model
                 .project_onto(&rows, &vec![0.0; n], &b[..rows.m], &mut x)
             {
-                return Err(DynamicsError::Singular { time: self.t });
+                return Err(self.unassembled(&rows.phi[..rows.m], &modes));
             }
             for (q, d) in self.q.iter_mut().zip(&x) {
                 *q += d;
             }
             rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
+        }
+        let tol = self.unassembled_tolerance();
+        if !rows.phi[..rows.m].iter().all(|p| p.abs() <= tol) {
+            return Err(self.unassembled(&rows.phi[..rows.m], &modes));
         }
         if !self
             .model
@@ -291,6 +306,38 @@ impl SystemSimulation<'_> {
         self.qd.copy_from_slice(&x);
         self.pairings = pairings;
         Ok(())
+    }
+
+    /// The largest residual a projection may leave: [`UNASSEMBLED`] times the system's size or
+    /// its bodies' farthest coordinate, whichever is larger, and never below 1e-10 (an angle's
+    /// row, in rad, where the system is small).
+    fn unassembled_tolerance(&self) -> f64 {
+        let far = self.q.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        (UNASSEMBLED * self.size.max(far)).max(1e-10)
+    }
+
+    /// The positions cannot be brought back onto the rows (residuals `phi`, the active rows of
+    /// `modes`): the rows with the largest residuals named.
+    fn unassembled(&self, phi: &[f64], modes: &[bool]) -> DynamicsError {
+        let sys = &self.sys;
+        let fixed = sys.rows() - sys.contacts.len();
+        let names: Vec<String> = (0..sys.rows())
+            .filter(|&r| r < fixed || modes[r - fixed])
+            .map(|r| sys.row_name(r))
+            .collect();
+        let big = phi.iter().fold(0.0f64, |m, p| m.max(p.abs()));
+        let rows = phi
+            .iter()
+            .zip(&names)
+            .filter(|(p, _)| p.abs() >= 0.2 * big || !p.is_finite())
+            .map(|(_, n)| n.as_str())
+            .collect::<Vec<_>>()
+            .join(", ");
+        DynamicsError::Unassembled {
+            time: self.t,
+            residual: big,
+            rows,
+        }
     }
 
     /// Advances by `h` seconds, locating every lift-off and impact inside the step. A step
