@@ -18,6 +18,7 @@ mod circle;
 mod ellipse;
 mod involute_gear;
 mod line;
+mod piece_crossings;
 mod point;
 mod points_file;
 mod spline;

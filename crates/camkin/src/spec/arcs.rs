@@ -3,7 +3,7 @@
 
 use super::build::{key, need, point, vector, SpecError};
 use super::ProfileSpec;
-use crate::curve::{ArcsAndLines, Piece};
+use crate::curve::{ArcsAndLines, ArcsError, Piece};
 use crate::field::{Field, PieceField, ProfileField};
 use std::f64::consts::TAU;
 
@@ -140,9 +140,19 @@ impl ProfileSpec {
                 },
             })
             .collect();
-        ArcsAndLines::new(scaled).map_err(|e| SpecError::Rule {
-            field: f(P::Pieces),
-            reason: e.to_string(),
+        ArcsAndLines::new(scaled).map_err(|e| match e {
+            // at the later piece, the point in the file's unit
+            ArcsError::Crosses { first, second, at: x } => SpecError::Rule {
+                field: at(second, PieceField::To),
+                reason: format!(
+                    "the piece meets pieces[{first}] at {}, not at a join they share: the profile crosses or overlaps itself (a figure of eight, a fold); a cam's outline must be a simple closed curve",
+                    vector([x.x / scale, x.y / scale])
+                ),
+            },
+            e => SpecError::Rule {
+                field: f(P::Pieces),
+                reason: e.to_string(),
+            },
         })
     }
 }
