@@ -73,3 +73,21 @@ def test_lubrication_without_the_table_names_it():
     with pytest.raises(camkin.InputError) as e:
         camkin.System.from_toml(EXAMPLES / "cam-four-bar.toml").lubrication()
     assert e.value.field == "lubrication"
+
+
+def test_two_contacts_of_one_name_and_an_oil_no_contact_takes_are_refused():
+    # the one reader refuses what the command refuses: a second contact of the valve train's
+    # name (its columns would appear twice, and one would be kept), and a [lubrication] table
+    # where no contact has a face_width (nothing would be lubricated, without a word)
+    text = (EXAMPLES / "valve-train.toml").read_text()
+    first = text.index("[[contact]]")
+    block = text[first : text.index("[[", first + 3)]
+    with pytest.raises(camkin.InputError) as e:
+        camkin.System.from_toml(text + "\n" + block)
+    assert "contact" in e.value.field and "name" in e.value.field, e.value.field
+    keys = ("face_width", "rolls", "materials")
+    dry = "\n".join(l for l in text.splitlines() if not l.strip().startswith(keys))
+    with pytest.raises(camkin.InputError) as e:
+        camkin.System.from_toml(dry)
+    assert e.value.field == "lubrication", e.value.field
+    assert "no contact takes this oil" in str(e.value)

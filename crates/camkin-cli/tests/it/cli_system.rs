@@ -241,6 +241,8 @@ fn invalid_system_models_are_refused_at_their_key() {
         (format!("{ROCKER}{coil}"), "coil_spring[0].mass = 1e300: is outside the range"),
         // it was "largest residual NaN, in )"
         (format!("{ROCKER}{}", coil.replace("mass = 1e300", "mass = 0.02\nsolid_length = 70.0")), "coil_spring[0].solid_length = 70: must be below the free length 60"),
+        // an oil no contact takes (the rocker's contact has no face width): ignored, before
+        (format!("{}[lubrication]\noil = \"sae-30@100c\"\n", ROCKER.replace("face_width = 10.0\n", "")), "lubrication: no contact takes this oil"),
     ];
     for (text, needle) in cases {
         std::fs::write(&f, &text).unwrap();

@@ -734,6 +734,16 @@ impl SystemSpec {
                 reason: "a system's lubrication comes from its simulation's forces: give it a [dynamics] table".into(),
             });
         }
+        if self.lubrication.is_some()
+            && self.dynamics.is_some()
+            && lubricated.iter().all(Option::is_none)
+        {
+            // a table no contact takes its oil from: nothing would be lubricated
+            return Err(SpecError::Rule {
+                field: Field::Lubrication(crate::field::LubricationField::Table),
+                reason: "no contact takes this oil: only a contact with a face_width is lubricated (a line contact); give the contacts that run in it their face_width, or leave the table out".into(),
+            });
+        }
         Ok(BuiltSystem {
             system: sys,
             length_unit: unit,
