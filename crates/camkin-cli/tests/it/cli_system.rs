@@ -642,3 +642,52 @@ fn stiff_elements_are_advised_within_the_flags_bounds() {
         "no --step from 0.001° with up to 1000 --substeps resolves a rate of 3.16228e13 /s",
     );
 }
+
+/// A wheel turning about its centre carries a circle of radius 10 whose centre is 50 above a
+/// slider's line: the joints hold the curves 50 − 10 = 40 apart at every instant. That is said
+/// as it is, naming the contact, the gap and the rows that hold it (a regression: "the
+/// constraints are singular (a dead point, a toggle, or redundant joints)").
+#[test]
+fn curves_the_joints_hold_apart_are_said_to_never_touch() {
+    let text = r#"length_unit = "mm"
+[[body]]
+name = "slider"
+[[joint]]
+name = "guide"
+kind = "prismatic"
+bodies = ["ground", "slider"]
+axis = [1.0, 0.0]
+[[body]]
+name = "wheel"
+position = [0.0, 50.0]
+[[joint]]
+name = "pin"
+kind = "revolute"
+bodies = ["ground", "wheel"]
+at = [[0.0, 50.0], [0.0, 0.0]]
+[[driver]]
+name = "turn"
+body = "wheel"
+coordinate = "angle"
+speed_rpm = 60.0
+[[contact]]
+name = "never"
+bodies = ["wheel", "slider"]
+curve_a = { kind = "circle", center = [0.0, 0.0], radius = 10.0 }
+curve_b = { kind = "line", anchor = [0.0, 0.0], direction = [1.0, 0.0] }
+"#;
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("apart.toml");
+    std::fs::write(&f, text).unwrap();
+    for cmd in ["analyze", "contacts"] {
+        let out = run!(cmd, &f, "--at", "0").assert().code(2);
+        let stderr = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+        assert!(
+            stderr.contains("contact \"never\": its curves are 40 apart")
+                && stderr.contains("joint \"guide\"")
+                && stderr.contains("never touch")
+                && !stderr.contains("singular"),
+            "{cmd}: {stderr}"
+        );
+    }
+}

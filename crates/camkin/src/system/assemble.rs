@@ -167,17 +167,48 @@ impl SystemSweep<'_> {
 
     /// The rows the smallest singular value's left vector weighs: the dependent ones, named.
     pub(super) fn dependent_rows(&self, jac: &[f64]) -> String {
+        self.dependent(jac)
+            .into_iter()
+            .map(|i| self.sys.row_name(i))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// The indices of the rows [`Self::dependent_rows`] names.
+    fn dependent(&self, jac: &[f64]) -> Vec<usize> {
         let n = 3 * self.sys.bodies.len();
         let svd = nalgebra::DMatrix::from_row_slice(n, n, jac).svd(true, false);
         let k = svd.singular_values.imin();
-        svd.u.map_or_else(String::new, |u| {
+        svd.u.map_or_else(Vec::new, |u| {
             let col = u.column(k);
             let big = col.amax();
             (0..col.len())
                 .filter(|&i| col[i].abs() >= 0.2 * big)
-                .map(|i| self.sys.row_name(i))
+                .collect()
+        })
+    }
+
+    /// Where the rows are singular while a contact among the dependent ones is apart (its gap
+    /// over 1e-3 of the size): the joints and drivers hold its curves apart and no motion they
+    /// allow closes it, which is what to say rather than "singular".
+    fn held_apart(&self, t: f64, phi: &[f64], jac: &[f64]) -> Option<SystemError> {
+        let first = self.sys.rows() - self.sys.contacts.len();
+        let dependent = self.dependent(jac);
+        let (&r, gap) = dependent
+            .iter()
+            .filter(|&&r| r >= first)
+            .map(|r| (r, phi[*r].abs()))
+            .max_by(|a, b| a.1.total_cmp(&b.1))?;
+        (gap > 1e-3 * self.size).then(|| SystemError::HeldApart {
+            time: t,
+            contact: self.sys.contacts[r - first].name.clone(),
+            gap,
+            rows: dependent
+                .iter()
+                .filter(|&&i| i != r)
+                .map(|&i| self.sys.row_name(i))
                 .collect::<Vec<_>>()
-                .join(", ")
+                .join(", "),
         })
     }
 
@@ -196,7 +227,9 @@ impl SystemSweep<'_> {
         for it in 1..=MAX_ITERATIONS {
             fill_states(q, None, nb, &mut w.st);
             self.assemble(t, &w.st, pairings, jumped, false, &mut w.asm)?;
-            self.factor(t, &w.asm.jac, &mut w.lu)?;
+            if let Err(e) = self.factor(t, &w.asm.jac, &mut w.lu) {
+                return Err(self.held_apart(t, &w.asm.phi, &w.asm.jac).unwrap_or(e));
+            }
             w.neg.clear();
             w.neg.extend(w.asm.phi.iter().map(|v| -v));
             w.lu.solve(&w.neg, &mut w.x);

@@ -56,6 +56,19 @@ pub enum SystemError {
         /// the rows involved, named
         rows: String,
     },
+    /// A contact whose curves are apart where the joints and drivers hold them: no motion they
+    /// allow brings them together (the contact's row depends on theirs), so they never touch.
+    #[error("at t = {} s contact {contact:?}: its curves are {} apart and the joints and drivers hold them there ({rows}): no motion they allow brings them together, so they never touch; move a body or a curve", crate::human::human(*time), crate::human::human(*gap))]
+    HeldApart {
+        /// the instant, s
+        time: f64,
+        /// the contact, named
+        contact: String,
+        /// the distance between its curves, in the system's length unit
+        gap: f64,
+        /// the rows that hold it, named
+        rows: String,
+    },
     /// The drivers take the system to a dead point (toggle) and no farther: instants were
     /// reached ever closer to the one asked for, and there the rows become dependent.
     #[error("the system reaches a dead point (toggle) at t = {} s and cannot be driven past it: its rows become dependent there ({rows})", crate::human::human(*time))]

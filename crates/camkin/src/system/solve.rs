@@ -301,7 +301,8 @@ impl SystemSweep<'_> {
             Err(
                 e @ (SystemError::NoAssembly { .. }
                 | SystemError::Contact { .. }
-                | SystemError::Singular { .. }),
+                | SystemError::Singular { .. }
+                | SystemError::HeldApart { .. }),
             ) => {
                 let Some(from) = self.last.as_ref().map(|l| l.time) else {
                     return Err(e);
