@@ -80,7 +80,7 @@ pub enum SystemError {
     },
     /// An instant too far from the last solved to follow the assembly to it (through every
     /// instant between), in a system that does not repeat within 8 revolutions of its driver.
-    #[error("at t = {} s: following the assembly there from the last instant solved (t = {} s) takes about {} instants between ({} s), and the system does not repeat within 8 revolutions of its first driver: ask for instants nearer the start", crate::human::human(*time), crate::human::human(*from), crate::human::human(instants.round()), crate::human::human((instants * 1e-4).round()))]
+    #[error("at t = {} s: following the assembly there from the last instant solved (t = {} s) takes about {} instants between (about {} s), and the system does not repeat within 8 revolutions of its first driver: ask for instants nearer the start", crate::human::human(*time), crate::human::human(*from), crate::human::human(instants.round()), crate::human::human(seconds.round()))]
     TooFar {
         /// the instant asked for, s
         time: f64,
@@ -88,6 +88,8 @@ pub enum SystemError {
         from: f64,
         /// the instants between that following it would take
         instants: f64,
+        /// the seconds they would take ([`super::System::instant_seconds`] each)
+        seconds: f64,
     },
     /// Newton on the positions did not converge: the system cannot assemble at this instant
     /// (a closed loop that does not close, a contact lost).

@@ -33,6 +33,7 @@
 mod assemble;
 mod bending;
 mod coil_spring;
+mod cost;
 mod driver;
 mod error;
 mod force;

@@ -89,6 +89,10 @@ const DEAD_POINT: f64 = 1e-2;
 /// Most instants between two asked for.
 const MAX_SUBSTEPS: f64 = 65_536.0;
 
+/// The longest an instant far away may take to reach through the instants between, s (the work
+/// limit every entry point refuses beyond, [`crate::work::SECONDS_LIMIT`]).
+const FAR_SECONDS: f64 = 30.0;
+
 /// An instant farther from the last than this many instants between is reached through the
 /// system's period where it repeats ([`super::period`]).
 const FAR_INSTANTS: f64 = 2048.0;
@@ -238,7 +242,9 @@ impl SystemSweep<'_> {
     /// An instant more than [`FAR_INSTANTS`] instants between from the last: where the system
     /// repeats, the instant that many whole periods nearer the start, reached from the start
     /// and turned on by the periods' turns (this sweep goes on from there); where it does not
-    /// and more than [`MAX_SUBSTEPS`] instants would be needed, refused ([`SystemError::TooFar`]);
+    /// and more than [`MAX_SUBSTEPS`] instants, or [`FAR_SECONDS`] by
+    /// [`System::instant_seconds`](super::System::instant_seconds), would be needed, refused
+    /// ([`SystemError::TooFar`]);
     /// `None` for the instants between.
     fn far(&mut self, t: f64) -> Result<Option<SystemState>, SystemError> {
         let Some(last) = &self.last else {
@@ -268,11 +274,14 @@ impl SystemSweep<'_> {
                 self.spare = None;
                 Ok(Some(p.shift(state, periods)))
             }
-            None if n > MAX_SUBSTEPS => Err(SystemError::TooFar {
-                time: t,
-                from,
-                instants: n,
-            }),
+            None if n > MAX_SUBSTEPS || n * self.sys.instant_seconds() > FAR_SECONDS => {
+                Err(SystemError::TooFar {
+                    time: t,
+                    from,
+                    instants: n,
+                    seconds: n * self.sys.instant_seconds(),
+                })
+            }
             None => Ok(None),
         }
     }

@@ -361,6 +361,75 @@ fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
     assert!(worst < 1e-6 * 0.5, "off the mode by {worst} mm");
 }
 
+/// The step bound covers a chain's highest mode: a coil of `n` = 64 masses between two ground
+/// points has its fastest mode at `ω_n = 2 √(k_s/m_s) sin(nπ/(2(n + 1)))`, `k_s = (n + 1) k`,
+/// `m_s = m/n` (the fixed–fixed chain's closed form), nearly twice each segment's own
+/// `√(k_s/m_s)`, the rate the step was bounded by. The rate is at least `ω_n` and at most
+/// `2√(k_s/m_s)`; started in that mode's shape and run at the longest step allowed, the
+/// masses keep their amplitude (RK4 at `h ω ≤ 2` damps it a little and never grows it; at
+/// the old bound it grew 1e4-fold in 200 steps and the masses clashed).
+#[test]
+fn a_coils_highest_mode_is_within_the_step_bound() {
+    use camkin::system::CoilSpring;
+    let (n, k, m, mm) = (64usize, 30.0, 0.02, 1e-3);
+    let spring = CoilSpring {
+        name: "valve spring".into(),
+        a: BodyId::GROUND,
+        at_a: Point2::new(0.0, 0.0),
+        b: BodyId::GROUND,
+        at_b: Point2::new(0.0, 40.0),
+        stiffness: k,
+        free_length: 48.0,
+        preload: 0.0,
+        mass: m,
+        masses: n,
+        solid_length: None,
+    };
+    let mut chain = System::new();
+    let ids = spring.add_to(&mut chain);
+    // the highest mode's shape: sin(j n π/(n + 1)), alternating, 1e-3 mm at most
+    let amp = 1e-3;
+    let shape =
+        |j: usize| amp * (j as f64 * n as f64 * std::f64::consts::PI / (n + 1) as f64).sin();
+    let mut sys = System::new();
+    for (i, b) in chain.bodies().iter().enumerate() {
+        let mut b = b.clone();
+        b.pose.origin.y += shape(i + 1);
+        sys.add_body(b);
+    }
+    for j in chain.joints() {
+        sys.add_joint(j.clone());
+    }
+    for f in chain.forces() {
+        sys.add_force(f.clone());
+    }
+    let segment = (k * (n + 1) as f64 / mm / (m / n as f64)).sqrt();
+    let top = 2.0 * segment * (n as f64 * std::f64::consts::PI / (2.0 * (n + 1) as f64)).sin();
+    let opts = SystemDynamicsOptions {
+        metres_per_unit: mm,
+        ..SystemDynamicsOptions::default()
+    };
+    let mut sim = SystemSimulation::new(&sys, opts).unwrap();
+    let (rate, element) = sim.fastest_rate();
+    assert!(
+        rate >= top && rate <= 2.0 * segment * (1.0 + 1e-12),
+        "{rate} against {top}"
+    );
+    assert!(element.contains("valve spring"), "{element}");
+    let h = sim.max_step();
+    let mut worst: f64 = 0.0;
+    for _ in 0..400 {
+        sim.advance(h).unwrap();
+        let s = sim.sample().unwrap();
+        for (j, id) in ids.iter().enumerate() {
+            let i = id.index().unwrap();
+            let rest = 40.0 * (j + 1) as f64 / (n + 1) as f64;
+            worst = worst.max((s.q[3 * i + 1] - rest).abs());
+        }
+    }
+    assert!(worst <= amp * (1.0 + 1e-6), "the mode grew to {worst} mm");
+}
+
 /// A gas force from a table of the crank angle (`TableForce`): a 0.1 kg slide pushed by
 /// `F = 2 N` per crank degree, the crank turning twice per turn of the driven camshaft at
 /// 600 rpm (7200 crank degrees a second): `F = 14 400 t` N, so `y = 24 000 t³` m exactly (RK4

@@ -25,6 +25,7 @@
 
 mod centre;
 mod eval;
+mod rates;
 mod sparse;
 mod step;
 
@@ -698,70 +699,6 @@ impl<'a> SystemSimulation<'a> {
             }
         }
         Ok(SystemRun { samples, events })
-    }
-
-    /// The fastest rate of the system's force elements, 1/s, and the element: a spring's
-    /// `√(k/m)` or a damper's `c/m` with `m` the lighter of its two bodies (the ground's
-    /// infinite), a torsion spring's `√(k/I)` with the smaller inertia. RK4 is stable for a
-    /// step up to [`super::MAX_RATE_STEP`] over it.
-    pub fn fastest_rate(&self) -> (f64, String) {
-        let mass = |id: crate::system::BodyId, angular: bool| {
-            id.index().map_or(f64::INFINITY, |i| {
-                let b = &self.model.bodies[i];
-                if angular {
-                    b.inertia
-                } else {
-                    b.mass
-                }
-            })
-        };
-        let mut fastest = (0.0, String::new());
-        for f in self.sys.forces() {
-            let [a, b] = f.kind.bodies();
-            let rate = match f.kind {
-                crate::system::ForceKind::Spring { stiffness, .. } => {
-                    (stiffness / mass(a, false).min(mass(b, false))).sqrt()
-                }
-                crate::system::ForceKind::Damper { damping, .. } => {
-                    damping / mass(a, false).min(mass(b, false))
-                }
-                crate::system::ForceKind::TorsionSpring { stiffness, .. } => {
-                    (stiffness / mass(a, true).min(mass(b, true))).sqrt()
-                }
-                crate::system::ForceKind::TorsionDamper { damping, .. } => {
-                    damping / mass(a, true).min(mass(b, true))
-                }
-            };
-            if rate > fastest.0 {
-                let kind = match f.kind {
-                    crate::system::ForceKind::Damper { .. } => "damper",
-                    crate::system::ForceKind::TorsionSpring { .. } => "torsion spring",
-                    crate::system::ForceKind::TorsionDamper { .. } => "torsion damper",
-                    _ => "spring",
-                };
-                fastest = (rate, format!("{kind} {:?}", f.name));
-            }
-        }
-        fastest
-    }
-
-    /// The fewest steps that cut an output interval of `h_out` s into steps no longer than
-    /// [`SystemSimulation::max_step`] (at least one).
-    pub fn substeps(&self, h_out: f64) -> usize {
-        (h_out / self.max_step()).ceil().max(1.0) as usize
-    }
-
-    /// The longest step [`SystemSimulation::advance`] accepts, s.
-    pub fn max_step(&self) -> f64 {
-        if let Some(h) = self.step_limit {
-            return h;
-        }
-        let (rate, _) = self.fastest_rate();
-        if rate > 0.0 {
-            super::MAX_RATE_STEP / rate
-        } else {
-            f64::INFINITY
-        }
     }
 }
 
