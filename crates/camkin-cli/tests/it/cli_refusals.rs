@@ -63,6 +63,30 @@ fn every_sweeping_command_refuses_gigabytes_up_front_with_one_sentence() {
     }
 }
 
+/// Issue 63: a system's size is in its estimate. 3 000 driven wheels (a 9 000 × 9 000 dense
+/// Jacobian, 648 MB a copy) are refused at one instant for their memory (they reached 2.5 GB);
+/// the gear train asked 200 000° away, which it must reach through every instant between
+/// (it does not repeat), is refused with its seconds (its gear contacts' pairings cost 2e-4 to
+/// 6e-4 s an instant; 35 000 instants at 1e5° took 13 to 21 s where the estimate said 3.5).
+#[test]
+fn a_systems_size_and_its_far_instants_are_estimated() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("length_unit = \"mm\"\n");
+    for i in 0..3000 {
+        text += &format!("[[body]]\nname = \"w{i}\"\nposition = [{i}.0, 0.0]\n[[joint]]\nname = \"p{i}\"\nkind = \"revolute\"\nbodies = [\"ground\", \"w{i}\"]\nat = [[{i}.0, 0.0], [0.0, 0.0]]\n[[driver]]\nname = \"d{i}\"\nbody = \"w{i}\"\ncoordinate = \"angle\"\nspeed_rpm = 60.0\n");
+    }
+    let wheels = dir.path().join("wheels.toml");
+    std::fs::write(&wheels, text).unwrap();
+    for cmd in ["analyze", "contacts"] {
+        run!(cmd, &wheels, "--at", "0")
+            .refused("1 instant of this system would take about ")
+            .stderr(predicate::str::contains(" GB"));
+    }
+    run!("analyze", examples().join("gear-train.toml"), "--at", "2e5")
+        .refused("takes about 69813 instants between (about ")
+        .stderr(predicate::str::contains("does not repeat"));
+}
+
 /// Issue 49, item 5 (a class): every numeric option takes a leading minus as a sign (the option's
 /// own check then names it, not "unexpected argument") and refuses a unit typed with the number,
 /// saying so; exit 2 either way.
