@@ -80,14 +80,8 @@ impl PyMechanism {
             camkin::geometry::deg_to_rad(start_angle_deg),
         )
         .map_err(dyn_err)?;
-        // the model chosen (the one-coordinate model searches every curve's first touch each
-        // step), the jump scan at the start (every 0.25°) and the kinematic motion beside every
-        // sample (about 200 bytes each held): as the command
-        let steps = outputs as f64 * substeps as f64;
         errors::refuse_large(
-            &sim.work(steps)
-                .and(&camkin::work::Work::sweep(&mech, 1441 + outputs, 1))
-                .with_bytes(outputs as f64 * 200.0),
+            &sim.run_work(&mech, outputs, substeps),
             large,
             ", or simulate fewer revolutions",
         )?;

@@ -97,7 +97,6 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             "{outputs} output rows is more than 10000000"
         )));
     }
-    let steps = outputs as f64 * args.substeps as f64;
     // the model picks its solver: a system file ([[body]], [[joint]], …, [dynamics]) is
     // simulated as a system, a cam preset in metres by its one-coordinate model
     let model = mechfile::load_model(Some(&args.mechanism), true)?;
@@ -134,13 +133,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         camkin::geometry::deg_to_rad(args.start_angle),
     )
     .map_err(dyn_err)?;
-    // the model chosen (the one-coordinate model searches every curve's first touch each
-    // step), the jump scan at the start (every 0.25°) and the kinematic motion beside every row
-    // (about 200 bytes a row held)
     crate::refuse_large(
-        &sim.work(steps)
-            .and(&camkin::work::Work::sweep(&mech, 1441 + outputs, 1))
-            .with_bytes(outputs as f64 * 200.0),
+        &sim.run_work(&mech, outputs, args.substeps),
         args.work.large,
         ", or simulate fewer --revolutions",
     )?;

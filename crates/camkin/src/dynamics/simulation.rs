@@ -132,6 +132,21 @@ impl<'a> Simulation<'a> {
         }
     }
 
+    /// The work of a whole run of `mech`: `outputs` output intervals of `substeps` steps
+    /// ([`Simulation::work`]), the jump scan at the start (every 0.25°) and the kinematic
+    /// motion beside every sample (a sweep of its angles), about 200 bytes a sample held. What
+    /// every front end refuses a long run by.
+    pub fn run_work(
+        &self,
+        mech: &crate::cam::Mechanism,
+        outputs: usize,
+        substeps: usize,
+    ) -> crate::work::Work {
+        self.work(outputs as f64 * substeps as f64)
+            .and(&crate::work::Work::sweep(mech, 1441 + outputs, 1))
+            .with_bytes(outputs as f64 * 200.0)
+    }
+
     /// Advances by `h` seconds; the events located inside the step, in time order.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
         match self {
