@@ -361,6 +361,74 @@ fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
     assert!(worst < 1e-6 * 0.5, "off the mode by {worst} mm");
 }
 
+/// A second check of a coil's segments, static where the surge test is dynamic: `n` masses
+/// split the spring into `n + 1` segments of `(n + 1) k` each, in series `k`, so at rest at
+/// uniform spacing the plate on its free end is pushed by `k (L₀ − L) − F₀` (compressed by
+/// `L₀ − L`; the preload `F₀` a tension, as every spring's) whatever `n` is, and accelerates by
+/// that over its mass: 1, 4 and 16 masses (in mm: the stiffness in N/mm, the acceleration in
+/// mm/s²).
+#[test]
+fn a_coils_end_force_at_rest_is_its_stiffness_times_its_compression_whatever_its_masses() {
+    use camkin::system::CoilSpring;
+    let (k, free, length, preload, plate_mass) = (30.0, 48.0, 40.0, 5.0, 0.05);
+    for n in [1usize, 4, 16] {
+        let mut sys = System::new();
+        let plate = sys.add_body(Body {
+            name: "plate".into(),
+            mass: plate_mass,
+            inertia: 1e-6,
+            pose: camkin::body::Pose::new(Point2::new(0.0, length), 0.0),
+            centre_of_mass: Point2::origin(),
+        });
+        sys.add_joint(Joint {
+            name: "guide".into(),
+            kind: JointKind::Prismatic {
+                a: BodyId::GROUND,
+                at_a: Point2::origin(),
+                axis: Vec2::y(),
+                b: plate,
+                at_b: Point2::origin(),
+                angle: 0.0,
+            },
+        });
+        CoilSpring {
+            name: "coil".into(),
+            a: BodyId::GROUND,
+            at_a: Point2::origin(),
+            b: plate,
+            at_b: Point2::origin(),
+            stiffness: k,
+            free_length: free,
+            preload,
+            mass: 0.01,
+            masses: n,
+            solid_length: None,
+        }
+        .add_to(&mut sys);
+        let opts = SystemDynamicsOptions {
+            metres_per_unit: 1e-3,
+            ..SystemDynamicsOptions::default()
+        };
+        let sim = SystemSimulation::new(&sys, opts).unwrap();
+        let s = sim.sample().unwrap();
+        // N over kg is m/s²; the file's unit is mm
+        let want = (k * (free - length) - preload) / plate_mass * 1e3;
+        let got = s.qdd[1];
+        assert!(
+            (got - want).abs() < 1e-9 * want,
+            "{n} masses: {got} against {want} mm/s²"
+        );
+        // every inner mass at rest between equal segments feels nothing
+        for i in 1..=n {
+            assert!(
+                s.qdd[3 * i + 1].abs() < 1e-6 * want,
+                "{n}: mass {i} {}",
+                s.qdd[3 * i + 1]
+            );
+        }
+    }
+}
+
 /// The step bound covers a chain's highest mode: a coil of `n` = 64 masses between two ground
 /// points has its fastest mode at `ω_n = 2 √(k_s/m_s) sin(nπ/(2(n + 1)))`, `k_s = (n + 1) k`,
 /// `m_s = m/n` (the fixed–fixed chain's closed form), nearly twice each segment's own

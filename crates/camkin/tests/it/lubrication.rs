@@ -231,7 +231,10 @@ fn the_eccentric_disc_under_a_flat_face_has_the_closed_form_film() {
 /// support function, the cam's surface moves past the contact at `ω (p + p'')` and the face's
 /// at `ω p''`, so the entrainment changes sign where `p + 2p'' = 0` — four angles a turn. Those
 /// angles, found by bisection on `p` and `p''` evaluated with hyper-dual numbers (no formula of
-/// the library), against the report's (to 1e-9°), both senses.
+/// the library), against the report's (to 1e-9°), both senses. Over the same revolution, a
+/// second check of the mixed friction model (its unit test the first): each point's
+/// coefficient from its own λ by the documented rule written out, and its friction power
+/// `μ F |u₁ − u₂|` (a quadratic blend put in the model's place fails it).
 #[test]
 fn the_entrainment_reverses_where_the_support_function_says() {
     let (a, b) = (0.05, 0.02);
@@ -282,7 +285,29 @@ fn the_entrainment_reverses_where_the_support_function_says() {
             ..ForceRequest::default()
         };
         let report = ForceReport::new(&mech, spring(0.1, 5000.0, 50.0), &req).unwrap();
-        let found = &report.lubrication.as_ref().unwrap().entrainment_reversals;
+        let lub = report.lubrication.as_ref().unwrap();
+        // a second check of the mixed friction model, from the report's own λ: the coefficient
+        // is the boundary's 0.1 to λ = 1, the full film's 0.03 from λ = 3, linear between, and
+        // the friction power is μ F |u₁ − u₂| (written out here, not the library's function)
+        let mut mixed = 0;
+        for p in lub.points.iter().filter_map(|p| p[0]) {
+            let mu = match p.lambda {
+                Some(l) if l >= 3.0 => 0.03,
+                Some(l) if l > 1.0 => {
+                    mixed += 1;
+                    0.1 + (l - 1.0) / 2.0 * (0.03 - 0.1)
+                }
+                _ => 0.1,
+            };
+            assert!((p.friction_coefficient - mu).abs() < 1e-15, "{p:?}");
+            let power = mu * p.load_per_width.max(0.0) * 0.01 * p.sliding.abs();
+            assert!(
+                (p.friction_power - power).abs() <= 1e-12 * power.max(1e-12),
+                "{p:?}"
+            );
+        }
+        assert!(mixed > 10, "{mixed} points in the mixed regime");
+        let found = &lub.entrainment_reversals;
         // the face's normal in the cam's frame is at φ = −σθ
         let mut expected: Vec<f64> = reference
             .iter()
