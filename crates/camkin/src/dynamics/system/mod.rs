@@ -211,6 +211,9 @@ pub struct SystemSimulation<'a> {
     pub(super) spare_pairings: Vec<Option<Pairing>>,
     /// buffers of [`SystemSimulation::motion`]
     sampled: std::cell::RefCell<(Vec<Option<Pairing>>, eval::Accel)>,
+    /// the fastest rate and its element, found once ([`SystemSimulation::fastest_rate`]: the
+    /// masses and elements do not change)
+    fastest: std::cell::OnceCell<(f64, String)>,
     /// the inverse of the mass matrix's diagonal, one per coordinate
     pub(super) inv_mass: Vec<f64>,
 }
@@ -416,6 +419,7 @@ impl<'a> SystemSimulation<'a> {
             spare_check: Default::default(),
             spare_pairings: Vec::new(),
             sampled: Default::default(),
+            fastest: Default::default(),
             inv_mass: Vec::new(),
         };
         sim.inv_mass = sim

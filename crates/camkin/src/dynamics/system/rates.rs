@@ -15,6 +15,13 @@ impl SystemSimulation<'_> {
     /// its masses clashed at 59 m/s). RK4 is stable for a step up to [`super::super::MAX_RATE_STEP`]
     /// over it. The element named is the largest term of the fastest body's row.
     pub fn fastest_rate(&self) -> (f64, String) {
+        self.fastest
+            .get_or_init(|| self.find_fastest_rate())
+            .clone()
+    }
+
+    /// [`SystemSimulation::fastest_rate`], found.
+    fn find_fastest_rate(&self) -> (f64, String) {
         use crate::system::ForceKind;
         let mass = |id: crate::system::BodyId, angular: bool| {
             id.index().map_or(f64::INFINITY, |i| {
@@ -81,7 +88,7 @@ impl SystemSimulation<'_> {
         if let Some(h) = self.step_limit {
             return h;
         }
-        let (rate, _) = self.fastest_rate();
+        let rate = self.fastest.get_or_init(|| self.find_fastest_rate()).0;
         if rate > 0.0 {
             super::super::MAX_RATE_STEP / rate
         } else {
