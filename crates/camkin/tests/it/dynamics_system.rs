@@ -679,3 +679,49 @@ start = {start_deg}
         assert!(e.to_string().contains("dead point (toggle)"), "{e}");
     }
 }
+
+/// The torsion spring's sense as the docs state it: torque `T = k (θ_b − θ_a − free) + P`, `+T`
+/// on `a`, `−T` on `b`. A wheel (`b`) pinned to the ground (`a`) with a spring of no stiffness
+/// and a preload of 2 N·mm starts turning clockwise at `−P / I`; with a stiffness of 3 N·mm/rad
+/// and the wheel 0.5 rad counter-clockwise of the free angle, at `−(3 · 0.5 + P) / I`.
+#[test]
+fn a_torsion_springs_torque_turns_its_second_body_back() {
+    let inertia = 2e-4; // kg·m², its centre on the pin
+    for (k, start) in [(0.0, 0.0), (3.0, 0.5f64)] {
+        let text = format!(
+            r#"length_unit = "mm"
+[dynamics]
+gravity = [0.0, 0.0]
+
+[[body]]
+name = "wheel"
+mass = 0.5
+inertia = {inertia}
+angle_deg = {deg}
+
+[[joint]]
+name = "pin"
+kind = "revolute"
+bodies = ["ground", "wheel"]
+
+[[torsion_spring]]
+name = "spring"
+bodies = ["ground", "wheel"]
+stiffness = {k}
+free_angle_deg = 0.0
+preload = 2.0
+"#,
+            deg = start.to_degrees(),
+        );
+        let built = read_system(&text, "wheel.toml", &Default::default()).unwrap();
+        let sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+        let s = sim.sample().unwrap();
+        // N·mm over kg·m² is 1e-3 rad/s²
+        let want = -(k * start + 2.0) * 1e-3 / inertia;
+        assert!(
+            (s.qdd[2] - want).abs() < 1e-9 * want.abs(),
+            "{} against {want}",
+            s.qdd[2]
+        );
+    }
+}
