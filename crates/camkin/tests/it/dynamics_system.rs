@@ -298,15 +298,16 @@ fn an_undamped_pendulum_with_a_spring_keeps_its_energy() {
     assert!(fine < coarse / 10.0, "{fine:e} at h/2, {coarse:e} at h");
 }
 
-/// A coil spring of four lumped masses between two ground points (a valve spring's surge),
-/// started in its first mode's shape (`sin(jπ/5)`): every mass moves as `δ_j cos(ω₁ t)` with
-/// `ω₁ = 2 √(5k · 4/m) sin(π/10)`, the fixed–fixed chain's closed form, and `surge_frequencies`
-/// gives it; the simulation follows it to 1e-6 of the amplitude over three periods.
-#[test]
-fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
-    use camkin::system::CoilSpring;
-    let (n, k, m, mm) = (4usize, 30.0, 0.02, 1e-3);
-    let spring = CoilSpring {
+/// A coil spring of `n` masses (`k` N/mm, `m` kg of coils) between two ground points 40 mm
+/// apart, its masses moved up by `shape(j)` mm (`j` from 1): the spring, the system and the
+/// masses' bodies.
+fn coil_in_shape(
+    n: usize,
+    k: f64,
+    m: f64,
+    shape: impl Fn(usize) -> f64,
+) -> (camkin::system::CoilSpring, System, Vec<BodyId>) {
+    let spring = camkin::system::CoilSpring {
         name: "valve spring".into(),
         a: BodyId::GROUND,
         at_a: Point2::new(0.0, 0.0),
@@ -321,8 +322,6 @@ fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
     };
     let mut chain = System::new();
     let ids = spring.add_to(&mut chain);
-    // the same system with its masses moved into the first mode's shape, 0.5 mm at most
-    let shape = |j: usize| 0.5 * (j as f64 * std::f64::consts::PI / (n + 1) as f64).sin();
     let mut sys = System::new();
     for (i, b) in chain.bodies().iter().enumerate() {
         let mut b = b.clone();
@@ -335,6 +334,19 @@ fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
     for f in chain.forces() {
         sys.add_force(f.clone());
     }
+    (spring, sys, ids)
+}
+
+/// A coil spring of four lumped masses between two ground points (a valve spring's surge),
+/// started in its first mode's shape (`sin(jπ/5)`): every mass moves as `δ_j cos(ω₁ t)` with
+/// `ω₁ = 2 √(5k · 4/m) sin(π/10)`, the fixed–fixed chain's closed form, and `surge_frequencies`
+/// gives it; the simulation follows it to 1e-6 of the amplitude over three periods.
+#[test]
+fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
+    let (n, k, m, mm) = (4usize, 30.0, 0.02, 1e-3);
+    // the coil with its masses moved into the first mode's shape, 0.5 mm at most
+    let shape = |j: usize| 0.5 * (j as f64 * std::f64::consts::PI / (n + 1) as f64).sin();
+    let (spring, sys, ids) = coil_in_shape(n, k, m, shape);
     let w1 = 2.0
         * (k * (n + 1) as f64 / mm / (m / n as f64)).sqrt()
         * (std::f64::consts::PI / (2.0 * (n + 1) as f64)).sin();
@@ -438,39 +450,12 @@ fn a_coils_end_force_at_rest_is_its_stiffness_times_its_compression_whatever_its
 /// the old bound it grew 1e4-fold in 200 steps and the masses clashed).
 #[test]
 fn a_coils_highest_mode_is_within_the_step_bound() {
-    use camkin::system::CoilSpring;
     let (n, k, m, mm) = (64usize, 30.0, 0.02, 1e-3);
-    let spring = CoilSpring {
-        name: "valve spring".into(),
-        a: BodyId::GROUND,
-        at_a: Point2::new(0.0, 0.0),
-        b: BodyId::GROUND,
-        at_b: Point2::new(0.0, 40.0),
-        stiffness: k,
-        free_length: 48.0,
-        preload: 0.0,
-        mass: m,
-        masses: n,
-        solid_length: None,
-    };
-    let mut chain = System::new();
-    let ids = spring.add_to(&mut chain);
     // the highest mode's shape: sin(j n π/(n + 1)), alternating, 1e-3 mm at most
     let amp = 1e-3;
     let shape =
         |j: usize| amp * (j as f64 * n as f64 * std::f64::consts::PI / (n + 1) as f64).sin();
-    let mut sys = System::new();
-    for (i, b) in chain.bodies().iter().enumerate() {
-        let mut b = b.clone();
-        b.pose.origin.y += shape(i + 1);
-        sys.add_body(b);
-    }
-    for j in chain.joints() {
-        sys.add_joint(j.clone());
-    }
-    for f in chain.forces() {
-        sys.add_force(f.clone());
-    }
+    let (_, sys, ids) = coil_in_shape(n, k, m, shape);
     let segment = (k * (n + 1) as f64 / mm / (m / n as f64)).sqrt();
     let top = 2.0 * segment * (n as f64 * std::f64::consts::PI / (2.0 * (n + 1) as f64)).sin();
     let opts = SystemDynamicsOptions {
