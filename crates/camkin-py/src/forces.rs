@@ -416,17 +416,14 @@ impl PySystem {
             let sim = camkin::dynamics::SystemSimulation::new(sys, self.built.dynamics.clone())
                 .map_err(|e| errors::input("dynamics", None, e.to_string()))?;
             let outputs = (360.0 / step_deg).round().max(1.0) as usize;
+            let (steps, samples) = sw.work(&sim);
             errors::refuse_large(
-                &camkin::work::Work::system_simulation(
-                    sys,
-                    sw.steps(outputs, |h| sim.substeps(h)),
-                    outputs + 1,
-                ),
+                &camkin::work::Work::system_simulation(sys, steps, samples, outputs + 1),
                 large,
                 ", or use a coarser step_deg",
             )?;
         }
-        let (run, plan) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
+        let (run, plan) = self.run_revolution(py, step_deg, large)?;
         let angle_of = |t: f64| plan.angle_of(t);
         let report = camkin::report::SystemForces::new(
             sys,
@@ -497,7 +494,7 @@ impl PySystem {
                 "the system's file has no [lubrication] table (its oil and roughness)".into(),
             ));
         };
-        let (run, plan) = self.run_revolutions(py, 1.0, step_deg, None, large)?;
+        let (run, plan) = self.run_revolution(py, step_deg, large)?;
         let angle_of = |t: f64| plan.angle_of(t);
         let report =
             camkin::report::SystemLubricationReport::new(&self.built.system, &run, req, angle_of);

@@ -4,7 +4,7 @@
 use crate::columns::Columns;
 use crate::errors;
 use crate::model::{PyMechanism, PySystem};
-use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Simulation, StepAdvice};
+use camkin::dynamics::{AugmentedLagrangian, DynamicsError, Simulation, Tolerances};
 use camkin::table::{
     event_cells, event_columns, sample_cells, sample_columns, EventRow, SampleRow, Units,
 };
@@ -14,8 +14,9 @@ use pyo3::types::{PyDict, PyList};
 fn dyn_err(e: DynamicsError) -> PyErr {
     match e {
         DynamicsError::Invalid { .. }
-        | DynamicsError::StepTooLong { .. }
         | DynamicsError::Unassembled { .. }
+        | DynamicsError::DeadPoint { .. }
+        | DynamicsError::StepUnderflow { .. }
         | DynamicsError::Chatter { .. } => errors::input("dynamics", None, e.to_string()),
         DynamicsError::FormClosed | DynamicsError::Interference { .. } => {
             errors::input("follower.conjugate", None, e.to_string())
@@ -24,14 +25,35 @@ fn dyn_err(e: DynamicsError) -> PyErr {
     }
 }
 
+/// `rtol` and `atol` checked, as the keywords name them.
+pub(crate) fn tolerances(rtol: f64, atol: f64) -> PyResult<Tolerances> {
+    let t = Tolerances {
+        relative: rtol,
+        absolute: atol,
+    };
+    match t.out_of_range() {
+        Some((which, value)) => {
+            let key = if which == "relative" { "rtol" } else { "atol" };
+            let v = camkin::human::human(value);
+            Err(errors::input(
+                key,
+                Some(v.clone()),
+                format!("{key} = {v}: must be from 1e-13 to 0.01"),
+            ))
+        }
+        None => Ok(t),
+    }
+}
+
 #[pymethods]
 impl PyMechanism {
-    /// simulate(*, revolutions=1.0, step_deg=1.0, substeps=1, start_angle_deg=0.0, large=False)
-    /// -> dict
+    /// simulate(*, revolutions=1.0, step_deg=1.0, rtol=1e-10, atol=1e-10, start_angle_deg=0.0,
+    /// large=False) -> dict
     ///
     /// The follower's motion under its spring, damping and the cam (the file's ``[dynamics]``,
     /// SI units), with lift-off and impacts, from ``start_angle_deg`` for ``revolutions`` turns,
-    /// sampled every ``step_deg`` of cam angle (``substeps`` integration steps each). Returns
+    /// sampled every ``step_deg`` of cam angle (the integration's steps chosen by the relative
+    /// and absolute tolerances ``rtol`` and ``atol``, as ``camkin simulate``'s). Returns
     /// ``{"samples": dict of arrays, "events": list of dicts}`` with the columns of
     /// ``camkin simulate`` (lengths in the file's unit, force in N, time in s).
     ///
@@ -40,13 +62,15 @@ impl PyMechanism {
     ///     mech = camkin.Mechanism.from_toml("examples/paper-dynamics.toml")
     ///     r = mech.simulate(revolutions=1.0, step_deg=1.0)
     ///     r["events"]
-    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, substeps = 1, start_angle_deg = 0.0, large = false))]
+    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, rtol = 1e-10, atol = 1e-10, start_angle_deg = 0.0, large = false))]
+    #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
         #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
         #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
-        #[pyo3(from_py_with = crate::errors::count)] substeps: usize,
+        #[pyo3(from_py_with = crate::errors::real)] rtol: f64,
+        #[pyo3(from_py_with = crate::errors::real)] atol: f64,
         #[pyo3(from_py_with = crate::errors::real)] start_angle_deg: f64,
         large: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
@@ -63,9 +87,7 @@ impl PyMechanism {
         if !(step_deg.is_finite() && step_deg > 0.0 && step_deg <= 360.0) {
             return Err(bad("step_deg", step_deg, "must be in (0, 360] degrees"));
         }
-        if !(1..=1000).contains(&substeps) {
-            return Err(bad("substeps", substeps as f64, "must be from 1 to 1000"));
-        }
+        let tolerances = tolerances(rtol, atol)?;
         if !start_angle_deg.is_finite() {
             return Err(bad("start_angle_deg", start_angle_deg, "must be finite"));
         }
@@ -80,42 +102,17 @@ impl PyMechanism {
             camkin::geometry::deg_to_rad(start_angle_deg),
         )
         .map_err(dyn_err)?;
+        sim.set_tolerances(tolerances).map_err(dyn_err)?;
+        let h = step_deg.to_radians() / mech.cam().speed();
         errors::refuse_large(
-            &sim.run_work(&mech, outputs, substeps),
+            &sim.run_work(&mech, outputs, h),
             large,
             ", or simulate fewer revolutions",
         )?;
-        let w = mech.cam().speed();
-        let h = step_deg.to_radians() / w / substeps as f64;
-        if let Some(advice) = sim.step_advice(step_deg, substeps, w, 1000, 360.0 / 1e7) {
-            let (rate, field, value) = sim.fastest_rate();
-            let hu = camkin::human::human;
-            let fix = match advice {
-                StepAdvice::Substeps(n) => format!("use substeps={n} or more"),
-                StepAdvice::FinerStep { step_deg } => {
-                    format!("use substeps=1000 and step_deg={} or finer", hu(step_deg))
-                }
-                StepAdvice::FasterCam { rpm } => format!(
-                    "the cam turns too slowly for outputs by cam angle: raise cam.speed_rpm to at least {} rpm",
-                    hu(rpm)
-                ),
-                _ => "use a finer step_deg".into(),
-            };
-            return Err(errors::input(
-                &field.to_string(),
-                Some(hu(value)),
-                format!(
-                    "{field} = {}: too stiff for the time step {} s; the follower's fastest rate is {} /s: {fix}",
-                    hu(value),
-                    hu(h),
-                    hu(rate)
-                ),
-            ));
-        }
         // Ctrl-C stops the run between output intervals: its KeyboardInterrupt, kept here
         let mut interrupt: Option<PyErr> = None;
         let result = py.detach(|| -> Result<_, DynamicsError> {
-            let run = sim.run(outputs, substeps, h, |_| match errors::interrupted() {
+            let run = sim.run(outputs, h, |_| match errors::interrupted() {
                 Ok(()) => std::ops::ControlFlow::Continue(()),
                 Err(e) => {
                     interrupt = Some(e);
@@ -158,7 +155,8 @@ impl PyMechanism {
 
 #[pymethods]
 impl PySystem {
-    /// simulate(*, revolutions=1.0, step_deg=1.0, substeps=None, large=False) -> (dict, dict)
+    /// simulate(*, revolutions=1.0, step_deg=1.0, rtol=1e-10, atol=1e-10, large=False)
+    /// -> (dict, dict)
     ///
     /// The system's dynamics (a system file with ``[dynamics]``; see docs/systems.md, "Dynamics of a
     /// system"): ``(samples, events)``, two dicts of NumPy arrays keyed by the columns of
@@ -166,25 +164,28 @@ impl PySystem {
     /// start and every ``step_deg`` of the first driver, each body's pose, rates and
     /// accelerations, each contact's force (N), gap and whether it is closed, the energy and the
     /// drivers' work; each lift-off and impact with its contact, instant and approach speed.
-    /// ``substeps`` (integration steps per output step) is by default the fewest the stiffest
-    /// spring or damper allows; fewer raises ``camkin.InputError`` naming it.
+    /// The integration's steps are chosen by the relative and absolute tolerances ``rtol`` and
+    /// ``atol`` (as ``camkin simulate``'s ``--rtol`` and ``--atol``), the samples interpolated
+    /// between them.
     ///
     /// Example::
     ///
     ///     s = camkin.System.from_toml("examples/valve-train.toml")
     ///     samples, events = s.simulate(revolutions=1.0, step_deg=1.0)
     ///     samples.to_pandas().iloc[:, :4]
-    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, substeps = None, large = false))]
+    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, rtol = 1e-10, atol = 1e-10, large = false))]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
         #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
         #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
-        #[pyo3(from_py_with = crate::errors::count_or_none)] substeps: Option<usize>,
+        #[pyo3(from_py_with = crate::errors::real)] rtol: f64,
+        #[pyo3(from_py_with = crate::errors::real)] atol: f64,
         large: bool,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let sys = &self.built.system;
-        let (run, plan) = self.run_revolutions(py, revolutions, step_deg, substeps, large)?;
+        let tolerances = tolerances(rtol, atol)?;
+        let (run, plan) = self.run_revolutions(py, revolutions, step_deg, tolerances, large)?;
         let unit = self.built.length_unit.name();
         let mut samples = Columns::new(
             camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
@@ -208,23 +209,32 @@ impl PySystem {
 }
 
 impl PySystem {
-    /// The simulation `simulate` and `lubrication` share: `revolutions` of the first driver in
+    /// A revolution of the first driver in `step_deg` output steps at the default tolerances:
+    /// what `forces` and `lubrication` report on.
+    pub(crate) fn run_revolution(
+        &self,
+        py: Python<'_>,
+        step_deg: f64,
+        large: bool,
+    ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
+        self.run_revolutions(py, 1.0, step_deg, Tolerances::default(), large)
+    }
+
+    /// The simulation `simulate`, `forces` and `lubrication` share: `revolutions` of the first driver in
     /// `step_deg` output steps (the library's plan), with the plan.
     pub(crate) fn run_revolutions(
         &self,
         py: Python<'_>,
         revolutions: f64,
         step_deg: f64,
-        substeps: Option<usize>,
+        tolerances: Tolerances,
         large: bool,
     ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
         use camkin::spec::{PlanError, PlanField};
-        let sys = &self.built.system;
-        let h_ = camkin::human::human;
         let dyn_err = |e: camkin::dynamics::DynamicsError| errors::input("", None, e.to_string());
         let (plan, mut sim) = self
             .built
-            .plan(revolutions, step_deg, substeps)
+            .plan(revolutions, step_deg)
             .map_err(|e| match e {
                 PlanError::OutOfRange {
                     field,
@@ -233,51 +243,26 @@ impl PySystem {
                 } => {
                     let key = match field {
                         PlanField::Revolutions => "revolutions",
-                        PlanField::Step => "step_deg",
-                        _ => "substeps",
-                    };
-                    errors::input(key, Some(value.clone()), format!("{key} = {value}: must be {range}"))
-                }
-                PlanError::NotAnAngle => errors::input("driver", None, e.to_string()),
-                PlanError::TooStiff {
-                    ref element,
-                    rate,
-                    substeps,
-                    ..
-                } => {
-                    let fix = match e.stiff_advice() {
-                        Some(camkin::dynamics::StepAdvice::Substeps(n)) => {
-                            format!("use substeps={n} or more")
-                        }
-                        Some(camkin::dynamics::StepAdvice::FinerStep { step_deg }) => format!(
-                            "use substeps=1000 and step_deg={} or finer",
-                            h_(step_deg)
-                        ),
-                        _ => format!(
-                            "no step_deg from 0.001 with up to 1000 substeps resolves a rate of {} /s at this speed: check the element's stiffness and its bodies' masses (and their units)",
-                            h_(rate)
-                        ),
+                        _ => "step_deg",
                     };
                     errors::input(
-                        "substeps",
-                        Some(substeps.to_string()),
-                        format!(
-                            "substeps = {substeps}: {element} is too stiff for {substeps} substeps of a {}° step (its rate {} /s): {fix}",
-                            h_(step_deg),
-                            h_(rate)
-                        ),
+                        key,
+                        Some(value.clone()),
+                        format!("{key} = {value}: must be {range}"),
                     )
                 }
+                PlanError::NotAnAngle => errors::input("driver", None, e.to_string()),
                 PlanError::Dynamics(e) => dyn_err(e),
                 e => errors::input("", None, e.to_string()),
             })?;
+        sim.set_tolerances(tolerances).map_err(dyn_err)?;
         errors::refuse_large(
-            &camkin::work::Work::system_simulation(sys, plan.steps(), plan.outputs + 1),
+            &self.built.run_work(&plan, &sim, false, None),
             large,
             ", or simulate fewer revolutions",
         )?;
         let run = py.detach(|| {
-            sim.run(plan.outputs, plan.substeps, plan.h(), |k| {
+            sim.run(plan.outputs, plan.h_out, |k| {
                 if k % 1024 == 0 && errors::interrupted().is_err() {
                     return std::ops::ControlFlow::Break(());
                 }

@@ -293,7 +293,6 @@ def test_numpy_scalars_are_numbers():
 
 COUNT_ARGS = [
     (lambda m, v: m.profile(v), "n"),
-    (lambda m, v: m.simulate(substeps=v), "substeps"),
     (lambda m, v: camkin.summarize([m], threads=v), "threads"),
 ]
 

@@ -10,11 +10,11 @@ from conftest import EXAMPLES, csv_columns, run_cli
 
 def test_simulate_equals_the_command_to_the_last_bit(tmp_path):
     sys = camkin.System.from_toml(EXAMPLES / "valve-train.toml")
-    samples, events = sys.simulate(revolutions=0.5, step_deg=1.0, substeps=2)
+    samples, events = sys.simulate(revolutions=0.5, step_deg=1.0, rtol=1e-9)
     out = tmp_path / "vt"
     run_cli(
         "simulate", EXAMPLES / "valve-train.toml", "--revolutions", "0.5", "--step", "1",
-        "--substeps", "2", "--out", out,
+        "--rtol", "1e-9", "--out", out,
     )
     cli = csv_columns((out / "time_series.csv").read_text())
     assert list(samples) == list(cli)
@@ -33,14 +33,16 @@ def test_simulate_equals_the_command_to_the_last_bit(tmp_path):
     assert "impact" in list(events["event"])
 
 
-def test_simulate_chooses_its_substeps_and_refuses_too_few():
+def test_simulate_takes_any_step_and_refuses_tolerances_out_of_range():
+    # issue 64: no step is refused (the lash adjuster's damper once asked for substeps=3 at
+    # 2°): the steps are chosen by the tolerances
     sys = camkin.System.from_toml(EXAMPLES / "valve-train.toml")
     samples, _ = sys.simulate(revolutions=0.1, step_deg=2.0)
     assert len(samples["time_s"]) == 19
-    # the lash adjuster's oil damper needs a step of 40 µs at most: 2° at 3000 rpm is 111 µs
-    with pytest.raises(camkin.InputError, match="substeps=3") as e:
-        sys.simulate(revolutions=0.1, step_deg=2.0, substeps=1)
-    assert "lash adjuster" in str(e.value)
+    for key, value in [("rtol", 0.0), ("atol", 0.5), ("rtol", 1e-14)]:
+        with pytest.raises(camkin.InputError, match=key) as e:
+            sys.simulate(revolutions=0.1, **{key: value})
+        assert e.value.field == key
     with pytest.raises(camkin.InputError, match="revolutions"):
         sys.simulate(revolutions=-1.0)
     with pytest.raises(camkin.InputError, match="step_deg"):

@@ -14,21 +14,21 @@ use camkin::dynamics::{EventKind, SystemRun};
 use camkin::spec::{BuiltSystem, PlanError, RunPlan};
 use std::time::Instant;
 
-/// A revolution of `built` simulated at `step_deg` outputs (the library's plan: the time step
-/// as the stiffest element needs); the work refused over the limits first.
+/// A revolution of `built` simulated at `step_deg` outputs (the library's plan: the steps
+/// chosen by its tolerances); the work refused over the limits first.
 pub(super) fn simulate(
     built: &BuiltSystem,
     step_deg: f64,
     limits: &Limits,
 ) -> Result<(SystemRun, RunPlan), StudioError> {
     let input = |message: String| StudioError::Input { message, at: None };
-    let (plan, mut sim) = built.plan(1.0, step_deg, None).map_err(|e| match e {
+    let (plan, mut sim) = built.plan(1.0, step_deg).map_err(|e| match e {
         PlanError::NotAnAngle => input(
             "its first driver does not turn an angle at a constant speed: the studio shows a simulated system over its revolution".into(),
         ),
         e => input(format!("the system cannot be simulated: {e}")),
     })?;
-    let work = camkin::work::Work::system_simulation(&built.system, plan.steps(), plan.outputs + 1);
+    let work = built.run_work(&plan, &sim, false, None);
     if let Some(r) = work.refusal_within(limits.max_seconds, camkin::work::BYTES_LIMIT) {
         return Err(StudioError::TooMuch {
             message: format!(
@@ -38,7 +38,7 @@ pub(super) fn simulate(
         });
     }
     let run = sim
-        .run(plan.outputs, plan.substeps, plan.h(), |_| {
+        .run(plan.outputs, plan.h_out, |_| {
             std::ops::ControlFlow::Continue(())
         })
         .map_err(|e| input(format!("the simulation stopped: {e}")))?;

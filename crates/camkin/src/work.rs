@@ -129,16 +129,26 @@ impl Work {
         .with_bytes(instants as f64 * cells as f64 * 24.0 + sys.held_bytes())
     }
 
-    /// `steps` simulated steps of a system ([`crate::dynamics::SystemSimulation`]): each four
-    /// evaluations of the equations of motion and a projection, about 2e-5 s a body (the valve
-    /// train's 1e-5 s a body measured, with a margin for events' bisections), and `outputs`
-    /// rows of 24-byte numbers (nine a body, three a contact, one a driver).
-    pub fn system_simulation(sys: &crate::system::System, steps: usize, outputs: usize) -> Self {
+    /// `steps` simulated steps of a system ([`crate::dynamics::SystemSimulation`]) and
+    /// `samples` samples made: a step seven evaluations of the equations of motion and a
+    /// projection, about 1.5e-5 s a body; a sample a projection and an evaluation, about 5e-6 s
+    /// a body (the valve train measured: 1.1e-5 s and 5e-6 s a body); and `outputs` rows held,
+    /// of 24-byte numbers (nine a body, three a contact, one a driver).
+    pub fn system_simulation(
+        sys: &crate::system::System,
+        steps: f64,
+        samples: f64,
+        outputs: usize,
+    ) -> Self {
         let n = sys.bodies().len().max(1) as f64;
         let cells = 4 + 9 * sys.bodies().len() + 3 * sys.contacts().len() + sys.drivers().len();
         Self::new(
-            format!("{steps} simulated steps of this system"),
-            steps as f64 * 2e-5 * n,
+            format!(
+                "{} simulated steps of this system and {} samples",
+                crate::human::human(steps.ceil()),
+                crate::human::human(samples.ceil())
+            ),
+            (steps * 1.5e-5 + samples * 5e-6) * n,
         )
         .with_bytes(outputs as f64 * cells as f64 * 24.0)
     }

@@ -277,8 +277,8 @@ fn run_system(
     camkin::report::check_limits(args.margin, args.allowable).map_err(input_error)?;
     let sys = &built.system;
     let step = args.step.deg();
-    let (plan, mut sim) = built.plan(1.0, step, None).map_err(|e| plan_err(name, e))?;
-    let (outputs, substeps) = (plan.outputs, plan.substeps);
+    let (plan, mut sim) = built.plan(1.0, step).map_err(|e| plan_err(name, e))?;
+    let outputs = plan.outputs;
     let rpm = sys.first_driver_rpm();
     // --target-rpm's sweep: from a quarter of the lower of the two speeds, in eight steps to
     // the target, then bisected to 1 rpm
@@ -293,19 +293,14 @@ fn run_system(
         None => None,
     };
     // the revolution, and the sweep's runs (each at most a revolution at the target's speed)
-    let sweep_steps = sweep
-        .as_ref()
-        .map_or(0, |s| s.steps(outputs, |h| sim.substeps(h)));
     crate::refuse_large(
-        &camkin::work::Work::system_simulation(sys, outputs * substeps + sweep_steps, outputs + 1),
+        &built.run_work(&plan, &sim, false, sweep.as_ref()),
         args.work.large,
         ", or use a coarser --step",
     )?;
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let run = sim
-        .run(outputs, substeps, plan.h(), |_| {
-            std::ops::ControlFlow::Continue(())
-        })
+        .run(outputs, plan.h_out, |_| std::ops::ControlFlow::Continue(()))
         .map_err(|e| dyn_err(name, e))?;
     let angle_of = |t: f64| plan.angle_of(t);
     let u = built.dynamics.metres_per_unit;
@@ -313,11 +308,10 @@ fn run_system(
     let h = camkin::human::human;
     let deg = |a: f64| h((a * 100.0).round() / 100.0);
     let mut text = format!(
-        "forces on {name} at {} rpm of {:?}, simulated over a revolution in {}° steps ({substeps} RK4 step{} each):\n",
+        "forces on {name} at {} rpm of {:?}, simulated over a revolution with outputs every {}° (its steps chosen by the integration's tolerances):\n",
         h((rpm * 10.0).round() / 10.0),
         sys.drivers().first().map_or("", |d| d.name.as_str()),
         h(step),
-        if substeps == 1 { "" } else { "s" },
     );
     let force = |x: f64| sig(x, 4);
     let never: Vec<String> = report

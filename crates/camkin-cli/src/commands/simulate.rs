@@ -10,7 +10,7 @@ use crate::output::{write_atomic, write_cell_table, Cell, Keyed, TableFormat};
 use crate::Failure;
 use anyhow::anyhow;
 use camkin::dynamics::{
-    AugmentedLagrangian, DynamicsError, Event, Sample, Simulation, StepAdvice, SystemSimulation,
+    AugmentedLagrangian, DynamicsError, Event, Sample, Simulation, SystemSimulation,
 };
 use camkin::table::Units;
 use camkin::table::{
@@ -18,7 +18,6 @@ use camkin::table::{
     system_event_columns, system_sample_cells, system_sample_columns, EventRow, SampleRow,
 };
 use rayon::prelude::*;
-use std::f64::consts::TAU;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -30,7 +29,8 @@ pub struct SimulateArgs {
     /// Cam revolutions to simulate (a system: its first driver's).
     #[arg(long, value_name = "N", default_value_t = 1.0, value_parser = crate::args::real, allow_negative_numbers = true)]
     pub revolutions: f64,
-    /// Output interval, degrees of cam angle (a system: of its first driver).
+    /// Output interval, degrees of cam angle (a system: of its first driver); the integration's
+    /// steps are chosen by --rtol and --atol, the outputs interpolated between them.
     #[arg(long, value_name = "DEG", default_value = "1")]
     pub step: RevolutionStep,
     /// Cam angle at time 0, degrees (the follower starts on the cam there).
@@ -42,9 +42,15 @@ pub struct SimulateArgs {
         allow_negative_numbers = true
     )]
     pub start_angle: f64,
-    /// Integration steps per output interval.
-    #[arg(long, value_name = "K", default_value_t = 1)]
-    pub substeps: usize,
+    /// Relative tolerance of the integration: each step's error is kept below RTOL times each
+    /// coordinate's size plus ATOL times its scale (the steps are chosen by it).
+    #[arg(long, value_name = "RTOL", default_value = "1e-10", value_parser = crate::args::real)]
+    pub rtol: f64,
+    /// Absolute tolerance of the integration, as a fraction of each coordinate's scale (a
+    /// length's: the mechanism's size; an angle's: a radian; a rate's: those over its time
+    /// scale).
+    #[arg(long, value_name = "ATOL", default_value = "1e-10", value_parser = crate::args::real)]
+    pub atol: f64,
     /// Directory for the time series, the events and the plots; the time series goes to stdout
     /// without it.
     #[arg(long, value_name = "DIR")]
@@ -72,8 +78,25 @@ fn dyn_err(e: DynamicsError) -> Failure {
         | DynamicsError::Interference { .. }
         | DynamicsError::Chatter { .. }
         | DynamicsError::Unassembled { .. }
-        | DynamicsError::StepTooLong { .. } => Failure::Input(anyhow!("{e}")),
+        | DynamicsError::DeadPoint { .. }
+        | DynamicsError::StepUnderflow { .. } => Failure::Input(anyhow!("{e}")),
         _ => Failure::Internal(anyhow!("{e}")),
+    }
+}
+
+/// `--rtol` and `--atol` checked, as the flags name them.
+pub(super) fn tolerances(rtol: f64, atol: f64) -> Result<camkin::dynamics::Tolerances, Failure> {
+    let t = camkin::dynamics::Tolerances {
+        relative: rtol,
+        absolute: atol,
+    };
+    match t.out_of_range() {
+        Some((which, value)) => Err(Failure::Input(anyhow!(
+            "--{}: {} must be from 1e-13 to 0.01",
+            if which == "relative" { "rtol" } else { "atol" },
+            camkin::human::human(value)
+        ))),
+        None => Ok(t),
     }
 }
 
@@ -85,12 +108,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         )));
     }
     let step = args.step.deg();
-    if !(1..=1000).contains(&args.substeps) {
-        return Err(Failure::Input(anyhow!(
-            "--substeps: {} must be from 1 to 1000",
-            args.substeps
-        )));
-    }
+    let tolerances = tolerances(args.rtol, args.atol)?;
     let outputs = (args.revolutions * 360.0 / step).round() as usize;
     if outputs > 10_000_000 {
         return Err(Failure::Input(anyhow!(
@@ -107,7 +125,12 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         )));
     }
     let (preset, name) = match model.by_solver(false)? {
-        BySolver::General { name, built, .. } => return run_system(args, &name, &built, outputs),
+        BySolver::General {
+            name, mut built, ..
+        } => {
+            built.dynamics.tolerances = tolerances;
+            return run_system(args, &name, &built, outputs);
+        }
         BySolver::Cam { preset, name, .. } => (preset, name),
     };
     let unit = preset.built.length_unit;
@@ -133,55 +156,17 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         camkin::geometry::deg_to_rad(args.start_angle),
     )
     .map_err(dyn_err)?;
+    sim.set_tolerances(tolerances).map_err(dyn_err)?;
+    let h = step.to_radians() / mech.cam().speed();
     crate::refuse_large(
-        &sim.run_work(&mech, outputs, args.substeps),
+        &sim.run_work(&mech, outputs, h),
         args.work.large,
         ", or simulate fewer --revolutions",
     )?;
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
-    let w = mech.cam().speed();
-    let h = step.to_radians() / w / args.substeps as f64;
-    // the damping and the spring must be resolved by the time step (the library refuses a longer
-    // one): say what would do it, within the flags' ranges
-    if let Some(advice) = sim.step_advice(step, args.substeps, w, 1000, RevolutionStep::MIN_DEG) {
-        let (rate, field, value) = sim.fastest_rate();
-        let h_ = camkin::human::human;
-        let fix = match advice {
-            StepAdvice::Substeps(n) => format!("use --substeps {n} or more"),
-            StepAdvice::FinerStep { step_deg } => {
-                // or the cam at a speed the step asked resolves: the follower's rate is the
-                // same, the cam angle a step covers is not
-                let rpm = step.to_radians() / (1000.0 * sim.max_step()) * 60.0 / TAU;
-                format!(
-                    "use --substeps 1000 and --step {}° or finer ({} rows a revolution), or raise cam.speed_rpm = {} to at least {} rpm for --step {}°",
-                    h_(step_deg),
-                    h_((360.0 / step_deg).ceil()),
-                    h_(w * 60.0 / TAU),
-                    h_(rpm),
-                    h_(step),
-                )
-            }
-            StepAdvice::FasterCam { rpm } => format!(
-                "the cam turns too slowly for outputs by cam angle (at most 1000 substeps of a {}° step): raise cam.speed_rpm to at least {} rpm",
-                h_(RevolutionStep::MIN_DEG),
-                h_(rpm)
-            ),
-            _ => "use a finer --step".into(),
-        };
-        return Err(Failure::Input(anyhow!(
-            "{field} = {}: too stiff for the time step {} s ({}° / ω / {} substeps): the follower's fastest rate is {} /s (c/m = {} /s, √(k/m) = {} /s); {fix}",
-            h_(value),
-            h_(h),
-            h_(step),
-            args.substeps,
-            h_(rate),
-            h_(params.damping / params.moving_mass(&mech.follower_joint())),
-            h_((params.spring_stiffness / params.moving_mass(&mech.follower_joint())).sqrt()),
-        )));
-    }
     let pb = indicatif::ProgressBar::new(outputs as u64);
     let run = sim
-        .run(outputs, args.substeps, h, |k| {
+        .run(outputs, h, |k| {
             pb.set_position(k as u64);
             std::ops::ControlFlow::Continue(())
         })
@@ -367,8 +352,10 @@ pub(super) fn system_err(name: &str, e: DynamicsError) -> Failure {
     match e {
         DynamicsError::Element { .. }
         | DynamicsError::System(_)
-        | DynamicsError::SystemStepTooLong { .. }
         | DynamicsError::Unassembled { .. }
+        | DynamicsError::DeadPoint { .. }
+        | DynamicsError::StepUnderflow { .. }
+        | DynamicsError::Tolerance { .. }
         | DynamicsError::Chatter { .. } => bad(format!("{name}: {e}")),
         _ => Failure::Internal(anyhow!("{name}: {e}")),
     }
@@ -404,13 +391,11 @@ fn run_system(
         return no_follow(args, name, built, range);
     }
     let (plan, mut sim) = built
-        .plan(args.revolutions, step, Some(args.substeps))
+        .plan(args.revolutions, step)
         .map_err(|e| plan_err(name, e))?;
-    // with --out, the pages' reference run at a tenth of the speed: ten times the steps at
-    // least (its time step is as the stiffest element needs)
-    let reference = if args.out.is_some() { 11 } else { 1 };
+    // with --out, the pages' reference run at a tenth of the speed
     crate::refuse_large(
-        &camkin::work::Work::system_simulation(sys, plan.steps() * reference, outputs + 1),
+        &built.run_work(&plan, &sim, args.out.is_some(), None),
         args.work.large,
         ", or simulate fewer --revolutions",
     )?;
@@ -418,7 +403,7 @@ fn run_system(
     let angle_of = |t: f64| plan.angle_of(t);
     let pb = indicatif::ProgressBar::new(outputs as u64);
     let run = sim
-        .run(plan.outputs, plan.substeps, plan.h(), |k| {
+        .run(plan.outputs, plan.h_out, |k| {
             if k % 256 == 0 {
                 pb.set_position(k as u64);
             }
@@ -524,7 +509,6 @@ fn run_system(
 /// A run's plan refused, as the command's flags name it.
 pub(super) fn plan_err(name: &str, e: camkin::spec::PlanError) -> Failure {
     use camkin::spec::{PlanError, PlanField};
-    let h = camkin::human::human;
     match e {
         PlanError::OutOfRange {
             field,
@@ -533,37 +517,9 @@ pub(super) fn plan_err(name: &str, e: camkin::spec::PlanError) -> Failure {
         } => {
             let flag = match field {
                 PlanField::Revolutions => "--revolutions",
-                PlanField::Step => "--step",
-                _ => "--substeps",
+                _ => "--step",
             };
             bad(format!("{flag}: {value} must be {range}"))
-        }
-        PlanError::TooStiff {
-            ref element,
-            rate,
-            step,
-            step_deg,
-            substeps,
-            max_step,
-            ..
-        } => {
-            let fix = match e.stiff_advice() {
-                Some(StepAdvice::Substeps(n)) => format!("use --substeps {n} or more"),
-                Some(StepAdvice::FinerStep { step_deg }) => {
-                    format!("use --substeps 1000 and --step {}° or finer", h(step_deg))
-                }
-                _ => format!(
-                    "no --step from 0.001° with up to 1000 --substeps resolves a rate of {} /s at this speed: check the element's stiffness and its bodies' masses (and their units)",
-                    h(rate)
-                ),
-            };
-            bad(format!(
-                "{name}: {element} is too stiff for the time step {} s ({}° of the driver / {substeps} substeps): its rate is {} /s, so the step must be at most {} s; {fix}",
-                h(step),
-                h(step_deg),
-                h(rate),
-                h(max_step),
-            ))
         }
         PlanError::Dynamics(e) => system_err(name, e),
         e => bad(format!("{name}: {e}")),
@@ -598,20 +554,13 @@ fn no_follow(
         revolutions: args.revolutions,
         after_impact_deg: 5.0,
     };
-    // the steps of the speeds tried and the bisection's, each a run at its speed (the fastest's
-    // time step the stiffest element's)
+    // the speeds tried and the bisection's, each a run at its speed
     let sys = &built.system;
-    let runs = ((to - from) / step).ceil() + (step.max(1.0)).log2().ceil() + 1.0;
     let sim =
         SystemSimulation::new(sys, built.dynamics.clone()).map_err(|e| system_err(name, e))?;
-    let per_rev_steps = {
-        let w = to * std::f64::consts::TAU / 60.0;
-        let h_out = args.step.deg().to_radians() / w;
-        (360.0 / args.step.deg()) * sim.substeps(h_out) as f64
-    };
-    let steps = (runs * per_rev_steps * args.revolutions) as usize;
+    let (steps, samples) = sweep.work(&sim);
     crate::refuse_large(
-        &camkin::work::Work::system_simulation(sys, steps, 0),
+        &camkin::work::Work::system_simulation(sys, steps, samples, 0),
         args.work.large,
         ", or sweep fewer speeds (a larger STEP, a narrower FROM:TO)",
     )?;

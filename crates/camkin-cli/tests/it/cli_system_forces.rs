@@ -158,7 +158,7 @@ fn the_checks_exit_3_and_the_files_flags_exit_2() {
         "--target-rpm",
         "1000000",
         "--step",
-        "0.05"
+        "0.01"
     )
     .assert()
     .code(2);

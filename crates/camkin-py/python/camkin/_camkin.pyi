@@ -55,7 +55,8 @@ class System:
         *,
         revolutions: float = 1.0,
         step_deg: float = 1.0,
-        substeps: Optional[int] = None,
+        rtol: float = 1e-10,
+        atol: float = 1e-10,
         large: bool = False,
     ) -> Tuple[Result, Result]: ...
     def lubrication(self, *, step_deg: float = 1.0, large: bool = False) -> Result: ...
@@ -129,7 +130,8 @@ class Mechanism:
         *,
         revolutions: float = 1.0,
         step_deg: float = 1.0,
-        substeps: int = 1,
+        rtol: float = 1e-10,
+        atol: float = 1e-10,
         start_angle_deg: float = 0.0,
         large: bool = False,
     ) -> Result: ...

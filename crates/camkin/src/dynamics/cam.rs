@@ -21,7 +21,6 @@ use super::follower::{check_params, Event, EventKind, FollowerDynamics, Sample};
 use super::system::{ContactEvent, SystemDynamicsOptions, SystemSimulation};
 use super::{AugmentedLagrangian, DynamicsError};
 use crate::cam::{CamFollowerSystem, FollowerJoint, Mechanism};
-use crate::field::Field;
 use crate::system::{BodyId, ForceElement, ForceKind};
 
 /// How far beyond the follower's rest position a slide's spring is seated, in cam sizes: the
@@ -33,7 +32,6 @@ const SEAT: f64 = 100.0;
 #[derive(Debug, Clone)]
 pub struct PresetSimulation {
     sim: SystemSimulation<'static>,
-    params: FollowerDynamics,
     joint: FollowerJoint,
     /// the follower's body index
     follower: usize,
@@ -161,11 +159,11 @@ impl PresetSimulation {
             al,
             hertz: Vec::new(),
             start_touching: Vec::new(),
+            tolerances: super::Tolerances::default(),
         };
-        let sim = SystemSimulation::owning(system, opts, Some(params.max_step(rotating)))?;
+        let sim = SystemSimulation::owning(system, opts)?;
         Ok(Self {
             sim,
-            params,
             joint,
             follower: fi,
             theta0,
@@ -174,15 +172,21 @@ impl PresetSimulation {
         })
     }
 
-    /// The follower's fastest free rate (see [`FollowerDynamics::fastest_rate`]).
-    pub fn fastest_rate(&self) -> (f64, Field, f64) {
-        self.params.fastest_rate(self.joint.is_rotating())
+    /// The tolerances of its steps ([`SystemSimulation::set_tolerances`]).
+    pub fn set_tolerances(&mut self, t: super::Tolerances) -> Result<(), DynamicsError> {
+        self.sim.set_tolerances(t)
     }
 
-    /// The longest step [`PresetSimulation::advance`] accepts, s
-    /// ([`FollowerDynamics::max_step`]).
-    pub fn max_step(&self) -> f64 {
-        self.params.max_step(self.joint.is_rotating())
+    /// The steps taken since the start: accepted and rejected
+    /// ([`SystemSimulation::steps_taken`]).
+    pub fn steps_taken(&self) -> (usize, usize) {
+        self.sim.steps_taken()
+    }
+
+    /// The longest step its integration is stable at, s
+    /// ([`SystemSimulation::stable_step`]).
+    pub fn stable_step(&self) -> f64 {
+        self.sim.stable_step()
     }
 
     /// The cam angle at time `t`, rad (`θ₀ + ω t + ½ α t²`: the driver's).
@@ -206,7 +210,6 @@ impl PresetSimulation {
 
     /// Advances by `h` seconds, locating lift-off and impact events inside the step.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
-        self.params.check_step(self.joint.is_rotating(), h)?;
         let events = self.sim.advance(h)?;
         Ok(events.iter().map(|e| self.event(e)).collect())
     }

@@ -186,20 +186,4 @@ impl FollowerDynamics {
             f64::INFINITY
         }
     }
-
-    /// Refuses a step `h` longer than [`FollowerDynamics::max_step`].
-    pub(crate) fn check_step(&self, rotating: bool, h: f64) -> Result<(), DynamicsError> {
-        let max_step = self.max_step(rotating);
-        if h > max_step {
-            let (rate, field, value) = self.fastest_rate(rotating);
-            return Err(DynamicsError::StepTooLong {
-                field,
-                value,
-                step: h,
-                rate,
-                max_step,
-            });
-        }
-        Ok(())
-    }
 }

@@ -29,6 +29,7 @@
 
 mod cam;
 mod dense;
+mod dopri;
 mod follower;
 mod forces;
 mod model;
@@ -41,6 +42,7 @@ mod solver;
 mod system;
 
 pub use cam::PresetSimulation;
+pub use dopri::Tolerances;
 pub use follower::{Event, EventKind, FollowerDynamics, Sample, MAX_RATE_STEP, REBOUND_TOLERANCE};
 pub use forces::{
     effective_modulus, hertz_line_pressure, surface_speeds, ForceState, ForceSweep, Forces,
@@ -49,7 +51,7 @@ pub use forces::{
 pub(crate) use model::GROUND;
 pub use no_follow::{no_follow_speed, NoFollow, SpeedSweep};
 pub use reduced::Reduced;
-pub use run::{Run, StepAdvice};
+pub use run::Run;
 pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
 pub use system::{
@@ -87,6 +89,15 @@ pub enum DynamicsError {
         residual: f64,
         /// the rows with the largest residuals, named
         rows: String,
+    },
+    /// A system's steps shrink to nothing before an instant where its rows become dependent:
+    /// its drivers take it into a dead point (toggle) it cannot be driven past.
+    #[error("at t = {} s the system reaches a dead point (toggle): its joints' rows become dependent there and {drivers} cannot take it on (its steps shrank to nothing); simulate it up to that instant, or drive it another way", crate::human::human(*.time))]
+    DeadPoint {
+        /// time, s
+        time: f64,
+        /// the drivers, named (`driver "drive rocker"`), or the empty string
+        drivers: String,
     },
     /// The multiplier iteration did not converge.
     #[error("at t = {} s: the augmented Lagrangian iteration did not converge ({iterations} iterations, residual {})", crate::human::human(*.time), crate::human::human(*.residual))]
@@ -151,20 +162,26 @@ pub enum DynamicsError {
     /// contact, held on by a spring) does not model.
     #[error("follower.conjugate: the follower is form-closed (its second curve takes the load where the first would lift off) and the dynamics models one contact held on by a spring: not modelled; its kinematics and both contacts are computed by the analysis and the contact listing")]
     FormClosed,
-    /// A time step too long for the follower's fastest rate (the damping's `c/m` or the spring's
-    /// `√(k/m)`): the explicit integration would be unstable.
-    #[error("{field} = {}: too stiff for the time step {} s: the follower's fastest rate is {} /s, so the step must be at most {} s", crate::human::human(*.value), crate::human::human(*.step), crate::human::human(*.rate), crate::human::human(*.max_step))]
-    StepTooLong {
-        /// the parameter that sets the rate (damping or spring stiffness)
-        field: crate::field::Field,
+    /// A tolerance out of [`Tolerances::RANGE`].
+    #[error("the {which} tolerance {}: must be from 1e-13 to 0.01", crate::human::human(*.value))]
+    Tolerance {
+        /// `"relative"` or `"absolute"`
+        which: &'static str,
         /// its value
         value: f64,
-        /// the step asked for, s
+    },
+    /// The step the tolerances need fell below the time's rounding: the motion changes faster
+    /// than the tolerances can follow (an element far stiffer than the rest, a force that jumps).
+    #[error("at t = {} s the step fell to {} s and the error was still above the tolerances (rtol {}, atol {}): the motion changes faster than they can follow (an element far stiffer than the rest, or a force that jumps); loosen them, or check the stiffest element's units", crate::human::human(*.time), crate::human::human(*.step), crate::human::human(*.rtol), crate::human::human(*.atol))]
+    StepUnderflow {
+        /// time, s
+        time: f64,
+        /// the last step tried, s
         step: f64,
-        /// the fastest rate, 1/s
-        rate: f64,
-        /// the longest stable step, s
-        max_step: f64,
+        /// the relative tolerance
+        rtol: f64,
+        /// the absolute tolerance
+        atol: f64,
     },
     /// An element of a system (a body, a contact) has a dynamic property out of range.
     #[error("{element}: {key} = {}: {reason}", crate::human::human(*.value))]
@@ -177,19 +194,6 @@ pub enum DynamicsError {
         value: f64,
         /// what it must be
         reason: &'static str,
-    },
-    /// A system's time step too long for its stiffest element: the explicit integration would
-    /// be unstable.
-    #[error("{element} is too stiff for the time step {} s: its rate is {} /s, so the step must be at most {} s", crate::human::human(*.step), crate::human::human(*.rate), crate::human::human(*.max_step))]
-    SystemStepTooLong {
-        /// the element (`spring "valve spring"`, `contact "seat"`)
-        element: String,
-        /// the step asked for, s
-        step: f64,
-        /// its rate, 1/s
-        rate: f64,
-        /// the longest stable step, s
-        max_step: f64,
     },
     /// The system cannot be simulated: an element names a missing body, or the starting
     /// positions cannot be assembled onto the joints and the contacts in touch.

@@ -66,13 +66,24 @@ impl SpeedSweep {
         }
     }
 
-    /// The time steps of the sweep's runs, at most (the slow run twice where it assembles a
-    /// contact the file's poses leave apart): each run a revolution at most at the
-    /// target's speed, `substeps_at(h)` the time steps an output step `h` s long takes.
-    pub fn steps(&self, outputs: usize, substeps_at: impl Fn(f64) -> usize) -> usize {
-        let runs = 9.0 + self.step_rpm.max(1.0).log2().ceil() + 1.0;
-        let h_target = self.step_deg.to_radians() / (self.to_rpm * std::f64::consts::TAU / 60.0);
-        (runs as usize) * outputs * substeps_at(h_target)
+    /// The time steps and samples of the sweep's runs, at most (the slow run twice where it
+    /// assembles a contact the file's poses leave apart; each run a revolution at most at the
+    /// target's speed) of `sim`'s system ([`super::SystemSimulation::steps_estimate_at`]).
+    pub fn work(&self, sim: &super::SystemSimulation<'_>) -> (f64, f64) {
+        // the speeds tried, the bisection's to its tolerance, the slow run again
+        let runs = ((self.to_rpm - self.from_rpm) / self.step_rpm).ceil()
+            + 1.0
+            + (self.step_rpm / self.tolerance_rpm).max(1.0).log2().ceil()
+            + 1.0;
+        let w = self.to_rpm * std::f64::consts::TAU / 60.0;
+        let h_target = self.step_deg.to_radians() / w;
+        let speed = self.to_rpm / sim.system().first_driver_rpm().abs().max(1e-300);
+        let duration = self.revolutions * std::f64::consts::TAU / w;
+        let samples = (self.revolutions * 360.0 / self.step_deg).ceil() + 1.0;
+        (
+            runs * sim.steps_estimate_at(duration, h_target, speed),
+            runs * samples,
+        )
     }
 }
 
@@ -106,10 +117,8 @@ fn first_opening(
     s.set_driver_law(0, DriverLaw::linear(start, w));
     let mut sim = SystemSimulation::new(&s, opts.clone())?;
     let closed_at_start = sim.sample()?.in_contact;
-    let h_out = sweep.step_deg.to_radians() / w;
-    let substeps = sim.substeps(h_out) as f64;
-    let h = h_out / substeps;
-    let steps = (sweep.revolutions * 360.0 / sweep.step_deg).round() as usize * substeps as usize;
+    let h = sweep.step_deg.to_radians() / w;
+    let steps = (sweep.revolutions * 360.0 / sweep.step_deg).round() as usize;
     let mut opened = vec![false; closed_at_start.len()];
     let mut last_impact = f64::NEG_INFINITY;
     for _ in 0..steps {

@@ -415,9 +415,31 @@ impl<'a> Reduced<'a> {
     }
 
     /// Advances by `h` seconds, locating lift-offs, impacts and jumps of the contact inside the
-    /// step.
+    /// step; a step longer than [`FollowerDynamics::max_step`] is cut into as many equal steps
+    /// as it needs.
     pub fn advance(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
-        self.params.check_step(self.rotating, h)?;
+        let max = self.params.max_step(self.rotating);
+        if h > max {
+            let n = (h / max).ceil();
+            if !(n <= 1e9) {
+                return Err(DynamicsError::Element {
+                    element: "the simulation".into(),
+                    key: "time step (s)",
+                    value: h,
+                    reason: "must be positive and finite",
+                });
+            }
+            let mut events = Vec::new();
+            for _ in 0..n as usize {
+                events.extend(self.advance_within(h / n)?);
+            }
+            return Ok(events);
+        }
+        self.advance_within(h)
+    }
+
+    /// [`Reduced::advance`] by a step within the stable one.
+    fn advance_within(&mut self, h: f64) -> Result<Vec<Event>, DynamicsError> {
         let mut events = std::mem::take(&mut self.pending);
         let end = self.t + h;
         let mut guard = 0;

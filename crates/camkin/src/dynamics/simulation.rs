@@ -5,7 +5,6 @@ use super::{
     AugmentedLagrangian, DynamicsError, Event, FollowerDynamics, PresetSimulation, Reduced, Sample,
 };
 use crate::cam::Mechanism;
-use crate::field::Field;
 
 /// A simulation of a cam (or gear) mechanism's follower with lift-off, impacts and, where the
 /// contact jumps, impacts without flight.
@@ -132,19 +131,52 @@ impl<'a> Simulation<'a> {
         }
     }
 
-    /// The work of a whole run of `mech`: `outputs` output intervals of `substeps` steps
-    /// ([`Simulation::work`]), the jump scan at the start (every 0.25°) and the kinematic
-    /// motion beside every sample (a sweep of its angles), about 200 bytes a sample held. What
-    /// every front end refuses a long run by.
+    /// The steps an output interval of `h` s takes, estimated: the one-coordinate model cuts it
+    /// into steps of [`super::FollowerDynamics::max_step`]; the preset system's steps are chosen
+    /// by its tolerances, each no longer than the interval nor, for long, than its stable step.
+    pub fn steps_per_interval(&self, h: f64) -> f64 {
+        let longest = match self {
+            Self::Preset(m) => m.stable_step(),
+            Self::Reduced(r) => r.params().max_step(r.is_rotating()),
+        };
+        (h / longest).ceil().max(1.0)
+    }
+
+    /// The work of a whole run of `mech`: `outputs` output intervals of `h` s
+    /// ([`Simulation::work`] of [`Simulation::steps_per_interval`] each), the jump scan at the
+    /// start (every 0.25°) and the kinematic motion beside every sample (a sweep of its angles),
+    /// about 200 bytes a sample held. What every front end refuses a long run by.
     pub fn run_work(
         &self,
         mech: &crate::cam::Mechanism,
         outputs: usize,
-        substeps: usize,
+        h: f64,
     ) -> crate::work::Work {
-        self.work(outputs as f64 * substeps as f64)
+        self.work(outputs as f64 * self.steps_per_interval(h))
             .and(&crate::work::Work::sweep(mech, 1441 + outputs, 1))
             .with_bytes(outputs as f64 * 200.0)
+    }
+
+    /// The tolerances of the preset system's steps (refused out of
+    /// [`super::Tolerances::RANGE`]); the one-coordinate model steps at its stable step whatever
+    /// they are (its flight is exact; its contact follows the kinematics).
+    pub fn set_tolerances(&mut self, t: super::Tolerances) -> Result<(), DynamicsError> {
+        match self {
+            Self::Preset(m) => m.set_tolerances(t),
+            Self::Reduced(_) => match t.out_of_range() {
+                Some((which, value)) => Err(DynamicsError::Tolerance { which, value }),
+                None => Ok(()),
+            },
+        }
+    }
+
+    /// The preset system's steps since the start, accepted and rejected; `None` for the
+    /// one-coordinate model (its steps are [`Simulation::steps_per_interval`] exactly).
+    pub fn steps_taken(&self) -> Option<(usize, usize)> {
+        match self {
+            Self::Preset(m) => Some(m.steps_taken()),
+            Self::Reduced(_) => None,
+        }
     }
 
     /// Advances by `h` seconds; the events located inside the step, in time order.
@@ -168,23 +200,6 @@ impl<'a> Simulation<'a> {
         match self {
             Self::Preset(m) => m.time(),
             Self::Reduced(r) => r.time(),
-        }
-    }
-
-    /// The follower's fastest free rate (1/s) and the parameter that sets it
-    /// ([`FollowerDynamics::fastest_rate`]).
-    pub fn fastest_rate(&self) -> (f64, Field, f64) {
-        match self {
-            Self::Preset(m) => m.fastest_rate(),
-            Self::Reduced(r) => r.params().fastest_rate(r.is_rotating()),
-        }
-    }
-
-    /// The longest step [`Simulation::advance`] accepts, s ([`FollowerDynamics::max_step`]).
-    pub fn max_step(&self) -> f64 {
-        match self {
-            Self::Preset(m) => m.max_step(),
-            Self::Reduced(r) => r.params().max_step(r.is_rotating()),
         }
     }
 

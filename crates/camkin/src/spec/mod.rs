@@ -72,7 +72,7 @@ pub use kinds::{DriverCoordinate, FollowerKind, JointKindName, ProfileKind};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
 #[cfg(feature = "text")]
 pub use model_file::{read_model, ModelFile, Preset, Solver};
-pub use run_plan::{PlanError, PlanField, RunPlan, MAX_REVOLUTIONS, MAX_SUBSTEPS, STEP_RANGE_DEG};
+pub use run_plan::{PlanError, PlanField, RunPlan, MAX_REVOLUTIONS, STEP_RANGE_DEG};
 pub use system::{BodySpec, DriverSpec, JointSpec, SystemSpec};
 pub use system_contact::ContactSpec;
 pub use system_dynamics::{GasForceSpec, SystemDynamicsSpec};

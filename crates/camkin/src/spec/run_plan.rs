@@ -1,15 +1,13 @@
 //! A simulated system's run over its sweep angle, planned once for every front end: outputs
-//! every `step` degrees of the first driver (or the cam), each output interval cut into as many
-//! time steps as asked or as the stiffest element needs; and the quasi-static reference run
-//! beside it (the same system at a tenth of the speed).
+//! every `step` degrees of the first driver (or the cam), the time steps between them chosen by
+//! the tolerances; and the quasi-static reference run beside it (the same system at a tenth of
+//! the speed).
 
 use super::BuiltSystem;
 use crate::dynamics::{DynamicsError, SystemSample, SystemSimulation};
 
 /// Most revolutions a run plans.
 pub const MAX_REVOLUTIONS: f64 = 1e4;
-/// Most time steps an output interval is cut into.
-pub const MAX_SUBSTEPS: usize = 1000;
 /// The output step's range, degrees of the sweep angle.
 pub const STEP_RANGE_DEG: (f64, f64) = (1e-3, 90.0);
 
@@ -24,19 +22,12 @@ pub struct RunPlan {
     pub step_deg: f64,
     /// output intervals (the samples are one more: the start's)
     pub outputs: usize,
-    /// time steps an output interval is cut into
-    pub substeps: usize,
 }
 
 impl RunPlan {
-    /// The time step, s.
-    pub fn h(&self) -> f64 {
-        self.h_out / self.substeps as f64
-    }
-
-    /// Time steps of the whole run.
-    pub fn steps(&self) -> usize {
-        self.outputs * self.substeps
+    /// The run's duration, s.
+    pub fn duration(&self) -> f64 {
+        self.h_out * self.outputs as f64
     }
 
     /// The sweep angle at the instant `t`, degrees.
@@ -54,8 +45,6 @@ pub enum PlanField {
     Revolutions,
     /// the output step, degrees
     Step,
-    /// the time steps an output interval is cut into
-    Substeps,
 }
 
 /// Why a run cannot be planned.
@@ -76,24 +65,6 @@ pub enum PlanError {
     /// speed.
     #[error("its first driver does not turn an angle at a constant speed: a simulation's outputs are at its angles")]
     NotAnAngle,
-    /// The substeps asked leave a time step longer than the stiffest element allows.
-    #[error("{element} is too stiff for the time step {} s ({}° of the driver / {substeps} substeps): its rate is {} /s, so the step must be at most {} s; use {need} substeps or more", crate::human::human(*.step), crate::human::human(*.step_deg), crate::human::human(*.rate), crate::human::human(*.max_step))]
-    TooStiff {
-        /// the stiffest element, named
-        element: String,
-        /// its rate, 1/s
-        rate: f64,
-        /// the time step asked, s
-        step: f64,
-        /// the output step, degrees
-        step_deg: f64,
-        /// the substeps asked
-        substeps: usize,
-        /// the longest step it allows, s
-        max_step: f64,
-        /// the fewest substeps that do
-        need: usize,
-    },
     /// The system file has no `[dynamics]`: its masses, gravity and forces are not meant for a
     /// simulation (its degrees of freedom are all driven, or it is a kinematic model).
     #[error("it has no [dynamics] table: a system is simulated with it (gravity, restitution; its bodies' masses and its force elements), see docs/systems.md, \"Dynamics of a system\"")]
@@ -103,44 +74,13 @@ pub enum PlanError {
     Dynamics(#[from] DynamicsError),
 }
 
-impl PlanError {
-    /// What resolves a [`PlanError::TooStiff`] within the settings' ranges: more substeps (at
-    /// most [`MAX_SUBSTEPS`]), else the most substeps and a finer output step (at least
-    /// [`STEP_RANGE_DEG`]'s least), else `None`: no output step resolves the element at this
-    /// speed (a rate beyond a simulation: a stiffness or a mass off by a unit, most often).
-    pub fn stiff_advice(&self) -> Option<crate::dynamics::StepAdvice> {
-        use crate::dynamics::StepAdvice;
-        let PlanError::TooStiff {
-            step_deg,
-            substeps,
-            need,
-            ..
-        } = self
-        else {
-            return None;
-        };
-        if *need <= MAX_SUBSTEPS {
-            return Some(StepAdvice::Substeps(*need));
-        }
-        // `need` substeps of `step_deg` resolve it: the most substeps, of a step this much finer
-        let _ = substeps;
-        let finer = step_deg * MAX_SUBSTEPS as f64 / *need as f64;
-        // rounded down to two significant digits
-        let unit = 10f64.powf(finer.log10().floor() - 1.0);
-        let finer = (finer / unit).floor() * unit;
-        (finer >= STEP_RANGE_DEG.0).then_some(StepAdvice::FinerStep { step_deg: finer })
-    }
-}
-
 impl BuiltSystem {
-    /// A run of `revolutions` of the sweep angle with outputs every `step_deg`, each output
-    /// interval cut into `substeps` time steps (`None`: the fewest the stiffest element
-    /// allows), and its simulation started: the plan every front end runs.
+    /// A run of `revolutions` of the sweep angle with outputs every `step_deg`, and its
+    /// simulation started: the plan every front end runs.
     pub fn plan(
         &self,
         revolutions: f64,
         step_deg: f64,
-        substeps: Option<usize>,
     ) -> Result<(RunPlan, SystemSimulation<'_>), PlanError> {
         let h = crate::human::human;
         if !self.simulated {
@@ -160,13 +100,6 @@ impl BuiltSystem {
                 range: "from 0.001 to 90 degrees",
             });
         }
-        if let Some(n) = substeps.filter(|n| !(1..=MAX_SUBSTEPS).contains(n)) {
-            return Err(PlanError::OutOfRange {
-                field: PlanField::Substeps,
-                value: n.to_string(),
-                range: "from 1 to 1000",
-            });
-        }
         // outputs at equal steps of the first driver's angle are equal steps of time only at a
         // constant speed
         let steady = self.system.drivers().first().is_some_and(|d| {
@@ -182,37 +115,58 @@ impl BuiltSystem {
         };
         let sim = SystemSimulation::new(&self.system, self.dynamics.clone())?;
         let h_out = (t1 - t0).abs();
-        let need = sim.substeps(h_out);
-        let substeps = match substeps {
-            None => need,
-            Some(n) if h_out / n as f64 <= sim.max_step() => n,
-            Some(n) => {
-                let (rate, element) = sim.fastest_rate();
-                return Err(PlanError::TooStiff {
-                    element,
-                    rate,
-                    step: h_out / n as f64,
-                    step_deg,
-                    substeps: n,
-                    max_step: sim.max_step(),
-                    need,
-                });
-            }
-        };
         let plan = RunPlan {
             t0,
             h_out,
             step_deg,
             outputs: (revolutions * 360.0 / step_deg).round().max(1.0) as usize,
-            substeps,
         };
         Ok((plan, sim))
     }
 
+    /// The work of a run planned by [`BuiltSystem::plan`] (its steps estimated by
+    /// [`SystemSimulation::steps_estimate`], its samples made and held), with the quasi-static
+    /// reference run beside it where `reference` (ten times as long:
+    /// [`BuiltSystem::quasi_static`]) and a speed sweep's runs where given: what every front end
+    /// refuses a long run by.
+    pub fn run_work(
+        &self,
+        plan: &RunPlan,
+        sim: &SystemSimulation<'_>,
+        reference: bool,
+        sweep: Option<&crate::dynamics::SpeedSweep>,
+    ) -> crate::work::Work {
+        let mut steps = sim.steps_estimate(plan.duration(), plan.h_out);
+        let mut samples = (plan.outputs + 1) as f64;
+        if reference {
+            steps += sim.steps_estimate(10.0 * plan.duration(), 10.0 * plan.h_out);
+            samples *= 2.0;
+        }
+        if let Some(s) = sweep {
+            let (more, sampled) = s.work(sim);
+            steps += more;
+            samples += sampled;
+        }
+        let work =
+            crate::work::Work::system_simulation(&self.system, steps, samples, plan.outputs + 1);
+        // where the stiffest element sets the steps, it is named
+        let stable = sim.stable_step();
+        if stable < plan.h_out {
+            let (rate, element) = sim.fastest_rate();
+            let h = crate::human::human;
+            work.because(format!(
+                "{element} moves at up to {} /s, so its steps are at most {} s",
+                h(rate),
+                h(stable)
+            ))
+        } else {
+            work
+        }
+    }
+
     /// The quasi-static reference of a run planned by [`BuiltSystem::plan`]: the samples at
     /// the same sweep angles with the first driver at a tenth of its speed (inertia forces a
-    /// hundredth), each output interval in at least as many time steps as the run's and as
-    /// many as the stiffest element needs.
+    /// hundredth).
     pub fn quasi_static(&self, plan: &RunPlan) -> Result<Vec<SystemSample>, DynamicsError> {
         let mut sys = self.system.clone();
         if let Some(d) = sys.drivers().first().cloned() {
@@ -238,11 +192,8 @@ impl BuiltSystem {
                 .unwrap_or(0.0),
         );
         let h_out = (t1 - t0).abs();
-        let substeps = sim.substeps(h_out).max(plan.substeps);
-        sim.run(plan.outputs, substeps, h_out / substeps as f64, |_| {
-            std::ops::ControlFlow::Continue(())
-        })
-        .map(|r| r.samples)
+        sim.run(plan.outputs, h_out, |_| std::ops::ControlFlow::Continue(()))
+            .map(|r| r.samples)
     }
 }
 
@@ -270,40 +221,15 @@ mod tests {
             Err(PlanError::OutOfRange { field, .. }) => Some(field),
             _ => None,
         };
+        assert_eq!(field(built.plan(0.0, 1.0)), Some(PlanField::Revolutions));
         assert_eq!(
-            field(built.plan(0.0, 1.0, None)),
+            field(built.plan(1e4 + 1.0, 1.0)),
             Some(PlanField::Revolutions)
         );
-        assert_eq!(
-            field(built.plan(1e4 + 1.0, 1.0, None)),
-            Some(PlanField::Revolutions)
-        );
-        assert_eq!(field(built.plan(1.0, 91.0, None)), Some(PlanField::Step));
-        assert_eq!(
-            field(built.plan(1.0, 1.0, Some(0))),
-            Some(PlanField::Substeps)
-        );
-        assert_eq!(
-            field(built.plan(1.0, 1.0, Some(1001))),
-            Some(PlanField::Substeps)
-        );
-    }
-
-    #[test]
-    fn a_plan_takes_the_fewest_substeps_the_stiffest_element_allows() {
-        let built = valve_train();
-        let (plan, sim) = built.plan(1.0, 1.0, None).expect("plan");
-        // one revolution of the camshaft at 1°, each degree too long a step for its springs
+        assert_eq!(field(built.plan(1.0, 91.0)), Some(PlanField::Step));
+        let (plan, _) = built.plan(1.0, 1.0).expect("plan");
+        // one revolution of the camshaft at 1°; the sweep angle of the run's instants
         assert_eq!(plan.outputs, 360);
-        assert!(plan.substeps >= 2, "{plan:?}");
-        assert!(plan.h() <= sim.max_step());
-        // one fewer substep would be too long a step, and asked for, it says how many
-        assert!(plan.h_out / (plan.substeps - 1) as f64 > sim.max_step());
-        match built.plan(1.0, 1.0, Some(plan.substeps - 1)) {
-            Err(PlanError::TooStiff { need, .. }) => assert_eq!(need, plan.substeps),
-            other => panic!("{other:?}"),
-        }
-        // the sweep angle of the run's instants: the output step apart
         let t = plan.t0 + 3.0 * plan.h_out;
         assert!((plan.angle_of(t) - 3.0).abs() < 1e-12);
     }

@@ -375,7 +375,7 @@ fn a_follower_across_the_dents_is_struck_at_each_jump() {
             let mut sim = Simulation::new(&m, params, AugmentedLagrangian::default()).unwrap();
             assert!(matches!(sim, Simulation::Reduced(_)));
             let run = sim
-                .run(720, 1, 0.5f64.to_radians() / w, |_| {
+                .run(720, 0.5f64.to_radians() / w, |_| {
                     std::ops::ControlFlow::Continue(())
                 })
                 .unwrap();

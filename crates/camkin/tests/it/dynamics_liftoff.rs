@@ -293,13 +293,13 @@ fn a_start_with_a_tensile_contact_force_is_in_flight_from_time_zero() {
     }
 }
 
-/// Issue 12: a time step too long for the follower's fastest rate is refused by the library (the
-/// explicit integration would be unstable: an overdamped follower at 1.7 × the limit gave impacts
-/// of 9–18 m/s where the resolved run gives 1 m/s); at the limit the free flight of a heavily
-/// damped follower decays as the closed form says it must (monotone, never overshooting the
-/// spring's rest position, which a step beyond the stability limit does).
+/// Issue 12 and issue 64: a time step longer than the follower's fastest rate allows is not
+/// refused: the steps inside it are chosen by the tolerances. An overdamped follower (where a
+/// fixed step 1.7 times RK4's limit once gave impacts of 9–18 m/s for the resolved run's 1 m/s)
+/// asked for outputs ten times its stable step apart stays on the run asked for outputs at a
+/// sixteenth of that, to 1e-6 of the eccentricity.
 #[test]
-fn a_step_too_long_for_the_damping_is_refused_and_the_longest_allowed_is_stable() {
+fn an_output_step_longer_than_the_damping_allows_is_cut_by_the_tolerances_not_refused() {
     let beta: f64 = 0.0;
     let w = 1.2 * w_crit();
     let m = eccentric_flat(w, Sense::Ccw, beta);
@@ -308,25 +308,10 @@ fn a_step_too_long_for_the_damping_is_refused_and_the_longest_allowed_is_stable(
     let mut sim = Simulation::starting_at(&m, p, AugmentedLagrangian::default(), 0.0).unwrap();
     let (cm, km) = (c / M, K / M);
     let rate = 0.5 * (cm + (cm * cm - 4.0 * km).sqrt());
-    assert_close(
-        sim.max_step(),
-        2.0 / rate,
-        1e-12,
-        2.0 / rate,
-        "longest step",
-    );
-    match sim.advance(1.01 * sim.max_step()) {
-        Err(camkin::dynamics::DynamicsError::StepTooLong { field, .. }) => {
-            assert_eq!(field.to_string(), "dynamics.damping")
-        }
-        other => panic!("not refused: {other:?}"),
-    }
-    // at the limit the run is stable and stays near a run resolved 16 times finer (beyond it,
-    // the explicit method amplifies the damper's decay instead of damping it)
-    let h = sim.max_step();
+    let h = 10.0 * 2.0 / rate;
     let mut fine = Simulation::starting_at(&m, p, AugmentedLagrangian::default(), 0.0).unwrap();
     let mut worst = 0.0f64;
-    for _ in 0..400 {
+    for _ in 0..100 {
         sim.advance(h).unwrap();
         for _ in 0..16 {
             fine.advance(h / 16.0).unwrap();
@@ -336,7 +321,7 @@ fn a_step_too_long_for_the_damping_is_refused_and_the_longest_allowed_is_stable(
         worst = worst.max((a.position - b.position).abs());
     }
     assert!(
-        worst <= 0.05 * E,
-        "the limit step departs from the resolved run by {worst:e} m"
+        worst <= 1e-6 * E,
+        "the long output step departs from the short one by {worst:e} m"
     );
 }

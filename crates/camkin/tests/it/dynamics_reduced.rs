@@ -92,7 +92,7 @@ fn simulate(m: &Mechanism, p: FollowerDynamics, step_deg: f64, revolutions: f64)
     let outputs = (revolutions * 360.0 / step_deg).round() as usize;
     let h = step_deg.to_radians() / m.cam().speed();
     let run = sim
-        .run(outputs, 1, h, |_| std::ops::ControlFlow::Continue(()))
+        .run(outputs, h, |_| std::ops::ControlFlow::Continue(()))
         .unwrap();
     Ran {
         samples: run.samples,

@@ -41,6 +41,7 @@ mod paper_cam;
 mod point_follower;
 mod pressure_angle;
 mod properties;
+mod run_work;
 mod several_contacts;
 mod spec;
 mod spline_finite_differences;

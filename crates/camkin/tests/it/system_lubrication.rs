@@ -67,11 +67,8 @@ fn simulate(text: &str) -> (camkin::spec::BuiltSystem, camkin::dynamics::SystemR
     let mut sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
     // a revolution at 300 rpm (0.2 s) in 2° steps
     let h_out = 0.2 / 180.0;
-    let sub = sim.substeps(h_out);
     let run = sim
-        .run(180, sub, h_out / sub as f64, |_| {
-            std::ops::ControlFlow::Continue(())
-        })
+        .run(180, h_out, |_| std::ops::ControlFlow::Continue(()))
         .unwrap();
     (built, run)
 }

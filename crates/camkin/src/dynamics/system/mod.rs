@@ -25,9 +25,10 @@
 
 mod centre;
 mod eval;
+mod integrate;
+mod project;
 mod rates;
 mod sparse;
-mod step;
 
 use super::follower::EventKind;
 use super::model::{Constraint, Load, Model, RigidBody};
@@ -46,9 +47,13 @@ pub struct SystemDynamicsOptions {
     /// Newton's coefficient of restitution of each contact, 0 to 1, in the system's order (a
     /// contact past the list's end: 0)
     pub restitution: Vec<f64>,
-    /// the augmented Lagrangian's parameters; by default its penalty is 1e4 of the largest mass
-    /// (see [`SystemDynamicsOptions::default`])
+    /// the augmented Lagrangian's parameters, where rows are dependent; by default its penalty
+    /// is 1e4 of the largest mass (see [`SystemDynamicsOptions::default`]). Its stabilisation
+    /// (`ξ`, `Ω`) is not used: positions and velocities are projected onto the rows after every
+    /// step, and a stabilisation at every stage drained a conservative system's energy
     pub al: AugmentedLagrangian,
+    /// the integration's tolerances (the step is chosen by them)
+    pub tolerances: super::Tolerances,
     /// each contact's line-contact width and materials for its Hertz pressure, in the system's
     /// order (none past the list's end)
     pub hertz: Vec<Option<ContactHertz>>,
@@ -89,6 +94,7 @@ impl Default for SystemDynamicsOptions {
                 penalty: 1e4,
                 ..AugmentedLagrangian::default()
             },
+            tolerances: super::Tolerances::default(),
         }
     }
 }
@@ -169,9 +175,6 @@ pub struct SystemRun {
 pub struct SystemSimulation<'a> {
     /// the system: borrowed from the caller, or owned (a preset built for the run)
     sys: std::borrow::Cow<'a, crate::system::System>,
-    /// the longest step, where the system's preset sets it from its own rule (a cam
-    /// follower's damped rate, [`super::FollowerDynamics::max_step`]) instead of the elements'
-    step_limit: Option<f64>,
     model: Model,
     opts: SystemDynamicsOptions,
     /// the model's constraint index of contact 0 (joints, then drivers, then contacts)
@@ -203,11 +206,9 @@ pub struct SystemSimulation<'a> {
     pub(super) last: std::cell::RefCell<Option<eval::Evaluated>>,
     /// buffers an evaluation reuses
     pub(super) scratch: std::cell::RefCell<eval::Scratch>,
-    /// buffers an RK4 step reuses
-    pub(super) stages: std::cell::RefCell<step::Stages>,
-    /// buffers of a step's end, its check for crossings and a projection's pairings
-    pub(super) spare_end: step::StepEnd,
-    pub(super) spare_check: step::StepCheck,
+    /// the integrator's stages, interpolant and step control
+    pub(super) integrator: integrate::Integrator,
+    /// a projection's pairings
     pub(super) spare_pairings: Vec<Option<Pairing>>,
     /// buffers of [`SystemSimulation::motion`]
     sampled: std::cell::RefCell<(Vec<Option<Pairing>>, eval::Accel)>,
@@ -237,23 +238,24 @@ impl<'a> SystemSimulation<'a> {
         Self::start(std::borrow::Cow::Borrowed(sys), opts)
     }
 
-    /// As [`SystemSimulation::new`], owning the system (a preset built for the run), with the
-    /// longest step `step_limit` where the preset has its own rule.
+    /// As [`SystemSimulation::new`], owning the system (a preset built for the run).
     pub(crate) fn owning(
         sys: crate::system::System,
         opts: SystemDynamicsOptions,
-        step_limit: Option<f64>,
     ) -> Result<SystemSimulation<'static>, DynamicsError> {
-        let mut sim = SystemSimulation::start(std::borrow::Cow::Owned(sys), opts)?;
-        sim.step_limit = step_limit;
-        Ok(sim)
+        SystemSimulation::start(std::borrow::Cow::Owned(sys), opts)
     }
 
     fn start(
         sys: std::borrow::Cow<'a, crate::system::System>,
-        opts: SystemDynamicsOptions,
+        mut opts: SystemDynamicsOptions,
     ) -> Result<Self, DynamicsError> {
         sys.check_elements()?;
+        if let Some((which, value)) = opts.tolerances.out_of_range() {
+            return Err(DynamicsError::Tolerance { which, value });
+        }
+        // the projection after every step holds the rows (see `SystemDynamicsOptions::al`)
+        (opts.al.xi, opts.al.omega) = (0.0, 0.0);
         let u = opts.metres_per_unit;
         if !(u > 0.0 && u.is_finite()) {
             return Err(DynamicsError::Element {
@@ -331,7 +333,14 @@ impl<'a> SystemSimulation<'a> {
         if gravity != Vec2::zeros() {
             forces.push(Load::Gravity(gravity));
         }
-        let size = sys.size();
+        // the system's size, with its bodies' centres of mass (a wheel pinned at its frame's
+        // origin has no other length), a unit where it has none: the scale of its tolerances
+        let size = sys
+            .bodies()
+            .iter()
+            .map(|b| b.pose.origin.coords.norm() + b.centre_of_mass.coords.norm())
+            .fold(sys.size(), f64::max);
+        let size = if size > 1e-300 { size } else { 1.0 };
         let model = Model {
             bodies,
             constraints,
@@ -349,7 +358,7 @@ impl<'a> SystemSimulation<'a> {
                 }
             })
             .fold(0.0f64, f64::max);
-        let speed_scale = rates.max((gravity.norm() * size).sqrt()).max(1e-300);
+        let speed_scale = rates.max((gravity.norm() * size).sqrt());
         let q: Vec<f64> = sys
             .bodies()
             .iter()
@@ -395,7 +404,6 @@ impl<'a> SystemSimulation<'a> {
             .collect();
         let mut sim = Self {
             sys,
-            step_limit: None,
             model,
             opts,
             first_contact,
@@ -414,14 +422,16 @@ impl<'a> SystemSimulation<'a> {
             pending: Vec::new(),
             last: std::cell::RefCell::new(None),
             scratch: Default::default(),
-            stages: Default::default(),
-            spare_end: Default::default(),
-            spare_check: Default::default(),
+            integrator: Default::default(),
             spare_pairings: Vec::new(),
             sampled: Default::default(),
             fastest: Default::default(),
             inv_mass: Vec::new(),
         };
+        if !(sim.speed_scale > 0.0) {
+            // nothing driven and no gravity: the springs' fastest rate, or a size a second
+            sim.speed_scale = size * sim.fastest_rate().0.max(1.0);
+        }
         sim.inv_mass = sim
             .model
             .bodies
@@ -523,6 +533,11 @@ impl<'a> SystemSimulation<'a> {
     /// The current time, s.
     pub fn time(&self) -> f64 {
         self.t
+    }
+
+    /// The system simulated.
+    pub fn system(&self) -> &crate::system::System {
+        &self.sys
     }
 
     /// Kinetic plus potential energy at the current state, N·L.
@@ -678,31 +693,6 @@ impl<'a> SystemSimulation<'a> {
             ],
             speed: [-kin.sliding_rate_a * u, -kin.sigma * kin.sliding_rate_b * u],
         })
-    }
-
-    /// `outputs` output steps of `substeps` steps of `h` s each, sampled at the start and after
-    /// each output step; `progress(k)` after the `k`-th (breaking off stops the run with
-    /// [`DynamicsError::Stopped`]).
-    pub fn run(
-        &mut self,
-        outputs: usize,
-        substeps: usize,
-        h: f64,
-        mut progress: impl FnMut(usize) -> std::ops::ControlFlow<()>,
-    ) -> Result<SystemRun, DynamicsError> {
-        let mut samples = Vec::with_capacity(outputs + 1);
-        let mut events = Vec::new();
-        samples.push(self.sample()?);
-        for k in 1..=outputs {
-            for _ in 0..substeps {
-                events.extend(self.advance(h)?);
-            }
-            samples.push(self.sample()?);
-            if progress(k).is_break() {
-                return Err(DynamicsError::Stopped { done: k, outputs });
-            }
-        }
-        Ok(SystemRun { samples, events })
     }
 }
 

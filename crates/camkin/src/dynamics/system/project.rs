@@ -1,12 +1,11 @@
-//! A simulated system's steps: RK4 over the equations of motion ([`super::eval`]), the
-//! projection onto the rows, and the events inside a step (lift-offs by bisection on the force,
-//! impacts by bisection on the gap).
+//! A simulated system's projection onto its rows (positions by Newton, then velocities), its
+//! contacts' gaps, and an impact's jump of the velocities.
 
-use super::super::follower::{EventKind, REBOUND_TOLERANCE};
+use super::super::follower::REBOUND_TOLERANCE;
 use super::super::projection::DenseRows;
 use super::super::DynamicsError;
-use super::eval::{Accel, Scratch};
-use super::{ContactEvent, SystemSimulation, MAX_EVENTS};
+use super::eval::Scratch;
+use super::SystemSimulation;
 use crate::contact::{self, Pairing, Surface};
 
 /// The largest residual (times the system's size, see
@@ -15,16 +14,11 @@ use crate::contact::{self, Pairing, Surface};
 /// ([`DynamicsError::Unassembled`]) rather than go on off them.
 const UNASSEMBLED: f64 = 1e-8;
 
-/// The buffers of an RK4 step: each stage's evaluation, a stage's state and pairings.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct Stages {
-    k: [Accel; 4],
-    q: Vec<f64>,
-    v: Vec<f64>,
-    /// the stages' second and third rates `v₂`, `v₃`
-    v2: Vec<f64>,
-    v3: Vec<f64>,
-}
+/// The residual (times the system's size) below which the positions are on the rows: a few
+/// ulps. A step's end lies off them by up to its tolerance (1e-10 of the size by default), and
+/// one Newton iteration from there lands at rounding; at 1e-14 a drift just under it was left
+/// uncorrected, and a follower's acceleration strayed from the kinematics' by 1.4e-13 of its peak.
+const ASSEMBLED: f64 = 1e-15;
 
 /// A state a step ends at: positions, rates and pairings (buffers swapped with the
 /// simulation's own, so that the state a step started from is kept without a copy).
@@ -35,58 +29,9 @@ pub(crate) struct StepEnd {
     pub(super) pairings: Vec<Option<Pairing>>,
 }
 
-/// The buffers of a step's check for crossings: the pairings it follows and its evaluation.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct StepCheck {
-    pairings: Vec<Option<Pairing>>,
-    accel: Accel,
-}
-
 impl SystemSimulation<'_> {
-    /// One RK4 step of `h` from the current state in the current modes, its end written to
-    /// `end`: the drivers' work over it.
-    fn rk4(&self, h: f64, end: &mut StepEnd) -> Result<f64, DynamicsError> {
-        let (t, q, qd, modes) = (self.t, &self.q, &self.qd, &self.in_contact);
-        let mut stages = std::mem::take(&mut *self.stages.borrow_mut());
-        let Stages {
-            k,
-            q: qs,
-            v: v4,
-            v2,
-            v3,
-        } = &mut stages;
-        let p = &mut end.pairings;
-        p.clone_from(&self.pairings);
-        let set = |out: &mut Vec<f64>, a: &[f64], b: &[f64], s: f64| {
-            out.clear();
-            out.extend(a.iter().zip(b).map(|(x, y)| x + s * y));
-        };
-        let [k1, k2, k3, k4] = k;
-        self.accel_into(t, q, qd, modes, p, k1)?;
-        set(qs, q, qd, 0.5 * h);
-        set(v2, qd, &k1.qdd, 0.5 * h);
-        self.accel_into(t + 0.5 * h, qs, v2, modes, p, k2)?;
-        set(qs, q, v2, 0.5 * h);
-        set(v3, qd, &k2.qdd, 0.5 * h);
-        self.accel_into(t + 0.5 * h, qs, v3, modes, p, k3)?;
-        set(qs, q, v3, h);
-        set(v4, qd, &k3.qdd, h);
-        self.accel_into(t + h, qs, v4, modes, p, k4)?;
-        let n = q.len();
-        end.q.clear();
-        end.q
-            .extend((0..n).map(|i| q[i] + h / 6.0 * (qd[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i])));
-        end.qd.clear();
-        end.qd.extend((0..n).map(|i| {
-            qd[i] + h / 6.0 * (k1.qdd[i] + 2.0 * k2.qdd[i] + 2.0 * k3.qdd[i] + k4.qdd[i])
-        }));
-        let work = h / 6.0 * (k1.power + 2.0 * k2.power + 2.0 * k3.power + k4.power);
-        *self.stages.borrow_mut() = stages;
-        Ok(work)
-    }
-
     /// The current state exchanged with `end`'s (buffers swapped, nothing copied).
-    fn swap_state(&mut self, end: &mut StepEnd) {
+    pub(super) fn swap_state(&mut self, end: &mut StepEnd) {
         std::mem::swap(&mut self.q, &mut end.q);
         std::mem::swap(&mut self.qd, &mut end.qd);
         std::mem::swap(&mut self.pairings, &mut end.pairings);
@@ -179,7 +124,7 @@ impl SystemSimulation<'_> {
     ) -> Result<bool, DynamicsError> {
         self.sparse_rows(modes, pairings, s)?;
         for _ in 0..8 {
-            if s.phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
+            if s.phi.iter().all(|p| p.abs() <= ASSEMBLED * self.size) {
                 break;
             }
             if !s.schur.factor(&s.rows, &self.inv_mass) {
@@ -278,7 +223,7 @@ impl SystemSimulation<'_> {
         let mut rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
         let mut x = vec![0.0; n];
         for _ in 0..8 {
-            if rows.phi.iter().all(|p| p.abs() <= 1e-14 * self.size) {
+            if rows.phi.iter().all(|p| p.abs() <= ASSEMBLED * self.size) {
                 break;
             }
             let b: Vec<f64> = rows.phi.iter().map(|p| -p).collect();
@@ -340,126 +285,12 @@ impl SystemSimulation<'_> {
         }
     }
 
-    /// Advances by `h` seconds, locating every lift-off and impact inside the step. A step
-    /// longer than [`SystemSimulation::max_step`] is refused, naming the stiffest element.
-    pub fn advance(&mut self, h: f64) -> Result<Vec<ContactEvent>, DynamicsError> {
-        if !(h > 0.0 && h.is_finite()) {
-            return Err(DynamicsError::Element {
-                element: "the simulation".into(),
-                key: "time step (s)",
-                value: h,
-                reason: "must be positive",
-            });
-        }
-        let max_step = self.max_step();
-        if h > max_step * (1.0 + 1e-12) {
-            let (rate, element) = self.fastest_rate();
-            return Err(DynamicsError::SystemStepTooLong {
-                element,
-                step: h,
-                rate,
-                max_step,
-            });
-        }
-        self.wrap_pairings();
-        let mut events = std::mem::take(&mut self.pending);
-        // the buffers of a step's end (after the swap, of its start) and of its force check
-        let mut end = std::mem::take(&mut self.spare_end);
-        let mut check = std::mem::take(&mut self.spare_check);
-        let mut p = Vec::new();
-        let stop = self.t + h;
-        while self.t < stop - 1e-15 * stop.abs().max(1.0) {
-            if events.len() > MAX_EVENTS {
-                return Err(DynamicsError::Chatter {
-                    time: self.t,
-                    events: MAX_EVENTS,
-                });
-            }
-            let dt = stop - self.t;
-            let (t0, work0) = (self.t, self.work);
-            let dw = self.rk4(dt, &mut end)?;
-            self.swap_state(&mut end);
-            self.t = stop;
-            self.work += dw;
-            self.project()?;
-            // what ended the step: a contact pulled, or a gap closed
-            std::mem::swap(&mut p, &mut check.pairings);
-            p.clone_from(&self.pairings);
-            self.accel_into(
-                self.t,
-                &self.q,
-                &self.qd,
-                &self.in_contact,
-                &mut p,
-                &mut check.accel,
-            )?;
-            let mut crossing = Vec::new();
-            for (k, &force) in check.accel.forces.iter().enumerate() {
-                if self.in_contact[k] {
-                    if force < 0.0 {
-                        crossing.push(k);
-                    }
-                } else if self.gap(&self.q, &self.qd, k, &mut p)? < -1e-12 * self.size {
-                    crossing.push(k);
-                }
-            }
-            if crossing.is_empty() {
-                // the pairings followed to this state: a flying contact's from its last, so that
-                // Newton stays on the nearest pair of points (from the pairing at lift-off, a
-                // disc's far side under a flat face was found once the follower had flown)
-                std::mem::swap(&mut self.pairings, &mut p);
-                std::mem::swap(&mut p, &mut check.pairings);
-                continue;
-            }
-            // back to the step's start
-            self.swap_state(&mut end);
-            (self.t, self.work) = (t0, work0);
-            // the first crossing, each located by bisection on its own quantity
-            let mut first = (f64::INFINITY, 0);
-            for &k in &crossing {
-                let tau = self.bisect(dt, k)?;
-                if tau < first.0 {
-                    first = (tau, k);
-                }
-            }
-            let (tau, k) = first;
-            let dw = self.rk4(tau, &mut end)?;
-            self.swap_state(&mut end);
-            self.t += tau;
-            self.work += dw;
-            if self.in_contact[k] {
-                self.project()?;
-                self.in_contact[k] = false;
-                events.push(ContactEvent {
-                    kind: EventKind::LiftOff,
-                    time: self.t,
-                    contact: k,
-                    approach: 0.0,
-                });
-            } else {
-                let mut p = self.pairings.clone();
-                self.gap(&self.q.clone(), &self.qd.clone(), k, &mut p)?;
-                self.pairings = p;
-                self.project()?;
-                let approach = self.impact(k)?;
-                events.push(ContactEvent {
-                    kind: EventKind::Impact,
-                    time: self.t,
-                    contact: k,
-                    approach,
-                });
-            }
-        }
-        (self.spare_end, self.spare_check) = (end, check);
-        Ok(events)
-    }
-
     /// Each contact's pairing parameters on a closed curve brought back into one period once
     /// they have run a period past it: a cam turning for hundreds of revolutions drives its
     /// parameter on without bound, and at `|u|` of thousands Newton cannot step below the
     /// parameter's own rounding (a run of 330 revolutions stopped so). The pairing stays the same
     /// point; the evaluation kept for the next step is asked again once (rarely).
-    fn wrap_pairings(&mut self) {
+    pub(super) fn wrap_pairings(&mut self) {
         for (k, c) in self.sys.contacts().iter().enumerate() {
             let Some(p) = self.pairings[self.first_contact + k].as_mut() else {
                 continue;
@@ -474,40 +305,10 @@ impl SystemSimulation<'_> {
         }
     }
 
-    /// The sub-step `τ ∈ (0, dt]` at whose end contact `k`'s force (in touch) or gap (in flight)
-    /// crosses zero, integrating in the current modes.
-    fn bisect(&self, dt: f64, k: usize) -> Result<f64, DynamicsError> {
-        let (mut lo, mut hi) = (0.0, dt);
-        let mut end = StepEnd::default();
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            self.rk4(mid, &mut end)?;
-            let StepEnd {
-                ref q,
-                qd: ref v,
-                pairings: ref mut p,
-            } = end;
-            let value = if self.in_contact[k] {
-                self.accel(self.t + mid, q, v, &self.in_contact, p)?.forces[k]
-            } else {
-                self.gap(q, v, k, p)? + 1e-12 * self.size
-            };
-            if value >= 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-            if hi - lo <= 1e-14 * (1.0 + self.t) {
-                break;
-            }
-        }
-        Ok(0.5 * (lo + hi))
-    }
-
     /// An impact of contact `k` now: the velocities projected so that its normal velocity
     /// reverses times the restitution, every joint, driver and contact in touch held; the
     /// approach speed. The contact re-engages when the rebound is negligible.
-    fn impact(&mut self, k: usize) -> Result<f64, DynamicsError> {
+    pub(super) fn impact(&mut self, k: usize) -> Result<f64, DynamicsError> {
         let mut modes = self.in_contact.clone();
         modes[k] = true;
         let mut pairings = self.pairings.clone();
@@ -524,7 +325,12 @@ impl SystemSimulation<'_> {
         let vn: f64 = rows.row(r).iter().zip(&self.qd).map(|(a, b)| a * b).sum();
         let mut targets = rows.target.to_vec();
         let e = self.opts.restitution.get(k).copied().unwrap_or(0.0);
-        targets[r] = -e * vn;
+        // a rebound too slow to part the curves re-engages the contact: the impact is plastic
+        // (left at `−e vₙ`, the curves parted at the rebound's speed under a closed contact until
+        // the next projection took it away, at a step's end: a jolt to the valve spring's coils
+        // that the step's length set)
+        let engaged = e * vn.abs() <= REBOUND_TOLERANCE * self.speed_scale;
+        targets[r] = if engaged { 0.0 } else { -e * vn };
         let mut x = vec![0.0; self.qd.len()];
         if !self
             .model
@@ -533,8 +339,7 @@ impl SystemSimulation<'_> {
             return Err(DynamicsError::Singular { time: self.t });
         }
         self.qd = x;
-        let approach = vn.abs();
-        self.in_contact[k] = e * approach <= REBOUND_TOLERANCE * self.speed_scale;
-        Ok(approach)
+        self.in_contact[k] = engaged;
+        Ok(vn.abs())
     }
 }
