@@ -480,28 +480,34 @@ impl<'a> SystemSimulation<'a> {
             }
             .into());
         }
-        // a contact pulled at the start leaves at once
-        let forces = sim
+        sim.release_pulled()?;
+        Ok(sim)
+    }
+
+    /// Every closed contact whose force is tensile now leaves at once (a lift-off the next
+    /// step reports).
+    fn release_pulled(&mut self) -> Result<(), DynamicsError> {
+        let forces = self
             .accel(
-                0.0,
-                &sim.q,
-                &sim.qd,
-                &sim.in_contact.clone(),
-                &mut sim.pairings.clone(),
+                self.t,
+                &self.q,
+                &self.qd,
+                &self.in_contact.clone(),
+                &mut self.pairings.clone(),
             )?
             .forces;
         for (k, &force) in forces.iter().enumerate() {
-            if sim.in_contact[k] && force < 0.0 {
-                sim.in_contact[k] = false;
-                sim.pending.push(ContactEvent {
+            if self.in_contact[k] && force < 0.0 {
+                self.in_contact[k] = false;
+                self.pending.push(ContactEvent {
                     kind: EventKind::LiftOff,
-                    time: 0.0,
+                    time: self.t,
                     contact: k,
                     approach: 0.0,
                 });
             }
         }
-        Ok(sim)
+        Ok(())
     }
 
     /// Body `i`'s state now (the ground's for [`super::GROUND`]).

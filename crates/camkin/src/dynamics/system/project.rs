@@ -92,6 +92,51 @@ impl SystemSimulation<'_> {
         Ok(rows)
     }
 
+    /// Sets every body's frame rates `(v_x, v_y, ω)` (L/s and rad/s, three a body in the
+    /// system's order) at the current positions, made consistent with the joints, the drivers
+    /// and the closed contacts by the mass-orthogonal projection (the least change in the kinetic
+    /// energy's metric, `min ½ Δq̇ᵀ M Δq̇` subject to `Φ_q q̇ = −Φ_t`: Bayo and Ledesma 1996); a
+    /// contact the new rates pull leaves at once. Returns the largest change the projection
+    /// made to a rate asked (an angle's times the size, in L/s), so that a user sees where what
+    /// they asked is not what the constraints allow.
+    pub fn set_frame_rates(&mut self, rates: &[f64]) -> Result<f64, DynamicsError> {
+        if rates.len() != self.qd.len() {
+            return Err(DynamicsError::Element {
+                element: "the simulation".into(),
+                key: "rates",
+                value: rates.len() as f64,
+                reason: "must be three for each body (v_x, v_y, ω)",
+            });
+        }
+        if let Some(&bad) = rates.iter().find(|r| !r.is_finite()) {
+            return Err(DynamicsError::Element {
+                element: "the simulation".into(),
+                key: "rates",
+                value: bad,
+                reason: "must be finite",
+            });
+        }
+        // the centres' rates: ẋ_G = ȯ + θ̇ J ρ, J ρ = (−ρ_y, ρ_x)
+        let arms = self.arms(&self.q);
+        let mut asked = rates.to_vec();
+        for (i, r) in arms.iter().enumerate() {
+            let w = rates[3 * i + 2];
+            asked[3 * i] -= w * r.y;
+            asked[3 * i + 1] += w * r.x;
+        }
+        self.qd.clone_from(&asked);
+        self.project()?;
+        let change = self
+            .qd
+            .iter()
+            .zip(&asked)
+            .enumerate()
+            .map(|(i, (a, b))| (a - b).abs() * if i % 3 == 2 { self.size } else { 1.0 })
+            .fold(0.0f64, f64::max);
+        self.release_pulled()?;
+        Ok(change)
+    }
+
     /// Positions by Newton onto the active rows (mass-orthogonal), then velocities onto
     /// `Φ_q q̇ = −Φ_t`.
     pub(super) fn project(&mut self) -> Result<(), DynamicsError> {
