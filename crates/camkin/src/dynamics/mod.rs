@@ -8,9 +8,11 @@
 //!
 //! # Formulation
 //!
-//! The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ` are solved at every evaluation by the
-//! augmented Lagrangian method of Bayo, García de Jalón and Serna (1988): with a penalty `α`,
-//! Baumgarte-type stabilisation of position and velocity drift (damping `ξ`, frequency `Ω`),
+//! The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ` are solved at every evaluation
+//! directly by the Schur complement of the rows ([`SystemSimulation`]) or, where rows are
+//! dependent, by the augmented Lagrangian method of Bayo, García de Jalón and Serna (1988): with
+//! a penalty `α` and, in its general form, Baumgarte-type stabilisation of position and velocity
+//! drift (damping `ξ`, frequency `Ω`; the simulations set both to zero, see below),
 //!
 //! ```text
 //! (M + Φ_qᵀ α Φ_q) q̈ = Q − Φ_qᵀ (λ* + α (−γ + 2ξΩ Φ̇ + Ω² Φ))
@@ -21,11 +23,12 @@
 //! `Φ̈ + 2ξΩ Φ̇ + Ω² Φ = 0`, so drift decays instead of growing, and `λ` is recovered from
 //! `Φ_qᵀλ = Q − M q̈` (the penalty only sets the speed of the iteration, not the answer).
 //!
-//! [`Simulation`] integrates with the classical Runge–Kutta method and, after every step,
-//! projects positions and velocities mass-orthogonally onto the constraints (Bayo and Ledesma
-//! 1996): `min ½ Δqᵀ M Δq` subject to `Φ(q + Δq) = 0` by Newton, then `Φ_q q̇ = −Φ_t`. With it the
-//! drift stays at rounding level (5e-14 of the cam's size over 100 revolutions) and the simulated
-//! acceleration of a follower in permanent contact equals the contact method's to 1e-13 of its peak.
+//! [`SystemSimulation`] (and the cam preset, [`Simulation`]) integrates with the Dormand–Prince
+//! 5(4) pair, its steps chosen by [`Tolerances`], and after every step projects positions and
+//! velocities mass-orthogonally onto the constraints (Bayo and Ledesma 1996): `min ½ Δqᵀ M Δq`
+//! subject to `Φ(q + Δq) = 0` by Newton, then `Φ_q q̇ = −Φ_t`. With it the drift stays at
+//! rounding level and the simulated acceleration of a follower in permanent contact equals the
+//! contact method's to 1e-13 of its peak.
 
 mod cam;
 mod dense;

@@ -3,8 +3,9 @@
 //! springs, dampers and torsion springs, and gravity.
 //!
 //! The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ` are solved at every evaluation by the
-//! augmented Lagrangian (see the [module docs](super)), integrated by the classical Runge–Kutta
-//! method, and after every step positions and velocities are projected mass-orthogonally onto
+//! Schur complement (the augmented Lagrangian where rows are dependent: see the
+//! [module docs](super)), integrated by the Dormand–Prince 5(4) pair with its steps chosen by the
+//! tolerances, and after every step positions and velocities are projected mass-orthogonally onto
 //! the active rows (Bayo and Ledesma 1996). The coordinates integrated are each body's centre of
 //! mass and angle, so `M` is diagonal (mass, mass, the inertia about the centre); a body's frame
 //! may sit anywhere on it (see [`centre`]), and the samples give the frames' coordinates.
@@ -82,7 +83,8 @@ impl Default for SystemDynamicsOptions {
     /// of 1e4 of the largest mass (not the cam model's 1e8): the matrix `M + α Φ_qᵀ Φ_q` it
     /// factors has a condition number of about the penalty, which costs the free motion that
     /// many ulps — at 1e8 a pendulum's energy wandered by 3e-9 of itself whatever the step, at
-    /// 1e4 by RK4's `h⁴` alone (2e-12 at 0.25 ms steps), in a few more iterations.
+    /// 1e4 by the integration's own error alone, in a few more iterations. Tolerances of 1e-10
+    /// ([`super::Tolerances::default`]).
     fn default() -> Self {
         Self {
             metres_per_unit: 1.0,
