@@ -424,7 +424,8 @@ impl PySystem {
             )?;
         }
         let (run, plan) = self.run_revolution(py, step_deg, large)?;
-        let angle_of = |t: f64| plan.angle_of(t);
+        // a run over the driver's angle (`BuiltSystem::plan`) has one at every instant
+        let angle_of = |t: f64| plan.angle_of(t).unwrap_or(f64::NAN);
         let report = camkin::report::SystemForces::new(
             sys,
             &run,
@@ -495,7 +496,8 @@ impl PySystem {
             ));
         };
         let (run, plan) = self.run_revolution(py, step_deg, large)?;
-        let angle_of = |t: f64| plan.angle_of(t);
+        // a run over the driver's angle (`BuiltSystem::plan`) has one at every instant
+        let angle_of = |t: f64| plan.angle_of(t).unwrap_or(f64::NAN);
         let report =
             camkin::report::SystemLubricationReport::new(&self.built.system, &run, req, angle_of);
         let (names, rows) = report.table();

@@ -155,8 +155,8 @@ impl PyMechanism {
 
 #[pymethods]
 impl PySystem {
-    /// simulate(*, revolutions=1.0, step_deg=1.0, rtol=1e-10, atol=1e-10, large=False)
-    /// -> (dict, dict)
+    /// simulate(*, revolutions=None, step_deg=1.0, duration=None, interval=None, rtol=1e-10,
+    /// atol=1e-10, large=False) -> (dict, dict)
     ///
     /// The system's dynamics (a system file with ``[dynamics]``; see docs/systems.md, "Dynamics of a
     /// system"): ``(samples, events)``, two dicts of NumPy arrays keyed by the columns of
@@ -164,42 +164,59 @@ impl PySystem {
     /// start and every ``step_deg`` of the first driver, each body's pose, rates and
     /// accelerations, each contact's force (N), gap and whether it is closed, the energy and the
     /// drivers' work; each lift-off and impact with its contact, instant and approach speed.
+    /// A run in time instead (a system without an angle driver: a pendulum, a mechanism
+    /// released from rest): ``duration`` seconds with a sample every ``interval`` (by default a
+    /// thousandth of it), or the file's ``[simulation]``; its samples have no driver angle.
     /// The integration's steps are chosen by the relative and absolute tolerances ``rtol`` and
     /// ``atol`` (as ``camkin simulate``'s ``--rtol`` and ``--atol``), the samples interpolated
-    /// between them.
+    /// between them. Where the starting state was changed to fit the joints (the poses
+    /// assembled, the bodies' ``velocity`` and ``angular_velocity`` projected), a
+    /// ``CamkinWarning`` says by how much.
     ///
     /// Example::
     ///
     ///     s = camkin.System.from_toml("examples/valve-train.toml")
     ///     samples, events = s.simulate(revolutions=1.0, step_deg=1.0)
     ///     samples.to_pandas().iloc[:, :4]
-    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, rtol = 1e-10, atol = 1e-10, large = false))]
+    #[pyo3(signature = (*, revolutions = None, step_deg = 1.0, duration = None, interval = None, rtol = 1e-10, atol = 1e-10, large = false))]
+    #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
-        #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
+        #[pyo3(from_py_with = crate::errors::real_or_none)] revolutions: Option<f64>,
         #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
+        #[pyo3(from_py_with = crate::errors::real_or_none)] duration: Option<f64>,
+        #[pyo3(from_py_with = crate::errors::real_or_none)] interval: Option<f64>,
         #[pyo3(from_py_with = crate::errors::real)] rtol: f64,
         #[pyo3(from_py_with = crate::errors::real)] atol: f64,
         large: bool,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let sys = &self.built.system;
         let tolerances = tolerances(rtol, atol)?;
-        let (run, plan) = self.run_revolutions(py, revolutions, step_deg, tolerances, large)?;
+        let asked = camkin::spec::RunSettings {
+            revolutions,
+            step_deg,
+            duration,
+            interval,
+        };
+        let (run, plan) = self.run_asked(py, &asked, tolerances, large)?;
+        let timed = plan.step_deg.is_none();
         let unit = self.built.length_unit.name();
         let mut samples = Columns::new(
-            camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz),
+            camkin::table::system_sample_columns(sys, unit, &self.built.dynamics.hertz, !timed),
             run.samples.len(),
         );
-        let grid = camkin::table::AngleGrid::new(0.0, step_deg);
         for (k, s) in run.samples.iter().enumerate() {
             samples.push(camkin::table::system_sample_cells(
-                grid.at(k),
+                plan.angle_at(k),
                 s,
                 &self.built.dynamics.hertz,
             ));
         }
-        let mut events = Columns::new(camkin::table::system_event_columns(unit), run.events.len());
+        let mut events = Columns::new(
+            camkin::table::system_event_columns(unit, !timed),
+            run.events.len(),
+        );
         for e in &run.events {
             let angle = plan.angle_of(e.time);
             events.push(camkin::table::system_event_cells(sys, e, angle));
@@ -217,50 +234,79 @@ impl PySystem {
         step_deg: f64,
         large: bool,
     ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
-        self.run_revolutions(py, 1.0, step_deg, Tolerances::default(), large)
+        let asked = camkin::spec::RunSettings {
+            revolutions: Some(1.0),
+            step_deg,
+            duration: None,
+            interval: None,
+        };
+        self.run_asked(py, &asked, Tolerances::default(), large)
     }
 
-    /// The simulation `simulate`, `forces` and `lubrication` share: `revolutions` of the first driver in
-    /// `step_deg` output steps (the library's plan), with the plan.
-    pub(crate) fn run_revolutions(
+    /// The simulation `simulate`, `forces` and `lubrication` share: the run `asked` (the
+    /// library's plan), with the plan; the start's changes to the state given warned of.
+    pub(crate) fn run_asked(
         &self,
         py: Python<'_>,
-        revolutions: f64,
-        step_deg: f64,
+        asked: &camkin::spec::RunSettings,
         tolerances: Tolerances,
         large: bool,
     ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
         use camkin::spec::{PlanError, PlanField};
         let dyn_err = |e: camkin::dynamics::DynamicsError| errors::input("", None, e.to_string());
-        let (plan, mut sim) = self
-            .built
-            .plan(revolutions, step_deg)
-            .map_err(|e| match e {
-                PlanError::OutOfRange {
-                    field,
-                    value,
-                    range,
-                } => {
-                    let key = match field {
-                        PlanField::Revolutions => "revolutions",
-                        _ => "step_deg",
-                    };
-                    errors::input(
-                        key,
-                        Some(value.clone()),
-                        format!("{key} = {value}: must be {range}"),
-                    )
-                }
-                PlanError::NotAnAngle => errors::input("driver", None, e.to_string()),
-                PlanError::Dynamics(e) => dyn_err(e),
-                e => errors::input("", None, e.to_string()),
-            })?;
+        let key = |field| match field {
+            PlanField::Revolutions => "revolutions",
+            PlanField::Duration => "duration",
+            PlanField::Interval => "interval",
+            _ => "step_deg",
+        };
+        let (plan, mut sim) = self.built.plan_asked(asked).map_err(|e| match e {
+            PlanError::OutOfRange {
+                field,
+                value,
+                range,
+            } => errors::input(
+                key(field),
+                Some(value.clone()),
+                format!("{} = {value}: must be {range}", key(field)),
+            ),
+            PlanError::Both {
+                field: PlanField::Interval,
+                other: PlanField::Step,
+            } => errors::input(
+                "interval",
+                None,
+                "interval is the output interval of a run in time: give duration= (seconds) with it, or [simulation] duration = … in the file".into(),
+            ),
+            PlanError::Both { field, other } => errors::input(
+                key(field),
+                None,
+                format!("{} with {}: {e}", key(field), key(other)),
+            ),
+            PlanError::NotAnAngle => errors::input(
+                "duration",
+                None,
+                "its first driver does not turn an angle at a constant speed, so it is not simulated over revolutions: give duration= (seconds), or [simulation] duration = … in the file".into(),
+            ),
+            PlanError::Dynamics(e) => dyn_err(e),
+            e => errors::input("", None, e.to_string()),
+        })?;
         sim.set_tolerances(tolerances).map_err(dyn_err)?;
         errors::refuse_large(
             &self.built.run_work(&plan, &sim, false, None),
             large,
-            ", or simulate fewer revolutions",
+            if plan.step_deg.is_none() {
+                ", or simulate a shorter duration"
+            } else {
+                ", or simulate fewer revolutions"
+            },
         )?;
+        for line in sim
+            .start_report()
+            .describe(&self.built.system, self.built.length_unit.name())
+        {
+            errors::warn(py, &line, None, None, None)?;
+        }
         let run = py.detach(|| {
             sim.run(plan.outputs, plan.h_out, |k| {
                 if k % 1024 == 0 && errors::interrupted().is_err() {

@@ -93,3 +93,47 @@ def test_two_contacts_of_one_name_and_an_oil_no_contact_takes_are_refused():
         camkin.System.from_toml(dry)
     assert e.value.field == "lubrication", e.value.field
     assert "no contact takes this oil" in str(e.value)
+
+
+PENDULUM = """length_unit = "mm"
+[dynamics]
+gravity = [0.0, -9.81]
+[[body]]
+name = "bar"
+mass = 2.0
+inertia = 0.06
+position = [300.0, 3.0]
+angular_velocity = 2.0
+[[joint]]
+name = "pin"
+kind = "revolute"
+bodies = ["ground", "bar"]
+at = [[0.0, 0.0], [-300.0, 0.0]]
+"""
+
+
+def test_a_driverless_system_runs_for_a_duration_as_the_command(tmp_path):
+    # issue 64: a run in time, the command's columns to the last bit; the start's assembly
+    # warned of; the settings refused by keyword
+    path = tmp_path / "pendulum.toml"
+    path.write_text(PENDULUM)
+    sys = camkin.System.from_toml(path)
+    with pytest.warns(camkin.errors.CamkinWarning, match="assembled onto the joints"):
+        samples, events = sys.simulate(duration=2.0, interval=0.25)
+    assert list(samples)[0] == "time_s"
+    assert len(samples["time_s"]) == 9 and samples["time_s"][-1] == 2.0
+    out = tmp_path / "run"
+    run_cli("simulate", path, "--duration", "2", "--interval", "0.25", "--out", out)
+    cli = csv_columns((out / "time_series.csv").read_text())
+    assert list(samples) == list(cli)
+    for key, cells in cli.items():
+        assert list(samples[key]) == [float(c) for c in cells], key
+    with pytest.raises(camkin.errors.InputError) as e:
+        sys.simulate()
+    assert e.value.field == "duration"
+    with pytest.raises(camkin.errors.InputError) as e:
+        sys.simulate(duration=1.0, revolutions=1.0)
+    assert e.value.field == "duration"
+    with pytest.raises(camkin.errors.InputError) as e:
+        sys.simulate(duration=-1.0)
+    assert e.value.field == "duration" and e.value.value == "-1"

@@ -190,7 +190,8 @@ pub fn analyze(
         });
     }
     // the impacts, for people: where and how fast
-    let angle_of = |t: f64| plan.angle_of(t);
+    // a run over the driver's angle (`BuiltSystem::plan`) has one at every instant
+    let angle_of = |t: f64| plan.angle_of(t).unwrap_or(f64::NAN);
     let events: Vec<Event> = run
         .events
         .iter()
@@ -232,13 +233,14 @@ pub fn table(
         &built.system,
         built.length_unit.name(),
         &built.dynamics.hertz,
+        true,
     );
     let rows = run
         .samples
         .iter()
         .enumerate()
         .map(|(k, s)| {
-            camkin::table::system_sample_cells(step_deg * k as f64, s, &built.dynamics.hertz)
+            camkin::table::system_sample_cells(Some(step_deg * k as f64), s, &built.dynamics.hertz)
         })
         .collect();
     Ok((columns, rows))

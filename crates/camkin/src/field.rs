@@ -138,6 +138,8 @@ pub enum SystemTable {
     CoilSpring,
     /// `[[gas_force]]`
     GasForce,
+    /// `[simulation]` (one table: its index is 0)
+    Simulation,
 }
 
 impl SystemTable {
@@ -154,6 +156,7 @@ impl SystemTable {
             SystemTable::Dynamics => "dynamics",
             SystemTable::CoilSpring => "coil_spring",
             SystemTable::GasForce => "gas_force",
+            SystemTable::Simulation => "simulation",
         }
     }
 }
@@ -206,6 +209,13 @@ keys! {
             CrankPerDriver = "crank_per_driver",
             PeriodDeg = "period_deg",
             Rolls = "rolls",
+            Velocity = "velocity",
+            AngularVelocity = "angular_velocity",
+            StartsClosed = "starts_closed",
+            /// (a run's, s)
+            Duration = "duration",
+            /// (a run's output interval, s)
+            Interval = "interval",
         }
     }
 }
@@ -448,7 +458,7 @@ impl Field {
             }
             Field::System(f) => {
                 p.push(Name(f.table.name()));
-                if f.table != SystemTable::Dynamics {
+                if !matches!(f.table, SystemTable::Dynamics | SystemTable::Simulation) {
                     p.push(Index(f.index));
                 }
                 match f.key {

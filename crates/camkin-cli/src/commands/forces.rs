@@ -302,7 +302,8 @@ fn run_system(
     let run = sim
         .run(outputs, plan.h_out, |_| std::ops::ControlFlow::Continue(()))
         .map_err(|e| dyn_err(name, e))?;
-    let angle_of = |t: f64| plan.angle_of(t);
+    // a run over the driver's angle (`BuiltSystem::plan`) has one at every instant
+    let angle_of = |t: f64| plan.angle_of(t).unwrap_or(f64::NAN);
     let u = built.dynamics.metres_per_unit;
     let report = SystemForces::new(sys, &run, u, angle_of);
     let h = camkin::human::human;

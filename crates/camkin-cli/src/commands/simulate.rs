@@ -1,7 +1,7 @@
 //! `camkin simulate`: a mechanism's dynamics with lift-off and impacts: a cam-follower file's
 //! follower ([`camkin::dynamics::Simulation`]), a system file's bodies
 //! ([`camkin::dynamics::SystemSimulation`], output every `--step` degrees of its first driver's
-//! angle).
+//! angle, or every `--interval` seconds of a `--duration` or its file's `[simulation]`).
 
 use crate::args::RevolutionStep;
 use crate::draw::chart::{self, Chart, Series};
@@ -26,9 +26,18 @@ pub struct SimulateArgs {
     /// Mechanism file (TOML) with a `[dynamics]` section, or a system file (`[[body]]`, `[[joint]]`,
     /// …) with one (see docs/systems.md, "Dynamics of a system").
     pub mechanism: PathBuf,
-    /// Cam revolutions to simulate (a system: its first driver's).
-    #[arg(long, value_name = "N", default_value_t = 1.0, value_parser = crate::args::real, allow_negative_numbers = true)]
-    pub revolutions: f64,
+    /// Cam revolutions to simulate (a system: its first driver's) [default: 1; a system file
+    /// with `[simulation]`: its duration instead].
+    #[arg(long, value_name = "N", value_parser = crate::args::real, allow_negative_numbers = true)]
+    pub revolutions: Option<f64>,
+    /// A system file: simulate this many seconds from t = 0 (outputs every --interval), with or
+    /// without drivers; instead of its [simulation] duration or --revolutions.
+    #[arg(long, value_name = "S", value_parser = crate::args::real, allow_negative_numbers = true)]
+    pub duration: Option<f64>,
+    /// A run in time's output interval, seconds [default: its file's, or a thousandth of the
+    /// duration].
+    #[arg(long, value_name = "S", value_parser = crate::args::real, allow_negative_numbers = true)]
+    pub interval: Option<f64>,
     /// Output interval, degrees of cam angle (a system: of its first driver); the integration's
     /// steps are chosen by --rtol and --atol, the outputs interpolated between them.
     #[arg(long, value_name = "DEG", default_value = "1")]
@@ -101,15 +110,16 @@ pub(super) fn tolerances(rtol: f64, atol: f64) -> Result<camkin::dynamics::Toler
 }
 
 pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
-    if !(args.revolutions.is_finite() && args.revolutions > 0.0 && args.revolutions <= 1e4) {
+    let revolutions = args.revolutions.unwrap_or(1.0);
+    if !(revolutions.is_finite() && revolutions > 0.0 && revolutions <= 1e4) {
         return Err(Failure::Input(anyhow!(
             "--revolutions: {} must be in (0, 10000]",
-            camkin::human::human(args.revolutions)
+            camkin::human::human(revolutions)
         )));
     }
     let step = args.step.deg();
     let tolerances = tolerances(args.rtol, args.atol)?;
-    let outputs = (args.revolutions * 360.0 / step).round() as usize;
+    let outputs = (revolutions * 360.0 / step).round() as usize;
     if outputs > 10_000_000 {
         return Err(Failure::Input(anyhow!(
             "{outputs} output rows is more than 10000000"
@@ -129,10 +139,16 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             name, mut built, ..
         } => {
             built.dynamics.tolerances = tolerances;
-            return run_system(args, &name, &built, outputs);
+            return run_system(args, &name, &built);
         }
         BySolver::Cam { preset, name, .. } => (preset, name),
     };
+    if args.duration.is_some() || args.interval.is_some() {
+        return Err(Failure::Input(anyhow!(
+            "--{}: a run in time is for a system file ([[body]], [[joint]], …, [dynamics]); {name} is a cam-follower file, simulated over --revolutions of its cam",
+            if args.duration.is_some() { "duration" } else { "interval" }
+        )));
+    }
     let unit = preset.built.length_unit;
     let params = mechfile::dynamics_of(&preset.built, &name)?;
     let mech = preset.built.mechanism;
@@ -368,7 +384,6 @@ fn run_system(
     args: &SimulateArgs,
     name: &str,
     built: &camkin::spec::BuiltSystem,
-    outputs: usize,
 ) -> Result<(), Failure> {
     if args.start_angle != 0.0 {
         return Err(bad(format!(
@@ -385,23 +400,46 @@ fn run_system(
     let unit = built.length_unit.name();
     let step = args.step.deg();
     if let Some(range) = &args.no_follow {
+        if args.duration.is_some() || args.interval.is_some() {
+            return Err(bad(format!(
+                "--no-follow {range}: a speed sweep simulates revolutions of the first driver, not a --duration"
+            )));
+        }
         if built.time_of(0.0).is_none() {
             return Err(plan_err(name, camkin::spec::PlanError::NotAnAngle));
         }
         return no_follow(args, name, built, range);
     }
     let (plan, mut sim) = built
-        .plan(args.revolutions, step)
+        .plan_asked(&camkin::spec::RunSettings {
+            revolutions: args.revolutions,
+            step_deg: step,
+            duration: args.duration,
+            interval: args.interval,
+        })
         .map_err(|e| plan_err(name, e))?;
-    // with --out, the pages' reference run at a tenth of the speed
+    // with --out, the pages' reference run at a tenth of the speed (of a sweep)
+    let timed = plan.step_deg.is_none();
     crate::refuse_large(
-        &built.run_work(&plan, &sim, args.out.is_some(), None),
+        &built.run_work(&plan, &sim, args.out.is_some() && !timed, None),
         args.work.large,
-        ", or simulate fewer --revolutions",
+        if timed {
+            ", or simulate a shorter --duration"
+        } else {
+            ", or simulate fewer --revolutions"
+        },
     )?;
+    let start = sim.start_report();
+    for line in start
+        .describe(sys, unit)
+        .iter()
+        .chain(&start.closed_contacts(sys))
+    {
+        crate::say!("camkin: {line}");
+    }
     let od = crate::out_dir::OutDir::begin_if(args.out.as_deref(), args.force.force)?;
     let angle_of = |t: f64| plan.angle_of(t);
-    let pb = indicatif::ProgressBar::new(outputs as u64);
+    let pb = indicatif::ProgressBar::new(plan.outputs as u64);
     let run = sim
         .run(plan.outputs, plan.h_out, |k| {
             if k % 256 == 0 {
@@ -412,14 +450,13 @@ fn run_system(
         .map_err(|e| system_err(name, e))?;
     let (samples, events) = (run.samples, run.events);
     pb.finish_and_clear();
-    let grid = camkin::table::AngleGrid::new(0.0, step);
     let rows: Vec<Vec<Cell>> = samples
         .iter()
         .enumerate()
-        .map(|(k, s)| system_sample_cells(grid.at(k), s, &built.dynamics.hertz))
+        .map(|(k, s)| system_sample_cells(plan.angle_at(k), s, &built.dynamics.hertz))
         .collect();
-    let columns = system_sample_columns(sys, unit, &built.dynamics.hertz);
-    let event_columns = system_event_columns(unit);
+    let columns = system_sample_columns(sys, unit, &built.dynamics.hertz, !timed);
+    let event_columns = system_event_columns(unit, !timed);
     let event_rows: Vec<Vec<Cell>> = events
         .iter()
         .map(|e| system_event_cells(sys, e, angle_of(e.time)))
@@ -435,16 +472,20 @@ fn run_system(
                 write_cell_table(w, TableFormat::Csv, &event_columns, event_rows.clone())
             })
             .map_err(Failure::output)?;
-            // the same system at a tenth of the speed: its motion nearly quasi-static (inertia
-            // forces a hundredth), the reference of the deviation plot
-            let slow = built.quasi_static(&plan).map_err(|e| system_err(name, e))?;
-            let impacts: Vec<f64> = events
+            let impacts = events
                 .iter()
-                .filter(|e| e.kind == camkin::dynamics::EventKind::Impact)
-                .map(|e| angle_of(e.time))
-                .collect();
-            crate::draw::simulation::write(&dir, name, built, &samples, &slow, step, &impacts)
-                .map_err(Failure::output)?;
+                .filter(|e| e.kind == camkin::dynamics::EventKind::Impact);
+            if timed {
+                crate::draw::simulation::write_timed(&dir, name, built, &samples, impacts.count())
+                    .map_err(Failure::output)?;
+            } else {
+                // the same system at a tenth of the speed: its motion nearly quasi-static
+                // (inertia forces a hundredth), the reference of the deviation plot
+                let slow = built.quasi_static(&plan).map_err(|e| system_err(name, e))?;
+                let impacts: Vec<f64> = impacts.filter_map(|e| angle_of(e.time)).collect();
+                crate::draw::simulation::write(&dir, name, built, &samples, &slow, step, &impacts)
+                    .map_err(Failure::output)?;
+            }
             od.commit().map_err(Failure::output)?;
         }
     }
@@ -468,15 +509,15 @@ fn run_system(
         );
     }
     // the events, for people
-    if events.is_empty() {
+    if events.is_empty() && !sys.contacts().is_empty() {
         crate::say!("camkin: no lift-off or impact: every contact stays as it started");
-    } else {
+    } else if !events.is_empty() {
         crate::say!(
             "{:>9} {:>20} {:>14} {:>18} {:>22}",
             "event",
             "contact",
             "time (s)",
-            "driver angle (°)",
+            if timed { "" } else { "driver angle (°)" },
             format!("approach speed ({unit}/s)")
         );
         for e in events.iter().take(50) {
@@ -492,7 +533,7 @@ fn run_system(
                 },
                 c,
                 e.time,
-                angle_of(e.time),
+                angle_of(e.time).map_or(String::new(), |a| format!("{a:.4}")),
                 e.approach
             );
         }
@@ -506,6 +547,17 @@ fn run_system(
     Ok(())
 }
 
+/// The flag of a run's setting.
+fn flag_of(field: camkin::spec::PlanField) -> &'static str {
+    use camkin::spec::PlanField;
+    match field {
+        PlanField::Revolutions => "--revolutions",
+        PlanField::Duration => "--duration",
+        PlanField::Interval => "--interval",
+        _ => "--step",
+    }
+}
+
 /// A run's plan refused, as the command's flags name it.
 pub(super) fn plan_err(name: &str, e: camkin::spec::PlanError) -> Failure {
     use camkin::spec::{PlanError, PlanField};
@@ -514,14 +566,20 @@ pub(super) fn plan_err(name: &str, e: camkin::spec::PlanError) -> Failure {
             field,
             value,
             range,
-        } => {
-            let flag = match field {
-                PlanField::Revolutions => "--revolutions",
-                _ => "--step",
-            };
-            bad(format!("{flag}: {value} must be {range}"))
+        } => bad(format!("{}: {value} must be {range}", flag_of(field))),
+        PlanError::Both {
+            field: PlanField::Interval,
+            other: PlanField::Step,
+        } => bad(
+            "--interval: is the output interval of a run in time: give --duration SECONDS with it (or [simulation] duration = … in the file)".into(),
+        ),
+        PlanError::Both { field, other } => {
+            bad(format!("{} with {}: {e}", flag_of(field), flag_of(other)))
         }
         PlanError::Dynamics(e) => system_err(name, e),
+        PlanError::NotAnAngle => bad(format!(
+            "{name}: its first driver does not turn an angle at a constant speed, so it is not simulated over revolutions: simulate it for a time (camkin simulate --duration SECONDS, or [simulation] duration = … in the file)"
+        )),
         e => bad(format!("{name}: {e}")),
     }
 }
@@ -551,7 +609,7 @@ fn no_follow(
         step_rpm: step,
         tolerance_rpm: 1.0,
         step_deg: args.step.deg(),
-        revolutions: args.revolutions,
+        revolutions: args.revolutions.unwrap_or(1.0),
         after_impact_deg: 5.0,
     };
     // the speeds tried and the bisection's, each a run at its speed
@@ -581,7 +639,7 @@ fn no_follow(
             );
             println!(
                 "found by simulating {} revolution(s) at speeds from {} rpm in {} rpm steps and bisecting to 1 rpm ({} simulations)",
-                h(args.revolutions),
+                h(args.revolutions.unwrap_or(1.0)),
                 h(from),
                 h(step),
                 nf.simulations

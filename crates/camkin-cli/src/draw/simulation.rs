@@ -228,3 +228,82 @@ pub fn efforts_page(
     chart::save(&chart, &dir.join("efforts"))?;
     Ok(())
 }
+
+/// The pages of a run in time (`--duration`, or a file's `[simulation]`): `motion` (the
+/// coordinate that travels farthest, by time, the impacts' instants marked in its title),
+/// `energy` (kinetic plus potential energy, the work of the drivers and tables of forces, and
+/// their difference: constant where the run is right), and `forces` (each contact's that ever
+/// closes), each `.svg` and `.png`.
+pub fn write_timed(
+    dir: &Path,
+    name: &str,
+    built: &BuiltSystem,
+    samples: &[SystemSample],
+    impacts: usize,
+) -> anyhow::Result<()> {
+    let sys = &built.system;
+    let u = built.length_unit.name();
+    let time = |f: &dyn Fn(&SystemSample) -> f64| -> Vec<(f64, f64)> {
+        samples.iter().map(|s| (s.time, f(s))).collect()
+    };
+    if let Some((body, c, _)) = farthest(samples) {
+        let k = 3 * body + c;
+        let motion = Chart {
+            title: format!(
+                "{name}: {:?} {} (the coordinate that travels farthest){}",
+                sys.bodies()[body].name,
+                ["x", "y"][c],
+                if impacts > 0 {
+                    format!("; {impacts} impacts (events.csv)")
+                } else {
+                    String::new()
+                }
+            ),
+            x_label: "time (s)".into(),
+            y_label: format!("{} ({u})", ["x", "y"][c]),
+            series: vec![Series::line("position", time(&|s| s.q[k]))],
+            log_y: false,
+            x_range: None,
+        };
+        chart::save(&motion, &dir.join("motion"))?;
+    }
+    let e0 = samples.first().map_or(0.0, |s| s.energy);
+    let energy = Chart {
+        title: format!(
+            "{name}: energy (kinetic + potential) less the work done on it, from the start"
+        ),
+        x_label: "time (s)".into(),
+        y_label: format!("N·{u}"),
+        series: vec![
+            Series::line("energy − start", time(&|s| s.energy - e0)),
+            Series::dashed("drivers' and force tables' work", time(&|s| s.driver_work)),
+            Series::line(
+                "energy − start − work (0 where the run is right; impacts and dampers lose)",
+                time(&|s| s.energy - e0 - s.driver_work),
+            ),
+        ],
+        log_y: false,
+        x_range: None,
+    };
+    chart::save(&energy, &dir.join("energy"))?;
+    if !sys.contacts().is_empty() {
+        let forces = Chart {
+            title: format!("{name}: contact forces"),
+            x_label: "time (s)".into(),
+            y_label: "compressive force (N)".into(),
+            series: (0..sys.contacts().len())
+                .filter(|&j| samples.iter().any(|s| s.contact_forces[j] > 0.0))
+                .map(|j| {
+                    Series::line(
+                        sys.contacts()[j].name.clone(),
+                        time(&|s| s.contact_forces[j]),
+                    )
+                })
+                .collect(),
+            log_y: false,
+            x_range: None,
+        };
+        chart::save(&forces, &dir.join("forces"))?;
+    }
+    Ok(())
+}

@@ -53,8 +53,10 @@ class System:
     def simulate(
         self,
         *,
-        revolutions: float = 1.0,
+        revolutions: Optional[float] = None,
         step_deg: float = 1.0,
+        duration: Optional[float] = None,
+        interval: Optional[float] = None,
         rtol: float = 1e-10,
         atol: float = 1e-10,
         large: bool = False,

@@ -159,6 +159,7 @@ impl PresetSimulation {
             al,
             hertz: Vec::new(),
             start_touching: Vec::new(),
+            initial_rates: Vec::new(),
             tolerances: super::Tolerances::default(),
         };
         let sim = SystemSimulation::owning(system, opts)?;

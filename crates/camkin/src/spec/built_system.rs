@@ -26,6 +26,8 @@ pub struct BuiltSystem {
     pub simulated: bool,
     /// its `[lubrication]`, each contact's (with a face width), when the file has it
     pub lubrication: Option<crate::report::SystemLubricationRequest>,
+    /// its `[simulation]`: a run in time, when the file has it
+    pub timed_run: Option<super::TimedRun>,
 }
 
 /// What the angles a system is swept over mean, and the instant of each.
@@ -103,6 +105,7 @@ impl BuiltSystem {
             coil_springs: Vec::new(),
             simulated: false,
             lubrication: None,
+            timed_run: None,
         })
     }
 
@@ -171,6 +174,7 @@ mod tests {
             coil_springs: Vec::new(),
             simulated: false,
             lubrication: None,
+            timed_run: None,
         };
         let t = built.times(&[0.0, 0.4f64.to_degrees()]).unwrap();
         assert_eq!(t[0], 0.0);

@@ -50,6 +50,7 @@ mod profile;
 mod run_plan;
 mod system;
 mod system_contact;
+mod system_driver;
 mod system_dynamics;
 mod system_elements;
 mod system_lubrication;
@@ -72,10 +73,13 @@ pub use kinds::{DriverCoordinate, FollowerKind, JointKindName, ProfileKind};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
 #[cfg(feature = "text")]
 pub use model_file::{read_model, ModelFile, Preset, Solver};
-pub use run_plan::{PlanError, PlanField, RunPlan, MAX_REVOLUTIONS, STEP_RANGE_DEG};
+pub use run_plan::{
+    PlanError, PlanField, RunPlan, RunSettings, TimedRun, MAX_DURATION, MAX_OUTPUTS,
+    MAX_REVOLUTIONS, STEP_RANGE_DEG,
+};
 pub use system::{BodySpec, DriverSpec, JointSpec, SystemSpec};
 pub use system_contact::ContactSpec;
-pub use system_dynamics::{GasForceSpec, SystemDynamicsSpec};
+pub use system_dynamics::{GasForceSpec, SimulationSpec, SystemDynamicsSpec};
 pub use system_elements::{DamperSpec, SpringSpec, TorsionSpringSpec};
 pub use system_lubrication::SystemLubricationSpec;
 

@@ -28,10 +28,9 @@
 //! ```
 
 use super::build::{
-    coordinate, direction, finite, length_unit, point, positive, BuildOptions, SpecError,
-    SpecWarning,
+    direction, finite, length_unit, point, positive, BuildOptions, SpecError, SpecWarning,
 };
-use super::kinds::{DriverCoordinate, JointKindName};
+use super::kinds::JointKindName;
 use super::profile::Place;
 use super::system_elements::within;
 use super::{BuiltSystem, SweepAngle};
@@ -41,8 +40,7 @@ use crate::body::Pose;
 use crate::field::{Field, FollowerField, ProfileField, SystemField, SystemKey, SystemTable};
 use crate::geometry::Point2;
 use crate::system::{
-    Body, BodyId, Contact, Coordinate, Driver, DriverLaw, ForceElement, ForceKind, Joint,
-    JointKind, System,
+    Body, BodyId, Contact, Driver, ForceElement, ForceKind, Joint, JointKind, System,
 };
 use std::collections::HashMap;
 
@@ -86,6 +84,10 @@ pub struct SystemSpec {
     /// `[lubrication]`: the oil of every contact with a face width (for dynamics)
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubrication: Option<super::SystemLubricationSpec>,
+    /// `[simulation]`: a run in time, its duration and output interval (for dynamics; a system
+    /// without an angle driver needs it, or the front end's duration)
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub simulation: Option<super::SimulationSpec>,
 }
 
 /// `[[body]]`.
@@ -107,6 +109,13 @@ pub struct BodySpec {
     pub position: Option<[f64; 2]>,
     /// its frame's starting angle, degrees (default 0)
     pub angle_deg: Option<f64>,
+    /// its frame origin's starting velocity `[v_x, v_y]`, length unit/s (for dynamics; default
+    /// at rest, or what the drivers give it): made consistent with the joints, drivers and
+    /// closed contacts at the start, and the change reported
+    #[serde(default, deserialize_with = "super::pair::option")]
+    pub velocity: Option<[f64; 2]>,
+    /// its starting angular velocity, rad/s counter-clockwise (for dynamics; as `velocity`)
+    pub angular_velocity: Option<f64>,
 }
 
 /// `[[joint]]`.
@@ -325,78 +334,7 @@ impl SystemSpec {
                     reason: "the ground does not move: drive a body".into(),
                 });
             }
-            let start = within(
-                at(T::Driver, i, K::Start),
-                finite(at(T::Driver, i, K::Start), d.start.unwrap_or(0.0))?,
-                0.0,
-                1e9,
-            )?;
-            let acc = within(
-                at(T::Driver, i, K::Acceleration),
-                finite(
-                    at(T::Driver, i, K::Acceleration),
-                    d.acceleration.unwrap_or(0.0),
-                )?,
-                0.0,
-                1e15,
-            )?;
-            let coord =
-                DriverCoordinate::parse(&d.coordinate).ok_or_else(|| SpecError::Unknown {
-                    field: at(T::Driver, i, K::Coordinate),
-                    value: d.coordinate.clone(),
-                    what: "a coordinate",
-                    known: DriverCoordinate::names(),
-                })?;
-            let (coordinate, law) = match coord {
-                DriverCoordinate::Angle => {
-                    if d.speed.is_some() {
-                        return Err(SpecError::Rule {
-                            field: at(T::Driver, i, K::Speed),
-                            reason: "an angle's driver takes speed_rpm, not speed".into(),
-                        });
-                    }
-                    let rpm = finite(
-                        at(T::Driver, i, K::SpeedRpm),
-                        d.speed_rpm.ok_or_else(|| SpecError::Rule {
-                            field: at(T::Driver, i, K::Coordinate),
-                            reason: "an angle's driver needs speed_rpm".into(),
-                        })?,
-                    )?;
-                    within(at(T::Driver, i, K::SpeedRpm), rpm, 0.0, 1e9)?;
-                    (
-                        Coordinate::Angle,
-                        DriverLaw::Quadratic {
-                            start: start.to_radians(),
-                            rate: rpm * std::f64::consts::TAU / 60.0,
-                            acceleration: acc.to_radians(),
-                        },
-                    )
-                }
-                c @ (DriverCoordinate::X | DriverCoordinate::Y) => {
-                    if d.speed_rpm.is_some() {
-                        return Err(SpecError::Rule {
-                            field: at(T::Driver, i, K::SpeedRpm),
-                            reason: format!(
-                                "a driver of {c} takes speed (length/s), not speed_rpm"
-                            ),
-                        });
-                    }
-                    let v = coordinate(at(T::Driver, i, K::Speed), d.speed.unwrap_or(0.0))?;
-                    within(at(T::Driver, i, K::Speed), v, 0.0, 1e12)?;
-                    (
-                        if c == DriverCoordinate::X {
-                            Coordinate::X
-                        } else {
-                            Coordinate::Y
-                        },
-                        DriverLaw::Quadratic {
-                            start: scale * start,
-                            rate: scale * v,
-                            acceleration: scale * acc,
-                        },
-                    )
-                }
-            };
+            let (coordinate, law) = super::system_driver::law(d, i, scale)?;
             if let Some((k, _)) = self.driver[..i]
                 .iter()
                 .enumerate()
@@ -430,6 +368,11 @@ impl SystemSpec {
             None => (None, 0.0),
         };
         let mut restitution = Vec::with_capacity(self.contact.len());
+        let start_touching = self
+            .contact
+            .iter()
+            .map(|c| c.starts_closed == Some(true))
+            .collect();
         let mut hertz = Vec::with_capacity(self.contact.len());
         let mut lubricated = Vec::with_capacity(self.contact.len());
         for (i, c) in self.contact.iter().enumerate() {
@@ -696,6 +639,16 @@ impl SystemSpec {
             let find = |name: &str| body(T::GasForce, i, K::Body, name);
             sys.add_table_force(super::system_dynamics::gas_force(g, i, scale, &find)?);
         }
+        let timed_run = match (&self.simulation, &self.dynamics) {
+            (Some(s), Some(_)) => Some(super::system_dynamics::timed_run(s)?),
+            (Some(_), None) => {
+                return Err(SpecError::Rule {
+                    field: at(T::Simulation, 0, K::Table),
+                    reason: "a simulation moves the system by its forces: give it a [dynamics] table (gravity, restitution)".into(),
+                })
+            }
+            (None, _) => None,
+        };
         // as many rows as coordinates, unless forces move the free degrees of freedom
         let (rows, coords) = (sys.rows(), 3 * sys.bodies().len());
         if rows != coords && self.dynamics.is_none() {
@@ -726,6 +679,8 @@ impl SystemSpec {
             },
             restitution,
             hertz,
+            start_touching,
+            initial_rates: super::system_dynamics::initial_rates(&self.body, scale)?,
             ..crate::dynamics::SystemDynamicsOptions::default()
         };
         if let (Some(_), None) = (&self.lubrication, &self.dynamics) {
@@ -752,6 +707,7 @@ impl SystemSpec {
             dynamics,
             coil_springs,
             simulated: self.dynamics.is_some(),
+            timed_run,
             lubrication: self.lubrication.as_ref().map(|_| {
                 crate::report::SystemLubricationRequest {
                     contacts: lubricated,

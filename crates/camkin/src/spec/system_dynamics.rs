@@ -195,3 +195,88 @@ pub(super) fn smooth_enough(
     }
     Ok(())
 }
+
+/// `[simulation]` of a system file: a run in time.
+///
+/// ```toml
+/// [simulation]
+/// duration = 2.0      # s
+/// interval = 0.001    # s between outputs (default a thousandth of the duration)
+/// ```
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SimulationSpec {
+    /// how long, s
+    pub duration: f64,
+    /// the output interval, s (default a thousandth of the duration)
+    pub interval: Option<f64>,
+}
+
+/// The `[simulation]` table's run, its settings checked where they are written.
+pub(super) fn timed_run(s: &SimulationSpec) -> Result<super::TimedRun, SpecError> {
+    super::TimedRun::new(s.duration, s.interval).map_err(|e| match e {
+        super::PlanError::OutOfRange {
+            field,
+            value,
+            range,
+        } => SpecError::Invalid {
+            field: Field::System(SystemField {
+                table: SystemTable::Simulation,
+                index: 0,
+                key: if field == super::PlanField::Interval {
+                    SystemKey::Interval
+                } else {
+                    SystemKey::Duration
+                },
+            }),
+            value,
+            reason: format!("must be {range}"),
+        },
+        e => SpecError::Rule {
+            field: Field::System(SystemField {
+                table: SystemTable::Simulation,
+                index: 0,
+                key: SystemKey::Table,
+            }),
+            reason: e.to_string(),
+        },
+    })
+}
+
+/// Each body's starting frame rates `(v_x, v_y, ω)` where its `velocity` and
+/// `angular_velocity` give them (lengths times `scale`).
+pub(super) fn initial_rates(
+    bodies: &[super::BodySpec],
+    scale: f64,
+) -> Result<Vec<[Option<f64>; 3]>, SpecError> {
+    use super::system_elements::within;
+    bodies
+        .iter()
+        .enumerate()
+        .map(|(i, b)| {
+            let at = |key| {
+                Field::System(SystemField {
+                    table: SystemTable::Body,
+                    index: i,
+                    key,
+                })
+            };
+            let v = b
+                .velocity
+                .map(|v| super::build::point(at(SystemKey::Velocity), v))
+                .transpose()?;
+            if let Some(v) = v {
+                within(at(SystemKey::Velocity), v.x, 0.0, 1e12)?;
+                within(at(SystemKey::Velocity), v.y, 0.0, 1e12)?;
+            }
+            let w = b
+                .angular_velocity
+                .map(|w| {
+                    super::build::finite(at(SystemKey::AngularVelocity), w)
+                        .and_then(|w| within(at(SystemKey::AngularVelocity), w, 0.0, 1e9))
+                })
+                .transpose()?;
+            Ok([v.map(|v| scale * v.x), v.map(|v| scale * v.y), w])
+        })
+        .collect()
+}

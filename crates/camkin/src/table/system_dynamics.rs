@@ -10,13 +10,19 @@ use crate::dynamics::{ContactEvent, EventKind, SystemSample};
 use crate::system::System;
 
 /// The columns of a simulated system's samples, lengths in `unit`; each contact with a face
-/// width in `hertz` adds its Hertz pressure (`{contact}_hertz_MPa`).
+/// width in `hertz` adds its Hertz pressure (`{contact}_hertz_MPa`). A run over the first
+/// driver's angle (`angles`) starts with it; a run in time with the time.
 pub fn system_sample_columns(
     sys: &System,
     unit: &str,
     hertz: &[Option<crate::dynamics::ContactHertz>],
+    angles: bool,
 ) -> Vec<String> {
-    let mut c = vec!["driver_angle_deg".to_string(), "time_s".to_string()];
+    let mut c = Vec::new();
+    if angles {
+        c.push("driver_angle_deg".to_string());
+    }
+    c.push("time_s".to_string());
     for b in sys.bodies() {
         c.extend(body_columns(&key(&b.name), unit));
     }
@@ -41,14 +47,16 @@ pub fn system_sample_columns(
     c
 }
 
-/// One sample's row at driver angle `angle_deg` (under [`system_sample_columns`] with the same
-/// `hertz`; a Hertz pressure that is not defined is an empty cell).
+/// One sample's row at driver angle `angle_deg` (none in a run in time; under
+/// [`system_sample_columns`] with the same `hertz`; a Hertz pressure that is not defined is an
+/// empty cell).
 pub fn system_sample_cells(
-    angle_deg: f64,
+    angle_deg: Option<f64>,
     s: &SystemSample,
     hertz: &[Option<crate::dynamics::ContactHertz>],
 ) -> Vec<Cell> {
-    let mut c = vec![Cell::Num(Some(angle_deg)), Cell::Num(Some(s.time))];
+    let mut c: Vec<Cell> = angle_deg.map(|a| Cell::Num(Some(a))).into_iter().collect();
+    c.push(Cell::Num(Some(s.time)));
     for i in 0..s.q.len() / 3 {
         let k = 3 * i;
         for v in [
@@ -81,21 +89,20 @@ pub fn system_sample_cells(
     c
 }
 
-/// The columns of a simulated system's events.
-pub fn system_event_columns(unit: &str) -> Vec<String> {
-    [
-        "event".to_string(),
-        "contact".into(),
-        "time_s".into(),
-        "driver_angle_deg".into(),
-        format!("approach_speed_{unit}_s"),
-    ]
-    .to_vec()
+/// The columns of a simulated system's events (the driver's angle where the run is over it:
+/// `angles`).
+pub fn system_event_columns(unit: &str, angles: bool) -> Vec<String> {
+    let mut c = vec!["event".to_string(), "contact".into(), "time_s".into()];
+    if angles {
+        c.push("driver_angle_deg".into());
+    }
+    c.push(format!("approach_speed_{unit}_s"));
+    c
 }
 
-/// One event's row (`angle_deg`: the driver's angle then).
-pub fn system_event_cells(sys: &System, e: &ContactEvent, angle_deg: f64) -> Vec<Cell> {
-    vec![
+/// One event's row (`angle_deg`: the driver's angle then, none in a run in time).
+pub fn system_event_cells(sys: &System, e: &ContactEvent, angle_deg: Option<f64>) -> Vec<Cell> {
+    let mut c = vec![
         Cell::Text(Some(
             match e.kind {
                 EventKind::LiftOff => "lift-off",
@@ -109,9 +116,10 @@ pub fn system_event_cells(sys: &System, e: &ContactEvent, angle_deg: f64) -> Vec
                 .map_or("?".into(), |c| c.name.clone()),
         )),
         Cell::Num(Some(e.time)),
-        Cell::Num(Some(angle_deg)),
-        Cell::Num(Some(e.approach)),
-    ]
+    ];
+    c.extend(angle_deg.map(|a| Cell::Num(Some(a))));
+    c.push(Cell::Num(Some(e.approach)));
+    c
 }
 
 /// The forces of a simulated system's samples (`camkin forces SYSTEM.toml`'s `forces.csv`): of
@@ -125,7 +133,7 @@ pub fn system_force_table(
     hertz: &[Option<crate::dynamics::ContactHertz>],
     step_deg: f64,
 ) -> (Vec<String>, Vec<Vec<Cell>>) {
-    let all = system_sample_columns(sys, unit, hertz);
+    let all = system_sample_columns(sys, unit, hertz, true);
     let keep: Vec<usize> = all
         .iter()
         .enumerate()
@@ -143,7 +151,7 @@ pub fn system_force_table(
         .iter()
         .enumerate()
         .map(|(i, s)| {
-            let cells = system_sample_cells(grid.at(i), s, hertz);
+            let cells = system_sample_cells(Some(grid.at(i)), s, hertz);
             keep.iter().map(|&k| cells[k].clone()).collect()
         })
         .collect();

@@ -254,3 +254,189 @@ at = [[0.0, 0.0], [{d}, 0.0]]
         "the crank angle is {worst:e} rad off the one-coordinate equation"
     );
 }
+
+/// A disk of radius `r` (mm) resting on a floor (a line on the ground, material below), gravity
+/// down, with the starting state of `body` (TOML keys of its `[[body]]`) and of `contact`.
+fn disk_on_floor(body: &str, contact: &str) -> camkin::spec::BuiltSystem {
+    let text = format!(
+        r#"length_unit = "mm"
+[dynamics]
+gravity = [0.0, -9.81]
+[[body]]
+name = "disk"
+mass = 0.5
+inertia = 2.5e-5
+{body}
+[[contact]]
+name = "floor"
+bodies = ["ground", "disk"]
+curve_a = {{ kind = "line", anchor = [0.0, 0.0], direction = [-1.0, 0.0] }}
+curve_b = {{ kind = "circle", center = [0.0, 0.0], radius = 10.0 }}
+{contact}
+"#
+    );
+    crate::common::read_system(&text, "disk.toml", &Default::default()).unwrap()
+}
+
+/// A disk resting on a floor, thrown straight up at `v` by its file's `velocity`: the contact
+/// opens at the start (the rates part it, a lift-off at t = 0, said in the report), the disk
+/// rises and falls as `y = r + v t − g t²/2` (to 1e-9 mm every 10 ms), and lands at `2v/g` (the
+/// impact's instant to 1e-9 s, its approach speed `v` to 1e-9 of it). Thrown along the floor
+/// instead it stays on it and slides (no friction) at its speed: `x = v t`, the contact force
+/// its weight.
+#[test]
+fn a_body_thrown_off_a_surface_it_rests_on_leaves_it_and_one_thrown_along_slides() {
+    let (g, r, v) = (9.81e3, 10.0, 500.0); // mm/s², mm, mm/s
+    let built = disk_on_floor(&format!("position = [0.0, {r}]\nvelocity = [0.0, {v}]"), "");
+    let mut sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+    let report = sim.start_report().clone();
+    assert_eq!(report.opened, vec![0], "{report:?}");
+    assert_eq!(report.closed, vec![false]);
+    assert_eq!(report.rates[0], [0.0, v, 0.0]);
+    assert_eq!(report.largest_rate_change(), Some((0, 0.0)));
+    let land = 2.0 * v / g;
+    let run = sim
+        .run(15, 0.01, |_| std::ops::ControlFlow::Continue(()))
+        .unwrap();
+    let kinds: Vec<_> = run.events.iter().map(|e| (e.kind, e.time)).collect();
+    assert_eq!(run.events[0].kind, camkin::dynamics::EventKind::LiftOff);
+    assert_eq!(run.events[0].time, 0.0);
+    let impact = run
+        .events
+        .iter()
+        .find(|e| e.kind == camkin::dynamics::EventKind::Impact)
+        .unwrap_or_else(|| panic!("no impact: {kinds:?}"));
+    assert!(
+        (impact.time - land).abs() < 1e-9,
+        "{} against {land}",
+        impact.time
+    );
+    assert!(
+        (impact.approach - v).abs() < 1e-9 * v,
+        "{}",
+        impact.approach
+    );
+    for s in run.samples.iter().filter(|s| s.time < land) {
+        let t = s.time;
+        let y = r + v * t - 0.5 * g * t * t;
+        assert!((s.q[1] - y).abs() < 1e-9, "t = {t}: {} against {y}", s.q[1]);
+    }
+    // no rebound (restitution 0): it rests on the floor after
+    let last = run.samples.last().unwrap();
+    assert!(
+        (last.q[1] - r).abs() < 1e-9 && last.in_contact[0],
+        "{last:?}"
+    );
+
+    let built = disk_on_floor(&format!("position = [0.0, {r}]\nvelocity = [{v}, 0.0]"), "");
+    let mut sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+    assert!(sim.start_report().opened.is_empty());
+    let run = sim
+        .run(10, 0.01, |_| std::ops::ControlFlow::Continue(()))
+        .unwrap();
+    assert!(run.events.is_empty(), "{:?}", run.events);
+    for s in &run.samples {
+        assert!((s.q[0] - v * s.time).abs() < 1e-9 && (s.q[1] - r).abs() < 1e-9);
+        assert!(
+            (s.contact_forces[0] - 0.5 * 9.81).abs() < 1e-9,
+            "{}",
+            s.contact_forces[0]
+        );
+    }
+}
+
+/// A disk 0.5 mm above the floor (beyond the 1e-3 of the size within which a contact starts
+/// closed): without `starts_closed` it falls and lands after `√(2 d/g)` (to 1e-9 s); with
+/// `starts_closed = true` the start assembles it onto the floor, moving it down by 0.5 mm (the
+/// report's distance, to 1e-12 mm) and not turning it.
+#[test]
+fn a_contact_marked_closed_is_assembled_and_the_distance_moved_is_reported() {
+    let (g, r, d) = (9.81e3f64, 10.0, 0.5);
+    let pose = format!("position = [3.0, {}]", r + d);
+    let built = disk_on_floor(&pose, "");
+    let mut sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+    assert_eq!(sim.start_report().closed, vec![false]);
+    assert!(sim.start_report().moved[0] == 0.0);
+    let run = sim
+        .run(5, 0.005, |_| std::ops::ControlFlow::Continue(()))
+        .unwrap();
+    let land = (2.0 * d / g).sqrt();
+    let impact = run.events.first().expect("an impact");
+    assert_eq!(impact.kind, camkin::dynamics::EventKind::Impact);
+    assert!(
+        (impact.time - land).abs() < 1e-9,
+        "{} against {land}",
+        impact.time
+    );
+
+    let built = disk_on_floor(&pose, "starts_closed = true");
+    let sim = SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+    let report = sim.start_report();
+    assert_eq!(report.closed, vec![true]);
+    assert!((report.moved[0] - d).abs() < 1e-12, "{:?}", report.moved);
+    assert!(report.turned[0].abs() < 1e-15);
+    let s = sim.sample().unwrap();
+    assert!(
+        (s.q[0] - 3.0).abs() < 1e-12 && (s.q[1] - r).abs() < 1e-12,
+        "{:?}",
+        s.q
+    );
+    let text = report.describe(&built.system, "mm").join("\n");
+    assert!(text.contains("\"disk\" moved 0.5 mm"), "{text}");
+}
+
+/// The pinned bar of the test above started through the options. Given its centre's upward
+/// speed alone (`v_y = 1` m/s), its other rates are free: the start finds them so that the pin
+/// holds (`v_x = 0`, `ω = v_y/(L/2)`) and keeps the speed given, changing nothing it was
+/// given. Given all three (`(0, 1, 0)`: not turning), they conflict with the pin, and the
+/// nearest in the kinetic energy's metric is the closed form `ω = m (L/2) / (m L²/4 + I)`;
+/// the report gives both and the largest change.
+#[test]
+fn the_start_finds_the_rates_not_given_and_reports_a_change_to_those_given() {
+    let (m, i, l) = (2.0, 0.05, 0.6);
+    let mut sys = System::new();
+    let bar = sys.add_body(Body {
+        name: "bar".into(),
+        mass: m,
+        inertia: i,
+        pose: camkin::body::Pose::new(Point2::new(l / 2.0, 0.0), 0.0),
+        centre_of_mass: Point2::origin(),
+    });
+    sys.add_joint(Joint {
+        name: "pin".into(),
+        kind: JointKind::Revolute {
+            a: BodyId::GROUND,
+            at_a: Point2::origin(),
+            b: bar,
+            at_b: Point2::new(-l / 2.0, 0.0),
+        },
+    });
+    let start = |rates: [Option<f64>; 3]| {
+        let opts = SystemDynamicsOptions {
+            initial_rates: vec![rates],
+            ..SystemDynamicsOptions::default()
+        };
+        SystemSimulation::new(&sys, opts)
+            .unwrap()
+            .start_report()
+            .clone()
+    };
+    let report = start([None, Some(1.0), None]);
+    let [vx, vy, wz] = report.rates[0];
+    assert!(vx.abs() < 1e-15 && (vy - 1.0).abs() < 1e-15, "{report:?}");
+    assert!((wz - 1.0 / (l / 2.0)).abs() < 1e-14, "{wz}");
+    assert!(report.largest_rate_change().unwrap().1 < 1e-14);
+    assert!(report.describe(&sys, "m").is_empty(), "{report:?}");
+
+    let report = start([Some(0.0), Some(1.0), Some(0.0)]);
+    let w = m * (l / 2.0) / (m * l * l / 4.0 + i);
+    assert_eq!(report.asked_rates, vec![[Some(0.0), Some(1.0), Some(0.0)]]);
+    let [vx, vy, wz] = report.rates[0];
+    assert!(vx.abs() < 1e-12 && (vy - w * l / 2.0).abs() < 1e-12 && (wz - w).abs() < 1e-12);
+    let (body, change) = report.largest_rate_change().unwrap();
+    let expected = (1.0 - w * l / 2.0).abs().max(w * report.size);
+    assert_eq!(body, 0);
+    assert!((change - expected).abs() < 1e-12, "{change} against {expected}");
+    let text = report.describe(&sys, "m").join("\n");
+    assert!(text.contains("not all ones the joints"), "{text}");
+}

@@ -447,3 +447,81 @@ fn the_model_picks_its_solver() {
     let cam_si = read_model(CAM_FILE, "paper.toml", &si).unwrap();
     assert!(cam_si.preset().unwrap().built.si);
 }
+
+/// A system file's starting state and run in time (issue 64): `[simulation]`'s settings,
+/// a body's `velocity` and `angular_velocity`, and `[simulation]` without `[dynamics]` are refused
+/// at the key written, naming it and the value; good ones reach the options (the velocity in
+/// the file's unit, the angular velocity in rad/s) and the run.
+#[test]
+fn a_starting_state_and_a_run_in_time_are_read_and_refused_by_key() {
+    let pendulum = |extra: &str, body: &str| {
+        format!(
+            "length_unit = \"mm\"\n[dynamics]\ngravity = [0.0, -9.81]\n{extra}\n[[body]]\nname = \"bob\"\nposition = [100.0, 0.0]\n{body}\n[[joint]]\nname = \"pivot\"\nkind = \"revolute\"\nbodies = [\"ground\", \"bob\"]\nat = [[0.0, 0.0], [-100.0, 0.0]]\n"
+        )
+    };
+    let cases = [
+        (
+            pendulum("[simulation]\nduration = -1.0", ""),
+            &["simulation.duration", "-1", "in (0, 1000000] s"][..],
+            "duration = -1.0",
+        ),
+        (
+            pendulum("[simulation]\nduration = 1.0\ninterval = 2.0", ""),
+            &["simulation.interval", "2", "(0, duration]"][..],
+            "interval = 2.0",
+        ),
+        (
+            pendulum("[simulation]\ninterval = 2.0", ""),
+            &["duration"][..],
+            "[simulation]",
+        ),
+        (
+            pendulum("", "velocity = [1e300, 0.0]"),
+            &["body[0].velocity", "1e300"][..],
+            "velocity = [1e300, 0.0]",
+        ),
+        (
+            pendulum("", "angular_velocity = nan"),
+            &["body[0].angular_velocity", "NaN"][..],
+            "angular_velocity = nan",
+        ),
+        (
+            pendulum("", "angular_velocity = 1.0").replace(
+                "[dynamics]\ngravity = [0.0, -9.81]\n",
+                "[simulation]\nduration = 1.0\n",
+            ),
+            &["simulation", "[dynamics]"][..],
+            "[simulation]",
+        ),
+    ];
+    for (text, needles, at) in cases {
+        let e = build(&text).map(|_| ()).unwrap_err();
+        for n in needles {
+            assert!(e.message.contains(n), "{text}\n{}", e.message);
+        }
+        let line = text.lines().position(|l| l.contains(at)).map(|i| i + 1);
+        assert_eq!(e.at.map(|a| a.0), line, "{}", e.message);
+    }
+    let built = build(&pendulum(
+        "[simulation]\nduration = 0.5\ninterval = 0.01",
+        "velocity = [0.0, 250.0]\nangular_velocity = 2.5",
+    ))
+    .unwrap();
+    assert_eq!(
+        built.dynamics.initial_rates,
+        vec![[Some(0.0), Some(250.0), Some(2.5)]]
+    );
+    let run = built.timed_run.unwrap();
+    assert_eq!((run.duration, run.interval), (0.5, 0.01));
+    // the bob at 100 mm asked to move at 250 mm/s across the bar, turning at 2.5 rad/s: the pin
+    // at 100 mm behind its frame's origin moves at ω·100 = 250 mm/s with the origin's 250 mm/s
+    // less ω·100: consistent, unchanged
+    let sim =
+        camkin::dynamics::SystemSimulation::new(&built.system, built.dynamics.clone()).unwrap();
+    let r = sim.start_report();
+    let [vx, vy, w] = r.rates[0];
+    assert!(
+        vx.abs() < 1e-9 && (vy - 250.0).abs() < 1e-9 && (w - 2.5).abs() < 1e-12,
+        "{r:?}"
+    );
+}

@@ -30,6 +30,9 @@ mod integrate;
 mod project;
 mod rates;
 mod sparse;
+mod start;
+
+pub use start::StartReport;
 
 use super::follower::EventKind;
 use super::model::{Constraint, Load, Model, RigidBody};
@@ -65,6 +68,11 @@ pub struct SystemDynamicsOptions {
     /// the contacts that a slow revolution closes and keeps closed, so that its verdict does
     /// not depend on how near the file's poses were.
     pub start_touching: Vec<bool>,
+    /// each body's starting frame rates `(v_x, v_y, ω)` (L/s, L/s, rad/s) where given, in the
+    /// system's order (a body past the list's end, or a rate not given: the assembled state's,
+    /// at rest but for the drivers); made consistent with the rows at the start, and what that
+    /// changed reported ([`SystemSimulation::start_report`])
+    pub initial_rates: Vec<[Option<f64>; 3]>,
 }
 
 /// A contact's face width and elastic materials: its Hertz line pressure
@@ -92,6 +100,7 @@ impl Default for SystemDynamicsOptions {
             restitution: Vec::new(),
             hertz: Vec::new(),
             start_touching: Vec::new(),
+            initial_rates: Vec::new(),
             al: AugmentedLagrangian {
                 penalty: 1e4,
                 ..AugmentedLagrangian::default()
@@ -219,6 +228,8 @@ pub struct SystemSimulation<'a> {
     fastest: std::cell::OnceCell<(f64, String)>,
     /// the inverse of the mass matrix's diagonal, one per coordinate
     pub(super) inv_mass: Vec<f64>,
+    /// what the start changed
+    start_report: StartReport,
 }
 
 /// Most events in one call of [`SystemSimulation::advance`].
@@ -230,9 +241,12 @@ const STARTS_IN_TOUCH: f64 = 1e-3;
 
 impl<'a> SystemSimulation<'a> {
     /// Starts `sys` at time 0 from its bodies' poses (assembled onto the joints and drivers and
-    /// every contact whose curves are within 1e-3 of the size there), at rest but for the
-    /// drivers' rates. A contact whose force would be tensile at the start lifts off at once
-    /// (the first [`SystemSimulation::advance`] reports it).
+    /// every contact whose curves are within 1e-3 of the size there, or that
+    /// [`SystemDynamicsOptions::start_touching`] marks), at rest but for the drivers' rates and
+    /// the [`SystemDynamicsOptions::initial_rates`] (made consistent with the rows); what the
+    /// assembly and the rates' projection changed is in [`SystemSimulation::start_report`]. A
+    /// contact whose force would be tensile at the start, or that the rates asked part, lifts off
+    /// at once (the first [`SystemSimulation::advance`] reports it).
     pub fn new(
         sys: &'a crate::system::System,
         opts: SystemDynamicsOptions,
@@ -429,6 +443,7 @@ impl<'a> SystemSimulation<'a> {
             sampled: Default::default(),
             fastest: Default::default(),
             inv_mass: Vec::new(),
+            start_report: StartReport::default(),
         };
         if !(sim.speed_scale > 0.0) {
             // nothing driven and no gravity: the springs' fastest rate, or a size a second
@@ -463,6 +478,7 @@ impl<'a> SystemSimulation<'a> {
                 || sim.opts.start_touching.get(k) == Some(&true);
             sim.pairings[first_contact + k] = Some(p);
         }
+        let before = sim.frame_coordinates();
         sim.project().map_err(|e| match e {
             DynamicsError::Singular { .. } => DynamicsError::System(SystemError::NoAssembly {
                 time: 0.0,
@@ -482,34 +498,9 @@ impl<'a> SystemSimulation<'a> {
             }
             .into());
         }
-        sim.release_pulled()?;
+        sim.note_moves(&before);
+        sim.start_rates()?;
         Ok(sim)
-    }
-
-    /// Every closed contact whose force is tensile now leaves at once (a lift-off the next
-    /// step reports).
-    fn release_pulled(&mut self) -> Result<(), DynamicsError> {
-        let forces = self
-            .accel(
-                self.t,
-                &self.q,
-                &self.qd,
-                &self.in_contact.clone(),
-                &mut self.pairings.clone(),
-            )?
-            .forces;
-        for (k, &force) in forces.iter().enumerate() {
-            if self.in_contact[k] && force < 0.0 {
-                self.in_contact[k] = false;
-                self.pending.push(ContactEvent {
-                    kind: EventKind::LiftOff,
-                    time: self.t,
-                    contact: k,
-                    approach: 0.0,
-                });
-            }
-        }
-        Ok(())
     }
 
     /// Body `i`'s state now (the ground's for [`super::GROUND`]).

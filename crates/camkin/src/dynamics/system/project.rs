@@ -96,7 +96,8 @@ impl SystemSimulation<'_> {
     /// system's order) at the current positions, made consistent with the joints, the drivers
     /// and the closed contacts by the mass-orthogonal projection (the least change in the kinetic
     /// energy's metric, `min ½ Δq̇ᵀ M Δq̇` subject to `Φ_q q̇ = −Φ_t`: Bayo and Ledesma 1996); a
-    /// contact the new rates pull leaves at once. Returns the largest change the projection
+    /// closed contact the rates asked part (a body thrown off a surface it rests on), or whose
+    /// force they make tensile, leaves at once. Returns the largest change the projection
     /// made to a rate asked (an angle's times the size, in L/s), so that a user sees where what
     /// they asked is not what the constraints allow.
     pub fn set_frame_rates(&mut self, rates: &[f64]) -> Result<f64, DynamicsError> {
@@ -116,6 +117,7 @@ impl SystemSimulation<'_> {
                 reason: "must be finite",
             });
         }
+        self.part_by_rates(rates)?;
         // the centres' rates: ẋ_G = ȯ + θ̇ J ρ, J ρ = (−ρ_y, ρ_x)
         let arms = self.arms(&self.q);
         let mut asked = rates.to_vec();
