@@ -72,6 +72,11 @@ pub struct SimulateArgs {
     /// then bisected to 1 rpm; printed instead of the time series.
     #[arg(long, value_name = "FROM:TO:STEP")]
     pub no_follow: Option<String>,
+    /// With --no-follow: revolutions simulated at each speed before those judged, so that they
+    /// start from the settled periodic state at that speed (a spring's surge set going by the
+    /// start has run its course).
+    #[arg(long, value_name = "N", default_value_t = 1.0, value_parser = crate::args::real)]
+    pub settle: f64,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
     #[command(flatten)]
@@ -526,7 +531,7 @@ fn run_system(
                 .get(e.contact)
                 .map_or("?", |c| c.name.as_str());
             crate::say!(
-                "{:>9} {:>20} {:>14.9} {:>18.4} {:>22.4}",
+                "{:>9} {:>20} {:>14.9} {:>18} {:>22.4}",
                 match e.kind {
                     camkin::dynamics::EventKind::LiftOff => "lift-off",
                     _ => "impact",
@@ -611,6 +616,7 @@ fn no_follow(
         step_deg: args.step.deg(),
         revolutions: args.revolutions.unwrap_or(1.0),
         after_impact_deg: 5.0,
+        settle_revolutions: args.settle,
     };
     // the speeds tried and the bisection's, each a run at its speed
     let sys = &built.system;

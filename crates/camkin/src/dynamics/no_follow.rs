@@ -4,7 +4,10 @@
 //! by simulating a revolution at speeds in steps and bisecting the first step where it happens.
 //! A contact that opens within [`SpeedSweep::after_impact_deg`] of an impact elsewhere (the
 //! finger jolted off its cam as the valve lands on its seat) is the impact's bounce, not a
-//! no-follow, and is not counted. A contact that the starting poses leave apart but the slow
+//! no-follow, and is not counted. Each speed's run starts with
+//! [`SpeedSweep::settle_revolutions`] that are not judged, so that the revolutions judged start
+//! from the settled periodic state at that speed (a spring's surge started by the start from
+//! rest has run its course), not from the file's state. A contact that the starting poses leave apart but the slow
 //! revolution closes and keeps closed is assembled in touch at the start of every run
 //! ([`super::SystemDynamicsOptions::start_touching`]), so the verdict does not depend on how
 //! near the file's poses were.
@@ -45,6 +48,9 @@ pub struct SpeedSweep {
     pub revolutions: f64,
     /// a lift-off this many degrees of the driver after an impact is the impact's bounce
     pub after_impact_deg: f64,
+    /// revolutions run at each speed before those judged (its start's transient settled): a
+    /// watched contact open when the judged revolutions begin opened at that speed
+    pub settle_revolutions: f64,
 }
 
 impl SpeedSweep {
@@ -63,6 +69,7 @@ impl SpeedSweep {
             step_deg,
             revolutions: 1.0,
             after_impact_deg: 5.0,
+            settle_revolutions: 1.0,
         }
     }
 
@@ -78,8 +85,9 @@ impl SpeedSweep {
         let w = self.to_rpm * std::f64::consts::TAU / 60.0;
         let h_target = self.step_deg.to_radians() / w;
         let speed = self.to_rpm / sim.system().first_driver_rpm().abs().max(1e-300);
-        let duration = self.revolutions * std::f64::consts::TAU / w;
-        let samples = (self.revolutions * 360.0 / self.step_deg).ceil() + 1.0;
+        let revolutions = self.revolutions + self.settle_revolutions.max(0.0);
+        let duration = revolutions * std::f64::consts::TAU / w;
+        let samples = (revolutions * 360.0 / self.step_deg).ceil() + 1.0;
         (
             runs * sim.steps_estimate_at(duration, h_target, speed),
             runs * samples,
@@ -87,11 +95,13 @@ impl SpeedSweep {
     }
 }
 
-/// A run's first opening of a watched contact (`(contact, angle_deg)`), whether each contact
-/// was closed at the start, and the contacts closed at the end that never opened.
+/// A run's first opening of a watched contact (`(contact, angle_deg)` from the start of the
+/// revolutions judged), whether each contact was closed when they started and when the run was
+/// assembled, and the contacts closed at the end that never opened while judged.
 struct Opening {
     first: Option<(usize, f64)>,
     closed_at_start: Vec<bool>,
+    assembled: Vec<bool>,
     stayed: Vec<bool>,
 }
 
@@ -116,14 +126,38 @@ fn first_opening(
     let w = rpm * std::f64::consts::TAU / 60.0;
     s.set_driver_law(0, DriverLaw::linear(start, w));
     let mut sim = SystemSimulation::new(&s, opts.clone())?;
-    let closed_at_start = sim.sample()?.in_contact;
+    let assembled = sim.sample()?.in_contact;
     let h = sweep.step_deg.to_radians() / w;
+    // the revolutions that settle the start's transient, not judged
+    let settle = (sweep.settle_revolutions.max(0.0) * 360.0 / sweep.step_deg).round() as usize;
+    for _ in 0..settle {
+        sim.advance(h)?;
+    }
+    // the driver's angle the judged revolutions start at, degrees, and its whole turns (the
+    // angles reported are the driver's less these)
+    let settled = settle as f64 * sweep.step_deg;
+    let turns = 360.0 * (settled / 360.0).floor();
+    let closed_at_start = if settle == 0 {
+        assembled.clone()
+    } else {
+        sim.sample()?.in_contact
+    };
+    // a watched contact the settling left open has opened at this speed
+    if let Some(k) = watched.and_then(|w| (0..w.len()).find(|&k| w[k] && !closed_at_start[k])) {
+        let n = assembled.len();
+        return Ok(Opening {
+            first: Some((k, settled - turns)),
+            closed_at_start,
+            assembled,
+            stayed: vec![false; n],
+        });
+    }
     let steps = (sweep.revolutions * 360.0 / sweep.step_deg).round() as usize;
     let mut opened = vec![false; closed_at_start.len()];
     let mut last_impact = f64::NEG_INFINITY;
     for _ in 0..steps {
         for e in sim.advance(h)? {
-            let angle = (w * e.time).to_degrees();
+            let angle = (w * e.time).to_degrees() - turns;
             if e.kind == EventKind::Impact {
                 last_impact = angle;
                 continue;
@@ -136,6 +170,7 @@ fn first_opening(
                     return Ok(Opening {
                         first: Some((e.contact, angle)),
                         closed_at_start,
+                        assembled,
                         stayed: opened,
                     });
                 }
@@ -152,6 +187,7 @@ fn first_opening(
     Ok(Opening {
         first: None,
         closed_at_start,
+        assembled,
         stayed,
     })
 }
@@ -191,12 +227,20 @@ pub fn no_follow_speed(
     check("tolerance (rpm)", sweep.tolerance_rpm)?;
     check("output step (deg)", sweep.step_deg)?;
     check("revolutions", sweep.revolutions)?;
+    if !(sweep.settle_revolutions >= 0.0 && sweep.settle_revolutions.is_finite()) {
+        return Err(DynamicsError::Element {
+            element: "the speed sweep".into(),
+            key: "settle revolutions",
+            value: sweep.settle_revolutions,
+            reason: "must be zero or more",
+        });
+    }
     // the contacts a slow revolution keeps closed are watched; one that starts apart (the
     // file's pose a little off it) and closes for good is assembled in touch at the start of
     // every run, so the verdict does not depend on how near the pose was
     let slow = first_opening(sys, opts, sweep, sweep.from_rpm, None)?;
     let mut simulations = 1;
-    let closes = |o: &Opening, k: usize| o.stayed[k] && !o.closed_at_start[k];
+    let closes = |o: &Opening, k: usize| o.stayed[k] && !o.assembled[k];
     let mut watched = slow.stayed.clone();
     let assembled;
     let opts = if (0..watched.len()).any(|k| closes(&slow, k)) {

@@ -436,7 +436,10 @@ fn the_start_finds_the_rates_not_given_and_reports_a_change_to_those_given() {
     let (body, change) = report.largest_rate_change().unwrap();
     let expected = (1.0 - w * l / 2.0).abs().max(w * report.size);
     assert_eq!(body, 0);
-    assert!((change - expected).abs() < 1e-12, "{change} against {expected}");
+    assert!(
+        (change - expected).abs() < 1e-12,
+        "{change} against {expected}"
+    );
     let text = report.describe(&sys, "m").join("\n");
     assert!(text.contains("not all ones the joints"), "{text}");
 }

@@ -107,6 +107,7 @@ fn simulated_no_follow(stiffer: bool) -> camkin::dynamics::NoFollow {
         step_deg: 0.5,
         revolutions: 1.0,
         after_impact_deg: 5.0,
+        settle_revolutions: 1.0,
     };
     no_follow_speed(&built.system, &built.dynamics, &sweep)
         .unwrap()

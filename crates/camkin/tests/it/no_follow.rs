@@ -120,6 +120,7 @@ fn a_rockers_no_follow_speed_is_its_closed_form_from_any_starting_guess() {
         step_deg: 0.5,
         revolutions: 1.0,
         after_impact_deg: 5.0,
+        settle_revolutions: 1.0,
     };
     // assembled, −4.784°; and 2.8° off, the roller 3 mm above the cam
     for angle in [rocker(0.0).to_degrees(), -2.0] {

@@ -243,7 +243,13 @@ impl SystemSimulation<'_> {
             rows.row(r)[cols[j]] / weight(cols[j]).sqrt()
         });
         let r = nalgebra::DVector::from_fn(m, |r, _| {
-            rows.target[r] - rows.row(r).iter().zip(&*asked).map(|(j, v)| j * v).sum::<f64>()
+            rows.target[r]
+                - rows
+                    .row(r)
+                    .iter()
+                    .zip(&*asked)
+                    .map(|(j, v)| j * v)
+                    .sum::<f64>()
         });
         let eps = 1e-12 * a.amax();
         let Ok(x) = a.svd(true, true).solve(&r, eps) else {
