@@ -31,7 +31,7 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "N", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub revolutions: Option<f64>,
     /// A system file: simulate this many seconds from t = 0 (outputs every --interval), with or
-    /// without drivers; instead of its [simulation] duration or --revolutions.
+    /// without drivers; instead of its `[simulation]` duration or --revolutions.
     #[arg(long, value_name = "S", value_parser = crate::args::real, allow_negative_numbers = true)]
     pub duration: Option<f64>,
     /// A run in time's output interval, seconds [default: its file's, or a thousandth of the
