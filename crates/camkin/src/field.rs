@@ -140,6 +140,8 @@ pub enum SystemTable {
     GasForce,
     /// `[simulation]` (one table: its index is 0)
     Simulation,
+    /// `[[load]]`
+    Load,
 }
 
 impl SystemTable {
@@ -157,6 +159,7 @@ impl SystemTable {
             SystemTable::CoilSpring => "coil_spring",
             SystemTable::GasForce => "gas_force",
             SystemTable::Simulation => "simulation",
+            SystemTable::Load => "load",
         }
     }
 }
@@ -216,6 +219,14 @@ keys! {
             Duration = "duration",
             /// (a run's output interval, s)
             Interval = "interval",
+            /// (a load's, N)
+            Force = "force",
+            /// (a load's, N·L)
+            Torque = "torque",
+            /// (a load's force's frame)
+            Frame = "frame",
+            /// (a load's table of time)
+            Profile = "profile",
         }
     }
 }

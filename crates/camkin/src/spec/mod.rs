@@ -79,7 +79,7 @@ pub use run_plan::{
 };
 pub use system::{BodySpec, DriverSpec, JointSpec, SystemSpec};
 pub use system_contact::ContactSpec;
-pub use system_dynamics::{GasForceSpec, SimulationSpec, SystemDynamicsSpec};
+pub use system_dynamics::{GasForceSpec, LoadSpec, SimulationSpec, SystemDynamicsSpec};
 pub use system_elements::{DamperSpec, SpringSpec, TorsionSpringSpec};
 pub use system_lubrication::SystemLubricationSpec;
 

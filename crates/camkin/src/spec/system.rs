@@ -84,6 +84,10 @@ pub struct SystemSpec {
     /// `[lubrication]`: the oil of every contact with a face width (for dynamics)
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubrication: Option<super::SystemLubricationSpec>,
+    /// `[[load]]`: forces and torques applied to bodies, constant or by a table of time (for
+    /// dynamics)
+    #[serde(default)]
+    pub load: Vec<super::LoadSpec>,
     /// `[simulation]`: a run in time, its duration and output interval (for dynamics; a system
     /// without an angle driver needs it, or the front end's duration)
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -98,7 +102,7 @@ pub struct BodySpec {
     pub name: String,
     /// kg (default 1; for dynamics)
     pub mass: Option<f64>,
-    /// kg·m² about its centre of mass (default 1; for dynamics)
+    /// kg·m² about its centre of mass (default 1; 0: a point mass; for dynamics)
     pub inertia: Option<f64>,
     /// its centre of mass in its frame, in the file's length unit (default its frame's origin;
     /// for dynamics)
@@ -212,9 +216,17 @@ impl SystemSpec {
                 });
             }
             let mass = positive(at(T::Body, i, K::Mass), b.mass.unwrap_or(1.0))?;
-            let inertia = positive(at(T::Body, i, K::Inertia), b.inertia.unwrap_or(1.0))?;
+            // an inertia of 0 is a point mass
+            let inertia = match b.inertia.unwrap_or(1.0) {
+                0.0 => 0.0,
+                x => within(
+                    at(T::Body, i, K::Inertia),
+                    positive(at(T::Body, i, K::Inertia), x)?,
+                    1e-15,
+                    1e9,
+                )?,
+            };
             within(at(T::Body, i, K::Mass), mass, 1e-9, 1e9)?;
-            within(at(T::Body, i, K::Inertia), inertia, 1e-15, 1e9)?;
             let p = point(
                 at(T::Body, i, K::Position),
                 b.position.unwrap_or([0.0, 0.0]),
@@ -638,6 +650,11 @@ impl SystemSpec {
             named(T::GasForce, i, &g.name)?;
             let find = |name: &str| body(T::GasForce, i, K::Body, name);
             sys.add_table_force(super::system_dynamics::gas_force(g, i, scale, &find)?);
+        }
+        for (i, l) in self.load.iter().enumerate() {
+            named(T::Load, i, &l.name)?;
+            let find = |name: &str| body(T::Load, i, K::Body, name);
+            sys.add_load(super::system_dynamics::load(l, i, scale, &find)?);
         }
         let timed_run = match (&self.simulation, &self.dynamics) {
             (Some(s), Some(_)) => Some(super::system_dynamics::timed_run(s)?),

@@ -280,3 +280,117 @@ pub(super) fn initial_rates(
         })
         .collect()
 }
+
+/// `[[load]]`: a force at a point of a body and a torque on it, constant or scaled by a table
+/// of time ([`crate::system::AppliedLoad`]).
+///
+/// ```toml
+/// [[load]]
+/// name = "push"
+/// body = "slider"
+/// at = [0, 0]                     # where the force acts, in the body's frame (default its origin)
+/// force = [0, -50]                # N (default none)
+/// frame = "world"                 # or "body": the force turns with the body (default world)
+/// torque = 2.0                    # N·length, counter-clockwise (default 0)
+/// profile = [[0, 0], [0.1, 1]]    # [s, factor]: linear between, held at the ends (default 1)
+/// ```
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadSpec {
+    /// its name
+    pub name: String,
+    /// the body it acts on
+    pub body: String,
+    /// where the force acts, in the body's frame (default its origin)
+    #[serde(default, deserialize_with = "super::pair::option")]
+    pub at: Option<[f64; 2]>,
+    /// the force, N, in `frame` (default none)
+    #[serde(default, deserialize_with = "super::pair::option")]
+    pub force: Option<[f64; 2]>,
+    /// `"world"` (default) or `"body"`: the force turns with the body
+    pub frame: Option<String>,
+    /// the torque, N·length counter-clockwise (default 0)
+    pub torque: Option<f64>,
+    /// `[s, factor]`, increasing in time: the force and torque scaled, linear between points
+    /// and held at the ends (default constant)
+    #[serde(default, deserialize_with = "super::pair::list")]
+    pub profile: Vec<[f64; 2]>,
+}
+
+/// Load `i` of a file built, its body found by `body` (lengths times `scale`).
+pub(super) fn load(
+    l: &LoadSpec,
+    i: usize,
+    scale: f64,
+    body: &dyn Fn(&str) -> Result<crate::system::BodyId, SpecError>,
+) -> Result<crate::system::AppliedLoad, SpecError> {
+    use super::build::{finite, point};
+    use super::system_elements::within;
+    let at = |key| {
+        Field::System(SystemField {
+            table: SystemTable::Load,
+            index: i,
+            key,
+        })
+    };
+    let id = body(&l.body)?;
+    if id.is_ground() {
+        return Err(SpecError::Rule {
+            field: at(SystemKey::Body),
+            reason: "the ground does not move: a load acts on a body".into(),
+        });
+    }
+    let p = point(at(SystemKey::At), l.at.unwrap_or([0.0, 0.0]))?;
+    let f = point(at(SystemKey::Force), l.force.unwrap_or([0.0, 0.0]))?;
+    within(at(SystemKey::Force), f.x, 0.0, 1e12)?;
+    within(at(SystemKey::Force), f.y, 0.0, 1e12)?;
+    let torque = within(
+        at(SystemKey::Torque),
+        finite(at(SystemKey::Torque), l.torque.unwrap_or(0.0))?,
+        0.0,
+        1e12,
+    )?;
+    let frame = match l.frame.as_deref() {
+        None | Some("world") => crate::system::LoadFrame::World,
+        Some("body") => crate::system::LoadFrame::Body,
+        Some(other) => {
+            return Err(SpecError::Unknown {
+                field: at(SystemKey::Frame),
+                value: other.to_string(),
+                what: "a load's frame",
+                known: "world, body".into(),
+            })
+        }
+    };
+    let mut profile = Vec::with_capacity(l.profile.len());
+    for [t, k] in &l.profile {
+        let (t, k) = (
+            finite(at(SystemKey::Profile), *t)?,
+            within(
+                at(SystemKey::Profile),
+                finite(at(SystemKey::Profile), *k)?,
+                0.0,
+                1e6,
+            )?,
+        );
+        if profile.last().is_some_and(|&(last, _)| t <= last) {
+            return Err(SpecError::Rule {
+                field: at(SystemKey::Profile),
+                reason: format!(
+                    "{} s: the profile's times must increase",
+                    crate::human::human(t)
+                ),
+            });
+        }
+        profile.push((t, k));
+    }
+    Ok(crate::system::AppliedLoad {
+        name: l.name.clone(),
+        body: id,
+        at: crate::Point2::new(scale * p.x, scale * p.y),
+        force: crate::Vec2::new(f.x, f.y),
+        torque: scale * torque,
+        frame,
+        profile,
+    })
+}

@@ -132,6 +132,7 @@ impl SystemSpec {
                 T::GasForce,
                 self.gas_force.iter().map(|e| e.name.as_str()).collect(),
             ),
+            (T::Load, self.load.iter().map(|e| e.name.as_str()).collect()),
         ];
         for (t, list) in &names {
             for (i, &name) in list.iter().enumerate() {

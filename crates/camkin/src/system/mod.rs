@@ -30,6 +30,7 @@
 //! says which rows are redundant or singular (a dead point, a toggle) at which instant, never an
 //! answer from a singular matrix.
 
+mod applied_load;
 mod assemble;
 mod bending;
 mod coil_spring;
@@ -46,6 +47,7 @@ mod search;
 mod solve;
 mod table_force;
 
+pub use applied_load::{AppliedLoad, LoadFrame};
 pub use coil_spring::CoilSpring;
 pub use driver::{Coordinate, Driver, DriverLaw};
 pub use error::SystemError;
@@ -207,6 +209,7 @@ pub struct System {
     pub(crate) contacts: Vec<Contact>,
     pub(crate) forces: Vec<ForceElement>,
     pub(crate) table_forces: Vec<TableForce>,
+    pub(crate) loads: Vec<AppliedLoad>,
 }
 
 impl System {
@@ -254,6 +257,16 @@ impl System {
     /// The forces from tables of the crank angle.
     pub fn table_forces(&self) -> &[TableForce] {
         &self.table_forces
+    }
+
+    /// Adds an applied load: a force and a torque on a body, constant or by a table of time.
+    pub fn add_load(&mut self, load: AppliedLoad) {
+        self.loads.push(load);
+    }
+
+    /// The applied loads.
+    pub fn loads(&self) -> &[AppliedLoad] {
+        &self.loads
     }
 
     /// The bodies, in the order they were added.
@@ -420,6 +433,13 @@ impl System {
             if !known(f.body) {
                 return Err(SystemError::UnknownBody {
                     element: f.name.clone(),
+                });
+            }
+        }
+        for l in &self.loads {
+            if !known(l.body) {
+                return Err(SystemError::UnknownBody {
+                    element: l.name.clone(),
                 });
             }
         }

@@ -14,6 +14,7 @@ mod corner_contacts;
 mod dynamics_contact;
 mod dynamics_initial_state;
 mod dynamics_liftoff;
+mod dynamics_loads;
 mod dynamics_reduced;
 mod dynamics_system;
 mod dynamics_system_cam;

@@ -158,9 +158,10 @@ impl SystemSimulation<'_> {
         // (an early return leaves the buffers to be made again)
         let gas_power = match self.direct(t, q, qd, &active, pairings, &mut out.qdd, &mut lambda)? {
             Some(x) => x,
-            // forces from tables of the crank angle are not in the model the augmented
-            // Lagrangian solves: dependent rows with them are refused, not answered without them
-            None if !self.sys.table_forces().is_empty() => {
+            // forces from tables of the crank angle and applied loads are not in the model the
+            // augmented Lagrangian solves: dependent rows with them are refused, not answered
+            // without them
+            None if !self.sys.table_forces().is_empty() || !self.sys.loads().is_empty() => {
                 return Err(DynamicsError::Singular { time: t });
             }
             // nor are centres of mass away from the frames' origins
@@ -310,24 +311,35 @@ impl SystemSimulation<'_> {
         Ok(Some(gas_power))
     }
 
-    /// Adds the forces from tables of the crank angle at `t` to `f`; their power.
+    /// Adds the forces from tables of the crank angle and the applied loads at `t` to `f`;
+    /// their power.
     fn add_table_forces(&self, t: f64, q: &[f64], qd: &[f64], f: &mut [f64]) -> f64 {
+        let loads: f64 = self
+            .sys
+            .loads()
+            .iter()
+            .map(|l| {
+                let s = super::super::model::body_state(q, qd, l.body.0);
+                l.add_force(t, s.pose, (s.velocity, s.omega), f)
+            })
+            .sum();
         let forces = self.sys.table_forces();
         let Some(d) = self.sys.drivers().first() else {
-            return 0.0;
+            return loads;
         };
         if forces.is_empty() {
-            return 0.0;
+            return loads;
         }
         let [angle, ..] = d.law.at(t);
         let start = d.law.at(0.0)[0];
         let driver_deg = (angle - start).to_degrees();
-        forces
-            .iter()
-            .map(|g| {
-                let s = super::super::model::body_state(q, qd, g.body.0);
-                g.add_force(driver_deg, s.pose, (s.velocity, s.omega), f)
-            })
-            .sum()
+        loads
+            + forces
+                .iter()
+                .map(|g| {
+                    let s = super::super::model::body_state(q, qd, g.body.0);
+                    g.add_force(driver_deg, s.pose, (s.velocity, s.omega), f)
+                })
+                .sum::<f64>()
     }
 }

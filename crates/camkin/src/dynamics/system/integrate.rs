@@ -91,6 +91,15 @@ impl SystemSimulation<'_> {
         events: &mut Vec<ContactEvent>,
     ) -> Result<(), DynamicsError> {
         self.wrap_pairings();
+        // a step ends at the next corner of an applied load's profile (its force's slope jumps
+        // there: a step across it would lose its order)
+        let limit = self
+            .sys
+            .loads()
+            .iter()
+            .flat_map(|l| l.profile.iter().map(|p| p.0))
+            .filter(|&t| t > self.t)
+            .fold(limit, f64::min);
         let mut it = std::mem::take(&mut self.integrator);
         let done = self.step_with(&mut it, limit, h_max, events);
         self.integrator = it;

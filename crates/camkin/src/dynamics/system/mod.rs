@@ -142,8 +142,8 @@ pub struct SystemSample {
     pub in_contact: Vec<bool>,
     /// kinetic plus potential energy (springs, torsion springs, gravity), N·L
     pub energy: f64,
-    /// the work the drivers (and the forces from tables of the crank angle: a gas force) have
-    /// done since the start, N·L
+    /// the work the drivers, the forces from tables of the crank angle (a gas force) and the
+    /// applied loads have done since the start, N·L
     pub driver_work: f64,
     /// each driver's effort along its coordinate: an angle's torque (N·L, counter-clockwise
     /// positive: a camshaft's driving torque), a position's force (N)
@@ -235,6 +235,9 @@ pub struct SystemSimulation<'a> {
 /// Most events in one call of [`SystemSimulation::advance`].
 const MAX_EVENTS: usize = 64;
 
+/// The radius of gyration a point mass (a body of inertia 0) is given, times the system's size.
+pub const POINT_MASS_RADIUS: f64 = 1e-6;
+
 /// A contact whose curves are this close (times the size) at the starting poses starts in touch
 /// (the positions are then assembled onto it).
 const STARTS_IN_TOUCH: f64 = 1e-3;
@@ -309,22 +312,42 @@ impl<'a> SystemSimulation<'a> {
                 });
             }
         }
+        // the system's size, with its bodies' centres of mass (a wheel pinned at its frame's
+        // origin has no other length), a unit where it has none: the scale of its tolerances
+        let size = sys
+            .bodies()
+            .iter()
+            .map(|b| b.pose.origin.coords.norm() + b.centre_of_mass.coords.norm())
+            .fold(sys.size(), f64::max);
+        let size = if size > 1e-300 { size } else { 1.0 };
         let mut bodies = Vec::with_capacity(sys.bodies().len());
         for b in sys.bodies() {
-            for (key, v) in [("mass", b.mass), ("inertia", b.inertia)] {
-                if !(v > 0.0 && v.is_finite()) {
+            for (key, v, point) in [("mass", b.mass, false), ("inertia", b.inertia, true)] {
+                if !(v > 0.0 && v.is_finite() || point && v == 0.0) {
                     return Err(DynamicsError::Element {
                         element: format!("body {:?}", b.name),
                         key,
                         value: v,
-                        reason: "must be positive for a simulation",
+                        reason: if point {
+                            "must be positive, or 0 for a point mass, for a simulation"
+                        } else {
+                            "must be positive for a simulation"
+                        },
                     });
                 }
             }
+            // a point mass turns as a ring of [`POINT_MASS_RADIUS`] times the size: nothing
+            // that acts at its centre turns it, and where a joint does, its inertia is 1e-12 of
+            // the system's in its metric
+            let inertia = if b.inertia == 0.0 {
+                b.mass * (POINT_MASS_RADIUS * size * u).powi(2)
+            } else {
+                b.inertia
+            };
             // kg → N·s²/L, kg·m² → N·L·s²
             bodies.push(RigidBody {
                 mass: b.mass * u,
-                inertia: b.inertia / u,
+                inertia: inertia / u,
             });
         }
         let mut constraints: Vec<Constraint> = sys
@@ -349,14 +372,6 @@ impl<'a> SystemSimulation<'a> {
         if gravity != Vec2::zeros() {
             forces.push(Load::Gravity(gravity));
         }
-        // the system's size, with its bodies' centres of mass (a wheel pinned at its frame's
-        // origin has no other length), a unit where it has none: the scale of its tolerances
-        let size = sys
-            .bodies()
-            .iter()
-            .map(|b| b.pose.origin.coords.norm() + b.centre_of_mass.coords.norm())
-            .fold(sys.size(), f64::max);
-        let size = if size > 1e-300 { size } else { 1.0 };
         let model = Model {
             bodies,
             constraints,
