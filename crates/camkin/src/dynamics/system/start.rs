@@ -171,8 +171,8 @@ impl SystemSimulation<'_> {
 
     /// The rates the options ask for (each body's `(v_x, v_y, ω)` where given) started with: a
     /// closed contact they part opened; the rates not given found so that the rows hold with
-    /// the given ones where they can (the least-squares solution of least kinetic energy in
-    /// them); then all made consistent with the rows by the mass-orthogonal projection (which
+    /// the given ones where they can (the least-squares solution, the smallest weighted by the
+    /// masses and inertias); then all made consistent with the rows by the mass-orthogonal projection (which
     /// changes a given rate only where the given ones conflict with the rows); then every
     /// closed contact whose force is tensile leaves.
     pub(super) fn start_rates(&mut self) -> Result<(), DynamicsError> {
