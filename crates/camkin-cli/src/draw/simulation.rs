@@ -231,7 +231,7 @@ pub fn efforts_page(
 
 /// The pages of a run in time (`--duration`, or a file's `[simulation]`): `motion` (the
 /// coordinate that travels farthest, by time, the impacts' instants marked in its title),
-/// `energy` (kinetic plus potential energy, the work of the drivers and tables of forces, and
+/// `energy` (kinetic plus potential energy, the work of the drivers and applied forces, and
 /// their difference: constant where the run is right), and `forces` (each contact's that ever
 /// closes), each `.svg` and `.png`.
 pub fn write_timed(
@@ -276,7 +276,10 @@ pub fn write_timed(
         y_label: format!("N·{u}"),
         series: vec![
             Series::line("energy − start", time(&|s| s.energy - e0)),
-            Series::dashed("drivers' and force tables' work", time(&|s| s.driver_work)),
+            Series::dashed(
+                "work of the drivers and applied forces",
+                time(&|s| s.driver_work),
+            ),
             Series::line(
                 "energy − start − work (0 where the run is right; impacts and dampers lose)",
                 time(&|s| s.energy - e0 - s.driver_work),
