@@ -286,7 +286,7 @@ impl PySystem {
             PlanError::NotAnAngle => errors::input(
                 "duration",
                 None,
-                "its first driver does not turn an angle at a constant speed, so it is not simulated over revolutions: give duration= (seconds), or [simulation] duration = … in the file".into(),
+                "its first driver does not turn an angle at a constant speed, so it is not simulated over revolutions: System.simulate(duration=…) runs it for a time (or [simulation] duration = … in the file)".into(),
             ),
             PlanError::Dynamics(e) => dyn_err(e),
             e => errors::input("", None, e.to_string()),
