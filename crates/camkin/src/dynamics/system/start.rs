@@ -288,16 +288,21 @@ impl SystemSimulation<'_> {
                 .map(|(j, v)| j * v)
                 .sum();
             if self.sense[k] * rate > 1e-6 * self.speed_scale {
-                self.in_contact[k] = false;
-                self.pending.push(ContactEvent {
-                    kind: EventKind::LiftOff,
-                    time: self.t,
-                    contact: k,
-                    approach: 0.0,
-                });
+                self.open_now(k);
             }
         }
         Ok(())
+    }
+
+    /// Contact `k` opens now: a lift-off the next step reports.
+    fn open_now(&mut self, k: usize) {
+        self.in_contact[k] = false;
+        self.pending.push(ContactEvent {
+            kind: EventKind::LiftOff,
+            time: self.t,
+            contact: k,
+            approach: 0.0,
+        });
     }
 
     /// Every closed contact whose force is tensile now leaves at once (a lift-off the next
@@ -314,13 +319,7 @@ impl SystemSimulation<'_> {
             .forces;
         for (k, &force) in forces.iter().enumerate() {
             if self.in_contact[k] && force < 0.0 {
-                self.in_contact[k] = false;
-                self.pending.push(ContactEvent {
-                    kind: EventKind::LiftOff,
-                    time: self.t,
-                    contact: k,
-                    approach: 0.0,
-                });
+                self.open_now(k);
             }
         }
         Ok(())
