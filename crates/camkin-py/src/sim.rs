@@ -162,8 +162,11 @@ impl PySystem {
     /// system"): ``(samples, events)``, two dicts of NumPy arrays keyed by the columns of
     /// ``camkin simulate SYSTEM.toml`` (``time_series.csv`` and ``events.csv``): a sample at the
     /// start and every ``step_deg`` of the first driver, each body's pose, rates and
-    /// accelerations, each contact's force (N), gap and whether it is closed, the energy and the
-    /// drivers' work; each lift-off and impact with its contact, instant and approach speed.
+    /// accelerations, each contact's force (N), gap and whether it is closed, the energy, the
+    /// drivers' work and the energy balance (``kinetic``, ``potential``, ``damper_work``,
+    /// ``constraint_work``, ``impact_energy`` and ``unexplained``, N·length: see
+    /// docs/systems.md, "Energy, work and momentum"); each lift-off and impact with its
+    /// contact, instant and approach speed.
     /// A run in time instead (a system without an angle driver: a pendulum, a mechanism
     /// released from rest): ``duration`` seconds with a sample every ``interval`` (by default a
     /// thousandth of it), or the file's ``[simulation]``; its samples have no driver angle.

@@ -204,6 +204,7 @@ keys! {
             Gravity = "gravity",
             Masses = "masses",
             SolidLength = "solid_length",
+            DampingRatio = "damping_ratio",
             FaceWidth = "face_width",
             Materials = "materials",
             Direction = "direction",

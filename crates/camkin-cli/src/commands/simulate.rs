@@ -494,6 +494,10 @@ fn run_system(
             od.commit().map_err(Failure::output)?;
         }
     }
+    // the energy balance at the end, for people
+    if let Some(last) = samples.last() {
+        crate::say!("camkin: {}", last.balance.describe(unit));
+    }
     // each coil spring's surge, for people
     for c in &built.coil_springs {
         let f = c.surge_frequencies(built.dynamics.metres_per_unit);

@@ -268,23 +268,36 @@ pub fn write_timed(
         chart::save(&motion, &dir.join("motion"))?;
     }
     let e0 = samples.first().map_or(0.0, |s| s.energy);
+    let mut series = vec![
+        Series::line("energy − start", time(&|s| s.energy - e0)),
+        Series::dashed(
+            "work of the drivers and applied forces",
+            time(&|s| s.driver_work),
+        ),
+    ];
+    if samples.iter().any(|s| s.balance.dampers() != 0.0) {
+        series.push(Series::dashed(
+            "work of the dampers (dissipated)",
+            time(&|s| s.balance.dampers()),
+        ));
+    }
+    if samples.iter().any(|s| s.balance.impacts != 0.0) {
+        series.push(Series::dashed(
+            "energy changed by impacts",
+            time(&|s| s.balance.impacts),
+        ));
+    }
+    series.push(Series::line(
+        "unexplained: energy − start − every work and impact (0 where the run is right)",
+        time(&|s| s.balance.residual()),
+    ));
     let energy = Chart {
         title: format!(
-            "{name}: energy (kinetic + potential) less the work done on it, from the start"
+            "{name}: energy (kinetic + potential) and the work done on it, from the start"
         ),
         x_label: "time (s)".into(),
         y_label: format!("N·{u}"),
-        series: vec![
-            Series::line("energy − start", time(&|s| s.energy - e0)),
-            Series::dashed(
-                "work of the drivers and applied forces",
-                time(&|s| s.driver_work),
-            ),
-            Series::line(
-                "energy − start − work (0 where the run is right; impacts and dampers lose)",
-                time(&|s| s.energy - e0 - s.driver_work),
-            ),
-        ],
+        series,
         log_y: false,
         x_range: None,
     };

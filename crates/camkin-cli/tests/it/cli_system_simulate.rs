@@ -14,7 +14,8 @@ fn valve_train_at(rpm: f64) -> (tempfile::TempDir, std::path::PathBuf) {
     // its valve spring massless: the ramp's closed form has no coils to carry
     let text = text
         .replace("speed_rpm = 3000.0", &format!("speed_rpm = {rpm:?}"))
-        .replace("masses = 8", "masses = 0");
+        .replace("masses = 8", "masses = 0")
+        .replace("damping_ratio = 0.03", "");
     let (dir, path) = written("vt.toml", text);
     (dir, path)
 }

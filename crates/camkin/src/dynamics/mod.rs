@@ -58,8 +58,8 @@ pub use run::Run;
 pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
 pub use system::{
-    ContactEvent, ContactHertz, ContactSurface, StartReport, SystemDynamicsOptions, SystemRun,
-    SystemSample, SystemSimulation,
+    ContactEvent, ContactHertz, ContactSurface, ElementEnergy, EnergyBalance, StartReport,
+    SystemDynamicsOptions, SystemRun, SystemSample, SystemSimulation,
 };
 
 /// What went wrong in a dynamic simulation.

@@ -11,6 +11,7 @@
 //! mass = 0.02                       # kg, its active coils
 //! masses = 8                        # lumped masses (0: massless)
 //! solid_length = 24.0               # coil clash when it is this short (optional)
+//! damping_ratio = 0.03              # of the first surge mode (optional, default 0)
 //! ```
 
 /// `[[coil_spring]]`.
@@ -37,4 +38,8 @@ pub struct CoilSpringSpec {
     pub masses: usize,
     /// length unit: the length at which its coils touch (optional)
     pub solid_length: Option<f64>,
+    /// the first surge mode's damping ratio, from 0 (the default: undamped) to 1; a damper
+    /// beside each segment, stiffness-proportional
+    /// ([`crate::system::CoilSpring::damping_ratio`])
+    pub damping_ratio: Option<f64>,
 }

@@ -186,6 +186,7 @@ impl SystemSpec {
         use SystemTable as T;
         let unit = length_unit(self.length_unit.as_deref())?;
         let scale = if options.si { unit.metres() } else { 1.0 };
+        let metres_per_unit = if options.si { 1.0 } else { unit.metres() };
         let mut sys = System::new();
         let mut ids: HashMap<&str, BodyId> = HashMap::new();
         ids.insert("ground", BodyId::GROUND);
@@ -624,6 +625,12 @@ impl SystemSpec {
                     .solid_length
                     .map(|s| non_negative(f(K::SolidLength), s).map(|s| scale * s))
                     .transpose()?,
+                damping_ratio: within(
+                    f(K::DampingRatio),
+                    non_negative(f(K::DampingRatio), c.damping_ratio.unwrap_or(0.0))?,
+                    0.0,
+                    1.0,
+                )?,
             };
             if let Some(solid) = spring.solid_length.filter(|&s| s >= spring.free_length) {
                 return Err(SpecError::Invalid {
@@ -641,7 +648,13 @@ impl SystemSpec {
                     reason: format!("{} lumped masses need the coils' mass", spring.masses),
                 });
             }
-            spring.add_to(&mut sys);
+            if spring.damping_ratio > 0.0 && spring.masses == 0 {
+                return Err(SpecError::Rule {
+                    field: f(K::DampingRatio),
+                    reason: "is of the first surge mode: it needs lumped masses".into(),
+                });
+            }
+            spring.add_to(&mut sys, metres_per_unit);
             // its coil-clash contacts take the default restitution
             restitution.resize(sys.contacts().len(), default_restitution);
             coil_springs.push(spring);
@@ -679,7 +692,7 @@ impl SystemSpec {
             });
         }
         let dynamics = crate::dynamics::SystemDynamicsOptions {
-            metres_per_unit: if options.si { 1.0 } else { unit.metres() },
+            metres_per_unit,
             gravity: match gravity {
                 Some(g) => {
                     let g = point(at(T::Dynamics, 0, K::Gravity), g)?;

@@ -7,6 +7,12 @@
 //! chain with its ends held vibrates at the fixed–fixed chain's frequencies
 //! `ω_j = 2 √((N + 1) k N / m) sin(j π / (2 (N + 1)))`, `j = 1 … N`, whose lowest tends to the
 //! continuous spring's `π √(k/m)` as `N` grows.
+//!
+//! Its internal damping (the wire's hysteresis and the coils' friction) is stiffness-
+//! proportional: a damper `β k_s` beside each segment spring `k_s`, so that the chain's damping
+//! matrix is `β K` and each surge mode decays on its own with the ratio `ζ_j = β ω_j / 2`;
+//! `β = 2 ζ / ω₁` gives the first mode the ratio asked (a valve spring: a few per cent of
+//! critical), the higher modes more.
 
 use super::{Body, BodyId, Contact, ForceElement, ForceKind, Joint, JointKind, System};
 use crate::body::Pose;
@@ -39,14 +45,25 @@ pub struct CoilSpring {
     pub masses: usize,
     /// the length at which its coils touch (coil clash), or none
     pub solid_length: Option<f64>,
+    /// the first surge mode's damping ratio (0: undamped; see the module docs)
+    pub damping_ratio: f64,
 }
 
 impl CoilSpring {
     /// Adds it to `sys` with both bodies at their starting poses: its masses, evenly along the
     /// line between its ends, each on a slide along that line (in `a`'s frame), the segment
     /// springs, and (with a solid length) a contact between each pair of neighbours that closes
-    /// when their segment is its share of the solid length. Returns the masses' ids.
-    pub fn add_to(&self, sys: &mut System) -> Vec<BodyId> {
+    /// when their segment is its share of the solid length, and with a damping ratio a damper
+    /// beside each segment (`metres_per_unit`: the length unit of its stiffness, for its surge
+    /// frequency). Returns the masses' ids.
+    pub fn add_to(&self, sys: &mut System, metres_per_unit: f64) -> Vec<BodyId> {
+        // β = 2ζ/ω₁: each segment's damper β times its stiffness
+        let beta = match self.surge_frequencies(metres_per_unit).first() {
+            Some(f) if self.damping_ratio > 0.0 => {
+                2.0 * self.damping_ratio / (std::f64::consts::TAU * f)
+            }
+            _ => 0.0,
+        };
         let pose = |id: BodyId| {
             id.index()
                 .map_or(Pose::new(Point2::origin(), 0.0), |i| sys.bodies()[i].pose)
@@ -111,6 +128,18 @@ impl CoilSpring {
                     preload: self.preload,
                 },
             });
+            if beta > 0.0 {
+                sys.add_force(ForceElement {
+                    name: format!("{} segment {} damping", self.name, j + 1),
+                    kind: ForceKind::Damper {
+                        a: lo,
+                        at_a: at_lo,
+                        b: hi,
+                        at_b: at_hi,
+                        damping: beta * self.stiffness * segments,
+                    },
+                });
+            }
             if let Some(s) = solid {
                 // in each node's frame: half the solid segment from its point along the axis
                 let local = |p: Pose, v: Vec2| p.frame().rotation.inverse() * v;
@@ -185,6 +214,7 @@ mod tests {
                 mass: 0.02,
                 masses: n,
                 solid_length: None,
+                damping_ratio: 0.0,
             };
             let f = s.surge_frequencies(1e-3);
             assert_eq!(f.len(), n);
@@ -227,8 +257,9 @@ mod tests {
             mass: 0.02,
             masses: 3,
             solid_length: Some(24.0),
+            damping_ratio: 0.0,
         };
-        let ids = s.add_to(&mut sys);
+        let ids = s.add_to(&mut sys, 1e-3);
         assert_eq!(ids.len(), 3);
         assert_eq!(sys.joints().len(), 3);
         assert_eq!(sys.forces().len(), 4);

@@ -82,6 +82,66 @@ impl ForceKind {
         }
     }
 
+    /// The power the element delivers to the bodies (N·length/s): `−T L̇` for a spring or
+    /// damper of tension `T` whose length changes at `L̇` (a damper's `−c L̇² ≤ 0`), `−τ (ω_b −
+    /// ω_a)` for a torsion spring or damper — the rate of work of the forces
+    /// [`ForceKind::add_forces`] applies, so that a spring's is minus its potential's rate.
+    pub(crate) fn power(&self, state: impl Fn(BodyId) -> BodyState) -> f64 {
+        match *self {
+            ForceKind::Spring {
+                a, at_a, b, at_b, ..
+            }
+            | ForceKind::Damper {
+                a, at_a, b, at_b, ..
+            } => {
+                let (sa, sb) = (state(a), state(b));
+                let (pa, pb) = (sa.pose.to_world(at_a), sb.pose.to_world(at_b));
+                let d = pb - pa;
+                let l = d.norm();
+                if !(l > 0.0) {
+                    return 0.0;
+                }
+                let e = d / l;
+                let rate = e.dot(&(sb.velocity_at(pb) - sa.velocity_at(pa)));
+                let tension = match *self {
+                    ForceKind::Spring {
+                        stiffness,
+                        free_length,
+                        preload,
+                        ..
+                    } => stiffness * (l - free_length) + preload,
+                    ForceKind::Damper { damping, .. } => damping * rate,
+                    ForceKind::TorsionSpring { .. } | ForceKind::TorsionDamper { .. } => 0.0,
+                };
+                -tension * rate
+            }
+            ForceKind::TorsionSpring {
+                a,
+                b,
+                stiffness,
+                free_angle,
+                preload,
+            } => {
+                let (sa, sb) = (state(a), state(b));
+                let torque = stiffness * (sb.pose.angle - sa.pose.angle - free_angle) + preload;
+                -torque * (sb.omega - sa.omega)
+            }
+            ForceKind::TorsionDamper { a, b, damping } => {
+                let rate = state(b).omega - state(a).omega;
+                -damping * rate * rate
+            }
+        }
+    }
+
+    /// Whether the element stores its work as a potential (a spring), or dissipates it (a
+    /// damper).
+    pub(crate) fn stores(&self) -> bool {
+        matches!(
+            self,
+            ForceKind::Spring { .. } | ForceKind::TorsionSpring { .. }
+        )
+    }
+
     /// The potential energy stored (N·length): `½ k (L − L₀)² + P (L − L₀)` for a spring (its
     /// tension's integral from the free length), the same in the angle for a torsion spring;
     /// zero for a damper.
@@ -208,5 +268,70 @@ mod tests {
         torsion.add_forces(turning, &mut f);
         assert_eq!(f, [0.0, 0.0, 3.0, 0.0, 0.0, -3.0]);
         assert_eq!(torsion.potential(turning), 0.0);
+    }
+
+    /// Each element's power is the work rate of its generalized forces, `Q · q̇` (the forces at
+    /// the bodies' origins against their rates), for bodies moving and turning; a spring's is
+    /// minus its potential's rate (central differences along the motion), a damper's ≤ 0.
+    #[test]
+    fn power_is_the_forces_rate_of_work() {
+        let (ia, ib) = (BodyId(0), BodyId(1));
+        let (pa, pb) = (Point2::new(0.3, -0.2), Point2::new(-0.4, 0.5));
+        let kinds = [
+            ForceKind::Spring {
+                a: ia,
+                at_a: pa,
+                b: ib,
+                at_b: pb,
+                stiffness: 7.0,
+                free_length: 1.1,
+                preload: -3.0,
+            },
+            ForceKind::Damper {
+                a: ia,
+                at_a: pa,
+                b: ib,
+                at_b: pb,
+                damping: 2.5,
+            },
+            ForceKind::TorsionSpring {
+                a: ia,
+                b: ib,
+                stiffness: 5.0,
+                free_angle: 0.2,
+                preload: 1.5,
+            },
+            ForceKind::TorsionDamper {
+                a: ia,
+                b: ib,
+                damping: 4.0,
+            },
+        ];
+        let q0 = [0.1, 0.2, 0.3, 1.6, 0.9, -0.7];
+        let v = [0.7, -1.3, 2.1, -0.4, 0.9, -1.7];
+        let st = |t: f64| {
+            move |id: BodyId| {
+                let i = id.index().unwrap();
+                let q = |c: usize| q0[3 * i + c] + t * v[3 * i + c];
+                let mut s = BodyState::at_rest(Pose::new(Point2::new(q(0), q(1)), q(2)));
+                s.velocity = Vec2::new(v[3 * i], v[3 * i + 1]);
+                s.omega = v[3 * i + 2];
+                s
+            }
+        };
+        for k in &kinds {
+            let mut f = [0.0; 6];
+            k.add_forces(st(0.0), &mut f);
+            let work_rate: f64 = f.iter().zip(&v).map(|(a, b)| a * b).sum();
+            let p = k.power(st(0.0));
+            assert!((p - work_rate).abs() < 1e-12, "{k:?}: {p} {work_rate}");
+            if k.stores() {
+                let h = 1e-6;
+                let rate = (k.potential(st(h)) - k.potential(st(-h))) / (2.0 * h);
+                assert!((p + rate).abs() < 1e-7, "{k:?}: {p} {rate}");
+            } else {
+                assert!(p < 0.0, "{k:?}: {p}");
+            }
+        }
     }
 }

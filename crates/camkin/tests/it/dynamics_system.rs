@@ -398,6 +398,17 @@ fn energy_drift(
         .map(|s| s.qd[rate].abs())
         .fold(0.0, f64::max);
     assert!(sim.constraint_residual().unwrap() < 1e-12);
+    // the balance explains the energy's change (by nothing: no driver, load, damper or impact)
+    // and the joints do no work, to twice the drift's size
+    let unexplained = run
+        .samples
+        .iter()
+        .map(|s| s.balance.residual().abs().max(s.balance.constraints.abs()))
+        .fold(0.0, f64::max);
+    assert!(
+        unexplained <= 2.0 * worst.max(1e-12 * e0.abs()),
+        "the balance leaves {unexplained:e} unexplained, the energy drifted {worst:e}"
+    );
     (worst, fastest, e0)
 }
 
@@ -460,6 +471,17 @@ fn coil_in_shape(
     m: f64,
     shape: impl Fn(usize) -> f64,
 ) -> (camkin::system::CoilSpring, System, Vec<BodyId>) {
+    damped_coil_in_shape(n, k, m, 0.0, shape)
+}
+
+/// [`coil_in_shape`] with its first surge mode's damping ratio `zeta`.
+fn damped_coil_in_shape(
+    n: usize,
+    k: f64,
+    m: f64,
+    zeta: f64,
+    shape: impl Fn(usize) -> f64,
+) -> (camkin::system::CoilSpring, System, Vec<BodyId>) {
     let spring = camkin::system::CoilSpring {
         name: "valve spring".into(),
         a: BodyId::GROUND,
@@ -472,9 +494,10 @@ fn coil_in_shape(
         mass: m,
         masses: n,
         solid_length: None,
+        damping_ratio: zeta,
     };
     let mut chain = System::new();
-    let ids = spring.add_to(&mut chain);
+    let ids = spring.add_to(&mut chain, 1e-3);
     let mut sys = System::new();
     for (i, b) in chain.bodies().iter().enumerate() {
         let mut b = b.clone();
@@ -526,6 +549,77 @@ fn a_coil_springs_masses_surge_at_the_chains_closed_form_frequency() {
     assert!(worst < 1e-6 * 0.5, "off the mode by {worst} mm");
 }
 
+/// The same coil with its first surge mode damped at `ζ = 0.05` (stiffness-proportional: the
+/// mode keeps its shape), started in that shape at rest: every mass moves as the damped
+/// oscillator's free decay, `δ_j e^{−ζω₁t} (cos ω_d t + ζ/√(1−ζ²) sin ω_d t)` with `ω_d = ω₁
+/// √(1−ζ²)`, to 1e-6 of the amplitude over three periods, and its kinetic energy is the
+/// closed form's to 1e-6 of its peak; the segments' dampers take the energy lost, the balance
+/// leaving 1e-8 of the energy unexplained.
+#[test]
+fn a_damped_coil_springs_surge_decays_at_its_damping_ratio() {
+    let (n, k, m, mm, zeta) = (4usize, 30.0, 0.02, 1e-3, 0.05);
+    let shape = |j: usize| 0.5 * (j as f64 * std::f64::consts::PI / (n + 1) as f64).sin();
+    let (_, sys, ids) = damped_coil_in_shape(n, k, m, zeta, shape);
+    assert_eq!(
+        sys.forces().len(),
+        2 * (n + 1),
+        "a damper beside each segment"
+    );
+    let w1 = 2.0
+        * (k * (n + 1) as f64 / mm / (m / n as f64)).sqrt()
+        * (std::f64::consts::PI / (2.0 * (n + 1) as f64)).sin();
+    let wd = w1 * (1.0 - zeta * zeta).sqrt();
+    let opts = SystemDynamicsOptions {
+        metres_per_unit: mm,
+        tolerances: Tolerances {
+            relative: 1e-10,
+            absolute: 1e-10,
+        },
+        ..SystemDynamicsOptions::default()
+    };
+    let mut sim = SystemSimulation::new(&sys, opts).unwrap();
+    let e0 = sim.sample().unwrap().energy;
+    let peak_kinetic: f64 = (1..=n)
+        .map(|j| 0.5 * (m / n as f64) * (shape(j) * w1).powi(2) * 1e-3)
+        .sum();
+    let period = std::f64::consts::TAU / w1;
+    let run = sim
+        .run(
+            1200,
+            period / 400.0,
+            |_| std::ops::ControlFlow::Continue(()),
+        )
+        .unwrap();
+    let mut worst: f64 = 0.0;
+    for s in &run.samples {
+        let t = s.time;
+        let decay = (-zeta * w1 * t).exp()
+            * ((wd * t).cos() + zeta / (1.0 - zeta * zeta).sqrt() * (wd * t).sin());
+        for (j, id) in ids.iter().enumerate() {
+            let i = id.index().unwrap();
+            let rest = 40.0 * (j + 1) as f64 / (n + 1) as f64;
+            worst = worst.max((s.q[3 * i + 1] - rest - shape(j + 1) * decay).abs());
+        }
+        let b = &s.balance;
+        assert!(b.residual().abs() < 1e-8 * e0, "{b:?}");
+        // ½ Σ (m/n) v_j², v_j = −δ_j (ω₁²/ω_d) e^{−ζω₁t} sin ω_d t, in N·mm (kg·mm²/s² is 1e-3)
+        let rate = -(w1 * w1 / wd) * (-zeta * w1 * t).exp() * (wd * t).sin();
+        let kinetic: f64 = (1..=n)
+            .map(|j| 0.5 * (m / n as f64) * (shape(j) * rate).powi(2) * 1e-3)
+            .sum();
+        assert!(
+            (b.kinetic - kinetic).abs() < 1e-6 * peak_kinetic,
+            "kinetic {} N·mm at {t} s, closed form {kinetic}",
+            b.kinetic
+        );
+    }
+    assert!(worst < 1e-6 * 0.5, "off the decaying mode by {worst} mm");
+    assert!(
+        run.samples.last().unwrap().balance.dampers() < -0.5 * peak_kinetic,
+        "the dampers took the surge's energy"
+    );
+}
+
 /// A second check of a coil's segments, static where the surge test is dynamic: `n` masses
 /// split the spring into `n + 1` segments of `(n + 1) k` each, in series `k`, so at rest at
 /// uniform spacing the plate on its free end is pushed by `k (L₀ − L) − F₀` (compressed by
@@ -568,8 +662,9 @@ fn a_coils_end_force_at_rest_is_its_stiffness_times_its_compression_whatever_its
             mass: 0.01,
             masses: n,
             solid_length: None,
+            damping_ratio: 0.0,
         }
-        .add_to(&mut sys);
+        .add_to(&mut sys, 1e-3);
         let opts = SystemDynamicsOptions {
             metres_per_unit: 1e-3,
             ..SystemDynamicsOptions::default()

@@ -12,6 +12,7 @@ mod contact_general;
 mod contact_jumps;
 mod corner_contacts;
 mod dynamics_contact;
+mod dynamics_energy;
 mod dynamics_initial_state;
 mod dynamics_liftoff;
 mod dynamics_loads;

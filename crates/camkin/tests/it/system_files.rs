@@ -525,3 +525,50 @@ fn a_starting_state_and_a_run_in_time_are_read_and_refused_by_key() {
         "{r:?}"
     );
 }
+
+/// A coil spring's `damping_ratio` is read from 0 to 1 (a damper beside each segment), refused
+/// outside it and on a massless spring (which has no surge mode to damp), each refusal naming
+/// the key and its line.
+#[test]
+fn a_coil_springs_damping_ratio_is_read_and_refused_by_key() {
+    let coil = |masses: usize, extra: &str| {
+        format!(
+            "length_unit = \"mm\"\n[dynamics]\n[[body]]\nname = \"valve\"\nmass = 0.05\ninertia = 1e-6\nposition = [0.0, 40.0]\n[[joint]]\nname = \"guide\"\nkind = \"prismatic\"\nbodies = [\"ground\", \"valve\"]\nat = [[0.0, 0.0], [0.0, 0.0]]\naxis = [0.0, 1.0]\n[[coil_spring]]\nname = \"spring\"\nbodies = [\"ground\", \"valve\"]\nat = [[0.0, 0.0], [0.0, 0.0]]\nstiffness = 30.0\nfree_length = 48.0\nmass = 0.02\nmasses = {masses}\n{extra}\n"
+        )
+    };
+    let built = build(&coil(4, "damping_ratio = 0.05")).unwrap();
+    let dampers = built
+        .system
+        .forces()
+        .iter()
+        .filter(|f| matches!(f.kind, camkin::system::ForceKind::Damper { .. }))
+        .count();
+    assert_eq!(dampers, 5, "one beside each of the 5 segments");
+    assert_eq!(built.coil_springs[0].damping_ratio, 0.05);
+    let undamped = build(&coil(4, "")).unwrap();
+    assert_eq!(undamped.system.forces().len(), 5, "segments only");
+    for (text, needles) in [
+        (
+            coil(4, "damping_ratio = 1.5"),
+            &["coil_spring[0].damping_ratio", "1.5"][..],
+        ),
+        (
+            coil(4, "damping_ratio = -0.1"),
+            &["coil_spring[0].damping_ratio", "-0.1"][..],
+        ),
+        (
+            coil(0, "damping_ratio = 0.05"),
+            &["coil_spring[0].damping_ratio", "lumped masses"][..],
+        ),
+    ] {
+        let e = build(&text).map(|_| ()).unwrap_err();
+        for n in needles {
+            assert!(e.message.contains(n), "{text}\n{}", e.message);
+        }
+        let line = text
+            .lines()
+            .position(|l| l.starts_with("damping_ratio"))
+            .map(|i| i + 1);
+        assert_eq!(e.at.map(|a| a.0), line, "{}", e.message);
+    }
+}

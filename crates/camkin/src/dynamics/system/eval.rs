@@ -9,12 +9,12 @@ use super::SystemSimulation;
 use crate::contact::Pairing;
 
 /// An evaluation of the equations of motion: `q̈`, each contact's compressive force, the
-/// drivers' power and each driver's effort.
+/// power of each channel of work ([`super::balance`]) and each driver's effort.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Accel {
     pub(crate) qdd: Vec<f64>,
     pub(crate) forces: Vec<f64>,
-    pub(crate) power: f64,
+    pub(crate) powers: Vec<f64>,
     pub(crate) efforts: Vec<f64>,
 }
 
@@ -23,7 +23,7 @@ impl Accel {
     pub(super) fn copy_from(&mut self, other: &Accel) {
         self.qdd.clone_from(&other.qdd);
         self.forces.clone_from(&other.forces);
-        self.power = other.power;
+        self.powers.clone_from(&other.powers);
         self.efforts.clone_from(&other.efforts);
     }
 }
@@ -156,7 +156,9 @@ impl SystemSimulation<'_> {
         };
         self.active_into(in_contact, &mut active);
         // (an early return leaves the buffers to be made again)
-        let gas_power = match self.direct(t, q, qd, &active, pairings, &mut out.qdd, &mut lambda)? {
+        let solved = self.direct(t, q, qd, &active, pairings, &mut out.qdd, &mut lambda)?;
+        let direct = solved.is_some();
+        let applied = match solved {
             Some(x) => x,
             // forces from tables of the crank angle and applied loads are not in the model the
             // augmented Lagrangian solves: dependent rows with them are refused, not answered
@@ -181,8 +183,11 @@ impl SystemSimulation<'_> {
         out.forces.clear();
         out.forces.resize(in_contact.len(), 0.0);
         out.efforts.clear();
-        // the drivers' power and the table forces' (their work is the drivers' column's too)
-        let (mut r, mut power) = (0, gas_power);
+        out.powers.clear();
+        out.powers.resize(self.channels(), 0.0);
+        // the drivers' power, and the joints' and contacts' `−λ Φ_q q̇` over their rows
+        let (mut r, mut drivers, mut constraints) = (0, 0.0, 0.0);
+        let s = self.scratch.borrow();
         for (k, c) in self.model.constraints.iter().enumerate() {
             if !active[k] {
                 continue;
@@ -197,8 +202,14 @@ impl SystemSimulation<'_> {
                     crate::system::Coordinate::X => self.frame_state(q, qd, *body).velocity.x,
                     crate::system::Coordinate::Y => self.frame_state(q, qd, *body).velocity.y,
                 };
-                power -= lambda[r] * rate;
+                drivers -= lambda[r] * rate;
                 out.efforts.push(-lambda[r]);
+            } else if direct {
+                let span = r..r + c.rows();
+                for (row, l) in s.rows[span.clone()].iter().zip(&lambda[span]) {
+                    let rate: f64 = row.jac().iter().map(|&(col, v)| v * qd[col]).sum();
+                    constraints -= l * rate;
+                }
             }
             if k >= self.first_contact {
                 let c = k - self.first_contact;
@@ -206,7 +217,21 @@ impl SystemSimulation<'_> {
             }
             r += c.rows();
         }
-        out.power = power;
+        drop(s);
+        if !direct {
+            // the constraint forces' power from `M q̈ − Q` (the augmented Lagrangian's rows are
+            // not kept), less the drivers'
+            let mut f = vec![0.0; q.len()];
+            self.model.forces(q, qd, &mut f);
+            let all: f64 = (0..q.len())
+                .map(|i| qd[i] * (out.qdd[i] / self.inv_mass[i] - f[i]))
+                .sum();
+            constraints = all - drivers;
+        }
+        out.powers[super::balance::DRIVERS] = drivers;
+        out.powers[super::balance::APPLIED] = applied;
+        out.powers[super::balance::CONSTRAINTS] = constraints;
+        self.element_powers(q, qd, &mut out.powers);
         let mut s = self.scratch.borrow_mut();
         (s.active, s.lambda) = (active, lambda);
         Ok(())

@@ -29,6 +29,9 @@ pub(crate) struct Integrator {
     /// the contacts closed over that span, and every contact's pairing at its start
     modes: Vec<bool>,
     start_pairings: Vec<Option<Pairing>>,
+    /// the energy the impacts and projections had changed at its start (a sample inside it
+    /// is of the motion before the event or the projection that ended it)
+    start_jumps: (f64, f64),
     /// buffers: a state, the stages' pairings, an evaluation
     y: Vec<f64>,
     pairings: Vec<Option<Pairing>>,
@@ -44,8 +47,8 @@ impl SystemSimulation<'_> {
     /// The error scale of component `i` of the state `(q, q̇, W)` (see
     /// [`crate::dynamics::Tolerances`]): `atol` times a length's scale (the size), an angle's (a
     /// radian), a rate's (those over the time scale), plus `rtol` times the larger size of the
-    /// component at the step's ends; the drivers' work `W` is not measured (a quadrature of
-    /// their power on the steps the motion takes).
+    /// component at the step's ends; the work `W` is not measured (a quadrature of the powers
+    /// on the steps the motion takes).
     fn error_scale(&self, i: usize, y0: f64, y1: f64) -> f64 {
         let n = self.q.len();
         if i >= 2 * n {
@@ -119,9 +122,10 @@ impl SystemSimulation<'_> {
         it.y.clear();
         it.y.extend_from_slice(&self.q);
         it.y.extend_from_slice(&self.qd);
-        it.y.push(self.work);
+        it.y.extend_from_slice(&self.work);
         it.modes.clone_from(&self.in_contact);
         it.start_pairings.clone_from(&self.pairings);
+        it.start_jumps = (self.impacts, self.projections);
         let room = limit - t0;
         // the smallest step that still moves the time
         let floor = 1e-14 * t0.abs().max(h_max).max(1e-300);
@@ -139,9 +143,10 @@ impl SystemSimulation<'_> {
             let d = &it.dopri;
             self.q.copy_from_slice(&d.y1[..n]);
             self.qd.copy_from_slice(&d.y1[n..2 * n]);
-            self.work = d.y1[2 * n];
+            self.work.copy_from_slice(&d.y1[2 * n..]);
             self.pairings.clone_from(&it.pairings);
             self.t = if h >= room { limit } else { t0 + h };
+            let unprojected = self.energy();
             let moved = match self.project() {
                 Ok(()) => (0..n)
                     .map(|i| {
@@ -156,6 +161,7 @@ impl SystemSimulation<'_> {
             };
             if moved <= off {
                 it.next = Some(it.next_from_error);
+                self.projections += self.energy() - unprojected;
                 break;
             }
             // back to the start, a fifth of the step
@@ -164,7 +170,7 @@ impl SystemSimulation<'_> {
             it.rejected += 1;
             self.q.copy_from_slice(&it.y[..n]);
             self.qd.copy_from_slice(&it.y[n..2 * n]);
-            self.work = it.y[2 * n];
+            self.work.copy_from_slice(&it.y[2 * n..]);
             self.pairings.clone_from(&it.start_pairings);
             self.t = t0;
             shorter = Some(0.2 * h);
@@ -199,8 +205,12 @@ impl SystemSimulation<'_> {
             let mut p = self.pairings.clone();
             self.gap(&self.q.clone(), &self.qd.clone(), k, &mut p)?;
             self.pairings = p;
+            let before = self.energy();
             self.project()?;
+            let projected = self.energy();
+            self.projections += projected - before;
             let approach = self.impact(k)?;
+            self.impacts += self.energy() - projected;
             events.push(ContactEvent {
                 kind: EventKind::Impact,
                 time: self.t,
@@ -390,7 +400,8 @@ impl SystemSimulation<'_> {
     }
 
     /// The derivative of the state `y = (q, q̇, W)` at `t` in the modes `modes`: `(q̇, q̈, P)`,
-    /// `P` the drivers' power; the evaluation left in `accel`.
+    /// `P` the power of each channel of work ([`super::balance`]); the evaluation left in
+    /// `accel`.
     fn derivative(
         &self,
         t: f64,
@@ -406,7 +417,7 @@ impl SystemSimulation<'_> {
         dy.clear();
         dy.extend_from_slice(v);
         dy.extend_from_slice(&accel.qdd);
-        dy.push(accel.power);
+        dy.extend_from_slice(&accel.powers);
         Ok(())
     }
 
@@ -431,12 +442,12 @@ impl SystemSimulation<'_> {
         }
         self.q.copy_from_slice(&redo.y1[..n]);
         self.qd.copy_from_slice(&redo.y1[n..2 * n]);
-        self.work = redo.y1[2 * n];
+        self.work.copy_from_slice(&redo.y1[2 * n..]);
         it.redo = redo;
         self.pairings = p;
         self.in_contact.clone_from(&it.modes);
         self.t = t0 + h;
-        self.project()
+        self.project_counted()
     }
 
     /// The current state set to the last step's interpolant at `θ`, in its modes, projected.
@@ -446,11 +457,19 @@ impl SystemSimulation<'_> {
         it.dopri.at(theta, &mut y);
         self.q.copy_from_slice(&y[..n]);
         self.qd.copy_from_slice(&y[n..2 * n]);
-        self.work = y[2 * n];
+        self.work.copy_from_slice(&y[2 * n..]);
         self.pairings.clone_from(&it.start_pairings);
         self.in_contact.clone_from(&it.modes);
         self.t = it.dopri.t0 + theta * it.dopri.h;
-        self.project()
+        self.project_counted()
+    }
+
+    /// [`SystemSimulation::project`], the energy it changed counted in the balance.
+    fn project_counted(&mut self) -> Result<(), DynamicsError> {
+        let before = self.energy();
+        self.project()?;
+        self.projections += self.energy() - before;
+        Ok(())
     }
 
     /// The tolerances of the steps from now on (see [`crate::dynamics::Tolerances`]); refused
@@ -568,7 +587,9 @@ impl SystemSimulation<'_> {
             qd: self.qd.clone(),
             pairings: self.pairings.clone(),
         };
-        let (t_now, work, modes) = (self.t, self.work, self.in_contact.clone());
+        let (t_now, work, modes) = (self.t, self.work.clone(), self.in_contact.clone());
+        let jumps = (self.impacts, self.projections);
+        (self.impacts, self.projections) = it.start_jumps;
         let sampled = self
             .set_from_interpolant(&it, theta.clamp(0.0, 1.0))
             .and_then(|()| {
@@ -577,6 +598,7 @@ impl SystemSimulation<'_> {
             });
         self.swap_state(&mut kept);
         (self.t, self.work, self.in_contact) = (t_now, work, modes);
+        (self.impacts, self.projections) = jumps;
         self.integrator = it;
         sampled
     }

@@ -24,6 +24,7 @@
 //! in kg·m² (converted with the unit's size in metres), forces in N, stiffnesses in N/L, gravity
 //! in m/s²; energies are reported in N·L.
 
+mod balance;
 mod centre;
 mod eval;
 mod integrate;
@@ -32,6 +33,7 @@ mod rates;
 mod sparse;
 mod start;
 
+pub use balance::{ElementEnergy, EnergyBalance};
 pub use start::StartReport;
 
 use super::follower::EventKind;
@@ -142,6 +144,9 @@ pub struct SystemSample {
     pub in_contact: Vec<bool>,
     /// kinetic plus potential energy (springs, torsion springs, gravity), N·L
     pub energy: f64,
+    /// the energy balance: kinetic, each element's potential and work, the drivers', loads'
+    /// and constraint forces' work, the impacts' losses, the momentum
+    pub balance: EnergyBalance,
     /// the work the drivers, the forces from tables of the crank angle (a gas force) and the
     /// applied loads have done since the start, N·L
     pub driver_work: f64,
@@ -210,7 +215,12 @@ pub struct SystemSimulation<'a> {
     qd: Vec<f64>,
     in_contact: Vec<bool>,
     pairings: Vec<Option<Pairing>>,
-    work: f64,
+    /// the work integrated with the motion, channel by channel ([`balance`])
+    work: Vec<f64>,
+    /// the energy the impacts and the projections changed, and `T + V` at the start
+    impacts: f64,
+    projections: f64,
+    initial_energy: f64,
     pending: Vec<ContactEvent>,
     /// the last evaluation of the equations of motion: a step's end is evaluated by its force
     /// check, then by the sample, then by the next step's first stage — once
@@ -449,7 +459,10 @@ impl<'a> SystemSimulation<'a> {
             q,
             in_contact: vec![false; nc],
             pairings: vec![None; first_contact + nc],
-            work: 0.0,
+            work: Vec::new(),
+            impacts: 0.0,
+            projections: 0.0,
+            initial_energy: 0.0,
             pending: Vec::new(),
             last: std::cell::RefCell::new(None),
             scratch: Default::default(),
@@ -515,6 +528,8 @@ impl<'a> SystemSimulation<'a> {
         }
         sim.note_moves(&before);
         sim.start_rates()?;
+        sim.work = vec![0.0; sim.channels()];
+        sim.initial_energy = sim.energy();
         Ok(sim)
     }
 
@@ -552,28 +567,6 @@ impl<'a> SystemSimulation<'a> {
     /// The system simulated.
     pub fn system(&self) -> &crate::system::System {
         &self.sys
-    }
-
-    /// Kinetic plus potential energy at the current state, N·L.
-    fn energy(&self) -> f64 {
-        let mut e = 0.0;
-        for (i, b) in self.model.bodies.iter().enumerate() {
-            let v = &self.qd[3 * i..3 * i + 3];
-            e += 0.5 * (b.mass * (v[0] * v[0] + v[1] * v[1]) + b.inertia * v[2] * v[2]);
-        }
-        for f in &self.model.forces {
-            match f {
-                Load::Element(kind) => {
-                    e += kind.potential(|id| self.state(id.0));
-                }
-                Load::Gravity(g) => {
-                    for (i, b) in self.model.bodies.iter().enumerate() {
-                        e -= b.mass * (g.x * self.q[3 * i] + g.y * self.q[3 * i + 1]);
-                    }
-                }
-            }
-        }
-        e
     }
 
     /// The sample at the current state.
@@ -636,7 +629,8 @@ impl<'a> SystemSimulation<'a> {
             gaps,
             in_contact: self.in_contact.clone(),
             energy: self.energy(),
-            driver_work: self.work,
+            balance: self.balance(),
+            driver_work: self.work[balance::DRIVERS] + self.work[balance::APPLIED],
             driver_efforts,
             hertz_pa,
             pairings: p[self.first_contact..].to_vec(),
@@ -670,7 +664,7 @@ impl<'a> SystemSimulation<'a> {
 
     /// The drivers' work since the start, N·L.
     pub(crate) fn driver_work(&self) -> f64 {
-        self.work
+        self.work[balance::DRIVERS] + self.work[balance::APPLIED]
     }
 
     /// Contact `k`'s curves at its contact `pairing` now, where it is closed and neither curve

@@ -99,7 +99,8 @@ impl SystemSimulation<'_> {
     /// closed contact the rates asked part (a body thrown off a surface it rests on), or whose
     /// force they make tensile, leaves at once. Returns the largest change the projection
     /// made to a rate asked (an angle's times the size, in L/s), so that a user sees where what
-    /// they asked is not what the constraints allow.
+    /// they asked is not what the constraints allow. The energy balance
+    /// ([`SystemSimulation::balance`]) counts from the state set.
     pub fn set_frame_rates(&mut self, rates: &[f64]) -> Result<f64, DynamicsError> {
         if rates.len() != self.qd.len() {
             return Err(DynamicsError::Element {
@@ -117,6 +118,8 @@ impl SystemSimulation<'_> {
                 reason: "must be finite",
             });
         }
+        // the energy balance starts again from the rates set
+        let before = self.energy();
         self.part_by_rates(rates)?;
         // the centres' rates: ẋ_G = ȯ + θ̇ J ρ, J ρ = (−ρ_y, ρ_x)
         let arms = self.arms(&self.q);
@@ -136,6 +139,7 @@ impl SystemSimulation<'_> {
             .map(|(i, (a, b))| (a - b).abs() * if i % 3 == 2 { self.size } else { 1.0 })
             .fold(0.0f64, f64::max);
         self.release_pulled()?;
+        self.initial_energy += self.energy() - before;
         Ok(change)
     }
 
