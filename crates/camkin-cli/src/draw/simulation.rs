@@ -268,13 +268,13 @@ pub fn write_timed(
         chart::save(&motion, &dir.join("motion"))?;
     }
     let e0 = samples.first().map_or(0.0, |s| s.energy);
-    let mut series = vec![
-        Series::line("energy − start", time(&|s| s.energy - e0)),
-        Series::dashed(
+    let mut series = vec![Series::line("energy − start", time(&|s| s.energy - e0))];
+    if samples.iter().any(|s| s.driver_work != 0.0) {
+        series.push(Series::dashed(
             "work of the drivers and applied forces",
             time(&|s| s.driver_work),
-        ),
-    ];
+        ));
+    }
     if samples.iter().any(|s| s.balance.dampers() != 0.0) {
         series.push(Series::dashed(
             "work of the dampers (dissipated)",
@@ -287,8 +287,15 @@ pub fn write_timed(
             time(&|s| s.balance.impacts),
         ));
     }
+    let unexplained = samples
+        .iter()
+        .map(|s| s.balance.residual().abs())
+        .fold(0.0, f64::max);
     series.push(Series::line(
-        "unexplained: energy − start − every work and impact (0 where the run is right)",
+        format!(
+            "unexplained: energy − start − every work and impact (at most {} N·{u}; 0 where the run is right)",
+            camkin::human::human(unexplained)
+        ),
         time(&|s| s.balance.residual()),
     ));
     let energy = Chart {
