@@ -14,9 +14,12 @@ fn bad(m: String) -> Failure {
 
 /// The instants at the sweep's angles (degrees): the first driver's, or a cam's.
 pub fn times_of(built: &BuiltSystem, name: &str, angles: &[f64]) -> Result<Vec<f64>, Failure> {
-    built
-        .times(angles)
-        .map_err(|e| bad(format!("{name}: --at, --angles: {e}")))
+    built.times(angles).map_err(|e| {
+        bad(format!(
+            "{name}: --at, --angles: {}",
+            built.explain_sweep(&e)
+        ))
+    })
 }
 
 /// The system `built` (read from `name`) swept in order through `angles` (of `--at` or

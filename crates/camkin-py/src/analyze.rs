@@ -128,7 +128,7 @@ impl PySystem {
                 Some(camkin::human::human(angle_deg)),
                 e.to_string(),
             ),
-            _ => errors::input("driver", None, e.to_string()),
+            _ => errors::input("driver", None, self.built.explain_sweep(&e)),
         })?;
         errors::refuse_large(
             &camkin::work::Work::system(sys, angles.len()),

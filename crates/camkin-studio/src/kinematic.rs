@@ -32,7 +32,9 @@ fn solve(built: &BuiltSystem, step_deg: f64, limits: &Limits) -> Result<Solved, 
         });
     }
     let input = |message: String| StudioError::Input { message, at: None };
-    let times = built.times(&angles).map_err(|e| input(e.to_string()))?;
+    let times = built
+        .times(&angles)
+        .map_err(|e| input(built.explain_sweep(&e)))?;
     let states: Vec<_> = sys
         .instants(&times)
         .map_err(|e| {

@@ -121,6 +121,17 @@ impl BuiltSystem {
         }
     }
 
+    /// A sweep's `e` as people read it: a system with `[dynamics]` and no driver of an angle (a
+    /// pendulum, a benchmark released from a state) is simulated in time, not swept.
+    pub fn explain_sweep(&self, e: &SweepError) -> String {
+        match e {
+            SweepError::NotAnAngle if self.simulated => format!(
+                "{e}; a system moved by its forces ([dynamics]) is simulated: `camkin simulate` (its [simulation] or --duration), Python's System.simulate"
+            ),
+            _ => e.to_string(),
+        }
+    }
+
     /// The instant at the sweep angle `angle` (rad) (see [`SweepAngle::time`]).
     pub fn time_of(&self, angle: f64) -> Option<f64> {
         self.sweep_angle.time(&self.system, angle)

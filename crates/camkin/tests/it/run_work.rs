@@ -12,7 +12,7 @@ fn examples() -> std::path::PathBuf {
 }
 
 /// Every system example with `[dynamics]` planned over a revolution at 1° outputs (and at
-/// 0.25°): the steps the engine took against its estimate
+/// 0.25°), or over its `[simulation]` where it has no driver: the steps the engine took against its estimate
 /// (`SystemSimulation::steps_estimate`, what `BuiltSystem::run_work` charges).
 #[test]
 fn every_systems_step_estimate_is_within_twice_its_steps() {
@@ -36,8 +36,19 @@ fn every_systems_step_estimate_is_within_twice_its_steps() {
         if !built.simulated {
             continue;
         }
-        for step in [1.0, 0.25] {
-            let (plan, mut sim) = built.plan(1.0, step).unwrap();
+        // a driverless system (a benchmark) over its own `[simulation]`, else a revolution at
+        // two output steps
+        let plans: Vec<_> = match built.timed_run {
+            Some(run) if built.time_of(0.0).is_none() => {
+                vec![("its duration", built.plan_timed(run).unwrap())]
+            }
+            _ => [1.0, 0.25]
+                .iter()
+                .map(|&step| ("a revolution", built.plan(1.0, step).unwrap()))
+                .collect(),
+        };
+        for (what, (plan, mut sim)) in plans {
+            let step = plan.h_out;
             let estimate = sim.steps_estimate(plan.duration(), plan.h_out);
             sim.run(plan.outputs, plan.h_out, |_| {
                 std::ops::ControlFlow::Continue(())
@@ -47,13 +58,13 @@ fn every_systems_step_estimate_is_within_twice_its_steps() {
             let taken = (accepted + rejected) as f64;
             assert!(
                 taken <= 2.0 * estimate && estimate <= 2.0 * taken,
-                "{name} at {step}°: {taken} steps taken ({accepted} + {rejected} rejected), {estimate} estimated"
+                "{name} over {what} at {step} s outputs: {taken} steps taken ({accepted} + {rejected} rejected), {estimate} estimated"
             );
             checked += 1;
         }
     }
-    // the valve train, at both output steps
-    assert!(checked >= 2, "{checked} runs checked");
+    // the valve train, at both output steps, and the N-four-bar
+    assert!(checked >= 3, "{checked} runs checked");
 }
 
 /// Every cam example with `[dynamics]` run as the command runs it (`Simulation`, the preset

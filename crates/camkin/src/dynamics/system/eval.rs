@@ -45,6 +45,8 @@ pub(crate) struct Scratch {
     pub(super) delta: Vec<f64>,
     /// the Schur complement's factor
     pub(super) schur: Schur,
+    /// the rows' Schur complement without masses, factored to tell a singular pose
+    pub(super) geometry: Schur,
 }
 
 /// An evaluation kept: the state and modes it was at, the pairings it started from and ended
@@ -156,28 +158,56 @@ impl SystemSimulation<'_> {
         };
         self.active_into(in_contact, &mut active);
         // (an early return leaves the buffers to be made again)
-        let solved = self.direct(t, q, qd, &active, pairings, &mut out.qdd, &mut lambda)?;
-        let direct = solved.is_some();
-        let applied = match solved {
-            Some(x) => x,
-            // forces from tables of the crank angle and applied loads are not in the model the
-            // augmented Lagrangian solves: dependent rows with them are refused, not answered
-            // without them
-            None if !self.sys.table_forces().is_empty() || !self.sys.loads().is_empty() => {
-                return Err(DynamicsError::Singular { time: t });
+        let mut singular_pose = false;
+        let (mut solved, mut applied) = self.direct(
+            t,
+            q,
+            qd,
+            &active,
+            pairings,
+            &mut out.qdd,
+            &mut lambda,
+            false,
+            &mut singular_pose,
+        )?;
+        // whether the scratch's rows are the ones solved (for the constraint forces' power)
+        let mut direct = solved;
+        if !solved {
+            // dependent rows: a redundant joint, which the augmented Lagrangian answers exactly
+            // (its matrix stays positive definite there) — but not with forces from tables,
+            // applied loads or centres away from the frames, which are not in the model it
+            // solves — or a singular pose, where the rows are not consistent and it does not
+            // converge: the Schur complement damped there
+            let plain = self.sys.table_forces().is_empty()
+                && self.sys.loads().is_empty()
+                && !self.offset
+                && !singular_pose;
+            let al = plain.then(|| {
+                self.model
+                    .evaluate(&self.opts.al, t, q, qd, &active, pairings)
+            });
+            match al {
+                Some(Ok(e)) => (out.qdd, lambda) = (e.qdd, e.lambda),
+                None | Some(Err(DynamicsError::NoConvergence { .. })) => {
+                    (solved, applied) = self.direct(
+                        t,
+                        q,
+                        qd,
+                        &active,
+                        pairings,
+                        &mut out.qdd,
+                        &mut lambda,
+                        true,
+                        &mut singular_pose,
+                    )?;
+                    if !solved {
+                        return Err(DynamicsError::Singular { time: t });
+                    }
+                    direct = true;
+                }
+                Some(Err(e)) => return Err(e),
             }
-            // nor are centres of mass away from the frames' origins
-            None if self.offset => return Err(DynamicsError::Singular { time: t }),
-            // dependent rows (a redundant joint): the augmented Lagrangian, whose matrix stays
-            // positive definite there
-            None => {
-                let e = self
-                    .model
-                    .evaluate(&self.opts.al, t, q, qd, &active, pairings)?;
-                (out.qdd, lambda) = (e.qdd, e.lambda);
-                0.0
-            }
-        };
+        }
         // λ row by row over the active constraints: a driver's force on its coordinate is −λ,
         // a contact's compressive force −λ (its row is the gap, positive apart)
         out.forces.clear();
@@ -240,8 +270,11 @@ impl SystemSimulation<'_> {
     /// The equations of motion `M q̈ + Φ_qᵀ λ = Q`, `Φ_q q̈ = γ − 2ξΩ Φ̇ − Ω² Φ` solved directly
     /// by the Schur complement: `(Φ_q M⁻¹ Φ_qᵀ) λ = Φ_q M⁻¹ Q − γ̃` (Cholesky; a symmetric
     /// diagonal scaling does not change its accuracy, so masses a hundred thousand times apart
-    /// cost nothing), `q̈ = M⁻¹ (Q − Φ_qᵀ λ)`, written to `qdd` and `lambda`; the table forces'
-    /// power. `None` where the rows are dependent.
+    /// cost nothing), `q̈ = M⁻¹ (Q − Φ_qᵀ λ)`, written to `qdd` and `lambda`; whether it was
+    /// solved (not where the rows are dependent: `qdd` is then `Q`, the rows and their `γ̃` in
+    /// the scratch), and the table forces' and loads' power. `regularise`: `S` damped
+    /// (`Schur::factor_regularised`: at a singular pose); `singular_pose` set where it was not
+    /// solved because the rows are at one.
     #[allow(clippy::too_many_arguments)]
     fn direct(
         &self,
@@ -252,7 +285,9 @@ impl SystemSimulation<'_> {
         pairings: &mut [Option<Pairing>],
         qdd: &mut Vec<f64>,
         lambda: &mut Vec<f64>,
-    ) -> Result<Option<f64>, DynamicsError> {
+        regularise: bool,
+        singular_pose: &mut bool,
+    ) -> Result<(bool, f64), DynamicsError> {
         let n = q.len();
         let al = &self.opts.al;
         let (c1, c2) = (2.0 * al.xi * al.omega, al.omega * al.omega);
@@ -265,6 +300,7 @@ impl SystemSimulation<'_> {
             rhs,
             delta,
             schur,
+            geometry,
             ..
         } = &mut *guard;
         sparse.clear();
@@ -292,8 +328,20 @@ impl SystemSimulation<'_> {
         self.model.forces(&qf, &qdf, force);
         let gas_power = self.add_table_forces(t, &qf, &qdf, force);
         self.forces_about_centres(q, force);
-        if !schur.factor(sparse, inv_mass) {
-            return Ok(None);
+        let factored = if regularise {
+            schur.factor_regularised(sparse, inv_mass)
+        } else {
+            match self.factor_rows(schur, geometry, sparse) {
+                super::singular::Factored::Yes => true,
+                super::singular::Factored::SingularPose => {
+                    *singular_pose = true;
+                    false
+                }
+                super::singular::Factored::Dependent => false,
+            }
+        };
+        if !factored {
+            return Ok((false, gas_power));
         }
         // S λ = Φ_q M⁻¹ Q − γ̃
         lambda.clear();
@@ -333,7 +381,7 @@ impl SystemSimulation<'_> {
                 qdd[col] += inv_mass[col] * v * d;
             }
         }
-        Ok(Some(gas_power))
+        Ok((true, gas_power))
     }
 
     /// Adds the forces from tables of the crank angle and the applied loads at `t` to `f`;

@@ -30,6 +30,7 @@ mod eval;
 mod integrate;
 mod project;
 mod rates;
+mod singular;
 mod sparse;
 mod start;
 
@@ -238,6 +239,8 @@ pub struct SystemSimulation<'a> {
     fastest: std::cell::OnceCell<(f64, String)>,
     /// the inverse of the mass matrix's diagonal, one per coordinate
     pub(super) inv_mass: Vec<f64>,
+    /// each coordinate's weight in the rows' geometry: 1 a length's, `1/size²` an angle's
+    pub(super) geometry: Vec<f64>,
     /// what the start changed
     start_report: StartReport,
 }
@@ -471,12 +474,16 @@ impl<'a> SystemSimulation<'a> {
             sampled: Default::default(),
             fastest: Default::default(),
             inv_mass: Vec::new(),
+            geometry: Vec::new(),
             start_report: StartReport::default(),
         };
         if !(sim.speed_scale > 0.0) {
             // nothing driven and no gravity: the springs' fastest rate, or a size a second
             sim.speed_scale = size * sim.fastest_rate().0.max(1.0);
         }
+        sim.geometry = (0..sim.model.bodies.len())
+            .flat_map(|_| [1.0, 1.0, 1.0 / (size * size)])
+            .collect();
         sim.inv_mass = sim
             .model
             .bodies

@@ -178,7 +178,9 @@ impl SystemSimulation<'_> {
             if s.phi.iter().all(|p| p.abs() <= ASSEMBLED * self.size) {
                 break;
             }
-            if !s.schur.factor(&s.rows, &self.inv_mass) {
+            // (damped where the rows are dependent: Levenberg–Marquardt's step, which still
+            // converges where they are consistent, and at a singular pose does not leap)
+            if !self.factor_projection(s) {
                 return Ok(false);
             }
             // Δq = M⁻¹ Φ_qᵀ μ, S μ = −Φ
@@ -205,11 +207,21 @@ impl SystemSimulation<'_> {
         }
         // velocities: q̇ + M⁻¹ Φ_qᵀ μ with S μ = −Φ_t − Φ_q q̇ (the factor is the one the
         // step's check evaluates with next: the same rows)
-        if !s.schur.factor(&s.rows, &self.inv_mass) {
+        if !self.factor_projection(s) {
             return Ok(false);
         }
         self.project_rates(s);
         Ok(true)
+    }
+
+    /// The Schur complement of `s.rows` factored for a projection: damped where they are
+    /// dependent (Levenberg–Marquardt's step, which still converges where they are consistent,
+    /// and at a singular pose does not leap).
+    fn factor_projection(&self, s: &mut Scratch) -> bool {
+        match self.factor_rows(&mut s.schur, &mut s.geometry, &s.rows) {
+            super::singular::Factored::Yes => true,
+            _ => s.schur.factor_regularised(&s.rows, &self.inv_mass),
+        }
     }
 
     /// The rates projected onto the rows `s.rows` (their rates `s.rhs`) with the factor
@@ -282,7 +294,8 @@ impl SystemSimulation<'_> {
                 .model
                 .project_onto(&rows, &vec![0.0; n], &b[..rows.m], &mut x)
             {
-                return Err(self.unassembled(&rows.phi[..rows.m], &modes));
+                // dependent rows (a singular pose): the least correction, in least squares
+                x = self.pseudo_inverse_correction(&rows, &b);
             }
             for (q, d) in self.q.iter_mut().zip(&x) {
                 *q += d;
@@ -297,7 +310,13 @@ impl SystemSimulation<'_> {
             .model
             .project_onto(&rows, &self.qd, &rows.target, &mut x)
         {
-            return Err(DynamicsError::Singular { time: self.t });
+            let r: Vec<f64> = (0..rows.m)
+                .map(|i| rows.target[i] - super::super::dense::dot(rows.row(i), &self.qd))
+                .collect();
+            let dx = self.pseudo_inverse_correction(&rows, &r);
+            for ((xi, v), d) in x.iter_mut().zip(&self.qd).zip(&dx) {
+                *xi = v + d;
+            }
         }
         self.qd.copy_from_slice(&x);
         self.pairings = pairings;

@@ -2,7 +2,9 @@
 //! stiffness's and the damping's largest eigenvalues over the masses) and the longest step the
 //! integration is stable at, for its work estimate and its scales.
 
+use super::super::model::Load;
 use super::SystemSimulation;
+use crate::system::JointKind;
 
 impl SystemSimulation<'_> {
     /// The fastest rate of the system's force elements, 1/s, and the element that sets it: a
@@ -101,13 +103,63 @@ impl SystemSimulation<'_> {
         self.steps_estimate_at(duration, h_out, 1.0)
     }
 
+    /// The system's time scale with its drivers `speed` times as fast, s: its size over its
+    /// speed scale, or where gravity moves it the period scale of its longest body swinging,
+    /// `√(l/g)` (`l` the farthest two of a body's joint points apart), whichever is shorter — a
+    /// chain of forty one-metre links swings as fast as one link, not as one forty metres long.
+    fn time_scale(&self, speed: f64) -> f64 {
+        let whole = self.size / (self.speed_scale * speed);
+        let g = self
+            .model
+            .forces
+            .iter()
+            .find_map(|f| match f {
+                Load::Gravity(g) => Some(g.norm()),
+                _ => None,
+            })
+            .unwrap_or(0.0);
+        if !(g > 0.0) {
+            return whole;
+        }
+        // each body's joint points, in its frame; its extent their farthest pair's distance
+        let mut points: Vec<Vec<crate::geometry::Point2>> = vec![Vec::new(); self.q.len() / 3];
+        for j in self.sys.joints() {
+            let (a, at_a, b, at_b) = match j.kind {
+                JointKind::Revolute { a, at_a, b, at_b }
+                | JointKind::Prismatic {
+                    a, at_a, b, at_b, ..
+                }
+                | JointKind::Fixed {
+                    a, at_a, b, at_b, ..
+                } => (a, at_a, b, at_b),
+            };
+            for (id, at) in [(a, at_a), (b, at_b)] {
+                if let Some(i) = id.index() {
+                    points[i].push(at);
+                }
+            }
+        }
+        let longest = points
+            .iter()
+            .flat_map(|p| {
+                p.iter()
+                    .flat_map(move |x| p.iter().map(move |y| (x - y).norm()))
+            })
+            .fold(0.0f64, f64::max);
+        if longest > 0.0 {
+            whole.min((longest / g).sqrt())
+        } else {
+            whole
+        }
+    }
+
     /// [`SystemSimulation::steps_estimate`] with the drivers `speed` times as fast (a speed
     /// sweep's runs): the time scale and a degree of the driver shorter by that factor, the
     /// stable step the same.
     pub fn steps_estimate_at(&self, duration: f64, h_out: f64, speed: f64) -> f64 {
         let tol = self.opts.tolerances;
         let scale = tol.relative.min(tol.absolute).powf(0.2);
-        let smooth = 1.1 * self.size / (self.speed_scale * speed) * scale;
+        let smooth = 1.1 * self.time_scale(speed) * scale;
         let stable = self.stable_step();
         let stiff = stable.min(12.0 * stable * scale);
         let longest = h_out.max(self.degree_time() / speed);

@@ -8,6 +8,18 @@ use super::super::model::Row;
 /// six): cheaper than bucketing the entries by coordinate.
 const DENSE_ROWS: usize = 12;
 
+/// A pivot of the Schur complement, squared, below this times its row's own size marks the rows
+/// dependent (a redundant joint).
+const DEPENDENT: f64 = 1e-12;
+
+/// Rows whose geometry alone (the Schur complement with unit weights, an angle's times the
+/// size: no masses) has a pivot, squared, below this times its row's size are at a singular
+/// pose (the sine of the angle between a row and the others' below 1e-3): there the direct
+/// solution would amplify the rows' rounding by its inverse square, and the Schur complement is
+/// damped by it instead ([`Schur::factor_regularised`]). A point mass's rows are as dependent
+/// in the mass metric, but not in this one.
+pub(super) const SINGULAR: f64 = 1e-6;
+
 /// `S` factored (`S = L Lᵀ`), `L` kept row by row within each row's envelope: row `i` from its
 /// first nonzero column `first[i]` to the diagonal, at `start[i]` of `l` (a skyline: a chain's
 /// rows touch their neighbours only, so `L` holds a few entries a row, not `m²`). Its buffers
@@ -31,6 +43,24 @@ pub(crate) struct Schur {
     /// the rows of the factor held, where it succeeded: asked again for the same rows (a
     /// projection's rates, then the step's check at the same positions) it is kept
     factored: Vec<Row>,
+    /// the regularisation of the factor held (0: `S` itself)
+    factored_mu: f64,
+    /// the regularisation being factored
+    mu: f64,
+    /// the smallest pivot, squared, over its row's size, that the factor in progress accepts
+    floor: f64,
+    /// the smallest it met
+    worst: f64,
+    /// the rows in the order factored (reverse Cuthill–McKee: a narrow envelope whatever order
+    /// the file wrote its joints in), and each row's place in it
+    order: Vec<usize>,
+    place: Vec<usize>,
+    /// the rows' pattern that order is of (each row's length, then its columns), and the one
+    /// being factored: a step's rows keep their pattern, and their order with it
+    pattern: Vec<usize>,
+    asked: Vec<usize>,
+    /// a right-hand side in that order
+    permuted: std::cell::RefCell<Vec<f64>>,
 }
 
 impl Schur {
@@ -39,8 +69,33 @@ impl Schur {
     /// size). The factor keeps to each row's envelope (from its first nonzero column): a
     /// chain's rows touch their neighbours only.
     pub(super) fn factor(&mut self, rows: &[Row], inv_mass: &[f64]) -> bool {
+        self.factor_with(rows, inv_mass, 0.0, DEPENDENT)
+    }
+
+    /// [`Schur::factor`] of `S + μ D` (`D` its diagonal, `μ` [`SINGULAR`]): at a singular
+    /// pose, where `S` is nearly singular, the least-squares answer damped in the rows'
+    /// dependent directions (Levenberg–Marquardt's damping; the augmented Lagrangian's penalty
+    /// `1/μ`), which elsewhere changes the answer by `μ` of it; it fails only on a row of zeros.
+    pub(super) fn factor_regularised(&mut self, rows: &[Row], inv_mass: &[f64]) -> bool {
+        self.factor_with(rows, inv_mass, SINGULAR, 0.0)
+    }
+
+    /// Whether `rows` are at a singular pose: their Schur complement with the weights
+    /// `geometry` (no masses) has a pivot, squared, below [`SINGULAR`] of its row's size.
+    pub(super) fn singular(&mut self, rows: &[Row], geometry: &[f64]) -> bool {
+        !self.factor_with(rows, geometry, 0.0, SINGULAR)
+    }
+
+    /// The smallest pivot, squared, over its row's size, of the last factor.
+    pub(super) fn worst_pivot(&self) -> f64 {
+        self.worst
+    }
+
+    fn factor_with(&mut self, rows: &[Row], inv_mass: &[f64], mu: f64, floor: f64) -> bool {
         // (the last rows first: contacts' rows come last and move most, joints' are often fixed)
-        let same = self.factored.len() == rows.len()
+        let same = self.factored_mu == mu
+            && self.floor == floor
+            && self.factored.len() == rows.len()
             && self
                 .factored
                 .iter()
@@ -51,10 +106,12 @@ impl Schur {
             return true;
         }
         self.factored.clear();
+        (self.mu, self.floor, self.worst) = (mu, floor, f64::INFINITY);
         if !self.factor_anew(rows, inv_mass) {
             return false;
         }
         self.factored.extend_from_slice(rows);
+        self.factored_mu = mu;
         true
     }
 
@@ -83,11 +140,35 @@ impl Schur {
         let entries = &mut self.entries;
         entries.clear();
         entries.resize(count[n], (0, 0.0));
+        // the rows renumbered by reverse Cuthill–McKee (found again only where their pattern
+        // changed: a contact closed or opened), and bucketed in that order
+        self.asked.clear();
+        for row in rows {
+            self.asked.push(row.jac().len());
+            self.asked.extend(row.jac().iter().map(|&(c, _)| c));
+        }
+        if self.asked != self.pattern || self.order.len() != m {
+            self.next.clear();
+            self.next.extend_from_slice(count);
+            for (r, row) in rows.iter().enumerate() {
+                for &(c, v) in row.jac() {
+                    entries[self.next[c]] = (r, v);
+                    self.next[c] += 1;
+                }
+            }
+            reverse_cuthill_mckee(rows, count, entries, &mut self.order);
+            self.place.clear();
+            self.place.resize(m, 0);
+            for (i, &r) in self.order.iter().enumerate() {
+                self.place[r] = i;
+            }
+            std::mem::swap(&mut self.pattern, &mut self.asked);
+        }
         self.next.clear();
         self.next.extend_from_slice(count);
-        for (r, row) in rows.iter().enumerate() {
-            for &(c, v) in row.jac() {
-                entries[self.next[c]] = (r, v);
+        for &r in &self.order {
+            for &(c, v) in rows[r].jac() {
+                entries[self.next[c]] = (self.place[r], v);
                 self.next[c] += 1;
             }
         }
@@ -155,6 +236,7 @@ impl Schur {
     /// Cholesky of `S` filled whole in `l` (row `i` at `i(i+1)/2`): the envelope's, without
     /// its bookkeeping.
     fn cholesky_dense(&mut self) -> bool {
+        let (mu, floor) = (self.mu, self.floor);
         let l = &mut self.l;
         let mut ri = 0;
         for i in 0..self.m {
@@ -167,9 +249,11 @@ impl Schur {
                 row[j] = s / lj[j];
                 rj += j + 1;
             }
-            let diagonal = row[i];
+            let diagonal = row[i] * (1.0 + mu);
+            row[i] = diagonal;
             let s = diagonal - dot(&row[..i], &row[..i]);
-            if !(s > 1e-12 * diagonal) {
+            self.worst = self.worst.min(s / diagonal);
+            if !(s > floor * diagonal) {
                 return false;
             }
             row[i] = s.sqrt();
@@ -187,10 +271,18 @@ impl Schur {
             first,
             start,
             diagonal,
+            mu,
+            floor,
+            worst,
             ..
         } = self;
         diagonal.clear();
-        diagonal.extend((0..m).map(|a| l[start[a] + a - first[a]]));
+        for a in 0..m {
+            let d = &mut l[start[a] + a - first[a]];
+            *d *= 1.0 + *mu;
+            diagonal.push(*d);
+        }
+        let floor = *floor;
         // L[i][j] is zero left of row i's first column
         for i in 0..m {
             let (fi, si) = (first[i], start[i]);
@@ -205,7 +297,8 @@ impl Schur {
                     s -= a * b;
                 }
                 if j == i {
-                    if !(s > 1e-12 * diagonal[i]) {
+                    *worst = worst.min(s / diagonal[i]);
+                    if !(s > floor * diagonal[i]) {
                         return false;
                     }
                     l[si + i - fi] = s.sqrt();
@@ -217,12 +310,25 @@ impl Schur {
         true
     }
 
-    /// Solves `S μ = b` in place (`L y = b`, then `Lᵀ μ = y`, within the envelope).
+    /// Solves `S μ = b` in place (`L y = b`, then `Lᵀ μ = y`, within the envelope, in the
+    /// order factored).
     pub(super) fn solve(&self, b: &mut [f64]) {
         let m = self.m;
         if m <= DENSE_ROWS {
             return self.solve_dense(&mut b[..m]);
         }
+        let mut permuted = self.permuted.borrow_mut();
+        permuted.clear();
+        permuted.extend(self.order.iter().map(|&r| b[r]));
+        self.solve_ordered(&mut permuted);
+        for (&r, &x) in self.order.iter().zip(permuted.iter()) {
+            b[r] = x;
+        }
+    }
+
+    /// [`Schur::solve`] of a right-hand side in the order factored.
+    fn solve_ordered(&self, b: &mut [f64]) {
+        let m = self.m;
         for i in 0..m {
             let (f, row) = (self.first[i], self.start[i]);
             let entries = &self.l[row..row + i - f];
@@ -273,4 +379,50 @@ impl Schur {
 /// `Σ aᵢ bᵢ`.
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+/// The reverse Cuthill–McKee order of `rows` (two rows neighbours where they share a
+/// coordinate; `count` and `entries`: the rows' entries bucketed by coordinate) into `order`:
+/// from a row of fewest neighbours, breadth first, each row's new neighbours fewest first, then
+/// reversed (George and Liu, *Computer Solution of Large Sparse Positive Definite Systems*,
+/// 1981, §4.3): a chain's rows come out along it, whatever order they were written in, so that
+/// each row's envelope holds its few neighbours.
+fn reverse_cuthill_mckee(
+    rows: &[Row],
+    count: &[usize],
+    entries: &[(usize, f64)],
+    order: &mut Vec<usize>,
+) {
+    let m = rows.len();
+    let neighbours = |r: usize| {
+        rows[r]
+            .jac()
+            .iter()
+            .flat_map(move |&(c, _)| entries[count[c]..count[c + 1]].iter().map(|e| e.0))
+    };
+    let degree: Vec<usize> = (0..m).map(|r| neighbours(r).count()).collect();
+    let mut seen = vec![false; m];
+    order.clear();
+    let mut fresh = Vec::new();
+    while order.len() < m {
+        let Some(start) = (0..m).filter(|&r| !seen[r]).min_by_key(|&r| degree[r]) else {
+            break;
+        };
+        seen[start] = true;
+        let mut head = order.len();
+        order.push(start);
+        while head < order.len() {
+            let r = order[head];
+            head += 1;
+            fresh.clear();
+            for a in neighbours(r) {
+                if !seen[a] {
+                    seen[a] = true;
+                    fresh.push(a);
+                }
+            }
+            fresh.sort_by_key(|&a| (degree[a], a));
+            order.extend_from_slice(&fresh);
+        }
+    }
+    order.reverse();
 }
