@@ -3,6 +3,7 @@
 #![allow(clippy::unwrap_used)]
 
 mod arc_cams;
+mod benchmark_andrews;
 mod benchmark_n_four_bar;
 mod build_work;
 mod circle_followers;
