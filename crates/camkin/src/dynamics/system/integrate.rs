@@ -191,6 +191,8 @@ impl SystemSimulation<'_> {
             }
         }
         let (theta, k) = first;
+        // the step's end is given up for the event's instant: its projection's energy with it
+        self.projections = it.start_jumps.1;
         self.set_by_step(it, theta)?;
         it.span = (t0, self.t);
         if self.in_contact[k] {
