@@ -477,6 +477,18 @@ fn run_system(
                 write_cell_table(w, TableFormat::Csv, &event_columns, event_rows.clone())
             })
             .map_err(Failure::output)?;
+            // the energy balance element by element
+            let gravity = built.dynamics.gravity != camkin::Vec2::zeros();
+            let energy_rows: Vec<Vec<Cell>> = samples
+                .iter()
+                .enumerate()
+                .map(|(k, s)| camkin::table::system_energy_cells(plan.angle_at(k), s, gravity))
+                .collect();
+            let energy_columns = camkin::table::system_energy_columns(sys, unit, gravity, !timed);
+            write_atomic(Some(&dir.join("energy.csv")), |w| {
+                write_cell_table(w, TableFormat::Csv, &energy_columns, energy_rows.clone())
+            })
+            .map_err(Failure::output)?;
             let impacts = events
                 .iter()
                 .filter(|e| e.kind == camkin::dynamics::EventKind::Impact);

@@ -413,8 +413,28 @@ fn a_driverless_system_runs_for_a_duration() {
     run!("simulate", &path, "--duration", "1", "--out", &pages)
         .assert()
         .success();
-    for f in ["time_series.csv", "events.csv", "motion.svg", "energy.svg"] {
+    for f in [
+        "time_series.csv",
+        "events.csv",
+        "energy.csv",
+        "motion.svg",
+        "energy.svg",
+    ] {
         assert!(pages.join(f).exists(), "{f}");
+    }
+    // the balance by element: gravity's work, integrated with the motion, is minus its
+    // potential's change, computed from the positions; the pin does no work
+    let (header, rows) = parse_csv(&std::fs::read(pages.join("energy.csv")).unwrap());
+    assert_eq!(&header[..2], ["time_s", "kinetic_N_mm"]);
+    let col = columns(&header);
+    let num = |r: &Vec<String>, c: &str| r[col[c]].parse::<f64>().unwrap();
+    let v0 = num(&rows[0], "gravity_potential_N_mm");
+    for r in &rows {
+        let work = num(r, "gravity_work_N_mm");
+        let change = num(r, "gravity_potential_N_mm") - v0;
+        assert!((work + change).abs() < 1e-8 * scale, "{work} {change}");
+        assert!(num(r, "constraint_work_N_mm").abs() < 1e-8 * scale);
+        assert!(num(r, "unexplained_N_mm").abs() < 1e-8 * scale);
     }
     run!("simulate", &path, "--duration", "1", "--revolutions", "1")
         .refused("--duration with --revolutions");

@@ -28,8 +28,8 @@ pub use mesh::{mesh_cells, mesh_columns, MeshRow};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
 pub use system::{system_cells, system_columns, system_contact_cells, system_contact_columns};
 pub use system_dynamics::{
-    system_event_cells, system_event_columns, system_force_table, system_sample_cells,
-    system_sample_columns,
+    system_energy_cells, system_energy_columns, system_event_cells, system_event_columns,
+    system_force_table, system_sample_cells, system_sample_columns,
 };
 pub use units::{AngleUnit, Per, Units, UnknownUnit};
 

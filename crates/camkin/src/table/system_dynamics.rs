@@ -184,3 +184,68 @@ pub fn system_force_table(
         .collect();
     (columns, rows)
 }
+
+/// The columns of a simulated system's energy balance by element (`energy.csv` of `camkin
+/// simulate --out`; see [`crate::dynamics::EnergyBalance`]): the time (and the driver's angle in
+/// a run over it), the kinetic energy, each force element's potential (a spring's) and work, in
+/// the system's order, gravity's potential and work (where there is gravity), the drivers', the
+/// applied loads' and the constraint forces' work, the impacts' and the projections' change of
+/// energy, and what the balance leaves unexplained; N·`unit`.
+pub fn system_energy_columns(sys: &System, unit: &str, gravity: bool, angles: bool) -> Vec<String> {
+    let mut c = Vec::new();
+    if angles {
+        c.push("driver_angle_deg".to_string());
+    }
+    c.push("time_s".to_string());
+    c.push(format!("kinetic_N_{unit}"));
+    for f in sys.forces() {
+        let n = key(&f.name);
+        if f.kind.stores() {
+            c.push(format!("{n}_potential_N_{unit}"));
+        }
+        c.push(format!("{n}_work_N_{unit}"));
+    }
+    if gravity {
+        c.push(format!("gravity_potential_N_{unit}"));
+        c.push(format!("gravity_work_N_{unit}"));
+    }
+    for part in [
+        "driver_work",
+        "load_work",
+        "constraint_work",
+        "impact_energy",
+        "projection_energy",
+        "unexplained",
+    ] {
+        c.push(format!("{part}_N_{unit}"));
+    }
+    c
+}
+
+/// One sample's row under [`system_energy_columns`] (`angle_deg`: the driver's angle, none in a
+/// run in time).
+pub fn system_energy_cells(angle_deg: Option<f64>, s: &SystemSample, gravity: bool) -> Vec<Cell> {
+    let b = &s.balance;
+    let mut v: Vec<f64> = angle_deg.into_iter().collect();
+    v.push(s.time);
+    v.push(b.kinetic);
+    for e in &b.elements {
+        if e.stores {
+            v.push(e.potential);
+        }
+        v.push(e.work);
+    }
+    if gravity {
+        v.push(b.gravity.potential);
+        v.push(b.gravity.work);
+    }
+    v.extend([
+        b.drivers,
+        b.applied,
+        b.constraints,
+        b.impacts,
+        b.projections,
+        b.residual(),
+    ]);
+    v.into_iter().map(|x| Cell::Num(Some(x))).collect()
+}
