@@ -128,18 +128,8 @@ pub fn scene_at(
     // each body's pins, joined: the bar of a link
     let mut pins: Vec<Vec<Point2>> = vec![Vec::new(); sys.bodies().len()];
     for j in sys.joints() {
-        let (a, at_a, b, at_b) = match j.kind {
-            JointKind::Revolute { a, at_a, b, at_b }
-            | JointKind::Prismatic {
-                a, at_a, b, at_b, ..
-            }
-            | JointKind::Fixed {
-                a, at_a, b, at_b, ..
-            } => (a, at_a, b, at_b),
-            _ => continue,
-        };
         let pin = matches!(j.kind, JointKind::Revolute { .. });
-        for (id, at) in [(a, at_a), (b, at_b)] {
+        for (id, at) in j.kind.points() {
             let p = frame(poses, id) * at;
             if let Some(i) = id.index() {
                 pins[i].push(p);

@@ -10,6 +10,46 @@ use super::{BodyId, ForceKind};
 use crate::body::BodyState;
 use crate::geometry::{cross, Point2, Vec2};
 
+/// A spring's or damper's line between its ends at the bodies' states: each end's state and
+/// world point, the unit vector from `a`'s end to `b`'s, and the length.
+#[derive(Clone, Copy)]
+struct Line {
+    sa: BodyState,
+    sb: BodyState,
+    pa: Point2,
+    pb: Point2,
+    e: Vec2,
+    l: f64,
+}
+
+impl Line {
+    /// The line from `at_a` on `a` to `at_b` on `b`; none where the ends meet (no direction).
+    fn new(
+        state: &impl Fn(BodyId) -> BodyState,
+        (a, at_a): (BodyId, Point2),
+        (b, at_b): (BodyId, Point2),
+    ) -> Option<Self> {
+        let (sa, sb) = (state(a), state(b));
+        let (pa, pb) = (sa.pose.to_world(at_a), sb.pose.to_world(at_b));
+        let d = pb - pa;
+        let l = d.norm();
+        (l > 0.0).then(|| Self {
+            sa,
+            sb,
+            pa,
+            pb,
+            e: d / l,
+            l,
+        })
+    }
+
+    /// The rate of its length, `L̇ = e · (v_b − v_a)` at the ends.
+    fn rate(&self) -> f64 {
+        self.e
+            .dot(&(self.sb.velocity_at(self.pb) - self.sa.velocity_at(self.pa)))
+    }
+}
+
 /// Where a force element acts: each end's body and world point, the tension (or torque) and the
 /// potential energy stored.
 impl ForceKind {
@@ -30,29 +70,12 @@ impl ForceKind {
             | ForceKind::Damper {
                 a, at_a, b, at_b, ..
             } => {
-                let (sa, sb) = (state(a), state(b));
-                let (pa, pb) = (sa.pose.to_world(at_a), sb.pose.to_world(at_b));
-                let d = pb - pa;
-                let l = d.norm();
-                if !(l > 0.0) {
+                let Some(line) = Line::new(&state, (a, at_a), (b, at_b)) else {
                     return;
-                }
-                let e = d / l;
-                let tension = match *self {
-                    ForceKind::Spring {
-                        stiffness,
-                        free_length,
-                        preload,
-                        ..
-                    } => stiffness * (l - free_length) + preload,
-                    ForceKind::Damper { damping, .. } => {
-                        let (va, vb) = (sa.velocity_at(pa), sb.velocity_at(pb));
-                        damping * e.dot(&(vb - va))
-                    }
-                    ForceKind::TorsionSpring { .. } | ForceKind::TorsionDamper { .. } => 0.0,
                 };
-                add(a, pa, &sa, tension * e);
-                add(b, pb, &sb, -tension * e);
+                let push = self.tension(&line) * line.e;
+                add(a, line.pa, &line.sa, push);
+                add(b, line.pb, &line.sb, -push);
             }
             ForceKind::TorsionSpring {
                 a,
@@ -94,25 +117,10 @@ impl ForceKind {
             | ForceKind::Damper {
                 a, at_a, b, at_b, ..
             } => {
-                let (sa, sb) = (state(a), state(b));
-                let (pa, pb) = (sa.pose.to_world(at_a), sb.pose.to_world(at_b));
-                let d = pb - pa;
-                let l = d.norm();
-                if !(l > 0.0) {
+                let Some(line) = Line::new(&state, (a, at_a), (b, at_b)) else {
                     return 0.0;
-                }
-                let e = d / l;
-                let rate = e.dot(&(sb.velocity_at(pb) - sa.velocity_at(pa)));
-                let tension = match *self {
-                    ForceKind::Spring {
-                        stiffness,
-                        free_length,
-                        preload,
-                        ..
-                    } => stiffness * (l - free_length) + preload,
-                    ForceKind::Damper { damping, .. } => damping * rate,
-                    ForceKind::TorsionSpring { .. } | ForceKind::TorsionDamper { .. } => 0.0,
                 };
+                let (tension, rate) = (self.tension(&line), line.rate());
                 -tension * rate
             }
             ForceKind::TorsionSpring {
@@ -130,6 +138,21 @@ impl ForceKind {
                 let rate = state(b).omega - state(a).omega;
                 -damping * rate * rate
             }
+        }
+    }
+
+    /// A spring's or damper's tension along its line: `k (L − L₀) + P`, or `c L̇` (0 for a
+    /// torsion element).
+    fn tension(&self, line: &Line) -> f64 {
+        match *self {
+            ForceKind::Spring {
+                stiffness,
+                free_length,
+                preload,
+                ..
+            } => stiffness * (line.l - free_length) + preload,
+            ForceKind::Damper { damping, .. } => damping * line.rate(),
+            ForceKind::TorsionSpring { .. } | ForceKind::TorsionDamper { .. } => 0.0,
         }
     }
 

@@ -98,6 +98,19 @@ impl JointKind {
         }
     }
 
+    /// Its two points: each body with its point, in that body's frame.
+    pub fn points(&self) -> [(BodyId, Point2); 2] {
+        match *self {
+            JointKind::Revolute { a, at_a, b, at_b }
+            | JointKind::Prismatic {
+                a, at_a, b, at_b, ..
+            }
+            | JointKind::Fixed {
+                a, at_a, b, at_b, ..
+            } => [(a, at_a), (b, at_b)],
+        }
+    }
+
     /// How many rows it adds.
     pub fn rows(&self) -> usize {
         match self {

@@ -325,7 +325,7 @@ impl System {
             s = s.max(b.pose.origin.coords.norm());
         }
         for j in &self.joints {
-            for p in j.kind.points() {
+            for (_, p) in j.kind.points() {
                 s = s.max(p.coords.norm());
             }
         }
@@ -506,17 +506,6 @@ impl System {
         match self.contacts.get(k) {
             Some(c) => format!("contact {:?}", c.name),
             None => format!("row {r}"),
-        }
-    }
-}
-
-/// Points a joint is made from, for [`System::size`].
-impl JointKind {
-    fn points(&self) -> Vec<Point2> {
-        match self {
-            JointKind::Revolute { at_a, at_b, .. }
-            | JointKind::Prismatic { at_a, at_b, .. }
-            | JointKind::Fixed { at_a, at_b, .. } => vec![*at_a, *at_b],
         }
     }
 }

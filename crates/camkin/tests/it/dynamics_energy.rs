@@ -5,15 +5,12 @@
 //! crank against a torsion damper and gravity (the driver's work `c ω² t + m g Δy_G`), and a body
 //! thrown in the air (its momentum `p₀ + m g t`); the joints' and contacts' forces do no work.
 
-use camkin::curve::{Line, PointCurve};
 use camkin::dynamics::{SystemDynamicsOptions, SystemSimulation, Tolerances};
 use camkin::system::{
-    Body, BodyId, Contact, Coordinate, Driver, DriverLaw, ForceElement, ForceKind, Joint,
-    JointKind, System,
+    Body, BodyId, Coordinate, Driver, DriverLaw, ForceElement, ForceKind, Joint, JointKind, System,
 };
 use camkin::{Point2, Vec2};
 use std::ops::ControlFlow;
-use std::sync::Arc;
 
 fn tight() -> Tolerances {
     Tolerances {
@@ -129,32 +126,8 @@ fn a_damped_oscillators_balance_is_its_closed_form_in_millimetres() {
 #[test]
 fn a_bouncing_blocks_impacts_lose_their_closed_form() {
     let (g, h0, e, m) = (9.81, 0.05, 0.6, 0.2);
-    let mut sys = System::new();
-    let block = sys.add_body(Body {
-        name: "block".into(),
-        mass: m,
-        inertia: 1e-4,
-        pose: camkin::body::Pose::new(Point2::new(0.0, h0), 0.0),
-        centre_of_mass: Point2::origin(),
-    });
-    sys.add_joint(Joint {
-        name: "guide".into(),
-        kind: JointKind::Prismatic {
-            a: BodyId::GROUND,
-            at_a: Point2::origin(),
-            axis: Vec2::y(),
-            b: block,
-            at_b: Point2::origin(),
-            angle: 0.0,
-        },
-    });
-    sys.add_contact(Contact {
-        name: "seat".into(),
-        a: BodyId::GROUND,
-        curve_a: Arc::new(Line::new(Point2::origin(), -Vec2::x()).unwrap()),
-        b: block,
-        curve_b: Arc::new(PointCurve::new(Point2::origin()).unwrap()),
-    });
+    // the block of `dynamics_system`: 0.2 kg on a vertical guide, h₀ above a seat
+    let sys = crate::dynamics_system::dropped_block(h0);
     let opts = SystemDynamicsOptions {
         gravity: Vec2::new(0.0, -g),
         restitution: vec![e],

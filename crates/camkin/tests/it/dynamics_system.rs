@@ -15,7 +15,7 @@ use std::sync::Arc;
 
 /// A block of 0.2 kg on a vertical guide, its lowest point `h0` m above a seat (the ground's
 /// line y = 0, material below), under gravity 9.81 m/s² (lengths in m).
-fn dropped_block(h0: f64) -> System {
+pub(crate) fn dropped_block(h0: f64) -> System {
     dropped_block_and_id(h0).0
 }
 

@@ -4,7 +4,6 @@
 
 use super::super::model::Load;
 use super::SystemSimulation;
-use crate::system::JointKind;
 
 impl SystemSimulation<'_> {
     /// The fastest rate of the system's force elements, 1/s, and the element that sets it: a
@@ -127,16 +126,7 @@ impl SystemSimulation<'_> {
         // each body's joint points, in its frame; its extent their farthest pair's distance
         let mut points: Vec<Vec<crate::geometry::Point2>> = vec![Vec::new(); self.q.len() / 3];
         for j in self.sys.joints() {
-            let (a, at_a, b, at_b) = match j.kind {
-                JointKind::Revolute { a, at_a, b, at_b }
-                | JointKind::Prismatic {
-                    a, at_a, b, at_b, ..
-                }
-                | JointKind::Fixed {
-                    a, at_a, b, at_b, ..
-                } => (a, at_a, b, at_b),
-            };
-            for (id, at) in [(a, at_a), (b, at_b)] {
+            for (id, at) in j.kind.points() {
                 if let Some(i) = id.index() {
                     points[i].push(at);
                 }
