@@ -55,7 +55,10 @@ impl PyMechanism {
     /// sampled every ``step_deg`` of cam angle (the integration's steps chosen by the relative
     /// and absolute tolerances ``rtol`` and ``atol``, as ``camkin simulate``'s). Returns
     /// ``{"samples": dict of arrays, "events": list of dicts}`` with the columns of
-    /// ``camkin simulate`` (lengths in the file's unit, force in N, time in s).
+    /// ``camkin simulate`` (lengths in the file's unit, force in N, time in s), the driver's
+    /// torque and work and the follower's energy balance (``kinetic``, ``potential``,
+    /// ``damper_work``, ``constraint_work``, ``impact_energy``, ``unexplained``) in N times the
+    /// file's unit (docs/dynamics.md, "Energy and work").
     ///
     /// Example::
     ///

@@ -258,6 +258,11 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         }
     }
     report(&events, unit, mech.is_conjugate());
+    if let Some(last) = samples.last() {
+        // the balance in the file's unit (the run's is in J)
+        let b = last.balance.scaled(1.0 / unit.metres());
+        crate::say!("camkin: {}", b.describe(unit.name()));
+    }
     Ok(())
 }
 

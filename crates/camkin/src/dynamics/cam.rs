@@ -15,7 +15,10 @@
 //!   `−c ω`.
 //!
 //! The cam's mass and inertia (1 kg, 1 kg·m²) do not change the follower's motion: the cam is
-//! driven. They enter the driving torque only where the cam accelerates.
+//! driven. The samples leave them out: the driving torque is what the cam passes on to the
+//! follower (the driver's less `1 kg·m² · α`), its work and the energy balance are the
+//! follower's (the cam's kinetic energy and the gravity of the masses held at pivots taken
+//! away), as in the one-coordinate model.
 
 use super::follower::{check_params, Event, EventKind, FollowerDynamics, Sample};
 use super::system::{ContactEvent, SystemDynamicsOptions, SystemSimulation};
@@ -35,6 +38,13 @@ pub struct PresetSimulation {
     joint: FollowerJoint,
     /// the follower's body index
     follower: usize,
+    /// the cam's body index
+    cam: usize,
+    /// the cam's kinetic energy at the start, J (its 1 kg·m²: the driver's, not the follower's)
+    cam_kinetic0: f64,
+    /// gravity's potential of the bodies' masses held at their pivots (the cam's 1 kg; an arm's
+    /// mass), constant, J
+    held: f64,
     theta0: f64,
     speed: f64,
     /// the cam's angular acceleration, rad/s²
@@ -163,10 +173,19 @@ impl PresetSimulation {
             tolerances: super::Tolerances::default(),
         };
         let sim = SystemSimulation::owning(system, opts)?;
+        let (cs, fs) = (sim.state(ic), sim.state(fi));
+        let g = params.gravity;
+        let mut held = -g.dot(&cs.pose.origin.coords);
+        if rotating {
+            held -= g.dot(&fs.pose.origin.coords);
+        }
         Ok(Self {
             sim,
             joint,
             follower: fi,
+            cam: ic,
+            cam_kinetic0: 0.5 * cs.omega * cs.omega,
+            held,
             theta0,
             speed: mech.cam().speed(),
             alpha: mech.cam().angular_acceleration(),
@@ -217,7 +236,7 @@ impl PresetSimulation {
 
     /// The follower's state at the current time.
     pub fn sample(&mut self) -> Result<Sample, DynamicsError> {
-        let i = 3 * self.follower;
+        let (i, c) = (3 * self.follower, 3 * self.cam + 2);
         let (body, force, torque) = self.sim.motion(|q, qd, a| {
             let body = crate::BodyState {
                 pose: crate::Pose::new(crate::Point2::new(q[i], q[i + 1]), q[i + 2]),
@@ -226,7 +245,8 @@ impl PresetSimulation {
                 acceleration: crate::Vec2::new(a.qdd[i], a.qdd[i + 1]),
                 alpha: a.qdd[i + 2],
             };
-            (body, a.forces[0], a.efforts[0])
+            // the torque the cam passes on: the driver's less its own 1 kg·m² times α
+            (body, a.forces[0], a.efforts[0] - a.qdd[c])
         })?;
         let [position, velocity, acceleration] = match self.joint {
             // the arm's angle as integrated (not wrapped)
@@ -244,8 +264,30 @@ impl PresetSimulation {
             in_contact: self.sim.in_contact(0),
             on_conjugate: false,
             driver_torque: torque,
-            driver_work: self.sim.driver_work(),
+            driver_work: self.sim.driver_work() - self.cam_kinetic_change(),
+            balance: self.balance(),
         })
+    }
+
+    /// The cam's kinetic energy's change since the start, J: the driver's work on the cam's
+    /// own 1 kg·m² (where it accelerates), not on the follower.
+    fn cam_kinetic_change(&self) -> f64 {
+        let w = self.sim.state(self.cam).omega;
+        0.5 * w * w - self.cam_kinetic0
+    }
+
+    /// The follower's energy balance ([`Sample::balance`]): the system's, less the cam's
+    /// kinetic energy and angular momentum and the driver's work on them, less gravity's
+    /// constant potential of the masses held at their pivots.
+    fn balance(&self) -> super::EnergyBalance {
+        let mut b = self.sim.balance();
+        let w = self.sim.state(self.cam).omega;
+        b.kinetic -= 0.5 * w * w;
+        b.initial -= self.cam_kinetic0 + self.held;
+        b.drivers -= self.cam_kinetic_change();
+        b.gravity.potential -= self.held;
+        b.angular_momentum -= w;
+        b
     }
 
     /// The largest `|Φ|` of the active constraints at the current state (length or rad).

@@ -48,7 +48,7 @@ impl FollowerDynamics {
 }
 
 /// The follower's state at one instant of a simulation.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Sample {
     /// time, s
     pub time: f64,
@@ -71,6 +71,10 @@ pub struct Sample {
     pub driver_torque: f64,
     /// the work done by the driving torque since time 0, J
     pub driver_work: f64,
+    /// the follower's energy balance, J: its kinetic energy, its spring's (and gravity's)
+    /// potential, its damper's and the driver's work, the impacts' losses, and what is left
+    /// unexplained (the cam, driven, is not in it: its kinetic energy is the driver's)
+    pub balance: super::EnergyBalance,
 }
 
 /// What happened at an event.

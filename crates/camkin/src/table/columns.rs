@@ -119,6 +119,22 @@ fn from_metres(u: &Units) -> f64 {
 pub(crate) struct S {
     m: [Option<f64>; 4],
     km: [Option<f64>; 4],
+    /// N·L per J (energies and torques in the file's length unit)
+    energy: f64,
+}
+
+/// The energy balance's part `k` ([`crate::dynamics::EnergyBalance::PARTS`]), N·L.
+macro_rules! balance {
+    ($k:expr) => {
+        named!(
+            |u| format!(
+                "{}_N_{}",
+                crate::dynamics::EnergyBalance::PARTS[$k],
+                u.len()
+            ),
+            |r, x| { Cell::Num(Some(r.balance[$k] * x.energy)) }
+        )
+    };
 }
 
 /// A simulation's time series (`camkin simulate`): each column once.
@@ -149,6 +165,18 @@ static SAMPLES: &[Col<super::SampleRow, S>] = &[
         when: |u| u.conjugate,
         cell: |r, _| Cell::Int(Some(r.on_conjugate)),
     },
+    named!(|u| format!("driver_torque_N_{}", u.len()), |r, x| {
+        Cell::Num(Some(r.driver_torque * x.energy))
+    }),
+    named!(|u| format!("driver_work_N_{}", u.len()), |r, x| {
+        Cell::Num(Some(r.driver_work * x.energy))
+    }),
+    balance!(0),
+    balance!(1),
+    balance!(2),
+    balance!(3),
+    balance!(4),
+    balance!(5),
 ];
 
 /// The column names of a simulation's time series (`camkin simulate`), each with its unit.
@@ -167,7 +195,8 @@ pub fn sample_cells(r: &super::SampleRow, u: &Units) -> Vec<Cell> {
         k * r.kinematic_acceleration,
         None,
     );
-    cells(SAMPLES, u, r, &S { m, km })
+    let energy = 1.0 / u.length.metres();
+    cells(SAMPLES, u, r, &S { m, km, energy })
 }
 
 /// A simulation's events: each column once.

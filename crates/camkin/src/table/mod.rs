@@ -223,6 +223,13 @@ pub struct SampleRow {
     pub kinematic_position: f64,
     /// the acceleration it would have in permanent contact
     pub kinematic_acceleration: f64,
+    /// the torque the cam passes on to the follower, N·m, counter-clockwise positive
+    pub driver_torque: f64,
+    /// its work since the start, J
+    pub driver_work: f64,
+    /// the follower's energy balance, J, in the order of
+    /// [`crate::dynamics::EnergyBalance::PARTS`]
+    pub balance: [f64; 6],
 }
 
 impl SampleRow {
@@ -240,6 +247,9 @@ impl SampleRow {
             on_conjugate: u8::from(s.on_conjugate),
             kinematic_position: kinematic.map_or(f64::NAN, |k| k.position),
             kinematic_acceleration: kinematic.map_or(f64::NAN, |k| k.acceleration),
+            driver_torque: s.driver_torque,
+            driver_work: s.driver_work,
+            balance: s.balance.parts(),
         }
     }
 }

@@ -44,24 +44,11 @@ pub fn system_sample_columns(
     }
     c.push(format!("energy_N_{unit}"));
     c.push(format!("driver_work_N_{unit}"));
-    for part in BALANCE {
+    for part in crate::dynamics::EnergyBalance::PARTS {
         c.push(format!("{part}_N_{unit}"));
     }
     c
 }
-
-/// The energy balance's columns after `driver_work` (see [`crate::dynamics::EnergyBalance`]):
-/// the kinetic and potential energy, the dampers' work (≤ 0), the joints' and contacts' work
-/// (0 where the run is right), the impacts' change of energy (≤ 0), and what the balance leaves
-/// unexplained (0 but for the integration's error).
-const BALANCE: [&str; 6] = [
-    "kinetic",
-    "potential",
-    "damper_work",
-    "constraint_work",
-    "impact_energy",
-    "unexplained",
-];
 
 /// One sample's row at driver angle `angle_deg` (none in a run in time; under
 /// [`system_sample_columns`] with the same `hertz`; a Hertz pressure that is not defined is an
@@ -102,15 +89,7 @@ pub fn system_sample_cells(
     }
     c.push(Cell::Num(Some(s.energy)));
     c.push(Cell::Num(Some(s.driver_work)));
-    let b = &s.balance;
-    for v in [
-        b.kinetic,
-        b.potential(),
-        b.dampers(),
-        b.constraints,
-        b.impacts,
-        b.residual(),
-    ] {
+    for v in s.balance.parts() {
         c.push(Cell::Num(Some(v)));
     }
     c

@@ -13,6 +13,7 @@ mod conjugate_forces;
 mod contact_general;
 mod contact_jumps;
 mod corner_contacts;
+mod dynamics_cam_energy;
 mod dynamics_contact;
 mod dynamics_energy;
 mod dynamics_initial_state;

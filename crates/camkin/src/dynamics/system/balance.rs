@@ -45,14 +45,16 @@ pub struct EnergyBalance {
     pub elements: Vec<ElementEnergy>,
     /// gravity's (all zero where there is none)
     pub gravity: ElementEnergy,
-    /// the drivers' work since the start (their effort times their coordinate's rate)
+    /// the drivers' work since the start (their effort times their coordinate's rate, and
+    /// their impulses' in impacts)
     pub drivers: f64,
     /// the applied loads' and the forces from tables of the crank angle (a gas force)
     pub applied: f64,
     /// the joints' and closed contacts' forces: zero for ideal joints and frictionless
     /// contacts, to the tolerance (a check, not a loss)
     pub constraints: f64,
-    /// the kinetic energy the impacts changed (≤ 0: lost at a restitution below 1)
+    /// the energy the impacts lost (≤ 0; 0 at a restitution of 1): their change of the kinetic
+    /// energy less their driver impulses' work (which [`EnergyBalance::drivers`] counts)
     pub impacts: f64,
     /// the energy the projections onto the rows changed (a step's drift taken away: of the
     /// tolerance)
@@ -98,6 +100,56 @@ impl EnergyBalance {
                 + self.impacts
                 + self.projections)
     }
+}
+
+impl EnergyBalance {
+    /// The balance with every energy times `k` (a change of length unit: J to N·mm is
+    /// `k = 1000`); the momentum (N·s) as it is, the angular momentum times `k`.
+    pub fn scaled(&self, k: f64) -> Self {
+        let e = |x: &ElementEnergy| ElementEnergy {
+            potential: k * x.potential,
+            work: k * x.work,
+            stores: x.stores,
+        };
+        Self {
+            kinetic: k * self.kinetic,
+            elements: self.elements.iter().map(e).collect(),
+            gravity: e(&self.gravity),
+            drivers: k * self.drivers,
+            applied: k * self.applied,
+            constraints: k * self.constraints,
+            impacts: k * self.impacts,
+            projections: k * self.projections,
+            initial: k * self.initial,
+            momentum: self.momentum,
+            angular_momentum: k * self.angular_momentum,
+        }
+    }
+
+    /// The six parts a time series shows, in the order of [`EnergyBalance::PARTS`].
+    pub fn parts(&self) -> [f64; 6] {
+        [
+            self.kinetic,
+            self.potential(),
+            self.dampers(),
+            self.constraints,
+            self.impacts,
+            self.residual(),
+        ]
+    }
+
+    /// The names of the columns of [`EnergyBalance::parts`] (without their unit): the kinetic
+    /// and potential energy, the dampers' work (≤ 0), the joints' and contacts' work (0 where
+    /// the run is right), the impacts' change of energy (≤ 0), and what the balance leaves
+    /// unexplained (0 but for the integration's error).
+    pub const PARTS: [&'static str; 6] = [
+        "kinetic",
+        "potential",
+        "damper_work",
+        "constraint_work",
+        "impact_energy",
+        "unexplained",
+    ];
 }
 
 impl EnergyBalance {

@@ -211,8 +211,11 @@ impl SystemSimulation<'_> {
             self.project()?;
             let projected = self.energy();
             self.projections += projected - before;
+            // the drivers' impulses' work is theirs: the rest of the change is the impact's loss
+            let drivers = self.work[super::balance::DRIVERS];
             let approach = self.impact(k)?;
-            self.impacts += self.energy() - projected;
+            self.impacts +=
+                self.energy() - projected - (self.work[super::balance::DRIVERS] - drivers);
             events.push(ContactEvent {
                 kind: EventKind::Impact,
                 time: self.t,

@@ -541,7 +541,7 @@ impl<'a> SystemSimulation<'a> {
     }
 
     /// Body `i`'s state now (the ground's for [`super::GROUND`]).
-    fn state(&self, i: usize) -> crate::body::BodyState {
+    pub(crate) fn state(&self, i: usize) -> crate::body::BodyState {
         self.frame_state(&self.q, &self.qd, i)
     }
 

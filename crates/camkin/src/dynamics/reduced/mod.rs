@@ -40,11 +40,21 @@
 //! The driving torque is the contact's reaction, `T = λ₁ o₁'` (`−λ₂ o₂'`) in the cam's sense,
 //! so that `T θ̇` is the power the follower receives; the driver's work counts the impulses too
 //! (`M Δȯ · ȯ_f` at an impact).
+//!
+//! The energy balance ([`Reduced::balance`], the [`super::EnergyBalance`] every model reports)
+//! holds the follower's kinetic energy, its spring's and gravity's potential, the damper's work
+//! (Simpson's rule on each step: in flight with the exact midpoint state), the impacts' losses
+//! (`−½ M (1 − e²) u²` each) and the driver's work. In contact the motion is the first touch
+//! exactly and the driver's work is what the follower's energy and the damper ask of it; the
+//! balance checks the flight (exact motion against the damper's quadrature) and the impacts.
 
 use super::{DynamicsError, Event, EventKind, FollowerDynamics, Sample, REBOUND_TOLERANCE};
 use crate::cam::{CamError, Found, Mechanism, Sweep};
 use crate::geometry::wrap_angle_near;
 use nalgebra::{Matrix3, Vector3};
+
+mod balance;
+mod jumps;
 
 /// Which curve of the follower touches.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -116,6 +126,17 @@ pub struct Reduced<'a> {
     v: f64,
     mode: Mode,
     work: f64,
+    /// the follower's joint (its momentum, gravity's potential)
+    joint: crate::cam::FollowerJoint,
+    /// `o` at the spring's rest (its preload's position)
+    o_rest: f64,
+    /// `o` and `T + V` at the start
+    start: (f64, f64),
+    /// the damper's work since the start (≤ 0), J
+    damper_work: f64,
+    /// the impacts' change of kinetic energy beyond the impulses' work at the flank's velocity
+    /// (≤ 0), J
+    impacts: f64,
     /// the cam's size (length)
     size: f64,
     /// gap tolerance in `o` (length or rad)
@@ -191,6 +212,11 @@ impl<'a> Reduced<'a> {
             v: 0.0,
             mode: Mode::Contact(0),
             work: 0.0,
+            joint,
+            o_rest,
+            start: (0.0, 0.0),
+            damper_work: 0.0,
+            impacts: 0.0,
             size,
             gap_tol: 1e-12 * o_scale,
             force_tol: 1e-9
@@ -212,6 +238,8 @@ impl<'a> Reduced<'a> {
             (side.sweep, side.at) = (s, k);
         }
         sim.v = sim.sides[0].at.d1 * w;
+        sim.start = (sim.o, 0.0);
+        sim.start.1 = sim.follower_energy(sim.o, sim.v);
         sim.mode = sim.settle(0);
         if sim.mode == Mode::Flight {
             sim.pending.push(sim.event(EventKind::LiftOff, 0.0, false));
@@ -566,46 +594,6 @@ impl<'a> Reduced<'a> {
         Ok(())
     }
 
-    /// Whether the first touch `k` at `th` is not the smooth continuation of `k0` at `th0`: the
-    /// sweep says it jumped, or the change of its slope is not the trapezoidal integral of its
-    /// second derivative (exact to `O(Δθ³)` on a smooth first touch, off by the whole kink where
-    /// the sweep's Newton slid onto the crossing part unflagged).
-    fn broke(&self, k0: &Kin, th0: f64, k: &Kin, th: f64) -> bool {
-        if k.jumped {
-            return true;
-        }
-        let d = th - th0;
-        let change = k.d1 - k0.d1;
-        let scale = if self.rotating { 1.0 } else { self.size };
-        (change - 0.5 * d * (k0.d2 + k.d2)).abs() > 0.05 * change.abs() + 1e-9 * scale
-    }
-
-    /// The cam angle near `th_b` where the first touch `ka` (at `th_a`, followed so far) and
-    /// `kb` (at `th_b`, the part that leads there) cross, by Newton on their second-order
-    /// expansions; `th_b` where they run parallel (an ideal involute handover: both touch).
-    fn crossing(ka: &Kin, th_a: f64, kb: &Kin, th_b: f64) -> f64 {
-        let at = |k: &Kin, th0: f64, th: f64| {
-            let d = th - th0;
-            (k.o + d * (k.d1 + 0.5 * d * k.d2), k.d1 + d * k.d2)
-        };
-        let mut th = th_b;
-        for _ in 0..4 {
-            let ((oa, sa), (ob, sb)) = (at(ka, th_a, th), at(kb, th_b, th));
-            let slope = sb - sa;
-            if slope.abs() <= 1e-9 * (sa.abs() + sb.abs()) {
-                return th_b;
-            }
-            th -= (ob - oa) / slope;
-        }
-
-        // behind the detection by at most a few samples of the profile; never after it
-        if th <= th_b && th_b - th <= 0.05 {
-            th
-        } else {
-            th_b
-        }
-    }
-
     /// The time at which the cam reaches `theta` (the driver's `θ(t)` inverted).
     fn time_at(&self, theta: f64) -> f64 {
         let d = theta - self.theta0;
@@ -624,11 +612,23 @@ impl<'a> Reduced<'a> {
         let e0 = self.energy(self.o, self.v);
         let c = self.params.damping;
         let loss = if c > 0.0 {
-            // Simpson's rule with the velocity halfway (its first touch extrapolated)
+            // Simpson's rule with the velocity halfway: the first touch's slope there by the
+            // cubic through both ends' slopes and curvatures (Hermite, exact to O(Δθ⁴))
             let tm = 0.5 * (self.t + t);
-            let km = self.sides[i].at;
-            let dth = self.theta(tm) - self.theta(self.t);
-            let vm = (km.d1 + km.d2 * dth) * self.rate(tm);
+            let ka = self.sides[i].at;
+            let (tha, thb) = (self.theta(self.t), self.theta(t));
+            let span = thb - tha;
+            let x = if span == 0.0 {
+                0.5
+            } else {
+                (self.theta(tm) - tha) / span
+            };
+            let (x2, x3) = (x * x, x * x * x);
+            let d1 = (2.0 * x3 - 3.0 * x2 + 1.0) * ka.d1
+                + (x3 - 2.0 * x2 + x) * span * ka.d2
+                + (3.0 * x2 - 2.0 * x3) * k.d1
+                + (x3 - x2) * span * k.d2;
+            let vm = d1 * self.rate(tm);
             c * (t - self.t) / 6.0 * (self.v * self.v + 4.0 * vm * vm + v * v)
         } else {
             0.0
@@ -636,6 +636,7 @@ impl<'a> Reduced<'a> {
         let o = k.o;
         self.commit(t, sweeps, kins, o, v);
         self.work += self.energy(o, v) - e0 + loss;
+        self.damper_work -= loss;
     }
 
     /// In flight: to `end`, or to the first time a gap closes.
@@ -655,6 +656,7 @@ impl<'a> Reduced<'a> {
             worst
         };
         if closed(self, o, &kins, self.gap_tol).is_none() {
+            self.damper_work -= self.flight_loss(end - self.t, v);
             self.commit(end, sweeps, kins, o, v);
             return Ok(());
         }
@@ -674,6 +676,7 @@ impl<'a> Reduced<'a> {
         let (s, k, om, vm) = at;
         let i = closed(self, om, &k, 0.0).unwrap_or(0);
         let o = k[i].o;
+        self.damper_work -= self.flight_loss(hi - self.t, vm);
         self.commit(hi, s, k, o, vm);
         self.impact(i, EventKind::Impact, events)
     }
@@ -706,8 +709,11 @@ impl<'a> Reduced<'a> {
         let e = self.params.restitution;
         let stick = e * speed <= REBOUND_TOLERANCE * self.omega.abs() * self.size;
         let v = if stick { vf } else { vf - e * u };
-        // the impulse's work at the flank's velocity
-        self.work += self.m * (v - self.v) * vf;
+        // the impulse's work at the flank's velocity; the rest of the change of kinetic energy,
+        // −½ M (1 − e²) u², is the impact's loss
+        let impulse = self.m * (v - self.v) * vf;
+        self.work += impulse;
+        self.impacts += 0.5 * self.m * (v * v - self.v * self.v) - impulse;
         self.v = v;
         events.push(self.event(kind, speed, i == 1));
         self.mode = if stick { self.settle(i) } else { Mode::Flight };
@@ -738,6 +744,7 @@ impl<'a> Reduced<'a> {
             on_conjugate: side,
             driver_torque: torque,
             driver_work: self.work,
+            balance: self.balance(),
         })
     }
 
