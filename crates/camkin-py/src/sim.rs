@@ -25,6 +25,20 @@ fn dyn_err(e: DynamicsError) -> PyErr {
     }
 }
 
+/// `integrator` checked, as the keyword names it.
+pub(crate) fn scheme(name: &str) -> PyResult<camkin::dynamics::Scheme> {
+    camkin::dynamics::Scheme::from_name(name).ok_or_else(|| {
+        errors::input(
+            "integrator",
+            Some(name.to_string()),
+            format!(
+                "integrator = {name:?}: must be one of {}",
+                camkin::dynamics::Scheme::NAMES.join(", ")
+            ),
+        )
+    })
+}
+
 /// `rtol` and `atol` checked, as the keywords name them.
 pub(crate) fn tolerances(rtol: f64, atol: f64) -> PyResult<Tolerances> {
     let t = Tolerances {
@@ -48,12 +62,13 @@ pub(crate) fn tolerances(rtol: f64, atol: f64) -> PyResult<Tolerances> {
 #[pymethods]
 impl PyMechanism {
     /// simulate(*, revolutions=1.0, step_deg=1.0, rtol=1e-10, atol=1e-10, start_angle_deg=0.0,
-    /// large=False) -> dict
+    /// large=False, integrator="auto") -> dict
     ///
     /// The follower's motion under its spring, damping and the cam (the file's ``[dynamics]``,
     /// SI units), with lift-off and impacts, from ``start_angle_deg`` for ``revolutions`` turns,
     /// sampled every ``step_deg`` of cam angle (the integration's steps chosen by the relative
-    /// and absolute tolerances ``rtol`` and ``atol``, as ``camkin simulate``'s). Returns
+    /// and absolute tolerances ``rtol`` and ``atol``, as ``camkin simulate``'s; ``integrator``
+    /// is ``"auto"``, ``"explicit"`` or ``"implicit"``, as its ``--integrator``). Returns
     /// ``{"samples": dict of arrays, "events": list of dicts}`` with the columns of
     /// ``camkin simulate`` (lengths in the file's unit, force in N, time in s), the driver's
     /// torque and work and the follower's energy balance (``kinetic``, ``potential``,
@@ -65,7 +80,7 @@ impl PyMechanism {
     ///     mech = camkin.Mechanism.from_toml("examples/paper-dynamics.toml")
     ///     r = mech.simulate(revolutions=1.0, step_deg=1.0)
     ///     r["events"]
-    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, rtol = 1e-10, atol = 1e-10, start_angle_deg = 0.0, large = false))]
+    #[pyo3(signature = (*, revolutions = 1.0, step_deg = 1.0, rtol = 1e-10, atol = 1e-10, start_angle_deg = 0.0, large = false, integrator = "auto"))]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
@@ -76,6 +91,7 @@ impl PyMechanism {
         #[pyo3(from_py_with = crate::errors::real)] atol: f64,
         #[pyo3(from_py_with = crate::errors::real)] start_angle_deg: f64,
         large: bool,
+        integrator: &str,
     ) -> PyResult<Bound<'py, PyDict>> {
         let bad = |field: &str, v: f64, what: &str| {
             errors::input(
@@ -106,6 +122,7 @@ impl PyMechanism {
         )
         .map_err(dyn_err)?;
         sim.set_tolerances(tolerances).map_err(dyn_err)?;
+        sim.set_scheme(scheme(integrator)?);
         let h = step_deg.to_radians() / mech.cam().speed();
         errors::refuse_large(
             &sim.run_work(&mech, outputs, h),
@@ -159,7 +176,7 @@ impl PyMechanism {
 #[pymethods]
 impl PySystem {
     /// simulate(*, revolutions=None, step_deg=1.0, duration=None, interval=None, rtol=1e-10,
-    /// atol=1e-10, large=False) -> (dict, dict)
+    /// atol=1e-10, large=False, integrator="auto") -> (dict, dict)
     ///
     /// The system's dynamics (a system file with ``[dynamics]``; see docs/systems.md, "Dynamics of a
     /// system"): ``(samples, events)``, two dicts of NumPy arrays keyed by the columns of
@@ -175,8 +192,9 @@ impl PySystem {
     /// thousandth of it), or the file's ``[simulation]``; its samples have no driver angle.
     /// The integration's steps are chosen by the relative and absolute tolerances ``rtol`` and
     /// ``atol`` (as ``camkin simulate``'s ``--rtol`` and ``--atol``), the samples interpolated
-    /// between them. Where the starting state was changed to fit the joints (the poses
-    /// assembled, the bodies' ``velocity`` and ``angular_velocity`` projected), a
+    /// between them; ``integrator`` (``"auto"``, ``"explicit"`` or ``"implicit"``: for a stiff
+    /// system, a damper far faster than its motion) as its ``--integrator``. Where the
+    /// starting state was changed to fit the joints (the poses assembled, the bodies' ``velocity`` and ``angular_velocity`` projected), a
     /// ``CamkinWarning`` says by how much.
     ///
     /// Example::
@@ -184,7 +202,7 @@ impl PySystem {
     ///     s = camkin.System.from_toml("examples/valve-train.toml")
     ///     samples, events = s.simulate(revolutions=1.0, step_deg=1.0)
     ///     samples.to_pandas().iloc[:, :4]
-    #[pyo3(signature = (*, revolutions = None, step_deg = 1.0, duration = None, interval = None, rtol = 1e-10, atol = 1e-10, large = false))]
+    #[pyo3(signature = (*, revolutions = None, step_deg = 1.0, duration = None, interval = None, rtol = 1e-10, atol = 1e-10, large = false, integrator = "auto"))]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
@@ -196,16 +214,18 @@ impl PySystem {
         #[pyo3(from_py_with = crate::errors::real)] rtol: f64,
         #[pyo3(from_py_with = crate::errors::real)] atol: f64,
         large: bool,
+        integrator: &str,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let sys = &self.built.system;
         let tolerances = tolerances(rtol, atol)?;
+        let scheme = scheme(integrator)?;
         let asked = camkin::spec::RunSettings {
             revolutions,
             step_deg,
             duration,
             interval,
         };
-        let (run, plan) = self.run_asked(py, &asked, tolerances, large)?;
+        let (run, plan) = self.run_asked(py, &asked, tolerances, scheme, large)?;
         let timed = plan.step_deg.is_none();
         let unit = self.built.length_unit.name();
         let mut samples = Columns::new(
@@ -246,7 +266,7 @@ impl PySystem {
             duration: None,
             interval: None,
         };
-        self.run_asked(py, &asked, Tolerances::default(), large)
+        self.run_asked(py, &asked, Tolerances::default(), Default::default(), large)
     }
 
     /// The simulation `simulate`, `forces` and `lubrication` share: the run `asked` (the
@@ -256,6 +276,7 @@ impl PySystem {
         py: Python<'_>,
         asked: &camkin::spec::RunSettings,
         tolerances: Tolerances,
+        scheme: camkin::dynamics::Scheme,
         large: bool,
     ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
         use camkin::spec::{PlanError, PlanField};
@@ -298,6 +319,7 @@ impl PySystem {
             e => errors::input("", None, e.to_string()),
         })?;
         sim.set_tolerances(tolerances).map_err(dyn_err)?;
+        sim.set_scheme(scheme);
         errors::refuse_large(
             &self.built.run_work(&plan, &sim, false, None),
             large,

@@ -43,6 +43,13 @@ def test_simulate_takes_any_step_and_refuses_tolerances_out_of_range():
         with pytest.raises(camkin.InputError, match=key) as e:
             sys.simulate(revolutions=0.1, **{key: value})
         assert e.value.field == key
+    with pytest.raises(camkin.InputError, match="integrator") as e:
+        sys.simulate(revolutions=0.1, integrator="stiff")
+    assert e.value.field == "integrator"
+    # the implicit integrator gives the explicit one's motion (docs/systems.md, stiff systems)
+    a, _ = sys.simulate(revolutions=0.1, step_deg=2.0, integrator="explicit")
+    b, _ = sys.simulate(revolutions=0.1, step_deg=2.0, integrator="implicit")
+    assert np.allclose(a["valve_y_mm"], b["valve_y_mm"], rtol=0, atol=1e-6)
     with pytest.raises(camkin.InputError, match="revolutions"):
         sys.simulate(revolutions=-1.0)
     with pytest.raises(camkin.InputError, match="step_deg"):

@@ -60,6 +60,12 @@ pub struct SimulateArgs {
     /// scale).
     #[arg(long, value_name = "ATOL", default_value = "1e-10", value_parser = crate::args::real)]
     pub atol: f64,
+    /// The integrator: `explicit` (Dormand–Prince 5(4)), `implicit` (SDIRK 4(3), L-stable: for
+    /// stiff systems, a damper far faster than the motion), or `auto` (implicit where the
+    /// fastest rate is a damper's decay over ten times the fastest vibration's and the
+    /// motion's).
+    #[arg(long, value_name = "SCHEME", default_value = "auto", value_parser = clap::builder::PossibleValuesParser::new(camkin::dynamics::Scheme::NAMES))]
+    pub integrator: String,
     /// Directory for the time series, the events and the plots; the time series goes to stdout
     /// without it.
     #[arg(long, value_name = "DIR")]
@@ -93,7 +99,8 @@ fn dyn_err(e: DynamicsError) -> Failure {
         | DynamicsError::Chatter { .. }
         | DynamicsError::Unassembled { .. }
         | DynamicsError::DeadPoint { .. }
-        | DynamicsError::StepUnderflow { .. } => Failure::Input(anyhow!("{e}")),
+        | DynamicsError::StepUnderflow { .. }
+        | DynamicsError::ImplicitNewton { .. } => Failure::Input(anyhow!("{e}")),
         _ => Failure::Internal(anyhow!("{e}")),
     }
 }
@@ -124,6 +131,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     }
     let step = args.step.deg();
     let tolerances = tolerances(args.rtol, args.atol)?;
+    let scheme =
+        camkin::dynamics::Scheme::from_name(&args.integrator).expect("clap keeps to Scheme::NAMES");
     let outputs = (revolutions * 360.0 / step).round() as usize;
     if outputs > 10_000_000 {
         return Err(Failure::Input(anyhow!(
@@ -144,6 +153,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
             name, mut built, ..
         } => {
             built.dynamics.tolerances = tolerances;
+            built.dynamics.scheme = scheme;
             return run_system(args, &name, &built);
         }
         BySolver::Cam { preset, name, .. } => (preset, name),
@@ -178,6 +188,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     )
     .map_err(dyn_err)?;
     sim.set_tolerances(tolerances).map_err(dyn_err)?;
+    sim.set_scheme(scheme);
     let h = step.to_radians() / mech.cam().speed();
     crate::refuse_large(
         &sim.run_work(&mech, outputs, h),

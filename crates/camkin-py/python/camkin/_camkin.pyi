@@ -60,6 +60,7 @@ class System:
         rtol: float = 1e-10,
         atol: float = 1e-10,
         large: bool = False,
+        integrator: str = "auto",
     ) -> Tuple[Result, Result]: ...
     def lubrication(self, *, step_deg: float = 1.0, large: bool = False) -> Result: ...
     def forces(
@@ -136,6 +137,7 @@ class Mechanism:
         atol: float = 1e-10,
         start_angle_deg: float = 0.0,
         large: bool = False,
+        integrator: str = "auto",
     ) -> Result: ...
     def forces(
         self,

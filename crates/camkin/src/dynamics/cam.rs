@@ -171,6 +171,7 @@ impl PresetSimulation {
             start_touching: Vec::new(),
             initial_rates: Vec::new(),
             tolerances: super::Tolerances::default(),
+            scheme: super::Scheme::Auto,
         };
         let sim = SystemSimulation::owning(system, opts)?;
         let (cs, fs) = (sim.state(ic), sim.state(fi));
@@ -195,6 +196,11 @@ impl PresetSimulation {
     /// The tolerances of its steps ([`SystemSimulation::set_tolerances`]).
     pub fn set_tolerances(&mut self, t: super::Tolerances) -> Result<(), DynamicsError> {
         self.sim.set_tolerances(t)
+    }
+
+    /// The integrator of its steps ([`SystemSimulation::set_scheme`]).
+    pub fn set_scheme(&mut self, scheme: super::Scheme) {
+        self.sim.set_scheme(scheme);
     }
 
     /// The steps taken since the start: accepted and rejected

@@ -237,21 +237,40 @@ impl Dopri {
 }
 
 /// The step-size controller: the next step from the last one's error.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct Controller {
     /// the last accepted step's error norm (at least 1e-4)
     previous: Option<f64>,
     /// whether the last attempt was rejected
     rejected: bool,
+    /// the error estimate's order in the step (5 for the Dormand–Prince pair's: it is of its
+    /// fourth-order solution; 4 for the SDIRK pair's)
+    order: f64,
+}
+
+impl Default for Controller {
+    fn default() -> Self {
+        Self::of_order(5.0)
+    }
 }
 
 impl Controller {
+    /// A controller of an error estimate of `order` in the step.
+    pub(crate) fn of_order(order: f64) -> Self {
+        Self {
+            previous: None,
+            rejected: false,
+            order,
+        }
+    }
+
     /// After a step of `h` with error norm `err`: whether it is accepted, and the next step.
     pub(crate) fn judge(&mut self, h: f64, err: f64) -> (bool, f64) {
         let err = if err.is_nan() { f64::INFINITY } else { err };
+        let p = 1.0 / self.order;
         if err <= 1.0 {
             let prev = self.previous.unwrap_or(1e-4);
-            let fac = SAFETY * err.max(1e-10).powf(-0.2 + 0.75 * BETA) * prev.powf(BETA);
+            let fac = SAFETY * err.max(1e-10).powf(-p + 0.75 * BETA) * prev.powf(BETA);
             let mut next = h * fac.clamp(SHRINK, GROW);
             if self.rejected {
                 next = next.min(h);
@@ -261,7 +280,7 @@ impl Controller {
             (true, next)
         } else {
             let fac = if err.is_finite() {
-                (SAFETY * err.powf(-0.2)).max(SHRINK)
+                (SAFETY * err.powf(-p)).max(SHRINK)
             } else {
                 SHRINK
             };

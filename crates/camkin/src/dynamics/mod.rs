@@ -40,8 +40,10 @@ mod no_follow;
 mod projection;
 mod reduced;
 mod run;
+mod sdirk;
 mod simulation;
 mod solver;
+mod stepper;
 mod system;
 
 pub use cam::PresetSimulation;
@@ -57,6 +59,7 @@ pub use reduced::Reduced;
 pub use run::Run;
 pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
+pub use stepper::Scheme;
 pub use system::{
     ContactEvent, ContactHertz, ContactSurface, ElementEnergy, EnergyBalance, StartReport,
     SystemDynamicsOptions, SystemRun, SystemSample, SystemSimulation,
@@ -101,6 +104,15 @@ pub enum DynamicsError {
         time: f64,
         /// the drivers, named (`driver "drive rocker"`), or the empty string
         drivers: String,
+    },
+    /// The implicit integrator's Newton iterations did not converge on a step taken again up
+    /// to an event.
+    #[error("at t = {} s the implicit integrator's Newton iterations did not converge on a step of {} s; simulate with the explicit one (--integrator explicit)", crate::human::human(*.time), crate::human::human(*.step))]
+    ImplicitNewton {
+        /// time, s
+        time: f64,
+        /// the step, s
+        step: f64,
     },
     /// The multiplier iteration did not converge.
     #[error("at t = {} s: the augmented Lagrangian iteration did not converge ({iterations} iterations, residual {})", crate::human::human(*.time), crate::human::human(*.residual))]

@@ -170,6 +170,14 @@ impl<'a> Simulation<'a> {
         }
     }
 
+    /// The preset system's integrator ([`super::Scheme`]); the one-coordinate model's flight is
+    /// exact whatever it is.
+    pub fn set_scheme(&mut self, scheme: super::Scheme) {
+        if let Self::Preset(m) = self {
+            m.set_scheme(scheme);
+        }
+    }
+
     /// The preset system's steps since the start, accepted and rejected; `None` for the
     /// one-coordinate model (its steps are [`Simulation::steps_per_interval`] exactly).
     pub fn steps_taken(&self) -> Option<(usize, usize)> {

@@ -290,7 +290,7 @@ impl BuiltSystem {
             crate::work::Work::system_simulation(&self.system, steps, samples, plan.outputs + 1);
         // where the stiffest element sets the steps, it is named
         let stable = sim.stable_step();
-        if stable < plan.h_out {
+        if stable < plan.h_out && !sim.implicit() {
             let (rate, element) = sim.fastest_rate();
             let h = crate::human::human;
             work.because(format!(

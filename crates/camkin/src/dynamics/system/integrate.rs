@@ -4,8 +4,9 @@
 //! bisection on the force, impacts on the gap), and outputs inside a step interpolated and
 //! projected.
 
-use super::super::dopri::{starting_step, Controller, Dopri};
+use super::super::dopri::{starting_step, Controller};
 use super::super::follower::EventKind;
+use super::super::stepper::Stepper;
 use super::super::DynamicsError;
 use super::eval::Accel;
 use super::project::StepEnd;
@@ -17,9 +18,9 @@ use crate::contact::Pairing;
 /// interpolant holds for.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Integrator {
-    dopri: Dopri,
+    dopri: Stepper,
     /// a step taken again to an event inside the last one
-    redo: Dopri,
+    redo: Stepper,
     control: Controller,
     /// the next step proposed (`None` before the first: estimated)
     next: Option<f64>,
@@ -50,18 +51,25 @@ impl SystemSimulation<'_> {
     /// component at the step's ends; the work `W` is not measured (a quadrature of the powers
     /// on the steps the motion takes).
     fn error_scale(&self, i: usize, y0: f64, y1: f64) -> f64 {
-        let n = self.q.len();
-        if i >= 2 * n {
+        if i >= 2 * self.q.len() {
             return f64::INFINITY;
         }
         let tol = self.opts.tolerances;
+        tol.absolute * self.typical(i) + tol.relative * y0.max(y1)
+    }
+
+    /// The size of component `i` of the state `(q, q̇, W)`: a length's the system's size, an
+    /// angle's a radian, a rate's those over the time scale, a work's 1.
+    fn typical(&self, i: usize) -> f64 {
+        let n = self.q.len();
         let length = if i % 3 == 2 { 1.0 } else { self.size };
-        let scale = if i < n {
+        if i < n {
             length
-        } else {
+        } else if i < 2 * n {
             length * self.speed_scale / self.size
-        };
-        tol.absolute * scale + tol.relative * y0.max(y1)
+        } else {
+            1.0
+        }
     }
 
     /// The longest step a run with outputs every `h_out` s takes: the output interval, or one
@@ -123,6 +131,14 @@ impl SystemSimulation<'_> {
         it.y.extend_from_slice(&self.q);
         it.y.extend_from_slice(&self.qd);
         it.y.extend_from_slice(&self.work);
+        let implicit = self.implicit();
+        if it.dopri.is_implicit() != implicit {
+            it.dopri = Stepper::new(implicit);
+            it.control = Controller::of_order(it.dopri.error_order());
+        }
+        if it.modes != self.in_contact {
+            it.dopri.invalidate();
+        }
         it.modes.clone_from(&self.in_contact);
         it.start_pairings.clone_from(&self.pairings);
         it.start_jumps = (self.impacts, self.projections);
@@ -140,10 +156,10 @@ impl SystemSimulation<'_> {
         loop {
             let h = self.attempt(it, t0, room, h_max, floor, shorter, &mut dependent)?;
             // the end, projected onto the rows
-            let d = &it.dopri;
-            self.q.copy_from_slice(&d.y1[..n]);
-            self.qd.copy_from_slice(&d.y1[n..2 * n]);
-            self.work.copy_from_slice(&d.y1[2 * n..]);
+            let y1 = it.dopri.y1();
+            self.q.copy_from_slice(&y1[..n]);
+            self.qd.copy_from_slice(&y1[n..2 * n]);
+            self.work.copy_from_slice(&y1[2 * n..]);
             self.pairings.clone_from(&it.pairings);
             self.t = if h >= room { limit } else { t0 + h };
             let unprojected = self.energy();
@@ -151,7 +167,7 @@ impl SystemSimulation<'_> {
                 Ok(()) => (0..n)
                     .map(|i| {
                         let scale = if i % 3 == 2 { 1.0 } else { self.size };
-                        (self.q[i] - d.y1[i]).abs() / scale
+                        (self.q[i] - y1[i]).abs() / scale
                     })
                     .fold(0.0f64, f64::max),
                 Err(DynamicsError::Unassembled { .. } | DynamicsError::Singular { .. }) => {
@@ -273,7 +289,7 @@ impl SystemSimulation<'_> {
             self.derivative(t, y, modes, &mut stage_pairings.borrow_mut(), accel, dy)
         };
         // k₁: the evaluation that ended the last step (kept), or the start's
-        let mut k1 = std::mem::take(&mut dopri.k[0]);
+        let mut k1 = std::mem::take(dopri.first());
         stage_pairings.borrow_mut().clone_from(start_pairings);
         f(t0, y, &mut k1)?;
         let proposed = match it.next {
@@ -310,9 +326,17 @@ impl SystemSimulation<'_> {
                     atol: self.opts.tolerances.absolute,
                 });
             }
-            dopri.k[0].clone_from(&k1);
+            dopri.first().clone_from(&k1);
             stage_pairings.borrow_mut().clone_from(start_pairings);
-            let err = match dopri.attempt(t0, y, h, &mut f, |i, a, b| self.error_scale(i, a, b)) {
+            let err = match dopri.attempt(
+                t0,
+                y,
+                h,
+                2 * n,
+                &mut f,
+                |i, a, b| self.error_scale(i, a, b),
+                |i| self.typical(i),
+            ) {
                 Ok(err) => err,
                 // a stage past a dead point: the step is too long
                 Err(DynamicsError::Singular { .. } | DynamicsError::NoConvergence { .. }) => {
@@ -330,7 +354,7 @@ impl SystemSimulation<'_> {
             it.rejected += 1;
             h = next;
         }
-        dopri.k[0] = k1;
+        *dopri.first() = k1;
         *pairings = stage_pairings.into_inner();
         // a step cut short to end at the limit leaves the controller's proposal
         it.next_from_error = if clipped && h < proposed {
@@ -381,7 +405,8 @@ impl SystemSimulation<'_> {
             let (q, v) = (&y[..n], &y[n..2 * n]);
             if it.modes[k] {
                 Ok::<f64, DynamicsError>(
-                    self.accel(d.t0 + theta * d.h, q, v, &it.modes, p)?.forces[k],
+                    self.accel(d.t0() + theta * d.h(), q, v, &it.modes, p)?
+                        .forces[k],
                 )
             } else {
                 Ok(self.gap(q, v, k, p)? + 1e-12 * self.size)
@@ -392,7 +417,7 @@ impl SystemSimulation<'_> {
             return Ok(1.0);
         }
         let (mut lo, mut hi) = (0.0, 1.0);
-        let precision = 1e-14 * (1.0 + d.t0.abs()) / d.h;
+        let precision = 1e-14 * (1.0 + d.t0().abs()) / d.h();
         while hi - lo > precision {
             let mid = 0.5 * (lo + hi);
             if value(mid, &mut y, &mut p)? >= 0.0 {
@@ -431,23 +456,40 @@ impl SystemSimulation<'_> {
     /// state starts all that follows it), projected.
     fn set_by_step(&mut self, it: &mut Integrator, theta: f64) -> Result<(), DynamicsError> {
         let n = self.q.len();
-        let (t0, h) = (it.dopri.t0, theta * it.dopri.h);
+        let (t0, h) = (it.dopri.t0(), theta * it.dopri.h());
         let mut p = it.start_pairings.clone();
         let mut accel = Accel::default();
         let mut redo = std::mem::take(&mut it.redo);
-        redo.k[0].clone_from(&it.dopri.k[0]);
+        it.dopri.prepare_redo(&mut redo);
         let this = &*self;
         let mut f = |t: f64, y: &[f64], dy: &mut Vec<f64>| {
             this.derivative(t, y, &it.modes, &mut p, &mut accel, dy)
         };
-        let done = redo.attempt(t0, &it.dopri.y0, h, &mut f, |_, _, _| f64::INFINITY);
-        if let Err(e) = done {
-            it.redo = redo;
-            return Err(e);
+        let done = redo.attempt(
+            t0,
+            it.dopri.y0(),
+            h,
+            2 * n,
+            &mut f,
+            |i, a, b| this.error_scale(i, a, b),
+            |i| this.typical(i),
+        );
+        match done {
+            Err(e) => {
+                it.redo = redo;
+                return Err(e);
+            }
+            // the implicit method's Newton did not converge on the shorter step
+            Ok(err) if err.is_infinite() => {
+                it.redo = redo;
+                return Err(DynamicsError::ImplicitNewton { time: t0, step: h });
+            }
+            Ok(_) => {}
         }
-        self.q.copy_from_slice(&redo.y1[..n]);
-        self.qd.copy_from_slice(&redo.y1[n..2 * n]);
-        self.work.copy_from_slice(&redo.y1[2 * n..]);
+        let y1 = redo.y1();
+        self.q.copy_from_slice(&y1[..n]);
+        self.qd.copy_from_slice(&y1[n..2 * n]);
+        self.work.copy_from_slice(&y1[2 * n..]);
         it.redo = redo;
         self.pairings = p;
         self.in_contact.clone_from(&it.modes);
@@ -465,7 +507,7 @@ impl SystemSimulation<'_> {
         self.work.copy_from_slice(&y[2 * n..]);
         self.pairings.clone_from(&it.start_pairings);
         self.in_contact.clone_from(&it.modes);
-        self.t = it.dopri.t0 + theta * it.dopri.h;
+        self.t = it.dopri.t0() + theta * it.dopri.h();
         self.project_counted()
     }
 
@@ -490,10 +532,26 @@ impl SystemSimulation<'_> {
         Ok(())
     }
 
+    /// The integrator of the steps from now on ([`crate::dynamics::Scheme`]).
+    pub fn set_scheme(&mut self, scheme: crate::dynamics::Scheme) {
+        self.opts.scheme = scheme;
+    }
+
     /// The steps taken since the start: accepted, and rejected (their error above the
     /// tolerances, or a stage past a dead point).
     pub fn steps_taken(&self) -> (usize, usize) {
         (self.integrator.accepted, self.integrator.rejected)
+    }
+
+    /// The integrator its steps take: [`crate::dynamics::Scheme::Explicit`] or
+    /// [`crate::dynamics::Scheme::Implicit`] (the options' choice, or the one
+    /// [`crate::dynamics::Scheme::Auto`] made from the system's rates).
+    pub fn scheme_in_use(&self) -> crate::dynamics::Scheme {
+        if self.implicit() {
+            crate::dynamics::Scheme::Implicit
+        } else {
+            crate::dynamics::Scheme::Explicit
+        }
     }
 
     /// Advances by `h` seconds in steps chosen by the tolerances (the last cut to end at
@@ -548,8 +606,16 @@ impl SystemSimulation<'_> {
         let h_max = self.longest_step(h_out);
         let mut k = 1;
         let mut since = events.len();
+        let implicit = self.implicit();
         while k <= outputs {
-            self.step(end, h_max, &mut events)?;
+            // the implicit method's steps end at the outputs (its interpolant's end slopes carry a
+            // stiff component's error times its rate)
+            let limit = if implicit && k < outputs {
+                start + k as f64 * h_out
+            } else {
+                end
+            };
+            self.step(limit, h_max, &mut events)?;
             if events.len() - since > MAX_EVENTS {
                 return Err(DynamicsError::Chatter {
                     time: self.t,
@@ -585,7 +651,7 @@ impl SystemSimulation<'_> {
     /// onto the rows; the current state is kept.
     fn sample_between(&mut self, t: f64) -> Result<SystemSample, DynamicsError> {
         let it = std::mem::take(&mut self.integrator);
-        let theta = (t - it.dopri.t0) / it.dopri.h;
+        let theta = (t - it.dopri.t0()) / it.dopri.h();
         // the current state kept aside
         let mut kept = StepEnd {
             q: self.q.clone(),

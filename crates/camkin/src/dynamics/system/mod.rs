@@ -61,6 +61,8 @@ pub struct SystemDynamicsOptions {
     pub al: AugmentedLagrangian,
     /// the integration's tolerances (the step is chosen by them)
     pub tolerances: super::Tolerances,
+    /// the integrator: explicit, implicit (stiff systems), or chosen by the system's rates
+    pub scheme: super::Scheme,
     /// each contact's line-contact width and materials for its Hertz pressure, in the system's
     /// order (none past the list's end)
     pub hertz: Vec<Option<ContactHertz>>,
@@ -109,6 +111,7 @@ impl Default for SystemDynamicsOptions {
                 ..AugmentedLagrangian::default()
             },
             tolerances: super::Tolerances::default(),
+            scheme: super::Scheme::Auto,
         }
     }
 }
@@ -236,7 +239,7 @@ pub struct SystemSimulation<'a> {
     sampled: std::cell::RefCell<(Vec<Option<Pairing>>, eval::Accel)>,
     /// the fastest rate and its element, found once ([`SystemSimulation::fastest_rate`]: the
     /// masses and elements do not change)
-    fastest: std::cell::OnceCell<(f64, String)>,
+    fastest: std::cell::OnceCell<rates::Fastest>,
     /// the inverse of the mass matrix's diagonal, one per coordinate
     pub(super) inv_mass: Vec<f64>,
     /// each coordinate's weight in the rows' geometry: 1 a length's, `1/size²` an angle's
@@ -478,8 +481,15 @@ impl<'a> SystemSimulation<'a> {
             start_report: StartReport::default(),
         };
         if !(sim.speed_scale > 0.0) {
-            // nothing driven and no gravity: the springs' fastest rate, or a size a second
-            sim.speed_scale = size * sim.fastest_rate().0.max(1.0);
+            // nothing driven and no gravity: the springs' fastest rate (a vibration's: a
+            // damper's decay sets no speed), or the dampers', or a size a second
+            let f = sim.fastest.get_or_init(|| sim.find_fastest_rate());
+            let rate = if f.vibration > 0.0 {
+                f.vibration
+            } else {
+                f.rate
+            };
+            sim.speed_scale = size * rate.max(1.0);
         }
         sim.geometry = (0..sim.model.bodies.len())
             .flat_map(|_| [1.0, 1.0, 1.0 / (size * size)])

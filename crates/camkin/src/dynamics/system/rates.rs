@@ -5,6 +5,25 @@
 use super::super::model::Load;
 use super::SystemSimulation;
 
+/// The fastest rate of a system's elements ([`SystemSimulation::fastest_rate`]).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Fastest {
+    /// the fastest rate, 1/s
+    pub(crate) rate: f64,
+    /// the element that sets it, named (`damper "lash"`)
+    pub(crate) element: String,
+    /// it is a damper's (a decay's, not a vibration's)
+    pub(crate) damper: bool,
+    /// the fastest vibration's rate (the springs'), 1/s
+    pub(crate) vibration: f64,
+}
+
+/// An implicit step's cost in explicit steps (five stages of about two Newton iterations, seven
+/// evaluations an explicit step).
+const IMPLICIT_STEP: f64 = 1.5;
+/// The implicit steps a Jacobian serves, about.
+const JACOBIAN_REUSE: f64 = 4.0;
+
 impl SystemSimulation<'_> {
     /// The fastest rate of the system's force elements, 1/s, and the element that sets it: a
     /// bound on the largest eigenvalue of `M⁻¹K` (a rate `√λ`) and of `M⁻¹C` (a rate `λ`) by
@@ -16,13 +35,12 @@ impl SystemSimulation<'_> {
     /// its masses clashed at 59 m/s). The element named is the largest term of the fastest
     /// body's row.
     pub fn fastest_rate(&self) -> (f64, String) {
-        self.fastest
-            .get_or_init(|| self.find_fastest_rate())
-            .clone()
+        let f = self.fastest.get_or_init(|| self.find_fastest_rate());
+        (f.rate, f.element.clone())
     }
 
     /// [`SystemSimulation::fastest_rate`], found.
-    fn find_fastest_rate(&self) -> (f64, String) {
+    pub(super) fn find_fastest_rate(&self) -> Fastest {
         use crate::system::ForceKind;
         let mass = |id: crate::system::BodyId, angular: bool| {
             id.index().map_or(f64::INFINITY, |i| {
@@ -59,11 +77,14 @@ impl SystemSimulation<'_> {
                 }
             }
         }
-        let mut fastest = (0.0, String::new());
+        let mut fastest = Fastest::default();
         for row in &rows {
             for (kind, &(sum, _, e)) in row.iter().enumerate() {
                 let rate = if kind < 2 { sum.sqrt() } else { sum };
-                if rate > fastest.0 && e != usize::MAX {
+                if kind < 2 && e != usize::MAX {
+                    fastest.vibration = fastest.vibration.max(rate);
+                }
+                if rate > fastest.rate && e != usize::MAX {
                     let f = &self.sys.forces()[e];
                     let what = match f.kind {
                         ForceKind::Damper { .. } => "damper",
@@ -71,7 +92,9 @@ impl SystemSimulation<'_> {
                         ForceKind::TorsionDamper { .. } => "torsion damper",
                         ForceKind::Spring { .. } => "spring",
                     };
-                    fastest = (rate, format!("{what} {:?}", f.name));
+                    fastest.rate = rate;
+                    fastest.element = format!("{what} {:?}", f.name);
+                    fastest.damper = kind >= 2;
                 }
             }
         }
@@ -83,7 +106,7 @@ impl SystemSimulation<'_> {
     /// ODE I, §IV.2 fig. 2.1 of part II), so 3.3 over the fastest rate; the step the tolerances
     /// choose is no longer than it for long (a longer one's error grows, and it is cut).
     pub fn stable_step(&self) -> f64 {
-        let rate = self.fastest.get_or_init(|| self.find_fastest_rate()).0;
+        let rate = self.fastest.get_or_init(|| self.find_fastest_rate()).rate;
         if rate > 0.0 {
             3.3 / rate
         } else {
@@ -152,11 +175,41 @@ impl SystemSimulation<'_> {
     pub fn steps_estimate_at(&self, duration: f64, h_out: f64, speed: f64) -> f64 {
         let tol = self.opts.tolerances;
         let scale = tol.relative.min(tol.absolute).powf(0.2);
-        let smooth = 2.0 * self.time_scale(speed) * scale;
+        let smooth = self.smooth_step(speed);
+        let longest = h_out.max(self.degree_time() / speed);
+        if self.implicit() {
+            // the implicit method's steps end at every output and follow the motion; each
+            // costs about IMPLICIT_STEP explicit steps and a Jacobian every few
+            let h = h_out.min(smooth);
+            let per_step = IMPLICIT_STEP + 2.0 * self.q.len() as f64 / 7.0 / JACOBIAN_REUSE;
+            return (duration / h).ceil().max(1.0) * per_step;
+        }
         let stable = self.stable_step();
         let stiff = stable.min(12.0 * stable * scale);
-        let longest = h_out.max(self.degree_time() / speed);
         let h = longest.min(smooth).min(stiff);
         (duration / h).ceil().max(1.0)
+    }
+
+    /// The step the tolerances allow a smooth motion, s: `2 T tol^(1/5)` (see
+    /// [`SystemSimulation::steps_estimate`]).
+    fn smooth_step(&self, speed: f64) -> f64 {
+        let tol = self.opts.tolerances;
+        2.0 * self.time_scale(speed) * tol.relative.min(tol.absolute).powf(0.2)
+    }
+
+    /// Whether the steps are the implicit method's ([`crate::dynamics::Scheme`]): asked for,
+    /// or chosen where the fastest rate is a damper's (a decay, which the implicit method
+    /// passes over in steps of the motion's length) and over ten times both the fastest
+    /// vibration's and the motion's (one over its time scale).
+    pub(crate) fn implicit(&self) -> bool {
+        use crate::dynamics::Scheme;
+        match self.opts.scheme {
+            Scheme::Explicit => false,
+            Scheme::Implicit => true,
+            _ => {
+                let f = self.fastest.get_or_init(|| self.find_fastest_rate());
+                f.damper && f.rate > 10.0 * f.vibration.max(1.0 / self.time_scale(1.0))
+            }
+        }
     }
 }
