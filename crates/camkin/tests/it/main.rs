@@ -20,6 +20,7 @@ mod dynamics_initial_state;
 mod dynamics_liftoff;
 mod dynamics_loads;
 mod dynamics_reduced;
+mod dynamics_slider_crank;
 mod dynamics_stiff;
 mod dynamics_system;
 mod dynamics_system_cam;

@@ -56,6 +56,10 @@ fn every_systems_step_estimate_is_within_twice_its_steps() {
             .unwrap();
             let (accepted, rejected) = sim.steps_taken();
             let taken = (accepted + rejected) as f64;
+            eprintln!(
+                "{name} over {what} at {step} s: {taken} steps, {:.2} of the estimate",
+                taken / estimate
+            );
             assert!(
                 taken <= 2.0 * estimate && estimate <= 2.0 * taken,
                 "{name} over {what} at {step} s outputs: {taken} steps taken ({accepted} + {rejected} rejected), {estimate} estimated"

@@ -119,7 +119,7 @@ impl SystemSimulation<'_> {
     /// `2 T tol^(1/5)` with `T` the system's time scale (its size over its speed scale, or a
     /// link's swing under gravity) and `tol` the tighter tolerance (the pair's error grows as
     /// `h⁵`; the factor 2 between the double pendulum's 1.1, which set it before, and Andrews'
-    /// mechanism's 3: the N-four-bar takes 1.15 times the estimate, Andrews' 0.67, a double
+    /// mechanism's 3: the N-four-bar takes 1.15 times the estimate, the slider-crank 1.14, Andrews' 0.67, a double
     /// pendulum at its factor about 1.8), nor the stiff elements'
     /// `12 h_s tol^(1/5)` (at most `h_s`, [`SystemSimulation::stable_step`]: their vibrations
     /// resolved; measured on the valve train within 3 % with its coils undamped, and at 0.53 of
@@ -129,9 +129,11 @@ impl SystemSimulation<'_> {
     }
 
     /// The system's time scale with its drivers `speed` times as fast, s: its size over its
-    /// speed scale, or where gravity moves it the period scale of its longest body swinging,
-    /// `√(l/g)` (`l` the farthest two of a body's joint points apart), whichever is shorter — a
-    /// chain of forty one-metre links swings as fast as one link, not as one forty metres long.
+    /// speed scale, or where gravity moves it the period scale of its shortest link swinging,
+    /// `√(l/g)` (`l` the farthest two of a body's joint points apart; links shorter than a
+    /// hundredth of the longest left out), whichever is shorter — a chain of forty one-metre
+    /// links swings as fast as one link, not as one forty metres long, and a slider-crank as
+    /// fast as its crank (with the rod's length its estimate was half the steps it took).
     fn time_scale(&self, speed: f64) -> f64 {
         let whole = self.size / (self.speed_scale * speed);
         let g = self
@@ -155,15 +157,23 @@ impl SystemSimulation<'_> {
                 }
             }
         }
-        let longest = points
+        let spans: Vec<f64> = points
             .iter()
-            .flat_map(|p| {
+            .map(|p| {
                 p.iter()
-                    .flat_map(move |x| p.iter().map(move |y| (x - y).norm()))
+                    .flat_map(|x| p.iter().map(move |y| (x - y).norm()))
+                    .fold(0.0f64, f64::max)
             })
-            .fold(0.0f64, f64::max);
-        if longest > 0.0 {
-            whole.min((longest / g).sqrt())
+            .collect();
+        let longest = spans.iter().copied().fold(0.0f64, f64::max);
+        // the shortest link that is not a sliver (a hundredth of the longest) swings fastest
+        let shortest = spans
+            .iter()
+            .copied()
+            .filter(|&l| l >= 0.01 * longest && l > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        if shortest.is_finite() {
+            whole.min((shortest / g).sqrt())
         } else {
             whole
         }
