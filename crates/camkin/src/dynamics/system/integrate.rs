@@ -480,7 +480,7 @@ impl SystemSimulation<'_> {
                 return Err(e);
             }
             // the implicit method's Newton did not converge on the shorter step
-            Ok(err) if err.is_infinite() => {
+            Ok(err) if err.is_infinite() && redo.is_implicit() => {
                 it.redo = redo;
                 return Err(DynamicsError::ImplicitNewton { time: t0, step: h });
             }

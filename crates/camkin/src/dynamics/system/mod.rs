@@ -240,6 +240,8 @@ pub struct SystemSimulation<'a> {
     /// the fastest rate and its element, found once ([`SystemSimulation::fastest_rate`]: the
     /// masses and elements do not change)
     fastest: std::cell::OnceCell<rates::Fastest>,
+    /// whether [`crate::dynamics::Scheme::Auto`] takes the implicit method, decided once
+    auto_implicit: std::cell::OnceCell<bool>,
     /// the inverse of the mass matrix's diagonal, one per coordinate
     pub(super) inv_mass: Vec<f64>,
     /// each coordinate's weight in the rows' geometry: 1 a length's, `1/size²` an angle's
@@ -476,6 +478,7 @@ impl<'a> SystemSimulation<'a> {
             spare_pairings: Vec::new(),
             sampled: Default::default(),
             fastest: Default::default(),
+            auto_implicit: Default::default(),
             inv_mass: Vec::new(),
             geometry: Vec::new(),
             start_report: StartReport::default(),

@@ -216,10 +216,10 @@ impl SystemSimulation<'_> {
         match self.opts.scheme {
             Scheme::Explicit => false,
             Scheme::Implicit => true,
-            _ => {
+            _ => *self.auto_implicit.get_or_init(|| {
                 let f = self.fastest.get_or_init(|| self.find_fastest_rate());
                 f.damper && f.rate > 10.0 * f.vibration.max(1.0 / self.time_scale(1.0))
-            }
+            }),
         }
     }
 }
