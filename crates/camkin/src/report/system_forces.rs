@@ -41,7 +41,9 @@ pub struct DriverEffort {
     pub max: AtAngle,
     /// the smallest
     pub min: AtAngle,
-    /// the mean over the samples (the run's output steps are even)
+    /// the mean over the samples (the run's output steps are even); 0 where it is within the
+    /// sum's rounding (`n ε` times the mean magnitude: a driven cam's torque over a revolution,
+    /// zero in a conservative train, summed to 4e-17 N·m)
     pub mean: f64,
     /// the root mean square
     pub rms: f64,
@@ -144,7 +146,7 @@ impl SystemForces {
                             value: 0.0,
                             angle_deg: 0.0,
                         }),
-                    mean: values.iter().sum::<f64>() / n,
+                    mean: mean_of(&values),
                     rms: (values.iter().map(|v| v * v).sum::<f64>() / n).sqrt(),
                 }
             })
@@ -255,5 +257,37 @@ impl SystemForces {
             }
         }
         out
+    }
+}
+
+/// The mean of `values`, 0 where it is within the rounding of their sum (at most `n ε` times
+/// their mean magnitude: Higham, *Accuracy and Stability of Numerical Algorithms*, §4.2).
+fn mean_of(values: &[f64]) -> f64 {
+    let n = values.len().max(1) as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let magnitude = values.iter().map(|v| v.abs()).sum::<f64>() / n;
+    if mean.abs() <= n * f64::EPSILON * magnitude {
+        0.0
+    } else {
+        mean
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::mean_of;
+
+    /// A torque over a revolution whose true mean is zero (a sine sampled over whole periods)
+    /// gives 0, not its sum's rounding; a true mean a millionth of the amplitude is kept.
+    #[test]
+    fn a_mean_within_its_sums_rounding_is_zero() {
+        let n = 1440;
+        let sine: Vec<f64> = (0..n)
+            .map(|k| 3.519 * (std::f64::consts::TAU * k as f64 / n as f64).sin())
+            .collect();
+        assert_eq!(mean_of(&sine), 0.0);
+        let offset: Vec<f64> = sine.iter().map(|v| v + 3.519e-6).collect();
+        assert!((mean_of(&offset) - 3.519e-6).abs() < 1e-12);
+        assert_eq!(mean_of(&[]), 0.0);
     }
 }
