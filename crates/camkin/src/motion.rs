@@ -27,6 +27,34 @@ pub enum Law {
     ModifiedSine,
     /// `y = x`: constant velocity
     ConstantVelocity,
+    /// A valve train's clearance ramp: constant velocity `y' = 4/3` over its middle half, reached
+    /// from rest over its first quarter and left to rest over its last by cycloidal blends of the
+    /// velocity (`y' = V (u − sin 2πu / 2π)`, `u = 4x`): its velocity, acceleration and jerk are
+    /// continuous and zero at both ends, so it meets a dwell and a lift from rest; its height
+    /// is `1/6` at the constant part's start and `5/6` at its end. A ramp of rise `h` over `β`
+    /// moves at `4h / 3β` (length per rad) there: a clearance between those heights is taken up,
+    /// and a valve seats, at that speed times the cam's.
+    Ramp,
+}
+
+/// The fraction of a [`Law::Ramp`] each blend takes.
+const RAMP_BLEND: f64 = 0.25;
+
+/// [`Law::Ramp`]'s value and four derivatives over its first half, `x ∈ [0, 1/2]`.
+fn ramp_first_half(x: f64) -> [f64; 5] {
+    let (b, v) = (RAMP_BLEND, 1.0 / (1.0 - RAMP_BLEND));
+    if x >= b {
+        return [v * (0.5 * b + (x - b)), v, 0.0, 0.0, 0.0];
+    }
+    let u = x / b;
+    let (s, c) = (TAU * u).sin_cos();
+    [
+        v * b * (0.5 * u * u + (c - 1.0) / (TAU * TAU)),
+        v * (u - s / TAU),
+        v * (1.0 - c) / b,
+        v * TAU * s / (b * b),
+        v * TAU * TAU * c / (b * b * b),
+    ]
 }
 
 /// One piece of a piecewise acceleration `A sin(ω x + φ) + B` on `[x0, x1]`, with the velocity
@@ -194,6 +222,15 @@ impl Law {
             }
             Law::ModifiedTrapezoid => eval_pieces(modified_trapezoid(), x),
             Law::ModifiedSine => eval_pieces(modified_sine(), x),
+            Law::Ramp => {
+                if x <= 0.5 {
+                    ramp_first_half(x)
+                } else {
+                    // symmetric about its middle: y(x) = 1 − y(1 − x)
+                    let y = ramp_first_half(1.0 - x);
+                    [1.0 - y[0], y[1], -y[2], y[3], -y[4]]
+                }
+            }
         }
     }
 
@@ -208,11 +245,12 @@ impl Law {
             Law::ModifiedTrapezoid => "modified-trapezoid",
             Law::ModifiedSine => "modified-sine",
             Law::ConstantVelocity => "constant-velocity",
+            Law::Ramp => "ramp",
         }
     }
 
     /// Every law.
-    pub const ALL: [Law; 8] = [
+    pub const ALL: [Law; 9] = [
         Law::Dwell,
         Law::SimpleHarmonic,
         Law::Cycloidal,
@@ -221,6 +259,7 @@ impl Law {
         Law::ModifiedTrapezoid,
         Law::ModifiedSine,
         Law::ConstantVelocity,
+        Law::Ramp,
     ];
 }
 
@@ -489,6 +528,30 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// The clearance ramp: at rest (velocity, acceleration and jerk zero) at both ends, its
+    /// height 1 at the end, its velocity 4/3 and nothing else over its middle half, where its
+    /// height runs from 1/6 to 5/6 (what a clearance taken up at its constant speed must lie
+    /// between).
+    #[test]
+    fn the_ramp_is_constant_velocity_between_blends_from_rest() {
+        let r = |x: f64| Law::Ramp.normalized5(x);
+        for d in 1..4 {
+            assert!(
+                r(0.0)[d].abs() < 1e-15 && r(1.0)[d].abs() < 1e-15,
+                "derivative {d}"
+            );
+        }
+        assert!(r(0.0)[0].abs() < 1e-15 && (r(1.0)[0] - 1.0).abs() < 1e-15);
+        assert!((r(0.25)[0] - 1.0 / 6.0).abs() < 1e-15 && (r(0.75)[0] - 5.0 / 6.0).abs() < 1e-15);
+        for k in 0..=100 {
+            let x = 0.25 + 0.5 * k as f64 / 100.0;
+            let y = r(x);
+            assert!((y[1] - 4.0 / 3.0).abs() < 1e-14, "{x}: {y:?}");
+            assert!(y[2].abs() < 1e-12 && y[3].abs() < 1e-10, "{x}: {y:?}");
+            assert!((y[0] - (1.0 / 6.0 + 4.0 / 3.0 * (x - 0.25))).abs() < 1e-14);
         }
     }
 

@@ -245,7 +245,15 @@ pub fn no_follow_speed(
     let assembled;
     let opts = if (0..watched.len()).any(|k| closes(&slow, k)) {
         let mut o = opts.clone();
-        o.start_touching = (0..watched.len()).map(|k| closes(&slow, k)).collect();
+        o.start_touching = (0..watched.len())
+            .map(|k| {
+                if closes(&slow, k) {
+                    Some(true)
+                } else {
+                    opts.start_touching.get(k).copied().flatten()
+                }
+            })
+            .collect();
         assembled = o;
         let again = first_opening(sys, &assembled, sweep, sweep.from_rpm, None)?;
         simulations += 1;

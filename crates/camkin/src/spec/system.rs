@@ -381,11 +381,7 @@ impl SystemSpec {
             None => (None, 0.0),
         };
         let mut restitution = Vec::with_capacity(self.contact.len());
-        let start_touching = self
-            .contact
-            .iter()
-            .map(|c| c.starts_closed == Some(true))
-            .collect();
+        let start_touching = self.contact.iter().map(|c| c.starts_closed).collect();
         let mut hertz = Vec::with_capacity(self.contact.len());
         let mut lubricated = Vec::with_capacity(self.contact.len());
         for (i, c) in self.contact.iter().enumerate() {

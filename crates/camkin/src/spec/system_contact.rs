@@ -49,8 +49,9 @@ pub struct ContactSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rolls: Option<String>,
     /// `true`: it starts closed whatever its gap at the starting poses, which are assembled onto
-    /// it (the distance moved reported); without it a contact starts closed only where its
-    /// curves are within 1e-3 of the system's size (for dynamics)
+    /// it (the distance moved reported); `false`: it starts apart whatever its gap (a lash);
+    /// without it a contact starts closed only where its curves are within 1e-3 of the
+    /// system's size (for dynamics)
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub starts_closed: Option<bool>,
 }

@@ -17,6 +17,7 @@ mod dynamics_cam_energy;
 mod dynamics_contact;
 mod dynamics_energy;
 mod dynamics_initial_state;
+mod dynamics_lash;
 mod dynamics_liftoff;
 mod dynamics_loads;
 mod dynamics_reduced;

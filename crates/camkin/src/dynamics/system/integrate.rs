@@ -229,7 +229,7 @@ impl SystemSimulation<'_> {
             self.projections += projected - before;
             // the drivers' impulses' work is theirs: the rest of the change is the impact's loss
             let drivers = self.work[super::balance::DRIVERS];
-            let approach = self.impact(k)?;
+            let (approach, released) = self.impact(k)?;
             self.impacts +=
                 self.energy() - projected - (self.work[super::balance::DRIVERS] - drivers);
             events.push(ContactEvent {
@@ -238,6 +238,15 @@ impl SystemSimulation<'_> {
                 contact: k,
                 approach,
             });
+            // the contacts the impact pulled apart leave at its instant
+            for j in released {
+                events.push(ContactEvent {
+                    kind: EventKind::LiftOff,
+                    time: self.t,
+                    contact: j,
+                    approach: 0.0,
+                });
+            }
         }
         Ok(())
     }

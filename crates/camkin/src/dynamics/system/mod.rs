@@ -27,6 +27,7 @@
 mod balance;
 mod centre;
 mod eval;
+mod impact;
 mod integrate;
 mod project;
 mod rates;
@@ -66,13 +67,14 @@ pub struct SystemDynamicsOptions {
     /// each contact's line-contact width and materials for its Hertz pressure, in the system's
     /// order (none past the list's end)
     pub hertz: Vec<Option<ContactHertz>>,
-    /// the contacts that start in touch whatever their gap at the starting poses (the poses are
-    /// assembled onto them), in the system's order; a contact not marked starts in touch only
-    /// where its curves are within 1e-3 of the system's size (otherwise it starts apart, and
-    /// its bodies move onto it: a drop). The speed sweep ([`super::no_follow_speed`]) marks
-    /// the contacts that a slow revolution closes and keeps closed, so that its verdict does
-    /// not depend on how near the file's poses were.
-    pub start_touching: Vec<bool>,
+    /// whether each contact starts in touch whatever its gap at the starting poses, in the
+    /// system's order: `Some(true)` closed (the poses are assembled onto it), `Some(false)`
+    /// apart (a lash: the cam meets its follower later); a contact not marked (`None`, or past
+    /// the list's end) starts in touch only where its curves are within 1e-3 of the system's
+    /// size (otherwise it starts apart, and its bodies move onto it: a drop). The speed sweep
+    /// ([`super::no_follow_speed`]) marks the contacts that a slow revolution closes and keeps
+    /// closed, so that its verdict does not depend on how near the file's poses were.
+    pub start_touching: Vec<Option<bool>>,
     /// each body's starting frame rates `(v_x, v_y, ω)` (L/s, L/s, rad/s) where given, in the
     /// system's order (a body past the list's end, or a rate not given: the assembled state's,
     /// at rest but for the drivers); made consistent with the rows at the start, and what that
@@ -522,8 +524,10 @@ impl<'a> SystemSimulation<'a> {
                 reason: e.to_string(),
             })?;
             let (Proximity::Apart(p) | Proximity::Touching(p) | Proximity::Overlapping(p)) = found;
-            sim.in_contact[k] = sim.sense[k] * p.gap <= STARTS_IN_TOUCH * size
-                || sim.opts.start_touching.get(k) == Some(&true);
+            sim.in_contact[k] = match sim.opts.start_touching.get(k).copied().flatten() {
+                Some(marked) => marked,
+                None => sim.sense[k] * p.gap <= STARTS_IN_TOUCH * size,
+            };
             sim.pairings[first_contact + k] = Some(p);
         }
         let before = sim.frame_coordinates();

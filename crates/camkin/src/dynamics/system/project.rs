@@ -1,7 +1,6 @@
 //! A simulated system's projection onto its rows (positions by Newton, then velocities), its
-//! contacts' gaps, and an impact's jump of the velocities.
+//! contacts' gaps.
 
-use super::super::follower::REBOUND_TOLERANCE;
 use super::super::projection::DenseRows;
 use super::super::DynamicsError;
 use super::eval::Scratch;
@@ -373,98 +372,5 @@ impl SystemSimulation<'_> {
                 }
             }
         }
-    }
-
-    /// An impact of contact `k` now: the velocities projected so that its normal velocity
-    /// reverses times the restitution, every joint, driver and contact in touch held; the
-    /// approach speed. The contact re-engages when the rebound is negligible.
-    pub(super) fn impact(&mut self, k: usize) -> Result<f64, DynamicsError> {
-        let mut modes = self.in_contact.clone();
-        modes[k] = true;
-        let mut pairings = self.pairings.clone();
-        let rows = self.dense(&self.q, &self.qd, &modes, &mut pairings)?;
-        // the impacting contact's row among the active rows
-        let active = self.active(&modes);
-        let r: usize = self.model.constraints[..self.first_contact + k]
-            .iter()
-            .zip(&active)
-            .filter(|(_, &a)| a)
-            .map(|(c, _)| c.rows())
-            .sum();
-        // the gap's rate (its row times q̇), negative approaching in the contact's sense
-        let vn: f64 = rows.row(r).iter().zip(&self.qd).map(|(a, b)| a * b).sum();
-        let mut targets = rows.target.to_vec();
-        let e = self.opts.restitution.get(k).copied().unwrap_or(0.0);
-        // a rebound too slow to part the curves re-engages the contact: the impact is plastic
-        // (left at `−e vₙ`, the curves parted at the rebound's speed under a closed contact until
-        // the next projection took it away, at a step's end: a jolt to the valve spring's coils
-        // that the step's length set)
-        let engaged = e * vn.abs() <= REBOUND_TOLERANCE * self.speed_scale;
-        targets[r] = if engaged { 0.0 } else { -e * vn };
-        let mut x = vec![0.0; self.qd.len()];
-        if !self
-            .model
-            .project_onto(&rows, &self.qd, &targets[..rows.m], &mut x)
-        {
-            return Err(DynamicsError::Singular { time: self.t });
-        }
-        self.work[super::balance::DRIVERS] += self.drivers_impulse_work(&rows, &active, &x);
-        self.qd = x;
-        self.in_contact[k] = engaged;
-        Ok(vn.abs())
-    }
-
-    /// The work the drivers' impulses do in an impact that takes the rates from the current
-    /// ones to `after` under the dense `rows` of the constraints `active`: each driver row's
-    /// impulse `Λ_r` (from `Φ_q M⁻¹ Φ_qᵀ Λ = Φ_q Δq̇`, the impulse `M Δq̇ = Φ_qᵀ Λ` split by rows)
-    /// times its rate averaged over the impact (exact: the rates change linearly with the
-    /// impulse). The driver keeps its speed, so this is `Λ_r` times it. The rest of the change
-    /// of kinetic energy is the contact's loss, `−½ (1 − e²) m u²` for a body of mass `m`.
-    /// Zero where no driver moves; where the rows are dependent (a singular pose) the split is
-    /// not defined and it is zero (all of the change counts as the impact's).
-    fn drivers_impulse_work(&self, rows: &DenseRows, active: &[bool], after: &[f64]) -> f64 {
-        let mut driven = Vec::new();
-        let mut r = 0;
-        for (c, _) in self
-            .model
-            .constraints
-            .iter()
-            .zip(active)
-            .filter(|(_, &a)| a)
-        {
-            if let super::super::model::Constraint::Driver { .. } = c {
-                if c.target_rate(self.t) != 0.0 {
-                    driven.push(r);
-                }
-            }
-            r += c.rows();
-        }
-        if driven.is_empty() {
-            return 0.0;
-        }
-        let (m, n) = (rows.m, self.qd.len());
-        // a point mass's angle has no inertia: its column carries no impulse
-        let w: Vec<f64> = self
-            .inv_mass
-            .iter()
-            .map(|&w| if w.is_finite() { w } else { 0.0 })
-            .collect();
-        let dq: Vec<f64> = (0..n).map(|i| after[i] - self.qd[i]).collect();
-        let s = nalgebra::DMatrix::<f64>::from_fn(m, m, |a, b| {
-            let (ra, rb) = (rows.row(a), rows.row(b));
-            (0..n).map(|i| ra[i] * w[i] * rb[i]).sum::<f64>()
-        });
-        let rhs = nalgebra::DVector::<f64>::from_fn(m, |a, _| {
-            rows.row(a).iter().zip(&dq).map(|(j, d)| j * d).sum()
-        });
-        let Some(lambda) = s.cholesky().map(|c| c.solve(&rhs)) else {
-            return 0.0;
-        };
-        let rate =
-            |v: &[f64], a: usize| -> f64 { rows.row(a).iter().zip(v).map(|(j, x)| j * x).sum() };
-        driven
-            .iter()
-            .map(|&a| lambda[a] * 0.5 * (rate(&self.qd, a) + rate(after, a)))
-            .sum()
     }
 }
