@@ -445,8 +445,17 @@ impl SystemSpec {
                             other => other,
                         })
                     })?;
-                if let (Some(program), true) = (synthesised, self.dynamics.is_some()) {
-                    super::system_dynamics::smooth_enough(&program, |s| at(T::Contact, i, to(s)))?;
+                if let Some(program) = synthesised {
+                    super::system_dynamics::unfolded(
+                        &program,
+                        spec.base_radius.unwrap_or(f64::NAN),
+                        |s| at(T::Contact, i, to(s)),
+                    )?;
+                    if self.dynamics.is_some() {
+                        super::system_dynamics::smooth_enough(&program, |s| {
+                            at(T::Contact, i, to(s))
+                        })?;
+                    }
                 }
                 Ok::<_, SpecError>(curve)
             };

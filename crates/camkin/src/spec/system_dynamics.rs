@@ -196,6 +196,38 @@ pub(super) fn smooth_enough(
     Ok(())
 }
 
+/// A synthesised cam must not fold back on itself: where the follower's envelope turns back (a
+/// flat face's radius of curvature `R + s + s''` negative, a roller's pitch curve sharper than
+/// the roller) the profile has a cusp and a loop that no cam has and no follower can follow —
+/// before this check a system ran into it as a contact search that "did not converge". The
+/// profile's tangent is sampled every 0.125°; where two neighbours point apart it folds.
+pub(super) fn unfolded(
+    program: &crate::cam::synthesis::SynthesizedProfile,
+    base_radius: f64,
+    field: impl Fn(ProfileField) -> Field,
+) -> Result<(), SpecError> {
+    use crate::curve::Curve;
+    let n = 2880;
+    let tangent = |k: usize| program.eval(std::f64::consts::TAU * k as f64 / n as f64).d1;
+    let mut last = tangent(0);
+    for k in 1..=n {
+        let t = tangent(k);
+        if t.dot(&last) < 0.0 {
+            let at = 360.0 * (k as f64 - 0.5) / n as f64;
+            return Err(SpecError::Rule {
+                field: field(ProfileField::BaseRadius),
+                reason: format!(
+                    "{}: the cam synthesised for its follower folds back on itself near {}° (under a flat face its radius of curvature R + s + s'' is negative there; a roller's path is sharper than the roller): no follower can follow it; a larger base radius, or a lift over more degrees",
+                    crate::human::human(base_radius),
+                    crate::human::human((at * 8.0).round() / 8.0),
+                ),
+            });
+        }
+        last = t;
+    }
+    Ok(())
+}
+
 /// `[simulation]` of a system file: a run in time.
 ///
 /// ```toml

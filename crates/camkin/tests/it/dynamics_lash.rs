@@ -130,3 +130,29 @@ fn the_ramps_take_up_the_lash_and_seat_the_valve_at_their_speed() {
         }
     }
 }
+
+/// A lift too steep for the flat face (8 mm over 60° above a 20 mm base circle: `R + s + s''`
+/// reaches −18 mm near the nose) gives a cam that folds back on itself: refused when the file
+/// is read, naming the contact's base radius and the angle (before, a run stopped in a contact
+/// search that "did not converge", reported as an internal error).
+#[test]
+fn a_cam_that_folds_back_under_its_flat_face_is_refused() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/bucket-lash.toml");
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("rise = 8.0, degrees = 100", "rise = 8.0, degrees = 60")
+        .replace("rise = -8.0, degrees = 100", "rise = -8.0, degrees = 60")
+        .replace(
+            "{ law = \"dwell\", degrees = 100 }",
+            "{ law = \"dwell\", degrees = 180 }",
+        );
+    let err = match read_system(&text, "folded.toml", &BuildOptions::default()) {
+        Ok(_) => panic!("a folded cam was accepted"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        err.contains("contact[0].curve_a.base_radius") && err.contains("folds back"),
+        "{err}"
+    );
+}
