@@ -14,7 +14,8 @@ use nalgebra::{DMatrix, DVector};
 struct Jump {
     rows: DenseRows,
     active: Vec<bool>,
-    /// the impacting contact's normal velocity before (negative approaching)
+    /// the impacting contact's normal velocity before, along its row (its magnitude the
+    /// approach speed; its sign the row's, not the contact's sense)
     vn: f64,
     /// the rebound is too slow to part the curves: the contact stays closed
     engaged: bool,
