@@ -5,8 +5,7 @@
 //! and their rates (computed there by RADAU5 at tolerances of 1e-14, in the test set's relative
 //! angles: `β`, `Θ` the connecting rod's turn from the crank, `γ`, `Φ`, `δ`, `Ω`, `ε`).
 
-use crate::common::read_system;
-use camkin::spec::BuildOptions;
+use crate::common::{body_index, run_timed};
 
 /// The published solution at t = 0.03 s: `(β, Θ, γ, Φ, δ, Ω, ε)` and their rates.
 const ANGLES: [f64; 7] = [
@@ -37,25 +36,11 @@ fn andrews_squeezer_matches_the_published_solution() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../examples/andrews-squeezer.toml");
     let text = std::fs::read_to_string(&path).unwrap();
-    let built = read_system(&text, "andrews-squeezer.toml", &BuildOptions::default()).unwrap();
-    let run = built.timed_run.expect("its [simulation]");
-    assert_eq!(run.duration, 0.03);
-    let (plan, mut sim) = built.plan_timed(run).unwrap();
-    let out = sim
-        .run(plan.outputs, plan.h_out, |_| {
-            std::ops::ControlFlow::Continue(())
-        })
-        .unwrap();
+    let (built, out) = run_timed(&text, "andrews-squeezer.toml");
+    assert_eq!(built.timed_run.map(|r| r.duration), Some(0.03));
     let last = out.samples.last().unwrap();
     assert!((last.time - 0.03).abs() < 1e-15);
-    let index = |name: &str| {
-        built
-            .system
-            .bodies()
-            .iter()
-            .position(|b| b.name == name)
-            .unwrap()
-    };
+    let index = |name: &str| body_index(&built, name);
     let bodies = [
         "crank",
         "connecting rod",

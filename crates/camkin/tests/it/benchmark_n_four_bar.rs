@@ -8,8 +8,7 @@
 //! a singular pose twice a revolution (the cranks flat on the ground line: the rows of its 40
 //! loops dependent for an instant), where the engine damps the rows' dependent directions.
 
-use crate::common::read_system;
-use camkin::spec::BuildOptions;
+use crate::common::{body_index, run_timed};
 
 fn example_text() -> String {
     std::fs::read_to_string(
@@ -50,20 +49,8 @@ fn reference_b0(n: usize, times: &[f64]) -> Vec<(f64, f64)> {
 /// The example's run, as the command runs it (its `[simulation]`: 20 s, 400 outputs): B0 at
 /// every output and the largest energy the balance leaves unexplained.
 fn simulate(text: &str) -> (Vec<f64>, Vec<(f64, f64)>, f64, f64) {
-    let built = read_system(text, "n-four-bar.toml", &BuildOptions::default()).unwrap();
-    let run = built.timed_run.expect("its [simulation]");
-    let (plan, mut sim) = built.plan_timed(run).unwrap();
-    let out = sim
-        .run(plan.outputs, plan.h_out, |_| {
-            std::ops::ControlFlow::Continue(())
-        })
-        .unwrap();
-    let crank = built
-        .system
-        .bodies()
-        .iter()
-        .position(|b| b.name == "crank 0")
-        .unwrap();
+    let (built, out) = run_timed(text, "n-four-bar.toml");
+    let crank = body_index(&built, "crank 0");
     let times = out.samples.iter().map(|s| s.time).collect();
     let b0 = out
         .samples

@@ -6,8 +6,7 @@
 //! classical Runge–Kutta method at 10⁻⁴ s. It shares no formula or code with the engine (no
 //! rows, no multipliers, no projection).
 
-use crate::common::read_system;
-use camkin::spec::BuildOptions;
+use crate::common::{body_index, run_timed};
 
 /// The example's data (see its comments): crank `r`, rod `l`, the guide `e` below the pivot,
 /// masses, gravity, the spring's stiffness, anchor and free length.
@@ -81,22 +80,10 @@ fn the_slider_crank_follows_its_one_coordinate_equation() {
     let path =
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/slider-crank.toml");
     let text = std::fs::read_to_string(&path).unwrap();
-    let built = read_system(&text, "slider-crank.toml", &BuildOptions::default()).unwrap();
-    let run = built.timed_run.expect("its [simulation]");
-    let (plan, mut sim) = built.plan_timed(run).unwrap();
-    let out = sim
-        .run(plan.outputs, plan.h_out, |_| {
-            std::ops::ControlFlow::Continue(())
-        })
-        .unwrap();
+    let (built, out) = run_timed(&text, "slider-crank.toml");
     let want = reference();
     assert_eq!(out.samples.len(), want.len());
-    let crank = built
-        .system
-        .bodies()
-        .iter()
-        .position(|b| b.name == "crank")
-        .unwrap();
+    let crank = body_index(&built, "crank");
     let (mut worst, mut lowest): (f64, f64) = (0.0, 0.0);
     for (s, &th) in out.samples.iter().zip(&want) {
         let got = s.q[3 * crank + 2];

@@ -62,9 +62,8 @@ impl SystemSimulation<'_> {
             modes[j] = false;
             released.push(j);
         };
-        let lambda = self.row_impulses(&jump.rows, &jump.after);
         self.work[super::balance::DRIVERS] +=
-            self.drivers_impulse_work(&jump.rows, &jump.active, lambda.as_ref(), &jump.after);
+            self.drivers_impulse_work(&jump.rows, &jump.active, &jump.after);
         self.qd = jump.after;
         modes[k] = jump.engaged;
         self.in_contact = modes;
@@ -150,24 +149,15 @@ impl SystemSimulation<'_> {
     }
 
     /// The work the drivers' impulses do in an impact that takes the rates from the current
-    /// ones to `after` under the dense `rows` of the constraints `active`, with the rows'
-    /// impulses `lambda` ([`SystemSimulation::row_impulses`]): each driver row's impulse times
-    /// its rate averaged over the impact (exact: the rates change linearly with the impulse).
-    /// The driver keeps its speed, so this is the impulse times it. The rest of the change of
-    /// kinetic energy is the contact's loss, `−½ (1 − e²) m u²` for a body of mass `m`. Zero
-    /// where no driver moves, or where the split is not defined (all of the change counts as
-    /// the impact's).
-    fn drivers_impulse_work(
-        &self,
-        rows: &DenseRows,
-        active: &[bool],
-        lambda: Option<&DVector<f64>>,
-        after: &[f64],
-    ) -> f64 {
-        let Some(lambda) = lambda else { return 0.0 };
-        let rate =
-            |v: &[f64], a: usize| -> f64 { rows.row(a).iter().zip(v).map(|(j, x)| j * x).sum() };
-        let mut work = 0.0;
+    /// ones to `after` under the dense `rows` of the constraints `active`: each driver row's
+    /// impulse ([`SystemSimulation::row_impulses`]) times its rate averaged over the impact
+    /// (exact: the rates change linearly with the impulse). The driver keeps its speed, so this
+    /// is the impulse times it. The rest of the change of kinetic energy is the contact's loss,
+    /// `−½ (1 − e²) m u²` for a body of mass `m`. Zero where no driver moves (the impulses are
+    /// then not solved for), or where the split is not defined (all of the change counts as the
+    /// impact's).
+    fn drivers_impulse_work(&self, rows: &DenseRows, active: &[bool], after: &[f64]) -> f64 {
+        let mut driven = Vec::new();
         let mut r = 0;
         for (c, _) in self
             .model
@@ -178,11 +168,22 @@ impl SystemSimulation<'_> {
         {
             if let super::super::model::Constraint::Driver { .. } = c {
                 if c.target_rate(self.t) != 0.0 {
-                    work += lambda[r] * 0.5 * (rate(&self.qd, r) + rate(after, r));
+                    driven.push(r);
                 }
             }
             r += c.rows();
         }
-        work
+        if driven.is_empty() {
+            return 0.0;
+        }
+        let Some(lambda) = self.row_impulses(rows, after) else {
+            return 0.0;
+        };
+        let rate =
+            |v: &[f64], a: usize| -> f64 { rows.row(a).iter().zip(v).map(|(j, x)| j * x).sum() };
+        driven
+            .iter()
+            .map(|&a| lambda[a] * 0.5 * (rate(&self.qd, a) + rate(after, a)))
+            .sum()
     }
 }

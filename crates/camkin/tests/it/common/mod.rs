@@ -17,6 +17,33 @@ pub fn read_system(
     camkin::spec::read_model(text, name, options).and_then(camkin::spec::ModelFile::into_system)
 }
 
+/// A system file's run over its `[simulation]`, as the command runs it: the built system and
+/// its samples and events.
+pub fn run_timed(
+    text: &str,
+    name: &str,
+) -> (camkin::spec::BuiltSystem, camkin::dynamics::SystemRun) {
+    let built = read_system(text, name, &camkin::spec::BuildOptions::default()).unwrap();
+    let run = built.timed_run.expect("its [simulation]");
+    let (plan, mut sim) = built.plan_timed(run).unwrap();
+    let out = sim
+        .run(plan.outputs, plan.h_out, |_| {
+            std::ops::ControlFlow::Continue(())
+        })
+        .unwrap();
+    (built, out)
+}
+
+/// The index of the body `name` of `built`.
+pub fn body_index(built: &camkin::spec::BuiltSystem, name: &str) -> usize {
+    built
+        .system
+        .bodies()
+        .iter()
+        .position(|b| b.name == name)
+        .unwrap_or_else(|| panic!("no body {name:?}"))
+}
+
 /// Central finite-difference derivatives of `f` at `x` with step `h`, of 8th order for the first
 /// and second derivative (error O(h⁸)). Returns `(f', f'')`.
 pub fn fd8(f: impl Fn(f64) -> f64, x: f64, h: f64) -> (f64, f64) {
