@@ -249,6 +249,76 @@ impl PySystem {
         }
         Ok((samples.into_dict(py, false)?, events.into_dict(py, false)?))
     }
+
+    /// Each lash of ``lashes`` (the file's length unit) set on every contact with a ``lash`` key
+    /// and run over ``revolutions`` of the first driver (outputs every ``step_deg``), as
+    /// ``camkin simulate --lash``: a column table (dict of arrays) with a row per lash and
+    /// lashed contact — its take-up's and seating's driver angle (degrees) and approach speed
+    /// (length unit per second), and the contact the valve seats on. The lashes run on both
+    /// cores.
+    ///
+    /// Example::
+    ///
+    ///     s = camkin.System.from_toml("examples/bucket-lash.toml")
+    ///     t = s.lash_sweep([0.05, 0.1, 0.2])
+    ///     t["seating_speed_mm_s"]
+    #[pyo3(signature = (lashes, *, revolutions = 1.0, step_deg = 1.0, large = false))]
+    fn lash_sweep<'py>(
+        &self,
+        py: Python<'py>,
+        lashes: Vec<f64>,
+        #[pyo3(from_py_with = crate::errors::real)] revolutions: f64,
+        #[pyo3(from_py_with = crate::errors::real)] step_deg: f64,
+        large: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        use camkin::spec::LashError;
+        let h = camkin::human::human;
+        let lash_err = |e: LashError| match e {
+            LashError::Plan(e) => plan_err(e),
+            LashError::Invalid { value, reason } => errors::input(
+                "lashes",
+                Some(value.clone()),
+                format!("lashes: a lash of {value} {reason}"),
+            ),
+            e => errors::input("lashes", None, e.to_string()),
+        };
+        if lashes.is_empty() || lashes.len() > 200 {
+            return Err(errors::input(
+                "lashes",
+                Some(lashes.len().to_string()),
+                format!("lashes: give 1 to 200 lashes, not {}", lashes.len()),
+            ));
+        }
+        for &l in &lashes {
+            self.built.with_lash(l).map_err(|e| match e {
+                LashError::Invalid { reason, .. } => errors::input(
+                    "lashes",
+                    Some(h(l)),
+                    format!("lashes: a lash of {} {reason}", h(l)),
+                ),
+                e => lash_err(e),
+            })?;
+        }
+        errors::refuse_large(
+            &self
+                .built
+                .lash_sweep_work(lashes.len(), revolutions, step_deg)
+                .map_err(lash_err)?,
+            large,
+            ", or sweep fewer lashes",
+        )?;
+        let rows = py
+            .detach(|| self.built.lash_sweep(&lashes, revolutions, step_deg))
+            .map_err(lash_err)?;
+        let mut table = Columns::new(
+            camkin::table::lash_columns(self.built.length_unit.name()),
+            rows.len(),
+        );
+        for r in &rows {
+            table.push(camkin::table::lash_cells(r));
+        }
+        table.into_dict(py, false)
+    }
 }
 
 impl PySystem {
@@ -279,45 +349,8 @@ impl PySystem {
         scheme: camkin::dynamics::Scheme,
         large: bool,
     ) -> PyResult<(camkin::dynamics::SystemRun, camkin::spec::RunPlan)> {
-        use camkin::spec::{PlanError, PlanField};
         let dyn_err = |e: camkin::dynamics::DynamicsError| errors::input("", None, e.to_string());
-        let key = |field| match field {
-            PlanField::Revolutions => "revolutions",
-            PlanField::Duration => "duration",
-            PlanField::Interval => "interval",
-            _ => "step_deg",
-        };
-        let (plan, mut sim) = self.built.plan_asked(asked).map_err(|e| match e {
-            PlanError::OutOfRange {
-                field,
-                value,
-                range,
-            } => errors::input(
-                key(field),
-                Some(value.clone()),
-                format!("{} = {value}: must be {range}", key(field)),
-            ),
-            PlanError::Both {
-                field: PlanField::Interval,
-                other: PlanField::Step,
-            } => errors::input(
-                "interval",
-                None,
-                "interval is the output interval of a run in time: give duration= (seconds) with it, or [simulation] duration = … in the file".into(),
-            ),
-            PlanError::Both { field, other } => errors::input(
-                key(field),
-                None,
-                format!("{} with {}: {e}", key(field), key(other)),
-            ),
-            PlanError::NotAnAngle => errors::input(
-                "duration",
-                None,
-                "its first driver does not turn an angle at a constant speed, so it is not simulated over revolutions: System.simulate(duration=…) runs it for a time (or [simulation] duration = … in the file)".into(),
-            ),
-            PlanError::Dynamics(e) => dyn_err(e),
-            e => errors::input("", None, e.to_string()),
-        })?;
+        let (plan, mut sim) = self.built.plan_asked(asked).map_err(plan_err)?;
         sim.set_tolerances(tolerances).map_err(dyn_err)?;
         sim.set_scheme(scheme);
         errors::refuse_large(
@@ -352,5 +385,46 @@ impl PySystem {
             Err(e) => return Err(dyn_err(e)),
         };
         Ok((run, plan))
+    }
+}
+
+/// A run's plan refused, named as `simulate`'s keywords name its settings.
+pub(crate) fn plan_err(e: camkin::spec::PlanError) -> PyErr {
+    use camkin::spec::{PlanError, PlanField};
+    let key = |field| match field {
+        PlanField::Revolutions => "revolutions",
+        PlanField::Duration => "duration",
+        PlanField::Interval => "interval",
+        _ => "step_deg",
+    };
+    match e {
+        PlanError::OutOfRange {
+            field,
+            value,
+            range,
+        } => errors::input(
+            key(field),
+            Some(value.clone()),
+            format!("{} = {value}: must be {range}", key(field)),
+        ),
+        PlanError::Both {
+            field: PlanField::Interval,
+            other: PlanField::Step,
+        } => errors::input(
+            "interval",
+            None,
+            "interval is the output interval of a run in time: give duration= (seconds) with it, or [simulation] duration = … in the file".into(),
+        ),
+        PlanError::Both { field, other } => errors::input(
+            key(field),
+            None,
+            format!("{} with {}: {e}", key(field), key(other)),
+        ),
+        PlanError::NotAnAngle => errors::input(
+            "duration",
+            None,
+            "its first driver does not turn an angle at a constant speed, so it is not simulated over revolutions: System.simulate(duration=…) runs it for a time (or [simulation] duration = … in the file)".into(),
+        ),
+        e => errors::input("", None, e.to_string()),
     }
 }

@@ -144,3 +144,33 @@ def test_a_driverless_system_runs_for_a_duration_as_the_command(tmp_path):
     with pytest.raises(camkin.errors.InputError) as e:
         sys.simulate(duration=-1.0)
     assert e.value.field == "duration" and e.value.value == "-1"
+
+
+def test_lash_sweep_equals_the_command_to_the_last_bit(tmp_path):
+    # issue 65: the lash sweep's table as `camkin simulate --lash`, and the ramp's closed form
+    # (a 0.1 mm lash taken up at 11.25°, seated at 248.75°, both at 120 mm/s)
+    sys = camkin.System.from_toml(EXAMPLES / "bucket-lash.toml")
+    table = sys.lash_sweep([0.05, 0.1, 0.15], step_deg=0.5)
+    out = tmp_path / "lash"
+    run_cli(
+        "simulate", EXAMPLES / "bucket-lash.toml", "--lash", "0.05:0.15:0.05", "--step", "0.5",
+        "--out", out,
+    )
+    cli = csv_columns((out / "lash.csv").read_text())
+    assert list(table) == list(cli)
+    for key, cells in cli.items():
+        if key in ("contact", "seat"):
+            assert list(table[key]) == cells, key
+        else:
+            assert list(table[key]) == [float(c) for c in cells], key
+    assert abs(table["take_up_angle_deg"][1] - 11.25) < 1e-8
+    assert abs(table["seating_angle_deg"][1] - 248.75) < 1e-8
+    assert abs(table["seating_speed_mm_s"][1] - 120.0) < 1e-9 * 120.0
+    with pytest.raises(camkin.InputError, match="lashes: a lash of -0.1") as e:
+        sys.lash_sweep([0.1, -0.1])
+    assert e.value.field == "lashes" and e.value.value == "-0.1"
+    with pytest.raises(camkin.InputError, match="no contact has a lash") as e:
+        camkin.System.from_toml(EXAMPLES / "valve-train.toml").lash_sweep([0.1])
+    assert e.value.field == "lashes"
+    with pytest.raises(camkin.InputError, match="step_deg"):
+        sys.lash_sweep([0.1], step_deg=0.0)

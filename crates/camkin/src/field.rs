@@ -216,6 +216,8 @@ keys! {
             Velocity = "velocity",
             AngularVelocity = "angular_velocity",
             StartsClosed = "starts_closed",
+            /// (a contact's clearance)
+            Lash = "lash",
             /// (a run's, s)
             Duration = "duration",
             /// (a run's output interval, s)

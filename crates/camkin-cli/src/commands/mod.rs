@@ -7,6 +7,7 @@ pub mod contacts;
 pub mod deviation;
 pub mod forces;
 pub mod gear_loads;
+mod lash_sweep;
 pub mod mesh;
 pub mod plot;
 pub mod profile;

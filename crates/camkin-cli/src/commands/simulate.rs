@@ -83,6 +83,12 @@ pub struct SimulateArgs {
     /// start has run its course).
     #[arg(long, value_name = "N", default_value_t = 1.0, value_parser = crate::args::real)]
     pub settle: f64,
+    /// A system file whose contacts have a `lash`: every lashed contact's lash set to FROM, then
+    /// up by STEP to TO (the file's length unit), a run of --revolutions at each; each one's
+    /// take-up and seating angle and speed printed instead of the time series (with --out:
+    /// lash.csv and the speeds against the lash, lash.svg and lash.png).
+    #[arg(long, value_name = "FROM:TO:STEP", allow_hyphen_values = true)]
+    pub lash: Option<String>,
     #[command(flatten)]
     pub work: crate::args::WorkArgs,
     #[command(flatten)]
@@ -142,11 +148,13 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     // the model picks its solver: a system file ([[body]], [[joint]], …, [dynamics]) is
     // simulated as a system, a cam preset in metres by its one-coordinate model
     let model = mechfile::load_model(Some(&args.mechanism), true)?;
-    if args.no_follow.is_some() && model.model.preset().is_some() {
-        return Err(Failure::Input(anyhow!(
-            "--no-follow: for a system file ([[body]], [[joint]], …, [dynamics]); {} is a mechanism file",
-            model.model.name()
-        )));
+    for (flag, given) in [("--no-follow", &args.no_follow), ("--lash", &args.lash)] {
+        if given.is_some() && model.model.preset().is_some() {
+            return Err(Failure::Input(anyhow!(
+                "{flag}: for a system file ([[body]], [[joint]], …, [dynamics]); {} is a mechanism file",
+                model.model.name()
+            )));
+        }
     }
     let (preset, name) = match model.by_solver(false)? {
         BySolver::General {
@@ -420,6 +428,9 @@ fn run_system(
     let sys = &built.system;
     let unit = built.length_unit.name();
     let step = args.step.deg();
+    if let Some(range) = &args.lash {
+        return super::lash_sweep::run(args, name, built, range);
+    }
     if let Some(range) = &args.no_follow {
         if args.duration.is_some() || args.interval.is_some() {
             return Err(bad(format!(
@@ -543,6 +554,13 @@ fn run_system(
             shown.join(", "),
             if f.len() > 4 { ", …" } else { "" },
             c.masses
+        );
+    }
+    // each lashed contact's take-up and seating, for people
+    for l in &built.lash {
+        crate::say!(
+            "camkin: {}",
+            super::lash_sweep::describe(built, l, &events, |t| plan.angle_of(t))
         );
     }
     // the events, for people

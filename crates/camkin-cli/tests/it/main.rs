@@ -11,6 +11,7 @@ mod cli_files;
 mod cli_gear_loads;
 mod cli_help;
 mod cli_human_output;
+mod cli_lash;
 mod cli_lubrication;
 mod cli_mesh;
 mod cli_output;

@@ -62,6 +62,14 @@ class System:
         large: bool = False,
         integrator: str = "auto",
     ) -> Tuple[Result, Result]: ...
+    def lash_sweep(
+        self,
+        lashes: Sequence[float],
+        *,
+        revolutions: float = 1.0,
+        step_deg: float = 1.0,
+        large: bool = False,
+    ) -> Result: ...
     def lubrication(self, *, step_deg: float = 1.0, large: bool = False) -> Result: ...
     def forces(
         self,

@@ -28,6 +28,8 @@ pub struct BuiltSystem {
     pub lubrication: Option<crate::report::SystemLubricationRequest>,
     /// its `[simulation]`: a run in time, when the file has it
     pub timed_run: Option<super::TimedRun>,
+    /// its contacts with a lash ([`BuiltSystem::with_lash`])
+    pub lash: Vec<super::Lashed>,
 }
 
 /// What the angles a system is swept over mean, and the instant of each.
@@ -106,6 +108,7 @@ impl BuiltSystem {
             simulated: false,
             lubrication: None,
             timed_run: None,
+            lash: Vec::new(),
         })
     }
 
@@ -186,6 +189,7 @@ mod tests {
             simulated: false,
             lubrication: None,
             timed_run: None,
+            lash: Vec::new(),
         };
         let t = built.times(&[0.0, 0.4f64.to_degrees()]).unwrap();
         assert_eq!(t[0], 0.0);

@@ -42,6 +42,7 @@ mod coil_spring;
 mod gear_loads;
 mod gear_pair;
 mod kinds;
+mod lash;
 mod lubrication;
 #[cfg(feature = "text")]
 mod model_file;
@@ -70,6 +71,7 @@ pub use gear_loads::{
 };
 pub use gear_pair::{GearPairFile, GearPairSpec};
 pub use kinds::{DriverCoordinate, FollowerKind, JointKindName, ProfileKind};
+pub use lash::{LashCycle, LashError, Lashed};
 pub use lubrication::{BuiltLubrication, FrictionSpec, LubricationSpec, DEFAULT_FRICTION};
 #[cfg(feature = "text")]
 pub use model_file::{read_model, ModelFile, Preset, Solver};

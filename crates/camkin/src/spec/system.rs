@@ -381,7 +381,16 @@ impl SystemSpec {
             None => (None, 0.0),
         };
         let mut restitution = Vec::with_capacity(self.contact.len());
-        let start_touching = self.contact.iter().map(|c| c.starts_closed).collect();
+        // a lash starts apart ([`super::lash`])
+        let start_touching = self
+            .contact
+            .iter()
+            .map(|c| match c.lash {
+                Some(l) if l > 0.0 => Some(false),
+                _ => c.starts_closed,
+            })
+            .collect();
+        let mut lash = Vec::new();
         let mut hertz = Vec::with_capacity(self.contact.len());
         let mut lubricated = Vec::with_capacity(self.contact.len());
         for (i, c) in self.contact.iter().enumerate() {
@@ -459,8 +468,12 @@ impl SystemSpec {
                 }
                 Ok::<_, SpecError>(curve)
             };
-            let curve_a = curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?;
-            let curve_b = curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?;
+            let mut curves = [
+                curve(&c.curve_a, SystemKey::CurveA, &mut warnings)?,
+                curve(&c.curve_b, SystemKey::CurveB, &mut warnings)?,
+            ];
+            lash.extend(super::lash::apply(c, i, scale, &mut curves)?);
+            let [curve_a, curve_b] = curves;
             hertz.push(super::system_dynamics::contact_hertz(c, i, scale)?);
             lubricated.push(super::system_lubrication::contact_lubrication(
                 self.lubrication.as_ref(),
@@ -743,6 +756,7 @@ impl SystemSpec {
             coil_springs,
             simulated: self.dynamics.is_some(),
             timed_run,
+            lash,
             lubrication: self.lubrication.as_ref().map(|_| {
                 crate::report::SystemLubricationRequest {
                     contacts: lubricated,

@@ -54,4 +54,10 @@ pub struct ContactSpec {
     /// system's size (for dynamics)
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub starts_closed: Option<bool>,
+    /// its lash (a valve clearance), the file's length unit: its follower's face (`curve_b`, or
+    /// `curve_a` when `curve_b` is the motion cam; a `line` or a `circle`) moved that far into
+    /// its material from where the file draws it touching the cam's base circle; it starts
+    /// apart (for dynamics; see [`super::lash`])
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lash: Option<f64>,
 }

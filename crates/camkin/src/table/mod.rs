@@ -9,6 +9,7 @@ mod column;
 mod columns;
 mod contacts;
 mod grid;
+mod lash;
 mod mesh;
 mod sweep;
 mod system;
@@ -24,6 +25,7 @@ pub use columns::{
 };
 pub use contacts::{contact_cells, contact_columns, ContactRow};
 pub use grid::AngleGrid;
+pub use lash::{lash_cells, lash_columns, LashRow};
 pub use mesh::{mesh_cells, mesh_columns, MeshRow};
 pub use sweep::{AnalysisSweep, JUMPS_KEPT};
 pub use system::{system_cells, system_columns, system_contact_cells, system_contact_columns};
