@@ -57,7 +57,7 @@ pub struct ContactSpec {
     /// its lash (a valve clearance), the file's length unit: its follower's face (`curve_b`, or
     /// `curve_a` when `curve_b` is the motion cam; a `line` or a `circle`) moved that far into
     /// its material from where the file draws it touching the cam's base circle; it starts
-    /// apart (for dynamics; see [`super::lash`])
+    /// apart (for dynamics; see [`super::BuiltSystem::with_lash`])
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lash: Option<f64>,
 }
