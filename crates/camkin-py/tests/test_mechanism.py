@@ -144,7 +144,10 @@ def test_dict_round_trip_and_toml_round_trip():
         d = m.to_dict()
         m2 = camkin.Mechanism.from_dict(d, base_dir=str(EXAMPLES))
         assert m2.to_dict() == d
-        m3 = camkin.Mechanism.from_toml(m.to_toml()) if "path" not in str(d) else m2
+        # text has no folder: a mechanism reading a file (a points file's path, a lift table's
+        # file) is read back through its dict and folder instead
+        reads = "'path'" in str(d) or "'file'" in str(d)
+        m3 = m2 if reads else camkin.Mechanism.from_toml(m.to_toml())
         assert m3.to_dict() == d
 
 

@@ -316,6 +316,12 @@ keys! {
             Law = "law",
             Rise = "rise",
             Degrees = "degrees",
+            /// (a table's file)
+            File = "file",
+            /// (a table's inline step)
+            StepDeg = "step_deg",
+            /// (a table's inline lifts)
+            Lift = "lift",
         }
     }
 }

@@ -83,6 +83,7 @@ pub mod geometry;
 pub mod human;
 pub mod interp;
 pub(crate) mod jet;
+pub mod lift_table;
 pub mod lubrication;
 pub mod measured;
 pub mod motion;

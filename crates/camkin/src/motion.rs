@@ -6,10 +6,12 @@
 //! extent `β` of cam angle: `s = s₀ + h y((θ − θ₀)/β)`, `s' = h y'/β`, `s'' = h y''/β²`,
 //! `s''' = h y'''/β³` (derivatives in the cam angle, rad).
 
+use crate::lift_table::LiftTable;
 use std::f64::consts::{PI, TAU};
+use std::sync::Arc;
 
 /// A motion law.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Law {
     /// no motion (the rise of a dwell segment must be 0)
     Dwell,
@@ -35,6 +37,10 @@ pub enum Law {
     /// moves at `4h / 3β` (length per rad) there: a clearance between those heights is taken up,
     /// and a valve seats, at that speed times the cam's.
     Ramp,
+    /// A lift table interpolated by a quintic spline ([`LiftTable`]): its segment moves by the
+    /// table's lifts less its first (its rise is the table's last lift less its first), over
+    /// the table's span; its normalised form is that over its largest excursion.
+    Table(Arc<LiftTable>),
 }
 
 /// The fraction of a [`Law::Ramp`] each blend takes.
@@ -231,6 +237,18 @@ impl Law {
                     [1.0 - y[0], y[1], -y[2], y[3], -y[4]]
                 }
             }
+            Law::Table(t) => {
+                let (b, l) = (t.span(), t.excursion());
+                let l = if l > 0.0 { l } else { 1.0 };
+                let y = t.eval5(x * b);
+                [
+                    (y[0] - t.ends().0) / l,
+                    y[1] * b / l,
+                    y[2] * b * b / l,
+                    y[3] * b * b * b / l,
+                    y[4] * b * b * b * b / l,
+                ]
+            }
         }
     }
 
@@ -246,10 +264,11 @@ impl Law {
             Law::ModifiedSine => "modified-sine",
             Law::ConstantVelocity => "constant-velocity",
             Law::Ramp => "ramp",
+            Law::Table(_) => "table",
         }
     }
 
-    /// Every law.
+    /// Every named law (a [`Law::Table`] is made from its table).
     pub const ALL: [Law; 9] = [
         Law::Dwell,
         Law::SimpleHarmonic,
@@ -264,7 +283,7 @@ impl Law {
 }
 
 /// One segment of a motion program.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Segment {
     /// the law
     pub law: Law,
@@ -272,6 +291,16 @@ pub struct Segment {
     pub rise: f64,
     /// the extent in cam angle, rad
     pub extent: f64,
+}
+
+impl Segment {
+    /// How far it moves: its rise's size, a table's largest excursion.
+    pub fn size(&self) -> f64 {
+        match &self.law {
+            Law::Table(t) => t.excursion().max(self.rise.abs()),
+            _ => self.rise.abs(),
+        }
+    }
 }
 
 /// Where two consecutive segments (or the last and the first) break continuity.
@@ -368,11 +397,25 @@ impl Program {
                     reason: "a dwell does not rise",
                 });
             }
+            if let Law::Table(table) = &s.law {
+                let (first, last) = table.ends();
+                if (s.extent - table.span()).abs() > CLOSURE_TOLERANCE * table.span()
+                    || (s.rise - (last - first)).abs()
+                        > CLOSURE_TOLERANCE * table.excursion().max(f64::MIN_POSITIVE)
+                {
+                    return Err(MotionError::Rise {
+                        index,
+                        rise: s.rise,
+                        reason:
+                            "a table's segment rises by its last lift less its first, over its span",
+                    });
+                }
+            }
             starts.push(t);
             levels.push(lvl);
             t += s.extent;
             lvl += s.rise;
-            scale = scale.max(s.rise.abs());
+            scale = scale.max(s.size());
         }
         if (t - TAU).abs() > CLOSURE_TOLERANCE * TAU {
             return Err(MotionError::NotARevolution {
@@ -413,6 +456,17 @@ impl Program {
     /// [`Program::eval_segment`] and the fourth derivative.
     fn eval_segment5(&self, k: usize, t: f64) -> [f64; 5] {
         let s = &self.segments[k];
+        if let Law::Table(table) = &s.law {
+            // the table's own lifts, from its first
+            let y = table.eval5(t - self.starts[k]);
+            return [
+                self.levels[k] + y[0] - table.ends().0,
+                y[1],
+                y[2],
+                y[3],
+                y[4],
+            ];
+        }
         let b = s.extent;
         let y = s.law.normalized5((t - self.starts[k]) / b);
         [
@@ -439,7 +493,7 @@ impl Program {
         let mut scale = [0.0f64; 4];
         for seg in &self.segments {
             for (d, sc) in scale.iter_mut().enumerate() {
-                *sc = sc.max(seg.rise.abs() / seg.extent.powi(d as i32));
+                *sc = sc.max(seg.size() / seg.extent.powi(d as i32));
             }
         }
         let mut out = Vec::new();
@@ -578,7 +632,7 @@ mod tests {
 
     #[test]
     fn boundary_values_define_the_laws() {
-        let zero = |law: Law, d: usize| {
+        let zero = |law: &Law, d: usize| {
             let (a, b) = (law.normalized(0.0)[d], law.normalized(1.0)[d]);
             a.abs() < 1e-10 && b.abs() < 1e-10
         };
@@ -590,14 +644,14 @@ mod tests {
             Law::ModifiedSine,
         ] {
             assert!(
-                zero(law, 1) && zero(law, 2),
+                zero(&law, 1) && zero(&law, 2),
                 "{}: velocity and acceleration vanish at both ends",
                 law.name()
             );
         }
-        assert!(zero(Law::Polynomial4567, 3), "4-5-6-7: jerk vanishes too");
+        assert!(zero(&Law::Polynomial4567, 3), "4-5-6-7: jerk vanishes too");
         assert!(
-            zero(Law::SimpleHarmonic, 1) && !zero(Law::SimpleHarmonic, 2),
+            zero(&Law::SimpleHarmonic, 1) && !zero(&Law::SimpleHarmonic, 2),
             "harmonic: velocity vanishes, acceleration does not"
         );
         // known peak accelerations (normalised): cycloidal 2π, 3-4-5 5.7735, mod. trapezoid 4.8881, mod. sine 5.5280

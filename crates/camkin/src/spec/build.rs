@@ -1,6 +1,6 @@
 //! Validation of a [`MechanismSpec`] and the mechanism it describes.
 
-use super::{DynamicsSpec, FollowerKind, FollowerSpec, MechanismSpec};
+use super::{DynamicsSpec, FollowerKind, FollowerSpec, MechanismSpec, SpecWarning};
 use crate::cam::{Cam, CamError, Follower, Mechanism, Sense};
 use crate::dynamics::FollowerDynamics;
 use crate::field::{CamField, DynamicsField, Field, FollowerField, Key, ProfileField};
@@ -85,25 +85,6 @@ pub struct Built {
     pub si: bool,
     /// what is valid but probably not meant (a front end shows them)
     pub warnings: Vec<SpecWarning>,
-}
-
-/// A valid spec that is probably not what was meant.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[non_exhaustive]
-pub enum SpecWarning {
-    /// Unevenly spaced nodes under the uniform parameterisation, which puts them at equal
-    /// parameter steps and bends the spline between them.
-    #[error("{field}: the points are unevenly spaced (the longest chord between neighbours is {} times the shortest) and parameterization = \"uniform\" puts them at equal parameter steps, which bends the spline between them: its accelerations can be off by many times their peak (measured: 17 times at a ratio of 1.5 on a circle); write parameterization = \"chord-length\" unless the profile is defined this way", crate::human::human(*.ratio))]
-    UnevenNodes {
-        /// `points` or `path`
-        field: Field,
-        /// longest over shortest chord
-        ratio: f64,
-    },
-    /// A form-closed follower read as a system: its second curve is left out (the follower's
-    /// one degree of freedom takes one row; the second contact is the cam path's check).
-    #[error("follower.conjugate: the form-closed follower's second curve is left out of the system (one row for its one degree of freedom): the system follows the first contact; `camkin analyze` without --system checks the second")]
-    ConjugateLeftOut,
 }
 
 /// What is wrong with a spec. Every variant names the field ([`SpecError::field`]).

@@ -43,6 +43,7 @@ mod gear_loads;
 mod gear_pair;
 mod kinds;
 mod lash;
+mod lift_table;
 mod lubrication;
 #[cfg(feature = "text")]
 mod model_file;
@@ -57,12 +58,13 @@ mod system_elements;
 mod system_lubrication;
 #[cfg(feature = "text")]
 pub mod text;
+mod warning;
 
 pub use crate::field::{
     CamField, DynamicsField, Field, FollowerField, GearPairField, Key, ProfileField, SegmentField,
     SystemField, SystemKey, SystemTable,
 };
-pub use build::{BuildOptions, Built, LengthUnit, SpecError, SpecWarning};
+pub use build::{BuildOptions, Built, LengthUnit, SpecError};
 pub use built_system::{BuiltSystem, SweepAngle, SweepError};
 pub use coil_spring::CoilSpringSpec;
 pub use gear_loads::{
@@ -84,6 +86,7 @@ pub use system_contact::ContactSpec;
 pub use system_dynamics::{GasForceSpec, LoadSpec, SimulationSpec, SystemDynamicsSpec};
 pub use system_elements::{DamperSpec, SpringSpec, TorsionSpringSpec};
 pub use system_lubrication::SystemLubricationSpec;
+pub use warning::SpecWarning;
 
 use crate::cam::Sense;
 use crate::curve::Parameterization;
@@ -308,8 +311,18 @@ pub struct SegmentSpec {
     /// the rise: a length (translating followers) or degrees of arm angle (oscillating)
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rise: Option<f64>,
-    /// the segment's extent, degrees of cam angle
-    pub degrees: f64,
+    /// the segment's extent, degrees of cam angle (every law but a table's)
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub degrees: Option<f64>,
+    /// `table`: a file of `angle_deg, lift` rows, relative to [`BuildOptions::base_dir`]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
+    /// `table`: the step of inline lifts, degrees
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub step_deg: Option<f64>,
+    /// `table`: the lifts inline, every `step_deg` from the segment's start
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lift: Option<Vec<f64>>,
 }
 
 spec_table! {

@@ -2,8 +2,8 @@
 
 use super::build::{
     check_kind, coordinate, finite, key, length, need, point, positive, vector, SpecError,
-    SpecWarning,
 };
+use super::SpecWarning;
 use super::{ProfileKind, ProfileSpec};
 use crate::cam::synthesis::synthesize;
 use crate::cam::{Follower, Sense};
@@ -348,19 +348,46 @@ impl ProfileSpec {
                 let mut list = Vec::with_capacity(segs.len());
                 for (i, sg) in segs.iter().enumerate() {
                     let seg = |x| f(P::Segment(i, x));
+                    if sg.law == "table" {
+                        list.push(super::lift_table::table_segment(
+                            sg,
+                            &seg,
+                            segs.len() == 1,
+                            rise_scale,
+                            base,
+                            confine,
+                            warnings,
+                        )?);
+                        continue;
+                    }
+                    for (given, key) in [
+                        (sg.file.is_some(), SegmentField::File),
+                        (sg.step_deg.is_some(), SegmentField::StepDeg),
+                        (sg.lift.is_some(), SegmentField::Lift),
+                    ] {
+                        if given {
+                            return Err(SpecError::Rule {
+                                field: seg(key),
+                                reason: format!(
+                                    "is a table's key, and this segment's law is {:?}",
+                                    sg.law
+                                ),
+                            });
+                        }
+                    }
                     let law = Law::ALL
                         .iter()
-                        .copied()
                         .find(|l| l.name() == sg.law)
+                        .cloned()
                         .ok_or_else(|| SpecError::Unknown {
                             field: seg(SegmentField::Law),
                             value: sg.law.clone(),
                             what: "a law",
-                            known: Law::ALL.map(|l| l.name()).join(", "),
+                            known: Law::ALL.map(|l| l.name()).join(", ") + ", table",
                         })?;
                     // a law other than a dwell moves the follower: its rise is required and
                     // non-zero (a missing rise silently meaning a dwell is refused); a dwell has none
-                    let rise = match (law, sg.rise) {
+                    let rise = match (&law, sg.rise) {
                         (Law::Dwell, None) => 0.0,
                         (Law::Dwell, Some(0.0)) => 0.0,
                         (Law::Dwell, Some(r)) => {
@@ -395,7 +422,13 @@ impl ProfileSpec {
                             r
                         }
                     };
-                    let degrees = positive(seg(SegmentField::Degrees), sg.degrees)?;
+                    let degrees = positive(
+                        seg(SegmentField::Degrees),
+                        sg.degrees.ok_or_else(|| SpecError::Rule {
+                            field: seg(SegmentField::Degrees),
+                            reason: format!("the {} law needs its extent, degrees = …", law.name()),
+                        })?,
+                    )?;
                     list.push(Segment {
                         law,
                         rise: rise * rise_scale,
@@ -556,7 +589,7 @@ impl ProfileSpec {
 
 /// Checks that the points file `path` lies inside the folder `base` (see
 /// [`super::BuildOptions::confine`]): why not, when it does not.
-fn confined(base: &Path, path: &str) -> Result<(), String> {
+pub(super) fn confined(base: &Path, path: &str) -> Result<(), String> {
     use std::path::Component;
     let p = Path::new(path);
     if p.is_absolute() || p.has_root() {

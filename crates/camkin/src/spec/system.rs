@@ -27,13 +27,11 @@
 //! curve_b = { kind = "circle", center = [35, 0], radius = 6 }
 //! ```
 
-use super::build::{
-    direction, finite, length_unit, point, positive, BuildOptions, SpecError, SpecWarning,
-};
+use super::build::{direction, finite, length_unit, point, positive, BuildOptions, SpecError};
 use super::kinds::JointKindName;
 use super::profile::Place;
 use super::system_elements::within;
-use super::{BuiltSystem, SweepAngle};
+use super::{BuiltSystem, SpecWarning, SweepAngle};
 use super::{ContactSpec, ProfileSpec};
 use super::{DamperSpec, SpringSpec, TorsionSpringSpec};
 use crate::body::Pose;

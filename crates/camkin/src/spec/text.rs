@@ -293,6 +293,7 @@ pub fn build_placed(
             #[allow(unreachable_patterns)] // SpecWarning is non_exhaustive: more may come
             let field = match w {
                 SpecWarning::UnevenNodes { field, .. } => Some(*field),
+                SpecWarning::NoisyTable { field, .. } => Some(*field),
                 _ => None,
             };
             let (prefix, at) = located(text, name, field);

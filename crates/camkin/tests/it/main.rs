@@ -42,6 +42,7 @@ mod hyperdual_selfcheck;
 mod interpolation_study;
 mod jerk;
 mod layout;
+mod lift_tables;
 mod lubrication;
 mod motion_closed_form;
 mod no_follow;

@@ -117,7 +117,8 @@ fn synthesis_with_the_cam_axis_off_the_origin_and_any_initial_angle_round_trips(
     let seg = |law: &str, rise: Option<f64>, degrees: f64| SegmentSpec {
         law: law.into(),
         rise,
-        degrees,
+        degrees: Some(degrees),
+        ..Default::default()
     };
     let roller = (Some(80.0), Some(10.0), None);
     for (kind, (arm, roller, offset), closing) in [

@@ -288,12 +288,14 @@ fn motion_spec_errors_name_the_segment() {
             SegmentSpec {
                 law: "cycloidal".into(),
                 rise: Some(1.0),
-                degrees: 180.0,
+                degrees: Some(180.0),
+                ..Default::default()
             },
             SegmentSpec {
                 law: "parabolic".into(),
                 rise: Some(-1.0),
-                degrees: 180.0,
+                degrees: Some(180.0),
+                ..Default::default()
             },
         ]),
         ..Default::default()

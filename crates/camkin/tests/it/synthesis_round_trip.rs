@@ -21,7 +21,7 @@ fn program(law: Law, rise: f64) -> Program {
     let segments = match law {
         Law::Dwell => vec![seg(law, 0.0, 360.0)],
         _ => vec![
-            seg(law, rise, 120.0),
+            seg(law.clone(), rise, 120.0),
             seg(Law::Dwell, 0.0, 60.0),
             seg(law, -rise, 120.0),
             seg(Law::Dwell, 0.0, 60.0),
@@ -110,7 +110,7 @@ fn oscillating() -> [Follower; 6] {
 /// synthesised point of each angle.
 fn round_trip(f: Follower, law: Law, rise: f64, dir: Sense, q_scale: f64) {
     let name = format!("{} {} {dir:?}", law.name(), f.kind_name());
-    let prof = Arc::new(synthesize(program(law, rise), 4.0, &f, dir).unwrap());
+    let prof = Arc::new(synthesize(program(law.clone(), rise), 4.0, &f, dir).unwrap());
     let m = Mechanism::new(
         Cam::from_rpm(prof.clone(), Point2::origin(), dir, 600.0).unwrap(),
         f,
@@ -167,7 +167,7 @@ fn every_law_and_translating_follower_round_trips() {
     for law in Law::ALL {
         for f in translating() {
             for dir in [Sense::Ccw, Sense::Cw] {
-                round_trip(f.clone(), law, 1.0, dir, 5.0);
+                round_trip(f.clone(), law.clone(), 1.0, dir, 5.0);
             }
         }
     }
@@ -178,7 +178,7 @@ fn every_law_and_oscillating_follower_round_trips() {
     for law in Law::ALL {
         for f in oscillating() {
             for dir in [Sense::Ccw, Sense::Cw] {
-                round_trip(f.clone(), law, 0.25, dir, 1.0);
+                round_trip(f.clone(), law.clone(), 0.25, dir, 1.0);
             }
         }
     }
@@ -220,13 +220,13 @@ fn synthesised_profiles_derivatives_agree_with_differences() {
     for law in Law::ALL {
         for f in translating() {
             check_derivatives(
-                &synthesize(program(law, 1.0), 4.0, &f, Sense::Cw).unwrap(),
+                &synthesize(program(law.clone(), 1.0), 4.0, &f, Sense::Cw).unwrap(),
                 &format!("{} {}", law.name(), f.kind_name()),
             );
         }
         for f in oscillating() {
             check_derivatives(
-                &synthesize(program(law, 0.25), 4.0, &f, Sense::Ccw).unwrap(),
+                &synthesize(program(law.clone(), 0.25), 4.0, &f, Sense::Ccw).unwrap(),
                 &format!("{} {}", law.name(), f.kind_name()),
             );
         }

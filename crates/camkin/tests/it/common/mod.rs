@@ -350,7 +350,8 @@ pub fn yoke_spec(extra: f64, alpha: Option<f64>) -> camkin::spec::MechanismSpec 
     let cycloidal = |rise: f64| SegmentSpec {
         law: "cycloidal".into(),
         rise: Some(rise),
-        degrees: 180.0,
+        degrees: Some(180.0),
+        ..Default::default()
     };
     MechanismSpec {
         length_unit: Some("mm".into()),
