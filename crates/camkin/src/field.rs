@@ -142,6 +142,8 @@ pub enum SystemTable {
     Simulation,
     /// `[[load]]`
     Load,
+    /// `[[lash_adjuster]]`
+    LashAdjuster,
 }
 
 impl SystemTable {
@@ -160,6 +162,7 @@ impl SystemTable {
             SystemTable::GasForce => "gas_force",
             SystemTable::Simulation => "simulation",
             SystemTable::Load => "load",
+            SystemTable::LashAdjuster => "lash_adjuster",
         }
     }
 }
@@ -218,6 +221,18 @@ keys! {
             StartsClosed = "starts_closed",
             /// (a contact's clearance)
             Lash = "lash",
+            /// (a lash adjuster's plunger diameter)
+            Bore = "bore",
+            ChamberLength = "chamber_length",
+            ClearanceUm = "clearance_um",
+            LeakLength = "leak_length",
+            ViscosityMpaS = "viscosity_mpa_s",
+            BulkModulusMpa = "bulk_modulus_mpa",
+            AirFraction = "air_fraction",
+            SupplyBar = "supply_bar",
+            CheckOpeningBar = "check_opening_bar",
+            CheckFlow = "check_flow",
+            InitialPressureBar = "initial_pressure_bar",
             /// (a run's, s)
             Duration = "duration",
             /// (a run's output interval, s)

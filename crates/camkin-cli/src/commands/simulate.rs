@@ -106,7 +106,8 @@ fn dyn_err(e: DynamicsError) -> Failure {
         | DynamicsError::Unassembled { .. }
         | DynamicsError::DeadPoint { .. }
         | DynamicsError::StepUnderflow { .. }
-        | DynamicsError::ImplicitNewton { .. } => Failure::Input(anyhow!("{e}")),
+        | DynamicsError::ImplicitNewton { .. }
+        | DynamicsError::Adjuster { .. } => Failure::Input(anyhow!("{e}")),
         _ => Failure::Internal(anyhow!("{e}")),
     }
 }
@@ -401,6 +402,7 @@ pub(super) fn system_err(name: &str, e: DynamicsError) -> Failure {
         | DynamicsError::DeadPoint { .. }
         | DynamicsError::StepUnderflow { .. }
         | DynamicsError::Tolerance { .. }
+        | DynamicsError::Adjuster { .. }
         | DynamicsError::Chatter { .. } => bad(format!("{name}: {e}")),
         _ => Failure::Internal(anyhow!("{name}: {e}")),
     }
@@ -555,6 +557,24 @@ fn run_system(
             if f.len() > 4 { ", …" } else { "" },
             c.masses
         );
+    }
+    // each hydraulic lash adjuster's chamber over the run, for people
+    for (k, h) in sys.lash_adjusters().iter().enumerate() {
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for x in &samples {
+            lo = lo.min(x.adjusters[k].pressure);
+            hi = hi.max(x.adjusters[k].pressure);
+        }
+        if let (Some(first), Some(last)) = (samples.first(), samples.last()) {
+            let grown = last.adjusters[k].chamber - first.adjusters[k].chamber;
+            crate::say!(
+                "camkin: lash adjuster {:?}: pressure {} to {} bar; its chamber {} {unit} longer at the end than at the start",
+                h.name,
+                crate::forces_text::num(lo / 1e5),
+                crate::forces_text::num(hi / 1e5),
+                crate::forces_text::num(grown)
+            );
+        }
     }
     // each lashed contact's take-up and seating, for people
     for l in &built.lash {

@@ -61,8 +61,8 @@ pub use simulation::Simulation;
 pub use solver::{AugmentedLagrangian, Evaluation};
 pub use stepper::Scheme;
 pub use system::{
-    ContactEvent, ContactHertz, ContactSurface, ElementEnergy, EnergyBalance, StartReport,
-    SystemDynamicsOptions, SystemRun, SystemSample, SystemSimulation,
+    AdjusterSample, ContactEvent, ContactHertz, ContactSurface, ElementEnergy, EnergyBalance,
+    StartReport, SystemDynamicsOptions, SystemRun, SystemSample, SystemSimulation,
 };
 
 /// What went wrong in a dynamic simulation.
@@ -197,6 +197,21 @@ pub enum DynamicsError {
         rtol: f64,
         /// the absolute tolerance
         atol: f64,
+    },
+    /// A hydraulic lash adjuster left its model during the run: its chamber emptied (the
+    /// plunger bottomed) or its pressure fell to absolute zero (cavitation, not modelled).
+    #[error("lash adjuster {adjuster:?} at t = {} s: its {what} {} {reason}", crate::human::human(*.time), crate::human::human(*.value))]
+    Adjuster {
+        /// when, s
+        time: f64,
+        /// its name
+        adjuster: String,
+        /// what left the model (`chamber (L)`, `pressure (Pa)`)
+        what: &'static str,
+        /// its value then
+        value: f64,
+        /// what happened, and what would help
+        reason: &'static str,
     },
     /// An element of a system (a body, a contact) has a dynamic property out of range.
     #[error("{element}: {key} = {}: {reason}", crate::human::human(*.value))]

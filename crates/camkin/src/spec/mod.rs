@@ -51,6 +51,7 @@ mod pair;
 mod profile;
 mod run_plan;
 mod system;
+mod system_adjuster;
 mod system_contact;
 mod system_driver;
 mod system_dynamics;
@@ -82,6 +83,7 @@ pub use run_plan::{
     MAX_REVOLUTIONS, STEP_RANGE_DEG,
 };
 pub use system::{BodySpec, DriverSpec, JointSpec, SystemSpec};
+pub use system_adjuster::LashAdjusterSpec;
 pub use system_contact::ContactSpec;
 pub use system_dynamics::{GasForceSpec, LoadSpec, SimulationSpec, SystemDynamicsSpec};
 pub use system_elements::{DamperSpec, SpringSpec, TorsionSpringSpec};

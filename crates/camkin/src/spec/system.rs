@@ -86,6 +86,10 @@ pub struct SystemSpec {
     /// dynamics)
     #[serde(default)]
     pub load: Vec<super::LoadSpec>,
+    /// `[[lash_adjuster]]`: hydraulic lash adjusters, their chambers' pressures simulated (for
+    /// dynamics)
+    #[serde(default)]
+    pub lash_adjuster: Vec<super::LashAdjusterSpec>,
     /// `[simulation]`: a run in time, its duration and output interval (for dynamics; a system
     /// without an angle driver needs it, or the front end's duration)
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -679,6 +683,28 @@ impl SystemSpec {
             named(T::GasForce, i, &g.name)?;
             let find = |name: &str| body(T::GasForce, i, K::Body, name);
             sys.add_table_force(super::system_dynamics::gas_force(g, i, scale, &find)?);
+        }
+        for (i, h) in self.lash_adjuster.iter().enumerate() {
+            named(T::LashAdjuster, i, &h.name)?;
+            let (a, at_a, b, at_b) = ends(T::LashAdjuster, i, &h.bodies, h.at)?;
+            // its length as the file places the bodies
+            let world = |id: BodyId, p: Point2| match id.index() {
+                Some(k) => sys.bodies()[k].pose.to_world(p),
+                None => p,
+            };
+            let drawn = (world(b, at_b) - world(a, at_a)).norm();
+            sys.add_lash_adjuster(crate::system::LashAdjusterElement {
+                name: h.name.clone(),
+                adjuster: super::system_adjuster::lash_adjuster(
+                    h,
+                    i,
+                    (a, at_a),
+                    (b, at_b),
+                    drawn,
+                    scale,
+                    metres_per_unit,
+                )?,
+            });
         }
         for (i, l) in self.load.iter().enumerate() {
             named(T::Load, i, &l.name)?;

@@ -40,6 +40,7 @@ mod error;
 mod force;
 mod jerk;
 mod joint;
+mod lash_adjuster;
 mod lu;
 mod newton;
 mod period;
@@ -54,6 +55,7 @@ pub use error::SystemError;
 pub use jerk::BodyJerk;
 pub(crate) use joint::RowEval;
 pub use joint::{Joint, JointKind};
+pub use lash_adjuster::{LashAdjuster, LashAdjusterElement, ATMOSPHERE};
 pub use solve::{ContactState, Instants, SystemState, SystemSweep};
 pub use table_force::TableForce;
 
@@ -210,6 +212,7 @@ pub struct System {
     pub(crate) forces: Vec<ForceElement>,
     pub(crate) table_forces: Vec<TableForce>,
     pub(crate) loads: Vec<AppliedLoad>,
+    pub(crate) lash_adjusters: Vec<LashAdjusterElement>,
 }
 
 impl System {
@@ -237,6 +240,16 @@ impl System {
     /// Adds a contact.
     pub fn add_contact(&mut self, contact: Contact) {
         self.contacts.push(contact);
+    }
+
+    /// Adds a hydraulic lash adjuster (for dynamics: its chamber's pressure is a state).
+    pub fn add_lash_adjuster(&mut self, adjuster: LashAdjusterElement) {
+        self.lash_adjusters.push(adjuster);
+    }
+
+    /// The hydraulic lash adjusters.
+    pub fn lash_adjusters(&self) -> &[LashAdjusterElement] {
+        &self.lash_adjusters
     }
 
     /// Adds a force element.

@@ -1,7 +1,7 @@
 //! The tables of a simulated system (`camkin simulate SYSTEM.toml`): one row an output instant
 //! — every body's pose, rates and accelerations, every contact's force, gap and whether it is in
-//! touch, each driver's torque or force (a camshaft's driving torque), the energy and the
-//! drivers' work — and one row an event (a contact's lift-off or
+//! touch, each lash adjuster's chamber (pressure in bar, height, push), each driver's torque or
+//! force (a camshaft's driving torque), the energy and the drivers' work — and one row an event (a contact's lift-off or
 //! impact). Lengths in the system's unit, forces in N, energies in N times that unit.
 
 use super::column::Cell;
@@ -34,6 +34,12 @@ pub fn system_sample_columns(
         if hertz.get(j).is_some_and(|h| h.is_some()) {
             c.push(format!("{n}_hertz_MPa"));
         }
+    }
+    for h in sys.lash_adjusters() {
+        let n = key(&h.name);
+        c.push(format!("{n}_pressure_bar"));
+        c.push(format!("{n}_chamber_{unit}"));
+        c.push(format!("{n}_force_N"));
     }
     for d in sys.drivers() {
         let n = key(&d.name);
@@ -83,6 +89,11 @@ pub fn system_sample_cells(
         if hertz.get(k).is_some_and(|h| h.is_some()) {
             c.push(Cell::Num(s.hertz_pa[k].map(|p| p / 1e6)));
         }
+    }
+    for h in &s.adjusters {
+        c.push(Cell::Num(Some(h.pressure / 1e5)));
+        c.push(Cell::Num(Some(h.chamber)));
+        c.push(Cell::Num(Some(h.force)));
     }
     for &e in &s.driver_efforts {
         c.push(Cell::Num(Some(e)));
@@ -183,6 +194,9 @@ pub fn system_energy_columns(sys: &System, unit: &str, gravity: bool, angles: bo
             c.push(format!("{n}_potential_N_{unit}"));
         }
         c.push(format!("{n}_work_N_{unit}"));
+    }
+    for h in sys.lash_adjusters() {
+        c.push(format!("{}_work_N_{unit}", key(&h.name)));
     }
     if gravity {
         c.push(format!("gravity_potential_N_{unit}"));

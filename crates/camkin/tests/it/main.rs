@@ -18,6 +18,7 @@ mod dynamics_contact;
 mod dynamics_energy;
 mod dynamics_initial_state;
 mod dynamics_lash;
+mod dynamics_lash_adjuster;
 mod dynamics_liftoff;
 mod dynamics_loads;
 mod dynamics_reduced;

@@ -8,7 +8,8 @@
 //! The channels of work integrated beside `(q, q̇)`: the drivers' ([`DRIVERS`]), the applied
 //! loads' and the forces from tables of the crank angle ([`APPLIED`]), the joints' and closed
 //! contacts' constraint forces ([`CONSTRAINTS`]: `−λᵀ Φ_q q̇` over their rows), then one per
-//! force element in the system's order and gravity last where there is gravity.
+//! force element in the system's order, gravity where there is gravity, and one per lash
+//! adjuster.
 
 use super::super::model::{body_state, Load};
 use super::SystemSimulation;
@@ -41,7 +42,8 @@ pub struct ElementEnergy {
 pub struct EnergyBalance {
     /// `½ Σ (m v_G² + I_G ω²)`, the centres' speeds
     pub kinetic: f64,
-    /// each force element's, in the system's order
+    /// each force element's, in the system's order, then each lash adjuster's (its work with
+    /// the dampers': its oil leaks and refills, its compression is not counted as stored)
     pub elements: Vec<ElementEnergy>,
     /// gravity's (all zero where there is none)
     pub gravity: ElementEnergy,
@@ -205,7 +207,7 @@ impl EnergyBalance {
 impl SystemSimulation<'_> {
     /// The number of work channels (see the module docs).
     pub(super) fn channels(&self) -> usize {
-        ELEMENTS + self.model.forces.len()
+        ELEMENTS + self.model.forces.len() + self.adjusters()
     }
 
     /// Each element's power at `(q, q̇)` (the centres' coordinates), from the element channel
@@ -283,6 +285,16 @@ impl SystemSimulation<'_> {
                     }
                 }
             }
+        }
+        // the lash adjusters': their oil's compression not counted as stored (its leak and check
+        // valve dissipate): their work is the dampers' kind
+        let from = ELEMENTS + self.model.forces.len();
+        for &work in &self.work[from..] {
+            elements.push(ElementEnergy {
+                potential: 0.0,
+                work,
+                stores: false,
+            });
         }
         let (mut momentum, mut angular_momentum) = ([0.0; 2], 0.0);
         for (i, b) in self.model.bodies.iter().enumerate() {

@@ -56,6 +56,7 @@ pub(crate) struct Evaluated {
     t: f64,
     q: Vec<f64>,
     qd: Vec<f64>,
+    z: Vec<f64>,
     modes: Vec<bool>,
     before: Vec<Option<Pairing>>,
     after: Vec<Option<Pairing>>,
@@ -63,27 +64,31 @@ pub(crate) struct Evaluated {
 }
 
 impl SystemSimulation<'_> {
-    /// The equations of motion at a state in the modes `in_contact` (see [`Accel`]): a
-    /// driver's effort is the force (or torque) it applies along its coordinate, `−λ`.
+    /// The equations of motion at a state (`z` the lash adjusters' pressures) in the modes
+    /// `in_contact` (see [`Accel`]): a driver's effort is the force (or torque) it applies
+    /// along its coordinate, `−λ`.
     pub(super) fn accel(
         &self,
         t: f64,
         q: &[f64],
         qd: &[f64],
+        z: &[f64],
         in_contact: &[bool],
         pairings: &mut [Option<Pairing>],
     ) -> Result<Accel, DynamicsError> {
         let mut out = Accel::default();
-        self.accel_into(t, q, qd, in_contact, pairings, &mut out)?;
+        self.accel_into(t, q, qd, z, in_contact, pairings, &mut out)?;
         Ok(out)
     }
 
     /// [`SystemSimulation::accel`] written into `out` (its buffers reused).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn accel_into(
         &self,
         t: f64,
         q: &[f64],
         qd: &[f64],
+        z: &[f64],
         in_contact: &[bool],
         pairings: &mut [Option<Pairing>],
         out: &mut Accel,
@@ -104,6 +109,7 @@ impl SystemSimulation<'_> {
             if e.t == t
                 && e.q == q
                 && e.qd == qd
+                && e.z == z
                 && e.modes == in_contact
                 && (same(&e.before) || same(&e.after))
             {
@@ -126,13 +132,15 @@ impl SystemSimulation<'_> {
             e.before.clear();
             e.before.extend_from_slice(pairings);
         }
-        self.evaluate(t, q, qd, in_contact, pairings, out)?;
+        self.evaluate(t, q, qd, z, in_contact, pairings, out)?;
         if let Some(e) = self.last.borrow_mut().as_mut() {
             e.t = t;
             e.q.clear();
             e.q.extend_from_slice(q);
             e.qd.clear();
             e.qd.extend_from_slice(qd);
+            e.z.clear();
+            e.z.extend_from_slice(z);
             e.modes.clear();
             e.modes.extend_from_slice(in_contact);
             e.after.clear();
@@ -143,11 +151,13 @@ impl SystemSimulation<'_> {
     }
 
     /// [`SystemSimulation::accel_into`] computed.
+    #[allow(clippy::too_many_arguments)]
     fn evaluate(
         &self,
         t: f64,
         q: &[f64],
         qd: &[f64],
+        z: &[f64],
         in_contact: &[bool],
         pairings: &mut [Option<Pairing>],
         out: &mut Accel,
@@ -163,6 +173,7 @@ impl SystemSimulation<'_> {
             t,
             q,
             qd,
+            z,
             &active,
             pairings,
             &mut out.qdd,
@@ -180,6 +191,7 @@ impl SystemSimulation<'_> {
             // converge: the Schur complement damped there
             let plain = self.sys.table_forces().is_empty()
                 && self.sys.loads().is_empty()
+                && self.sys.lash_adjusters().is_empty()
                 && !self.offset
                 && !singular_pose;
             let al = plain.then(|| {
@@ -193,6 +205,7 @@ impl SystemSimulation<'_> {
                         t,
                         q,
                         qd,
+                        z,
                         &active,
                         pairings,
                         &mut out.qdd,
@@ -262,6 +275,13 @@ impl SystemSimulation<'_> {
         out.powers[super::balance::APPLIED] = applied;
         out.powers[super::balance::CONSTRAINTS] = constraints;
         self.element_powers(q, qd, &mut out.powers);
+        if !z.is_empty() {
+            // the adjusters' powers, after the force elements' and gravity's channels
+            let (qf, qdf) = self.frames(q, qd);
+            let mut scratch = vec![0.0; q.len()];
+            let from = super::balance::ELEMENTS + self.model.forces.len();
+            self.add_adjuster_forces(&qf, &qdf, z, &mut scratch, Some((&mut out.powers, from)));
+        }
         let mut s = self.scratch.borrow_mut();
         (s.active, s.lambda) = (active, lambda);
         Ok(())
@@ -281,6 +301,7 @@ impl SystemSimulation<'_> {
         t: f64,
         q: &[f64],
         qd: &[f64],
+        z: &[f64],
         active: &[bool],
         pairings: &mut [Option<Pairing>],
         qdd: &mut Vec<f64>,
@@ -326,6 +347,7 @@ impl SystemSimulation<'_> {
         force.clear();
         force.resize(n, 0.0);
         self.model.forces(&qf, &qdf, force);
+        self.add_adjuster_forces(&qf, &qdf, z, force, None);
         let gas_power = self.add_table_forces(t, &qf, &qdf, force);
         self.forces_about_centres(q, force);
         let factored = if regularise {

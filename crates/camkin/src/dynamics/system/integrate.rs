@@ -45,21 +45,22 @@ pub(crate) struct Integrator {
 }
 
 impl SystemSimulation<'_> {
-    /// The error scale of component `i` of the state `(q, q̇, W)` (see
+    /// The error scale of component `i` of the state `(q, q̇, p, W)` (see
     /// [`crate::dynamics::Tolerances`]): `atol` times a length's scale (the size), an angle's (a
     /// radian), a rate's (those over the time scale), plus `rtol` times the larger size of the
     /// component at the step's ends; the work `W` is not measured (a quadrature of the powers
     /// on the steps the motion takes).
     fn error_scale(&self, i: usize, y0: f64, y1: f64) -> f64 {
-        if i >= 2 * self.q.len() {
+        if i >= 2 * self.q.len() + self.adjusters() {
             return f64::INFINITY;
         }
         let tol = self.opts.tolerances;
         tol.absolute * self.typical(i) + tol.relative * y0.max(y1)
     }
 
-    /// The size of component `i` of the state `(q, q̇, W)`: a length's the system's size, an
-    /// angle's a radian, a rate's those over the time scale, a work's 1.
+    /// The size of component `i` of the state `(q, q̇, p, W)`: a length's the system's size, an
+    /// angle's a radian, a rate's those over the time scale, a lash adjuster's pressure its
+    /// supply's (or a bar), a work's 1.
     fn typical(&self, i: usize) -> f64 {
         let n = self.q.len();
         let length = if i % 3 == 2 { 1.0 } else { self.size };
@@ -67,6 +68,10 @@ impl SystemSimulation<'_> {
             length
         } else if i < 2 * n {
             length * self.speed_scale / self.size
+        } else if i < 2 * n + self.adjusters() {
+            // a chamber's pressure: its supply's, or a bar
+            let h = &self.sys.lash_adjusters()[i - 2 * n].adjuster;
+            h.supply.abs().max(1e5)
         } else {
             1.0
         }
@@ -125,11 +130,12 @@ impl SystemSimulation<'_> {
         h_max: f64,
         events: &mut Vec<ContactEvent>,
     ) -> Result<(), DynamicsError> {
-        let n = self.q.len();
+        let (n, m) = (self.q.len(), self.adjusters());
         let t0 = self.t;
         it.y.clear();
         it.y.extend_from_slice(&self.q);
         it.y.extend_from_slice(&self.qd);
+        it.y.extend_from_slice(&self.z);
         it.y.extend_from_slice(&self.work);
         let implicit = self.implicit();
         if it.dopri.is_implicit() != implicit {
@@ -159,7 +165,8 @@ impl SystemSimulation<'_> {
             let y1 = it.dopri.y1();
             self.q.copy_from_slice(&y1[..n]);
             self.qd.copy_from_slice(&y1[n..2 * n]);
-            self.work.copy_from_slice(&y1[2 * n..]);
+            self.z.copy_from_slice(&y1[2 * n..2 * n + m]);
+            self.work.copy_from_slice(&y1[2 * n + m..]);
             self.pairings.clone_from(&it.pairings);
             self.t = if h >= room { limit } else { t0 + h };
             let unprojected = self.energy();
@@ -186,7 +193,8 @@ impl SystemSimulation<'_> {
             it.rejected += 1;
             self.q.copy_from_slice(&it.y[..n]);
             self.qd.copy_from_slice(&it.y[n..2 * n]);
-            self.work.copy_from_slice(&it.y[2 * n..]);
+            self.z.copy_from_slice(&it.y[2 * n..2 * n + m]);
+            self.work.copy_from_slice(&it.y[2 * n + m..]);
             self.pairings.clone_from(&it.start_pairings);
             self.t = t0;
             shorter = Some(0.2 * h);
@@ -281,7 +289,7 @@ impl SystemSimulation<'_> {
         shorter: Option<f64>,
         dependent: &mut bool,
     ) -> Result<f64, DynamicsError> {
-        let n = self.q.len();
+        let (n, m) = (self.q.len(), self.adjusters());
         let Integrator {
             dopri,
             control,
@@ -305,10 +313,10 @@ impl SystemSimulation<'_> {
             Some(h) => h,
             None => {
                 let norm = |v: &[f64]| {
-                    let s: f64 = (0..2 * n)
+                    let s: f64 = (0..2 * n + m)
                         .map(|i| (v[i] / self.error_scale(i, y[i].abs(), y[i].abs())).powi(2))
                         .sum();
-                    (s / (2 * n) as f64).sqrt()
+                    (s / (2 * n + m) as f64).sqrt()
                 };
                 let y0 = y.clone();
                 starting_step(t0, &y0, &k1, &mut f, norm)?
@@ -341,7 +349,7 @@ impl SystemSimulation<'_> {
                 t0,
                 y,
                 h,
-                2 * n,
+                2 * n + m,
                 &mut f,
                 |i, a, b| self.error_scale(i, a, b),
                 |i| self.typical(i),
@@ -379,7 +387,15 @@ impl SystemSimulation<'_> {
         let mut p = std::mem::take(&mut self.spare_pairings);
         p.clone_from(&self.pairings);
         let mut a = std::mem::take(&mut self.sampled.get_mut().1);
-        self.accel_into(self.t, &self.q, &self.qd, &self.in_contact, &mut p, &mut a)?;
+        self.accel_into(
+            self.t,
+            &self.q,
+            &self.qd,
+            &self.z,
+            &self.in_contact,
+            &mut p,
+            &mut a,
+        )?;
         let mut crossing = Vec::new();
         for (k, &force) in a.forces.iter().enumerate() {
             if self.in_contact[k] {
@@ -404,17 +420,17 @@ impl SystemSimulation<'_> {
     /// The fraction `θ ∈ (0, 1]` of the last step at which contact `k`'s force (closed) or
     /// gap (open) crosses zero on its interpolant, to 1e-14 of the time.
     fn locate(&self, it: &Integrator, k: usize) -> Result<f64, DynamicsError> {
-        let n = self.q.len();
+        let (n, m) = (self.q.len(), self.adjusters());
         let d = &it.dopri;
         let mut y = Vec::new();
         let mut p = Vec::new();
         let value = |theta: f64, y: &mut Vec<f64>, p: &mut Vec<Option<Pairing>>| {
             d.at(theta, y);
             p.clone_from(&it.start_pairings);
-            let (q, v) = (&y[..n], &y[n..2 * n]);
+            let (q, v, z) = (&y[..n], &y[n..2 * n], &y[2 * n..2 * n + m]);
             if it.modes[k] {
                 Ok::<f64, DynamicsError>(
-                    self.accel(d.t0() + theta * d.h(), q, v, &it.modes, p)?
+                    self.accel(d.t0() + theta * d.h(), q, v, z, &it.modes, p)?
                         .forces[k],
                 )
             } else {
@@ -450,12 +466,13 @@ impl SystemSimulation<'_> {
         accel: &mut Accel,
         dy: &mut Vec<f64>,
     ) -> Result<(), DynamicsError> {
-        let n = self.q.len();
-        let (q, v) = (&y[..n], &y[n..2 * n]);
-        self.accel_into(t, q, v, modes, pairings, accel)?;
+        let (n, m) = (self.q.len(), self.adjusters());
+        let (q, v, z) = (&y[..n], &y[n..2 * n], &y[2 * n..2 * n + m]);
+        self.accel_into(t, q, v, z, modes, pairings, accel)?;
         dy.clear();
         dy.extend_from_slice(v);
         dy.extend_from_slice(&accel.qdd);
+        self.adjuster_rates(t, q, v, z, dy)?;
         dy.extend_from_slice(&accel.powers);
         Ok(())
     }
@@ -464,7 +481,7 @@ impl SystemSimulation<'_> {
     /// start in its modes (the fifth-order solution, not the interpolant's fourth: an event's
     /// state starts all that follows it), projected.
     fn set_by_step(&mut self, it: &mut Integrator, theta: f64) -> Result<(), DynamicsError> {
-        let n = self.q.len();
+        let (n, m) = (self.q.len(), self.adjusters());
         let (t0, h) = (it.dopri.t0(), theta * it.dopri.h());
         let mut p = it.start_pairings.clone();
         let mut accel = Accel::default();
@@ -498,7 +515,8 @@ impl SystemSimulation<'_> {
         let y1 = redo.y1();
         self.q.copy_from_slice(&y1[..n]);
         self.qd.copy_from_slice(&y1[n..2 * n]);
-        self.work.copy_from_slice(&y1[2 * n..]);
+        self.z.copy_from_slice(&y1[2 * n..2 * n + m]);
+        self.work.copy_from_slice(&y1[2 * n + m..]);
         it.redo = redo;
         self.pairings = p;
         self.in_contact.clone_from(&it.modes);
@@ -508,12 +526,13 @@ impl SystemSimulation<'_> {
 
     /// The current state set to the last step's interpolant at `θ`, in its modes, projected.
     fn set_from_interpolant(&mut self, it: &Integrator, theta: f64) -> Result<(), DynamicsError> {
-        let n = self.q.len();
+        let (n, m) = (self.q.len(), self.adjusters());
         let mut y = Vec::new();
         it.dopri.at(theta, &mut y);
         self.q.copy_from_slice(&y[..n]);
         self.qd.copy_from_slice(&y[n..2 * n]);
-        self.work.copy_from_slice(&y[2 * n..]);
+        self.z.copy_from_slice(&y[2 * n..2 * n + m]);
+        self.work.copy_from_slice(&y[2 * n + m..]);
         self.pairings.clone_from(&it.start_pairings);
         self.in_contact.clone_from(&it.modes);
         self.t = it.dopri.t0() + theta * it.dopri.h();
@@ -668,6 +687,7 @@ impl SystemSimulation<'_> {
             pairings: self.pairings.clone(),
         };
         let (t_now, work, modes) = (self.t, self.work.clone(), self.in_contact.clone());
+        let z = self.z.clone();
         let jumps = (self.impacts, self.projections);
         (self.impacts, self.projections) = it.start_jumps;
         let sampled = self
@@ -678,6 +698,7 @@ impl SystemSimulation<'_> {
             });
         self.swap_state(&mut kept);
         (self.t, self.work, self.in_contact) = (t_now, work, modes);
+        self.z = z;
         (self.impacts, self.projections) = jumps;
         self.integrator = it;
         sampled

@@ -24,6 +24,7 @@
 //! in kg·m² (converted with the unit's size in metres), forces in N, stiffnesses in N/L, gravity
 //! in m/s²; energies are reported in N·L.
 
+mod adjusters;
 mod balance;
 mod centre;
 mod eval;
@@ -168,6 +169,19 @@ pub struct SystemSample {
     /// each closed contact's curves' radii and surface speeds (none where it is open or a curve
     /// is a point)
     pub surfaces: Vec<Option<ContactSurface>>,
+    /// each lash adjuster's chamber: its gauge pressure (Pa) and height (L)
+    pub adjusters: Vec<AdjusterSample>,
+}
+
+/// A hydraulic lash adjuster's chamber at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct AdjusterSample {
+    /// its gauge pressure, Pa
+    pub pressure: f64,
+    /// its height (the plunger's travel out of the bore from empty), L
+    pub chamber: f64,
+    /// its push on the two bodies, N
+    pub force: f64,
 }
 
 /// A closed contact's two curves at the contact point: what its lubrication needs.
@@ -223,6 +237,8 @@ pub struct SystemSimulation<'a> {
     pairings: Vec<Option<Pairing>>,
     /// the work integrated with the motion, channel by channel ([`balance`])
     work: Vec<f64>,
+    /// each lash adjuster's chamber pressure, gauge, Pa ([`adjusters`])
+    z: Vec<f64>,
     /// the energy the impacts and the projections changed, and `T + V` at the start
     impacts: f64,
     projections: f64,
@@ -453,6 +469,11 @@ impl<'a> SystemSimulation<'a> {
                 ]
             })
             .collect();
+        let z = sys
+            .lash_adjusters()
+            .iter()
+            .map(|h| h.adjuster.initial_pressure)
+            .collect();
         let mut sim = Self {
             sys,
             model,
@@ -470,6 +491,7 @@ impl<'a> SystemSimulation<'a> {
             in_contact: vec![false; nc],
             pairings: vec![None; first_contact + nc],
             work: Vec::new(),
+            z,
             impacts: 0.0,
             projections: 0.0,
             initial_energy: 0.0,
@@ -601,7 +623,7 @@ impl<'a> SystemSimulation<'a> {
             forces: contact_forces,
             efforts: driver_efforts,
             ..
-        } = self.accel(self.t, &self.q, &self.qd, &self.in_contact, &mut p)?;
+        } = self.accel(self.t, &self.q, &self.qd, &self.z, &self.in_contact, &mut p)?;
         self.frame_accelerations(&self.q, &self.qd, &mut qdd);
         let (q, qd) = self.frames(&self.q, &self.qd);
         let mut gaps = vec![0.0; self.in_contact.len()];
@@ -659,6 +681,7 @@ impl<'a> SystemSimulation<'a> {
             hertz_pa,
             pairings: p[self.first_contact..].to_vec(),
             surfaces,
+            adjusters: self.adjuster_samples(),
         })
     }
 
@@ -673,7 +696,7 @@ impl<'a> SystemSimulation<'a> {
         let mut kept = self.sampled.take();
         let (p, a) = &mut kept;
         p.clone_from(&self.pairings);
-        self.accel_into(self.t, &self.q, &self.qd, &self.in_contact, p, a)?;
+        self.accel_into(self.t, &self.q, &self.qd, &self.z, &self.in_contact, p, a)?;
         self.frame_accelerations(&self.q, &self.qd, &mut a.qdd);
         let (q, qd) = self.frames(&self.q, &self.qd);
         let r = read(&q, &qd, a);

@@ -77,6 +77,40 @@ impl SystemSimulation<'_> {
                 }
             }
         }
+        // a lash adjuster's oil is a spring between its bodies: its stiffness `β A / h` as drawn,
+        // with the oil's own bulk modulus (air only softens it, less as it is pressed),
+        // numbered after the force elements
+        let elements = self.sys.forces().len();
+        for (k, h) in self.sys.lash_adjusters().iter().enumerate() {
+            let a = &h.adjuster;
+            let value = a.oil_stiffness();
+            for (me, other) in [(a.a, a.b), (a.b, a.a)] {
+                let Some(i) = me.index() else { continue };
+                let (mi, mj) = (mass(me, false), mass(other, false));
+                let term = value * (1.0 / mi + 1.0 / (mi * mj).sqrt());
+                let row = &mut rows[i][0];
+                row.0 += term;
+                if term > row.1 {
+                    row.1 = term;
+                    row.2 = elements + k;
+                }
+            }
+        }
+        let name = |e: usize| match self.sys.forces().get(e) {
+            Some(f) => {
+                let what = match f.kind {
+                    ForceKind::Damper { .. } => "damper",
+                    ForceKind::TorsionSpring { .. } => "torsion spring",
+                    ForceKind::TorsionDamper { .. } => "torsion damper",
+                    ForceKind::Spring { .. } => "spring",
+                };
+                format!("{what} {:?}", f.name)
+            }
+            None => format!(
+                "lash adjuster {:?}",
+                self.sys.lash_adjusters()[e - elements].name
+            ),
+        };
         let mut fastest = Fastest::default();
         for row in &rows {
             for (kind, &(sum, _, e)) in row.iter().enumerate() {
@@ -85,17 +119,20 @@ impl SystemSimulation<'_> {
                     fastest.vibration = fastest.vibration.max(rate);
                 }
                 if rate > fastest.rate && e != usize::MAX {
-                    let f = &self.sys.forces()[e];
-                    let what = match f.kind {
-                        ForceKind::Damper { .. } => "damper",
-                        ForceKind::TorsionSpring { .. } => "torsion spring",
-                        ForceKind::TorsionDamper { .. } => "torsion damper",
-                        ForceKind::Spring { .. } => "spring",
-                    };
                     fastest.rate = rate;
-                    fastest.element = format!("{what} {:?}", f.name);
+                    fastest.element = name(e);
                     fastest.damper = kind >= 2;
                 }
+            }
+        }
+        // an open check valve brings the chamber to its supply at `β G / V`: a decay
+        for h in self.sys.lash_adjusters() {
+            let a = &h.adjuster;
+            let rate = a.refill_rate();
+            if rate > fastest.rate {
+                fastest.rate = rate;
+                fastest.element = format!("lash adjuster {:?}'s check valve", h.name);
+                fastest.damper = true;
             }
         }
         fastest

@@ -313,6 +313,7 @@ impl SystemSimulation<'_> {
                 self.t,
                 &self.q,
                 &self.qd,
+                &self.z,
                 &self.in_contact.clone(),
                 &mut self.pairings.clone(),
             )?
