@@ -87,8 +87,7 @@ fn at(index: usize, key: SystemKey) -> Field {
 }
 
 /// Contact `i`'s lash, when it has one: its record, and its face at that lash in place of the
-/// built one (`curves`, A and B); `scale` takes the file's lengths to the system's; `size` is
-/// the system's size so far (its bodies' and curves').
+/// built one (`curves`, A and B); `scale` takes the file's lengths to the system's.
 pub(crate) fn apply(
     c: &ContactSpec,
     i: usize,
