@@ -412,3 +412,36 @@ fn a_systems_points_files_are_inputs_too() {
         assert_eq!(now, disc, "{args:?} changed the points file");
     }
 }
+
+/// Issue 65: a lift table (`law = "table"`, `file = …`) is an input of the run, in a cam file
+/// as in a system file: `-o` onto it and `--out` onto its folder are refused, even with
+/// `--force`, and the table is unchanged.
+#[test]
+fn a_lift_table_is_an_input_too() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::create_dir(d.join("tables")).unwrap();
+    let table = std::fs::read_to_string(examples().join("lift-table.csv")).unwrap();
+    std::fs::write(d.join("tables/lift.csv"), &table).unwrap();
+    let text = std::fs::read_to_string(examples().join("lift-table.toml"))
+        .unwrap()
+        .replace("file = \"lift-table.csv\"", "file = \"tables/lift.csv\"");
+    assert!(text.contains("tables/lift.csv"));
+    std::fs::write(d.join("cam.toml"), &text).unwrap();
+    camkin()
+        .current_dir(d)
+        .args(["analyze", "cam.toml", "--at", "0"])
+        .stdout_ok();
+    for args in [
+        vec!["analyze", "cam.toml", "--at", "0", "-o", "tables/lift.csv"],
+        vec!["synth", "cam.toml", "--out", "tables", "--force"],
+    ] {
+        camkin()
+            .current_dir(d)
+            .args(&args)
+            .refused("input of this run")
+            .stderr(predicate::str::contains("tables"));
+        let now = std::fs::read_to_string(d.join("tables/lift.csv")).unwrap();
+        assert_eq!(now, table, "{args:?} changed the lift table");
+    }
+}

@@ -140,8 +140,20 @@ impl MechanismSpec {
         let follower = [&self.follower.profile, &self.follower.conjugate];
         std::iter::once(&self.cam.profile)
             .chain(follower.into_iter().flatten().map(|b| b.as_ref()))
-            .filter_map(|p| p.path.as_deref())
+            .flat_map(ProfileSpec::files)
             .collect()
+    }
+}
+
+impl ProfileSpec {
+    /// The files it reads, as written: a points file's `path`, each lift table's `file`.
+    pub fn files(&self) -> impl Iterator<Item = &str> {
+        self.path.as_deref().into_iter().chain(
+            self.segments
+                .iter()
+                .flatten()
+                .filter_map(|s| s.file.as_deref()),
+        )
     }
 }
 

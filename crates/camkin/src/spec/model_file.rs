@@ -58,7 +58,7 @@ pub fn read_model(text: &str, name: &str, options: &BuildOptions) -> Result<Mode
         options.si = false;
         let built = spec.build(&options);
         let files = spec.contact.iter().flat_map(|c| [&c.curve_a, &c.curve_b]);
-        let files = files.filter_map(|p| p.path.clone()).collect();
+        let files = files.flat_map(|p| p.files().map(String::from)).collect();
         (
             Model::System(Box::new(built.map_err(|e| text::place(text, name, e))?)),
             files,
