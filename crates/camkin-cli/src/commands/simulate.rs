@@ -566,7 +566,9 @@ fn run_system(
             hi = hi.max(x.adjusters[k].pressure);
         }
         if let (Some(first), Some(last)) = (samples.first(), samples.last()) {
-            let grown = last.adjusters[k].chamber - first.adjusters[k].chamber;
+            // to a millionth of its chamber's drawn height (the integration's rounding below)
+            let q = 1e-6 * h.adjuster.chamber;
+            let grown = ((last.adjusters[k].chamber - first.adjusters[k].chamber) / q).round() * q;
             crate::say!(
                 "camkin: lash adjuster {:?}: pressure {} to {} bar; its chamber {} {unit} longer at the end than at the start",
                 h.name,
