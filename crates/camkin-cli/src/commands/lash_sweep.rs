@@ -16,13 +16,11 @@ const MAX_LASHES: usize = 200;
 
 /// The lashes of `FROM:TO:STEP` (the file's length unit): FROM, FROM + STEP, … up to TO.
 fn lashes(range: &str) -> Result<Vec<f64>, Failure> {
-    let parts: Vec<&str> = range.split(':').collect();
-    let nums: Vec<f64> = parts.iter().filter_map(|p| p.trim().parse().ok()).collect();
-    let (&[from, to, step], 3) = (&nums[..], parts.len()) else {
-        return Err(bad(format!(
-            "--lash {range}: give FROM:TO:STEP in the file's length unit (e.g. 0.1:0.4:0.05)"
-        )));
-    };
+    let [from, to, step] = super::simulate::from_to_step(
+        "--lash",
+        range,
+        "in the file's length unit (e.g. 0.1:0.4:0.05)",
+    )?;
     if !(from >= 0.0 && to >= from && step > 0.0 && to.is_finite()) {
         return Err(bad(format!(
             "--lash {range}: FROM must be 0 or more, TO no less than FROM and STEP positive"

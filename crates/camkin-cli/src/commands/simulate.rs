@@ -661,6 +661,17 @@ pub(super) fn plan_err(name: &str, e: camkin::spec::PlanError) -> Failure {
     }
 }
 
+/// `FROM:TO:STEP` given to `flag` as its three numbers, or refused saying how to write it
+/// (`how`: its unit and an example).
+pub(super) fn from_to_step(flag: &str, range: &str, how: &str) -> Result<[f64; 3], Failure> {
+    let parts: Vec<&str> = range.split(':').collect();
+    let nums: Vec<f64> = parts.iter().filter_map(|p| p.trim().parse().ok()).collect();
+    match (&nums[..], parts.len()) {
+        (&[from, to, step], 3) => Ok([from, to, step]),
+        _ => Err(bad(format!("{flag} {range}: give FROM:TO:STEP {how}"))),
+    }
+}
+
 /// `--no-follow FROM:TO:STEP`: the speed sweep, its answer printed.
 fn no_follow(
     args: &SimulateArgs,
@@ -668,14 +679,8 @@ fn no_follow(
     built: &camkin::spec::BuiltSystem,
     range: &str,
 ) -> Result<(), Failure> {
-    let parts: Vec<&str> = range.split(':').collect();
-    let nums: Vec<f64> = parts.iter().filter_map(|p| p.trim().parse().ok()).collect();
-    let [from, to, step] = nums[..] else {
-        return Err(bad(format!(
-            "--no-follow {range}: give FROM:TO:STEP in rpm (e.g. 1000:6000:250)"
-        )));
-    };
-    if parts.len() != 3 || !(from > 0.0 && to > from && step > 0.0 && to.is_finite()) {
+    let [from, to, step] = from_to_step("--no-follow", range, "in rpm (e.g. 1000:6000:250)")?;
+    if !(from > 0.0 && to > from && step > 0.0 && to.is_finite()) {
         return Err(bad(format!(
             "--no-follow {range}: FROM, TO and STEP must be positive rpm with TO above FROM"
         )));

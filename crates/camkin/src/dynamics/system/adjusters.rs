@@ -14,23 +14,18 @@ impl SystemSimulation<'_> {
     }
 
     /// Adds each adjuster's push at the pressures `z` to the generalized forces `f` (at the
-    /// frames' coordinates `qf`, `qdf`); their powers written from `powers[from]` on.
+    /// frames' coordinates `qf`, `qdf`); each one's power written to `powers`.
     pub(super) fn add_adjuster_forces(
         &self,
         qf: &[f64],
         qdf: &[f64],
         z: &[f64],
         f: &mut [f64],
-        powers: Option<(&mut [f64], usize)>,
+        powers: &mut [f64],
     ) {
-        let mut out = powers;
-        for (k, (h, &p)) in self.sys.lash_adjusters().iter().zip(z).enumerate() {
-            let Some(line) = h.adjuster.line(|id| body_state(qf, qdf, id.0)) else {
-                continue;
-            };
-            let power = h.adjuster.add_forces(&line, p, f);
-            if let Some((powers, from)) = out.as_mut() {
-                powers[*from + k] = power;
+        for ((h, &p), power) in self.sys.lash_adjusters().iter().zip(z).zip(powers) {
+            if let Some(line) = h.adjuster.line(|id| body_state(qf, qdf, id.0)) {
+                *power = h.adjuster.add_forces(&line, p, f);
             }
         }
     }

@@ -47,6 +47,8 @@ pub(crate) struct Scratch {
     pub(super) schur: Schur,
     /// the rows' Schur complement without masses, factored to tell a singular pose
     pub(super) geometry: Schur,
+    /// each lash adjuster's power, from the forces the direct solution applied
+    pub(super) adjuster_powers: Vec<f64>,
 }
 
 /// An evaluation kept: the state and modes it was at, the pairings it started from and ended
@@ -275,14 +277,11 @@ impl SystemSimulation<'_> {
         out.powers[super::balance::APPLIED] = applied;
         out.powers[super::balance::CONSTRAINTS] = constraints;
         self.element_powers(q, qd, &mut out.powers);
-        if !z.is_empty() {
-            // the adjusters' powers, after the force elements' and gravity's channels
-            let (qf, qdf) = self.frames(q, qd);
-            let mut scratch = vec![0.0; q.len()];
-            let from = super::balance::ELEMENTS + self.model.forces.len();
-            self.add_adjuster_forces(&qf, &qdf, z, &mut scratch, Some((&mut out.powers, from)));
-        }
         let mut s = self.scratch.borrow_mut();
+        // the adjusters' powers (the direct solution, the only one with adjusters, applied
+        // their forces), after the force elements' and gravity's channels
+        let from = super::balance::ELEMENTS + self.model.forces.len();
+        out.powers[from..from + z.len()].copy_from_slice(&s.adjuster_powers);
         (s.active, s.lambda) = (active, lambda);
         Ok(())
     }
@@ -322,6 +321,7 @@ impl SystemSimulation<'_> {
             delta,
             schur,
             geometry,
+            adjuster_powers,
             ..
         } = &mut *guard;
         sparse.clear();
@@ -347,7 +347,9 @@ impl SystemSimulation<'_> {
         force.clear();
         force.resize(n, 0.0);
         self.model.forces(&qf, &qdf, force);
-        self.add_adjuster_forces(&qf, &qdf, z, force, None);
+        adjuster_powers.clear();
+        adjuster_powers.resize(z.len(), 0.0);
+        self.add_adjuster_forces(&qf, &qdf, z, force, adjuster_powers);
         let gas_power = self.add_table_forces(t, &qf, &qdf, force);
         self.forces_about_centres(q, force);
         let factored = if regularise {
